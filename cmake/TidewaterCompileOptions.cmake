@@ -1,0 +1,25 @@
+# Warnings and sanitizers shared by every Tidewater target.
+# Use tidewater_target_defaults(<target>) on each target the project builds.
+
+function(tidewater_target_defaults target)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${target} PRIVATE
+      -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+      -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Wunused
+      -Woverloaded-virtual -Wdouble-promotion -Wformat=2
+      -Wimplicit-fallthrough)
+    if(TIDEWATER_WARNINGS_AS_ERRORS)
+      target_compile_options(${target} PRIVATE -Werror)
+    endif()
+  elseif(MSVC)
+    target_compile_options(${target} PRIVATE /W4 $<$<BOOL:${TIDEWATER_WARNINGS_AS_ERRORS}>:/WX>)
+  endif()
+endfunction()
+
+if(TIDEWATER_SANITIZE)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    message(FATAL_ERROR "TIDEWATER_SANITIZE needs GCC or Clang")
+  endif()
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()

@@ -1,0 +1,68 @@
+// Eulerian surface queries: what is the water doing at fixed (x, z)?
+//
+// Gerstner waves move particles horizontally, so the particle now at (x, z)
+// rests elsewhere (x0). Each query solves x0 + d(x0, t) = (x, z) by Newton's
+// method on the 2x2 system (exact Jacobian, step kept within the largest
+// possible displacement), then reports the surface there. It converges for
+// every fold-free set; the height error is far below 1 mm.
+//
+// Units: metres, seconds; heights are world y (the body's level plus eta).
+// Threading: every function here is reentrant and deterministic: the same
+// inputs give bit-identical outputs for any thread count.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "tidewater/result.hpp"
+#include "tidewater/water_body.hpp"
+
+namespace tidewater {
+
+struct SurfacePoint {
+    double height = 0.0;             ///< World y of the surface, m.
+    glm::dvec3 normal{0.0, 1.0, 0.0};  ///< Unit normal of the displaced surface.
+    glm::dvec2 displacement{0.0};    ///< Horizontal offset of this particle from its rest position, m.
+    glm::dvec3 velocity{0.0};        ///< Water particle velocity, m/s.
+    double jacobian = 1.0;           ///< Horizontal-map determinant; -> 0 where crests fold (foam).
+    int iterations = 0;              ///< Newton evaluations used.
+    bool converged = true;
+};
+
+struct QueryOptions {
+    /// Worker threads; 0 uses every hardware thread. Small batches run on the caller's thread.
+    unsigned threads = 1;
+};
+
+/// Full surface state at each point (x, z) at clock time `time` (the body's
+/// time offset is added). `out.size()` must equal `points.size()`.
+Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
+                     std::span<SurfacePoint> out, const QueryOptions& options = {});
+
+/// Heights only (world y), the fast path for buoyancy and gameplay.
+Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points,
+                     std::span<double> heights, const QueryOptions& options = {});
+
+/// Single-point convenience wrapper of query_surface.
+SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
+
+/// Name of the SIMD kernel queries use on this machine ("avx2+fma", "sse2", ...).
+const char* query_kernel_name();
+
+namespace reference {
+
+/// The fixed-point height loop of the boat project this library's queries
+/// replace: four passes of x0 = p - d(x0), then eta(x0). Kept only as the
+/// baseline the benchmark compares against; it is inaccurate on steep seas.
+double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 point);
+
+/// Scalar double-precision Newton solve to 1e-12 m with backtracking, for
+/// accuracy checks. Returns the rest position x0 with x0 + d(x0) = point.
+glm::dvec2 solve_rest_position(const WaveSet& set, double local_time, glm::dvec2 point);
+
+}  // namespace reference
+
+}  // namespace tidewater

@@ -1,0 +1,44 @@
+// Scenes and presets: JSON loading with errors that name the file, the JSON
+// path and the allowed range. The format is documented in docs/scene-format.md.
+//
+// Threading: loading functions are reentrant; a Scene is a plain value.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tidewater/terrain.hpp"
+#include "tidewater/water_body.hpp"
+
+namespace tidewater {
+
+inline constexpr int kSceneFormatVersion = 1;
+
+struct Scene {
+    std::string name;
+    double water_level = 0.0;  ///< m, world y of the rest water surface.
+    Terrain terrain;
+    WaterBody ocean;
+    std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
+};
+
+/// Parses scene JSON text. `source` names it in messages (a path or "<default scene>");
+/// relative preset files resolve against `base_dir`.
+Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
+                          const std::filesystem::path& base_dir = {});
+/// Reads and parses a scene file.
+Result<Scene> load_scene(const std::filesystem::path& path);
+/// The bundled default scene (examples/scenes/default.json, embedded at build time).
+Result<Scene> default_scene();
+
+/// Parses a preset (a WaterProfile with "version" and "name").
+Result<WaterProfile> parse_preset(std::string_view json_text, const std::string& source);
+/// Loads a preset by bundled name ("ocean_rolling") or from a .json file path.
+Result<WaterProfile> load_preset(const std::string& name_or_path,
+                                 const std::filesystem::path& base_dir = {});
+/// Names of the bundled presets (examples/presets/*.json).
+std::vector<std::string> bundled_preset_names();
+
+}  // namespace tidewater

@@ -1,0 +1,53 @@
+// A water body: a validated wave set, ripples, a rest level and a clock offset.
+//
+// WaterProfile is what a preset file or a scene's "ocean" entry holds
+// (authoring data); WaterBody is the validated, ready-to-evaluate form.
+// Threading: WaterBody is immutable and safe to share between threads.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tidewater/ripples.hpp"
+#include "tidewater/spectrum.hpp"
+#include "tidewater/waves.hpp"
+
+namespace tidewater {
+
+struct WaterProfile {
+    std::string name;
+    std::string description;
+    /// The waves; when `spectrum` is set they were generated from it.
+    std::vector<WaveSpec> waves;
+    std::optional<SpectrumSpec> spectrum;
+    RippleSpec ripples;
+    FoldPolicy fold_policy = FoldPolicy::reject;
+    double time_offset = 0.0;  ///< s, added to the clock time for this body.
+};
+
+class WaterBody {
+public:
+    WaterBody() = default;
+
+    /// Validates the profile (see WaveSet::create). `context` prefixes messages.
+    static Result<WaterBody> create(const WaterProfile& profile, double level,
+                                    const std::string& context,
+                                    std::vector<std::string>* warnings = nullptr);
+
+    const WaterProfile& profile() const { return profile_; }
+    const WaveSet& waves() const { return waves_; }
+    const RippleField& ripples() const { return ripples_; }
+    double level() const { return level_; }  ///< Rest water level (world y), m.
+    double time_offset() const { return profile_.time_offset; }
+    /// The time the waves see for a given clock time.
+    double local_time(double clock_time) const { return clock_time + profile_.time_offset; }
+
+private:
+    WaterProfile profile_;
+    WaveSet waves_;
+    RippleField ripples_;
+    double level_ = 0.0;
+};
+
+}  // namespace tidewater

@@ -1,0 +1,302 @@
+// Scene and preset JSON -> Scene / WaterProfile. Schema: docs/scene-format.md.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "embedded_text.hpp"
+#include "json_reader.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater {
+
+namespace {
+
+using detail::ObjectReader;
+using nlohmann::json;
+
+constexpr double kMaxAbsHeight = 1e5;
+
+Status read_version(const ObjectReader& r) {
+    std::int64_t version = 0;
+    if (auto st = r.integer("version", version, 0, 1'000'000, true); !st) return st;
+    if (version != kSceneFormatVersion) {
+        return r.error("version", fmt::format("unsupported version {} (this build reads version {})", version,
+                                              kSceneFormatVersion));
+    }
+    return {};
+}
+
+Status read_wave(const json& value, const std::string& source, const std::string& path, WaveSpec& w) {
+    auto r = ObjectReader::open(value, source, path);
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"direction", "wavelength", "amplitude", "steepness", "phase"}); !st) return st;
+    if (auto st = r->number("direction", w.direction_deg, true); !st) return st;
+    if (auto st = r->number("wavelength", w.wavelength, true); !st) return st;
+    if (auto st = r->number("amplitude", w.amplitude, true); !st) return st;
+    if (auto st = r->number("steepness", w.steepness, true); !st) return st;
+    w.phase = 0.0;
+    return r->number("phase", w.phase);
+}
+
+Status read_waves(const ObjectReader& r, std::vector<WaveSpec>& out) {
+    const json& list = r.at("waves");
+    if (!list.is_array()) {
+        return r.error("waves", fmt::format("expected an array of waves, found {}", detail::json_type_name(list)));
+    }
+    if (list.size() > kMaxWaves) {
+        return r.error("waves", fmt::format("{} waves given, at most {} allowed", list.size(), kMaxWaves));
+    }
+    out.assign(list.size(), WaveSpec{});
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        if (auto st = read_wave(list[i], r.source(), fmt::format("{}/{}", r.child_path("waves"), i), out[i]); !st)
+            return st;
+    }
+    return {};
+}
+
+Status read_spectrum(const ObjectReader& parent, SpectrumSpec& s) {
+    auto r = ObjectReader::open(parent.at("spectrum"), parent.source(), parent.child_path("spectrum"));
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"type", "wind_speed", "fetch", "peak_enhancement", "direction", "spreading",
+                                 "wave_count", "seed", "steepness"});
+        !st)
+        return st;
+    std::string type;
+    if (auto st = r->string("type", type, true); !st) return st;
+    if (type == "jonswap") {
+        s.kind = SpectrumKind::jonswap;
+    } else if (type == "pierson_moskowitz") {
+        s.kind = SpectrumKind::pierson_moskowitz;
+    } else {
+        return r->error("type", fmt::format("\"{}\" is not a spectrum (allowed: \"jonswap\", \"pierson_moskowitz\")", type));
+    }
+    std::int64_t count = s.wave_count, seed = static_cast<std::int64_t>(s.seed);
+    if (auto st = r->number("wind_speed", s.wind_speed, true); !st) return st;
+    if (auto st = r->number("fetch", s.fetch); !st) return st;
+    if (auto st = r->number("peak_enhancement", s.peak_enhancement); !st) return st;
+    if (auto st = r->number("direction", s.mean_direction_deg); !st) return st;
+    if (auto st = r->number("spreading", s.spreading); !st) return st;
+    if (auto st = r->integer("wave_count", count, 1, static_cast<std::int64_t>(kMaxWaves)); !st) return st;
+    if (auto st = r->integer("seed", seed, 0, std::int64_t{1} << 53); !st) return st;
+    if (auto st = r->number("steepness", s.steepness); !st) return st;
+    s.wave_count = static_cast<int>(count);
+    s.seed = static_cast<std::uint64_t>(seed);
+    return validate(s, r->context());
+}
+
+Status read_ripples(const ObjectReader& parent, RippleSpec& s) {
+    auto r = ObjectReader::open(parent.at("ripples"), parent.source(), parent.child_path("ripples"));
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"amplitude", "wavelength", "octaves", "speed", "direction", "seed"}); !st) return st;
+    std::int64_t octaves = s.octaves, seed = s.seed;
+    if (auto st = r->number("amplitude", s.amplitude); !st) return st;
+    if (auto st = r->number("wavelength", s.wavelength); !st) return st;
+    if (auto st = r->integer("octaves", octaves, 1, 8); !st) return st;
+    if (auto st = r->number("speed", s.speed); !st) return st;
+    if (auto st = r->number("direction", s.direction_deg); !st) return st;
+    if (auto st = r->integer("seed", seed, 0, 0xffffffffLL); !st) return st;
+    s.octaves = static_cast<int>(octaves);
+    s.seed = static_cast<std::uint32_t>(seed);
+    return validate(s, r->context());
+}
+
+Status read_fold_policy(const ObjectReader& r, FoldPolicy& policy) {
+    if (!r.has("fold_policy")) return {};
+    std::string text;
+    if (auto st = r.string("fold_policy", text); !st) return st;
+    if (text == "reject") {
+        policy = FoldPolicy::reject;
+    } else if (text == "clamp") {
+        policy = FoldPolicy::clamp;
+    } else {
+        return r.error("fold_policy", fmt::format("\"{}\" is not a policy (allowed: \"reject\", \"clamp\")", text));
+    }
+    return {};
+}
+
+/// Reads the wave content of a profile: exactly one of `waves` and `spectrum`.
+Status read_wave_source(const ObjectReader& r, WaterProfile& p, bool preset_allowed) {
+    const int sources = int(r.has("waves")) + int(r.has("spectrum")) + int(preset_allowed && r.has("preset"));
+    if (sources != 1) {
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: give exactly one of {}\"waves\" and \"spectrum\"", r.context(),
+                                 preset_allowed ? "\"preset\", " : "")};
+    }
+    if (r.has("waves")) return read_waves(r, p.waves);
+    if (r.has("spectrum")) {
+        SpectrumSpec spec;
+        if (auto st = read_spectrum(r, spec); !st) return st;
+        auto waves = generate_waves(spec, r.context("spectrum"));
+        if (!waves) return waves.error();
+        p.waves = std::move(waves).value();
+        p.spectrum = spec;
+    }
+    return {};
+}
+
+/// Optional settings shared by presets and inline oceans; they override what a preset set.
+Status read_profile_settings(const ObjectReader& r, WaterProfile& p) {
+    if (auto st = r.string("name", p.name); !st) return st;
+    if (auto st = r.string("description", p.description); !st) return st;
+    if (r.has("ripples")) {
+        if (auto st = read_ripples(r, p.ripples); !st) return st;
+    }
+    if (auto st = read_fold_policy(r, p.fold_policy); !st) return st;
+    return r.number("time_offset", p.time_offset);
+}
+
+Result<WaterProfile> read_ocean(const json& value, const std::string& source, const std::filesystem::path& base_dir) {
+    if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
+    auto r = ObjectReader::open(value, source, "/ocean");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "fold_policy", "time_offset", "name",
+                                 "description"});
+        !st)
+        return st.error();
+    WaterProfile profile;
+    if (r->has("preset")) {
+        std::string name;
+        if (auto st = r->string("preset", name); !st) return st.error();
+        auto preset = load_preset(name, base_dir);
+        if (!preset) return preset.error();
+        profile = std::move(preset).value();
+    }
+    if (auto st = read_wave_source(*r, profile, true); !st) return st.error();
+    if (auto st = read_profile_settings(*r, profile); !st) return st.error();
+    return profile;
+}
+
+Result<Terrain> read_terrain(const ObjectReader& scene) {
+    auto r = ObjectReader::open(scene.at("terrain"), scene.source(), "/terrain");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"flat", "plane"}); !st) return st.error();
+    if (r->has("flat") == r->has("plane")) {
+        return Error{ErrorCode::schema_error, fmt::format("{}: give exactly one of \"flat\" and \"plane\"", r->context())};
+    }
+    auto check_height = [](const ObjectReader& o, double h) -> Status {
+        if (std::abs(h) > kMaxAbsHeight)
+            return o.error("height", fmt::format("{} is out of range (allowed: |height| <= 100000 m)", h));
+        return {};
+    };
+    if (r->has("flat")) {
+        auto f = ObjectReader::open(r->at("flat"), r->source(), r->child_path("flat"));
+        if (!f) return f.error();
+        if (auto st = f->allow_only({"height"}); !st) return st.error();
+        FlatTerrain flat;
+        if (auto st = f->number("height", flat.height, true); !st) return st.error();
+        if (auto st = check_height(*f, flat.height); !st) return st.error();
+        return Terrain(flat);
+    }
+    auto p = ObjectReader::open(r->at("plane"), r->source(), r->child_path("plane"));
+    if (!p) return p.error();
+    if (auto st = p->allow_only({"height", "slope"}); !st) return st.error();
+    PlaneTerrain plane;
+    if (auto st = p->number("height", plane.height, true); !st) return st.error();
+    if (auto st = check_height(*p, plane.height); !st) return st.error();
+    if (!p->has("slope")) return p->error("slope", "required [sx, sz] is missing");
+    const json& slope = p->at("slope");
+    if (!slope.is_array() || slope.size() != 2 || !slope[0].is_number() || !slope[1].is_number()) {
+        return p->error("slope", "expected [sx, sz], two numbers");
+    }
+    plane.slope = {slope[0].get<double>(), slope[1].get<double>()};
+    for (double s : {plane.slope.x, plane.slope.y}) {
+        if (!std::isfinite(s) || std::abs(s) > 10.0)
+            return p->error("slope", fmt::format("{} is out of range (allowed: |slope| <= 10)", s));
+    }
+    return Terrain(plane);
+}
+
+bool looks_like_path(const std::string& name) {
+    return name.find('/') != std::string::npos || name.find('\\') != std::string::npos ||
+           (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0);
+}
+
+}  // namespace
+
+std::vector<std::string> bundled_preset_names() {
+    std::vector<std::string> names;
+    for (const auto& e : embedded::presets::entries()) names.emplace_back(e.name);
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+Result<WaterProfile> parse_preset(std::string_view json_text, const std::string& source) {
+    auto doc = detail::parse_json_text(json_text, source);
+    if (!doc) return doc.error();
+    auto r = ObjectReader::open(*doc, source, "");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"version", "name", "description", "waves", "spectrum", "ripples", "fold_policy",
+                                 "time_offset"});
+        !st)
+        return st.error();
+    if (auto st = read_version(*r); !st) return st.error();
+    WaterProfile profile;
+    if (auto st = read_wave_source(*r, profile, false); !st) return st.error();
+    if (auto st = read_profile_settings(*r, profile); !st) return st.error();
+    // Validate now so a bad preset is reported against its own file.
+    auto body = WaterBody::create(profile, 0.0, source);
+    if (!body) return body.error();
+    return profile;
+}
+
+Result<WaterProfile> load_preset(const std::string& name_or_path, const std::filesystem::path& base_dir) {
+    if (!looks_like_path(name_or_path)) {
+        for (const auto& e : embedded::presets::entries()) {
+            if (e.name == name_or_path) return parse_preset(e.text, fmt::format("<preset {}>", e.name));
+        }
+        std::string list;
+        for (const auto& n : bundled_preset_names()) list += (list.empty() ? "" : ", ") + n;
+        return Error{ErrorCode::not_found,
+                     fmt::format("preset \"{}\" is not bundled (bundled: {}); give a path ending in .json for a file",
+                                 name_or_path, list)};
+    }
+    std::filesystem::path path = name_or_path;
+    if (path.is_relative() && !base_dir.empty()) path = base_dir / path;
+    auto text = detail::read_text_file(path.string());
+    if (!text) return text.error();
+    return parse_preset(*text, path.string());
+}
+
+Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir) {
+    auto doc = detail::parse_json_text(json_text, source);
+    if (!doc) return doc.error();
+    auto r = ObjectReader::open(*doc, source, "");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean"}); !st)
+        return st.error();
+    if (auto st = read_version(*r); !st) return st.error();
+    Scene scene;
+    if (auto st = r->string("name", scene.name); !st) return st.error();
+    if (auto st = r->number("water_level", scene.water_level, true); !st) return st.error();
+    if (std::abs(scene.water_level) > kMaxAbsHeight) {
+        return r->error("water_level",
+                        fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", scene.water_level));
+    }
+    if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
+    auto terrain = read_terrain(*r);
+    if (!terrain) return terrain.error();
+    scene.terrain = std::move(terrain).value();
+    if (!r->has("ocean")) return r->error("ocean", "required ocean (a preset name, a file or an object) is missing");
+    auto profile = read_ocean(r->at("ocean"), source, base_dir);
+    if (!profile) return profile.error();
+    auto body = WaterBody::create(*profile, scene.water_level, r->context("ocean"), &scene.warnings);
+    if (!body) return body.error();
+    scene.ocean = std::move(body).value();
+    return scene;
+}
+
+Result<Scene> load_scene(const std::filesystem::path& path) {
+    auto text = detail::read_text_file(path.string());
+    if (!text) return text.error();
+    return parse_scene(*text, path.string(), path.parent_path());
+}
+
+Result<Scene> default_scene() {
+    for (const auto& e : embedded::scenes::entries()) {
+        if (e.name == "default") return parse_scene(e.text, "<default scene>");
+    }
+    return Error{ErrorCode::not_found, "the default scene is not bundled in this build"};
+}
+
+}  // namespace tidewater

@@ -1,0 +1,30 @@
+#include "tidewater/water_body.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace tidewater {
+
+Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, const std::string& context,
+                                    std::vector<std::string>* warnings) {
+    if (!std::isfinite(level) || std::abs(level) > 1e5) {
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: water level {} is out of range (allowed: |level| <= 100000 m)", context, level)};
+    }
+    if (!std::isfinite(profile.time_offset) || std::abs(profile.time_offset) > 1e9) {
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}/time_offset: {} is out of range (allowed: |offset| <= 1e9 s)", context,
+                                 profile.time_offset)};
+    }
+    auto waves = WaveSet::create(profile.waves, profile.fold_policy, context + "/waves", warnings);
+    if (!waves) return std::move(waves).error();
+    if (auto st = validate(profile.ripples, context + "/ripples"); !st) return st.error();
+    WaterBody body;
+    body.profile_ = profile;
+    body.waves_ = std::move(waves).value();
+    body.ripples_ = RippleField(profile.ripples);
+    body.level_ = level;
+    return body;
+}
+
+}  // namespace tidewater
