@@ -9,10 +9,9 @@
 
 namespace tidewater::reference {
 
-double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 point) {
-    std::vector<double> offsets(set.size());
-    phase_offsets_at(set, local_time, offsets);
-    const auto waves = set.waves();
+namespace {
+
+double fixed_point_one(std::span<const Wave> waves, const double* offsets, glm::dvec2 point) {
     glm::dvec2 sample = point;
     constexpr int kIterations = 4;
     for (int it = 0; it < kIterations; ++it) {
@@ -32,6 +31,23 @@ double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 poin
         height += w.amplitude * std::sin(w.k * (w.dir_x * sample.x + w.dir_z * sample.y) + offsets[i]);
     }
     return height;
+}
+
+}  // namespace
+
+double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 point) {
+    double height = 0.0;
+    fixed_point_heights(set, local_time, std::span<const glm::dvec2>(&point, 1), std::span<double>(&height, 1));
+    return height;
+}
+
+void fixed_point_heights(const WaveSet& set, double local_time, std::span<const glm::dvec2> points,
+                         std::span<double> heights) {
+    std::vector<double> offsets(set.size());
+    phase_offsets_at(set, local_time, offsets);
+    for (std::size_t p = 0; p < points.size() && p < heights.size(); ++p) {
+        heights[p] = fixed_point_one(set.waves(), offsets.data(), points[p]);
+    }
 }
 
 glm::dvec2 solve_rest_position(const WaveSet& set, double local_time, glm::dvec2 point) {

@@ -58,6 +58,10 @@ namespace reference {
 /// replace: four passes of x0 = p - d(x0), then eta(x0). Kept only as the
 /// baseline the benchmark compares against; it is inaccurate on steep seas.
 double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 point);
+/// The same loop over a batch, with the per-wave phase offsets computed once
+/// (as a fair baseline would). Heights are eta (no water level added).
+void fixed_point_heights(const WaveSet& set, double local_time, std::span<const glm::dvec2> points,
+                         std::span<double> heights);
 
 /// Scalar double-precision Newton solve to 1e-12 m with backtracking, for
 /// accuracy checks. Returns the rest position x0 with x0 + d(x0) = point.

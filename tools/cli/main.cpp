@@ -1,0 +1,36 @@
+// tidewater: the command-line front end of the Tidewater runtime.
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include "tidewater/version.hpp"
+#include "verbs.hpp"
+
+namespace tidewater::cli {
+
+int fail(const char* verb, const std::string& message) {
+    std::fprintf(stderr, "tidewater %s: %s\n", verb, message.c_str());
+    return 1;
+}
+
+}  // namespace tidewater::cli
+
+int main(int argc, char** argv) {
+    using namespace tidewater::cli;
+    try {
+        CLI::App app{"Tidewater: Gerstner water that feels the shore, with CPU queries that match what is drawn.\n"
+                     "Run 'tidewater <verb> --help' for a verb's options.",
+                     "tidewater"};
+        app.set_version_flag("--version", TIDEWATER_VERSION_STRING);
+        app.require_subcommand(1);
+        const std::vector<Verb> verbs = {add_query_verb(app), add_bench_verb(app), add_demo_verb(app)};
+        CLI11_PARSE(app, argc, argv);
+        for (const Verb& v : verbs) {
+            if (v.command->parsed()) return v.run();
+        }
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "tidewater: unexpected error: %s\n", e.what());
+        return 2;
+    }
+}

@@ -1,0 +1,76 @@
+// tidewater bench: query throughput and accuracy against the reference loop, as JSON.
+#include <cstdio>
+#include <memory>
+
+#include "atomic_file.hpp"
+#include "query_bench.hpp"
+#include "verbs.hpp"
+
+namespace tidewater::cli {
+
+namespace {
+
+struct BenchArgs {
+    BenchConfig config;
+    std::string out;
+    std::string markdown;
+    bool quiet = false;
+};
+
+int run_bench(const BenchArgs& a) {
+    constexpr const char* verb = "bench";
+    // Open outputs first so a bad path fails before minutes of timing.
+    std::unique_ptr<AtomicFile> json_file, md_file;
+    if (!a.out.empty()) {
+        json_file = std::make_unique<AtomicFile>(a.out);
+        if (!json_file->status()) return fail(verb, json_file->status().error().message);
+    }
+    if (!a.markdown.empty()) {
+        md_file = std::make_unique<AtomicFile>(a.markdown);
+        if (!md_file->status()) return fail(verb, md_file->status().error().message);
+    }
+    auto report = run_query_bench(a.config, [&](const std::string& line) {
+        if (!a.quiet) std::fprintf(stderr, "bench: %s\n", line.c_str());
+    });
+    if (!report) return fail(verb, report.error().message);
+    const std::string json = to_json(*report).dump(2) + "\n";
+    const std::string table = to_markdown(*report);
+    std::fputs(table.c_str(), stdout);
+    if (json_file) {
+        json_file->stream() << json;
+        if (auto st = json_file->commit(); !st) return fail(verb, st.error().message);
+    } else {
+        std::fputs(json.c_str(), stdout);
+    }
+    if (md_file) {
+        md_file->stream() << table;
+        if (auto st = md_file->commit(); !st) return fail(verb, st.error().message);
+    }
+    return 0;
+}
+
+}  // namespace
+
+Verb add_bench_verb(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmark Eulerian queries against the fixed-point reference loop");
+    cmd->add_option("--out", args->out, "Write the JSON report here (default: standard output)");
+    cmd->add_option("--markdown", args->markdown, "Also write the Markdown table here");
+    cmd->add_option("--points", args->config.points, "Query points per timed run")->capture_default_str();
+    cmd->add_option("--repeats", args->config.repeats, "Runs per measurement; the best is kept")->capture_default_str();
+    cmd->add_option("--waves", args->config.wave_counts, "Wave counts to measure")->capture_default_str();
+    cmd->add_option("--steepness", args->config.steepness, "Target sum(Q*k*A) of the generated sets")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    cmd->add_option("--seed", args->config.seed, "Seed for waves and points")->capture_default_str();
+    cmd->add_option("--threads", args->config.threads, "Thread count of the 'all threads' runs (0 = all)");
+    cmd->add_flag("--quiet", args->quiet, "No progress lines on standard error");
+    return {cmd, [args] {
+                for (int w : args->config.wave_counts) {
+                    if (w < 1 || w > 64) return fail("bench", "--waves: each count must be in 1..64");
+                }
+                return run_bench(*args);
+            }};
+}
+
+}  // namespace tidewater::cli

@@ -1,0 +1,114 @@
+// tidewater query: the water surface at points from a CSV, at one time or a range.
+#include <cstdio>
+#include <fmt/format.h>
+#include <memory>
+#include <optional>
+
+#include "atomic_file.hpp"
+#include "points_csv.hpp"
+#include "scene_option.hpp"
+#include "tidewater/query.hpp"
+#include "time_range.hpp"
+#include "verbs.hpp"
+
+namespace tidewater::cli {
+
+namespace {
+
+struct QueryArgs {
+    std::string scene;
+    std::optional<double> time;
+    std::string times;
+    std::string points;
+    std::string out;
+    unsigned threads = 0;
+};
+
+/// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large.
+template <typename Sink>
+void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t,
+                const std::vector<glm::dvec2>& points, const std::vector<SurfacePoint>& results) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const SurfacePoint& s = results[i];
+        if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
+        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g}\n",
+                       points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
+                       s.velocity.y, s.velocity.z, s.jacobian);
+        if (buffer.size() > (1u << 20)) {
+            sink(buffer);
+            buffer.clear();
+        }
+    }
+}
+
+int run_query(const QueryArgs& a) {
+    constexpr const char* verb = "query";
+    if (a.time.has_value() == !a.times.empty()) return fail(verb, "give exactly one of --time and --times");
+    std::vector<double> times;
+    if (a.time) {
+        if (auto st = check_time(*a.time, "--time"); !st) return fail(verb, st.error().message);
+        times.push_back(*a.time);
+    } else {
+        auto range = parse_time_range(a.times, "--times");
+        if (!range) return fail(verb, range.error().message);
+        times = std::move(range).value();
+    }
+    auto scene = load_scene_option(a.scene);
+    if (!scene) return fail(verb, scene.error().message);
+    for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
+    auto points = read_points_csv(a.points);
+    if (!points) return fail(verb, points.error().message);
+
+    // A file output goes to a temporary that is renamed only after the last row:
+    // any failure on the way leaves no partial file.
+    std::unique_ptr<AtomicFile> file;
+    if (!a.out.empty()) {
+        file = std::make_unique<AtomicFile>(a.out);
+        if (!file->status()) return fail(verb, file->status().error().message);
+    }
+    const auto sink = [&](const std::string& chunk) {
+        if (file) {
+            file->stream().write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        } else {
+            std::fwrite(chunk.data(), 1, chunk.size(), stdout);
+        }
+    };
+    std::string buffer;
+    buffer.reserve(1u << 21);
+    buffer += a.time ? "" : "t,";
+    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian\n";
+
+    std::vector<SurfacePoint> results(points->size());
+    QueryOptions options;
+    options.threads = a.threads;
+    for (double t : times) {
+        if (auto st = query_surface(scene->ocean, t, *points, results, options); !st) return fail(verb, st.error().message);
+        for (const SurfacePoint& s : results) {
+            if (!s.converged) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
+        }
+        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *points, results);
+    }
+    sink(buffer);
+    if (file) {
+        if (auto st = file->commit(); !st) return fail(verb, st.error().message);
+        return 0;
+    }
+    return std::fflush(stdout) == 0 ? 0 : fail(verb, "writing to standard output failed");
+}
+
+}  // namespace
+
+Verb add_query_verb(CLI::App& app) {
+    auto args = std::make_shared<QueryArgs>();
+    CLI::App* cmd = app.add_subcommand("query", "Water surface at fixed (x, z) points: height, normal, velocity, Jacobian");
+    cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
+    cmd->add_option("--time", args->time, "Clock time, s");
+    cmd->add_option("--times", args->times, "Time range t0:t1:dt, s (writes a leading t column)");
+    cmd->add_option("--points", args->points, "CSV with a header naming columns x and z, m")->required();
+    cmd->add_option("--out", args->out, "Output CSV (default: standard output); written whole or not at all");
+    cmd->add_option("--threads", args->threads, "Worker threads (0 = all)");
+    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian (SI units; height is world y).");
+    return {cmd, [args] { return run_query(*args); }};
+}
+
+}  // namespace tidewater::cli

@@ -1,0 +1,22 @@
+// The tidewater program's verbs. Each adds its subcommand to the app and
+// returns the action to run when that subcommand is chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace tidewater::cli {
+
+struct Verb {
+    CLI::App* command = nullptr;
+    std::function<int()> run;
+};
+
+Verb add_query_verb(CLI::App& app);
+Verb add_bench_verb(CLI::App& app);
+Verb add_demo_verb(CLI::App& app);
+
+/// Prints "tidewater <verb>: <message>" to stderr and returns the exit code for failures.
+int fail(const char* verb, const std::string& message);
+
+}  // namespace tidewater::cli
