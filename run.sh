@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Tidewater's entry points on a Debian 12 machine with nothing installed:
+#   ./run.sh demo    install missing packages, build, run the demo on the default scene
+#   ./run.sh test    install missing packages, build, run the whole test suite
+#   ./run.sh bench   build, then run the query benchmark (not part of the test suite)
+# Each step is skipped when already done, so a second run is quick.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+BUILD="${TIDEWATER_BUILD_DIR:-$ROOT/build}"
+JOBS="$(nproc 2>/dev/null || echo 2)"
+
+# Debian packages the build and tests need (DESIGN.md lists why each is here).
+PACKAGES=(
+  cmake ninja-build g++ pkg-config ccache git
+  libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
+  libgtest-dev libbenchmark-dev
+)
+
+log() { printf '==> %s\n' "$*"; }
+
+install_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing Debian packages: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure() {
+  local dir="$1"; shift
+  if [ -f "$dir/CMakeCache.txt" ] && [ -f "$dir/build.ninja" ]; then return 0; fi
+  local launcher=()
+  if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache); fi
+  log "configuring $dir"
+  cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DTIDEWATER_WARNINGS_AS_ERRORS=ON "${launcher[@]}" "$@"
+}
+
+build() {
+  local dir="$1"; shift
+  log "building $dir"
+  cmake --build "$dir" --parallel "$JOBS" "$@"
+}
+
+cmd="${1:-}"
+case "$cmd" in
+  demo)
+    install_packages
+    configure "$BUILD"
+    build "$BUILD"
+    log "running the demo on the bundled default scene"
+    "$BUILD/bin/tidewater" demo --out-dir "$BUILD/demo"
+    ;;
+  test)
+    install_packages
+    configure "$BUILD"
+    build "$BUILD"
+    log "running the test suite"
+    ctest --test-dir "$BUILD" --output-on-failure --parallel "$JOBS" --timeout 900
+    # The unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+    configure "$BUILD-asan" -DTIDEWATER_SANITIZE=ON -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    build "$BUILD-asan" --target tidewater_core_tests
+    log "running the unit tests under ASan + UBSan"
+    ctest --test-dir "$BUILD-asan" --output-on-failure --parallel "$JOBS" --timeout 900 -L unit
+    ;;
+  bench)
+    install_packages
+    configure "$BUILD"
+    build "$BUILD"
+    "$BUILD/bin/tidewater" bench --out "$BUILD/bench/query_bench.json" --markdown "$BUILD/bench/query_bench.md"
+    ;;
+  *)
+    echo "usage: ./run.sh demo|test|bench" >&2
+    exit 2
+    ;;
+esac
