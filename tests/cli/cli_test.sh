@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# Command-line tests of the tidewater program: usage: cli_test.sh TIDEWATER CASE EXAMPLES_DIR
+# Each case checks outputs, exit codes, messages and that failures leave no output file.
+set -uo pipefail
+
+TW="$1"
+CASE="$2"
+EXAMPLES="$3"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK"
+
+fails=0
+check() {  # check DESCRIPTION COMMAND...
+  local what="$1"; shift
+  if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; fails=$((fails + 1)); fi
+}
+# expect_error DESCRIPTION EXPECTED_SUBSTRING COMMAND...: non-zero exit and the message on stderr.
+expect_error() {
+  local what="$1" needle="$2"; shift 2
+  local rc=0
+  "$@" >"$WORK/stdout" 2>"$WORK/stderr" || rc=$?
+  if [ "$rc" -ne 0 ] && grep -qF -- "$needle" "$WORK/stderr"; then
+    echo "ok: $what (exit $rc)"
+  else
+    echo "FAIL: $what: exit $rc, stderr: $(cat "$WORK/stderr")"
+    fails=$((fails + 1))
+  fi
+}
+no_file() { [ ! -e "$1" ] && ! ls "$1".tmp-* >/dev/null 2>&1; }
+
+printf 'x,z\n0,0\n12.5,-3\n100,40\n' > points.csv
+
+case "$CASE" in
+  help)
+    for verb in query bench demo; do
+      check "$verb --help exits 0" "$TW" "$verb" --help
+      check "$verb --help shows usage" bash -c "'$TW' $verb --help | grep -q 'Usage'"
+    done
+    check "--help lists verbs" bash -c "'$TW' --help | grep -q query && '$TW' --help | grep -q bench"
+    expect_error "no verb is an error" "subcommand" "$TW"
+    expect_error "unknown option is an error" "--bogus" "$TW" query --time 0 --points points.csv --bogus
+    ;;
+  query_columns)
+    "$TW" query --time 2.5 --points points.csv > out.csv
+    check "exit 0" test $? -eq 0
+    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian"
+    check "one row per point" test "$(wc -l < out.csv)" -eq 4
+    check "rows echo the points" bash -c "sed -n 3p out.csv | grep -q '^12.5,-3,'"
+    check "ten numeric columns" bash -c "awk -F, 'NR>1 && NF!=10 {bad=1} END {exit bad}' out.csv"
+    check "unit normals" bash -c "awk -F, 'NR>1 { n=\$4*\$4+\$5*\$5+\$6*\$6; if (n<0.999999 || n>1.000001) bad=1 } END {exit bad}' out.csv"
+    ;;
+  query_times)
+    "$TW" query --times 0:1:0.25 --points points.csv --out long.csv
+    check "exit 0" test $? -eq 0
+    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian"
+    check "5 times x 3 points" test "$(wc -l < long.csv)" -eq 16
+    check "last time is 1" bash -c "tail -1 long.csv | grep -q '^1,'"
+    # The row for t = 0.5 equals a single-time query at 0.5.
+    "$TW" query --time 0.5 --points points.csv > single.csv
+    check "range row equals single query" bash -c "diff <(grep '^0.5,' long.csv | cut -d, -f2-) <(tail -n +2 single.csv)"
+    ;;
+  query_out_matches_stdout)
+    "$TW" query --scene "$EXAMPLES/scenes/default.json" --time 7 --points points.csv --out a.csv --threads 2
+    "$TW" query --time 7 --points points.csv > b.csv
+    check "file equals stdout (and the scene file equals the bundled default)" cmp a.csv b.csv
+    check "no temporary left" bash -c "! ls a.csv.tmp-* 2>/dev/null"
+    ;;
+  query_bad_points)
+    expect_error "missing points file names it" "nope.csv: cannot open" "$TW" query --time 0 --points nope.csv --out o.csv
+    check "no output after missing points" no_file o.csv
+    : > empty.csv
+    expect_error "empty CSV" "empty.csv: empty file" "$TW" query --time 0 --points empty.csv --out o.csv
+    printf 'x,z\n' > header_only.csv
+    expect_error "header only" "no points" "$TW" query --time 0 --points header_only.csv --out o.csv
+    printf 'x,y\n1,2\n' > wrong_header.csv
+    expect_error "header without z" "must name columns" "$TW" query --time 0 --points wrong_header.csv --out o.csv
+    printf 'x,z\n1,2\n3,abc\n' > bad_number.csv
+    expect_error "bad number names line and column" 'line 3: column "z"' "$TW" query --time 0 --points bad_number.csv --out o.csv
+    printf 'x,z\n1,2\nnan,0\n' > nan.csv
+    expect_error "NaN point" "not a finite number" "$TW" query --time 0 --points nan.csv --out o.csv
+    printf 'x,z\n1,2,3\n' > ragged.csv
+    expect_error "ragged row" "3 fields" "$TW" query --time 0 --points ragged.csv --out o.csv
+    check "no output after any failure" no_file o.csv
+    ;;
+  query_bad_scene)
+    echo '{"version": 1, "water_level": 0,' > broken.json
+    expect_error "malformed JSON names the file" "broken.json: malformed JSON" "$TW" query --scene broken.json --time 0 --points points.csv --out o.csv
+    echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}}, "ocean": {"waves": [{"direction": 0, "wavelength": -2, "amplitude": 0.1, "steepness": 0.5}]}}' > neg.json
+    expect_error "bad wavelength names path and range" "neg.json: /ocean/waves/0/wavelength: -2 is out of range (allowed: 0 < wavelength" "$TW" query --scene neg.json --time 0 --points points.csv --out o.csv
+    echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}}, "ocean": "pool_calm", "extra": true}' > unknown.json
+    expect_error "unknown key" "unknown.json: /extra: unknown key" "$TW" query --scene unknown.json --time 0 --points points.csv --out o.csv
+    expect_error "missing scene" "missing.json: cannot open" "$TW" query --scene missing.json --time 0 --points points.csv --out o.csv
+    check "no output after any failure" no_file o.csv
+    ;;
+  query_bad_time)
+    expect_error "NaN time" "--time" "$TW" query --time nan --points points.csv --out o.csv
+    expect_error "huge time" "out of range" "$TW" query --time 1e12 --points points.csv --out o.csv
+    expect_error "both time options" "exactly one" "$TW" query --time 1 --times 0:1:1 --points points.csv --out o.csv
+    expect_error "neither time option" "exactly one" "$TW" query --points points.csv --out o.csv
+    expect_error "zero step" "dt must be > 0" "$TW" query --times 0:1:0 --points points.csv --out o.csv
+    expect_error "reversed range" "before t0" "$TW" query --times 5:1:1 --points points.csv --out o.csv
+    expect_error "malformed range" "is not t0:t1:dt" "$TW" query --times 0:1 --points points.csv --out o.csv
+    expect_error "too many steps" "at most" "$TW" query --times 0:1e6:1e-3 --points points.csv --out o.csv
+    check "no output after any failure" no_file o.csv
+    ;;
+  query_unwritable_out)
+    mkdir locked && chmod 0555 locked
+    if [ "$(id -u)" -eq 0 ]; then
+      # root writes anywhere: use a path under a regular file instead.
+      touch plain
+      expect_error "output under a file" "cannot create file" "$TW" query --time 0 --points points.csv --out plain/o.csv
+    else
+      expect_error "unwritable folder" "cannot create file" "$TW" query --time 0 --points points.csv --out locked/o.csv
+    fi
+    check "nothing written" bash -c "[ -z \"\$(ls -A locked)\" ]"
+    ;;
+  demo)
+    "$TW" demo --out-dir demo_out > log.txt
+    check "exit 0" test $? -eq 0
+    check "summary written" grep -q '"significant_wave_height_m"' demo_out/summary.json
+    check "surface CSV: header + 4 times x 64^2 points" test "$(wc -l < demo_out/surface.csv)" -eq $((1 + 4 * 64 * 64))
+    check "prints where files are" grep -q "wrote .*surface.csv" log.txt
+    expect_error "bad scene" "cannot open" "$TW" demo --scene nope.json --out-dir demo2
+    check "no demo output after failure" test ! -e demo2/summary.json
+    ;;
+  bench_small)
+    "$TW" bench --points 4000 --repeats 1 --waves 8 --threads 2 --quiet --out b.json > table.md
+    check "exit 0" test $? -eq 0
+    for key in '"kernel"' '"queries_per_second"' '"max_height_error"' '"fixed_point_reference"' '"newton_simd_heights"' '"speedup_per_core"'; do
+      check "report has $key" grep -q "$key" b.json
+    done
+    check "table printed" grep -q "speed-up per core" table.md
+    expect_error "bad wave count" "--waves" "$TW" bench --waves 65 --out c.json
+    check "no report after failure" no_file c.json
+    ;;
+  *)
+    echo "unknown case $CASE"; exit 2 ;;
+esac
+
+echo "$CASE: $fails failure(s)"
+[ "$fails" -eq 0 ]
