@@ -33,4 +33,10 @@ Status AtomicFile::commit() {
     return {};
 }
 
+Status AtomicFile::write_and_commit(std::string_view text) {
+    if (!status_) return status_;
+    out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+    return commit();
+}
+
 }  // namespace tidewater::cli

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 
 #include "tidewater/result.hpp"
 
@@ -22,6 +23,8 @@ public:
     std::ofstream& stream() { return out_; }
     /// Flushes, closes and renames onto the target.
     Status commit();
+    /// Writes `text`, then commits.
+    Status write_and_commit(std::string_view text);
 
 private:
     std::filesystem::path target_;

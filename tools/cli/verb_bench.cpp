@@ -36,15 +36,10 @@ int run_bench(const BenchArgs& a) {
     const std::string json = to_json(*report).dump(2) + "\n";
     const std::string table = to_markdown(*report);
     std::fputs(table.c_str(), stdout);
-    if (json_file) {
-        json_file->stream() << json;
-        if (auto st = json_file->commit(); !st) return fail(verb, st.error().message);
-    } else {
-        std::fputs(json.c_str(), stdout);
-    }
-    if (md_file) {
-        md_file->stream() << table;
-        if (auto st = md_file->commit(); !st) return fail(verb, st.error().message);
+    if (!json_file) std::fputs(json.c_str(), stdout);
+    for (auto& [file, text] : {std::pair{json_file.get(), &json}, std::pair{md_file.get(), &table}}) {
+        if (!file) continue;
+        if (auto st = file->write_and_commit(*text); !st) return fail(verb, st.error().message);
     }
     return 0;
 }

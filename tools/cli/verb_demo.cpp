@@ -93,9 +93,7 @@ int run_demo(const DemoArgs& a) {
         {"warnings", scene->warnings}};
     const std::filesystem::path summary_path = std::filesystem::path(a.out_dir) / "summary.json";
     AtomicFile sum_file(summary_path);
-    if (!sum_file.status()) return fail(verb, sum_file.status().error().message);
-    sum_file.stream() << summary.dump(2) << "\n";
-    if (auto st = sum_file.commit(); !st) return fail(verb, st.error().message);
+    if (auto st = sum_file.write_and_commit(summary.dump(2) + "\n"); !st) return fail(verb, st.error().message);
 
     std::printf("Tidewater %s demo: scene \"%s\", ocean \"%s\"\n", TIDEWATER_VERSION_STRING, scene->name.c_str(),
                 ocean.profile().name.c_str());
