@@ -122,6 +122,10 @@ TEST(SceneJson, BadInputNamesFilePathAndRange) {
         {"fold policy", scene_with_ocean(R"({"waves": [], "fold_policy": "ignore"})"), {"bad.json: /ocean/fold_policy", "clamp"}},
         {"water level", R"({"version": 1, "water_level": 1e7, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})", {"bad.json: /water_level", "out of range"}},
         {"not an object", "[1, 2]", {"bad.json", "expected an object"}},
+        {"duplicate key", R"({"version": 1, "water_level": 0, "water_level": 1, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
+         {"bad.json", "duplicate key \"water_level\""}},
+        {"nested duplicate", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 5, "amplitude": 0.1, "amplitude": 0.2, "steepness": 0.5})")),
+         {"bad.json", "duplicate key \"amplitude\""}},
     };
     for (const BadScene& c : cases) {
         auto scene = parse_scene(c.text, "bad.json");

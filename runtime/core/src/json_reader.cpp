@@ -3,13 +3,36 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <set>
+#include <vector>
 #include <sstream>
 
 namespace tidewater::detail {
 
 Result<nlohmann::json> parse_json_text(std::string_view text, const std::string& source) {
+    // nlohmann keeps the last of duplicate keys; a repeated key is almost always
+    // an editing mistake, so it is an error here (with the enclosing object's keys tracked).
+    std::vector<std::set<std::string>> keys_in_object;
+    std::string duplicate;
+    const auto track_keys = [&](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (event == Event::object_start) {
+            keys_in_object.emplace_back();
+        } else if (event == Event::object_end && !keys_in_object.empty()) {
+            keys_in_object.pop_back();
+        } else if (event == Event::key && !keys_in_object.empty()) {
+            const auto key = parsed.get<std::string>();
+            if (!keys_in_object.back().insert(key).second && duplicate.empty()) duplicate = key;
+        }
+        return true;
+    };
     try {
-        return nlohmann::json::parse(text.begin(), text.end());
+        nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), track_keys);
+        if (!duplicate.empty()) {
+            return Error{ErrorCode::schema_error,
+                         fmt::format("{}: duplicate key \"{}\" (each key may appear once per object)", source, duplicate)};
+        }
+        return doc;
     } catch (const nlohmann::json::exception& e) {
         std::string what = e.what();
         // Drop nlohmann's "[json.exception.parse_error.101] " tag; keep its line/column text.
