@@ -15,6 +15,7 @@ PACKAGES=(
   cmake ninja-build g++ pkg-config ccache git
   libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
   libgtest-dev libbenchmark-dev
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
 )
 
 log() { printf '==> %s\n' "$*"; }

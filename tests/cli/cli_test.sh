@@ -60,6 +60,15 @@ case "$CASE" in
     "$TW" query --time 0.5 --points points.csv > single.csv
     check "range row equals single query" bash -c "diff <(grep '^0.5,' long.csv | cut -d, -f2-) <(tail -n +2 single.csv)"
     ;;
+  query_gpu_backend)
+    "$TW" query --backend gpu --times 0:20:5 --points points.csv --out gpu.csv
+    check "gpu exit 0" test $? -eq 0
+    "$TW" query --backend cpu --times 0:20:5 --points points.csv --out cpu.csv
+    check "same header" test "$(head -1 gpu.csv)" = "$(head -1 cpu.csv)"
+    check "same rows" test "$(wc -l < gpu.csv)" -eq "$(wc -l < cpu.csv)"
+    check "heights within 1 mm, normals within 1e-3" bash -c "paste -d, cpu.csv gpu.csv | awk -F, 'NR>1 { d=\$4-\$15; if (d<0) d=-d; if (d>1e-3) bad=1; for (i=5;i<=7;i++) { e=\$i-\$(i+11); if (e<0) e=-e; if (e>1e-3) bad=1 } } END {exit bad}'"
+    expect_error "unknown backend" "--backend" "$TW" query --backend tpu --time 0 --points points.csv
+    ;;
   query_out_matches_stdout)
     "$TW" query --scene "$EXAMPLES/scenes/default.json" --time 7 --points points.csv --out a.csv --threads 2
     "$TW" query --time 7 --points points.csv > b.csv

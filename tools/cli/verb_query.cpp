@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "atomic_file.hpp"
+#include "query_backend.hpp"
 #include "points_csv.hpp"
 #include "scene_option.hpp"
 #include "tidewater/query.hpp"
@@ -22,6 +23,7 @@ struct QueryArgs {
     std::string points;
     std::string out;
     unsigned threads = 0;
+    std::string backend = "cpu";
 };
 
 /// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large.
@@ -78,11 +80,11 @@ int run_query(const QueryArgs& a) {
     buffer += a.time ? "" : "t,";
     buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian\n";
 
+    auto backend = make_query_backend(a.backend, a.threads);
+    if (!backend) return fail(verb, backend.error().message);
     std::vector<SurfacePoint> results(points->size());
-    QueryOptions options;
-    options.threads = a.threads;
     for (double t : times) {
-        if (auto st = query_surface(scene->ocean, t, *points, results, options); !st) return fail(verb, st.error().message);
+        if (auto st = (*backend)(scene->ocean, t, *points, results); !st) return fail(verb, st.error().message);
         for (const SurfacePoint& s : results) {
             if (!s.converged) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
         }
@@ -106,7 +108,10 @@ Verb add_query_verb(CLI::App& app) {
     cmd->add_option("--times", args->times, "Time range t0:t1:dt, s (writes a leading t column)");
     cmd->add_option("--points", args->points, "CSV with a header naming columns x and z, m")->required();
     cmd->add_option("--out", args->out, "Output CSV (default: standard output); written whole or not at all");
-    cmd->add_option("--threads", args->threads, "Worker threads (0 = all)");
+    cmd->add_option("--threads", args->threads, "Worker threads of the CPU backend (0 = all)");
+    cmd->add_option("--backend", args->backend, "cpu, or gpu (a Vulkan compute shader; same columns)")
+        ->check(CLI::IsMember({"cpu", "gpu"}))
+        ->capture_default_str();
     cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian (SI units; height is world y).");
     return {cmd, [args] { return run_query(*args); }};
 }

@@ -11,6 +11,9 @@ std::string_view to_string(ErrorCode code) noexcept {
         case ErrorCode::not_found: return "not found";
         case ErrorCode::fold_violation: return "fold violation";
         case ErrorCode::not_converged: return "not converged";
+        case ErrorCode::no_device: return "no device";
+        case ErrorCode::unsupported: return "unsupported";
+        case ErrorCode::device_error: return "device error";
     }
     return "unknown error";
 }

@@ -18,6 +18,9 @@ enum class ErrorCode {
     not_found,         ///< A named preset, scene or resource does not exist.
     fold_violation,    ///< A wave set breaks the fold-free rule sum(Q*k*A) <= 1.
     not_converged,     ///< An iterative solve did not reach its tolerance.
+    no_device,         ///< No Vulkan device fits; the message lists what was found.
+    unsupported,       ///< A format or feature the device lacks; the message names it.
+    device_error,      ///< A Vulkan call failed; the message names the call and VkResult.
 };
 
 std::string_view to_string(ErrorCode code) noexcept;

@@ -1,0 +1,38 @@
+// GPU surface queries: a compute shader solves the same Eulerian problem as
+// tidewater::query_surface, for large batches or to check CPU/GPU parity.
+//
+// Points are grouped into 64 m phase cells whose per-wave phase is reduced in
+// double on the CPU; the shader works in float relative to its cell, so the
+// GPU is as accurate at x = 10 km as at the origin.
+// Lifetime: borrows the DeviceContext, which must outlive it.
+// Threading: one call at a time; each call submits to the context's queue and waits.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/query.hpp"
+#include "tidewater/render/device_context.hpp"
+
+namespace tidewater::render {
+
+class GpuQuery {
+public:
+    static Result<std::unique_ptr<GpuQuery>> create(const DeviceContext& context);
+    ~GpuQuery();
+    GpuQuery(const GpuQuery&) = delete;
+    GpuQuery& operator=(const GpuQuery&) = delete;
+
+    /// Same contract as tidewater::query_surface.
+    Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
+                         std::span<SurfacePoint> out);
+
+private:
+    struct Impl;
+    explicit GpuQuery(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tidewater::render

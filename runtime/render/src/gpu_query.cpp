@@ -1,0 +1,192 @@
+#include "tidewater/render/gpu_query.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fmt/format.h>
+
+#include "embedded_shaders.hpp"
+#include "gpu_memory.hpp"
+#include "phase_cells.hpp"
+#include "vk_util.hpp"
+
+namespace tidewater::render {
+
+using detail::GpuBuffer;
+
+struct GpuQuery::Impl {
+    DeviceContext ctx;
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkCommandPool commands = VK_NULL_HANDLE;
+    GpuBuffer waves, phases, points, results;
+
+    ~Impl() {
+        if (!ctx.device) return;
+        vkDeviceWaitIdle(ctx.device);
+        waves.reset();
+        phases.reset();
+        points.reset();
+        results.reset();
+        if (commands) vkDestroyCommandPool(ctx.device, commands, ctx.allocator);
+        if (pool) vkDestroyDescriptorPool(ctx.device, pool, ctx.allocator);
+        if (pipeline) vkDestroyPipeline(ctx.device, pipeline, ctx.allocator);
+        if (pipeline_layout) vkDestroyPipelineLayout(ctx.device, pipeline_layout, ctx.allocator);
+        if (set_layout) vkDestroyDescriptorSetLayout(ctx.device, set_layout, ctx.allocator);
+    }
+
+    /// Grows `buffer` to hold at least `bytes`; reports whether it was replaced.
+    Result<bool> ensure(GpuBuffer& buffer, VkDeviceSize bytes) {
+        if (buffer.handle() && buffer.size() >= bytes) return false;
+        auto fresh = GpuBuffer::create(ctx, std::max<VkDeviceSize>(bytes, 256), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!fresh) return fresh.error();
+        buffer = std::move(fresh).value();
+        return true;
+    }
+
+    void bind_buffers() {
+        VkDescriptorBufferInfo infos[4] = {{waves.handle(), 0, VK_WHOLE_SIZE}, {phases.handle(), 0, VK_WHOLE_SIZE},
+                                           {points.handle(), 0, VK_WHOLE_SIZE}, {results.handle(), 0, VK_WHOLE_SIZE}};
+        VkWriteDescriptorSet writes[4];
+        for (std::uint32_t i = 0; i < 4; ++i) {
+            writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            writes[i].dstSet = set;
+            writes[i].dstBinding = i;
+            writes[i].descriptorCount = 1;
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[i].pBufferInfo = &infos[i];
+        }
+        vkUpdateDescriptorSets(ctx.device, 4, writes, 0, nullptr);
+    }
+};
+
+GpuQuery::GpuQuery(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GpuQuery::~GpuQuery() = default;
+
+Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context) {
+    if (!context.device || !context.queue || !context.physical_device) {
+        return Error{ErrorCode::invalid_argument, "GpuQuery: the DeviceContext has no device, physical device or queue"};
+    }
+    auto impl = std::make_unique<Impl>();
+    impl->ctx = context;
+    const DeviceContext& ctx = impl->ctx;
+
+    VkDescriptorSetLayoutBinding bindings[4];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    }
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = 4;
+    set_info.pBindings = bindings;
+    TW_VK_TRY(vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, &impl->set_layout));
+
+    VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::GpuQueryParams)};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &impl->set_layout;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    TW_VK_TRY(vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, &impl->pipeline_layout));
+
+    const auto spirv = detail::embedded_spirv("query.comp");
+    VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    module_info.codeSize = spirv.size_bytes();
+    module_info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    TW_VK_TRY(vkCreateShaderModule(ctx.device, &module_info, ctx.allocator, &module));
+    VkComputePipelineCreateInfo pipe{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipe.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipe.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipe.stage.module = module;
+    pipe.stage.pName = "main";
+    pipe.layout = impl->pipeline_layout;
+    const VkResult made = vkCreateComputePipelines(ctx.device, ctx.pipeline_cache, 1, &pipe, ctx.allocator, &impl->pipeline);
+    vkDestroyShaderModule(ctx.device, module, ctx.allocator);
+    if (made != VK_SUCCESS) return detail::vk_error(made, "vkCreateComputePipelines(query.comp)");
+
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4};
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = 1;
+    pool_info.pPoolSizes = &size;
+    TW_VK_TRY(vkCreateDescriptorPool(ctx.device, &pool_info, ctx.allocator, &impl->pool));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = impl->pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &impl->set_layout;
+    TW_VK_TRY(vkAllocateDescriptorSets(ctx.device, &alloc, &impl->set));
+
+    VkCommandPoolCreateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cmd_info.queueFamilyIndex = ctx.queue_family;
+    cmd_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    TW_VK_TRY(vkCreateCommandPool(ctx.device, &cmd_info, ctx.allocator, &impl->commands));
+    return std::unique_ptr<GpuQuery>(new GpuQuery(std::move(impl)));
+}
+
+Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
+                               std::span<SurfacePoint> out) {
+    if (points.size() != out.size()) {
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
+    }
+    if (points.empty()) return {};
+    if (points.size() > (1u << 26)) {
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
+    }
+    Impl& m = *impl_;
+    const WaveSet& set = body.waves();
+    const detail::PhaseCells cells = detail::build_phase_cells(set, body.local_time(time), points);
+    const auto waves = detail::gpu_waves(set);
+
+    bool rebind = false;
+    for (auto [buffer, bytes] : {std::pair{&m.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, waves.size())},
+                                 std::pair{&m.phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
+                                 std::pair{&m.points, sizeof(gpu::GpuQueryPoint) * points.size()},
+                                 std::pair{&m.results, sizeof(gpu::GpuQueryResult) * points.size()}}) {
+        auto grown = m.ensure(*buffer, bytes);
+        if (!grown) return grown.error();
+        rebind = rebind || *grown;
+    }
+    if (rebind) m.bind_buffers();
+    std::memcpy(m.waves.mapped(), waves.data(), sizeof(gpu::GpuWave) * waves.size());
+    std::memcpy(m.phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
+    std::memcpy(m.points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * points.size());
+
+    // The same tolerance and step bound as the CPU kernel.
+    const double max_offset = set.max_horizontal_displacement();
+    gpu::GpuQueryParams params{};
+    params.wave_count = static_cast<std::uint32_t>(waves.size());
+    params.point_count = static_cast<std::uint32_t>(points.size());
+    params.tolerance = static_cast<float>(std::max(1e-5, 4e-6 * max_offset));
+    params.max_offset = static_cast<float>(max_offset * 1.001 + 1e-6);
+
+    Status st = detail::submit_and_wait(m.ctx, m.commands, [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout, 0, 1, &m.set, 0, nullptr);
+        vkCmdPushConstants(cmd, m.pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
+        vkCmdDispatch(cmd, (params.point_count + gpu::kQueryWorkgroupSize - 1) / gpu::kQueryWorkgroupSize, 1, 1);
+        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
+                             nullptr, 0, nullptr);
+    });
+    if (!st) return st;
+
+    const auto* results = static_cast<const gpu::GpuQueryResult*>(m.results.mapped());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const gpu::GpuQueryResult& r = results[i];
+        SurfacePoint& o = out[i];
+        o.height = body.level() + static_cast<double>(r.height_normal.x);
+        o.normal = {r.height_normal.y, r.height_normal.z, r.height_normal.w};
+        o.velocity = {r.velocity_jac.x, r.velocity_jac.y, r.velocity_jac.z};
+        o.jacobian = static_cast<double>(r.velocity_jac.w);
+        o.displacement = {r.disp_iter.x, r.disp_iter.y};
+        o.iterations = static_cast<int>(r.disp_iter.z);
+        o.converged = r.disp_iter.w != 0.0f;
+    }
+    return {};
+}
+
+}  // namespace tidewater::render

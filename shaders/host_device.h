@@ -1,0 +1,62 @@
+// GPU data layouts shared by C++ and GLSL: written once, read by both.
+// In C++ the GLSL types map to glm; static_asserts pin every size so a
+// change on one side that the other does not see fails to compile.
+#ifndef TIDEWATER_HOST_DEVICE_H
+#define TIDEWATER_HOST_DEVICE_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+namespace tidewater::gpu {
+using vec2 = glm::vec2;
+using vec4 = glm::vec4;
+using mat4 = glm::mat4;
+using uint = std::uint32_t;
+#define TW_CONST inline constexpr
+#else
+#define TW_CONST const
+#endif
+
+TW_CONST uint kGpuMaxWaves = 64u;
+TW_CONST uint kQueryWorkgroupSize = 64u;
+
+// One Gerstner wave. Phases are not stored: the host reduces them in double
+// and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
+struct GpuWave {
+    vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
+    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z, w: unused
+};
+
+// A query point, relative to the origin of its phase cell.
+struct GpuQueryPoint {
+    vec2 local;          // m, point minus its cell origin
+    uint cell;           // row in the base-phase table
+    uint pad;
+};
+
+// Result of a GPU query, the CPU SurfacePoint's fields in float.
+struct GpuQueryResult {
+    vec4 height_normal;  // x: eta (m, without the water level), yzw: unit normal
+    vec4 velocity_jac;   // xyz: particle velocity (m/s), w: Jacobian determinant
+    vec4 disp_iter;      // xy: horizontal displacement (m), z: Newton evaluations, w: 1 if converged
+};
+
+struct GpuQueryParams {
+    uint wave_count;
+    uint point_count;
+    float tolerance;     // residual accepted as converged, m
+    float max_offset;    // sum(Q*A) with slack, m
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(GpuWave) == 32);
+static_assert(sizeof(GpuQueryPoint) == 16);
+static_assert(sizeof(GpuQueryResult) == 48);
+static_assert(sizeof(GpuQueryParams) == 16);
+}  // namespace tidewater::gpu
+#undef TW_CONST
+#endif
+
+#endif  // TIDEWATER_HOST_DEVICE_H
