@@ -4,7 +4,16 @@ include(CMakePackageConfigHelpers)
 
 set(TIDEWATER_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Tidewater)
 
-install(TARGETS tidewater_core EXPORT TidewaterTargets
+set(tidewater_installed_targets tidewater_core)
+set(TIDEWATER_CONFIG_DEPENDENCIES "")
+if(TARGET tidewater_render)
+  list(APPEND tidewater_installed_targets tidewater_render)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/render/include/tidewater
+    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+  set(TIDEWATER_CONFIG_DEPENDENCIES "find_dependency(Vulkan)")
+endif()
+
+install(TARGETS ${tidewater_installed_targets} EXPORT TidewaterTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}

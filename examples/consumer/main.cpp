@@ -2,6 +2,9 @@
 // buoy over a few seconds, and float a small boat on it.
 #include <cstdio>
 #include <tidewater/tidewater.hpp>
+#if defined(CONSUMER_HAS_RENDER)
+#include <tidewater/render/gpu_query.hpp>
+#endif
 
 int main() {
     auto preset = tidewater::load_preset("ocean_rolling");
@@ -23,6 +26,9 @@ int main() {
     const auto boat = tidewater::FloatingBody::four_point(8.0, 3.0);
     auto attitude = tidewater::hull_attitude(*ocean, boat, clock.now());
     if (!attitude) return 1;
+#if defined(CONSUMER_HAS_RENDER)
+    std::printf("renderer linked: %s\n", &tidewater::render::GpuQuery::create != nullptr ? "yes" : "no");
+#endif
     std::printf("boat heave=%.3f m pitch=%.4f rad roll=%.4f rad (Tidewater %s)\n", attitude->heave, attitude->pitch,
                 attitude->roll, TIDEWATER_VERSION_STRING);
     return 0;
