@@ -167,44 +167,99 @@ Result<WaterProfile> read_ocean(const json& value, const std::string& source, co
     return profile;
 }
 
-Result<Terrain> read_terrain(const ObjectReader& scene) {
+/// Reads [a, b] at `key` into `out`; each value within |v| <= limit.
+Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit) {
+    if (!r.has(key)) return required ? Status(r.error(key, "required [a, b] is missing")) : Status();
+    const json& v = r.at(key);
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) {
+        return r.error(key, "expected [a, b], two numbers");
+    }
+    const glm::dvec2 pair{v[0].get<double>(), v[1].get<double>()};
+    for (double x : {pair.x, pair.y}) {
+        if (!std::isfinite(x) || std::abs(x) > limit)
+            return r.error(key, fmt::format("{} is out of range (allowed: |value| <= {})", x, limit));
+    }
+    out = pair;
+    return {};
+}
+
+Status check_range(const ObjectReader& r, std::string_view key, double v, double lo, double hi, const char* unit) {
+    if (v < lo || v > hi) return r.error(key, fmt::format("{} is out of range (allowed: {} to {}{})", v, lo, hi, unit));
+    return {};
+}
+
+Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::path& base_dir) {
+    if (auto st = r.allow_only({"file", "size", "height_range", "center"}); !st) return st.error();
+    HeightmapTerrain t;
+    if (auto st = r.string("file", t.file, true); !st) return st.error();
+    if (auto st = read_pair(r, "size", t.size, true, 1e6); !st) return st.error();
+    if (t.size.x <= 0.0 || t.size.y <= 0.0) return r.error("size", "both sizes must be > 0 m");
+    glm::dvec2 range{0.0};
+    if (auto st = read_pair(r, "height_range", range, true, kMaxAbsHeight); !st) return st.error();
+    if (!(range.x < range.y)) return r.error("height_range", "expected [lowest, highest] with lowest < highest");
+    t.min_height = range.x;
+    t.max_height = range.y;
+    if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
+    std::filesystem::path path = t.file;
+    if (path.is_relative() && !base_dir.empty()) path = base_dir / path;
+    auto image = read_png_gray16(path);
+    if (!image) {
+        Error e = std::move(image).error();
+        e.message = fmt::format("{}: {}", r.context("file"), e.message);
+        return e;
+    }
+    t.file = path.string();
+    t.image = std::make_shared<const Gray16Image>(std::move(image).value());
+    return Terrain(t);
+}
+
+Result<Terrain> read_island(const ObjectReader& r) {
+    if (auto st = r.allow_only({"seed", "radius", "height", "seabed", "center"}); !st) return st.error();
+    IslandTerrain t;
+    std::int64_t seed = t.seed;
+    if (auto st = r.integer("seed", seed, 0, 0xffffffffLL); !st) return st.error();
+    t.seed = static_cast<std::uint32_t>(seed);
+    if (auto st = r.number("radius", t.radius); !st) return st.error();
+    if (auto st = check_range(r, "radius", t.radius, 50.0, 50000.0, " m"); !st) return st.error();
+    if (auto st = r.number("height", t.height); !st) return st.error();
+    if (auto st = check_range(r, "height", t.height, 1.0, 2000.0, " m"); !st) return st.error();
+    if (auto st = r.number("seabed", t.seabed); !st) return st.error();
+    if (auto st = check_range(r, "seabed", t.seabed, -10000.0, -1.0, " m"); !st) return st.error();
+    if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
+    return Terrain(t);
+}
+
+Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::path& base_dir) {
     auto r = ObjectReader::open(scene.at("terrain"), scene.source(), "/terrain");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"flat", "plane"}); !st) return st.error();
-    if (r->has("flat") == r->has("plane")) {
-        return Error{ErrorCode::schema_error, fmt::format("{}: give exactly one of \"flat\" and \"plane\"", r->context())};
+    if (auto st = r->allow_only({"flat", "plane", "heightmap", "island"}); !st) return st.error();
+    const int shapes = int(r->has("flat")) + int(r->has("plane")) + int(r->has("heightmap")) + int(r->has("island"));
+    if (shapes != 1) {
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: give exactly one of \"flat\", \"plane\", \"heightmap\" and \"island\"", r->context())};
     }
-    auto check_height = [](const ObjectReader& o, double h) -> Status {
-        if (std::abs(h) > kMaxAbsHeight)
-            return o.error("height", fmt::format("{} is out of range (allowed: |height| <= 100000 m)", h));
-        return {};
-    };
-    if (r->has("flat")) {
-        auto f = ObjectReader::open(r->at("flat"), r->source(), r->child_path("flat"));
-        if (!f) return f.error();
-        if (auto st = f->allow_only({"height"}); !st) return st.error();
-        FlatTerrain flat;
-        if (auto st = f->number("height", flat.height, true); !st) return st.error();
-        if (auto st = check_height(*f, flat.height); !st) return st.error();
-        return Terrain(flat);
+    for (const char* key : {"flat", "plane", "heightmap", "island"}) {
+        if (!r->has(key)) continue;
+        auto shape = ObjectReader::open(r->at(key), r->source(), r->child_path(key));
+        if (!shape) return shape.error();
+        const std::string k = key;
+        if (k == "heightmap") return read_heightmap(*shape, base_dir);
+        if (k == "island") return read_island(*shape);
+        if (k == "flat") {
+            if (auto st = shape->allow_only({"height"}); !st) return st.error();
+            FlatTerrain flat;
+            if (auto st = shape->number("height", flat.height, true); !st) return st.error();
+            if (auto st = check_range(*shape, "height", flat.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st) return st.error();
+            return Terrain(flat);
+        }
+        if (auto st = shape->allow_only({"height", "slope"}); !st) return st.error();
+        PlaneTerrain plane;
+        if (auto st = shape->number("height", plane.height, true); !st) return st.error();
+        if (auto st = check_range(*shape, "height", plane.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st) return st.error();
+        if (auto st = read_pair(*shape, "slope", plane.slope, true, 10.0); !st) return st.error();
+        return Terrain(plane);
     }
-    auto p = ObjectReader::open(r->at("plane"), r->source(), r->child_path("plane"));
-    if (!p) return p.error();
-    if (auto st = p->allow_only({"height", "slope"}); !st) return st.error();
-    PlaneTerrain plane;
-    if (auto st = p->number("height", plane.height, true); !st) return st.error();
-    if (auto st = check_height(*p, plane.height); !st) return st.error();
-    if (!p->has("slope")) return p->error("slope", "required [sx, sz] is missing");
-    const json& slope = p->at("slope");
-    if (!slope.is_array() || slope.size() != 2 || !slope[0].is_number() || !slope[1].is_number()) {
-        return p->error("slope", "expected [sx, sz], two numbers");
-    }
-    plane.slope = {slope[0].get<double>(), slope[1].get<double>()};
-    for (double s : {plane.slope.x, plane.slope.y}) {
-        if (!std::isfinite(s) || std::abs(s) > 10.0)
-            return p->error("slope", fmt::format("{} is out of range (allowed: |slope| <= 10)", s));
-    }
-    return Terrain(plane);
+    return Error{ErrorCode::schema_error, fmt::format("{}: no terrain shape", r->context())};
 }
 
 bool looks_like_path(const std::string& name) {
@@ -274,7 +329,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
                         fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", scene.water_level));
     }
     if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
-    auto terrain = read_terrain(*r);
+    auto terrain = read_terrain(*r, base_dir);
     if (!terrain) return terrain.error();
     scene.terrain = std::move(terrain).value();
     if (!r->has("ocean")) return r->error("ocean", "required ocean (a preset name, a file or an object) is missing");

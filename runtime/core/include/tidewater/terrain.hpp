@@ -1,10 +1,16 @@
-// Analytic terrains for scenes: a flat floor or an inclined plane.
-// Heightmaps and procedural islands join with the renderer.
-// Units: metres; y is up. Threading: immutable, safe to share.
+// Terrains: a flat floor, an inclined plane, a 16-bit heightmap, or a
+// procedural island. Units: metres; y is up.
+// Threading: immutable, safe to share (a heightmap's pixels are shared, not copied).
 #pragma once
 
-#include <glm/vec2.hpp>
+#include <cstdint>
+#include <memory>
+#include <string>
 #include <variant>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/image_io.hpp"
 
 namespace tidewater {
 
@@ -18,18 +24,45 @@ struct PlaneTerrain {
     glm::dvec2 slope{0.0};    ///< dh/dx, dh/dz (dimensionless)
 };
 
+/// A 16-bit greyscale heightmap: pixel value 0 is min_height, 65535 is max_height.
+/// Image column i maps to x, row j to z, spanning `size` centred on `center`;
+/// outside it the edge pixels extend. Sampled bilinearly between pixel centres.
+struct HeightmapTerrain {
+    std::string file;                     ///< Where it came from (for messages).
+    glm::dvec2 size{1000.0, 1000.0};      ///< m along x and z, > 0.
+    glm::dvec2 center{0.0};               ///< m
+    double min_height = -50.0;            ///< m
+    double max_height = 50.0;             ///< m
+    std::shared_ptr<const Gray16Image> image;
+};
+
+/// A procedural island: beaches of a gentle slope, cliffs along part of the
+/// coast, inland hills and an enclosed lagoon, all from `seed`.
+struct IslandTerrain {
+    std::uint32_t seed = 7;
+    double radius = 600.0;    ///< m, mean distance from the centre to the coast (water level 0)
+    double height = 80.0;     ///< m, typical inland height
+    double seabed = -40.0;    ///< m, depth far offshore (< 0)
+    glm::dvec2 center{0.0};   ///< m
+};
+
 class Terrain {
 public:
+    using Shape = std::variant<FlatTerrain, PlaneTerrain, HeightmapTerrain, IslandTerrain>;
+
     Terrain() = default;
-    explicit Terrain(FlatTerrain flat) : shape_(flat) {}
-    explicit Terrain(PlaneTerrain plane) : shape_(plane) {}
+    explicit Terrain(Shape shape) : shape_(std::move(shape)) {}
 
     double height_at(glm::dvec2 p) const;
-    const std::variant<FlatTerrain, PlaneTerrain>& shape() const { return shape_; }
+    const Shape& shape() const { return shape_; }
     const char* kind_name() const;
+    /// Centre and half-size (m) of the square region worth drawing; unbounded
+    /// shapes (flat, plane) report a 3 km half-size around the origin.
+    glm::dvec2 extent_center() const;
+    double extent_half_size() const;
 
 private:
-    std::variant<FlatTerrain, PlaneTerrain> shape_{FlatTerrain{}};
+    Shape shape_{FlatTerrain{}};
 };
 
 }  // namespace tidewater

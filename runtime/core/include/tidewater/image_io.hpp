@@ -1,0 +1,32 @@
+// PNG reading and writing for heightmaps, baked fields and rendered frames.
+// Writes are atomic: a temporary file beside the target is renamed over it
+// only when complete, so a failure never leaves a half-written image.
+// Threading: reentrant.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "tidewater/result.hpp"
+
+namespace tidewater {
+
+/// A single-channel 16-bit image, row-major from the top row.
+struct Gray16Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint16_t> pixels;
+};
+
+/// Reads a 16-bit greyscale PNG. 8-bit, colour or corrupt files are errors naming the file.
+Result<Gray16Image> read_png_gray16(const std::filesystem::path& path);
+
+/// Writes RGBA8 pixels (row-major from the top row) as PNG.
+Status write_png_rgba8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba);
+
+/// Writes a 16-bit greyscale PNG (heightmaps, baked fields).
+Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& image);
+
+}  // namespace tidewater
