@@ -26,7 +26,7 @@ TW_CONST uint kQueryWorkgroupSize = 64u;
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
 struct GpuWave {
     vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
-    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z, w: unused
+    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame), w: wavelength (m)
 };
 
 // A query point, relative to the origin of its phase cell.
@@ -43,6 +43,32 @@ struct GpuQueryResult {
     vec4 disp_iter;      // xy: horizontal displacement (m), z: Newton evaluations, w: 1 if converged
 };
 
+// Debug views (GpuFrame.params.w).
+TW_CONST uint kViewShaded = 0u;
+TW_CONST uint kViewHeight = 1u;
+TW_CONST uint kViewNormals = 2u;
+TW_CONST uint kViewJacobian = 3u;
+TW_CONST uint kViewDepth = 4u;
+TW_CONST uint kViewLod = 5u;
+TW_CONST uint kViewWireframe = 6u;
+
+// Per-frame constants. Positions are relative to the render origin O (the
+// camera snapped to the phase-cell grid, in double on the host), so float
+// keeps millimetres anywhere in the world; y is not shifted.
+struct GpuFrame {
+    mat4 view_proj;          // world (relative to O) to clip
+    mat4 inv_view_proj;
+    vec4 camera;             // xyz: camera position relative to O; w: ripple/caustic time, s (reduced)
+    vec4 sun;                // xyz: unit direction toward the sun; w: intensity
+    vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
+    vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
+    vec4 viewport;           // xy: size (px); zw: 1 / size
+    vec4 ripple;             // x: amplitude (m); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
+    vec4 ripple_drift;       // xy: drift (lattice units, reduced mod 256); z: has scene copy (0/1); w: max |eta| (m)
+    vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
+    vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: O mod 256 ripple wavelengths
+};
+
 struct GpuQueryParams {
     uint wave_count;
     uint point_count;
@@ -55,6 +81,7 @@ static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuQueryResult) == 48);
 static_assert(sizeof(GpuQueryParams) == 16);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 9 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

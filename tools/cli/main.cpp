@@ -23,7 +23,10 @@ int main(int argc, char** argv) {
                      "tidewater"};
         app.set_version_flag("--version", TIDEWATER_VERSION_STRING);
         app.require_subcommand(1);
-        const std::vector<Verb> verbs = {add_query_verb(app), add_bench_verb(app), add_demo_verb(app)};
+        std::vector<Verb> verbs = {add_query_verb(app), add_bench_verb(app), add_demo_verb(app)};
+#if defined(TIDEWATER_HAVE_RENDER)
+        verbs.push_back(add_render_verb(app));
+#endif
         CLI11_PARSE(app, argc, argv);
         for (const Verb& v : verbs) {
             if (v.command->parsed()) return v.run();

@@ -15,6 +15,9 @@ struct Verb {
 Verb add_query_verb(CLI::App& app);
 Verb add_bench_verb(CLI::App& app);
 Verb add_demo_verb(CLI::App& app);
+#if defined(TIDEWATER_HAVE_RENDER)
+Verb add_render_verb(CLI::App& app);
+#endif
 
 /// Prints "tidewater <verb>: <message>" to stderr and returns the exit code for failures.
 int fail(const char* verb, const std::string& message);

@@ -262,6 +262,28 @@ Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::p
     return Error{ErrorCode::schema_error, fmt::format("{}: no terrain shape", r->context())};
 }
 
+Result<SceneCamera> read_camera(const ObjectReader& scene) {
+    auto r = ObjectReader::open(scene.at("camera"), scene.source(), "/camera");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"position", "target", "fov"}); !st) return st.error();
+    SceneCamera cam;
+    for (const char* key : {"position", "target"}) {
+        if (!r->has(key)) return r->error(key, "required [x, y, z] is missing");
+        const json& v = r->at(key);
+        if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+            return r->error(key, "expected [x, y, z], three numbers");
+        const glm::dvec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+        for (double c : {p.x, p.y, p.z})
+            if (!std::isfinite(c) || std::abs(c) > 1e7) return r->error(key, fmt::format("{} is out of range (|value| <= 1e7 m)", c));
+        (std::string(key) == "position" ? cam.position : cam.target) = p;
+    }
+    if (auto st = r->number("fov", cam.fov_y_deg); !st) return st.error();
+    if (auto st = check_range(*r, "fov", cam.fov_y_deg, 5.0, 150.0, " degrees"); !st) return st.error();
+    if (glm::dvec3 d = cam.target - cam.position; d.x * d.x + d.y * d.y + d.z * d.z < 1e-6)
+        return r->error("target", "must differ from position");
+    return cam;
+}
+
 bool looks_like_path(const std::string& name) {
     return name.find('/') != std::string::npos || name.find('\\') != std::string::npos ||
            (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0);
@@ -318,7 +340,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean"}); !st)
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "camera"}); !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
@@ -338,6 +360,11 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     auto body = WaterBody::create(*profile, scene.water_level, r->context("ocean"), &scene.warnings);
     if (!body) return body.error();
     scene.ocean = std::move(body).value();
+    if (r->has("camera")) {
+        auto camera = read_camera(*r);
+        if (!camera) return camera.error();
+        scene.camera = *camera;
+    }
     return scene;
 }
 

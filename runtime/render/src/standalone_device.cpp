@@ -48,6 +48,10 @@ Candidate inspect(VkPhysicalDevice device) {
         c.why_not = "no dynamicRendering";
         return c;
     }
+    if (!f2.features.tessellationShader) {
+        c.why_not = "no tessellationShader";
+        return c;
+    }
     std::uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
     std::vector<VkQueueFamilyProperties> families(count);
@@ -138,7 +142,7 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     }
     if (!chosen) {
         return Error{ErrorCode::no_device,
-                     fmt::format("No Vulkan device fits (needs Vulkan 1.3, dynamic rendering, a graphics+compute queue{}); found: {}",
+                     fmt::format("No Vulkan device fits (needs Vulkan 1.3, dynamic rendering, tessellation, a graphics+compute queue{}); found: {}",
                                  options.device_name_contains.empty() ? "" : fmt::format(", a name containing \"{}\"", options.device_name_contains),
                                  found.empty() ? "none" : found)};
     }
@@ -150,6 +154,7 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     vkGetPhysicalDeviceFeatures(chosen->device, &supported);
     VkPhysicalDeviceFeatures enabled{};
     enabled.fillModeNonSolid = supported.fillModeNonSolid;  // wireframe debug view
+    enabled.tessellationShader = supported.tessellationShader;  // water level of detail
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;
     const float priority = 1.0f;

@@ -5,6 +5,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,11 +19,19 @@ namespace tidewater {
 
 inline constexpr int kSceneFormatVersion = 1;
 
+/// A viewpoint stored with a scene (the renderer's default camera for it).
+struct SceneCamera {
+    glm::dvec3 position{0.0, 25.0, 120.0};  ///< m
+    glm::dvec3 target{0.0};                 ///< m
+    double fov_y_deg = 55.0;                ///< degrees, in (1, 179)
+};
+
 struct Scene {
     std::string name;
     double water_level = 0.0;  ///< m, world y of the rest water surface.
     Terrain terrain;
     WaterBody ocean;
+    std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
 };
 

@@ -1,0 +1,42 @@
+// Rendering to an image of the renderer's own and reading it back: the path
+// the CLI, tools and tests use (no window, no swapchain).
+// Lifetime: borrows the DeviceContext and Renderer, which must outlive it.
+// Threading: one thread at a time; render() submits and waits.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "tidewater/render/renderer.hpp"
+
+namespace tidewater::render {
+
+struct RgbaImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels;  ///< RGBA8, rows from the top.
+};
+
+class OffscreenTarget {
+public:
+    /// Width and height in [16, 8192].
+    static Result<std::unique_ptr<OffscreenTarget>> create(const DeviceContext& context, std::uint32_t width,
+                                                           std::uint32_t height);
+    ~OffscreenTarget();
+    OffscreenTarget(const OffscreenTarget&) = delete;
+    OffscreenTarget& operator=(const OffscreenTarget&) = delete;
+
+    /// Renders one frame and returns its pixels.
+    Result<RgbaImage> render(Renderer& renderer, const FrameInfo& frame);
+    /// Formats to give RendererInitInfo for this target.
+    static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+private:
+    struct Impl;
+    explicit OffscreenTarget(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tidewater::render

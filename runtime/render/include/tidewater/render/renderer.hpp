@@ -1,0 +1,125 @@
+// Tidewater's renderer: terrain and Gerstner water drawn into a host's
+// Vulkan frame with dynamic rendering.
+//
+// Embedding (modelled on Dear ImGui's Vulkan backend):
+// - The host owns the instance, device, queue, swapchain and frame loop, and
+//   lends them through RendererInitInfo, which the renderer copies.
+// - The renderer only records into the host's command buffers. It never
+//   presents, never owns a swapchain, and submits to the queue only inside
+//   set_scene / set_water (explicit uploads, which wait for completion).
+// - Depth is reversed-Z: clear to 0, nearer is larger (compare GREATER_OR_EQUAL).
+//   Host geometry that shares a depth buffer with Tidewater must use the same.
+// - record_frame() renders a whole frame into the host's images (it begins and
+//   ends rendering itself, copying the opaque scene for refraction between the
+//   terrain and water passes). record_in_pass() draws into a pass the host
+//   has begun, without refraction of the host's geometry.
+//
+// Lifetime: destroy the Renderer before the device it was given; a
+// Renderer is move-less and lives behind a unique_ptr.
+// Threading: one thread at a time; record calls for frame i may overlap the
+// GPU executing frame i-1 up to frames_in_flight frames (the host fences them).
+// Units: metres, seconds, radians (camera field of view in degrees).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+#include <vulkan/vulkan.h>
+
+#include "tidewater/render/device_context.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater::render {
+
+enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe };
+
+/// "shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe".
+std::string_view to_string(DebugView view);
+std::optional<DebugView> parse_debug_view(std::string_view name);
+std::span<const DebugView> all_debug_views();
+
+struct Camera {
+    glm::dvec3 position{0.0, 25.0, 120.0};  ///< m, world
+    glm::dvec3 target{0.0, 0.0, 0.0};       ///< m, world
+    double fov_y_deg = 55.0;                ///< vertical field of view, in (1, 179)
+    double near_plane = 0.3;                ///< m, > 0; the far plane is at infinity (reversed-Z)
+};
+
+struct RendererInitInfo {
+    DeviceContext device;                          ///< Copied. Needs tessellationShader enabled.
+    VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  ///< The host's colour attachment format.
+    VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      ///< The host's depth attachment format.
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Only 1 is supported so far.
+    std::uint32_t frames_in_flight = 2;            ///< 1 to 4.
+    bool wireframe = true;                         ///< Build the wireframe view (needs fillModeNonSolid).
+    std::function<void(const std::string&)> log;   ///< Copied; default: silent.
+};
+
+/// The host's images for one frame (not owned). On entry and on return the colour
+/// image is in COLOR_ATTACHMENT_OPTIMAL and the depth image in
+/// DEPTH_ATTACHMENT_OPTIMAL; both need TRANSFER_SRC usage for the refraction copy.
+struct FrameTargets {
+    VkImage color_image = VK_NULL_HANDLE;
+    VkImageView color_view = VK_NULL_HANDLE;
+    VkImage depth_image = VK_NULL_HANDLE;
+    VkImageView depth_view = VK_NULL_HANDLE;
+    VkExtent2D extent{};
+    bool clear = true;  ///< Clear colour and depth first (false: draw over the host's content).
+};
+
+struct FrameInfo {
+    Camera camera;
+    double time = 0.0;                 ///< Clock time, s; each water body adds its own offset.
+    std::uint64_t frame_index = 0;     ///< Host frame counter; selects the in-flight slot.
+    DebugView view = DebugView::shaded;
+    glm::dvec3 sun_direction{0.35, 0.55, -0.75};  ///< Toward the sun; normalised by the renderer.
+};
+
+/// GPU time per pass of one frame, from timestamp queries (ms).
+struct PassTimings {
+    double sky_and_terrain_ms = 0.0;
+    double scene_copy_ms = 0.0;
+    double water_ms = 0.0;
+    double total_ms = 0.0;
+};
+
+struct RendererStats {
+    std::uint64_t terrain_vertices = 0;
+    std::uint64_t terrain_triangles = 0;
+    std::uint64_t water_patches = 0;   ///< Tessellated patches submitted (before culling).
+    std::uint32_t waves = 0;
+    double water_patch_size = 0.0;     ///< m
+};
+
+class Renderer {
+public:
+    static Result<std::unique_ptr<Renderer>> create(const RendererInitInfo& info);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Uploads the scene's terrain and water (submits and waits). Call again after edits.
+    Status set_scene(const Scene& scene);
+    /// Swaps only the water (a preset change); the terrain stays.
+    Status set_water(const WaterBody& water);
+
+    Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
+    Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
+
+    /// Pass timings of the frame recorded with `frame_index`, once the host knows it has finished.
+    Result<PassTimings> timings(std::uint64_t frame_index);
+    RendererStats stats() const;
+
+private:
+    struct Impl;
+    explicit Renderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tidewater::render

@@ -1,0 +1,119 @@
+#include "frame_constants.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "phase_cells.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/gerstner.hpp"
+
+namespace tidewater::render::detail {
+
+namespace {
+
+double positive_mod(double v, double period) {
+    const double m = std::fmod(v, period);
+    return m < 0.0 ? m + period : m;
+}
+
+}  // namespace
+
+glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_plane) {
+    const double f = 1.0 / std::tan(0.5 * fov_y_deg * kPi / 180.0);
+    glm::mat4 p(0.0f);
+    p[0][0] = static_cast<float>(f / aspect);
+    p[1][1] = static_cast<float>(-f);  // Vulkan clip y points down
+    p[2][2] = 0.0f;
+    p[2][3] = -1.0f;                   // w = -z_view
+    p[3][2] = static_cast<float>(near_plane);  // depth = near / -z_view: 1 at the near plane, 0 at infinity
+    return p;
+}
+
+Status validate_camera(const Camera& c) {
+    auto finite3 = [](const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite3(c.position) || !finite3(c.target))
+        return Error{ErrorCode::invalid_argument, "camera: position and target must be finite"};
+    if (glm::length(c.target - c.position) < 1e-6)
+        return Error{ErrorCode::invalid_argument, "camera: target equals position"};
+    const glm::dvec3 dir = glm::normalize(c.target - c.position);
+    if (std::abs(dir.y) > 0.99999)
+        return Error{ErrorCode::invalid_argument, "camera: looking straight up or down is not supported (y is up)"};
+    if (!(c.fov_y_deg > 1.0 && c.fov_y_deg < 179.0))
+        return Error{ErrorCode::invalid_argument, fmt::format("camera: fov_y {} is out of range (1 to 179 degrees)", c.fov_y_deg)};
+    if (!(c.near_plane > 0.0 && c.near_plane < 1e4))
+        return Error{ErrorCode::invalid_argument, fmt::format("camera: near plane {} is out of range (0 to 1e4 m)", c.near_plane)};
+    return {};
+}
+
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, double water_level,
+                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy) {
+    FramePlan plan;
+    const Camera& cam = info.camera;
+    // The render origin: the camera snapped to the phase-cell grid, in double.
+    plan.origin = {std::floor(cam.position.x / kPhaseCellSize) * kPhaseCellSize,
+                   std::floor(cam.position.z / kPhaseCellSize) * kPhaseCellSize};
+    const glm::dvec3 origin3{plan.origin.x, 0.0, plan.origin.y};
+    const glm::vec3 eye = glm::vec3(cam.position - origin3);
+    const glm::vec3 at = glm::vec3(cam.target - origin3);
+    const glm::mat4 view = glm::lookAt(eye, at, glm::vec3(0.0f, 1.0f, 0.0f));
+    const double aspect = static_cast<double>(extent.width) / static_cast<double>(extent.height);
+    const glm::mat4 view_proj = reversed_z_projection(cam.fov_y_deg, aspect, cam.near_plane) * view;
+
+    gpu::GpuFrame& f = plan.frame;
+    f.view_proj = view_proj;
+    f.inv_view_proj = glm::inverse(view_proj);
+    const double local_time = water.local_time(info.time);
+    f.camera = glm::vec4(eye, static_cast<float>(positive_mod(local_time, 3600.0)));
+    const glm::dvec3 sun = glm::normalize(info.sun_direction);
+    f.sun = glm::vec4(glm::vec3(sun), 1.0f);
+    // Tessellation scale: about one vertex every 3 pixels.
+    const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
+    const double tess_scale = static_cast<double>(extent.height) / (6.0 * tan_half);
+    f.params = glm::vec4(static_cast<float>(water_level), static_cast<float>(water.waves().size()),
+                         static_cast<float>(tess_scale), static_cast<float>(static_cast<std::uint32_t>(info.view)));
+    f.terrain_rect = glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
+                               static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
+                               static_cast<float>(terrain.height_rect_size), static_cast<float>(terrain.height_rect_size));
+    f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
+                           1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
+
+    const RippleSpec& rs = water.ripples().spec();
+    const double drift = std::fmod(local_time * rs.speed / rs.wavelength, 256.0);
+    const double rad = rs.direction_deg * kPi / 180.0;
+    f.ripple = glm::vec4(static_cast<float>(water.ripples().enabled() ? rs.amplitude : 0.0),
+                         static_cast<float>(1.0 / rs.wavelength), static_cast<float>(rs.octaves), static_cast<float>(rs.seed));
+    f.ripple_drift = glm::vec4(static_cast<float>(drift * std::cos(rad)), static_cast<float>(drift * std::sin(rad)),
+                               has_scene_copy ? 1.0f : 0.0f,
+                               static_cast<float>(std::max(water.waves().max_elevation(), water.waves().max_horizontal_displacement())));
+    const double ripple_period = 256.0 * rs.wavelength;
+    f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
+                             static_cast<float>(positive_mod(plan.origin.x, ripple_period)),
+                             static_cast<float>(positive_mod(plan.origin.y, ripple_period)));
+
+    // The water patch grid: world-aligned, following the camera in whole patches.
+    const double patch = std::max(32.0, 2.0 * water_half_size / 160.0);
+    plan.patches_per_side = static_cast<std::uint32_t>(std::ceil(2.0 * water_half_size / patch));
+    const glm::dvec2 corner{std::floor((cam.position.x - water_half_size) / patch) * patch,
+                            std::floor((cam.position.z - water_half_size) / patch) * patch};
+    f.water_patch = glm::vec4(static_cast<float>(patch), static_cast<float>(plan.patches_per_side),
+                              static_cast<float>(corner.x - plan.origin.x), static_cast<float>(corner.y - plan.origin.y));
+
+    // Waves with their phase at the render origin, reduced in double.
+    plan.waves = gpu_waves(water.waves());
+    std::vector<double> offsets(water.waves().size());
+    phase_offsets_at(water.waves(), local_time, offsets);
+    const auto ws = water.waves().waves();
+    for (std::size_t i = 0; i < ws.size(); ++i) {
+        const double phase = ws[i].k * (ws[i].dir_x * plan.origin.x + ws[i].dir_z * plan.origin.y) + offsets[i];
+        plan.waves[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
+        plan.waves[i].steep_omega.w = static_cast<float>(kTwoPi / ws[i].k);
+    }
+    plan.terrain_mesh_offset = glm::vec4(static_cast<float>(terrain.mesh_origin.x - plan.origin.x), 0.0f,
+                                         static_cast<float>(terrain.mesh_origin.y - plan.origin.y), 0.0f);
+    return plan;
+}
+
+}  // namespace tidewater::render::detail

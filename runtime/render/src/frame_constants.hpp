@@ -1,0 +1,37 @@
+// Per-frame GPU constants (private): camera matrices relative to the render
+// origin, wave phases reduced in double, the water patch grid.
+#pragma once
+
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include "host_device.h"
+#include "tidewater/render/renderer.hpp"
+
+namespace tidewater::render::detail {
+
+struct TerrainPlacement {
+    glm::dvec2 height_rect_corner{0.0};  ///< World xz of the height texture's corner, m.
+    double height_rect_size = 1.0;       ///< m
+    glm::dvec2 mesh_origin{0.0};         ///< World xz the terrain mesh is relative to, m.
+};
+
+struct FramePlan {
+    gpu::GpuFrame frame{};
+    std::vector<gpu::GpuWave> waves;
+    glm::dvec2 origin{0.0};              ///< The render origin O, world xz, m.
+    glm::vec4 terrain_mesh_offset{0.0f}; ///< Mesh origin relative to O.
+    std::uint32_t patches_per_side = 0;
+};
+
+/// Reversed-Z, infinite-far perspective for Vulkan clip space (y down, z in [0, 1]).
+glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_plane);
+
+Status validate_camera(const Camera& camera);
+
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, double water_level,
+                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy);
+
+}  // namespace tidewater::render::detail

@@ -1,0 +1,113 @@
+#include "tidewater/render/offscreen.hpp"
+
+#include <cstring>
+#include <fmt/format.h>
+
+#include "gpu_memory.hpp"
+#include "vk_util.hpp"
+
+namespace tidewater::render {
+
+using detail::GpuBuffer;
+using detail::GpuImage;
+
+struct OffscreenTarget::Impl {
+    DeviceContext ctx;
+    GpuImage color, depth;
+    GpuBuffer readback;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    std::uint64_t frame_counter = 0;
+
+    ~Impl() {
+        if (!ctx.device) return;
+        vkDeviceWaitIdle(ctx.device);
+        color.reset();
+        depth.reset();
+        readback.reset();
+        if (pool) vkDestroyCommandPool(ctx.device, pool, ctx.allocator);
+    }
+};
+
+OffscreenTarget::OffscreenTarget(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+OffscreenTarget::~OffscreenTarget() = default;
+
+Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceContext& context, std::uint32_t width,
+                                                                 std::uint32_t height) {
+    if (width < 16 || height < 16 || width > 8192 || height > 8192) {
+        return Error{ErrorCode::invalid_argument, fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
+    }
+    auto impl = std::make_unique<Impl>();
+    impl->ctx = context;
+    auto color = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    if (!color) return color.error();
+    impl->color = std::move(color).value();
+    auto depth = GpuImage::create(impl->ctx, {width, height}, kDepthFormat,
+                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (!depth) return depth.error();
+    impl->depth = std::move(depth).value();
+    auto readback = GpuBuffer::create(impl->ctx, VkDeviceSize{width} * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    if (!readback) return readback.error();
+    impl->readback = std::move(readback).value();
+    VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cp.queueFamilyIndex = impl->ctx.queue_family;
+    cp.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    TW_VK_TRY(vkCreateCommandPool(impl->ctx.device, &cp, impl->ctx.allocator, &impl->pool));
+    return std::unique_ptr<OffscreenTarget>(new OffscreenTarget(std::move(impl)));
+}
+
+Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& frame) {
+    Impl& m = *impl_;
+    const VkExtent2D extent = m.color.extent();
+    Status recorded;
+    auto barrier = [](VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                      VkPipelineStageFlags src, VkAccessFlags src_access, VkPipelineStageFlags dst, VkAccessFlags dst_access) {
+        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        b.srcAccessMask = src_access;
+        b.dstAccessMask = dst_access;
+        b.oldLayout = from;
+        b.newLayout = to;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image;
+        b.subresourceRange = {aspect, 0, 1, 0, 1};
+        vkCmdPipelineBarrier(cmd, src, dst, 0, 0, nullptr, 0, nullptr, 1, &b);
+    };
+    Status submitted = detail::submit_and_wait(m.ctx, m.pool, [&](VkCommandBuffer cmd) {
+        barrier(cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        barrier(cmd, m.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+        FrameTargets targets;
+        targets.color_image = m.color.handle();
+        targets.color_view = m.color.view();
+        targets.depth_image = m.depth.handle();
+        targets.depth_view = m.depth.view();
+        targets.extent = extent;
+        recorded = renderer.record_frame(cmd, frame, targets);
+        barrier(cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent.width, extent.height, 1};
+        vkCmdCopyImageToBuffer(cmd, m.color.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m.readback.handle(), 1, &region);
+        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+    });
+    if (!recorded) return recorded.error();
+    if (!submitted) return submitted.error();
+    RgbaImage image;
+    image.width = static_cast<int>(extent.width);
+    image.height = static_cast<int>(extent.height);
+    image.pixels.resize(static_cast<std::size_t>(extent.width) * extent.height * 4);
+    std::memcpy(image.pixels.data(), m.readback.mapped(), image.pixels.size());
+    for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;  // opaque PNGs
+    return image;
+}
+
+}  // namespace tidewater::render

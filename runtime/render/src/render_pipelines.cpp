@@ -1,0 +1,120 @@
+#include "render_pipelines.hpp"
+
+#include <fmt/format.h>
+#include <vector>
+
+#include "embedded_shaders.hpp"
+#include "vk_util.hpp"
+
+namespace tidewater::render::detail {
+
+namespace {
+
+Result<VkShaderModule> make_module(const DeviceContext& ctx, std::string_view name) {
+    const auto spirv = embedded_spirv(name);
+    if (spirv.empty()) return Error{ErrorCode::not_found, fmt::format("shader {} is not embedded in this build", name)};
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = spirv.size_bytes();
+    info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    TW_VK_TRY(vkCreateShaderModule(ctx.device, &info, ctx.allocator, &module));
+    return module;
+}
+
+}  // namespace
+
+Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& d) {
+    struct Stage {
+        std::string_view name;
+        VkShaderStageFlagBits stage;
+    };
+    std::vector<Stage> wanted{{d.vertex, VK_SHADER_STAGE_VERTEX_BIT}};
+    if (!d.tess_control.empty()) {
+        wanted.push_back({d.tess_control, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT});
+        wanted.push_back({d.tess_eval, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT});
+    }
+    wanted.push_back({d.fragment, VK_SHADER_STAGE_FRAGMENT_BIT});
+    std::vector<VkShaderModule> modules;
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    auto destroy_modules = [&] {
+        for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, ctx.allocator);
+    };
+    for (const Stage& s : wanted) {
+        auto module = make_module(ctx, s.name);
+        if (!module) {
+            destroy_modules();
+            return module.error();
+        }
+        modules.push_back(*module);
+        VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        info.stage = s.stage;
+        info.module = *module;
+        info.pName = "main";
+        stages.push_back(info);
+    }
+
+    VkVertexInputBindingDescription binding{0, 24, VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                                       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    if (d.terrain_vertices) {
+        vertex_input.vertexBindingDescriptionCount = 1;
+        vertex_input.pVertexBindingDescriptions = &binding;
+        vertex_input.vertexAttributeDescriptionCount = 2;
+        vertex_input.pVertexAttributeDescriptions = attributes;
+    }
+    const bool tessellated = !d.tess_control.empty();
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineTessellationStateCreateInfo tess{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+    tess.patchControlPoints = 4;
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = d.polygon_mode;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = d.depth_write ? VK_TRUE : VK_FALSE;
+    depth.depthCompareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reversed-Z
+    VkPipelineColorBlendAttachmentState blend{};
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blending{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blending.attachmentCount = 1;
+    blending.pAttachments = &blend;
+    const VkDynamicState dynamic_states[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &d.color_format;
+    rendering.depthAttachmentFormat = d.depth_format;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.pNext = &rendering;
+    info.stageCount = static_cast<std::uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &assembly;
+    info.pTessellationState = tessellated ? &tess : nullptr;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blending;
+    info.pDynamicState = &dynamic;
+    info.layout = d.layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult r = vkCreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);
+    destroy_modules();
+    if (r != VK_SUCCESS) return vk_error(r, "vkCreateGraphicsPipelines");
+    return pipeline;
+}
+
+}  // namespace tidewater::render::detail

@@ -1,0 +1,123 @@
+#version 450
+// Water shading (seed 004): depth colour and refraction from the copy of the
+// opaque scene, Schlick Fresnel, sky and sun, screen-space reflection of the
+// terrain, subsurface scattering at crests, foam where the Jacobian folds.
+#extension GL_GOOGLE_include_directive : require
+#include "host_device.h"
+#include "frame.glsl"
+#include "water_lod.glsl"
+layout(location = 0) in vec3 world_pos;
+layout(location = 1) in vec3 geo_normal;
+layout(location = 2) in vec2 rest_xz;
+layout(location = 3) in float jacobian;
+layout(location = 4) in float eta;
+layout(location = 5) in float spacing;
+layout(location = 0) out vec4 out_color;
+
+const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
+const vec3 kDeepColor = vec3(0.01, 0.09, 0.13);
+const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
+
+vec3 world_from_depth(vec2 uv, float depth) {
+    vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
+    return p.xyz / p.w;
+}
+
+// Normal detail: waves faded out of the geometry, then ripples.
+vec3 detail_normal() {
+    vec2 slope = vec2(0.0);
+    uint count = uint(frame.params.y);
+    for (uint i = 0u; i < count; ++i) {
+        GpuWave w = waves[i];
+        float missing = 1.0 - wave_lod_fade(w.steep_omega.w, spacing);
+        if (missing <= 0.0) continue;
+        float theta = w.dir_k_amp.z * dot(w.dir_k_amp.xy, rest_xz) + w.steep_omega.z;
+        slope += missing * w.dir_k_amp.w * w.dir_k_amp.z * w.dir_k_amp.xy * cos(theta);
+    }
+    slope += ripple_slope(rest_xz);
+    vec3 n = normalize(geo_normal);
+    return normalize(n + vec3(-slope.x, 0.0, -slope.y));
+}
+
+void main() {
+    uint view = uint(frame.params.w);
+    vec3 to_camera = frame.camera.xyz - world_pos;
+    float distance = length(to_camera);
+    vec3 v = to_camera / distance;
+    vec3 n = detail_normal();
+    if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
+    vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
+    bool has_scene = frame.ripple_drift.z > 0.5;
+
+    // Water column along the view ray, and what lies behind it.
+    float column_depth = max(frame.params.x - terrain_height_at(world_pos.xz), 0.0);
+    float thickness = column_depth / max(v.y, 0.15);
+    vec3 behind = vec3(0.62, 0.56, 0.42) * 0.8;
+    if (has_scene) {
+        vec2 offset = n.xz * 0.04 * clamp(thickness / 4.0, 0.0, 1.0) / max(distance * 0.02, 1.0);
+        vec2 ruv = clamp(uv + offset, vec2(0.0), vec2(1.0));
+        vec3 floor_pos = world_from_depth(ruv, textureLod(scene_depth, ruv, 0.0).r);
+        if (length(floor_pos - frame.camera.xyz) < distance) {  // refracted sample is above water: no offset
+            ruv = uv;
+            floor_pos = world_from_depth(ruv, textureLod(scene_depth, ruv, 0.0).r);
+        }
+        thickness = max(length(floor_pos - world_pos), 0.0);
+        behind = textureLod(scene_color, ruv, 0.0).rgb;
+    }
+    vec3 transmittance = exp(-kAbsorption * thickness);
+    vec3 refracted = behind * transmittance * kShallowTint / max(kShallowTint.g, 1e-3) + kDeepColor * (1.0 - transmittance);
+
+    // Reflection: the sky, and the terrain by a short screen-space march.
+    vec3 r = reflect(-v, n);
+    r.y = abs(r.y);
+    vec3 reflected = sky_color(r);
+    if (has_scene) {
+        vec3 p = world_pos;
+        float step_len = max(distance * 0.02, 0.5);
+        for (int i = 0; i < 24; ++i) {
+            p += r * step_len;
+            step_len *= 1.25;
+            vec4 clip = frame.view_proj * vec4(p, 1.0);
+            if (clip.w <= 0.0) break;
+            vec3 ndc = clip.xyz / clip.w;
+            vec2 suv = ndc.xy * 0.5 + 0.5;
+            if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) break;
+            float scene_z = textureLod(scene_depth, suv, 0.0).r;
+            // Reversed Z: larger is nearer. A hit when the scene is in front of the ray point.
+            if (scene_z > ndc.z && scene_z > 0.0) {
+                vec3 hit = world_from_depth(suv, scene_z);
+                if (length(hit - p) < step_len * 2.0) {
+                    float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
+                    reflected = mix(reflected, textureLod(scene_color, suv, 0.0).rgb, edge);
+                }
+                break;
+            }
+        }
+    }
+
+    float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
+    vec3 color = mix(refracted, reflected, fresnel);
+    vec3 h = normalize(frame.sun.xyz + v);
+    color += frame.sun.w * pow(max(dot(n, h), 0.0), 600.0) * vec3(6.0, 5.6, 4.8);
+
+    // Subsurface light through thin crests facing away from the sun.
+    float crest = clamp(eta / max(frame.ripple_drift.w, 1e-3), 0.0, 1.0);
+    float sss = pow(max(dot(v, -normalize(frame.sun.xyz + n * 0.5)), 0.0), 4.0) * crest;
+    color += sss * vec3(0.06, 0.45, 0.38) * frame.sun.w;
+
+    // Foam where the surface compresses toward folding (Jacobian -> 0).
+    float foam = smoothstep(0.75, 0.35, jacobian);
+    if (foam > 0.0) {
+        float grain = 0.55 + 0.45 * gradient_noise((rest_xz + frame.origin_mod.xy) * 0.75, 31u).x;
+        color = mix(color, vec3(0.92, 0.95, 0.96), clamp(foam * grain * 1.4, 0.0, 1.0));
+    }
+    color = apply_fog(color, distance, -v);
+
+    if (view == kViewHeight) color = heat_color(0.5 + 0.5 * eta / max(frame.ripple_drift.w, 1e-3));
+    if (view == kViewNormals) color = n * 0.5 + 0.5;
+    if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
+    if (view == kViewDepth) color = heat_color(column_depth / 40.0);
+    if (view == kViewLod) color = heat_color(log2(max(distance, 1.0) / frame.params.z * 4.0) / 8.0);
+    if (view == kViewWireframe) color = vec3(0.9, 0.95, 1.0);
+    out_color = vec4(color, 1.0);
+}

@@ -1,0 +1,50 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "host_device.h"
+#include "frame.glsl"
+#include "water_lod.glsl"
+layout(vertices = 4) out;
+layout(location = 0) in vec2 patch_xz[];
+layout(location = 0) out vec2 control_xz[];
+
+float edge_level(vec2 a, vec2 b) {
+    float spacing = vertex_spacing(camera_distance(0.5 * (a + b)));
+    return clamp(length(b - a) / spacing, 1.0, 64.0);
+}
+
+bool outside_frustum() {
+    // The displaced surface stays within the rest patch grown by the largest displacement.
+    float margin = frame.ripple_drift.w;
+    vec2 lo = min(min(patch_xz[0], patch_xz[1]), min(patch_xz[2], patch_xz[3])) - margin;
+    vec2 hi = max(max(patch_xz[0], patch_xz[1]), max(patch_xz[2], patch_xz[3])) + margin;
+    vec4 c[8];
+    for (int i = 0; i < 8; ++i) {
+        vec3 p = vec3((i & 1) != 0 ? hi.x : lo.x, frame.params.x + ((i & 2) != 0 ? margin : -margin), (i & 4) != 0 ? hi.y : lo.y);
+        c[i] = frame.view_proj * vec4(p, 1.0);
+    }
+    bvec4 all_out_a = bvec4(true), all_out_b = bvec4(true);
+    for (int i = 0; i < 8; ++i) {
+        all_out_a = bvec4(all_out_a.x && c[i].x < -c[i].w, all_out_a.y && c[i].x > c[i].w,
+                          all_out_a.z && c[i].y < -c[i].w, all_out_a.w && c[i].y > c[i].w);
+        all_out_b.x = all_out_b.x && c[i].w <= 0.0;
+    }
+    return any(all_out_a) || all_out_b.x;
+}
+
+void main() {
+    control_xz[gl_InvocationID] = patch_xz[gl_InvocationID];
+    if (gl_InvocationID == 0) {
+        if (outside_frustum()) {
+            gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelOuter[3] = 0.0;
+            gl_TessLevelInner[0] = gl_TessLevelInner[1] = 0.0;
+            return;
+        }
+        // Quad edges: 0: u = 0 (corners 0-2), 1: v = 0 (0-1), 2: u = 1 (1-3), 3: v = 1 (2-3).
+        gl_TessLevelOuter[0] = edge_level(patch_xz[0], patch_xz[2]);
+        gl_TessLevelOuter[1] = edge_level(patch_xz[0], patch_xz[1]);
+        gl_TessLevelOuter[2] = edge_level(patch_xz[1], patch_xz[3]);
+        gl_TessLevelOuter[3] = edge_level(patch_xz[2], patch_xz[3]);
+        gl_TessLevelInner[0] = max(gl_TessLevelOuter[1], gl_TessLevelOuter[3]);
+        gl_TessLevelInner[1] = max(gl_TessLevelOuter[0], gl_TessLevelOuter[2]);
+    }
+}

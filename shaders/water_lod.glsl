@@ -1,0 +1,20 @@
+// Level of detail shared by the water tessellation stages: one continuous
+// function of distance, so neighbouring patches agree on shared edges (no
+// cracks) and waves fade smoothly (no seams, no popping).
+#ifndef TIDEWATER_WATER_LOD_GLSL
+#define TIDEWATER_WATER_LOD_GLSL
+
+float camera_distance(vec2 xz) {
+    return length(vec3(xz.x, frame.params.x, xz.y) - frame.camera.xyz);
+}
+// Target vertex spacing (m) at a distance: grows linearly with distance.
+float vertex_spacing(float distance) {
+    return max(distance, 1.0) / frame.params.z;
+}
+// A wave keeps full amplitude while its wavelength spans 4+ vertices, none below 2:
+// seed 000's "fewer waves far away", continuous in space.
+float wave_lod_fade(float wavelength, float spacing) {
+    return smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
+}
+
+#endif
