@@ -46,12 +46,14 @@ void main() {
         float t = frame.camera.w;
         vec2 q = (world_pos.xz + frame.origin_mod.xy) * 0.375;  // period 256 / 0.375 divides 2048 m
         float c = voronoi(q, t) * voronoi(q + 7.3, t * 1.3);
-        float caustic = pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6 * exp(-depth * 0.18) * diffuse;
+        // Troughs bare the sand just below the mean level: no caustics in the top half metre.
+        float caustic = pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6 * exp(-depth * 0.18) * diffuse * smoothstep(0.5, 2.0, depth);
         color += caustic * vec3(0.9, 1.0, 0.95);
     }
     if (view == kViewHeight) color = heat_color((h - level + 40.0) / 80.0);
     if (view == kViewDepth) color = depth > 0.0 ? heat_color(depth / 40.0) : vec3(0.2);
     if (view == kViewNormals) color = n * 0.5 + 0.5;
+    if (view == kViewWireframe) color = vec3(0.1, 0.25, 0.08);
     vec3 ray = world_pos - frame.camera.xyz;
     if (view == kViewShaded) color = apply_fog(color, length(ray), normalize(ray));
     out_color = vec4(color, 1.0);

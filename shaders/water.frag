@@ -98,7 +98,7 @@ void main() {
     float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
     vec3 color = mix(refracted, reflected, fresnel);
     vec3 h = normalize(frame.sun.xyz + v);
-    color += frame.sun.w * pow(max(dot(n, h), 0.0), 600.0) * vec3(6.0, 5.6, 4.8);
+    color += frame.sun.w * pow(max(dot(n, h), 0.0), 400.0) * vec3(2.4, 2.25, 2.0);
 
     // Subsurface light through thin crests facing away from the sun.
     float crest = clamp(eta / max(frame.ripple_drift.w, 1e-3), 0.0, 1.0);
@@ -118,6 +118,6 @@ void main() {
     if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
     if (view == kViewDepth) color = heat_color(column_depth / 40.0);
     if (view == kViewLod) color = heat_color(log2(max(distance, 1.0) / frame.params.z * 4.0) / 8.0);
-    if (view == kViewWireframe) color = vec3(0.9, 0.95, 1.0);
+    if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     out_color = vec4(color, 1.0);
 }

@@ -1,5 +1,6 @@
 // tidewater demo: the main job on a scene (the bundled default unless --scene):
-// a summary of the water and a CSV of its surface over a grid and a few times.
+// a summary of the water, a CSV of its surface over a grid and a few times,
+// and, with the renderer, a rendered still and a short sequence.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#if defined(TIDEWATER_HAVE_RENDER)
+#include "render_job.hpp"
+#endif
 #include "scene_option.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/version.hpp"
@@ -22,6 +26,7 @@ struct DemoArgs {
     std::string out_dir = "tidewater-demo";
     int grid = 64;
     double extent = 200.0;
+    bool no_render = false;
 };
 
 int run_demo(const DemoArgs& a) {
@@ -43,7 +48,6 @@ int run_demo(const DemoArgs& a) {
         weighted_period += w.amplitude * w.amplitude * w.period();
     }
     const double mean_period = energy > 0.0 ? weighted_period / energy : 0.0;
-    const double depth = scene->water_level - scene->terrain.height_at({0.0, 0.0});
 
     // Surface over a grid centred on the origin at a few times.
     const int n = a.grid;
@@ -79,7 +83,7 @@ int run_demo(const DemoArgs& a) {
         {"scene", scene->name},
         {"water_level_m", scene->water_level},
         {"terrain", scene->terrain.kind_name()},
-        {"depth_at_origin_m", depth},
+        {"terrain_height_at_origin_m", scene->terrain.height_at({0.0, 0.0})},
         {"ocean", ocean.profile().name},
         {"waves", waves.size()},
         {"significant_wave_height_m", waves.significant_wave_height()},
@@ -99,10 +103,31 @@ int run_demo(const DemoArgs& a) {
                 ocean.profile().name.c_str());
     std::printf("  %zu Gerstner waves, Hs = %.2f m, mean period %.1f s, sum(QkA) = %.3f\n", waves.size(),
                 waves.significant_wave_height(), mean_period, waves.fold_measure());
-    std::printf("  water depth at origin %.1f m; surface height %.2f .. %.2f m; min Jacobian %.3f\n", depth, min_h,
-                max_h, min_jac);
+    std::printf("  terrain: %s; surface height %.2f .. %.2f m over the grid; min Jacobian %.3f\n",
+                scene->terrain.kind_name(), min_h, max_h, min_jac);
     for (const std::string& w : scene->warnings) std::printf("  warning: %s\n", w.c_str());
     std::printf("  wrote %s\n  wrote %s\n", summary_path.string().c_str(), csv_path.string().c_str());
+#if defined(TIDEWATER_HAVE_RENDER)
+    if (!a.no_render) {
+        // A still and a short sequence of the scene.
+        RenderJob still;
+        still.extent = {1280, 720};
+        still.start_time = 3.0;
+        still.single_output = (std::filesystem::path(a.out_dir) / "still.png").string();
+        auto shot = run_render_job(*scene, still);
+        if (!shot) return fail(verb, shot.error().message);
+        RenderJob sequence = still;
+        sequence.extent = {640, 360};
+        sequence.frames = 24;
+        sequence.fps = 12.0;
+        sequence.single_output.clear();
+        sequence.output_dir = (std::filesystem::path(a.out_dir) / "sequence").string();
+        auto seq = run_render_job(*scene, sequence);
+        if (!seq) return fail(verb, seq.error().message);
+        std::printf("  rendered on %s:\n  wrote %s\n  wrote %zu frames in %s/\n", shot->device.c_str(),
+                    shot->files.front().c_str(), seq->files.size(), sequence.output_dir.c_str());
+    }
+#endif
     return 0;
 }
 
@@ -115,6 +140,7 @@ Verb add_demo_verb(CLI::App& app) {
     cmd->add_option("--out-dir", args->out_dir, "Folder for summary.json and surface.csv")->capture_default_str();
     cmd->add_option("--grid", args->grid, "Grid points per side")->capture_default_str();
     cmd->add_option("--extent", args->extent, "Grid side length, m")->capture_default_str();
+    cmd->add_flag("--no-render", args->no_render, "Skip the rendered still and sequence");
     return {cmd, [args] { return run_demo(*args); }};
 }
 

@@ -10,9 +10,7 @@
 
 #include "atomic_file.hpp"
 #include "scene_option.hpp"
-#include "tidewater/image_io.hpp"
-#include "tidewater/render/offscreen.hpp"
-#include "tidewater/render/standalone.hpp"
+#include "render_job.hpp"
 #include "time_range.hpp"
 #include "verbs.hpp"
 
@@ -48,22 +46,6 @@ Result<VkExtent2D> parse_size(const std::string& text) {
     return Error{ErrorCode::invalid_argument, fmt::format("--size: \"{}\" is not WxH with 16 <= W, H <= 8192", text)};
 }
 
-/// The scene's camera, or one that frames the terrain from offshore.
-render::Camera default_camera(const Scene& scene) {
-    render::Camera cam;
-    if (scene.camera) {
-        cam.position = scene.camera->position;
-        cam.target = scene.camera->target;
-        cam.fov_y_deg = scene.camera->fov_y_deg;
-        return cam;
-    }
-    const glm::dvec2 c = scene.terrain.extent_center();
-    const double h = std::min(scene.terrain.extent_half_size(), 600.0);
-    cam.target = {c.x, scene.water_level, c.y};
-    cam.position = {c.x - 0.5 * h, scene.water_level + 0.12 * h + 8.0, c.y + 0.8 * h};
-    return cam;
-}
-
 int run_render(const RenderArgs& a) {
     constexpr const char* verb = "render";
     auto extent = parse_size(a.size);
@@ -79,66 +61,36 @@ int run_render(const RenderArgs& a) {
     auto scene = load_scene_option(a.scene);
     if (!scene) return fail(verb, scene.error().message);
 
-    render::FrameInfo frame;
-    frame.camera = default_camera(*scene);
-    if (!a.camera.empty()) frame.camera.position = {a.camera[0], a.camera[1], a.camera[2]};
-    if (!a.target.empty()) frame.camera.target = {a.target[0], a.target[1], a.target[2]};
-    if (a.fov != 0.0) frame.camera.fov_y_deg = a.fov;
-    frame.view = *view;
-
-    render::StandaloneOptions options;
-    options.validation = a.validate;
-    auto device = render::StandaloneDevice::create(options);
-    if (!device) return fail(verb, device.error().message);
-    render::RendererInitInfo init;
-    init.device = (*device)->context();
-    init.color_format = render::OffscreenTarget::kColorFormat;
-    init.depth_format = render::OffscreenTarget::kDepthFormat;
-    auto renderer = render::Renderer::create(init);
-    if (!renderer) return fail(verb, renderer.error().message);
-    if (auto st = (*renderer)->set_scene(*scene); !st) return fail(verb, st.error().message);
-    auto target = render::OffscreenTarget::create((*device)->context(), extent->width, extent->height);
-    if (!target) return fail(verb, target.error().message);
-    if (!a.out_dir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(a.out_dir, ec);
-        if (ec) return fail(verb, fmt::format("{}: cannot create folder: {}", a.out_dir, ec.message()));
+    RenderJob job;
+    job.extent = *extent;
+    job.start_time = a.time;
+    job.frames = a.frames;
+    job.fps = a.fps;
+    job.view = *view;
+    job.validate = a.validate;
+    job.single_output = a.frames == 1 ? a.out : std::string();
+    job.output_dir = a.out_dir;
+    if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
+        render::Camera cam = default_camera(*scene);
+        if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
+        if (!a.target.empty()) cam.target = {a.target[0], a.target[1], a.target[2]};
+        if (a.fov != 0.0) cam.fov_y_deg = a.fov;
+        job.camera = cam;
     }
-
-    nlohmann::json frame_stats = nlohmann::json::array();
-    std::vector<std::string> written;
-    for (int i = 0; i < a.frames; ++i) {
-        frame.time = a.time + i / a.fps;
-        frame.frame_index = static_cast<std::uint64_t>(i);
-        auto image = (*target)->render(**renderer, frame);
-        if (!image) return fail(verb, image.error().message);
-        const std::string path = a.frames == 1 && !a.out.empty()
-                                     ? a.out
-                                     : (std::filesystem::path(a.out_dir) / fmt::format("frame_{:04}.png", i)).string();
-        if (auto st = write_png_rgba8(path, image->width, image->height, image->pixels); !st) return fail(verb, st.error().message);
-        written.push_back(path);
-        if (auto t = (*renderer)->timings(frame.frame_index); t) {
-            frame_stats.push_back({{"frame", i}, {"time_s", frame.time}, {"sky_and_terrain_ms", t->sky_and_terrain_ms},
-                                   {"scene_copy_ms", t->scene_copy_ms}, {"water_ms", t->water_ms}, {"total_ms", t->total_ms}});
-        }
-    }
-    if ((*device)->validation_messages() > 0) {
-        return fail(verb, fmt::format("{} Vulkan validation message(s); see above", (*device)->validation_messages()));
-    }
+    // Check the stats path before minutes of rendering.
+    std::unique_ptr<AtomicFile> stats_file;
     if (!a.stats.empty()) {
-        const render::RendererStats s = (*renderer)->stats();
-        nlohmann::json j = {{"device", (*device)->device_name()},
-                            {"size", {extent->width, extent->height}},
-                            {"view", a.view},
-                            {"frames", frame_stats},
-                            {"counts", {{"terrain_vertices", s.terrain_vertices}, {"terrain_triangles", s.terrain_triangles},
-                                        {"water_patches", s.water_patches}, {"waves", s.waves}}},
-                            {"units", "milliseconds of GPU time from timestamp queries"}};
-        AtomicFile file(a.stats);
-        if (auto st = file.write_and_commit(j.dump(2) + "\n"); !st) return fail(verb, st.error().message);
+        stats_file = std::make_unique<AtomicFile>(a.stats);
+        if (!stats_file->status()) return fail(verb, stats_file->status().error().message);
     }
-    std::printf("rendered %zu frame(s) of \"%s\" at %ux%u on %s: %s%s\n", written.size(), scene->name.c_str(), extent->width,
-                extent->height, (*device)->device_name().c_str(), written.front().c_str(), written.size() > 1 ? " ..." : "");
+    auto result = run_render_job(*scene, job);
+    if (!result) return fail(verb, result.error().message);
+    if (stats_file) {
+        if (auto st = stats_file->write_and_commit(result->stats.dump(2) + "\n"); !st) return fail(verb, st.error().message);
+    }
+    std::printf("rendered %zu frame(s) of \"%s\" at %ux%u on %s: %s%s\n", result->files.size(), scene->name.c_str(),
+                extent->width, extent->height, result->device.c_str(), result->files.front().c_str(),
+                result->files.size() > 1 ? " ..." : "");
     return 0;
 }
 

@@ -1,0 +1,82 @@
+#include "render_job.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "tidewater/image_io.hpp"
+#include "tidewater/render/offscreen.hpp"
+#include "tidewater/render/standalone.hpp"
+
+namespace tidewater::cli {
+
+render::Camera default_camera(const Scene& scene) {
+    render::Camera cam;
+    if (scene.camera) {
+        cam.position = scene.camera->position;
+        cam.target = scene.camera->target;
+        cam.fov_y_deg = scene.camera->fov_y_deg;
+        return cam;
+    }
+    const glm::dvec2 c = scene.terrain.extent_center();
+    const double h = std::min(scene.terrain.extent_half_size(), 600.0);
+    cam.target = {c.x, scene.water_level, c.y};
+    cam.position = {c.x - 0.5 * h, scene.water_level + 0.12 * h + 8.0, c.y + 0.8 * h};
+    return cam;
+}
+
+Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
+    render::FrameInfo frame;
+    frame.camera = job.camera.value_or(default_camera(scene));
+    frame.view = job.view;
+    render::StandaloneOptions options;
+    options.validation = job.validate;
+    auto device = render::StandaloneDevice::create(options);
+    if (!device) return device.error();
+    render::RendererInitInfo init;
+    init.device = (*device)->context();
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    auto renderer = render::Renderer::create(init);
+    if (!renderer) return renderer.error();
+    if (auto st = (*renderer)->set_scene(scene); !st) return st.error();
+    auto target = render::OffscreenTarget::create((*device)->context(), job.extent.width, job.extent.height);
+    if (!target) return target.error();
+    if (!job.output_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(job.output_dir, ec);
+        if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", job.output_dir, ec.message())};
+    }
+    RenderResult result;
+    result.device = (*device)->device_name();
+    nlohmann::json frames = nlohmann::json::array();
+    for (int i = 0; i < job.frames; ++i) {
+        frame.time = job.start_time + i / job.fps;
+        frame.frame_index = static_cast<std::uint64_t>(i);
+        auto image = (*target)->render(**renderer, frame);
+        if (!image) return image.error();
+        // Validation messages fail the job before anything is written for this frame.
+        if ((*device)->validation_messages() > 0)
+            return Error{ErrorCode::device_error, fmt::format("{} Vulkan validation message(s); see above", (*device)->validation_messages())};
+        const std::string path = job.frames == 1 && !job.single_output.empty()
+                                     ? job.single_output
+                                     : (std::filesystem::path(job.output_dir) / fmt::format("frame_{:04}.png", i)).string();
+        if (auto st = write_png_rgba8(path, image->width, image->height, image->pixels); !st) return st.error();
+        result.files.push_back(path);
+        if (auto t = (*renderer)->timings(frame.frame_index); t) {
+            frames.push_back({{"frame", i}, {"time_s", frame.time}, {"sky_and_terrain_ms", t->sky_and_terrain_ms},
+                              {"scene_copy_ms", t->scene_copy_ms}, {"water_ms", t->water_ms}, {"total_ms", t->total_ms}});
+        }
+    }
+    const render::RendererStats s = (*renderer)->stats();
+    result.stats = {{"device", result.device},
+                    {"size", {job.extent.width, job.extent.height}},
+                    {"view", std::string(render::to_string(job.view))},
+                    {"frames", frames},
+                    {"counts", {{"terrain_vertices", s.terrain_vertices}, {"terrain_triangles", s.terrain_triangles},
+                                {"water_patches", s.water_patches}, {"waves", s.waves}}},
+                    {"units", "milliseconds of GPU time from timestamp queries"}};
+    return result;
+}
+
+}  // namespace tidewater::cli
