@@ -66,6 +66,22 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
     return img;
 }
 
+Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
+    if (!data) {
+        if (!std::filesystem::exists(path)) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+        return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
+    }
+    Rgba8Image img;
+    img.width = w;
+    img.height = h;
+    img.pixels.assign(data, data + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+    stbi_image_free(data);
+    return img;
+}
+
 Status write_png_rgba8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba) {
     if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
         return Error{ErrorCode::invalid_argument, fmt::format("{}: {}x{} RGBA needs {} bytes, got {}", path.string(),

@@ -20,6 +20,16 @@ struct Gray16Image {
     std::vector<std::uint16_t> pixels;
 };
 
+/// An 8-bit RGBA image, row-major from the top row.
+struct Rgba8Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels;
+};
+
+/// Reads any PNG as 8-bit RGBA (rendered frames, reference images).
+Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path);
+
 /// Reads a 16-bit greyscale PNG. 8-bit, colour or corrupt files are errors naming the file.
 Result<Gray16Image> read_png_gray16(const std::filesystem::path& path);
 

@@ -1,0 +1,49 @@
+// Rendering helpers for tests: render a scene offscreen and look at pixels.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/vec4.hpp>
+#include <optional>
+
+#include "frame_constants.hpp"
+#include "tidewater/render/offscreen.hpp"
+
+namespace tidewater::test {
+
+struct Rgb {
+    double r = 0, g = 0, b = 0;  // 0..1
+};
+
+inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
+    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    return {img.pixels[i] / 255.0, img.pixels[i + 1] / 255.0, img.pixels[i + 2] / 255.0};
+}
+
+/// Mean colour of a (2r+1)^2 block around (x, y).
+inline Rgb block(const render::RgbaImage& img, int x, int y, int r = 3) {
+    Rgb sum;
+    int n = 0;
+    for (int j = std::max(0, y - r); j <= std::min(img.height - 1, y + r); ++j)
+        for (int i = std::max(0, x - r); i <= std::min(img.width - 1, x + r); ++i) {
+            const Rgb p = pixel(img, i, j);
+            sum.r += p.r; sum.g += p.g; sum.b += p.b;
+            ++n;
+        }
+    return {sum.r / n, sum.g / n, sum.b / n};
+}
+
+/// Where a world point lands in the image (same camera maths as the renderer), if in front.
+inline std::optional<glm::ivec2> project(const render::Camera& cam, int width, int height, glm::dvec3 world) {
+    const glm::dmat4 view = glm::lookAt(cam.position, cam.target, glm::dvec3(0, 1, 0));
+    const glm::dmat4 proj = glm::dmat4(render::detail::reversed_z_projection(cam.fov_y_deg, double(width) / height, cam.near_plane));
+    const glm::dvec4 clip = proj * view * glm::dvec4(world, 1.0);
+    if (clip.w <= 0.0) return std::nullopt;
+    const double x = (clip.x / clip.w * 0.5 + 0.5) * width, y = (clip.y / clip.w * 0.5 + 0.5) * height;
+    if (x < 0 || y < 0 || x >= width || y >= height) return std::nullopt;
+    return glm::ivec2(static_cast<int>(x), static_cast<int>(y));
+}
+
+}  // namespace tidewater::test

@@ -1,0 +1,247 @@
+// Rendering on lavapipe under the validation layer: semantic image checks that
+// do not depend on stored references, reference-image comparisons, bad input.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "../core/test_helpers.hpp"
+#include "render_helpers.hpp"
+#include "tidewater/image_io.hpp"
+#include "tidewater/render/renderer.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+using test::Rgb;
+
+class RenderTest : public test::VulkanTest {
+protected:
+    void SetUp() override {
+        VulkanTest::SetUp();
+        render::RendererInitInfo init;
+        init.device = context();
+        init.color_format = render::OffscreenTarget::kColorFormat;
+        init.depth_format = render::OffscreenTarget::kDepthFormat;
+        auto r = render::Renderer::create(init);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        renderer_ = std::move(r).value();
+    }
+    void release() override {
+        target_.reset();
+        renderer_.reset();
+    }
+    render::RgbaImage render(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w = 320, std::uint32_t h = 180) {
+        EXPECT_TRUE(renderer_->set_scene(scene).ok());
+        if (!target_ || width_ != w || height_ != h) {
+            auto t = render::OffscreenTarget::create(context(), w, h);
+            EXPECT_TRUE(t.ok()) << t.error().message;
+            target_ = std::move(t).value();
+            width_ = w;
+            height_ = h;
+        }
+        auto img = target_->render(*renderer_, frame);
+        EXPECT_TRUE(img.ok()) << img.error().message;
+        // TIDEWATER_TEST_IMAGE_DIR keeps every frame a test renders, for looking at failures.
+        if (const char* dir = std::getenv("TIDEWATER_TEST_IMAGE_DIR"); dir && img.ok()) {
+            const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+            const auto path = std::filesystem::path(dir) / (std::string(info->name()) + "_" + std::to_string(dumped_++) + ".png");
+            EXPECT_TRUE(write_png_rgba8(path, img->width, img->height, img->pixels).ok());
+        }
+        return img.ok() ? std::move(img).value() : render::RgbaImage{};
+    }
+    static Scene scene_from(const std::string& json) {
+        auto s = parse_scene(json, "test scene");
+        EXPECT_TRUE(s.ok()) << s.error().message;
+        return s.ok() ? std::move(s).value() : Scene{};
+    }
+    std::unique_ptr<render::Renderer> renderer_;
+    std::unique_ptr<render::OffscreenTarget> target_;
+    std::uint32_t width_ = 0, height_ = 0;
+    int dumped_ = 0;
+};
+
+bool is_sky(Rgb c) { return c.b > c.r + 0.1 && c.b > 0.45; }
+bool is_water(Rgb c) { return c.b > c.r && c.g > c.r; }
+bool is_land(Rgb c) { return c.g > c.b && c.r > 0.08; }  // grass, sand and rock have more green than blue
+
+// The default island from its own camera: sky above the horizon, land at the island's
+// middle, water offshore; a water pixel is not land-coloured and vice versa.
+TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    render::FrameInfo frame;
+    frame.camera.position = scene->camera->position;
+    frame.camera.target = scene->camera->target;
+    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+    frame.time = 3.0;
+    const auto img = render(*scene, frame);
+    ASSERT_EQ(img.width, 320);
+    EXPECT_TRUE(is_sky(test::block(img, 160, 4))) << "top centre";
+    // Land: the island's highest point (seen from a camera above every hill, it cannot be hidden).
+    glm::dvec3 hill{0.0, -1e9, 0.0};
+    for (int i = -60; i <= 60; ++i)
+        for (int j = -60; j <= 60; ++j) {
+            const double h = scene->terrain.height_at({i * 10.0, j * 10.0});
+            if (h > hill.y) hill = {i * 10.0, h, j * 10.0};
+        }
+    ASSERT_GT(hill.y, 20.0);
+    ASSERT_LT(hill.y, frame.camera.position.y);
+    auto p = test::project(frame.camera, 320, 180, hill);
+    ASSERT_TRUE(p.has_value()) << "hill " << hill.x << "," << hill.y << "," << hill.z;
+    EXPECT_TRUE(is_land(test::block(img, p->x, p->y, 1))) << "island at " << p->x << "," << p->y;
+    // Water: points on a ring 1.1 km from the centre (beyond any coast) that are in view
+    // with a clear line of sight over the terrain.
+    int water_points = 0;
+    const glm::dvec3 eye = frame.camera.position;
+    for (int a = 0; a < 72; ++a) {
+        const glm::dvec3 w{1100.0 * std::cos(a * kPi / 36.0), 0.0, 1100.0 * std::sin(a * kPi / 36.0)};
+        bool clear = true;
+        for (int k = 1; k < 200 && clear; ++k) {
+            const glm::dvec3 on_ray = eye + (w - eye) * (k / 200.0);
+            clear = scene->terrain.height_at({on_ray.x, on_ray.z}) < on_ray.y - 1.0;
+        }
+        if (!clear) continue;
+        const auto q = test::project(frame.camera, 320, 180, w);
+        if (!q || q->y < 20) continue;
+        const Rgb c = test::block(img, q->x, q->y, 1);
+        EXPECT_TRUE(is_water(c)) << "water at " << q->x << "," << q->y << ": " << c.r << " " << c.g << " " << c.b;
+        ++water_points;
+    }
+    EXPECT_GT(water_points, 3);
+}
+
+// Looking up at the sky, nothing but sky is drawn.
+TEST_F(RenderTest, EmptySkyShowsOnlySky) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "ocean_rolling"})");
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 10.0, 0.0};
+    frame.camera.target = {0.0, 200.0, -100.0};  // about 62 degrees up: the horizon is off-screen
+    frame.sun_direction = {0.0, 0.5, 0.8};       // behind the camera: the sky without the sun disc
+    const auto img = render(scene, frame);
+    int not_sky = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) not_sky += !is_sky(test::pixel(img, x, y));
+    EXPECT_EQ(not_sky, 0);
+}
+
+// Submerged terrain shows through 1 m of water (bright, with its caustic texture) and not
+// through 60 m (dark and featureless).
+TEST_F(RenderTest, ShallowWaterShowsTheBottomDeepWaterDoesNot) {
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 10.0, 12.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    frame.sun_direction = {0.0, 0.8, 0.6};  // behind the camera: no glitter in view
+    const std::string calm = R"("ocean": {"waves": [{"direction": 0, "wavelength": 8, "amplitude": 0.02, "steepness": 0.3}]})";
+    const auto shallow = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, )" + calm + "}"), frame);
+    const auto deep = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -60}}, )" + calm + "}"), frame);
+    auto luminance_spread = [](const render::RgbaImage& img) {
+        double sum = 0.0, sum2 = 0.0;
+        int n = 0;
+        for (int y = 100; y < 170; ++y)
+            for (int x = 60; x < 260; ++x, ++n) {
+                const Rgb c = test::pixel(img, x, y);
+                const double l = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
+                sum += l;
+                sum2 += l * l;
+            }
+        return std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
+    };
+    const Rgb s = test::block(shallow, 160, 140, 20), d = test::block(deep, 160, 140, 20);
+    EXPECT_GT(s.g - d.g, 0.25) << "the lit bottom shows through 1 m of water";
+    EXPECT_LT(d.r + d.g + d.b, 0.6) << "60 m of water hides the bottom";
+    EXPECT_GT(luminance_spread(shallow), 3.0 * luminance_spread(deep)) << "caustics on the bottom show through";
+}
+
+// Steep crests (sum QkA = 0.95: the Jacobian falls to ~0.05) carry foam; a calm sea has none.
+TEST_F(RenderTest, FoamOnSteepCrestsOnly) {
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 30.0, 40.0};
+    frame.camera.target = {0.0, 0.0, -20.0};
+    frame.sun_direction = {0.0, 0.8, 0.6};
+    auto white_fraction = [](const render::RgbaImage& img) {
+        int white = 0, n = 0;
+        for (int y = img.height / 2; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x, ++n) {
+                const Rgb c = test::pixel(img, x, y);
+                white += c.r > 0.8 && c.g > 0.8 && c.b > 0.8;
+            }
+        return double(white) / n;
+    };
+    const double lambda = 20.0, a = 0.95 * lambda / (2 * kPi);  // k A = 0.95 with Q = 1
+    const auto steep = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -80}},
+        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": )" + std::to_string(a) + R"(, "steepness": 1}]}})"), frame);
+    const auto calm = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -80}},
+        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": 0.3, "steepness": 0.3}]}})"), frame);
+    EXPECT_GT(white_fraction(steep), 0.02);
+    EXPECT_LT(white_fraction(calm), 0.001);
+}
+
+// Stored references for the default scene and a few views: mean difference under 2%
+// and 99% of pixels within 10% (lavapipe rounding differs between LLVM builds).
+// TIDEWATER_UPDATE_REFERENCES=1 rewrites them.
+TEST_F(RenderTest, MatchesReferenceImages) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    const std::filesystem::path dir = TIDEWATER_REFERENCE_DIR;
+    const bool update = std::getenv("TIDEWATER_UPDATE_REFERENCES") != nullptr;
+    for (render::DebugView view : {render::DebugView::shaded, render::DebugView::height, render::DebugView::jacobian,
+                                   render::DebugView::depth, render::DebugView::normals}) {
+        render::FrameInfo frame;
+        frame.camera.position = scene->camera->position;
+        frame.camera.target = scene->camera->target;
+        frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+        frame.time = 3.0;
+        frame.view = view;
+        const auto img = render(*scene, frame);
+        const auto path = dir / ("default_" + std::string(render::to_string(view)) + ".png");
+        if (update) {
+            ASSERT_TRUE(write_png_rgba8(path, img.width, img.height, img.pixels).ok());
+            continue;
+        }
+        ASSERT_TRUE(std::filesystem::exists(path)) << path << " (run with TIDEWATER_UPDATE_REFERENCES=1 to create)";
+        auto reference = read_png_rgba8(path);
+        ASSERT_TRUE(reference.ok()) << reference.error().message;
+        ASSERT_EQ(reference->width, img.width);
+        ASSERT_EQ(reference->height, img.height);
+        const auto& ref = reference->pixels;
+        double sum = 0.0;
+        std::vector<int> diffs;
+        for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
+            int d = 0;
+            for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(int(img.pixels[i + k]) - int(ref[i + k])));
+            diffs.push_back(d);
+            sum += d;
+        }
+        std::sort(diffs.begin(), diffs.end());
+        const double mean = sum / diffs.size() / 255.0;
+        const double p99 = diffs[diffs.size() * 99 / 100] / 255.0;
+        EXPECT_LT(mean, 0.02) << path;
+        EXPECT_LT(p99, 0.10) << path;
+        std::printf("reference %s: mean difference %.4f, 99th percentile %.4f\n", path.filename().c_str(), mean, p99);
+    }
+}
+
+TEST_F(RenderTest, BadFrameInputIsAnError) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "pool_calm"})");
+    ASSERT_TRUE(renderer_->set_scene(scene).ok());
+    auto t = render::OffscreenTarget::create(context(), 64, 64);
+    ASSERT_TRUE(t.ok());
+    target_ = std::move(t).value();
+    render::FrameInfo frame;
+    frame.time = std::nan("");
+    EXPECT_FALSE(target_->render(*renderer_, frame).ok());
+    frame.time = 0.0;
+    frame.camera.target = frame.camera.position;
+    EXPECT_FALSE(target_->render(*renderer_, frame).ok());
+    frame.camera = render::Camera{};
+    frame.camera.fov_y_deg = 0.0;
+    EXPECT_FALSE(target_->render(*renderer_, frame).ok());
+    EXPECT_FALSE(render::OffscreenTarget::create(context(), 0, 64).ok());
+    EXPECT_FALSE(render::OffscreenTarget::create(context(), 100000, 64).ok());
+}
+
+}  // namespace
+}  // namespace tidewater
