@@ -17,7 +17,12 @@ Status submit_and_wait(const DeviceContext& ctx, VkCommandPool pool, const Recor
         const DeviceContext& c;
         VkCommandPool p;
         VkCommandBuffer b;
-        ~Free() { vkFreeCommandBuffers(c.device, p, 1, &b); }
+        // One-shot pools serve one submission at a time: resetting with RELEASE hands the
+        // recording memory back (some drivers keep it in the pool otherwise).
+        ~Free() {
+            vkFreeCommandBuffers(c.device, p, 1, &b);
+            vkResetCommandPool(c.device, p, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT);
+        }
     } free_cmd{ctx, pool, cmd};
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -1,0 +1,280 @@
+// Embedding: a host with its own instance, device, command buffer and render
+// target draws something of its own, and Tidewater records into the same pass.
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../core/test_helpers.hpp"
+#include "render_helpers.hpp"
+#include "tidewater/render/renderer.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+/// A minimal Vulkan host written the way an engine would, independent of Tidewater's helpers.
+class TestHost {
+public:
+    std::vector<std::string> messages;
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    std::uint32_t family = 0;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    struct Image {
+        VkImage image = VK_NULL_HANDLE;
+        VkDeviceMemory memory = VK_NULL_HANDLE;
+        VkImageView view = VK_NULL_HANDLE;
+    } color, depth;
+    VkBuffer readback = VK_NULL_HANDLE;
+    VkDeviceMemory readback_memory = VK_NULL_HANDLE;
+    static constexpr std::uint32_t kWidth = 256, kHeight = 144;
+
+    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+        if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT)
+            static_cast<TestHost*>(user)->messages.push_back(data->pMessage ? data->pMessage : "?");
+        return VK_FALSE;
+    }
+
+    std::uint32_t memory_type(std::uint32_t bits, VkMemoryPropertyFlags want) {
+        VkPhysicalDeviceMemoryProperties p;
+        vkGetPhysicalDeviceMemoryProperties(physical, &p);
+        for (std::uint32_t i = 0; i < p.memoryTypeCount; ++i)
+            if ((bits & (1u << i)) && (p.memoryTypes[i].propertyFlags & want) == want) return i;
+        return 0;
+    }
+
+    Image make_image(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+        Image img;
+        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.imageType = VK_IMAGE_TYPE_2D;
+        info.format = format;
+        info.extent = {kWidth, kHeight, 1};
+        info.mipLevels = info.arrayLayers = 1;
+        info.samples = VK_SAMPLE_COUNT_1_BIT;
+        info.usage = usage;
+        EXPECT_EQ(vkCreateImage(device, &info, nullptr, &img.image), VK_SUCCESS);
+        VkMemoryRequirements req;
+        vkGetImageMemoryRequirements(device, img.image, &req);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = req.size;
+        alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        EXPECT_EQ(vkAllocateMemory(device, &alloc, nullptr, &img.memory), VK_SUCCESS);
+        vkBindImageMemory(device, img.image, img.memory, 0);
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = img.image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = format;
+        view.subresourceRange = {aspect, 0, 1, 0, 1};
+        EXPECT_EQ(vkCreateImageView(device, &view, nullptr, &img.view), VK_SUCCESS);
+        return img;
+    }
+
+    void create() {
+        const char* layer = "VK_LAYER_KHRONOS_validation";
+        const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+        app.apiVersion = VK_API_VERSION_1_3;
+        VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+        ii.pApplicationInfo = &app;
+        ii.enabledLayerCount = 1;
+        ii.ppEnabledLayerNames = &layer;
+        ii.enabledExtensionCount = 1;
+        ii.ppEnabledExtensionNames = &ext;
+        ASSERT_EQ(vkCreateInstance(&ii, nullptr, &instance), VK_SUCCESS);
+        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+        mi.pfnUserCallback = &on_message;
+        mi.pUserData = this;
+        auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+        ASSERT_NE(create_messenger, nullptr);
+        create_messenger(instance, &mi, nullptr, &messenger);
+        std::uint32_t count = 1;
+        vkEnumeratePhysicalDevices(instance, &count, &physical);
+        ASSERT_EQ(count, 1u);
+        VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        f13.dynamicRendering = VK_TRUE;
+        VkPhysicalDeviceFeatures features{};
+        features.tessellationShader = VK_TRUE;
+        features.fillModeNonSolid = VK_TRUE;
+        const float priority = 1.0f;
+        VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        qi.queueFamilyIndex = family;
+        qi.queueCount = 1;
+        qi.pQueuePriorities = &priority;
+        VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        di.pNext = &f13;
+        di.queueCreateInfoCount = 1;
+        di.pQueueCreateInfos = &qi;
+        di.pEnabledFeatures = &features;
+        ASSERT_EQ(vkCreateDevice(physical, &di, nullptr, &device), VK_SUCCESS);
+        vkGetDeviceQueue(device, family, 0, &queue);
+        VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        pi.queueFamilyIndex = family;
+        vkCreateCommandPool(device, &pi, nullptr, &pool);
+        color = make_image(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+        depth = make_image(VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+        VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        bi.size = kWidth * kHeight * 4;
+        bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        vkCreateBuffer(device, &bi, nullptr, &readback);
+        VkMemoryRequirements req;
+        vkGetBufferMemoryRequirements(device, readback, &req);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = req.size;
+        alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        vkAllocateMemory(device, &alloc, nullptr, &readback_memory);
+        vkBindBufferMemory(device, readback, readback_memory, 0);
+    }
+
+    void destroy() {
+        if (!device) return;
+        vkDeviceWaitIdle(device);
+        vkDestroyBuffer(device, readback, nullptr);
+        vkFreeMemory(device, readback_memory, nullptr);
+        for (Image* img : {&color, &depth}) {
+            vkDestroyImageView(device, img->view, nullptr);
+            vkDestroyImage(device, img->image, nullptr);
+            vkFreeMemory(device, img->memory, nullptr);
+        }
+        vkDestroyCommandPool(device, pool, nullptr);
+        vkDestroyDevice(device, nullptr);
+        auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy_messenger(instance, messenger, nullptr);
+        vkDestroyInstance(instance, nullptr);
+        device = VK_NULL_HANDLE;
+    }
+
+    render::DeviceContext context() const {
+        render::DeviceContext c;
+        c.instance = instance;
+        c.physical_device = physical;
+        c.device = device;
+        c.queue_family = family;
+        c.queue = queue;
+        return c;
+    }
+};
+
+void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+TEST(Embedding, RecordsIntoTheHostsOwnPass) {
+    TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    {
+        render::RendererInitInfo init;
+        init.device = host.context();
+        init.color_format = VK_FORMAT_R8G8B8A8_UNORM;
+        init.depth_format = VK_FORMAT_D32_SFLOAT;
+        init.frames_in_flight = 1;
+        std::vector<std::string> log;
+        init.log = [&](const std::string& m) { log.push_back(m); };
+        auto renderer = render::Renderer::create(init);
+        ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+        auto scene = default_scene();
+        ASSERT_TRUE(scene.ok());
+        ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
+
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = host.pool;
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+        ASSERT_EQ(vkAllocateCommandBuffers(host.device, &ai, &cmd), VK_SUCCESS);
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        vkBeginCommandBuffer(cmd, &bi);
+        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        color.imageView = host.color.view;
+        color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        color.clearValue.color = {{1.0f, 0.0f, 1.0f, 1.0f}};  // magenta: must not survive
+        VkRenderingAttachmentInfo depth = color;
+        depth.imageView = host.depth.view;
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z far
+        VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        ri.renderArea = {{0, 0}, {TestHost::kWidth, TestHost::kHeight}};
+        ri.layerCount = 1;
+        ri.colorAttachmentCount = 1;
+        ri.pColorAttachments = &color;
+        ri.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &ri);
+        // The host's own drawing: a red panel at the nearest depth, top-left.
+        VkClearAttachment clears[2] = {{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}}, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, {}}};
+        clears[0].clearValue.color = {{1.0f, 0.0f, 0.0f, 1.0f}};
+        clears[1].clearValue.depthStencil = {1.0f, 0};
+        VkClearRect rect{{{8, 8}, {48, 32}}, 0, 1};
+        vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
+        render::FrameInfo frame;
+        frame.camera.position = scene->camera->position;
+        frame.camera.target = scene->camera->target;
+        frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+        frame.time = 2.0;
+        ASSERT_TRUE((*renderer)->record_in_pass(cmd, frame, {TestHost::kWidth, TestHost::kHeight}).ok());
+        vkCmdEndRendering(cmd);
+        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
+        vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
+        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+        vkEndCommandBuffer(cmd);
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cmd;
+        ASSERT_EQ(vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE), VK_SUCCESS);
+        ASSERT_EQ(vkQueueWaitIdle(host.queue), VK_SUCCESS);
+
+        render::RgbaImage img;
+        img.width = TestHost::kWidth;
+        img.height = TestHost::kHeight;
+        img.pixels.resize(TestHost::kWidth * TestHost::kHeight * 4);
+        void* mapped = nullptr;
+        vkMapMemory(host.device, host.readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
+        std::memcpy(img.pixels.data(), mapped, img.pixels.size());
+        vkUnmapMemory(host.device, host.readback_memory);
+        vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
+
+        const test::Rgb panel = test::pixel(img, 20, 20);
+        EXPECT_GT(panel.r, 0.99);
+        EXPECT_LT(panel.g + panel.b, 0.01) << "the host's panel is kept";
+        int magenta = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                const test::Rgb c = test::pixel(img, x, y);
+                magenta += c.r > 0.95 && c.b > 0.95 && c.g < 0.05;
+            }
+        EXPECT_EQ(magenta, 0) << "Tidewater covered every pixel the host did not draw";
+        const test::Rgb sky = test::block(img, 200, 3, 2);
+        EXPECT_GT(sky.b, sky.r) << "sky at the top";
+        renderer->reset();
+    }
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
+}
+
+}  // namespace
+}  // namespace tidewater
