@@ -143,6 +143,40 @@ case "$CASE" in
     expect_error "bad wave count" "--waves" "$TW" bench --waves 65 --out c.json
     check "no report after failure" no_file c.json
     ;;
+  render_still)
+    "$TW" render --size 160x90 --time 2 --out still.png --stats stats.json --validate > log.txt
+    check "exit 0" test $? -eq 0
+    check "PNG signature" bash -c "[ \"\$(od -An -tx1 -N8 still.png | tr -d ' \n')\" = 89504e470d0a1a0a ]"
+    check "160x90 pixels" bash -c "[ \"\$(od -An -tu1 -j16 -N8 still.png | tr -s ' ' | sed 's/^ //')\" = '0 0 0 160 0 0 0 90' ]"
+    for key in '"device"' '"water_ms"' '"sky_and_terrain_ms"' '"scene_copy_ms"' '"terrain_vertices"' '"waves"' '"water_patches"'; do
+      check "stats has $key" grep -q "$key" stats.json
+    done
+    check "prints the file" grep -q "still.png" log.txt
+    ;;
+  render_sequence)
+    "$TW" render --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
+    check "exit 0" test $? -eq 0
+    check "three frames" test "$(ls seq/frame_*.png | wc -l)" -eq 3
+    for view in shaded height normals jacobian depth lod wireframe; do
+      check "view $view renders" "$TW" render --size 32x32 --view "$view" --out "v_$view.png"
+    done
+    ;;
+  render_bad_input)
+    expect_error "bad size" "--size" "$TW" render --size 0x10 --out o.png
+    expect_error "huge size" "--size" "$TW" render --size 100000x10 --out o.png
+    expect_error "bad view" "--view" "$TW" render --view xray --out o.png
+    expect_error "time out of range" "--time" "$TW" render --time 1e12 --out o.png
+    expect_error "no output given" "--out" "$TW" render
+    printf 'not a png' > corrupt.png
+    echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
+    expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png
+    echo '{"version": 1, "water_level": 0, "ocean": "pool_calm"}' > noterrain.json
+    expect_error "scene without terrain" "noterrain.json: /terrain" "$TW" render --scene noterrain.json --out o.png
+    echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}}}' > nowater.json
+    expect_error "scene without water" "nowater.json: /ocean" "$TW" render --scene nowater.json --out o.png
+    expect_error "unwritable output" "cannot" "$TW" render --size 32x32 --out no/such/dir/o.png
+    check "no partial PNG anywhere" bash -c "! ls o.png* no 2>/dev/null"
+    ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;
 esac

@@ -10,6 +10,7 @@
 #include "render_helpers.hpp"
 #include "tidewater/image_io.hpp"
 #include "tidewater/render/renderer.hpp"
+#include "tidewater/render/standalone.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace tidewater {
@@ -222,6 +223,45 @@ TEST_F(RenderTest, MatchesReferenceImages) {
         EXPECT_LT(p99, 0.10) << path;
         std::printf("reference %s: mean difference %.4f, 99th percentile %.4f\n", path.filename().c_str(), mean, p99);
     }
+}
+
+// No cracks between water patches: looking down on open ocean (no horizon in view), every
+// pixel is water. In the depth view 200 m of water is pure red and the sky is pale, so
+// any pixel that is not red would be a hole in the surface.
+TEST_F(RenderTest, WaterSurfaceHasNoCracks) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling"})");
+    for (double height : {8.0, 60.0, 400.0}) {
+        render::FrameInfo frame;
+        frame.camera.position = {13.0, height, 7.0};
+        frame.camera.target = {13.0 + height * 0.8, 0.0, 7.0 - height * 0.6};  // 45 degrees down, 55 degree fov
+        frame.view = render::DebugView::depth;
+        frame.time = 4.0;
+        const auto img = render(scene, frame);
+        int holes = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                const Rgb c = test::pixel(img, x, y);
+                holes += !(c.r > 0.9 && c.g < 0.1 && c.b < 0.1);
+            }
+        EXPECT_EQ(holes, 0) << "camera height " << height;
+    }
+}
+
+TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {
+    render::RendererInitInfo init;
+    init.device = context();
+    init.color_format = VK_FORMAT_R64G64B64A64_SFLOAT;
+    auto r = render::Renderer::create(init);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::unsupported);
+    EXPECT_NE(r.error().message.find("colour format"), std::string::npos) << r.error().message;
+    render::StandaloneOptions options;
+    options.device_name_contains = "NoSuchGPU";
+    auto none = render::StandaloneDevice::create(options);
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(none.error().code, ErrorCode::no_device);
+    EXPECT_NE(none.error().message.find("llvmpipe"), std::string::npos) << "lists what was found: " << none.error().message;
+    EXPECT_NE(none.error().message.find("NoSuchGPU"), std::string::npos);
 }
 
 TEST_F(RenderTest, BadFrameInputIsAnError) {
