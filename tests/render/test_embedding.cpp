@@ -270,6 +270,7 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         EXPECT_EQ(magenta, 0) << "Tidewater covered every pixel the host did not draw";
         const test::Rgb sky = test::block(img, 200, 3, 2);
         EXPECT_GT(sky.b, sky.r) << "sky at the top";
+        EXPECT_FALSE(log.empty()) << "the host's log callback hears from the renderer";
         renderer->reset();
     }
     host.destroy();

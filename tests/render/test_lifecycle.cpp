@@ -129,6 +129,9 @@ struct Cycler {
         ASSERT_TRUE(renderer.set_water(presets[static_cast<std::size_t>(i) % presets.size()]).ok());
         const std::uint32_t w = 64 + 16 * static_cast<std::uint32_t>(i % 3), h = 48 + 8 * static_cast<std::uint32_t>(i % 2);
         target.reset();
+        if (i % 4 == 1) {
+            ASSERT_TRUE(renderer.resize({w, h}).ok());  // the host-side resize path
+        }
         auto t = render::OffscreenTarget::create(ctx, w, h);
         ASSERT_TRUE(t.ok());
         target = std::move(t).value();

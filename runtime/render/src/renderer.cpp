@@ -118,6 +118,9 @@ struct Renderer::Impl {
         if (timestamps) vkDestroyQueryPool(dev, timestamps, a);
     }
 
+    void log(const std::string& message) const {
+        if (info.log) info.log(message);
+    }
     Status create_layouts();
     Status create_pipelines();
     Status create_slots();
@@ -272,6 +275,9 @@ Status Renderer::Impl::create_samplers_and_dummies() {
 
 Status Renderer::Impl::ensure_copy_targets(VkExtent2D extent) {
     if (copy_color.handle() && copy_extent.width == extent.width && copy_extent.height == extent.height) return {};
+    if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
+    log(fmt::format("tidewater: refraction copies resized to {}x{}", extent.width, extent.height));
     // The copies may be in use by frames in flight: a resize waits for the device.
     vkDeviceWaitIdle(ctx().device);
     copy_color.reset();
@@ -401,6 +407,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     auto impl = std::make_unique<Impl>();
     impl->info = info;
     impl->info.wireframe = info.wireframe && features.fillModeNonSolid;
+    if (info.wireframe && !features.fillModeNonSolid) impl->log("tidewater: no fillModeNonSolid: the wireframe view is off");
     for (auto step : {&Impl::create_layouts, &Impl::create_pipelines, &Impl::create_slots, &Impl::create_samplers_and_dummies}) {
         if (auto st = ((*impl).*step)(); !st) return st.error();
     }
@@ -437,8 +444,12 @@ Status Renderer::set_scene(const Scene& scene) {
     m.water_level = scene.water_level;
     m.ocean = scene.ocean;
     m.has_scene = true;
+    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves", scene.name, m.terrain_vertex_count,
+                      scene.ocean.waves().size()));
     return {};
 }
+
+Status Renderer::resize(VkExtent2D extent) { return impl_->ensure_copy_targets(extent); }
 
 Status Renderer::set_water(const WaterBody& water) {
     if (!impl_->has_scene) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};

@@ -108,6 +108,10 @@ public:
     Status set_scene(const Scene& scene);
     /// Swaps only the water (a preset change); the terrain stays.
     Status set_water(const WaterBody& water);
+    /// Reallocates the refraction copies for a new target size (waits for the device).
+    /// Optional: record_frame does it on the first frame of a new size; hosts call it
+    /// when they recreate their swapchain so that no frame pays for it.
+    Status resize(VkExtent2D extent);
 
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
     Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
