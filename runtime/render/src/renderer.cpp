@@ -17,6 +17,7 @@ namespace tidewater::render {
 
 using detail::GpuBuffer;
 using detail::GpuImage;
+using detail::transition;
 
 namespace {
 
@@ -26,22 +27,6 @@ constexpr std::array<std::string_view, 7> kViewNames = {"shaded", "height", "nor
 constexpr std::uint32_t kTerrainCells = 384;
 constexpr std::uint32_t kHeightTextureSize = 1024;
 constexpr std::uint32_t kTimestampsPerFrame = 4;
-
-/// One image memory barrier (synchronization 1, core in every Vulkan 1.3 device).
-void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
-                VkAccessFlags dst_access) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = src_access;
-    b.dstAccessMask = dst_access;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
 
 }  // namespace
 
@@ -347,10 +332,7 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
 
 void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
                                  DebugView view) {
-    const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    detail::set_viewport(cmd, extent);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, 16, &plan.terrain_mesh_offset);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, view == DebugView::wireframe ? terrain_wire : terrain);
@@ -366,10 +348,7 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const de
 
 void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
                                 DebugView view) {
-    const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    detail::set_viewport(cmd, extent);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, view == DebugView::wireframe ? water_wire : water);
     const std::uint32_t patches = plan.patches_per_side * plan.patches_per_side;

@@ -11,6 +11,14 @@ namespace tidewater::render::detail {
 const char* vk_result_name(VkResult result);
 Error vk_error(VkResult result, const char* call);
 
+/// One image layout transition (synchronization 1, core in every Vulkan 1.3 device).
+void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
+                VkAccessFlags dst_access);
+
+/// Full-extent viewport and scissor (both dynamic in every Tidewater pipeline).
+void set_viewport(VkCommandBuffer cmd, VkExtent2D extent);
+
 }  // namespace tidewater::render::detail
 
 /// Evaluates a Vulkan call; on failure returns an Error from the enclosing function.
