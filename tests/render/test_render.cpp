@@ -247,6 +247,34 @@ TEST_F(RenderTest, WaterSurfaceHasNoCracks) {
     }
 }
 
+// No popping: moving the camera 4 cm changes the image only slightly, also when the
+// move crosses a 64 m cell of the render origin (the origin jumps a whole cell
+// there, and every wave phase is re-based in double).
+TEST_F(RenderTest, SmallCameraMovesDoNotPop) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    auto frame_at = [&](double x) {
+        render::FrameInfo frame;
+        frame.camera.position = {x, 35.0, 700.0};
+        frame.camera.target = {x - 200.0, 0.0, 300.0};
+        frame.time = 5.0;
+        return render(*scene, frame);
+    };
+    auto mean_difference = [](const render::RgbaImage& a, const render::RgbaImage& b) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < a.pixels.size(); i += 4)
+            for (int k = 0; k < 3; ++k) sum += std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k]));
+        return sum / (a.pixels.size() / 4 * 3) / 255.0;
+    };
+    const auto inside_a = frame_at(60.00), inside_b = frame_at(60.04);   // within one origin cell
+    const auto cross_a = frame_at(127.98), cross_b = frame_at(128.02);   // across the boundary at 128 m
+    const double within = mean_difference(inside_a, inside_b), across = mean_difference(cross_a, cross_b);
+    std::printf("mean change for a 4 cm move: %.4f within a cell, %.4f across a cell boundary\n", within, across);
+    EXPECT_LT(within, 0.02);
+    EXPECT_LT(across, 0.02);
+    EXPECT_LT(across, 3.0 * within + 0.005) << "crossing the origin grid adds no visible jump";
+}
+
 TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {
     render::RendererInitInfo init;
     init.device = context();
