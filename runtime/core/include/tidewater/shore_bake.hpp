@@ -1,0 +1,66 @@
+// The shore bake: the shoreline (the terrain's contour at the water level)
+// and the signed distance to it, computed exactly from that contour with CGAL.
+//
+// Grid: `resolution` x `resolution` texels over the terrain's square extent;
+// values are at texel centres, rows along +z. Units: metres.
+// Threading: bake_shore is reentrant and uses `threads` worker threads;
+// a ShoreField is immutable and safe to share.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/result.hpp"
+#include "tidewater/terrain.hpp"
+
+namespace tidewater {
+
+struct BakeOptions {
+    int resolution = 1024;            ///< Texels per side, 8 to 8192.
+    double simplify_tolerance = 0.0;  ///< m; the contour moves at most this far (0 = half a texel).
+    unsigned threads = 0;             ///< 0 = every hardware thread.
+    std::function<void(double)> progress;  ///< Called with 0..1 during long bakes (optional).
+};
+
+/// One closed or open (domain-edge) shoreline, land on its left.
+struct ShoreLine {
+    std::vector<glm::dvec2> points;  ///< World xz, m.
+    bool closed = true;               ///< false where the shore leaves the domain.
+};
+
+struct ShoreField {
+    glm::dvec2 corner{0.0};   ///< World xz of the grid's outer corner, m.
+    double texel = 1.0;       ///< Texel size, m.
+    int resolution = 0;
+    /// Signed distance to the shoreline, m: positive over water, negative on land.
+    /// With no shoreline at all it is +-(domain diagonal): all water or all land.
+    std::vector<float> signed_distance;
+    /// Unit gradient of the signed distance (points offshore over water), x and z.
+    std::vector<float> gradient_x, gradient_z;
+    /// Water depth = level - terrain height, m (negative on land).
+    std::vector<float> depth;
+    std::vector<ShoreLine> shorelines;  ///< The simplified contour the distances are exact to.
+    std::size_t segment_count = 0;
+    double simplify_tolerance = 0.0;    ///< m, as used.
+    std::size_t polygons = 0;           ///< Land polygons (CGAL polygons with holes).
+    std::size_t holes = 0;              ///< Water bodies enclosed by land (lakes, lagoons).
+
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i); }
+    glm::dvec2 texel_center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
+    /// Bilinear sample of the signed distance at a world point (clamped at the edges).
+    double distance_at(glm::dvec2 p) const;
+};
+
+/// Bakes the shore of `terrain` at `water_level`. Fails on non-finite terrain heights
+/// (naming where) or out-of-range options.
+Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
+
+namespace reference {
+/// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and tests).
+double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p);
+}  // namespace reference
+
+}  // namespace tidewater

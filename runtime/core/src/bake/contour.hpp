@@ -1,0 +1,22 @@
+// Marching squares at level zero over a grid of texel-centre values (private).
+// Land is value >= 0. Every segment is oriented with land on its left, and
+// segments are linked into chains: closed loops, or open chains that end on
+// the domain edge.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace tidewater::detail {
+
+struct ContourChain {
+    std::vector<glm::dvec2> points;  // grid units (texel centre (i, j) is (i, j))
+    bool closed = true;
+};
+
+/// `values` is n x n, row-major with rows along the second axis.
+std::vector<ContourChain> extract_contours(const std::vector<double>& values, int n);
+
+}  // namespace tidewater::detail

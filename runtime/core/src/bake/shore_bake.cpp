@@ -1,0 +1,183 @@
+#include "tidewater/shore_bake.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <fmt/format.h>
+#include <thread>
+
+#include "contour.hpp"
+#include "shore_geometry.hpp"
+
+namespace tidewater {
+
+namespace {
+
+/// More shoreline than this is not a coast but noise (millions of one-texel islands).
+constexpr std::size_t kMaxShoreSegments = 4'000'000;
+constexpr std::size_t kMaxShoreLines = 200'000;
+
+template <typename RowWork>
+void parallel_rows(int rows, unsigned threads, const RowWork& work) {
+    std::atomic<int> next{0};
+    auto worker = [&] {
+        for (int j = next++; j < rows; j = next++) work(j);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& th : pool) th.join();
+}
+
+}  // namespace
+
+double ShoreField::distance_at(glm::dvec2 p) const {
+    if (resolution <= 0) return 0.0;
+    const double u = std::clamp((p.x - corner.x) / texel - 0.5, 0.0, resolution - 1.0);
+    const double v = std::clamp((p.y - corner.y) / texel - 0.5, 0.0, resolution - 1.0);
+    const int i = std::min(static_cast<int>(u), resolution - 2), j = std::min(static_cast<int>(v), resolution - 2);
+    const double fu = u - i, fv = v - j;
+    auto at = [&](int a, int b) { return static_cast<double>(signed_distance[index(a, b)]); };
+    return (1 - fv) * ((1 - fu) * at(i, j) + fu * at(i + 1, j)) + fv * ((1 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1));
+}
+
+Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options) {
+    if (options.resolution < 8 || options.resolution > 8192) {
+        return Error{ErrorCode::invalid_argument, fmt::format("bake: resolution {} is out of range (8 to 8192)", options.resolution)};
+    }
+    if (!std::isfinite(water_level)) return Error{ErrorCode::invalid_argument, "bake: the water level is not finite"};
+    if (!std::isfinite(options.simplify_tolerance) || options.simplify_tolerance < 0.0) {
+        return Error{ErrorCode::invalid_argument, "bake: simplify_tolerance must be finite and >= 0"};
+    }
+    const int n = options.resolution;
+    const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+    auto report = [&](double f) {
+        if (options.progress) options.progress(f);
+    };
+
+    ShoreField field;
+    field.resolution = n;
+    const double half = terrain.extent_half_size();
+    field.texel = 2.0 * half / n;
+    field.corner = terrain.extent_center() - glm::dvec2(half);
+    field.simplify_tolerance = options.simplify_tolerance > 0.0 ? options.simplify_tolerance : 0.5 * field.texel;
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+
+    // Terrain height relative to the water level at every texel centre.
+    std::vector<double> above(count);
+    std::atomic<bool> finite{true};
+    std::atomic<std::size_t> bad_index{0};
+    parallel_rows(n, threads, [&](int j) {
+        for (int i = 0; i < n; ++i) {
+            const double h = terrain.height_at(field.texel_center(i, j));
+            if (!std::isfinite(h) && finite.exchange(false)) bad_index = field.index(i, j);
+            above[field.index(i, j)] = h - water_level;
+        }
+    });
+    if (!finite) {
+        const auto k = bad_index.load();
+        const glm::dvec2 p = field.texel_center(static_cast<int>(k % static_cast<std::size_t>(n)), static_cast<int>(k / static_cast<std::size_t>(n)));
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
+    }
+    field.depth.resize(count);
+    for (std::size_t k = 0; k < count; ++k) field.depth[k] = static_cast<float>(-above[k]);
+    report(0.1);
+
+    // A coast crosses O(n) cells; O(n^2) crossings is noise (say, millions of one-texel
+    // islands). Count before building anything.
+    std::size_t mixed = 0;
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const bool a = above[field.index(i, j)] >= 0, b = above[field.index(i + 1, j)] >= 0;
+            const bool c = above[field.index(i, j + 1)] >= 0, d = above[field.index(i + 1, j + 1)] >= 0;
+            mixed += !(a == b && b == c && c == d);
+        }
+    const std::size_t mixed_limit = std::max<std::size_t>(50'000, count / 8);
+    if (mixed > mixed_limit) {
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
+                                 "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the resolution",
+                                 mixed, count, mixed_limit)};
+    }
+    // The contour at the water level, in world units.
+    std::vector<detail::ContourChain> chains = detail::extract_contours(above, n);
+    std::size_t raw_segments = 0;
+    for (const auto& c : chains) raw_segments += c.points.size();
+    if (raw_segments > kMaxShoreSegments || chains.size() > kMaxShoreLines) {
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: the shoreline has {} pieces and {} segments at this resolution (at most {} and {}): "
+                                 "the terrain is too noisy at the water level; smooth it or lower the resolution",
+                                 chains.size(), raw_segments, kMaxShoreLines, kMaxShoreSegments)};
+    }
+    std::vector<ShoreLine> lines;
+    lines.reserve(chains.size());
+    for (auto& c : chains) {
+        ShoreLine line;
+        line.closed = c.closed;
+        line.points.reserve(c.points.size());
+        for (const auto& g : c.points) line.points.push_back(field.corner + field.texel * (g + glm::dvec2(0.5)));
+        lines.push_back(std::move(line));
+    }
+    detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance);
+    field.polygons = shore.polygons;
+    field.holes = shore.holes;
+    field.shorelines = std::move(shore.lines);
+    report(0.3);
+
+    field.signed_distance.assign(count, 0.0f);
+    field.gradient_x.assign(count, 0.0f);
+    field.gradient_z.assign(count, 0.0f);
+    const auto distance = detail::ShoreDistance::build(field.shorelines);
+    field.segment_count = distance->segment_count();
+    if (field.segment_count == 0) {
+        // No shoreline: all water or all land. The distance is the domain diagonal, signed.
+        const bool water = above[0] < 0.0;
+        const float far = static_cast<float>((water ? 1.0 : -1.0) * 2.0 * std::sqrt(2.0) * half);
+        std::fill(field.signed_distance.begin(), field.signed_distance.end(), far);
+        report(1.0);
+        return field;
+    }
+    std::atomic<int> rows_done{0};
+    parallel_rows(n, threads, [&](int j) {
+        // Each query starts from its neighbour's answer: the AABB tree then prunes almost at once.
+        detail::ShoreDistance::Hit hint;
+        bool have_hint = false;
+        for (int i = 0; i < n; ++i) {
+            const auto hit = distance->query(field.texel_center(i, j), have_hint ? &hint : nullptr);
+            const std::size_t k = field.index(i, j);
+            field.signed_distance[k] = static_cast<float>(hit.signed_distance);
+            field.gradient_x[k] = static_cast<float>(hit.gradient.x);
+            field.gradient_z[k] = static_cast<float>(hit.gradient.y);
+            hint = hit;
+            have_hint = true;
+        }
+        const int done = ++rows_done;
+        if ((done & 63) == 0) report(0.3 + 0.7 * done / n);
+    });
+    report(1.0);
+    return field;
+}
+
+namespace reference {
+
+double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p) {
+    double best = 1e300;
+    for (const ShoreLine& line : field.shorelines) {
+        const std::size_t n = line.points.size();
+        const std::size_t count = line.closed ? n : n - 1;
+        for (std::size_t k = 0; k < count; ++k) {
+            const glm::dvec2 a = line.points[k], b = line.points[(k + 1) % n];
+            const glm::dvec2 ab = b - a, ap = p - a;
+            const double len2 = ab.x * ab.x + ab.y * ab.y;
+            const double t = len2 > 0.0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
+            const glm::dvec2 d = ap - t * ab;
+            best = std::min(best, d.x * d.x + d.y * d.y);
+        }
+    }
+    return std::sqrt(best);
+}
+
+}  // namespace reference
+
+}  // namespace tidewater

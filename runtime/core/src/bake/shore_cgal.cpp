@@ -1,0 +1,155 @@
+// Everything that includes CGAL lives in this file: the simplification of the
+// shoreline, its polygons with holes, and the AABB tree for exact distances.
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/Polyline_simplification_2/simplify.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "shore_geometry.hpp"
+
+namespace tidewater::detail {
+
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point2 = Epick::Point_2;
+using Polygon = CGAL::Polygon_2<Epick>;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Epick>;
+namespace PS = CGAL::Polyline_simplification_2;
+
+// CGAL 5.5's AABB tree is 3D: the shoreline lies in the plane z = 0.
+using K3 = CGAL::Simple_cartesian<double>;
+using Segment3 = K3::Segment_3;
+using SegmentIterator = std::vector<Segment3>::const_iterator;
+using Primitive = CGAL::AABB_segment_primitive<K3, SegmentIterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K3, Primitive>>;
+
+std::vector<glm::dvec2> simplify_line(const ShoreLine& line, double tolerance) {
+    if (line.points.size() < 4 || tolerance <= 0.0) return line.points;
+    std::vector<Point2> in;
+    in.reserve(line.points.size());
+    for (const auto& p : line.points) in.emplace_back(p.x, p.y);
+    std::vector<Point2> out;
+    // Squared_distance_cost: the largest distance from a removed vertex to the simplified line.
+    PS::simplify(in.begin(), in.end(), PS::Squared_distance_cost(), PS::Stop_above_cost_threshold(tolerance * tolerance),
+                 std::back_inserter(out), line.closed);
+    if (line.closed && out.size() > 1 && out.front() == out.back()) out.pop_back();
+    if (out.size() < (line.closed ? 3u : 2u)) return line.points;  // keep tiny islands whole
+    std::vector<glm::dvec2> result;
+    result.reserve(out.size());
+    for (const auto& p : out) result.emplace_back(p.x(), p.y());
+    return result;
+}
+
+}  // namespace
+
+ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance) {
+    ClassifiedShore shore;
+    std::vector<Polygon> outers, holes;
+    for (ShoreLine& line : lines) {
+        line.points = simplify_line(line, tolerance);
+        if (line.closed && line.points.size() >= 3) {
+            Polygon poly;
+            for (const auto& p : line.points) poly.push_back(Point2(p.x, p.y));
+            // Land on the left: a counter-clockwise loop encloses land, a clockwise one water.
+            (poly.orientation() == CGAL::COUNTERCLOCKWISE ? outers : holes).push_back(std::move(poly));
+        }
+        shore.lines.push_back(std::move(line));
+    }
+    // Each enclosed water joins the smallest land polygon around it.
+    std::vector<PolygonWithHoles> land;
+    land.reserve(outers.size());
+    for (auto& o : outers) land.emplace_back(o);
+    std::vector<double> areas;
+    for (const auto& o : outers) areas.push_back(CGAL::to_double(o.area()));
+    for (auto& h : holes) {
+        int best = -1;
+        for (std::size_t k = 0; k < outers.size(); ++k) {
+            if (outers[k].bounded_side(h.vertex(0)) == CGAL::ON_BOUNDED_SIDE &&
+                (best < 0 || areas[k] < areas[static_cast<std::size_t>(best)]))
+                best = static_cast<int>(k);
+        }
+        if (best >= 0) land[static_cast<std::size_t>(best)].add_hole(h);  // clockwise, as CGAL expects
+    }
+    shore.polygons = land.size();
+    shore.holes = holes.size();
+    return shore;
+}
+
+struct ShoreDistance::Impl {
+    std::vector<Segment3> segments;
+    // Per segment: the left normals of its neighbours along the line (for the sign at vertices).
+    std::vector<glm::dvec2> left_normal, prev_normal, next_normal;
+    Tree tree;
+};
+
+ShoreDistance::ShoreDistance(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+ShoreDistance::~ShoreDistance() = default;
+
+std::size_t ShoreDistance::segment_count() const { return impl_->segments.size(); }
+
+std::unique_ptr<ShoreDistance> ShoreDistance::build(const std::vector<ShoreLine>& lines) {
+    auto impl = std::make_unique<Impl>();
+    for (const ShoreLine& line : lines) {
+        const std::size_t n = line.points.size();
+        const std::size_t count = line.closed ? n : n - 1;
+        const std::size_t first = impl->segments.size();
+        for (std::size_t k = 0; k < count; ++k) {
+            const glm::dvec2 a = line.points[k], b = line.points[(k + 1) % n];
+            impl->segments.emplace_back(K3::Point_3(a.x, a.y, 0.0), K3::Point_3(b.x, b.y, 0.0));
+            const glm::dvec2 d = b - a;
+            const double len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-300);
+            impl->left_normal.push_back(glm::dvec2(-d.y, d.x) / len);
+        }
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t prev = k > 0 ? k - 1 : (line.closed ? count - 1 : k);
+            const std::size_t next = k + 1 < count ? k + 1 : (line.closed ? 0 : k);
+            impl->prev_normal.push_back(impl->left_normal[first + prev]);
+            impl->next_normal.push_back(impl->left_normal[first + next]);
+        }
+    }
+    if (!impl->segments.empty()) {
+        impl->tree.insert(impl->segments.cbegin(), impl->segments.cend());
+        impl->tree.build();
+        impl->tree.accelerate_distance_queries();
+    }
+    return std::unique_ptr<ShoreDistance>(new ShoreDistance(std::move(impl)));
+}
+
+ShoreDistance::Hit ShoreDistance::query(glm::dvec2 p, const Hit* hint) const {
+    const Impl& m = *impl_;
+    const K3::Point_3 q(p.x, p.y, 0.0);
+    // The hint is a (point, primitive) pair: CGAL returns its primitive when nothing is closer.
+    const auto result =
+        hint ? m.tree.closest_point_and_primitive(
+                   q, std::make_pair(K3::Point_3(hint->closest.x, hint->closest.y, 0.0),
+                                     m.segments.cbegin() + static_cast<std::ptrdiff_t>(hint->segment)))
+             : m.tree.closest_point_and_primitive(q);
+    const glm::dvec2 c(result.first.x(), result.first.y());
+    const auto s = static_cast<std::size_t>(result.second - m.segments.cbegin());
+    const glm::dvec2 away = p - c;
+    const double dist = std::sqrt(away.x * away.x + away.y * away.y);
+    // The side: the segment's left normal, or at a shared vertex the mean with its neighbour's.
+    glm::dvec2 normal = m.left_normal[s];
+    const glm::dvec2 a(m.segments[s].source().x(), m.segments[s].source().y());
+    const glm::dvec2 b(m.segments[s].target().x(), m.segments[s].target().y());
+    const double eps = 1e-9 * (1.0 + std::abs(a.x) + std::abs(a.y));
+    if (std::abs(c.x - a.x) + std::abs(c.y - a.y) < eps) normal += m.prev_normal[s];
+    if (std::abs(c.x - b.x) + std::abs(c.y - b.y) < eps) normal += m.next_normal[s];
+    const bool land = away.x * normal.x + away.y * normal.y > 0.0;
+    Hit hit;
+    hit.closest = c;
+    hit.segment = s;
+    hit.signed_distance = land ? -dist : dist;
+    if (dist > 0.0) hit.gradient = (land ? -1.0 : 1.0) * away / dist;
+    return hit;
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,45 @@
+// CGAL-backed shoreline geometry (private; CGAL stays inside shore_cgal.cpp).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/result.hpp"
+#include "tidewater/shore_bake.hpp"
+
+namespace tidewater::detail {
+
+struct ClassifiedShore {
+    std::vector<ShoreLine> lines;  // simplified, land on the left, world units
+    std::size_t polygons = 0;      // land polygons with holes
+    std::size_t holes = 0;         // enclosed water bodies
+};
+
+/// Simplifies each line within `tolerance` (m, CGAL Polyline_simplification_2) and builds
+/// the land as CGAL polygons with holes to count islands and enclosed waters.
+ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance);
+
+/// Exact distance to a set of segments (a CGAL AABB tree), thread-safe for queries.
+class ShoreDistance {
+public:
+    struct Hit {
+        double signed_distance = 0.0;  // m, + over water (right of the land-on-left segments)
+        glm::dvec2 gradient{0.0};      // unit
+        glm::dvec2 closest{0.0};       // nearest shore point
+        std::size_t segment = 0;       // its segment; with `closest`, the next query's hint
+    };
+    static std::unique_ptr<ShoreDistance> build(const std::vector<ShoreLine>& lines);
+    ~ShoreDistance();
+    /// `hint` is a previous answer near this one (e.g. the neighbouring texel's), or null.
+    Hit query(glm::dvec2 p, const Hit* hint) const;
+    std::size_t segment_count() const;
+
+private:
+    struct Impl;
+    explicit ShoreDistance(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tidewater::detail

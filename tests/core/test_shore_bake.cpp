@@ -1,0 +1,197 @@
+// The shore bake against exact geometry: a circular island and a ring-shaped
+// lagoon from heightmaps, within one texel plus the simplification tolerance;
+// degenerate terrains bake with documented results; noisy shores are refused.
+#include <cmath>
+
+#include "test_helpers.hpp"
+#include "tidewater/shore_bake.hpp"
+
+namespace tidewater {
+namespace {
+
+/// A heightmap of height(r) over a square of side `size` m centred on the origin.
+template <typename Profile>
+Terrain radial_heightmap(int pixels, double size, double lo, double hi, const Profile& height) {
+    auto img = std::make_shared<Gray16Image>();
+    img->width = img->height = pixels;
+    img->pixels.resize(static_cast<std::size_t>(pixels * pixels));
+    for (int j = 0; j < pixels; ++j)
+        for (int i = 0; i < pixels; ++i) {
+            const double x = (i / double(pixels - 1) - 0.5) * size, z = (j / double(pixels - 1) - 0.5) * size;
+            const double h = std::clamp(height(std::hypot(x, z)), lo, hi);
+            img->pixels[static_cast<std::size_t>(j * pixels + i)] = static_cast<std::uint16_t>(std::lround((h - lo) / (hi - lo) * 65535.0));
+        }
+    HeightmapTerrain t;
+    t.size = {size, size};
+    t.min_height = lo;
+    t.max_height = hi;
+    t.image = img;
+    return Terrain(t);
+}
+
+struct Worst {
+    double error = 0.0;
+    double gradient_error = 0.0;  // against the ideal circle, not the simplified polygon
+    double unit_error = 0.0;      // | |gradient| - 1 |
+};
+
+/// Largest distance error everywhere; largest gradient error away from the shore and
+/// from the medial axis (where the nearest shore point jumps and either side is right).
+template <typename Exact, typename NearAxis>
+Worst compare(const ShoreField& f, const Exact& exact, const NearAxis& near_medial_axis) {
+    Worst w;
+    for (int j = 0; j < f.resolution; ++j)
+        for (int i = 0; i < f.resolution; ++i) {
+            const glm::dvec2 p = f.texel_center(i, j);
+            const auto [d, g] = exact(p);
+            w.error = std::max(w.error, std::abs(f.signed_distance[f.index(i, j)] - d));
+            const glm::dvec2 grad(f.gradient_x[f.index(i, j)], f.gradient_z[f.index(i, j)]);
+            if (std::abs(d) > 1e-3) w.unit_error = std::max(w.unit_error, std::abs(glm::length(grad) - 1.0));
+            if (std::abs(d) > 3 * f.texel && !near_medial_axis(p))
+                w.gradient_error = std::max(w.gradient_error, glm::length(grad - g));
+        }
+    return w;
+}
+
+// Island: a cone crossing the water level at r0 = 200 m. Exact: d = r - r0 (water outside).
+TEST(ShoreBake, CircularIslandMatchesExactDistance) {
+    const double r0 = 200.0;
+    const Terrain t = radial_heightmap(513, 1000.0, -40.0, 40.0, [&](double r) { return 0.2 * (r0 - r); });
+    BakeOptions o;
+    o.resolution = 256;
+    auto f = bake_shore(t, 0.0, o);
+    ASSERT_TRUE(f.ok()) << f.error().message;
+    EXPECT_EQ(f->polygons, 1u);
+    EXPECT_EQ(f->holes, 0u);
+    const Worst w = compare(*f, [&](glm::dvec2 p) {
+        const double r = glm::length(p);
+        return std::pair{r - r0, r > 0 ? p / r : glm::dvec2(0.0)};
+    }, [&](glm::dvec2 p) { return glm::length(p) < 0.2 * r0; });
+    std::printf("circular island: texel %.3f m, tolerance %.3f m, %zu segments: max |error| %.3f m, gradient %.4f\n",
+                f->texel, f->simplify_tolerance, f->segment_count, w.error, w.gradient_error);
+    EXPECT_LE(w.error, f->texel + f->simplify_tolerance);
+    // The gradient is exact for the simplified polygon (33 sides here), whose edge normals
+    // lean up to about 13 degrees from the circle's radial direction near its spokes.
+    EXPECT_LT(w.gradient_error, 0.25);
+    EXPECT_LT(w.unit_error, 1e-5);
+}
+
+// Ring-shaped land around a lagoon: land for 150 < r < 300. Exact: water outside and
+// inside, land between; one land polygon with one hole.
+TEST(ShoreBake, RingLagoonMatchesExactDistance) {
+    const double a = 150.0, b = 300.0, mid = 0.5 * (a + b), half_width = 0.5 * (b - a);
+    const Terrain t = radial_heightmap(513, 1000.0, -40.0, 40.0, [&](double r) { return 0.2 * (half_width - std::abs(r - mid)); });
+    BakeOptions o;
+    o.resolution = 256;
+    auto f = bake_shore(t, 0.0, o);
+    ASSERT_TRUE(f.ok()) << f.error().message;
+    EXPECT_EQ(f->polygons, 1u);
+    EXPECT_EQ(f->holes, 1u);
+    const Worst w = compare(*f, [&](glm::dvec2 p) {
+        const double r = glm::length(p);
+        const glm::dvec2 out = r > 0 ? p / r : glm::dvec2(0.0);
+        if (r < a) return std::pair{a - r, -out};     // lagoon water
+        if (r > b) return std::pair{r - b, out};      // open sea
+        return r - a < b - r ? std::pair{-(r - a), -out} : std::pair{-(b - r), out};  // land
+    }, [&](glm::dvec2 p) { return glm::length(p) < 0.2 * a || std::abs(glm::length(p) - mid) < 0.2 * half_width; });
+    std::printf("ring lagoon: max |error| %.3f m (texel %.3f m + tolerance %.3f m), gradient %.4f\n", w.error, f->texel,
+                f->simplify_tolerance, w.gradient_error);
+    EXPECT_LE(w.error, f->texel + f->simplify_tolerance);
+    EXPECT_LT(w.gradient_error, 0.25);
+    EXPECT_LT(w.unit_error, 1e-5);
+}
+
+TEST(ShoreBake, CgalDistanceEqualsBruteForce) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    BakeOptions o;
+    o.resolution = 128;
+    auto f = bake_shore(scene->terrain, scene->water_level, o);
+    ASSERT_TRUE(f.ok()) << f.error().message;
+    EXPECT_GT(f->segment_count, 30u);
+    for (int j = 0; j < f->resolution; j += 7)
+        for (int i = 0; i < f->resolution; i += 5) {
+            const double brute = reference::brute_force_shore_distance(*f, f->texel_center(i, j));
+            ASSERT_NEAR(std::abs(f->signed_distance[f->index(i, j)]), brute, 1e-3 + 1e-6 * brute) << i << "," << j;
+        }
+    // Depth is the water column.
+    const glm::dvec2 p = f->texel_center(3, 3);
+    EXPECT_NEAR(f->depth[f->index(3, 3)], scene->water_level - scene->terrain.height_at(p), 1e-3);
+}
+
+// Degenerate terrains: all water, all land, a one-texel island, touching islands (a
+// saddle), a shore that leaves the domain. Documented results in shore_bake.hpp.
+TEST(ShoreBake, DegenerateTerrainsBake) {
+    BakeOptions o;
+    o.resolution = 64;
+    auto water = bake_shore(Terrain(FlatTerrain{-10.0}), 0.0, o);
+    ASSERT_TRUE(water.ok());
+    EXPECT_EQ(water->segment_count, 0u);
+    EXPECT_GT(water->signed_distance[0], 0.0f);
+    auto land = bake_shore(Terrain(FlatTerrain{10.0}), 0.0, o);
+    ASSERT_TRUE(land.ok());
+    EXPECT_LT(land->signed_distance[0], 0.0f);
+
+    auto pixel_map = [](std::vector<std::pair<int, int>> land_pixels) {
+        auto img = std::make_shared<Gray16Image>();
+        img->width = img->height = 16;
+        img->pixels.assign(256, 0);
+        for (auto [i, j] : land_pixels) img->pixels[static_cast<std::size_t>(j * 16 + i)] = 65535;
+        HeightmapTerrain t;
+        t.size = {160.0, 160.0};
+        t.min_height = -5;
+        t.max_height = 5;
+        t.image = img;
+        return Terrain(t);
+    };
+    auto single = bake_shore(pixel_map({{8, 8}}), 0.0, o);
+    ASSERT_TRUE(single.ok()) << single.error().message;
+    EXPECT_EQ(single->polygons, 1u);
+    EXPECT_LT(single->distance_at({5.0, 5.0}), 0.0);  // the island's pixel centre is land
+    auto touching = bake_shore(pixel_map({{5, 5}, {6, 6}, {9, 9}, {10, 10}}), 0.0, o);
+    ASSERT_TRUE(touching.ok()) << touching.error().message;
+    EXPECT_GE(touching->polygons, 2u);
+
+    // h = -10 + 0.02 x: the shore is the line x = 500, leaving the domain at both ends.
+    PlaneTerrain plane;
+    plane.height = -10.0;
+    plane.slope = {0.02, 0.0};
+    auto edge = bake_shore(Terrain(plane), 0.0, o);
+    ASSERT_TRUE(edge.ok());
+    ASSERT_FALSE(edge->shorelines.empty());
+    EXPECT_FALSE(edge->shorelines[0].closed);
+    for (int i = 0; i < 64; i += 9) {
+        const glm::dvec2 p = edge->texel_center(i, 20);
+        EXPECT_NEAR(edge->signed_distance[edge->index(i, 20)], 500.0 - p.x, edge->texel) << p.x;
+    }
+}
+
+TEST(ShoreBake, BadInputIsRefused) {
+    BakeOptions o;
+    o.resolution = 4;
+    EXPECT_FALSE(bake_shore(Terrain(FlatTerrain{-1.0}), 0.0, o).ok());
+    o.resolution = 64;
+    EXPECT_FALSE(bake_shore(Terrain(FlatTerrain{-1.0}), std::nan(""), o).ok());
+    // Non-finite terrain heights name where.
+    PlaneTerrain nan_plane;
+    nan_plane.height = std::nan("");
+    auto bad = bake_shore(Terrain(nan_plane), 0.0, o);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("not finite at x ="), std::string::npos) << bad.error().message;
+    // A checkerboard at the water level: every cell crosses the shore.
+    auto img = std::make_shared<Gray16Image>();
+    img->width = img->height = 512;
+    img->pixels.resize(512 * 512);
+    for (int j = 0; j < 512; ++j)
+        for (int i = 0; i < 512; ++i) img->pixels[static_cast<std::size_t>(j * 512 + i)] = ((i + j) & 1) ? 65535 : 0;
+    HeightmapTerrain noisy;
+    noisy.size = {512.0, 512.0};
+    noisy.image = img;
+    o.resolution = 512;
+    auto refused = bake_shore(Terrain(noisy), 0.0, o);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("too noisy"), std::string::npos) << refused.error().message;
+}
+
+}  // namespace
+}  // namespace tidewater
