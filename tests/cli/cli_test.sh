@@ -177,6 +177,24 @@ case "$CASE" in
     expect_error "unwritable output" "cannot" "$TW" render --size 32x32 --out no/such/dir/o.png
     check "no partial PNG anywhere" bash -c "! ls o.png* no 2>/dev/null"
     ;;
+  bake)
+    "$TW" bake --resolution 128 --out baked --quiet > log.txt
+    check "exit 0" test $? -eq 0
+    for f in signed_distance.png gradient_x.png gradient_z.png depth.png shore.json shorelines.json; do
+      check "wrote $f" test -s "baked/$f"
+    done
+    check "sidecar names extent, fields and units" bash -c "grep -q '\"texel_m\"' baked/shore.json && grep -q '\"decode\"' baked/shore.json && grep -q '\"unit\": \"m\"' baked/shore.json"
+    check "sidecar lists the waves" grep -q '"omega_rad_s"' baked/shore.json
+    check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
+    "$TW" bake --resolution 64 --out baked --quiet > /dev/null
+    check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"
+    expect_error "bad resolution" "resolution" "$TW" bake --resolution 4 --out b2
+    check "no folder after a failed bake" test ! -e b2
+    echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "x.png", "size": [100, 100], "height_range": [5, -5]}}, "ocean": "pool_calm"}' > inverted.json
+    expect_error "inverted height range" "height_range" "$TW" bake --scene inverted.json --out b3
+    touch plain
+    expect_error "unwritable folder" "cannot create folder" "$TW" bake --resolution 32 --out plain/sub --quiet
+    ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;
 esac

@@ -119,7 +119,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         for (const auto& g : c.points) line.points.push_back(field.corner + field.texel * (g + glm::dvec2(0.5)));
         lines.push_back(std::move(line));
     }
-    detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance);
+    detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance, threads);
     field.polygons = shore.polygons;
     field.holes = shore.holes;
     field.shorelines = std::move(shore.lines);

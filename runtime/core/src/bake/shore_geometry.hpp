@@ -17,9 +17,10 @@ struct ClassifiedShore {
     std::size_t holes = 0;         // enclosed water bodies
 };
 
-/// Simplifies each line within `tolerance` (m, CGAL Polyline_simplification_2) and builds
-/// the land as CGAL polygons with holes to count islands and enclosed waters.
-ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance);
+/// Simplifies each line within `tolerance` (m, CGAL Polyline_simplification_2) on
+/// `threads` threads and builds the land as CGAL polygons with holes to count islands
+/// and enclosed waters.
+ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads);
 
 /// Exact distance to a set of segments (a CGAL AABB tree), thread-safe for queries.
 class ShoreDistance {
