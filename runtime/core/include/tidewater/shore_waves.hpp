@@ -1,0 +1,77 @@
+// Shoreline-aware waves: per-wave fields baked over the terrain that make
+// Gerstner waves feel the bottom (DESIGN.md, "Shoreline-aware waves").
+//
+// For wave i (deep-water wavenumber k0, frequency w, direction D), over water:
+// - the local wavenumber solves w^2 = g k tanh(k h): waves shorten and slow;
+// - the phase phi solves |grad phi| = k(h) by fast marching (first arrivals), with
+//   phi = k0 D.x in deep water (k h >= pi) and on the domain edges waves enter
+//   from. Stored as phi - k0 D.x, which is 0 offshore: no seam. On a straight
+//   beach this is Snell's law (the along-shore wavenumber is conserved);
+// - the amplitude is A0 * Ks * Kr: shoaling Ks = sqrt(cg0 / cg(h)) (energy flux),
+//   refraction Kr = sqrt(cos(theta0) / cos(theta)) against the shore normal;
+// - breaking: where the summed amplitude exceeds 0.39 h (height 0.78 h) every
+//   amplitude is scaled down to it and `breaking` (foam) rises; 0 on dry land;
+// - steepness: Q is scaled so that sum(Q k A) stays <= 0.95 (no folding).
+// Local fields vary slowly against a wavelength, so derivatives use the local
+// wavevector and treat amplitude and direction as constant over a wave.
+// Threading: immutable after bake; share it freely.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/gerstner.hpp"
+#include "tidewater/result.hpp"
+#include "tidewater/terrain.hpp"
+#include "tidewater/waves.hpp"
+
+namespace tidewater {
+
+struct ShoreWaveOptions {
+    int resolution = 256;           ///< Texels per side over the terrain's extent, 16 to 4096.
+    unsigned threads = 0;           ///< 0 = every hardware thread.
+    double breaking_index = 0.78;   ///< Breaker height / depth (McCowan), in (0, 1.2].
+};
+
+/// What the shore does to one wave at one place.
+struct LocalWave {
+    double phase_residual = 0.0;     ///< phi - k0 D.x, rad.
+    double amplitude_factor = 1.0;   ///< A / A0.
+    glm::dvec2 wavevector{0.0};      ///< grad phi, rad/m (turns toward the shore, grows with shoaling).
+};
+
+struct LocalShore {
+    double depth = 0.0;            ///< Water level - terrain, m (< 0 on land).
+    double breaking = 0.0;         ///< 0..1 foam from breaking.
+    double steepness_scale = 1.0;  ///< Multiplies every Q here.
+};
+
+class ShoreWaves {
+public:
+    static Result<std::shared_ptr<const ShoreWaves>> bake(const WaveSet& set, const Terrain& terrain, double water_level,
+                                                          const ShoreWaveOptions& options = {});
+
+    /// Bilinear sample at world xz; `waves` must have one entry per wave of the set.
+    LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
+
+    int resolution() const { return n_; }
+    double texel() const { return texel_; }
+    glm::dvec2 corner() const { return corner_; }
+    std::size_t wave_count() const { return residual_.size(); }
+
+private:
+    int n_ = 0;
+    double texel_ = 1.0;
+    glm::dvec2 corner_{0.0};
+    std::vector<std::vector<float>> residual_, amplitude_, kx_, kz_;  // [wave][texel]
+    std::vector<float> depth_, breaking_, steepness_;
+};
+
+/// evaluate_lagrangian with the shore's local wavevectors and amplitudes.
+LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest, double time,
+                                           LocalShore* local = nullptr);
+
+}  // namespace tidewater
