@@ -41,6 +41,7 @@ struct GpuQueryResult {
     vec4 height_normal;  // x: eta (m, without the water level), yzw: unit normal
     vec4 velocity_jac;   // xyz: particle velocity (m/s), w: Jacobian determinant
     vec4 disp_iter;      // xy: horizontal displacement (m), z: Newton evaluations, w: 1 if converged
+    vec4 shore;          // x: depth (m), y: shore distance (m), z: breaking, w: unused
 };
 
 // Debug views (GpuFrame.params.w).
@@ -74,13 +75,24 @@ struct GpuQueryParams {
     uint point_count;
     float tolerance;     // residual accepted as converged, m
     float max_offset;    // sum(Q*A) with slack, m
+    uint shore_resolution;  // texels per side of the shore fields; 0 = open water
+    float shore_texel;      // m
+    float pad0, pad1;
+};
+
+// The shore fields (tidewater::ShoreWaves), as storage buffers read with the
+// same bilinear weights as the CPU:
+//   per wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
+//   per texel:          (depth m, breaking 0..1, steepness scale, shore distance m)
+struct GpuShoreTexel {
+    vec4 values;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
-static_assert(sizeof(GpuQueryResult) == 48);
-static_assert(sizeof(GpuQueryParams) == 16);
+static_assert(sizeof(GpuQueryResult) == 64);
+static_assert(sizeof(GpuQueryParams) == 32);
 static_assert(sizeof(GpuFrame) == 2 * 64 + 9 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -11,11 +11,42 @@ layout(std430, set = 0, binding = 0) readonly buffer Waves { GpuWave waves[]; };
 layout(std430, set = 0, binding = 1) readonly buffer BasePhases { float base_phase[]; };  // [cell * wave_count + i]
 layout(std430, set = 0, binding = 2) readonly buffer Points { GpuQueryPoint points[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Results { GpuQueryResult results[]; };
+// Shore fields; cell origins relative to the shore grid's corner (m).
+layout(std430, set = 0, binding = 4) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // [wave * texels + texel]
+layout(std430, set = 0, binding = 5) readonly buffer ShoreShared { vec4 shore_shared[]; };     // [texel]
+layout(std430, set = 0, binding = 6) readonly buffer CellOrigins { vec2 cell_origin[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
 #include "gerstner.glsl"
 
-const int kMaxNewtonIterations = 24;
+const int kMaxNewtonIterations = 48;
+
+// Bilinear weights and corner texels at a position relative to the shore grid's corner,
+// clamped at the edges: the CPU's ShoreWaves::sample.
+struct ShoreTap {
+    uint k00, k10, k01, k11;
+    vec4 w;
+};
+ShoreTap shore_tap(vec2 rel) {
+    int n = int(params.shore_resolution);
+    vec2 uv = clamp(rel / params.shore_texel - 0.5, vec2(0.0), vec2(float(n - 1)));
+    ivec2 ij = min(ivec2(uv), ivec2(n - 2));
+    vec2 f = uv - vec2(ij);
+    ShoreTap t;
+    t.k00 = uint(ij.y * n + ij.x);
+    t.k10 = t.k00 + 1u;
+    t.k01 = t.k00 + uint(n);
+    t.k11 = t.k01 + 1u;
+    t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    return t;
+}
+vec4 tap_waves(ShoreTap t, uint base) {
+    return t.w.x * shore_waves[base + t.k00] + t.w.y * shore_waves[base + t.k10] + t.w.z * shore_waves[base + t.k01] +
+           t.w.w * shore_waves[base + t.k11];
+}
+vec4 tap_shared(ShoreTap t) {
+    return t.w.x * shore_shared[t.k00] + t.w.y * shore_shared[t.k10] + t.w.z * shore_shared[t.k01] + t.w.w * shore_shared[t.k11];
+}
 
 void main() {
     uint id = gl_GlobalInvocationID.x;
@@ -29,13 +60,33 @@ void main() {
     float det = 1.0;
     float iterations = 0.0;
     float converged = 0.0;
+    bool shore = params.shore_resolution > 0u;
+    vec2 last_e = e;
+    float last_f2 = 3.0e38;
+    uint texels = params.shore_resolution * params.shore_resolution;
+    vec4 shared_fields = vec4(1e9, 1e9, 0.0, 1.0);
     for (int it = 0; it < kMaxNewtonIterations; ++it) {
         s = gerstner_zero();
+        ShoreTap tap;
+        if (shore) {
+            tap = shore_tap(cell_origin[p.cell] + p.local + e);
+            shared_fields = tap_shared(tap);
+        }
         for (uint i = 0u; i < params.wave_count; ++i) {
             GpuWave w = waves[i];
             // Same association as the CPU kernel: base + kz*ez + kx*ex (fma order).
             float theta = fma(w.dir_k_amp.x * w.dir_k_amp.z, p.local.x + e.x,
                               fma(w.dir_k_amp.y * w.dir_k_amp.z, p.local.y + e.y, base_phase[row + i]));
+            if (shore) {
+                // The wave as the shore shapes it here: phase residual, amplitude, local wavevector.
+                vec4 local = tap_waves(tap, i * texels);
+                float kl = length(local.zw);
+                float a = shared_fields.x > 0.0 ? w.dir_k_amp.w * local.y : 0.0;
+                if (a <= 0.0 || kl <= 0.0) continue;
+                theta += local.x;
+                w.dir_k_amp = vec4(local.zw / kl, kl, a);
+                w.steep_omega.x *= shared_fields.z;
+            }
             gerstner_accumulate(s, w, theta);
         }
         iterations += 1.0;
@@ -48,6 +99,13 @@ void main() {
             break;
         }
         if (it + 1 == kMaxNewtonIterations) break;  // report the last evaluation unconverged
+        // Shore fields change within a texel near the waterline: step back halfway when |F| grows.
+        if (shore && dot(f, f) > last_f2) {
+            e = 0.5 * (e + last_e);
+            continue;
+        }
+        last_f2 = dot(f, f);
+        last_e = e;
         e += step_e;
         float r2 = dot(e, e);
         if (r2 > params.max_offset * params.max_offset) e *= sqrt(params.max_offset * params.max_offset / r2);
@@ -57,5 +115,6 @@ void main() {
     r.height_normal = vec4(s.eta + dot(s.slope, step_e), gerstner_normal(s));
     r.velocity_jac = vec4(s.velocity, det);
     r.disp_iter = vec4(-(e + step_e), iterations, converged);
+    r.shore = vec4(shared_fields.x, shared_fields.w, shared_fields.y, 0.0);
     results[id] = r;
 }

@@ -29,7 +29,7 @@ expect_error() {
 }
 no_file() { [ ! -e "$1" ] && ! ls "$1".tmp-* >/dev/null 2>&1; }
 
-printf 'x,z\n0,0\n12.5,-3\n100,40\n' > points.csv
+printf 'x,z\n0,0\n12.5,-3\n1200,400\n' > points.csv
 
 case "$CASE" in
   help)
@@ -44,16 +44,17 @@ case "$CASE" in
   query_columns)
     "$TW" query --time 2.5 --points points.csv > out.csv
     check "exit 0" test $? -eq 0
-    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian"
+    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam"
     check "one row per point" test "$(wc -l < out.csv)" -eq 4
     check "rows echo the points" bash -c "sed -n 3p out.csv | grep -q '^12.5,-3,'"
-    check "ten numeric columns" bash -c "awk -F, 'NR>1 && NF!=10 {bad=1} END {exit bad}' out.csv"
+    check "fourteen columns" bash -c "awk -F, 'NR>1 && NF!=14 {bad=1} END {exit bad}' out.csv"
+    check "the island's middle is dry land, far offshore is wet" bash -c "sed -n 2p out.csv | awk -F, '{exit !(\$13 == 0 && \$11 < 0)}' && sed -n 4p out.csv | awk -F, '{exit !(\$13 == 1)}'"
     check "unit normals" bash -c "awk -F, 'NR>1 { n=\$4*\$4+\$5*\$5+\$6*\$6; if (n<0.999999 || n>1.000001) bad=1 } END {exit bad}' out.csv"
     ;;
   query_times)
     "$TW" query --times 0:1:0.25 --points points.csv --out long.csv
     check "exit 0" test $? -eq 0
-    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian"
+    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam"
     check "5 times x 3 points" test "$(wc -l < long.csv)" -eq 16
     check "last time is 1" bash -c "tail -1 long.csv | grep -q '^1,'"
     # The row for t = 0.5 equals a single-time query at 0.5.
@@ -66,7 +67,7 @@ case "$CASE" in
     "$TW" query --backend cpu --times 0:20:5 --points points.csv --out cpu.csv
     check "same header" test "$(head -1 gpu.csv)" = "$(head -1 cpu.csv)"
     check "same rows" test "$(wc -l < gpu.csv)" -eq "$(wc -l < cpu.csv)"
-    check "heights within 1 mm, normals within 1e-3" bash -c "paste -d, cpu.csv gpu.csv | awk -F, 'NR>1 { d=\$4-\$15; if (d<0) d=-d; if (d>1e-3) bad=1; for (i=5;i<=7;i++) { e=\$i-\$(i+11); if (e<0) e=-e; if (e>1e-3) bad=1 } } END {exit bad}'"
+    check "heights within 1 mm, normals within 1e-3" bash -c "paste -d, cpu.csv gpu.csv | awk -F, 'NR>1 { h=NF/2; d=\$4-\$(4+h); if (d<0) d=-d; if (d>1e-3) bad=1; for (i=5;i<=7;i++) { e=\$i-\$(i+h); if (e<0) e=-e; if (e>1e-3) bad=1 } } END {exit bad}'"
     expect_error "unknown backend" "--backend" "$TW" query --backend tpu --time 0 --points points.csv
     ;;
   query_out_matches_stdout)

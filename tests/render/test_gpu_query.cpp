@@ -21,20 +21,30 @@ protected:
 };
 
 struct Parity {
+    std::size_t unconverged = 0;       // points either side did not converge (compared separately)
+    double unconverged_height = 0.0;   // m, largest difference among those
     double height = 0.0;     // m
     double normal_deg = 0.0;
     double velocity = 0.0;   // m/s
     double jacobian = 0.0;
 };
 
-Parity compare(render::GpuQuery& gpu, const WaterBody& body, double t, const std::vector<glm::dvec2>& pts) {
+Parity compare(render::GpuQuery& gpu, const WaterBody& body, double t, const std::vector<glm::dvec2>& pts,
+               bool require_converged = true) {
     std::vector<SurfacePoint> cpu(pts.size()), dev(pts.size());
     EXPECT_TRUE(query_surface(body, t, pts, cpu).ok());
     const Status st = gpu.query_surface(body, t, pts, dev);
     EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().message);
     Parity p;
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        EXPECT_TRUE(dev[i].converged) << i;
+        if (require_converged) {
+            EXPECT_TRUE(dev[i].converged) << i;
+        }
+        if (!cpu[i].converged || !dev[i].converged) {
+            ++p.unconverged;
+            p.unconverged_height = std::max(p.unconverged_height, std::abs(cpu[i].height - dev[i].height));
+            continue;
+        }
         p.height = std::max(p.height, std::abs(cpu[i].height - dev[i].height));
         const double c = std::clamp(glm::dot(cpu[i].normal, dev[i].normal), -1.0, 1.0);
         p.normal_deg = std::max(p.normal_deg, std::acos(c) * 180.0 / kPi);
@@ -81,6 +91,36 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOnPresetsAndSteepSeas) {
                 worst.jacobian);
     RecordProperty("max_height_difference_m", std::to_string(worst.height));
     RecordProperty("max_normal_angle_deg", std::to_string(worst.normal_deg));
+}
+
+// The shore scene: the default island with its shore model. The GPU samples the same
+// fields the same way; over 10^4 points from the lagoon to open sea, heights within
+// 1 mm and normals within 0.5 degrees where both solves converge. Points at the waterline
+// where the shore folds the surface have no exact answer; they are counted and reported.
+TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
+    auto q = render::GpuQuery::create(context());
+    ASSERT_TRUE(q.ok()) << q.error().message;
+    query_ = std::move(q).value();
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    ASSERT_NE(scene->ocean.shore(), nullptr);
+    std::mt19937_64 rng(5);
+    std::vector<glm::dvec2> pts(10000);
+    for (auto& p : pts) p = {static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0, static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0};
+    Parity worst;
+    for (double t : {0.0, 7.5, 4321.0}) {
+        const Parity p = compare(*query_, scene->ocean, t, pts, /*require_converged=*/false);
+        worst.height = std::max(worst.height, p.height);
+        worst.normal_deg = std::max(worst.normal_deg, p.normal_deg);
+        worst.unconverged += p.unconverged;
+        worst.unconverged_height = std::max(worst.unconverged_height, p.unconverged_height);
+    }
+    std::printf("shore parity over %zu points x 3 times: max |dh| = %.3g m, max normal angle = %.3g deg; "
+                "%zu waterline points unconverged (best estimates differ by up to %.3g m)\n",
+                pts.size(), worst.height, worst.normal_deg, worst.unconverged, worst.unconverged_height);
+    EXPECT_LT(worst.unconverged, pts.size() * 3 / 100) << "under 1% of the points";
+    EXPECT_LE(worst.height, 1e-3);
+    EXPECT_LE(worst.normal_deg, 0.5);
 }
 
 TEST_F(GpuQueryTest, RejectsMismatchedSpansAndHandlesEmptyInput) {

@@ -27,15 +27,22 @@ struct QueryArgs {
 };
 
 /// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large.
+/// depth is the water column at the query point (level - terrain), wet is 1 where the
+/// surface stands above the terrain, shore_distance comes from the scene's shore model
+/// (nan when the scene turns it off), foam is breaking or folding crests.
 template <typename Sink>
-void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t,
+void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t, const Scene& scene,
                 const std::vector<glm::dvec2>& points, const std::vector<SurfacePoint>& results) {
+    const bool shore = scene.ocean.shore() != nullptr;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const SurfacePoint& s = results[i];
+        const double ground = scene.terrain.height_at(points[i]);
         if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
-        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g}\n",
+        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{},{},{:.4g}\n",
                        points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                       s.velocity.y, s.velocity.z, s.jacobian);
+                       s.velocity.y, s.velocity.z, s.jacobian, scene.water_level - ground,
+                       shore ? fmt::format("{:.6g}", s.shore_distance) : std::string("nan"), s.height > ground ? 1 : 0,
+                       s.foam);
         if (buffer.size() > (1u << 20)) {
             sink(buffer);
             buffer.clear();
@@ -78,19 +85,27 @@ int run_query(const QueryArgs& a) {
     std::string buffer;
     buffer.reserve(1u << 21);
     buffer += a.time ? "" : "t,";
-    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian\n";
+    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam\n";
 
     auto backend = make_query_backend(a.backend, a.threads);
     if (!backend) return fail(verb, backend.error().message);
     std::vector<SurfacePoint> results(points->size());
+    std::size_t unconverged = 0;
     for (double t : times) {
         if (auto st = (*backend)(scene->ocean, t, *points, results); !st) return fail(verb, st.error().message);
         for (const SurfacePoint& s : results) {
-            if (!s.converged) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
+            if (s.converged) continue;
+            // Open water always converges; at the waterline the shore can fold the surface.
+            if (!scene->ocean.shore()) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
+            ++unconverged;
         }
-        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *points, results);
+        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *scene, *points, results);
     }
     sink(buffer);
+    if (unconverged > 0) {
+        std::fprintf(stderr, "tidewater query: warning: %zu point(s) at the waterline where the shore folds the surface: "
+                             "best estimates written\n", unconverged);
+    }
     if (file) {
         if (auto st = file->commit(); !st) return fail(verb, st.error().message);
         return 0;
@@ -112,7 +127,9 @@ Verb add_query_verb(CLI::App& app) {
     cmd->add_option("--backend", args->backend, "cpu, or gpu (a Vulkan compute shader; same columns)")
         ->check(CLI::IsMember({"cpu", "gpu"}))
         ->capture_default_str();
-    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian (SI units; height is world y).");
+    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam\n"
+                "(SI units; height is world y; depth = level - terrain at the point; wet = 1 where the surface is\n"
+                "above the terrain; shore_distance > 0 over water, nan if the scene has no shore model; foam 0..1).");
     return {cmd, [args] { return run_query(*args); }};
 }
 

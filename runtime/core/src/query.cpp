@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "kernel/kernel_waves.hpp"
+#include "shore/shore_query.hpp"
+#include "tidewater/shore_waves.hpp"
 
 namespace tidewater {
 
@@ -84,11 +86,18 @@ Status query_surface(const WaterBody& body, double time, std::span<const glm::dv
                      std::span<SurfacePoint> out, const QueryOptions& options) {
     if (auto st = check_sizes(points.size(), out.size()); !st) return st;
     if (points.empty()) return {};
+    if (const auto& shore = body.shore(); shore && !shore->trivial()) {
+        return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
+            detail::solve_points_shore(body, *shore, body.local_time(time), points.data() + begin, end - begin,
+                                       out.data() + begin, nullptr);
+        });
+    }
     const detail::KernelWaves waves =
         detail::prepare_kernel_waves(body.waves(), body.local_time(time), body.level());
     const SolveFn solve = kernel().solve;
     return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
         solve(waves, points.data() + begin, end - begin, out.data() + begin, nullptr);
+        for (std::size_t i = begin; i < end; ++i) out[i].foam = detail::crest_foam(out[i].jacobian);
     });
 }
 
@@ -96,6 +105,12 @@ Status query_heights(const WaterBody& body, double time, std::span<const glm::dv
                      std::span<double> heights, const QueryOptions& options) {
     if (auto st = check_sizes(points.size(), heights.size()); !st) return st;
     if (points.empty()) return {};
+    if (const auto& shore = body.shore(); shore && !shore->trivial()) {
+        return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
+            detail::solve_points_shore(body, *shore, body.local_time(time), points.data() + begin, end - begin, nullptr,
+                                       heights.data() + begin);
+        });
+    }
     const detail::KernelWaves waves =
         detail::prepare_kernel_waves(body.waves(), body.local_time(time), body.level());
     const SolveFn solve = kernel().solve;

@@ -7,6 +7,7 @@
 #include "json_reader.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/shore_waves.hpp"
 
 namespace tidewater {
 
@@ -284,6 +285,24 @@ Result<SceneCamera> read_camera(const ObjectReader& scene) {
     return cam;
 }
 
+Result<std::optional<ShoreWaveOptions>> read_shore(const ObjectReader& scene) {
+    ShoreWaveOptions options;
+    if (!scene.has("shore")) return std::optional<ShoreWaveOptions>(options);
+    auto r = ObjectReader::open(scene.at("shore"), scene.source(), "/shore");
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"enabled", "resolution", "breaking_index"}); !st) return st.error();
+    if (r->has("enabled")) {
+        if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
+        if (!r->at("enabled").get<bool>()) return std::optional<ShoreWaveOptions>();
+    }
+    std::int64_t resolution = options.resolution;
+    if (auto st = r->integer("resolution", resolution, 16, 4096); !st) return st.error();
+    options.resolution = static_cast<int>(resolution);
+    if (auto st = r->number("breaking_index", options.breaking_index); !st) return st.error();
+    if (auto st = check_range(*r, "breaking_index", options.breaking_index, 0.3, 1.2, ""); !st) return st.error();
+    return std::optional<ShoreWaveOptions>(options);
+}
+
 bool looks_like_path(const std::string& name) {
     return name.find('/') != std::string::npos || name.find('\\') != std::string::npos ||
            (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0);
@@ -340,7 +359,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "camera"}); !st)
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "camera", "shore"}); !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
@@ -360,6 +379,18 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     auto body = WaterBody::create(*profile, scene.water_level, r->context("ocean"), &scene.warnings);
     if (!body) return body.error();
     scene.ocean = std::move(body).value();
+    // The waves feel the shore unless the scene turns it off; deep water everywhere needs no model.
+    auto shore_options = read_shore(*r);
+    if (!shore_options) return shore_options.error();
+    if (*shore_options) {
+        auto shore = ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level, **shore_options);
+        if (!shore) {
+            Error e = std::move(shore).error();
+            e.message = fmt::format("{}: {}", r->context("shore"), e.message);
+            return e;
+        }
+        if (!(*shore)->trivial()) scene.ocean = scene.ocean.with_shore(*shore);
+    }
     if (r->has("camera")) {
         auto camera = read_camera(*r);
         if (!camera) return camera.error();

@@ -27,4 +27,10 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     return body;
 }
 
+WaterBody WaterBody::with_shore(std::shared_ptr<const ShoreWaves> shore) const {
+    WaterBody copy = *this;
+    copy.shore_ = std::move(shore);
+    return copy;
+}
+
 }  // namespace tidewater

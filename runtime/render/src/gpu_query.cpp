@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "embedded_shaders.hpp"
+#include "tidewater/shore_waves.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
 #include "vk_util.hpp"
@@ -12,6 +13,10 @@
 namespace tidewater::render {
 
 using detail::GpuBuffer;
+
+namespace {
+constexpr std::uint32_t kBindings = 7;  // see shaders/query.comp
+}  // namespace
 
 struct GpuQuery::Impl {
     DeviceContext ctx;
@@ -22,14 +27,14 @@ struct GpuQuery::Impl {
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkCommandPool commands = VK_NULL_HANDLE;
     GpuBuffer waves, phases, points, results;
+    GpuBuffer shore_waves, shore_shared, cell_origins;
+    const ShoreWaves* uploaded_shore = nullptr;     // the shore model in shore_waves/shore_shared
+    std::shared_ptr<const ShoreWaves> shore_alive;  // keeps it alive while its pointer is compared
 
     ~Impl() {
         if (!ctx.device) return;
         vkDeviceWaitIdle(ctx.device);
-        waves.reset();
-        phases.reset();
-        points.reset();
-        results.reset();
+        for (GpuBuffer* b : {&waves, &phases, &points, &results, &shore_waves, &shore_shared, &cell_origins}) b->reset();
         if (commands) vkDestroyCommandPool(ctx.device, commands, ctx.allocator);
         if (pool) vkDestroyDescriptorPool(ctx.device, pool, ctx.allocator);
         if (pipeline) vkDestroyPipeline(ctx.device, pipeline, ctx.allocator);
@@ -47,10 +52,13 @@ struct GpuQuery::Impl {
     }
 
     void bind_buffers() {
-        VkDescriptorBufferInfo infos[4] = {{waves.handle(), 0, VK_WHOLE_SIZE}, {phases.handle(), 0, VK_WHOLE_SIZE},
-                                           {points.handle(), 0, VK_WHOLE_SIZE}, {results.handle(), 0, VK_WHOLE_SIZE}};
-        VkWriteDescriptorSet writes[4];
-        for (std::uint32_t i = 0; i < 4; ++i) {
+        VkDescriptorBufferInfo infos[kBindings] = {
+            {waves.handle(), 0, VK_WHOLE_SIZE},       {phases.handle(), 0, VK_WHOLE_SIZE},
+            {points.handle(), 0, VK_WHOLE_SIZE},      {results.handle(), 0, VK_WHOLE_SIZE},
+            {shore_waves.handle(), 0, VK_WHOLE_SIZE}, {shore_shared.handle(), 0, VK_WHOLE_SIZE},
+            {cell_origins.handle(), 0, VK_WHOLE_SIZE}};
+        VkWriteDescriptorSet writes[kBindings];
+        for (std::uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
             writes[i].dstSet = set;
             writes[i].dstBinding = i;
@@ -58,7 +66,34 @@ struct GpuQuery::Impl {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
             writes[i].pBufferInfo = &infos[i];
         }
-        vkUpdateDescriptorSets(ctx.device, 4, writes, 0, nullptr);
+        vkUpdateDescriptorSets(ctx.device, kBindings, writes, 0, nullptr);
+    }
+
+    /// Uploads the body's shore fields when they change (or 1-element placeholders).
+    Result<bool> upload_shore(const std::shared_ptr<const ShoreWaves>& shore) {
+        const ShoreWaves* wanted = shore && !shore->trivial() ? shore.get() : nullptr;
+        if (shore_waves.handle() && wanted == uploaded_shore) return false;
+        std::vector<glm::vec4> per_wave(1), shared(1);
+        if (wanted) {
+            const std::size_t texels = static_cast<std::size_t>(wanted->resolution()) * static_cast<std::size_t>(wanted->resolution());
+            per_wave.assign(std::max<std::size_t>(1, texels * wanted->wave_count()), glm::vec4(0.0f));
+            for (std::size_t w = 0; w < wanted->wave_count(); ++w)
+                for (std::size_t k = 0; k < texels; ++k)
+                    per_wave[w * texels + k] = {wanted->phase_residual(w)[k], wanted->amplitude_factor(w)[k],
+                                                wanted->wavevector_x(w)[k], wanted->wavevector_z(w)[k]};
+            shared.resize(texels);
+            for (std::size_t k = 0; k < texels; ++k)
+                shared[k] = {wanted->depth()[k], wanted->breaking()[k], wanted->steepness_scale()[k], wanted->shore_distance()[k]};
+        }
+        for (auto [buffer, data] : {std::pair{&shore_waves, &per_wave}, std::pair{&shore_shared, &shared}}) {
+            auto fresh = GpuBuffer::create(ctx, data->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            if (!fresh) return fresh.error();
+            std::memcpy(fresh->mapped(), data->data(), data->size() * sizeof(glm::vec4));
+            *buffer = std::move(fresh).value();
+        }
+        uploaded_shore = wanted;
+        shore_alive = wanted ? shore : nullptr;
+        return true;
     }
 };
 
@@ -73,12 +108,12 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     impl->ctx = context;
     const DeviceContext& ctx = impl->ctx;
 
-    VkDescriptorSetLayoutBinding bindings[4];
-    for (std::uint32_t i = 0; i < 4; ++i) {
+    VkDescriptorSetLayoutBinding bindings[kBindings];
+    for (std::uint32_t i = 0; i < kBindings; ++i) {
         bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     }
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 4;
+    set_info.bindingCount = kBindings;
     set_info.pBindings = bindings;
     TW_VK_TRY(vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, &impl->set_layout));
 
@@ -106,7 +141,7 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     vkDestroyShaderModule(ctx.device, module, ctx.allocator);
     if (made != VK_SUCCESS) return detail::vk_error(made, "vkCreateComputePipelines(query.comp)");
 
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4};
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 1;
@@ -148,7 +183,20 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
         if (!grown) return grown.error();
         rebind = rebind || *grown;
     }
+    auto uploaded = m.upload_shore(body.shore());
+    if (!uploaded) return uploaded.error();
+    rebind = rebind || *uploaded;
+    const ShoreWaves* shore = m.uploaded_shore;
+    std::vector<glm::vec2> origins(std::max<std::size_t>(1, cells.origins.size()), glm::vec2(0.0f));
+    for (std::size_t c = 0; c < cells.origins.size(); ++c) {
+        const glm::dvec2 rel = cells.origins[c] - (shore ? shore->corner() : glm::dvec2(0.0));
+        origins[c] = glm::vec2(static_cast<float>(rel.x), static_cast<float>(rel.y));
+    }
+    auto grown_origins = m.ensure(m.cell_origins, sizeof(glm::vec2) * origins.size());
+    if (!grown_origins) return grown_origins.error();
+    rebind = rebind || *grown_origins;
     if (rebind) m.bind_buffers();
+    std::memcpy(m.cell_origins.mapped(), origins.data(), sizeof(glm::vec2) * origins.size());
     std::memcpy(m.waves.mapped(), waves.data(), sizeof(gpu::GpuWave) * waves.size());
     std::memcpy(m.phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
     std::memcpy(m.points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * points.size());
@@ -160,6 +208,8 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
     params.point_count = static_cast<std::uint32_t>(points.size());
     params.tolerance = static_cast<float>(std::max(1e-5, 4e-6 * max_offset));
     params.max_offset = static_cast<float>(max_offset * 1.001 + 1e-6);
+    params.shore_resolution = shore ? static_cast<std::uint32_t>(shore->resolution()) : 0u;
+    params.shore_texel = shore ? static_cast<float>(shore->texel()) : 1.0f;
 
     Status st = detail::submit_and_wait(m.ctx, m.commands, [&](VkCommandBuffer cmd) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline);
@@ -185,6 +235,12 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
         o.displacement = {r.disp_iter.x, r.disp_iter.y};
         o.iterations = static_cast<int>(r.disp_iter.z);
         o.converged = r.disp_iter.w != 0.0f;
+        if (shore) {
+            o.depth = static_cast<double>(r.shore.x);
+            o.shore_distance = static_cast<double>(r.shore.y);
+        }
+        const double t = std::clamp((0.75 - o.jacobian) / 0.4, 0.0, 1.0);
+        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, t * t * (3.0 - 2.0 * t));
     }
     return {};
 }

@@ -26,6 +26,7 @@ PhaseCells build_phase_cells(const WaveSet& set, double local_time, std::span<co
         out.points.push_back({glm::vec2(static_cast<float>(p.x - origin.x), static_cast<float>(p.y - origin.y)), it->second, 0u});
     }
     out.cell_count = origins.size();
+    out.origins = origins;
     out.base_phase.resize(origins.size() * waves.size());
     for (std::size_t c = 0; c < origins.size(); ++c) {
         for (std::size_t i = 0; i < waves.size(); ++i) {

@@ -18,6 +18,7 @@ inline constexpr double kPhaseCellSize = 64.0;  // m
 struct PhaseCells {
     std::vector<gpu::GpuQueryPoint> points;
     std::vector<float> base_phase;  // [cell * wave_count + wave]
+    std::vector<glm::dvec2> origins;  // world xz of each cell's origin, m
     std::size_t cell_count = 0;
 };
 

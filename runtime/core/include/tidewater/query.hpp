@@ -28,6 +28,9 @@ struct SurfacePoint {
     glm::dvec2 displacement{0.0};    ///< Horizontal offset of this particle from its rest position, m.
     glm::dvec3 velocity{0.0};        ///< Water particle velocity, m/s.
     double jacobian = 1.0;           ///< Horizontal-map determinant; -> 0 where crests fold (foam).
+    double depth = 0.0;              ///< Water column under the rest position (level - terrain), m; 0 without a shore model.
+    double shore_distance = 0.0;     ///< Signed distance to the shoreline, m (+ over water); 0 without a shore model.
+    double foam = 0.0;               ///< 0..1: breaking (shore model) or crests folding (Jacobian < 0.75).
     int iterations = 0;              ///< Newton evaluations used.
     bool converged = true;
 };

@@ -9,8 +9,8 @@
 //   beach this is Snell's law (the along-shore wavenumber is conserved);
 // - the amplitude is A0 * Ks * Kr: shoaling Ks = sqrt(cg0 / cg(h)) (energy flux),
 //   refraction Kr = sqrt(cos(theta0) / cos(theta)) against the shore normal;
-// - breaking: where the summed amplitude exceeds 0.39 h (height 0.78 h) every
-//   amplitude is scaled down to it and `breaking` (foam) rises; 0 on dry land;
+// - breaking: where the local height 2 sqrt(sum A^2) exceeds 0.78 h (the breaking
+//   index) every amplitude is scaled down to it and `breaking` (foam) rises; 0 on land;
 // - steepness: Q is scaled so that sum(Q k A) stays <= 0.95 (no folding).
 // Local fields vary slowly against a wavelength, so derivatives use the local
 // wavevector and treat amplitude and direction as constant over a wave.
@@ -45,6 +45,7 @@ struct LocalWave {
 
 struct LocalShore {
     double depth = 0.0;            ///< Water level - terrain, m (< 0 on land).
+    double shore_distance = 0.0;   ///< Signed distance to the shoreline, m (+ over water).
     double breaking = 0.0;         ///< 0..1 foam from breaking.
     double steepness_scale = 1.0;  ///< Multiplies every Q here.
 };
@@ -61,13 +62,25 @@ public:
     double texel() const { return texel_; }
     glm::dvec2 corner() const { return corner_; }
     std::size_t wave_count() const { return residual_.size(); }
+    /// True when every texel is deep water: the waves are unchanged and queries may skip the shore.
+    bool trivial() const { return trivial_; }
+    /// Raw fields (row-major, rows along +z) for upload to the GPU.
+    const std::vector<float>& phase_residual(std::size_t wave) const { return residual_[wave]; }
+    const std::vector<float>& amplitude_factor(std::size_t wave) const { return amplitude_[wave]; }
+    const std::vector<float>& wavevector_x(std::size_t wave) const { return kx_[wave]; }
+    const std::vector<float>& wavevector_z(std::size_t wave) const { return kz_[wave]; }
+    const std::vector<float>& depth() const { return depth_; }
+    const std::vector<float>& breaking() const { return breaking_; }
+    const std::vector<float>& steepness_scale() const { return steepness_; }
+    const std::vector<float>& shore_distance() const { return distance_; }
 
 private:
     int n_ = 0;
     double texel_ = 1.0;
     glm::dvec2 corner_{0.0};
     std::vector<std::vector<float>> residual_, amplitude_, kx_, kz_;  // [wave][texel]
-    std::vector<float> depth_, breaking_, steepness_;
+    std::vector<float> depth_, breaking_, steepness_, distance_;
+    bool trivial_ = false;
 };
 
 /// evaluate_lagrangian with the shore's local wavevectors and amplitudes.

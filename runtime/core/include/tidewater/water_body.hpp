@@ -5,6 +5,7 @@
 // Threading: WaterBody is immutable and safe to share between threads.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "tidewater/waves.hpp"
 
 namespace tidewater {
+
+class ShoreWaves;
 
 struct WaterProfile {
     std::string name;
@@ -43,11 +46,17 @@ public:
     /// The time the waves see for a given clock time.
     double local_time(double clock_time) const { return clock_time + profile_.time_offset; }
 
+    /// The shore model the waves feel (null: open water everywhere).
+    const std::shared_ptr<const ShoreWaves>& shore() const { return shore_; }
+    /// A copy of this body whose waves feel `shore` (baked for this body's waves).
+    WaterBody with_shore(std::shared_ptr<const ShoreWaves> shore) const;
+
 private:
     WaterProfile profile_;
     WaveSet waves_;
     RippleField ripples_;
     double level_ = 0.0;
+    std::shared_ptr<const ShoreWaves> shore_;
 };
 
 }  // namespace tidewater

@@ -54,6 +54,7 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
     out->corner_ = field->corner;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     out->depth_ = field->depth;
+    out->distance_ = field->signed_distance;
     const auto waves = set.waves();
     const std::size_t nw = waves.size();
     out->residual_.assign(nw, std::vector<float>(count, 0.0f));
@@ -141,8 +142,14 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
     const double cap_ratio = 0.5 * options.breaking_index;  // amplitude cap = index * h / 2
     for (std::size_t k = 0; k < count; ++k) {
         const double h = static_cast<double>(out->depth_[k]);
-        double total = 0.0;
-        for (std::size_t w = 0; w < nw; ++w) total += waves[w].amplitude * static_cast<double>(out->amplitude_[w][k]);
+        // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
+        // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
+        double energy = 0.0;
+        for (std::size_t w = 0; w < nw; ++w) {
+            const double a = waves[w].amplitude * static_cast<double>(out->amplitude_[w][k]);
+            energy += a * a;
+        }
+        const double total = std::sqrt(energy);
         if (h <= 0.0) {
             for (std::size_t w = 0; w < nw; ++w) out->amplitude_[w][k] = 0.0f;
             continue;
@@ -159,6 +166,14 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
         }
         if (fold > kMaxFold) out->steepness_[k] = static_cast<float>(kMaxFold / fold);
     }
+    // Deep everywhere and no shore: the waves are exactly the open-ocean ones.
+    bool trivial = field->segment_count == 0;
+    for (std::size_t k = 0; k < count && trivial; ++k) {
+        trivial = out->depth_[k] > 0.0f && out->steepness_[k] == 1.0f && out->breaking_[k] == 0.0f;
+        for (std::size_t w = 0; w < nw && trivial; ++w)
+            trivial = out->residual_[w][k] == 0.0f && std::abs(out->amplitude_[w][k] - 1.0f) < 1e-3f;
+    }
+    out->trivial_ = trivial;
     return std::shared_ptr<const ShoreWaves>(std::move(out));
 }
 
@@ -176,6 +191,7 @@ LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
     };
     LocalShore s;
     s.depth = lerp(depth_);
+    s.shore_distance = lerp(distance_);
     s.breaking = lerp(breaking_);
     s.steepness_scale = lerp(steepness_);
     for (std::size_t w = 0; w < waves.size() && w < residual_.size(); ++w) {
