@@ -8,6 +8,8 @@ layout(std430, set = 0, binding = 1) readonly buffer Waves { GpuWave waves[]; };
 layout(set = 0, binding = 2) uniform sampler2D terrain_height;  // R32F, metres
 layout(set = 0, binding = 3) uniform sampler2D scene_color;
 layout(set = 0, binding = 4) uniform sampler2D scene_depth;
+layout(std430, set = 0, binding = 5) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
+layout(std430, set = 0, binding = 6) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
 
 float terrain_height_at(vec2 xz) {
     vec2 uv = (xz - frame.terrain_rect.xy) / frame.terrain_rect.zw;

@@ -52,6 +52,8 @@ TW_CONST uint kViewJacobian = 3u;
 TW_CONST uint kViewDepth = 4u;
 TW_CONST uint kViewLod = 5u;
 TW_CONST uint kViewWireframe = 6u;
+TW_CONST uint kViewShore = 7u;
+TW_CONST uint kViewBreaking = 8u;
 
 // Per-frame constants. Positions are relative to the render origin O (the
 // camera snapped to the phase-cell grid, in double on the host), so float
@@ -68,6 +70,7 @@ struct GpuFrame {
     vec4 ripple_drift;       // xy: drift (lattice units, reduced mod 256); z: has scene copy (0/1); w: max |eta| (m)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
     vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: O mod 256 ripple wavelengths
+    vec4 shore_rect;         // xy: shore grid corner relative to O (m); z: texel (m); w: resolution (0 = no shore)
 };
 
 struct GpuQueryParams {
@@ -93,7 +96,7 @@ static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuQueryResult) == 64);
 static_assert(sizeof(GpuQueryParams) == 32);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 9 * 16);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 10 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

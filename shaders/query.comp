@@ -21,32 +21,9 @@ layout(push_constant) uniform Push { GpuQueryParams params; };
 
 const int kMaxNewtonIterations = 48;
 
-// Bilinear weights and corner texels at a position relative to the shore grid's corner,
-// clamped at the edges: the CPU's ShoreWaves::sample.
-struct ShoreTap {
-    uint k00, k10, k01, k11;
-    vec4 w;
-};
-ShoreTap shore_tap(vec2 rel) {
-    int n = int(params.shore_resolution);
-    vec2 uv = clamp(rel / params.shore_texel - 0.5, vec2(0.0), vec2(float(n - 1)));
-    ivec2 ij = min(ivec2(uv), ivec2(n - 2));
-    vec2 f = uv - vec2(ij);
-    ShoreTap t;
-    t.k00 = uint(ij.y * n + ij.x);
-    t.k10 = t.k00 + 1u;
-    t.k01 = t.k00 + uint(n);
-    t.k11 = t.k01 + 1u;
-    t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-    return t;
-}
-vec4 tap_waves(ShoreTap t, uint base) {
-    return t.w.x * shore_waves[base + t.k00] + t.w.y * shore_waves[base + t.k10] + t.w.z * shore_waves[base + t.k01] +
-           t.w.w * shore_waves[base + t.k11];
-}
-vec4 tap_shared(ShoreTap t) {
-    return t.w.x * shore_shared[t.k00] + t.w.y * shore_shared[t.k10] + t.w.z * shore_shared[t.k01] + t.w.w * shore_shared[t.k11];
-}
+#define SHORE_RESOLUTION params.shore_resolution
+#define SHORE_TEXEL params.shore_texel
+#include "shore_fields.glsl"
 
 void main() {
     uint id = gl_GlobalInvocationID.x;
@@ -77,16 +54,8 @@ void main() {
             // Same association as the CPU kernel: base + kz*ez + kx*ex (fma order).
             float theta = fma(w.dir_k_amp.x * w.dir_k_amp.z, p.local.x + e.x,
                               fma(w.dir_k_amp.y * w.dir_k_amp.z, p.local.y + e.y, base_phase[row + i]));
-            if (shore) {
-                // The wave as the shore shapes it here: phase residual, amplitude, local wavevector.
-                vec4 local = tap_waves(tap, i * texels);
-                float kl = length(local.zw);
-                float a = shared_fields.x > 0.0 ? w.dir_k_amp.w * local.y : 0.0;
-                if (a <= 0.0 || kl <= 0.0) continue;
-                theta += local.x;
-                w.dir_k_amp = vec4(local.zw / kl, kl, a);
-                w.steep_omega.x *= shared_fields.z;
-            }
+            // The wave as the shore shapes it here: phase residual, amplitude, local wavevector.
+            if (shore && !shore_local_wave(tap, shared_fields, i, texels, w, theta)) continue;
             gerstner_accumulate(s, w, theta);
         }
         iterations += 1.0;

@@ -12,6 +12,7 @@ layout(location = 2) in vec2 rest_xz;
 layout(location = 3) in float jacobian;
 layout(location = 4) in float eta;
 layout(location = 5) in float spacing;
+layout(location = 6) in vec2 shore_info;
 layout(location = 0) out vec4 out_color;
 
 const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
@@ -105,8 +106,16 @@ void main() {
     float sss = pow(max(dot(v, -normalize(frame.sun.xyz + n * 0.5)), 0.0), 4.0) * crest;
     color += sss * vec3(0.06, 0.45, 0.38) * frame.sun.w;
 
-    // Foam where the surface compresses toward folding (Jacobian -> 0).
-    float foam = smoothstep(0.75, 0.35, jacobian);
+    // Foam where the surface compresses toward folding (Jacobian -> 0), where waves break,
+    // and in bands along the coast that run up the beach with the swash.
+    // Breaking foam rides the crests (and lingers thinly in the troughs).
+    float crest_band = smoothstep(-0.3, 0.5, eta / max(frame.ripple_drift.w * 0.25, 1e-3));
+    float foam = max(smoothstep(0.75, 0.35, jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
+    if (frame.shore_rect.w > 0.0) {
+        float d = shore_info.x;
+        float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);
+        foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
+    }
     if (foam > 0.0) {
         float grain = 0.55 + 0.45 * gradient_noise((rest_xz + frame.origin_mod.xy) * 0.75, 31u).x;
         color = mix(color, vec3(0.92, 0.95, 0.96), clamp(foam * grain * 1.4, 0.0, 1.0));
@@ -119,5 +128,7 @@ void main() {
     if (view == kViewDepth) color = heat_color(column_depth / 40.0);
     if (view == kViewLod) color = heat_color(log2(max(distance, 1.0) / frame.params.z * 4.0) / 8.0);
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
+    if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
+    if (view == kViewBreaking) color = heat_color(shore_info.y);
     out_color = vec4(color, 1.0);
 }

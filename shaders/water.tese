@@ -6,6 +6,9 @@
 #include "frame.glsl"
 #include "gerstner.glsl"
 #include "water_lod.glsl"
+#define SHORE_RESOLUTION uint(frame.shore_rect.w)
+#define SHORE_TEXEL frame.shore_rect.z
+#include "shore_fields.glsl"
 layout(quads, fractional_odd_spacing, ccw) in;
 layout(location = 0) in vec2 control_xz[];
 layout(location = 0) out vec3 world_pos;
@@ -14,6 +17,7 @@ layout(location = 2) out vec2 rest_xz;
 layout(location = 3) out float jacobian;
 layout(location = 4) out float eta;
 layout(location = 5) out float spacing;
+layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: breaking 0..1
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
@@ -21,12 +25,23 @@ void main() {
     spacing = vertex_spacing(camera_distance(rest_xz));
     GerstnerSums s = gerstner_zero();
     uint count = uint(frame.params.y);
+    bool shore = frame.shore_rect.w > 0.0;
+    uint texels = uint(frame.shore_rect.w) * uint(frame.shore_rect.w);
+    ShoreTap tap;
+    vec4 shared_fields = vec4(1e9, 0.0, 1.0, 1e9);
+    if (shore) {
+        tap = shore_tap(rest_xz - frame.shore_rect.xy);
+        shared_fields = tap_shared(tap);
+    }
+    shore_info = vec2(shared_fields.w, shared_fields.y);
     for (uint i = 0u; i < count; ++i) {
         GpuWave w = waves[i];
-        float fade = wave_lod_fade(w.steep_omega.w, spacing);
+        float theta = w.dir_k_amp.z * dot(w.dir_k_amp.xy, rest_xz) + w.steep_omega.z;
+        if (shore && !shore_local_wave(tap, shared_fields, i, texels, w, theta)) continue;
+        // Fade by the local wavelength: waves shortened by the shore fade sooner.
+        float fade = wave_lod_fade(6.2831853 / w.dir_k_amp.z, spacing);
         if (fade <= 0.0) continue;
         w.dir_k_amp.w *= fade;
-        float theta = w.dir_k_amp.z * dot(w.dir_k_amp.xy, rest_xz) + w.steep_omega.z;
         gerstner_accumulate(s, w, theta);
     }
     eta = s.eta;

@@ -158,7 +158,7 @@ case "$CASE" in
     "$TW" render --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
     check "exit 0" test $? -eq 0
     check "three frames" test "$(ls seq/frame_*.png | wc -l)" -eq 3
-    for view in shaded height normals jacobian depth lod wireframe; do
+    for view in shaded height normals jacobian depth lod wireframe shore breaking; do
       check "view $view renders" "$TW" render --size 32x32 --view "$view" --out "v_$view.png"
     done
     ;;

@@ -11,6 +11,7 @@
 #include "tidewater/image_io.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/render/standalone.hpp"
+#include "tidewater/shore_waves.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace tidewater {
@@ -112,6 +113,52 @@ TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
         ++water_points;
     }
     EXPECT_GT(water_points, 3);
+}
+
+// Waves break along the coast and not offshore: in the breaking view, water 10 to 30 m off
+// the coast (found from the shore model along rays from the centre) shows breaking and
+// water 1.1 km out shows none.
+TEST_F(RenderTest, WavesBreakAlongTheCoastOnly) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    ASSERT_NE(scene->ocean.shore(), nullptr);
+    render::FrameInfo frame;
+    frame.camera.position = scene->camera->position;
+    frame.camera.target = scene->camera->target;
+    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+    frame.time = 3.0;
+    frame.view = render::DebugView::breaking;
+    const auto img = render(*scene, frame, 480, 270);
+    std::vector<LocalWave> lw(scene->ocean.waves().size());
+    int near_coast = 0, breaking_near = 0, offshore = 0, breaking_offshore = 0;
+    for (int a = 0; a < 90; ++a) {
+        const glm::dvec2 dir{std::cos(a * kPi / 45.0), std::sin(a * kPi / 45.0)};
+        for (double r = 300.0; r < 1100.0; r += 2.0) {
+            const LocalShore ls = scene->ocean.shore()->sample(dir * r, lw);
+            if (ls.shore_distance < 10.0 || ls.shore_distance > 30.0) continue;
+            const glm::dvec3 w{dir.x * r, 0.0, dir.y * r};
+            bool visible = true;  // the island's hills hide part of the far coast
+            for (int k = 1; k < 200 && visible; ++k) {
+                const glm::dvec3 on_ray = frame.camera.position + (w - frame.camera.position) * (k / 200.0);
+                visible = scene->terrain.height_at({on_ray.x, on_ray.z}) < on_ray.y - 1.0;
+            }
+            const auto q = test::project(frame.camera, 480, 270, w);
+            if (q && visible && ls.breaking > 0.5) {
+                ++near_coast;
+                breaking_near += test::pixel(img, q->x, q->y).r > 0.5;  // heat colour: red where breaking
+            }
+            break;
+        }
+        const auto far = test::project(frame.camera, 480, 270, {dir.x * 1100.0, 0.0, dir.y * 1100.0});
+        if (far && far->y > 20) {
+            ++offshore;
+            breaking_offshore += test::pixel(img, far->x, far->y).r > 0.5;
+        }
+    }
+    ASSERT_GT(near_coast, 10);
+    ASSERT_GT(offshore, 5);
+    EXPECT_GT(breaking_near, near_coast * 8 / 10) << "breaking along the coast";
+    EXPECT_EQ(breaking_offshore, 0) << "no breaking 1.1 km out";
 }
 
 // Looking up at the sky, nothing but sky is drawn.

@@ -10,6 +10,7 @@
 #include "gpu_memory.hpp"
 #include "render_pipelines.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/shore_waves.hpp"
 #include "terrain_mesh.hpp"
 #include "vk_util.hpp"
 
@@ -21,9 +22,12 @@ using detail::transition;
 
 namespace {
 
-constexpr std::array<DebugView, 7> kViews = {DebugView::shaded, DebugView::height, DebugView::normals, DebugView::jacobian,
-                                             DebugView::depth, DebugView::lod, DebugView::wireframe};
-constexpr std::array<std::string_view, 7> kViewNames = {"shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe"};
+constexpr std::array<DebugView, 9> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
+                                             DebugView::jacobian, DebugView::depth, DebugView::lod,
+                                             DebugView::wireframe, DebugView::shore, DebugView::breaking};
+constexpr std::array<std::string_view, 9> kViewNames = {"shaded", "height", "normals", "jacobian", "depth",
+                                                        "lod", "wireframe", "shore", "breaking"};
+constexpr std::uint32_t kBindings = 7;  // see shaders/frame.glsl
 constexpr std::uint32_t kTerrainCells = 384;
 constexpr std::uint32_t kHeightTextureSize = 1024;
 constexpr std::uint32_t kTimestampsPerFrame = 4;
@@ -73,6 +77,9 @@ struct Renderer::Impl {
     GpuImage height_texture;
     GpuImage dummy_color, dummy_depth;  // bound where no scene copy exists
     GpuImage copy_color, copy_depth;    // the opaque scene, for refraction and reflection
+    GpuBuffer shore_waves, shore_shared;  // the shore fields (placeholders without a shore)
+    const ShoreWaves* uploaded_shore = nullptr;
+    std::shared_ptr<const ShoreWaves> shore_alive;
     VkExtent2D copy_extent{};
     std::uint64_t last_patches = 0;
 
@@ -86,6 +93,8 @@ struct Renderer::Impl {
         }
         terrain_vertices.reset();
         terrain_indices.reset();
+        shore_waves.reset();
+        shore_shared.reset();
         height_texture.reset();
         dummy_color.reset();
         dummy_depth.reset();
@@ -106,6 +115,7 @@ struct Renderer::Impl {
     void log(const std::string& message) const {
         if (info.log) info.log(message);
     }
+    Status upload_shore(const std::shared_ptr<const ShoreWaves>& shore);
     Status create_layouts();
     Status create_pipelines();
     Status create_slots();
@@ -120,14 +130,16 @@ struct Renderer::Impl {
 
 Status Renderer::Impl::create_layouts() {
     const VkShaderStageFlags stages = VK_SHADER_STAGE_ALL_GRAPHICS;
-    const VkDescriptorSetLayoutBinding bindings[5] = {
+    const VkDescriptorSetLayoutBinding bindings[kBindings] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
-        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr}};
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 5;
+    set_info.bindingCount = kBindings;
     set_info.pBindings = bindings;
     TW_VK_TRY(vkCreateDescriptorSetLayout(ctx().device, &set_info, ctx().allocator, &set_layout));
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 16};
@@ -178,7 +190,7 @@ Status Renderer::Impl::create_pipelines() {
 
 Status Renderer::Impl::create_slots() {
     VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, info.frames_in_flight},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, info.frames_in_flight},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * info.frames_in_flight},
                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * info.frames_in_flight}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = info.frames_in_flight;
@@ -293,8 +305,10 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     VkDescriptorImageInfo height{linear, height_texture.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo color{linear, (with_scene_copy ? copy_color : dummy_color).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo depth{nearest, (with_scene_copy ? copy_depth : dummy_depth).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet w[5];
-    for (std::uint32_t i = 0; i < 5; ++i) {
+    VkDescriptorBufferInfo shore_wave_info{shore_waves.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo shore_shared_info{shore_shared.handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet w[kBindings];
+    for (std::uint32_t i = 0; i < kBindings; ++i) {
         w[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w[i].dstSet = slot.set;
         w[i].dstBinding = i;
@@ -308,7 +322,10 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     w[2].pImageInfo = &height;
     w[3].pImageInfo = &color;
     w[4].pImageInfo = &depth;
-    vkUpdateDescriptorSets(ctx().device, 5, w, 0, nullptr);
+    w[5].descriptorType = w[6].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    w[5].pBufferInfo = &shore_wave_info;
+    w[6].pBufferInfo = &shore_shared_info;
+    vkUpdateDescriptorSets(ctx().device, kBindings, w, 0, nullptr);
 }
 
 Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
@@ -324,6 +341,11 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     slot = &slots[frame.frame_index % slots.size()];
     slot->recorded_frame = frame.frame_index;
     plan = detail::plan_frame(frame, extent, ocean, water_level, placement, water_half_size, scene_copy);
+    if (uploaded_shore) {
+        const glm::dvec2 rel = uploaded_shore->corner() - plan.origin;
+        plan.frame.shore_rect = glm::vec4(static_cast<float>(rel.x), static_cast<float>(rel.y),
+                                          static_cast<float>(uploaded_shore->texel()), static_cast<float>(uploaded_shore->resolution()));
+    }
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!plan.waves.empty()) std::memcpy(slot->waves.mapped(), plan.waves.data(), sizeof(gpu::GpuWave) * plan.waves.size());
     write_descriptors(*slot, scene_copy);
@@ -354,6 +376,33 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
     const std::uint32_t patches = plan.patches_per_side * plan.patches_per_side;
     vkCmdDraw(cmd, 4, patches, 0, 0);
     last_patches = patches;
+}
+
+Status Renderer::Impl::upload_shore(const std::shared_ptr<const ShoreWaves>& shore) {
+    const ShoreWaves* wanted = shore && !shore->trivial() ? shore.get() : nullptr;
+    if (shore_waves.handle() && wanted == uploaded_shore) return {};
+    vkDeviceWaitIdle(ctx().device);  // frames in flight may read the old fields
+    std::vector<glm::vec4> per_wave(1, glm::vec4(0.0f)), shared(1, glm::vec4(0.0f));
+    if (wanted) {
+        const std::size_t texels = static_cast<std::size_t>(wanted->resolution()) * static_cast<std::size_t>(wanted->resolution());
+        per_wave.assign(std::max<std::size_t>(1, texels * wanted->wave_count()), glm::vec4(0.0f));
+        for (std::size_t wv = 0; wv < wanted->wave_count(); ++wv)
+            for (std::size_t k = 0; k < texels; ++k)
+                per_wave[wv * texels + k] = {wanted->phase_residual(wv)[k], wanted->amplitude_factor(wv)[k],
+                                             wanted->wavevector_x(wv)[k], wanted->wavevector_z(wv)[k]};
+        shared.resize(texels);
+        for (std::size_t k = 0; k < texels; ++k)
+            shared[k] = {wanted->depth()[k], wanted->breaking()[k], wanted->steepness_scale()[k], wanted->shore_distance()[k]};
+    }
+    for (auto [buffer, data] : {std::pair{&shore_waves, &per_wave}, std::pair{&shore_shared, &shared}}) {
+        auto fresh = GpuBuffer::create(ctx(), data->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!fresh) return fresh.error();
+        std::memcpy(fresh->mapped(), data->data(), data->size() * sizeof(glm::vec4));
+        *buffer = std::move(fresh).value();
+    }
+    uploaded_shore = wanted;
+    shore_alive = wanted ? shore : nullptr;
+    return {};
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -422,6 +471,7 @@ Status Renderer::set_scene(const Scene& scene) {
     m.water_half_size = std::max(3000.0, half);
     m.water_level = scene.water_level;
     m.ocean = scene.ocean;
+    if (auto st = m.upload_shore(scene.ocean.shore()); !st) return st;
     m.has_scene = true;
     m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves", scene.name, m.terrain_vertex_count,
                       scene.ocean.waves().size()));
@@ -433,7 +483,8 @@ Status Renderer::resize(VkExtent2D extent) { return impl_->ensure_copy_targets(e
 Status Renderer::set_water(const WaterBody& water) {
     if (!impl_->has_scene) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
-    // Wave data is written per frame into the in-flight slot; nothing on the GPU to wait for.
+    // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
+    if (auto st = impl_->upload_shore(water.shore()); !st) return st;
     impl_->ocean = water;
     return {};
 }

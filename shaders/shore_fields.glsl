@@ -1,0 +1,50 @@
+// Sampling the shore fields (tidewater::ShoreWaves) exactly as the CPU does:
+// bilinear between texel centres, clamped at the edges. The including shader
+// declares the buffers `shore_waves` ([wave * texels + texel]: residual phase,
+// amplitude factor, wavevector x, z) and `shore_shared` ([texel]: depth,
+// breaking, steepness scale, shore distance), and defines SHORE_RESOLUTION and
+// SHORE_TEXEL.
+#ifndef TIDEWATER_SHORE_FIELDS_GLSL
+#define TIDEWATER_SHORE_FIELDS_GLSL
+
+struct ShoreTap {
+    uint k00, k10, k01, k11;
+    vec4 w;
+};
+
+// `rel` is the position relative to the shore grid's outer corner, m.
+ShoreTap shore_tap(vec2 rel) {
+    int n = int(SHORE_RESOLUTION);
+    vec2 uv = clamp(rel / SHORE_TEXEL - 0.5, vec2(0.0), vec2(float(n - 1)));
+    ivec2 ij = min(ivec2(uv), ivec2(n - 2));
+    vec2 f = uv - vec2(ij);
+    ShoreTap t;
+    t.k00 = uint(ij.y * n + ij.x);
+    t.k10 = t.k00 + 1u;
+    t.k01 = t.k00 + uint(n);
+    t.k11 = t.k01 + 1u;
+    t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    return t;
+}
+vec4 tap_waves(ShoreTap t, uint base) {
+    return t.w.x * shore_waves[base + t.k00] + t.w.y * shore_waves[base + t.k10] + t.w.z * shore_waves[base + t.k01] +
+           t.w.w * shore_waves[base + t.k11];
+}
+vec4 tap_shared(ShoreTap t) {
+    return t.w.x * shore_shared[t.k00] + t.w.y * shore_shared[t.k10] + t.w.z * shore_shared[t.k01] + t.w.w * shore_shared[t.k11];
+}
+
+// The wave as the shore shapes it at this tap: returns false where it has no amplitude.
+// `w` gets the local direction, wavenumber, amplitude and steepness; `theta` the residual phase.
+bool shore_local_wave(ShoreTap tap, vec4 shared_fields, uint wave_index, uint texels, inout GpuWave w, inout float theta) {
+    vec4 local = tap_waves(tap, wave_index * texels);
+    float kl = length(local.zw);
+    float a = shared_fields.x > 0.0 ? w.dir_k_amp.w * local.y : 0.0;
+    if (a <= 0.0 || kl <= 0.0) return false;
+    theta += local.x;
+    w.dir_k_amp = vec4(local.zw / kl, kl, a);
+    w.steep_omega.x *= shared_fields.z;
+    return true;
+}
+
+#endif
