@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "atomic_file.hpp"
+#include "bake_bench.hpp"
 #include "query_bench.hpp"
 #include "verbs.hpp"
 
@@ -12,6 +13,7 @@ namespace {
 
 struct BenchArgs {
     BenchConfig config;
+    bool bake = false;
     std::string out;
     std::string markdown;
     bool quiet = false;
@@ -29,12 +31,23 @@ int run_bench(const BenchArgs& a) {
         md_file = std::make_unique<AtomicFile>(a.markdown);
         if (!md_file->status()) return fail(verb, md_file->status().error().message);
     }
-    auto report = run_query_bench(a.config, [&](const std::string& line) {
+    const auto progress = [&](const std::string& line) {
         if (!a.quiet) std::fprintf(stderr, "bench: %s\n", line.c_str());
-    });
-    if (!report) return fail(verb, report.error().message);
-    const std::string json = to_json(*report).dump(2) + "\n";
-    const std::string table = to_markdown(*report);
+    };
+    std::string json, table;
+    if (a.bake) {
+        BakeBenchConfig bake_config;
+        bake_config.threads = a.config.threads;
+        auto report = run_bake_bench(bake_config, progress);
+        if (!report) return fail(verb, report.error().message);
+        json = report->dump(2) + "\n";
+        table = bake_bench_markdown(*report);
+    } else {
+        auto report = run_query_bench(a.config, progress);
+        if (!report) return fail(verb, report.error().message);
+        json = to_json(*report).dump(2) + "\n";
+        table = to_markdown(*report);
+    }
     std::fputs(table.c_str(), stdout);
     if (!json_file) std::fputs(json.c_str(), stdout);
     for (auto& [file, text] : {std::pair{json_file.get(), &json}, std::pair{md_file.get(), &table}}) {
@@ -60,6 +73,7 @@ Verb add_bench_verb(CLI::App& app) {
     cmd->add_option("--seed", args->config.seed, "Seed for waves and points")->capture_default_str();
     cmd->add_option("--threads", args->config.threads, "Thread count of the 'all threads' runs (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines on standard error");
+    cmd->add_flag("--bake", args->bake, "Benchmark the shore bake instead of the queries");
     return {cmd, [args] {
                 for (int w : args->config.wave_counts) {
                     if (w < 1 || w > 64) return fail("bench", "--waves: each count must be in 1..64");
