@@ -186,6 +186,7 @@ case "$CASE" in
     done
     check "sidecar names extent, fields and units" bash -c "grep -q '\"texel_m\"' baked/shore.json && grep -q '\"decode\"' baked/shore.json && grep -q '\"unit\": \"m\"' baked/shore.json"
     check "sidecar lists the waves" grep -q '"omega_rad_s"' baked/shore.json
+    check "per-wave phase and amplitude fields" bash -c "test -s baked/wave_00_phase_residual.png && test -s baked/wave_00_amplitude_factor.png && test -s baked/breaking.png"
     check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
     "$TW" bake --resolution 64 --out baked --quiet > /dev/null
     check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"

@@ -15,6 +15,7 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/image_io.hpp"
 #include "tidewater/shore_bake.hpp"
+#include "tidewater/shore_waves.hpp"
 #include "verbs.hpp"
 
 namespace tidewater::cli {
@@ -101,11 +102,35 @@ int run_bake(const BakeArgs& a) {
         for (const auto& p : l.points) pts.push_back({p.x, p.y});
         lines.push_back({{"closed", l.closed}, {"points", pts}});
     }
+    // The per-wave fields the shaders sample (the scene's shore model, on its own grid).
     nlohmann::json waves = nlohmann::json::array();
-    for (const Wave& w : scene->ocean.waves().waves()) {
-        waves.push_back({{"deep_water_wavelength_m", kTwoPi / w.k}, {"omega_rad_s", w.omega}, {"period_s", w.period()},
-                         {"direction", {w.dir_x, w.dir_z}}, {"amplitude_m", w.amplitude}});
+    nlohmann::json shore_grid = nullptr;
+    const auto& shore = scene->ocean.shore();
+    const auto wave_list = scene->ocean.waves().waves();
+    for (std::size_t i = 0; i < wave_list.size(); ++i) {
+        const Wave& w = wave_list[i];
+        nlohmann::json entry = {{"deep_water_wavelength_m", kTwoPi / w.k}, {"omega_rad_s", w.omega}, {"period_s", w.period()},
+                                {"direction", {w.dir_x, w.dir_z}}, {"amplitude_m", w.amplitude}};
+        if (shore) {
+            const auto& phase = shore->phase_residual(i);
+            const auto& amp = shore->amplitude_factor(i);
+            const auto [pmin, pmax] = std::minmax_element(phase.begin(), phase.end());
+            const auto [amin, amax] = std::minmax_element(amp.begin(), amp.end());
+            entry["fields"] = {
+                {"phase_residual", write_field(temp, fmt::format("wave_{:02}_phase_residual", i), phase, shore->resolution(),
+                                               *pmin, *pmax, "rad", written)},
+                {"amplitude_factor", write_field(temp, fmt::format("wave_{:02}_amplitude_factor", i), amp, shore->resolution(),
+                                                 *amin, *amax, "1", written)}};
+        }
+        waves.push_back(entry);
     }
+    if (shore) {
+        shore_grid = {{"resolution", shore->resolution()}, {"texel_m", shore->texel()},
+                      {"corner_m", {shore->corner().x, shore->corner().y}},
+                      {"breaking", write_field(temp, "breaking", shore->breaking(), shore->resolution(), 0.0, 1.0, "1", written)},
+                      {"steepness_scale", write_field(temp, "steepness_scale", shore->steepness_scale(), shore->resolution(), 0.0, 1.0, "1", written)}};
+    }
+    if (!written) return fail(verb, written.error().message);
     const nlohmann::json sidecar = {
         {"version", 1},
         {"scene", scene->name},
@@ -117,6 +142,7 @@ int run_bake(const BakeArgs& a) {
         {"shoreline", {{"file", "shorelines.json"}, {"segments", field->segment_count}, {"land_polygons", field->polygons},
                        {"enclosed_waters", field->holes}, {"simplify_tolerance_m", field->simplify_tolerance}}},
         {"waves", waves},
+        {"shore_waves", shore_grid},
         {"notes", "signed distance is exact to the simplified shoreline (CGAL AABB tree): positive over water"}};
     for (auto [name, json] : {std::pair{"shore.json", sidecar.dump(2)}, std::pair{"shorelines.json", lines.dump()}}) {
         std::ofstream out(temp / name);
