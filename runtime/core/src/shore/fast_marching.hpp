@@ -1,5 +1,6 @@
 // First-arrival eikonal solve |grad T| = s(x) on a square grid by fast marching
-// (Sethian 1996, first-order upwind), private.
+// (Sethian 1996) with second-order upwind differences where two known values line up,
+// first order elsewhere. Private.
 #pragma once
 
 #include <limits>
