@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "gerstner_sums.hpp"
 #include "tidewater/constants.hpp"
 
 namespace tidewater {
@@ -20,11 +21,30 @@ void phase_offsets_at(const WaveSet& set, double time, std::span<double> out) {
     }
 }
 
+namespace detail {
+
+LagrangianSample assemble_sample(const GerstnerSums& s) {
+    LagrangianSample out;
+    out.displacement = {s.dx, s.eta, s.dz};
+    out.velocity = {s.vx, s.vy, s.vz};
+    out.jxx = 1.0 - s.mxx;
+    out.jxz = -s.mxz;
+    out.jzz = 1.0 - s.mzz;
+    out.jacobian = out.jxx * out.jzz - out.jxz * out.jxz;
+    out.slope = {s.sx, s.sz};
+    // Tangents of the displaced surface along x0 and z0; normal = Tz x Tx (y up).
+    const glm::dvec3 tx{out.jxx, s.sx, out.jxz};
+    const glm::dvec3 tz{out.jxz, s.sz, out.jzz};
+    out.normal = glm::normalize(glm::cross(tz, tx));
+    return out;
+}
+
+}  // namespace detail
+
 LagrangianSample evaluate_lagrangian(const WaveSet& set, glm::dvec2 rest, double time) {
-    double dx = 0, dz = 0, eta = 0;
-    double mxx = 0, mxz = 0, mzz = 0;  // sum Q A k D D^T sin(theta)
-    double sx = 0, sz = 0;             // d eta / d x0
-    double vx = 0, vy = 0, vz = 0;
+    detail::GerstnerSums g;
+    double &dx = g.dx, &dz = g.dz, &eta = g.eta, &mxx = g.mxx, &mxz = g.mxz, &mzz = g.mzz;
+    double &sx = g.sx, &sz = g.sz, &vx = g.vx, &vy = g.vy, &vz = g.vz;
     for (const Wave& w : set.waves()) {
         const double travelled = std::fmod(w.omega * time, kTwoPi);
         const double theta = w.k * (w.dir_x * rest.x + w.dir_z * rest.y) - travelled + w.phase;
@@ -45,19 +65,7 @@ LagrangianSample evaluate_lagrangian(const WaveSet& set, glm::dvec2 rest, double
         vz += qa * w.omega * w.dir_z * s;
         vy -= w.amplitude * w.omega * c;
     }
-    LagrangianSample out;
-    out.displacement = {dx, eta, dz};
-    out.velocity = {vx, vy, vz};
-    out.jxx = 1.0 - mxx;
-    out.jxz = -mxz;
-    out.jzz = 1.0 - mzz;
-    out.jacobian = out.jxx * out.jzz - out.jxz * out.jxz;
-    out.slope = {sx, sz};
-    // Tangents of the displaced surface along x0 and z0; normal = Tz x Tx (y up).
-    const glm::dvec3 tx{out.jxx, sx, out.jxz};
-    const glm::dvec3 tz{out.jxz, sz, out.jzz};
-    out.normal = glm::normalize(glm::cross(tz, tx));
-    return out;
+    return detail::assemble_sample(g);
 }
 
 }  // namespace tidewater

@@ -8,6 +8,7 @@
 #include "tidewater/shore_waves.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
+#include "shore_upload.hpp"
 #include "vk_util.hpp"
 
 namespace tidewater::render {
@@ -73,19 +74,8 @@ struct GpuQuery::Impl {
     Result<bool> upload_shore(const std::shared_ptr<const ShoreWaves>& shore) {
         const ShoreWaves* wanted = shore && !shore->trivial() ? shore.get() : nullptr;
         if (shore_waves.handle() && wanted == uploaded_shore) return false;
-        std::vector<glm::vec4> per_wave(1), shared(1);
-        if (wanted) {
-            const std::size_t texels = static_cast<std::size_t>(wanted->resolution()) * static_cast<std::size_t>(wanted->resolution());
-            per_wave.assign(std::max<std::size_t>(1, texels * wanted->wave_count()), glm::vec4(0.0f));
-            for (std::size_t w = 0; w < wanted->wave_count(); ++w)
-                for (std::size_t k = 0; k < texels; ++k)
-                    per_wave[w * texels + k] = {wanted->phase_residual(w)[k], wanted->amplitude_factor(w)[k],
-                                                wanted->wavevector_x(w)[k], wanted->wavevector_z(w)[k]};
-            shared.resize(texels);
-            for (std::size_t k = 0; k < texels; ++k)
-                shared[k] = {wanted->depth()[k], wanted->breaking()[k], wanted->steepness_scale()[k], wanted->shore_distance()[k]};
-        }
-        for (auto [buffer, data] : {std::pair{&shore_waves, &per_wave}, std::pair{&shore_shared, &shared}}) {
+        const detail::PackedShore packed = detail::pack_shore(wanted);
+    for (auto [buffer, data] : {std::pair{&shore_waves, &packed.per_wave}, std::pair{&shore_shared, &packed.shared}}) {
             auto fresh = GpuBuffer::create(ctx, data->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             if (!fresh) return fresh.error();
             std::memcpy(fresh->mapped(), data->data(), data->size() * sizeof(glm::vec4));

@@ -9,6 +9,7 @@
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
 #include "render_pipelines.hpp"
+#include "shore_upload.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/shore_waves.hpp"
 #include "terrain_mesh.hpp"
@@ -382,19 +383,8 @@ Status Renderer::Impl::upload_shore(const std::shared_ptr<const ShoreWaves>& sho
     const ShoreWaves* wanted = shore && !shore->trivial() ? shore.get() : nullptr;
     if (shore_waves.handle() && wanted == uploaded_shore) return {};
     vkDeviceWaitIdle(ctx().device);  // frames in flight may read the old fields
-    std::vector<glm::vec4> per_wave(1, glm::vec4(0.0f)), shared(1, glm::vec4(0.0f));
-    if (wanted) {
-        const std::size_t texels = static_cast<std::size_t>(wanted->resolution()) * static_cast<std::size_t>(wanted->resolution());
-        per_wave.assign(std::max<std::size_t>(1, texels * wanted->wave_count()), glm::vec4(0.0f));
-        for (std::size_t wv = 0; wv < wanted->wave_count(); ++wv)
-            for (std::size_t k = 0; k < texels; ++k)
-                per_wave[wv * texels + k] = {wanted->phase_residual(wv)[k], wanted->amplitude_factor(wv)[k],
-                                             wanted->wavevector_x(wv)[k], wanted->wavevector_z(wv)[k]};
-        shared.resize(texels);
-        for (std::size_t k = 0; k < texels; ++k)
-            shared[k] = {wanted->depth()[k], wanted->breaking()[k], wanted->steepness_scale()[k], wanted->shore_distance()[k]};
-    }
-    for (auto [buffer, data] : {std::pair{&shore_waves, &per_wave}, std::pair{&shore_shared, &shared}}) {
+    const detail::PackedShore packed = detail::pack_shore(wanted);
+    for (auto [buffer, data] : {std::pair{&shore_waves, &packed.per_wave}, std::pair{&shore_shared, &packed.shared}}) {
         auto fresh = GpuBuffer::create(ctx(), data->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         if (!fresh) return fresh.error();
         std::memcpy(fresh->mapped(), data->data(), data->size() * sizeof(glm::vec4));

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "fast_marching.hpp"
+#include "gerstner_sums.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/dispersion.hpp"
 #include "tidewater/shore_bake.hpp"
@@ -207,7 +208,9 @@ LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves&
     std::vector<LocalWave> lw(set.size());
     const LocalShore ls = shore.sample(rest, lw);
     if (local) *local = ls;
-    double dx = 0, dz = 0, eta = 0, mxx = 0, mxz = 0, mzz = 0, sx = 0, sz = 0, vx = 0, vy = 0, vz = 0;
+    detail::GerstnerSums g;
+    double &dx = g.dx, &dz = g.dz, &eta = g.eta, &mxx = g.mxx, &mxz = g.mxz, &mzz = g.mzz;
+    double &sx = g.sx, &sz = g.sz, &vx = g.vx, &vy = g.vy, &vz = g.vz;
     const auto waves = set.waves();
     for (std::size_t i = 0; i < waves.size(); ++i) {
         const Wave& w = waves[i];
@@ -232,18 +235,7 @@ LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves&
         vz += qa * w.omega * d.y * s;
         vy -= a * w.omega * c;
     }
-    LagrangianSample out;
-    out.displacement = {dx, eta, dz};
-    out.velocity = {vx, vy, vz};
-    out.jxx = 1.0 - mxx;
-    out.jxz = -mxz;
-    out.jzz = 1.0 - mzz;
-    out.jacobian = out.jxx * out.jzz - out.jxz * out.jxz;
-    out.slope = {sx, sz};
-    const glm::dvec3 tx{out.jxx, sx, out.jxz};
-    const glm::dvec3 tz{out.jxz, sz, out.jzz};
-    out.normal = glm::normalize(glm::cross(tz, tx));
-    return out;
+    return detail::assemble_sample(g);
 }
 
 }  // namespace tidewater
