@@ -160,5 +160,16 @@ TEST(ShoreWaves, ObliqueIncidenceFollowsSnellsLaw) {
     }
 }
 
+TEST(ShoreWaves, BodyRefusesAShoreBakedForOtherWaves) {
+    const WaveSet one = single_wave(deep_water_omega(50.0), 0.3, 0.5);
+    auto shore = ShoreWaves::bake(one, Terrain(planar_beach().plane), 0.0, {64, 0, 0.78});
+    ASSERT_TRUE(shore.ok());
+    const WaterBody two = test::make_body(test::random_waves(2, 0.3, 1));
+    auto refused = two.with_shore(*shore);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("baked for 1 waves"), std::string::npos) << refused.error().message;
+    EXPECT_TRUE(two.with_shore(nullptr).ok());
+}
+
 }  // namespace
 }  // namespace tidewater

@@ -133,7 +133,9 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
     profile.fold_policy = FoldPolicy::clamp;
     auto open = WaterBody::create(profile, 0.0, "bench");
     if (!open) return open.error();
-    const WaterBody shored = open->with_shore(*shore);
+    auto shored_result = open->with_shore(*shore);
+    if (!shored_result) return shored_result.error();
+    const WaterBody& shored = *shored_result;
     std::vector<glm::dvec2> pts(100000);
     for (std::size_t k = 0; k < pts.size(); ++k)
         pts[k] = {std::fmod(static_cast<double>(k) * 37.71, 3000.0) - 1500.0, std::fmod(static_cast<double>(k) * 91.13, 3000.0) - 1500.0};

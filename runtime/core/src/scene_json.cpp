@@ -389,7 +389,11 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
             e.message = fmt::format("{}: {}", r->context("shore"), e.message);
             return e;
         }
-        if (!(*shore)->trivial()) scene.ocean = scene.ocean.with_shore(*shore);
+        if (!(*shore)->trivial()) {
+            auto shored = scene.ocean.with_shore(*shore);
+            if (!shored) return shored.error();
+            scene.ocean = std::move(shored).value();
+        }
     }
     if (r->has("camera")) {
         auto camera = read_camera(*r);

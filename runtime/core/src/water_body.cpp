@@ -1,5 +1,7 @@
 #include "tidewater/water_body.hpp"
 
+#include "tidewater/shore_waves.hpp"
+
 #include <cmath>
 #include <fmt/format.h>
 
@@ -27,7 +29,12 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     return body;
 }
 
-WaterBody WaterBody::with_shore(std::shared_ptr<const ShoreWaves> shore) const {
+Result<WaterBody> WaterBody::with_shore(std::shared_ptr<const ShoreWaves> shore) const {
+    if (shore && shore->wave_count() != waves_.size()) {
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("water body: the shore model was baked for {} waves, the body has {}", shore->wave_count(),
+                                 waves_.size())};
+    }
     WaterBody copy = *this;
     copy.shore_ = std::move(shore);
     return copy;

@@ -48,8 +48,9 @@ public:
 
     /// The shore model the waves feel (null: open water everywhere).
     const std::shared_ptr<const ShoreWaves>& shore() const { return shore_; }
-    /// A copy of this body whose waves feel `shore` (baked for this body's waves).
-    WaterBody with_shore(std::shared_ptr<const ShoreWaves> shore) const;
+    /// A copy of this body whose waves feel `shore`, which must have been baked for this
+    /// body's waves (the same count); null gives open water.
+    Result<WaterBody> with_shore(std::shared_ptr<const ShoreWaves> shore) const;
 
 private:
     WaterProfile profile_;
