@@ -1,6 +1,7 @@
 #include "tidewater/shore_waves.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <fmt/format.h>
@@ -205,7 +206,9 @@ LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
 
 LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest, double time,
                                            LocalShore* local) {
-    std::vector<LocalWave> lw(set.size());
+    // At most kMaxWaves waves: no allocation in the query's inner loop.
+    std::array<LocalWave, kMaxWaves> storage;
+    const std::span<LocalWave> lw(storage.data(), set.size());
     const LocalShore ls = shore.sample(rest, lw);
     if (local) *local = ls;
     detail::GerstnerSums g;
