@@ -26,6 +26,7 @@ struct DemoArgs {
     std::string out_dir = "tidewater-demo";
     int grid = 64;
     double extent = 200.0;
+    std::vector<double> center;  // x z; default: under the scene's camera
     bool no_render = false;
 };
 
@@ -49,18 +50,22 @@ int run_demo(const DemoArgs& a) {
     }
     const double mean_period = energy > 0.0 ? weighted_period / energy : 0.0;
 
-    // Surface over a grid centred on the origin at a few times.
+    // Surface over a grid at a few times, centred under the scene's camera (on the
+    // default island that is open water in front of the beach) unless --center says.
+    glm::dvec2 centre = scene->camera ? glm::dvec2(scene->camera->position.x, scene->camera->position.z) : scene->terrain.extent_center();
+    if (a.center.size() == 2) centre = {a.center[0], a.center[1]};
+    if (!std::isfinite(centre.x) || !std::isfinite(centre.y)) return fail(verb, "--center: must be finite");
     const int n = a.grid;
     std::vector<glm::dvec2> pts;
     pts.reserve(static_cast<std::size_t>(n * n));
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            pts.push_back({a.extent * (i / double(n - 1) - 0.5), a.extent * (j / double(n - 1) - 0.5)});
+            pts.push_back(centre + glm::dvec2(a.extent * (i / double(n - 1) - 0.5), a.extent * (j / double(n - 1) - 0.5)));
     std::vector<SurfacePoint> surf(pts.size());
     const std::filesystem::path csv_path = std::filesystem::path(a.out_dir) / "surface.csv";
     AtomicFile csv(csv_path);
     if (!csv.status()) return fail(verb, csv.status().error().message);
-    csv.stream() << "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian\n";
+    csv.stream() << "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,wet,foam\n";
     double min_h = 1e300, max_h = -1e300, min_jac = 1e300;
     QueryOptions opt;
     opt.threads = 0;
@@ -68,9 +73,11 @@ int run_demo(const DemoArgs& a) {
         if (auto st = query_surface(ocean, t, pts, surf, opt); !st) return fail(verb, st.error().message);
         for (std::size_t k = 0; k < pts.size(); ++k) {
             const SurfacePoint& s = surf[k];
-            csv.stream() << fmt::format("{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},{:.6f}\n", t, pts[k].x,
-                                        pts[k].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                                        s.velocity.y, s.velocity.z, s.jacobian);
+            const double ground = scene->terrain.height_at(pts[k]);
+            csv.stream() << fmt::format("{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},{:.6f},{:.3f},{},{:.3f}\n", t,
+                                        pts[k].x, pts[k].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
+                                        s.velocity.y, s.velocity.z, s.jacobian, scene->water_level - ground,
+                                        s.height > ground ? 1 : 0, s.foam);
             min_h = std::min(min_h, s.height);
             max_h = std::max(max_h, s.height);
             min_jac = std::min(min_jac, s.jacobian);
@@ -90,7 +97,7 @@ int run_demo(const DemoArgs& a) {
         {"mean_period_s", mean_period},
         {"fold_measure_sum_QkA", waves.fold_measure()},
         {"max_horizontal_displacement_m", waves.max_horizontal_displacement()},
-        {"grid", {{"points", pts.size()}, {"extent_m", a.extent}, {"times_s", {0.0, 2.0, 4.0, 6.0}}}},
+        {"grid", {{"points", pts.size()}, {"center_m", {centre.x, centre.y}}, {"extent_m", a.extent}, {"times_s", {0.0, 2.0, 4.0, 6.0}}}},
         {"surface_height_range_m", {min_h, max_h}},
         {"min_jacobian", min_jac},
         {"query_kernel", query_kernel_name()},
@@ -140,6 +147,7 @@ Verb add_demo_verb(CLI::App& app) {
     cmd->add_option("--out-dir", args->out_dir, "Folder for summary.json and surface.csv")->capture_default_str();
     cmd->add_option("--grid", args->grid, "Grid points per side")->capture_default_str();
     cmd->add_option("--extent", args->extent, "Grid side length, m")->capture_default_str();
+    cmd->add_option("--center", args->center, "Grid centre x z, m (default: under the scene's camera)")->expected(2);
     cmd->add_flag("--no-render", args->no_render, "Skip the rendered still and sequence");
     return {cmd, [args] { return run_demo(*args); }};
 }
