@@ -97,7 +97,7 @@ Status query_surface(const WaterBody& body, double time, std::span<const glm::dv
     const SolveFn solve = kernel().solve;
     return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
         solve(waves, points.data() + begin, end - begin, out.data() + begin, nullptr);
-        for (std::size_t i = begin; i < end; ++i) out[i].foam = detail::crest_foam(out[i].jacobian);
+        for (std::size_t i = begin; i < end; ++i) out[i].foam = crest_foam(out[i].jacobian);
     });
 }
 

@@ -229,8 +229,7 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
             o.depth = static_cast<double>(r.shore.x);
             o.shore_distance = static_cast<double>(r.shore.y);
         }
-        const double t = std::clamp((0.75 - o.jacobian) / 0.4, 0.0, 1.0);
-        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, t * t * (3.0 - 2.0 * t));
+        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, crest_foam(o.jacobian));
     }
     return {};
 }

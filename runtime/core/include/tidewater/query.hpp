@@ -30,7 +30,9 @@ struct SurfacePoint {
     double jacobian = 1.0;           ///< Horizontal-map determinant; -> 0 where crests fold (foam).
     double depth = 0.0;              ///< Water column under the rest position (level - terrain), m; 0 without a shore model.
     double shore_distance = 0.0;     ///< Signed distance to the shoreline, m (+ over water); 0 without a shore model.
-    double foam = 0.0;               ///< 0..1: breaking (shore model) or crests folding (Jacobian < 0.75).
+    /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian)). The water shader
+    /// adds visual detail on top (foam riding the crests, swash bands along the coast).
+    double foam = 0.0;
     int iterations = 0;              ///< Newton evaluations used.
     bool converged = true;
 };
@@ -51,6 +53,10 @@ Status query_heights(const WaterBody& body, double time, std::span<const glm::dv
 
 /// Single-point convenience wrapper of query_surface.
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
+
+/// Foam from crests folding: 0 above a Jacobian of 0.75, 1 at 0.35, smoothstep between
+/// (the water shader uses the same curve).
+double crest_foam(double jacobian);
 
 /// Name of the SIMD kernel queries use on this machine ("avx2+fma", "sse2", ...).
 const char* query_kernel_name();

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tidewater::detail {
+namespace tidewater {
 
 double crest_foam(double jacobian) {
     const double t = std::clamp((0.75 - jacobian) / 0.4, 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
 }
+
+}  // namespace tidewater
+
+namespace tidewater::detail {
 
 void solve_points_shore(const WaterBody& body, const ShoreWaves& shore, double local_time, const glm::dvec2* points,
                         std::size_t n, SurfacePoint* full, double* heights) {

@@ -11,9 +11,6 @@
 
 namespace tidewater::detail {
 
-/// Foam from crests folding: 0 above a Jacobian of 0.75, 1 at 0.35 (as the water shader).
-double crest_foam(double jacobian);
-
 /// Solves `n` points; exactly one of `full` and `heights` is non-null.
 void solve_points_shore(const WaterBody& body, const ShoreWaves& shore, double local_time, const glm::dvec2* points,
                         std::size_t n, SurfacePoint* full, double* heights);

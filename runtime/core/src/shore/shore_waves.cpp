@@ -120,13 +120,14 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
                     return span > 0.0 ? (v1 - v0) / (span * field->texel) : 0.0;
                 };
                 glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
-                const double kl = wavenumber_at_depth(wave.omega, h);
+                const double kl = slowness[k];  // k(h), solved once above
                 const double len = glm::length(kvec);
                 kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
                 kx[k] = static_cast<float>(kvec.x);
                 kz[k] = static_cast<float>(kvec.y);
                 // Shoaling and refraction (rays against the shore normal).
-                const double ks = shoaling_coefficient(wave.omega, h);
+                // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
+                const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
                 const glm::dvec2 normal{static_cast<double>(field->gradient_x[k]), static_cast<double>(field->gradient_z[k])};
                 double kr = 1.0;
                 if (glm::length(normal) > 0.5) {
