@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "test_helpers.hpp"
+#include "tidewater/ripples.hpp"
 #include "tidewater/shore_bake.hpp"
 
 namespace tidewater {
@@ -117,6 +118,62 @@ TEST(ShoreBake, CgalDistanceEqualsBruteForce) {
     // Depth is the water column.
     const glm::dvec2 p = f->texel_center(3, 3);
     EXPECT_NEAR(f->depth[f->index(3, 3)], scene->water_level - scene->terrain.height_at(p), 1e-3);
+}
+
+/// Hundreds of islands from fractal noise: a coast with every kind of curvature.
+Terrain noisy_archipelago(int pixels, double size) {
+    auto img = std::make_shared<Gray16Image>();
+    img->width = img->height = pixels;
+    img->pixels.resize(static_cast<std::size_t>(pixels * pixels));
+    for (int j = 0; j < pixels; ++j)
+        for (int i = 0; i < pixels; ++i) {
+            glm::dvec2 q = glm::dvec2(i - pixels / 2, j - pixels / 2) * (size / pixels) / 150.0;
+            double h = 0.0, a = 30.0;
+            for (int o = 0; o < 5; ++o, q *= 2.3, a *= 0.6) h += a * gradient_noise(q, 7u + static_cast<std::uint32_t>(o)).value;
+            img->pixels[static_cast<std::size_t>(j * pixels + i)] = static_cast<std::uint16_t>(std::clamp((h + 60.0) / 120.0 * 65535.0, 0.0, 65535.0));
+        }
+    HeightmapTerrain t;
+    t.size = {size, size};
+    t.min_height = -60.0;
+    t.max_height = 60.0;
+    t.image = img;
+    return Terrain(t);
+}
+
+// The bake answers by blocks of texels sharing candidate lists; every texel must still
+// get its exact nearest segment, at any resolution (partial blocks) and thread count.
+TEST(ShoreBake, EveryTexelIsExactAndThreadCountDoesNotMatter) {
+    const Terrain terrain = noisy_archipelago(512, 1200.0);
+    for (int resolution : {203, 256}) {
+        BakeOptions o;
+        o.resolution = resolution;
+        o.threads = 1;
+        auto one = bake_shore(terrain, 0.0, o);
+        ASSERT_TRUE(one.ok()) << one.error().message;
+        EXPECT_GT(one->segment_count, 500u);
+        EXPECT_GT(one->polygons, 10u);
+        double worst = 0.0;
+        for (int j = 0; j < resolution; ++j)
+            for (int i = 0; i < resolution; ++i) {
+                const std::size_t k = one->index(i, j);
+                const double brute = reference::brute_force_shore_distance(*one, one->texel_center(i, j));
+                worst = std::max(worst, std::abs(std::abs(double(one->signed_distance[k])) - brute) / (1e-4 + 1e-6 * brute));
+                // The sign is the texel's side of the water level, even within the simplification
+                // tolerance and beyond an open line's end along the domain edge (0 on the line).
+                if (one->signed_distance[k] != 0.0f) {
+                    ASSERT_EQ(one->signed_distance[k] > 0.0f, one->depth[k] > 0.0f) << i << "," << j;
+                }
+                const double g = std::hypot(double(one->gradient_x[k]), double(one->gradient_z[k]));
+                ASSERT_NEAR(g, 1.0, 1e-5) << i << "," << j;
+            }
+        EXPECT_LT(worst, 1.0) << "distance error in units of (0.1 mm + 1e-6 d) at resolution " << resolution;
+        o.threads = 3;
+        auto three = bake_shore(terrain, 0.0, o);
+        ASSERT_TRUE(three.ok());
+        EXPECT_EQ(one->signed_distance, three->signed_distance);
+        EXPECT_EQ(one->gradient_x, three->gradient_x);
+        EXPECT_EQ(one->segment_count, three->segment_count);
+    }
 }
 
 // Degenerate terrains: all water, all land, a one-texel island, touching islands (a

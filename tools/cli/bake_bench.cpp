@@ -80,6 +80,11 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
             report["distance_fields"].push_back({{"resolution", res}, {"threads", threads}, {"seconds", s},
                                                  {"segments", field->segment_count}, {"land_polygons", field->polygons},
                                                  {"enclosed_waters", field->holes},
+                                                 {"stages_seconds", {{"heights", field->timings.heights},
+                                                                     {"contour", field->timings.contour},
+                                                                     {"simplify", field->timings.simplify},
+                                                                     {"tree", field->timings.tree},
+                                                                     {"distance", field->timings.distance}}},
                                                  {"queries_per_second", res * double(res) / s}});
             if (res == 1024 && threads == 1) kept = std::make_unique<ShoreField>(std::move(field).value());
         }
@@ -157,11 +162,15 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
 
 std::string bake_bench_markdown(const nlohmann::json& r) {
     std::string s = fmt::format("Coastline: {}. All threads = {}.\n\n", r["coastline"].get<std::string>(), r["threads_all"].get<unsigned>());
-    s += "| signed distance field | threads | seconds | segments | land polygons | enclosed waters |\n|---|---:|---:|---:|---:|---:|\n";
-    for (const auto& d : r["distance_fields"])
-        s += fmt::format("| {}^2 | {} | {:.3f} | {} | {} | {} |\n", d["resolution"].get<int>(), d["threads"].get<unsigned>(),
-                         d["seconds"].get<double>(), d["segments"].get<std::size_t>(), d["land_polygons"].get<std::size_t>(),
-                         d["enclosed_waters"].get<std::size_t>());
+    s += "| signed distance field | threads | seconds | heights | contour | simplify | tree | distances | segments | land polygons | "
+         "enclosed waters |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto& d : r["distance_fields"]) {
+        const auto& st = d["stages_seconds"];
+        s += fmt::format("| {}^2 | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {} | {} |\n", d["resolution"].get<int>(),
+                         d["threads"].get<unsigned>(), d["seconds"].get<double>(), st["heights"].get<double>(), st["contour"].get<double>(),
+                         st["simplify"].get<double>(), st["tree"].get<double>(), st["distance"].get<double>(),
+                         d["segments"].get<std::size_t>(), d["land_polygons"].get<std::size_t>(), d["enclosed_waters"].get<std::size_t>());
+    }
     const auto& b = r["brute_force"];
     s += fmt::format("\nBrute force over every segment: {:.1f} us per texel ({} texels), max |CGAL - brute force| = {:.2g} m.\n\n",
                      b["seconds_per_query"].get<double>() * 1e6, b["samples"].get<int>(), b["max_difference_m"].get<double>());

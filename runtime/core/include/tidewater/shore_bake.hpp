@@ -31,11 +31,22 @@ struct ShoreLine {
     bool closed = true;               ///< false where the shore leaves the domain.
 };
 
+/// Wall-clock seconds per bake stage (for benchmarks and progress reports).
+struct ShoreBakeTimings {
+    double heights = 0.0;    ///< Terrain sampled at every texel centre.
+    double contour = 0.0;    ///< Marching squares and chaining.
+    double simplify = 0.0;   ///< Simplification and CGAL polygons with holes.
+    double tree = 0.0;       ///< CGAL AABB tree over the simplified segments.
+    double distance = 0.0;   ///< Exact signed distance and gradient at every texel.
+};
+
 struct ShoreField {
     glm::dvec2 corner{0.0};   ///< World xz of the grid's outer corner, m.
     double texel = 1.0;       ///< Texel size, m.
     int resolution = 0;
     /// Signed distance to the shoreline, m: positive over water, negative on land.
+    /// The magnitude is the exact distance to the simplified shoreline; the sign is the
+    /// texel's side of the water level, so it always agrees with `depth`.
     /// With no shoreline at all it is +-(domain diagonal): all water or all land.
     std::vector<float> signed_distance;
     /// Unit gradient of the signed distance (points offshore over water), x and z.
@@ -47,6 +58,7 @@ struct ShoreField {
     double simplify_tolerance = 0.0;    ///< m, as used.
     std::size_t polygons = 0;           ///< Land polygons (CGAL polygons with holes).
     std::size_t holes = 0;              ///< Water bodies enclosed by land (lakes, lagoons).
+    ShoreBakeTimings timings;
 
     std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i); }
     glm::dvec2 texel_center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }

@@ -16,7 +16,8 @@ struct ContourChain {
     bool closed = true;
 };
 
-/// `values` is n x n, row-major with rows along the second axis.
-std::vector<ContourChain> extract_contours(const std::vector<double>& values, int n);
+/// `values` is n x n, row-major with rows along the second axis. Rows of cells are
+/// scanned on `threads` threads; the chains come out in the same order for any count.
+std::vector<ContourChain> extract_contours(const std::vector<double>& values, int n, unsigned threads);
 
 }  // namespace tidewater::detail

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <thread>
 
 #include "contour.hpp"
+#include "distance_field.hpp"
 #include "shore_geometry.hpp"
 
 namespace tidewater {
@@ -28,6 +30,20 @@ void parallel_rows(int rows, unsigned threads, const RowWork& work) {
     worker();
     for (auto& th : pool) th.join();
 }
+
+/// Seconds since the last call (or construction): one stage of the bake.
+class StageClock {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double s = std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+        return s;
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
 
 }  // namespace
 
@@ -62,9 +78,11 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.corner = terrain.extent_center() - glm::dvec2(half);
     field.simplify_tolerance = options.simplify_tolerance > 0.0 ? options.simplify_tolerance : 0.5 * field.texel;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    StageClock clock;
 
     // Terrain height relative to the water level at every texel centre.
     std::vector<double> above(count);
+    field.depth.resize(count);
     std::atomic<bool> finite{true};
     std::atomic<std::size_t> bad_index{0};
     parallel_rows(n, threads, [&](int j) {
@@ -72,6 +90,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
             const double h = terrain.height_at(field.texel_center(i, j));
             if (!std::isfinite(h) && finite.exchange(false)) bad_index = field.index(i, j);
             above[field.index(i, j)] = h - water_level;
+            field.depth[field.index(i, j)] = static_cast<float>(water_level - h);
         }
     });
     if (!finite) {
@@ -80,28 +99,31 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         return Error{ErrorCode::invalid_argument,
                      fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
     }
-    field.depth.resize(count);
-    for (std::size_t k = 0; k < count; ++k) field.depth[k] = static_cast<float>(-above[k]);
     report(0.1);
 
     // A coast crosses O(n) cells; O(n^2) crossings is noise (say, millions of one-texel
     // islands). Count before building anything.
-    std::size_t mixed = 0;
-    for (int j = 0; j + 1 < n; ++j)
+    std::atomic<std::size_t> mixed{0};
+    parallel_rows(n - 1, threads, [&](int j) {
+        std::size_t row_mixed = 0;
+        const float* below = field.depth.data() + field.index(0, j);
+        const float* above_row = below + n;
         for (int i = 0; i + 1 < n; ++i) {
-            const bool a = above[field.index(i, j)] >= 0, b = above[field.index(i + 1, j)] >= 0;
-            const bool c = above[field.index(i, j + 1)] >= 0, d = above[field.index(i + 1, j + 1)] >= 0;
-            mixed += !(a == b && b == c && c == d);
+            const bool a = below[i] <= 0, b = below[i + 1] <= 0, c = above_row[i] <= 0, d = above_row[i + 1] <= 0;
+            row_mixed += !(a == b && b == c && c == d);
         }
+        mixed += row_mixed;
+    });
     const std::size_t mixed_limit = std::max<std::size_t>(50'000, count / 8);
     if (mixed > mixed_limit) {
         return Error{ErrorCode::invalid_argument,
                      fmt::format("bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
                                  "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the resolution",
-                                 mixed, count, mixed_limit)};
+                                 mixed.load(), count, mixed_limit)};
     }
+    field.timings.heights = clock.lap();
     // The contour at the water level, in world units.
-    std::vector<detail::ContourChain> chains = detail::extract_contours(above, n);
+    std::vector<detail::ContourChain> chains = detail::extract_contours(above, n, threads);
     std::size_t raw_segments = 0;
     for (const auto& c : chains) raw_segments += c.points.size();
     if (raw_segments > kMaxShoreSegments || chains.size() > kMaxShoreLines) {
@@ -119,10 +141,12 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         for (const auto& g : c.points) line.points.push_back(field.corner + field.texel * (g + glm::dvec2(0.5)));
         lines.push_back(std::move(line));
     }
+    field.timings.contour = clock.lap();
     detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance, threads);
     field.polygons = shore.polygons;
     field.holes = shore.holes;
     field.shorelines = std::move(shore.lines);
+    field.timings.simplify = clock.lap();
     report(0.3);
 
     field.signed_distance.assign(count, 0.0f);
@@ -130,6 +154,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.gradient_z.assign(count, 0.0f);
     const auto distance = detail::ShoreDistance::build(field.shorelines);
     field.segment_count = distance->segment_count();
+    field.timings.tree = clock.lap();
     if (field.segment_count == 0) {
         // No shoreline: all water or all land. The distance is the domain diagonal, signed.
         const bool water = above[0] < 0.0;
@@ -138,23 +163,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         report(1.0);
         return field;
     }
-    std::atomic<int> rows_done{0};
-    parallel_rows(n, threads, [&](int j) {
-        // Each query starts from its neighbour's answer: the AABB tree then prunes almost at once.
-        detail::ShoreDistance::Hit hint;
-        bool have_hint = false;
-        for (int i = 0; i < n; ++i) {
-            const auto hit = distance->query(field.texel_center(i, j), have_hint ? &hint : nullptr);
-            const std::size_t k = field.index(i, j);
-            field.signed_distance[k] = static_cast<float>(hit.signed_distance);
-            field.gradient_x[k] = static_cast<float>(hit.gradient.x);
-            field.gradient_z[k] = static_cast<float>(hit.gradient.y);
-            hint = hit;
-            have_hint = true;
-        }
-        const int done = ++rows_done;
-        if ((done & 63) == 0) report(0.3 + 0.7 * done / n);
-    });
+    detail::fill_distance_field(*distance, field, threads, [&](double f) { report(0.3 + 0.7 * f); });
+    field.timings.distance = clock.lap();
     report(1.0);
     return field;
 }

@@ -1,15 +1,14 @@
-// Everything that includes CGAL lives in this file: the simplification of the
-// shoreline, its polygons with holes, and the AABB tree for exact distances.
-// Lines are simplified one by one: simplifying all of them in one constrained
-// triangulation (which also keeps separate lines from crossing) measured 3x slower.
+// Everything that includes CGAL lives in this file: the shoreline's polygons with
+// holes and the AABB tree for exact distances.
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
-#include <CGAL/Polyline_simplification_2/simplify.h>
 #include <CGAL/Simple_cartesian.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -17,6 +16,7 @@
 #include <thread>
 
 #include "shore_geometry.hpp"
+#include "simplify_line.hpp"
 
 namespace tidewater::detail {
 
@@ -26,7 +26,6 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point2 = Epick::Point_2;
 using Polygon = CGAL::Polygon_2<Epick>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<Epick>;
-namespace PS = CGAL::Polyline_simplification_2;
 
 // CGAL 5.5's AABB tree is 3D: the shoreline lies in the plane z = 0.
 using K3 = CGAL::Simple_cartesian<double>;
@@ -35,28 +34,11 @@ using SegmentIterator = std::vector<Segment3>::const_iterator;
 using Primitive = CGAL::AABB_segment_primitive<K3, SegmentIterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K3, Primitive>>;
 
-std::vector<glm::dvec2> simplify_line(const ShoreLine& line, double tolerance) {
-    if (line.points.size() < 4 || tolerance <= 0.0) return line.points;
-    std::vector<Point2> in;
-    in.reserve(line.points.size());
-    for (const auto& p : line.points) in.emplace_back(p.x, p.y);
-    std::vector<Point2> out;
-    // Squared_distance_cost: the largest distance from a removed vertex to the simplified line.
-    PS::simplify(in.begin(), in.end(), PS::Squared_distance_cost(), PS::Stop_above_cost_threshold(tolerance * tolerance),
-                 std::back_inserter(out), line.closed);
-    if (line.closed && out.size() > 1 && out.front() == out.back()) out.pop_back();
-    if (out.size() < (line.closed ? 3u : 2u)) return line.points;  // keep tiny islands whole
-    std::vector<glm::dvec2> result;
-    result.reserve(out.size());
-    for (const auto& p : out) result.emplace_back(p.x(), p.y());
-    return result;
-}
-
 }  // namespace
 
 ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads) {
     ClassifiedShore shore;
-    // Each line has its own triangulation: the lines are simplified in parallel.
+    // The lines are independent: simplify them in parallel.
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
         for (std::size_t k = next++; k < lines.size(); k = next++) lines[k].points = simplify_line(lines[k], tolerance);
@@ -104,6 +86,7 @@ ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double toler
 
 struct ShoreDistance::Impl {
     std::vector<Segment3> segments;
+    std::vector<Segment> flat;  // the same segments in 2D
     // Per segment: the left normals of its neighbours along the line (for the sign at vertices).
     std::vector<glm::dvec2> left_normal, prev_normal, next_normal;
     Tree tree;
@@ -113,6 +96,7 @@ ShoreDistance::ShoreDistance(std::unique_ptr<Impl> impl) : impl_(std::move(impl)
 ShoreDistance::~ShoreDistance() = default;
 
 std::size_t ShoreDistance::segment_count() const { return impl_->segments.size(); }
+const ShoreDistance::Segment& ShoreDistance::segment(std::size_t s) const { return impl_->flat[s]; }
 
 std::unique_ptr<ShoreDistance> ShoreDistance::build(const std::vector<ShoreLine>& lines) {
     auto impl = std::make_unique<Impl>();
@@ -123,6 +107,7 @@ std::unique_ptr<ShoreDistance> ShoreDistance::build(const std::vector<ShoreLine>
         for (std::size_t k = 0; k < count; ++k) {
             const glm::dvec2 a = line.points[k], b = line.points[(k + 1) % n];
             impl->segments.emplace_back(K3::Point_3(a.x, a.y, 0.0), K3::Point_3(b.x, b.y, 0.0));
+            impl->flat.push_back({a, b});
             const glm::dvec2 d = b - a;
             const double len = std::max(std::sqrt(d.x * d.x + d.y * d.y), 1e-300);
             impl->left_normal.push_back(glm::dvec2(-d.y, d.x) / len);
@@ -150,23 +135,56 @@ ShoreDistance::Hit ShoreDistance::query(glm::dvec2 p, const Hit* hint) const {
                    q, std::make_pair(K3::Point_3(hint->closest.x, hint->closest.y, 0.0),
                                      m.segments.cbegin() + static_cast<std::ptrdiff_t>(hint->segment)))
              : m.tree.closest_point_and_primitive(q);
-    const glm::dvec2 c(result.first.x(), result.first.y());
-    const auto s = static_cast<std::size_t>(result.second - m.segments.cbegin());
+    return hit_on(p, static_cast<std::size_t>(result.second - m.segments.cbegin()));
+}
+
+void ShoreDistance::segments_within(glm::dvec2 p, double radius, std::vector<std::uint32_t>& out) const {
+    const Impl& m = *impl_;
+    if (m.segments.empty()) return;
+    // CGAL's Sphere_3 queries test the sphere's surface, not the ball: query the ball's
+    // box and keep what lies within the radius.
+    const CGAL::Bbox_3 box(p.x - radius, p.y - radius, -1.0, p.x + radius, p.y + radius, 1.0);
+    const auto first = m.segments.cbegin();
+    const double r2 = radius * radius;
+    m.tree.all_intersected_primitives(box, boost::make_function_output_iterator([&](SegmentIterator s) {
+        const auto k = static_cast<std::size_t>(s - first);
+        const glm::dvec2 a = m.flat[k].a, ab = m.flat[k].b - a;
+        const double len2 = ab.x * ab.x + ab.y * ab.y;
+        const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2, 0.0, 1.0) : 0.0;
+        const glm::dvec2 d = p - (a + t * ab);
+        if (d.x * d.x + d.y * d.y <= r2) out.push_back(static_cast<std::uint32_t>(k));
+    }));
+}
+
+ShoreDistance::Hit ShoreDistance::hit_on(glm::dvec2 p, std::size_t s) const {
+    const Impl& m = *impl_;
+    const glm::dvec2 a = m.flat[s].a, b = m.flat[s].b;
+    const glm::dvec2 ab = b - a;
+    const double len2 = ab.x * ab.x + ab.y * ab.y;
+    const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2, 0.0, 1.0) : 0.0;
+    const glm::dvec2 c = a + t * ab;
     const glm::dvec2 away = p - c;
     const double dist = std::sqrt(away.x * away.x + away.y * away.y);
     // The side: the segment's left normal, or at a shared vertex the mean with its neighbour's.
     glm::dvec2 normal = m.left_normal[s];
-    const glm::dvec2 a(m.segments[s].source().x(), m.segments[s].source().y());
-    const glm::dvec2 b(m.segments[s].target().x(), m.segments[s].target().y());
-    const double eps = 1e-9 * (1.0 + std::abs(a.x) + std::abs(a.y));
-    if (std::abs(c.x - a.x) + std::abs(c.y - a.y) < eps) normal += m.prev_normal[s];
-    if (std::abs(c.x - b.x) + std::abs(c.y - b.y) < eps) normal += m.next_normal[s];
+    if (t <= 0.0) normal += m.prev_normal[s];
+    if (t >= 1.0) normal += m.next_normal[s];
     const bool land = away.x * normal.x + away.y * normal.y > 0.0;
     Hit hit;
     hit.closest = c;
     hit.segment = s;
     hit.signed_distance = land ? -dist : dist;
-    if (dist > 0.0) hit.gradient = (land ? -1.0 : 1.0) * away / dist;
+    // On the line itself the gradient is the water-side normal: unit everywhere.
+    hit.gradient = dist > 0.0 ? (land ? -1.0 : 1.0) * away / dist : -m.left_normal[s];
+    return hit;
+}
+
+ShoreDistance::Hit ShoreDistance::hit_on(glm::dvec2 p, std::size_t s, bool water) const {
+    Hit hit = hit_on(p, s);
+    if ((hit.signed_distance > 0.0) != water) {
+        hit.signed_distance = water ? std::abs(hit.signed_distance) : -std::abs(hit.signed_distance);
+        hit.gradient = -impl_->left_normal[s];  // land is on the left
+    }
     return hit;
 }
 

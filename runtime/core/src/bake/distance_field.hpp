@@ -1,0 +1,15 @@
+// Fills a ShoreField's signed distance and gradient from a ShoreDistance (private).
+#pragma once
+
+#include <functional>
+
+#include "shore_geometry.hpp"
+
+namespace tidewater::detail {
+
+/// Every texel's exact signed distance and gradient, on `threads` threads.
+/// `progress` gets the fraction of tile rows done.
+void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsigned threads,
+                         const std::function<void(double)>& progress);
+
+}  // namespace tidewater::detail
