@@ -181,21 +181,56 @@ case "$CASE" in
   bake)
     "$TW" bake --resolution 128 --out baked --quiet > log.txt
     check "exit 0" test $? -eq 0
-    for f in signed_distance.png gradient_x.png gradient_z.png depth.png shore.json shorelines.json; do
+    for f in distance_signed_distance.png distance_gradient_x.png distance_gradient_z.png distance_depth.png depth.png \
+             shore_distance.png breaking.png steepness_scale.png shore.json shorelines.json; do
       check "wrote $f" test -s "baked/$f"
     done
-    check "sidecar names extent, fields and units" bash -c "grep -q '\"texel_m\"' baked/shore.json && grep -q '\"decode\"' baked/shore.json && grep -q '\"unit\": \"m\"' baked/shore.json"
+    check "sidecar names extent, encoding and units" bash -c "grep -q '\"texel_m\"' baked/shore.json && grep -q '\"zero_pixel\"' baked/shore.json && grep -q '\"unit\": \"m\"' baked/shore.json"
     check "sidecar lists the waves" grep -q '"omega_rad_s"' baked/shore.json
-    check "per-wave phase and amplitude fields" bash -c "test -s baked/wave_00_phase_residual.png && test -s baked/wave_00_amplitude_factor.png && test -s baked/breaking.png"
+    check "per-wave fields" bash -c "test -s baked/wave_00_phase_residual.png && test -s baked/wave_00_amplitude_factor.png && test -s baked/wave_00_wavevector_x.png && test -s baked/wave_00_wavevector_z.png"
     check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
-    "$TW" bake --resolution 64 --out baked --quiet > /dev/null
-    check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"
+
+    # A scene that loads the bake queries like one that bakes on load (within the 16-bit encoding).
+    sed 's|"ocean": "ocean_rolling",|"ocean": "ocean_rolling", "shore": {"bake": "baked"},|' "$EXAMPLES/scenes/default.json" > loads_bake.json
+    check "scene names the bake" grep -q '"bake": "baked"' loads_bake.json
+    printf 'x,z\n' > shore_points.csv
+    for k in $(seq 0 199); do echo "$(( (k * 37) % 1400 - 700 )),$(( (k * 53) % 1400 - 700 ))" >> shore_points.csv; done
+    "$TW" query --points shore_points.csv --time 7.5 --out on_load.csv 2>/dev/null
+    "$TW" query --scene loads_bake.json --points shore_points.csv --time 7.5 --out from_bake.csv 2>/dev/null
+    check "query with the loaded bake exits 0" test -s from_bake.csv
+    check "loaded bake matches a bake on load (heights within 5 mm)" python3 - on_load.csv from_bake.csv <<'PY'
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1]))); b = list(csv.DictReader(open(sys.argv[2])))
+assert len(a) == len(b) == 200, (len(a), len(b))
+worst = max(abs(float(p["height"]) - float(q["height"])) for p, q in zip(a, b))
+print(f"  worst height difference {worst * 1000:.3f} mm")
+sys.exit(0 if worst < 5e-3 else 1)
+PY
+
+    "$TW" bake --resolution 64 --model-resolution 32 --out baked --quiet > /dev/null
+    check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && grep -q '\"resolution\": 32' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"
     expect_error "bad resolution" "resolution" "$TW" bake --resolution 4 --out b2
     check "no folder after a failed bake" test ! -e b2
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "x.png", "size": [100, 100], "height_range": [5, -5]}}, "ocean": "pool_calm"}' > inverted.json
     expect_error "inverted height range" "height_range" "$TW" bake --scene inverted.json --out b3
     touch plain
     expect_error "unwritable folder" "cannot create folder" "$TW" bake --resolution 32 --out plain/sub --quiet
+
+    # A bake that does not fit the scene is refused, naming the file and field.
+    sed 's|"water_level": 0.0|"water_level": 0.5|' loads_bake.json > other_level.json
+    expect_error "bake at another water level" "shore.json: /water_level_m" "$TW" query --scene other_level.json --points points.csv --time 0
+    sed 's|"ocean_rolling"|"lake_rippled"|' loads_bake.json > other_waves.json
+    expect_error "bake for other waves" "re-run tidewater bake" "$TW" query --scene other_waves.json --points points.csv --time 0
+    sed 's|"seed": 7|"seed": 8|' loads_bake.json > other_terrain.json
+    expect_error "bake over another terrain" "the terrain differs" "$TW" query --scene other_terrain.json --points points.csv --time 0
+    rm baked/breaking.png
+    expect_error "bake with a missing field" "breaking.png" "$TW" query --scene loads_bake.json --points points.csv --time 0
+    echo '{"version": 1, "water_level_m": 0' > baked/shore.json
+    expect_error "corrupt sidecar" "shore.json" "$TW" query --scene loads_bake.json --points points.csv --time 0
+    sed 's|"bake": "baked"|"bake": "nowhere"|' loads_bake.json > missing_bake.json
+    expect_error "missing bake folder" "nowhere" "$TW" query --scene missing_bake.json --points points.csv --time 0
+    sed 's|"bake": "baked"|"bake": "baked", "resolution": 64|' loads_bake.json > both.json
+    expect_error "bake and resolution together" "/shore/bake" "$TW" query --scene both.json --points points.csv --time 0
     ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;

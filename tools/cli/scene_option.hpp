@@ -7,8 +7,8 @@
 
 namespace tidewater::cli {
 
-inline Result<Scene> load_scene_option(const std::string& path) {
-    return path.empty() ? default_scene() : load_scene(path);
+inline Result<Scene> load_scene_option(const std::string& path, const SceneLoadOptions& options = {}) {
+    return path.empty() ? default_scene(options) : load_scene(path, options);
 }
 
 }  // namespace tidewater::cli

@@ -7,6 +7,7 @@
 #include "json_reader.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/shore_bake_folder.hpp"
 #include "tidewater/shore_waves.hpp"
 
 namespace tidewater {
@@ -285,22 +286,31 @@ Result<SceneCamera> read_camera(const ObjectReader& scene) {
     return cam;
 }
 
-Result<std::optional<ShoreWaveOptions>> read_shore(const ObjectReader& scene) {
-    ShoreWaveOptions options;
-    if (!scene.has("shore")) return std::optional<ShoreWaveOptions>(options);
+Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::path& base_dir) {
+    SceneShore shore;
+    if (!scene.has("shore")) return shore;
     auto r = ObjectReader::open(scene.at("shore"), scene.source(), "/shore");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"enabled", "resolution", "breaking_index"}); !st) return st.error();
+    if (auto st = r->allow_only({"enabled", "resolution", "breaking_index", "bake"}); !st) return st.error();
     if (r->has("enabled")) {
         if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
-        if (!r->at("enabled").get<bool>()) return std::optional<ShoreWaveOptions>();
+        shore.enabled = r->at("enabled").get<bool>();
     }
-    std::int64_t resolution = options.resolution;
+    std::int64_t resolution = shore.options.resolution;
     if (auto st = r->integer("resolution", resolution, 16, 4096); !st) return st.error();
-    options.resolution = static_cast<int>(resolution);
-    if (auto st = r->number("breaking_index", options.breaking_index); !st) return st.error();
-    if (auto st = check_range(*r, "breaking_index", options.breaking_index, 0.3, 1.2, ""); !st) return st.error();
-    return std::optional<ShoreWaveOptions>(options);
+    shore.options.resolution = static_cast<int>(resolution);
+    if (auto st = r->number("breaking_index", shore.options.breaking_index); !st) return st.error();
+    if (auto st = check_range(*r, "breaking_index", shore.options.breaking_index, 0.3, 1.2, ""); !st) return st.error();
+    if (r->has("bake")) {
+        if (r->has("resolution") || r->has("breaking_index"))
+            return r->error("bake", "a saved bake fixes the resolution and breaking index: give either bake or those");
+        std::string folder;
+        if (auto st = r->string("bake", folder); !st) return st.error();
+        if (folder.empty()) return r->error("bake", "expected a folder written by tidewater bake");
+        shore.bake_folder = folder;
+        if (shore.bake_folder.is_relative() && !base_dir.empty()) shore.bake_folder = base_dir / shore.bake_folder;
+    }
+    return shore;
 }
 
 bool looks_like_path(const std::string& name) {
@@ -354,7 +364,23 @@ Result<WaterProfile> load_preset(const std::string& name_or_path, const std::fil
     return parse_preset(*text, path.string());
 }
 
-Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir) {
+Status bake_scene_shore(Scene& scene) {
+    std::shared_ptr<const ShoreWaves> model;
+    if (scene.shore.enabled) {
+        auto made = scene.shore.bake_folder.empty()
+                        ? ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level, scene.shore.options)
+                        : load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level, scene.terrain);
+        if (!made) return made.error();
+        if (!(*made)->trivial()) model = std::move(made).value();
+    }
+    auto body = scene.ocean.with_shore(std::move(model));
+    if (!body) return body.error();
+    scene.ocean = std::move(body).value();
+    return {};
+}
+
+Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir,
+                          const SceneLoadOptions& options) {
     auto doc = detail::parse_json_text(json_text, source);
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
@@ -380,19 +406,14 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!body) return body.error();
     scene.ocean = std::move(body).value();
     // The waves feel the shore unless the scene turns it off; deep water everywhere needs no model.
-    auto shore_options = read_shore(*r);
-    if (!shore_options) return shore_options.error();
-    if (*shore_options) {
-        auto shore = ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level, **shore_options);
-        if (!shore) {
-            Error e = std::move(shore).error();
+    auto shore = read_shore(*r, base_dir);
+    if (!shore) return shore.error();
+    scene.shore = std::move(shore).value();
+    if (options.shore_model) {
+        if (auto st = bake_scene_shore(scene); !st) {
+            Error e = st.error();
             e.message = fmt::format("{}: {}", r->context("shore"), e.message);
             return e;
-        }
-        if (!(*shore)->trivial()) {
-            auto shored = scene.ocean.with_shore(*shore);
-            if (!shored) return shored.error();
-            scene.ocean = std::move(shored).value();
         }
     }
     if (r->has("camera")) {
@@ -403,15 +424,15 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     return scene;
 }
 
-Result<Scene> load_scene(const std::filesystem::path& path) {
+Result<Scene> load_scene(const std::filesystem::path& path, const SceneLoadOptions& options) {
     auto text = detail::read_text_file(path.string());
     if (!text) return text.error();
-    return parse_scene(*text, path.string(), path.parent_path());
+    return parse_scene(*text, path.string(), path.parent_path(), options);
 }
 
-Result<Scene> default_scene() {
+Result<Scene> default_scene(const SceneLoadOptions& options) {
     for (const auto& e : embedded::scenes::entries()) {
-        if (e.name == "default") return parse_scene(e.text, "<default scene>");
+        if (e.name == "default") return parse_scene(e.text, "<default scene>", {}, options);
     }
     return Error{ErrorCode::not_found, "the default scene is not bundled in this build"};
 }

@@ -50,36 +50,50 @@ struct LocalShore {
     double steepness_scale = 1.0;  ///< Multiplies every Q here.
 };
 
+/// Everything a shore model holds: grids over the terrain's square extent, values at
+/// texel centres, row-major with rows along +z.
+struct ShoreWaveFields {
+    int resolution = 0;       ///< Texels per side.
+    double texel = 1.0;       ///< m.
+    glm::dvec2 corner{0.0};   ///< World xz of the grid's outer corner, m.
+    /// Per wave, then per texel: phi - k0 D.x (rad), A / A0, and grad phi (rad/m).
+    std::vector<std::vector<float>> phase_residual, amplitude_factor, wavevector_x, wavevector_z;
+    std::vector<float> depth;            ///< Water level - terrain, m (< 0 on land).
+    std::vector<float> shore_distance;   ///< Signed distance to the shoreline, m (+ over water).
+    std::vector<float> breaking;         ///< 0..1 foam from breaking.
+    std::vector<float> steepness_scale;  ///< Multiplies every Q, 0..1.
+};
+
 class ShoreWaves {
 public:
     static Result<std::shared_ptr<const ShoreWaves>> bake(const WaveSet& set, const Terrain& terrain, double water_level,
                                                           const ShoreWaveOptions& options = {});
+    /// A model from fields made elsewhere (a saved bake). Fails unless every grid is
+    /// resolution^2 finite values and there are `wave_count` of each per-wave field.
+    static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::size_t wave_count);
 
     /// Bilinear sample at world xz; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
 
-    int resolution() const { return n_; }
-    double texel() const { return texel_; }
-    glm::dvec2 corner() const { return corner_; }
-    std::size_t wave_count() const { return residual_.size(); }
+    const ShoreWaveFields& fields() const { return f_; }
+    int resolution() const { return f_.resolution; }
+    double texel() const { return f_.texel; }
+    glm::dvec2 corner() const { return f_.corner; }
+    std::size_t wave_count() const { return f_.phase_residual.size(); }
     /// True when every texel is deep water: the waves are unchanged and queries may skip the shore.
     bool trivial() const { return trivial_; }
-    /// Raw fields (row-major, rows along +z) for upload to the GPU.
-    const std::vector<float>& phase_residual(std::size_t wave) const { return residual_[wave]; }
-    const std::vector<float>& amplitude_factor(std::size_t wave) const { return amplitude_[wave]; }
-    const std::vector<float>& wavevector_x(std::size_t wave) const { return kx_[wave]; }
-    const std::vector<float>& wavevector_z(std::size_t wave) const { return kz_[wave]; }
-    const std::vector<float>& depth() const { return depth_; }
-    const std::vector<float>& breaking() const { return breaking_; }
-    const std::vector<float>& steepness_scale() const { return steepness_; }
-    const std::vector<float>& shore_distance() const { return distance_; }
+    /// Raw fields for upload to the GPU.
+    const std::vector<float>& phase_residual(std::size_t wave) const { return f_.phase_residual[wave]; }
+    const std::vector<float>& amplitude_factor(std::size_t wave) const { return f_.amplitude_factor[wave]; }
+    const std::vector<float>& wavevector_x(std::size_t wave) const { return f_.wavevector_x[wave]; }
+    const std::vector<float>& wavevector_z(std::size_t wave) const { return f_.wavevector_z[wave]; }
+    const std::vector<float>& depth() const { return f_.depth; }
+    const std::vector<float>& breaking() const { return f_.breaking; }
+    const std::vector<float>& steepness_scale() const { return f_.steepness_scale; }
+    const std::vector<float>& shore_distance() const { return f_.shore_distance; }
 
 private:
-    int n_ = 0;
-    double texel_ = 1.0;
-    glm::dvec2 corner_{0.0};
-    std::vector<std::vector<float>> residual_, amplitude_, kx_, kz_;  // [wave][texel]
-    std::vector<float> depth_, breaking_, steepness_, distance_;
+    ShoreWaveFields f_;
     bool trivial_ = false;
 };
 

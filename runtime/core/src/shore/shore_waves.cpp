@@ -34,6 +34,16 @@ void parallel_for(std::size_t count, unsigned threads, const Work& work) {
     for (auto& th : pool) th.join();
 }
 
+/// Deep everywhere with nothing changed: the waves are exactly the open-ocean ones.
+bool all_deep_and_unchanged(const ShoreWaveFields& f) {
+    for (std::size_t k = 0; k < f.depth.size(); ++k) {
+        if (!(f.depth[k] > 0.0f && f.steepness_scale[k] == 1.0f && f.breaking[k] == 0.0f)) return false;
+        for (std::size_t w = 0; w < f.phase_residual.size(); ++w)
+            if (f.phase_residual[w][k] != 0.0f || std::abs(f.amplitude_factor[w][k] - 1.0f) >= 1e-3f) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, const Terrain& terrain, double water_level,
@@ -51,18 +61,19 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
 
     auto out = std::make_shared<ShoreWaves>();
     const int n = field->resolution;
-    out->n_ = n;
-    out->texel_ = field->texel;
-    out->corner_ = field->corner;
+    ShoreWaveFields& f = out->f_;
+    f.resolution = n;
+    f.texel = field->texel;
+    f.corner = field->corner;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-    out->depth_ = field->depth;
-    out->distance_ = field->signed_distance;
+    f.depth = field->depth;
+    f.shore_distance = field->signed_distance;
     const auto waves = set.waves();
     const std::size_t nw = waves.size();
-    out->residual_.assign(nw, std::vector<float>(count, 0.0f));
-    out->amplitude_.assign(nw, std::vector<float>(count, 0.0f));
-    out->kx_.assign(nw, std::vector<float>(count, 0.0f));
-    out->kz_.assign(nw, std::vector<float>(count, 0.0f));
+    f.phase_residual.assign(nw, std::vector<float>(count, 0.0f));
+    f.amplitude_factor.assign(nw, std::vector<float>(count, 0.0f));
+    f.wavevector_x.assign(nw, std::vector<float>(count, 0.0f));
+    f.wavevector_z.assign(nw, std::vector<float>(count, 0.0f));
 
     parallel_for(nw, threads, [&](std::size_t w) {
         const Wave& wave = waves[w];
@@ -95,17 +106,18 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
         for (double& v : phase)
             if (std::isfinite(v)) v -= base;
         detail::fast_march(slowness, phase, n, field->texel);
-        auto& residual = out->residual_[w];
+        auto& residual = f.phase_residual[w];
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const std::size_t k = field->index(i, j);
                 if (!std::isfinite(phase[k])) continue;  // unreached: no wave
+                if (any_deep && deep[k]) continue;       // a source: the open-ocean phase, residual exactly 0
                 residual[k] = static_cast<float>(phase[k] + base - k0 * glm::dot(dir, field->texel_center(i, j)));
             }
         // Local wavevector = k0 D + grad(residual), central differences over reached water.
-        auto& kx = out->kx_[w];
-        auto& kz = out->kz_[w];
-        auto& amp = out->amplitude_[w];
+        auto& kx = f.wavevector_x[w];
+        auto& kz = f.wavevector_z[w];
+        auto& amp = f.amplitude_factor[w];
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const std::size_t k = field->index(i, j);
@@ -140,67 +152,93 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
     });
 
     // Breaking (all waves together) and steepness, per texel.
-    out->breaking_.assign(count, 0.0f);
-    out->steepness_.assign(count, 1.0f);
+    f.breaking.assign(count, 0.0f);
+    f.steepness_scale.assign(count, 1.0f);
     const double cap_ratio = 0.5 * options.breaking_index;  // amplitude cap = index * h / 2
     for (std::size_t k = 0; k < count; ++k) {
-        const double h = static_cast<double>(out->depth_[k]);
+        const double h = static_cast<double>(f.depth[k]);
         // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
         // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
         double energy = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-            const double a = waves[w].amplitude * static_cast<double>(out->amplitude_[w][k]);
+            const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
             energy += a * a;
         }
         const double total = std::sqrt(energy);
         if (h <= 0.0) {
-            for (std::size_t w = 0; w < nw; ++w) out->amplitude_[w][k] = 0.0f;
+            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
             continue;
         }
         const double cap = cap_ratio * h;
         const double ratio = total > 0.0 ? total / cap : 0.0;
-        out->breaking_[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+        f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
         if (ratio > 1.0)
-            for (std::size_t w = 0; w < nw; ++w) out->amplitude_[w][k] = static_cast<float>(static_cast<double>(out->amplitude_[w][k]) / ratio);
+            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
         double fold = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-            const double kl = std::hypot(static_cast<double>(out->kx_[w][k]), static_cast<double>(out->kz_[w][k]));
-            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(out->amplitude_[w][k]);
+            const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
+            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
         }
-        if (fold > kMaxFold) out->steepness_[k] = static_cast<float>(kMaxFold / fold);
+        if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
     }
-    // Deep everywhere and no shore: the waves are exactly the open-ocean ones.
-    bool trivial = field->segment_count == 0;
-    for (std::size_t k = 0; k < count && trivial; ++k) {
-        trivial = out->depth_[k] > 0.0f && out->steepness_[k] == 1.0f && out->breaking_[k] == 0.0f;
-        for (std::size_t w = 0; w < nw && trivial; ++w)
-            trivial = out->residual_[w][k] == 0.0f && std::abs(out->amplitude_[w][k] - 1.0f) < 1e-3f;
+    out->trivial_ = all_deep_and_unchanged(f);
+    return std::shared_ptr<const ShoreWaves>(std::move(out));
+}
+
+Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::size_t wave_count) {
+    const int n = fields.resolution;
+    if (n < 2 || n > 8192) return Error{ErrorCode::invalid_argument, fmt::format("shore fields: resolution {} is out of range (2 to 8192)", n)};
+    if (!(fields.texel > 0.0) || !std::isfinite(fields.texel) || !std::isfinite(fields.corner.x) || !std::isfinite(fields.corner.y))
+        return Error{ErrorCode::invalid_argument, "shore fields: the texel size and corner must be finite (texel > 0)"};
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    auto check = [&](const std::vector<float>& grid, const std::string& name) -> Status {
+        if (grid.size() != count)
+            return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} has {} values, expected {}x{}", name, grid.size(), n, n)};
+        for (float v : grid)
+            if (!std::isfinite(v)) return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} has a non-finite value", name)};
+        return {};
+    };
+    const std::pair<const std::vector<std::vector<float>>*, const char*> per_wave[] = {
+        {&fields.phase_residual, "phase_residual"}, {&fields.amplitude_factor, "amplitude_factor"},
+        {&fields.wavevector_x, "wavevector_x"}, {&fields.wavevector_z, "wavevector_z"}};
+    for (const auto& [grids, name] : per_wave) {
+        if (grids->size() != wave_count)
+            return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} {} fields for {} waves", grids->size(), name, wave_count)};
+        for (std::size_t w = 0; w < grids->size(); ++w)
+            if (auto st = check((*grids)[w], fmt::format("wave {} {}", w, name)); !st) return st.error();
     }
-    out->trivial_ = trivial;
+    const std::pair<const std::vector<float>*, const char*> shared[] = {
+        {&fields.depth, "depth"}, {&fields.shore_distance, "shore_distance"}, {&fields.breaking, "breaking"},
+        {&fields.steepness_scale, "steepness_scale"}};
+    for (const auto& [grid, name] : shared)
+        if (auto st = check(*grid, name); !st) return st.error();
+    auto out = std::make_shared<ShoreWaves>();
+    out->trivial_ = all_deep_and_unchanged(fields);
+    out->f_ = std::move(fields);
     return std::shared_ptr<const ShoreWaves>(std::move(out));
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
-    const double u = std::clamp((p.x - corner_.x) / texel_ - 0.5, 0.0, n_ - 1.0);
-    const double v = std::clamp((p.y - corner_.y) / texel_ - 0.5, 0.0, n_ - 1.0);
-    const int i = std::min(static_cast<int>(u), n_ - 2), j = std::min(static_cast<int>(v), n_ - 2);
+    const double u = std::clamp((p.x - f_.corner.x) / f_.texel - 0.5, 0.0, f_.resolution - 1.0);
+    const double v = std::clamp((p.y - f_.corner.y) / f_.texel - 0.5, 0.0, f_.resolution - 1.0);
+    const int i = std::min(static_cast<int>(u), f_.resolution - 2), j = std::min(static_cast<int>(v), f_.resolution - 2);
     const double fu = u - i, fv = v - j;
-    const std::size_t k00 = static_cast<std::size_t>(j) * static_cast<std::size_t>(n_) + static_cast<std::size_t>(i);
-    const std::size_t k10 = k00 + 1, k01 = k00 + static_cast<std::size_t>(n_), k11 = k01 + 1;
+    const std::size_t k00 = static_cast<std::size_t>(j) * static_cast<std::size_t>(f_.resolution) + static_cast<std::size_t>(i);
+    const std::size_t k10 = k00 + 1, k01 = k00 + static_cast<std::size_t>(f_.resolution), k11 = k01 + 1;
     const double w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv), w01 = (1 - fu) * fv, w11 = fu * fv;
     auto lerp = [&](const std::vector<float>& f) {
         return w00 * static_cast<double>(f[k00]) + w10 * static_cast<double>(f[k10]) + w01 * static_cast<double>(f[k01]) +
                w11 * static_cast<double>(f[k11]);
     };
     LocalShore s;
-    s.depth = lerp(depth_);
-    s.shore_distance = lerp(distance_);
-    s.breaking = lerp(breaking_);
-    s.steepness_scale = lerp(steepness_);
-    for (std::size_t w = 0; w < waves.size() && w < residual_.size(); ++w) {
-        waves[w].phase_residual = lerp(residual_[w]);
-        waves[w].amplitude_factor = s.depth > 0.0 ? lerp(amplitude_[w]) : 0.0;
-        waves[w].wavevector = {lerp(kx_[w]), lerp(kz_[w])};
+    s.depth = lerp(f_.depth);
+    s.shore_distance = lerp(f_.shore_distance);
+    s.breaking = lerp(f_.breaking);
+    s.steepness_scale = lerp(f_.steepness_scale);
+    for (std::size_t w = 0; w < waves.size() && w < f_.phase_residual.size(); ++w) {
+        waves[w].phase_residual = lerp(f_.phase_residual[w]);
+        waves[w].amplitude_factor = s.depth > 0.0 ? lerp(f_.amplitude_factor[w]) : 0.0;
+        waves[w].wavevector = {lerp(f_.wavevector_x[w]), lerp(f_.wavevector_z[w])};
     }
     return s;
 }

@@ -1,0 +1,300 @@
+#include "tidewater/shore_bake_folder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "json_reader.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/image_io.hpp"
+
+namespace tidewater {
+
+namespace {
+
+namespace fs = std::filesystem;
+using detail::ObjectReader;
+
+constexpr const char* kSidecar = "shore.json";
+constexpr const char* kEncoding = "16-bit grey PNG, value = (pixel - zero_pixel) * step; image row j is texel row j (+z), "
+                                  "samples at texel centres";
+
+/// 16-bit encoding of a field: value = (pixel - zero) * step. 0 is exact whenever the
+/// range holds it, and every value in [lo, hi] is within step / 2.
+struct Encoding {
+    double step = 1.0;
+    std::int64_t zero = 0;
+
+    static Encoding covering(double lo, double hi) {
+        Encoding e;
+        e.step = hi > lo ? (hi - lo) / 65534.0 : std::max(std::abs(lo), 1.0) / 65534.0;
+        e.zero = std::llround(-lo / e.step);
+        return e;
+    }
+    std::uint16_t encode(double v) const {
+        return static_cast<std::uint16_t>(std::clamp<std::int64_t>(std::llround(v / step) + zero, 0, 65535));
+    }
+    double decode(std::uint16_t p) const { return static_cast<double>(static_cast<std::int64_t>(p) - zero) * step; }
+};
+
+/// Writes one field as a PNG; returns its sidecar entry.
+Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name, const std::vector<float>& values, int n,
+                                   const char* unit) {
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    const Encoding e = Encoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo), values.empty() ? 0.0 : static_cast<double>(*hi));
+    Gray16Image img;
+    img.width = img.height = n;
+    img.pixels.resize(values.size());
+    for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
+    const std::string file = name + ".png";
+    if (auto st = write_png_gray16(dir / file, img); !st) return st.error();
+    return nlohmann::json{{"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
+}
+
+Status write_text(const fs::path& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text << "\n";
+    out.close();
+    if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", path.string())};
+    return {};
+}
+
+/// Fills `temp` with the bake.
+Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
+    const ShoreWaveFields& f = c.model->fields();
+    const int n = f.resolution;
+    nlohmann::json model = {{"resolution", n}, {"texel_m", f.texel}, {"corner_m", {f.corner.x, f.corner.y}},
+                            {"size_m", f.texel * n}, {"breaking_index", c.breaking_index}};
+    const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> shared[] = {
+        {"depth", {&f.depth, "m"}}, {"shore_distance", {&f.shore_distance, "m"}}, {"breaking", {&f.breaking, "1"}},
+        {"steepness_scale", {&f.steepness_scale, "1"}}};
+    for (const auto& [name, field] : shared) {
+        auto entry = write_field(temp, name, *field.first, n, field.second);
+        if (!entry) return entry.error();
+        model["fields"][name] = *entry;
+    }
+    const auto waves = c.waves->waves();
+    model["waves"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < waves.size(); ++i) {
+        const Wave& w = waves[i];
+        nlohmann::json entry = {{"deep_water_wavelength_m", kTwoPi / w.k}, {"omega_rad_s", w.omega}, {"period_s", w.period()},
+                                {"direction", {w.dir_x, w.dir_z}}, {"amplitude_m", w.amplitude}, {"steepness", w.steepness}};
+        const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> per_wave[] = {
+            {"phase_residual", {&f.phase_residual[i], "rad"}}, {"amplitude_factor", {&f.amplitude_factor[i], "1"}},
+            {"wavevector_x", {&f.wavevector_x[i], "rad/m"}}, {"wavevector_z", {&f.wavevector_z[i], "rad/m"}}};
+        for (const auto& [name, field] : per_wave) {
+            auto e = write_field(temp, fmt::format("wave_{:02}_{}", i, name), *field.first, n, field.second);
+            if (!e) return e.error();
+            entry["fields"][name] = *e;
+        }
+        model["waves"].push_back(entry);
+    }
+    nlohmann::json sidecar = {{"version", kShoreBakeFormatVersion}, {"scene", c.scene_name}, {"water_level_m", c.water_level},
+                              {"encoding", kEncoding}, {"model", model}};
+    if (const ShoreField* d = c.distance_field) {
+        nlohmann::json dist = {{"resolution", d->resolution}, {"texel_m", d->texel}, {"corner_m", {d->corner.x, d->corner.y}},
+                               {"size_m", d->texel * d->resolution},
+                               {"shoreline", {{"file", "shorelines.json"}, {"segments", d->segment_count},
+                                              {"land_polygons", d->polygons}, {"enclosed_waters", d->holes},
+                                              {"simplify_tolerance_m", d->simplify_tolerance}}},
+                               {"notes", "exact distance to the simplified shoreline (CGAL): positive over water"}};
+        const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> fields[] = {
+            {"signed_distance", {&d->signed_distance, "m"}}, {"gradient_x", {&d->gradient_x, "1"}},
+            {"gradient_z", {&d->gradient_z, "1"}}, {"depth", {&d->depth, "m"}}};
+        for (const auto& [name, field] : fields) {
+            auto e = write_field(temp, fmt::format("distance_{}", name), *field.first, d->resolution, field.second);
+            if (!e) return e.error();
+            dist["fields"][name] = *e;
+        }
+        nlohmann::json lines = nlohmann::json::array();
+        for (const ShoreLine& l : d->shorelines) {
+            nlohmann::json pts = nlohmann::json::array();
+            for (const auto& p : l.points) pts.push_back({p.x, p.y});
+            lines.push_back({{"closed", l.closed}, {"points", pts}});
+        }
+        if (auto st = write_text(temp / "shorelines.json", lines.dump()); !st) return st;
+        sidecar["distance_field"] = dist;
+    }
+    return write_text(temp / kSidecar, sidecar.dump(2));
+}
+
+/// Reads a field's PNG and decodes it, checking its size.
+Result<std::vector<float>> read_field(const fs::path& dir, const ObjectReader& fields, std::string_view name, int n) {
+    if (!fields.has(name)) return fields.error(name, "is missing");
+    auto r = ObjectReader::open(fields.at(name), fields.source(), fields.child_path(name));
+    if (!r) return r.error();
+    std::string file;
+    if (auto st = r->string("file", file, true); !st) return st.error();
+    if (file.empty() || file.find('/') != std::string::npos || file.find('\\') != std::string::npos)
+        return r->error("file", "must be a file name inside the bake folder");
+    double step = 0.0, zero = 0.0;
+    if (auto st = r->number("step", step, true); !st) return st.error();
+    if (auto st = r->number("zero_pixel", zero, true); !st) return st.error();
+    if (!(step > 0.0) || !std::isfinite(step)) return r->error("step", "must be a finite number > 0");
+    if (zero != std::floor(zero) || std::abs(zero) > 1e15) return r->error("zero_pixel", "must be an integer");
+    auto img = read_png_gray16(dir / file);
+    if (!img) return img.error();
+    if (img->width != n || img->height != n)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: the image is {}x{}, the bake's resolution is {}x{}", (dir / file).string(), img->width, img->height, n, n)};
+    Encoding e;
+    e.step = step;
+    e.zero = static_cast<std::int64_t>(zero);
+    std::vector<float> values(img->pixels.size());
+    for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<float>(e.decode(img->pixels[k]));
+    return values;
+}
+
+/// The step of a field (for tolerances), read after read_field succeeded.
+double field_step(const ObjectReader& fields, std::string_view name) { return fields.at(name).at("step").get<double>(); }
+
+bool close(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+}  // namespace
+
+Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
+    if (!contents.model || !contents.waves)
+        return Error{ErrorCode::invalid_argument, "save_shore_bake: the model and its waves are required"};
+    if (contents.model->wave_count() != contents.waves->size())
+        return Error{ErrorCode::invalid_argument, fmt::format("save_shore_bake: the model has {} waves, the wave set {}",
+                                                              contents.model->wave_count(), contents.waves->size())};
+    if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "save_shore_bake: give a folder name"};
+    fs::path temp = dir;
+    temp += fmt::format(".tmp-{}", ::getpid());
+    std::error_code ec;
+    fs::remove_all(temp, ec);
+    fs::create_directories(temp, ec);
+    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", temp.string(), ec.message())};
+    struct Cleanup {
+        fs::path path;
+        bool keep = false;
+        ~Cleanup() {
+            std::error_code ignored;
+            if (!keep) fs::remove_all(path, ignored);
+        }
+    } cleanup{temp};
+    if (auto st = write_bake(temp, contents); !st) return st;
+    // Swap the finished folder into place; an old bake survives any failure.
+    fs::path old = dir;
+    old += fmt::format(".old-{}", ::getpid());
+    const bool had = fs::exists(dir, ec);
+    if (had) fs::rename(dir, old, ec);
+    if (!ec) fs::rename(temp, dir, ec);
+    if (ec) {
+        std::error_code ignored;
+        if (had && !fs::exists(dir, ignored)) fs::rename(old, dir, ignored);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot replace folder: {}", dir.string(), ec.message())};
+    }
+    cleanup.keep = true;
+    if (had) fs::remove_all(old, ec);
+    return {};
+}
+
+Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,
+                                                          const Terrain& terrain) {
+    const fs::path sidecar_path = dir / kSidecar;
+    auto text = detail::read_text_file(sidecar_path.string());
+    if (!text) return text.error();
+    auto doc = detail::parse_json_text(*text, sidecar_path.string());
+    if (!doc) return doc.error();
+    auto root = ObjectReader::open(*doc, sidecar_path.string(), "");
+    if (!root) return root.error();
+    std::int64_t version = 0;
+    if (auto st = root->integer("version", version, 1, 1000, true); !st) return st.error();
+    if (version != kShoreBakeFormatVersion)
+        return root->error("version", fmt::format("{} is not supported (this build reads version {})", version, kShoreBakeFormatVersion));
+    double level = 0.0;
+    if (auto st = root->number("water_level_m", level, true); !st) return st.error();
+    if (!close(level, water_level))
+        return root->error("water_level_m",
+                           fmt::format("the bake was made at water level {} m, the scene's is {} m: re-run tidewater bake", level, water_level));
+    if (!root->has("model")) return root->error("model", "is missing");
+    auto model = ObjectReader::open(root->at("model"), root->source(), "/model");
+    if (!model) return model.error();
+
+    ShoreWaveFields f;
+    std::int64_t n = 0;
+    if (auto st = model->integer("resolution", n, 2, 8192, true); !st) return st.error();
+    f.resolution = static_cast<int>(n);
+    if (auto st = model->number("texel_m", f.texel, true); !st) return st.error();
+    if (!model->has("corner_m") || !model->at("corner_m").is_array() || model->at("corner_m").size() != 2 ||
+        !model->at("corner_m")[0].is_number() || !model->at("corner_m")[1].is_number())
+        return model->error("corner_m", "expected [x, z] in metres");
+    f.corner = {model->at("corner_m")[0].get<double>(), model->at("corner_m")[1].get<double>()};
+    // The grid covers the terrain's extent, as a bake on load would.
+    const double half = terrain.extent_half_size();
+    const glm::dvec2 corner = terrain.extent_center() - glm::dvec2(half);
+    if (!close(f.texel * static_cast<double>(n), 2.0 * half) || !close(f.corner.x, corner.x) || !close(f.corner.y, corner.y))
+        return model->error("corner_m", fmt::format("the bake covers {} m from ({}, {}), the terrain {} m from ({}, {}): "
+                                                    "it was made for another terrain; re-run tidewater bake",
+                                                    f.texel * static_cast<double>(n), f.corner.x, f.corner.y, 2.0 * half, corner.x, corner.y));
+
+    // The waves must be the ones baked for: the fields depend on each one's frequency,
+    // direction, amplitude (breaking) and steepness (the fold limit).
+    if (!model->has("waves") || !model->at("waves").is_array()) return model->error("waves", "expected an array");
+    const auto& list = model->at("waves");
+    const auto set = waves.waves();
+    if (list.size() != set.size())
+        return model->error("waves", fmt::format("the bake has {} waves, the scene's ocean {}: re-run tidewater bake", list.size(), set.size()));
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        auto w = ObjectReader::open(list[i], model->source(), fmt::format("/model/waves/{}", i));
+        if (!w) return w.error();
+        double omega = 0.0, amplitude = 0.0, steepness = 0.0;
+        if (auto st = w->number("omega_rad_s", omega, true); !st) return st.error();
+        if (auto st = w->number("amplitude_m", amplitude, true); !st) return st.error();
+        if (auto st = w->number("steepness", steepness, true); !st) return st.error();
+        const auto& dir_json = w->has("direction") ? w->at("direction") : nlohmann::json();
+        if (!dir_json.is_array() || dir_json.size() != 2 || !dir_json[0].is_number() || !dir_json[1].is_number())
+            return w->error("direction", "expected [x, z]");
+        const Wave& s = set[i];
+        if (!close(omega, s.omega) || !close(amplitude, s.amplitude) || !close(steepness, s.steepness) ||
+            !close(dir_json[0].get<double>(), s.dir_x) || !close(dir_json[1].get<double>(), s.dir_z))
+            return w->error("", "differs from the scene's wave " + std::to_string(i) + ": the bake was made for other waves; re-run tidewater bake");
+        if (!w->has("fields")) return w->error("fields", "is missing");
+        auto fields = ObjectReader::open(w->at("fields"), w->source(), w->child_path("fields"));
+        if (!fields) return fields.error();
+        std::vector<float>* targets[] = {nullptr, nullptr, nullptr, nullptr};
+        f.phase_residual.emplace_back(), f.amplitude_factor.emplace_back(), f.wavevector_x.emplace_back(), f.wavevector_z.emplace_back();
+        targets[0] = &f.phase_residual.back(), targets[1] = &f.amplitude_factor.back();
+        targets[2] = &f.wavevector_x.back(), targets[3] = &f.wavevector_z.back();
+        const char* names[] = {"phase_residual", "amplitude_factor", "wavevector_x", "wavevector_z"};
+        for (int k = 0; k < 4; ++k) {
+            auto values = read_field(dir, *fields, names[k], f.resolution);
+            if (!values) return values.error();
+            *targets[k] = std::move(values).value();
+        }
+    }
+    if (!model->has("fields")) return model->error("fields", "is missing");
+    auto fields = ObjectReader::open(model->at("fields"), model->source(), "/model/fields");
+    if (!fields) return fields.error();
+    std::pair<const char*, std::vector<float>*> shared[] = {
+        {"depth", &f.depth}, {"shore_distance", &f.shore_distance}, {"breaking", &f.breaking}, {"steepness_scale", &f.steepness_scale}};
+    for (auto& [name, target] : shared) {
+        auto values = read_field(dir, *fields, name, f.resolution);
+        if (!values) return values.error();
+        *target = std::move(values).value();
+    }
+    // The terrain must be the one baked over: its depth at every texel, within the encoding.
+    const double tolerance = 0.51 * field_step(*fields, "depth") + 1e-3;
+    for (int j = 0; j < f.resolution; ++j)
+        for (int i = 0; i < f.resolution; ++i) {
+            const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
+            const double depth = water_level - terrain.height_at(p);
+            const double stored = static_cast<double>(f.depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(f.resolution) + static_cast<std::size_t>(i)]);
+            if (!(std::abs(depth - stored) <= tolerance))
+                return fields->error("depth", fmt::format("the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
+                                                          "the bake says {:.3f} m): re-run tidewater bake", depth, p.x, p.y, stored));
+        }
+    auto made = ShoreWaves::from_fields(std::move(f), set.size());
+    if (!made) {
+        Error e = std::move(made).error();
+        e.message = fmt::format("{}: {}", dir.string(), e.message);
+        return e;
+    }
+    return made;
+}
+
+}  // namespace tidewater

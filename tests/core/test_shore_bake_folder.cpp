@@ -1,0 +1,184 @@
+// Saved shore bakes: a model survives saving and loading within its 16-bit encoding,
+// bakes that do not fit the scene are refused, and an editor re-bakes with a call.
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "test_helpers.hpp"
+#include "tidewater/shore_bake_folder.hpp"
+
+namespace tidewater {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder under the system's temporary directory, removed afterwards.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() / ("tidewater_bake_test_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+};
+
+constexpr const char* kIslandScene = R"({"version": 1, "water_level": 0,
+    "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
+    "ocean": "ocean_rolling", "shore": {"resolution": 96}})";
+
+/// Largest |a - b| over a grid, and where it is relative to the grid's range.
+double worst_difference(const std::vector<float>& a, const std::vector<float>& b) {
+    double worst = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(double(a[k]) - double(b[k])));
+    return worst;
+}
+
+double half_step(const std::vector<float>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return 0.5 * (double(*hi) - double(*lo)) / 65534.0 + 1e-6 * std::max(std::abs(double(*lo)), std::abs(double(*hi)));
+}
+
+TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
+    TempDir dir;
+    auto scene = parse_scene(kIslandScene, "island");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ASSERT_TRUE(scene->ocean.shore());
+    const ShoreWaves& model = *scene->ocean.shore();
+    ShoreBakeContents contents;
+    contents.model = &model;
+    contents.waves = &scene->ocean.waves();
+    contents.water_level = scene->water_level;
+    contents.scene_name = "island";
+    const fs::path folder = dir.path / "bake";
+    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    EXPECT_TRUE(fs::exists(folder / "shore.json"));
+    EXPECT_FALSE(fs::exists(folder / "shorelines.json"));  // no distance field given
+
+    auto loaded = load_shore_bake(folder, scene->ocean.waves(), scene->water_level, scene->terrain);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    const ShoreWaves& back = **loaded;
+    ASSERT_EQ(back.resolution(), model.resolution());
+    EXPECT_DOUBLE_EQ(back.texel(), model.texel());
+    EXPECT_LE(worst_difference(back.depth(), model.depth()), half_step(model.depth()));
+    EXPECT_LE(worst_difference(back.breaking(), model.breaking()), half_step(model.breaking()));
+    for (std::size_t w = 0; w < model.wave_count(); ++w) {
+        EXPECT_LE(worst_difference(back.phase_residual(w), model.phase_residual(w)), half_step(model.phase_residual(w))) << w;
+        EXPECT_LE(worst_difference(back.amplitude_factor(w), model.amplitude_factor(w)), half_step(model.amplitude_factor(w))) << w;
+        EXPECT_LE(worst_difference(back.wavevector_x(w), model.wavevector_x(w)), half_step(model.wavevector_x(w))) << w;
+        // Offshore the residual is exactly 0 before and after: no seam where the fields end.
+        for (std::size_t k = 0; k < model.phase_residual(w).size(); ++k) {
+            if (model.phase_residual(w)[k] == 0.0f) {
+                ASSERT_EQ(back.phase_residual(w)[k], 0.0f) << w << " " << k;
+            }
+        }
+    }
+
+    // Queries over the island and its beaches agree within millimetres.
+    auto body = scene->ocean.with_shore(*loaded);
+    ASSERT_TRUE(body.ok());
+    std::vector<glm::dvec2> points;
+    for (int k = 0; k < 400; ++k) points.push_back({std::fmod(k * 37.3, 900.0) - 450.0, std::fmod(k * 53.9, 900.0) - 450.0});
+    std::vector<SurfacePoint> original(points.size()), reloaded(points.size());
+    ASSERT_TRUE(query_surface(scene->ocean, 4.2, points, original).ok());
+    ASSERT_TRUE(query_surface(*body, 4.2, points, reloaded).ok());
+    double worst = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) worst = std::max(worst, std::abs(original[k].height - reloaded[k].height));
+    std::printf("saved and loaded bake: worst height difference %.3f mm over %zu points\n", worst * 1e3, points.size());
+    EXPECT_LT(worst, 5e-3);
+}
+
+TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
+    TempDir dir;
+    auto scene = parse_scene(kIslandScene, "island");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ShoreBakeContents contents;
+    contents.model = scene->ocean.shore().get();
+    contents.waves = &scene->ocean.waves();
+    const fs::path folder = dir.path / "bake";
+    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    auto message = [&](const WaveSet& waves, double level, const Terrain& terrain) {
+        auto r = load_shore_bake(folder, waves, level, terrain);
+        return r.ok() ? std::string("loaded") : r.error().message;
+    };
+    EXPECT_NE(message(scene->ocean.waves(), 0.3, scene->terrain).find("/water_level_m"), std::string::npos);
+    auto lake = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -20}}, "ocean": "lake_rippled"})", "lake");
+    ASSERT_TRUE(lake.ok());
+    EXPECT_NE(message(lake->ocean.waves(), 0.0, scene->terrain).find("re-run tidewater bake"), std::string::npos);
+    IslandTerrain edited = std::get<IslandTerrain>(scene->terrain.shape());
+    edited.height = 45.0;  // an edit inside the same extent
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, Terrain(edited)).find("the terrain differs"), std::string::npos);
+
+    // A truncated sidecar, a missing field and an image of the wrong size name the file.
+    fs::copy_file(folder / "shore.json", dir.path / "shore.json.good");
+    { std::ofstream(folder / "shore.json") << R"({"version": 1, "water_level_m": )"; }
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("shore.json"), std::string::npos);
+    fs::copy_file(dir.path / "shore.json.good", folder / "shore.json", fs::copy_options::overwrite_existing);
+    fs::remove(folder / "breaking.png");
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("breaking.png"), std::string::npos);
+    Gray16Image small;
+    small.width = small.height = 8;
+    small.pixels.assign(64, 0);
+    ASSERT_TRUE(write_png_gray16(folder / "breaking.png", small).ok());
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("8x8"), std::string::npos);
+    EXPECT_FALSE(load_shore_bake(dir.path / "nowhere", scene->ocean.waves(), 0.0, scene->terrain).ok());
+
+    // Saving where no folder can be made fails and leaves nothing behind.
+    { std::ofstream(dir.path / "plain") << "x"; }
+    EXPECT_FALSE(save_shore_bake(dir.path / "plain" / "bake", contents).ok());
+    for (const auto& e : fs::directory_iterator(dir.path))
+        EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(ShoreBakeFolder, EditorRebakesAfterATerrainEdit) {
+    // Deep water everywhere: no shore model.
+    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling",
+                                 "shore": {"resolution": 64}})",
+                             "edit");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_FALSE(scene->ocean.shore());
+    // The editor raises an island and re-bakes: the waves now stop on its land.
+    IslandTerrain island;
+    island.radius = 300.0;
+    island.height = 40.0;
+    island.seabed = -30.0;
+    scene->terrain = Terrain(island);
+    ASSERT_TRUE(bake_scene_shore(*scene).ok());
+    ASSERT_TRUE(scene->ocean.shore());
+    std::vector<glm::dvec2> centre{{0.0, 0.0}};
+    std::vector<SurfacePoint> out(1);
+    ASSERT_TRUE(query_surface(scene->ocean, 3.0, centre, out).ok());
+    EXPECT_NEAR(out[0].height, 0.0, 1e-9);  // dry land: nothing moves
+    // Turning the shore off removes the model; a failed re-bake leaves the scene as it was.
+    scene->shore.enabled = false;
+    ASSERT_TRUE(bake_scene_shore(*scene).ok());
+    EXPECT_FALSE(scene->ocean.shore());
+    scene->shore.enabled = true;
+    scene->shore.options.resolution = 3;
+    EXPECT_FALSE(bake_scene_shore(*scene).ok());
+    EXPECT_FALSE(scene->ocean.shore());
+}
+
+TEST(ShoreBakeFolder, ModelFromFieldsChecksSizesAndValues) {
+    ShoreWaveFields f;
+    f.resolution = 4;
+    f.texel = 1.0;
+    const std::vector<float> grid(16, 1.0f);
+    f.depth = f.shore_distance = f.breaking = f.steepness_scale = grid;
+    f.phase_residual = f.amplitude_factor = f.wavevector_x = f.wavevector_z = {grid};
+    EXPECT_TRUE(ShoreWaves::from_fields(f, 1).ok());
+    EXPECT_FALSE(ShoreWaves::from_fields(f, 2).ok());
+    ShoreWaveFields short_grid = f;
+    short_grid.depth.resize(15);
+    EXPECT_NE(ShoreWaves::from_fields(short_grid, 1).error().message.find("depth"), std::string::npos);
+    ShoreWaveFields nan = f;
+    nan.phase_residual[0][3] = std::nanf("");
+    EXPECT_NE(ShoreWaves::from_fields(nan, 1).error().message.find("non-finite"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tidewater
