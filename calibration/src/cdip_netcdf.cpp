@@ -1,0 +1,168 @@
+// CDIP netCDF-4 buoy files (the only translation unit that includes netCDF).
+#include <netcdf.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+
+#include "tidewater/calibration/readers.hpp"
+
+namespace tidewater::calibration {
+
+namespace {
+
+class NcFile {
+public:
+    explicit NcFile(const std::filesystem::path& path) : name_(path.string()) { status_ = nc_open(name_.c_str(), NC_NOWRITE, &id_); }
+    ~NcFile() {
+        if (status_ == NC_NOERR) nc_close(id_);
+    }
+    NcFile(const NcFile&) = delete;
+    NcFile& operator=(const NcFile&) = delete;
+
+    Status opened() const {
+        if (status_ == NC_NOERR) return {};
+        return Error{ErrorCode::io_error, fmt::format("{}: not a readable netCDF file ({})", name_, nc_strerror(status_))};
+    }
+    Result<int> group(const char* name) const {
+        int g = 0;
+        if (nc_inq_grp_ncid(id_, name, &g) != NC_NOERR)
+            return Error{ErrorCode::schema_error, fmt::format("{}: no {} group (CDIP buoy files keep displacements in XYZ and "
+                                                              "spectra in Wave)", name_, name)};
+        return g;
+    }
+    /// A whole variable of `group` as doubles, with its length.
+    Result<std::vector<double>> doubles(int g, const char* group, const char* var) const {
+        int v = 0;
+        if (nc_inq_varid(g, var, &v) != NC_NOERR)
+            return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} is missing", name_, group, var)};
+        int dims = 0;
+        nc_inq_varndims(g, v, &dims);
+        std::size_t count = 1;
+        if (dims > 0) {
+            std::vector<int> ids(static_cast<std::size_t>(dims));
+            nc_inq_vardimid(g, v, ids.data());
+            for (int id : ids) {
+                std::size_t len = 0;
+                nc_inq_dimlen(g, id, &len);
+                count *= len;
+            }
+        }
+        std::vector<double> out(count);
+        if (count > 0 && nc_get_var_double(g, v, out.data()) != NC_NOERR)
+            return Error{ErrorCode::io_error, fmt::format("{}: {}/{} cannot be read as numbers", name_, group, var)};
+        return out;
+    }
+    /// The epoch of a "UNIT since YYYY-MM-DD HH:MM:SS[.f]" units attribute: seconds since 1970 and seconds per unit.
+    Result<std::pair<double, double>> time_units(int g, const char* group, const char* var) const {
+        int v = 0;
+        std::size_t len = 0;
+        if (nc_inq_varid(g, var, &v) != NC_NOERR || nc_inq_attlen(g, v, "units", &len) != NC_NOERR || len > 200)
+            return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} has no time units", name_, group, var)};
+        std::string units(len, '\0');
+        nc_get_att_text(g, v, "units", units.data());
+        char unit[32] = {0};
+        int y = 0, mo = 0, d = 0, h = 0, mi = 0;
+        double s = 0.0;
+        if (std::sscanf(units.c_str(), "%31s since %d-%d-%d %d:%d:%lf", unit, &y, &mo, &d, &h, &mi, &s) != 7)
+            return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} units \"{}\" are not \"UNIT since DATE TIME\"", name_, group, var, units)};
+        const std::string u = unit;
+        const double scale = u == "nanoseconds" ? 1e-9 : u == "seconds" ? 1.0 : u == "minutes" ? 60.0 : u == "hours" ? 3600.0 : u == "days" ? 86400.0 : 0.0;
+        if (scale == 0.0) return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} has unknown time unit \"{}\"", name_, group, var, u)};
+        using namespace std::chrono;
+        const sys_days date{year{y} / month{static_cast<unsigned>(mo)} / day{static_cast<unsigned>(d)}};
+        const double epoch = static_cast<double>(date.time_since_epoch().count()) * 86400.0 + h * 3600.0 + mi * 60.0 + s;
+        return std::pair{epoch, scale};
+    }
+    const std::string& name() const { return name_; }
+
+private:
+    std::string name_;
+    int id_ = 0;
+    int status_ = NC_NOERR;
+};
+
+}  // namespace
+
+Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double start_utc_s, double end_utc_s) {
+    NcFile nc(path);
+    if (auto st = nc.opened(); !st) return st.error();
+    auto g = nc.group("XYZ");
+    if (!g) return g.error();
+    auto north = nc.doubles(*g, "XYZ", "x");  // CDIP's x is north, y west (PROVENANCE.md's cross-phase check)
+    if (!north) return north.error();
+    auto west = nc.doubles(*g, "XYZ", "y");
+    if (!west) return west.error();
+    auto z = nc.doubles(*g, "XYZ", "z");
+    if (!z) return z.error();
+    auto flags = nc.doubles(*g, "XYZ", "FlagPrimary");
+    if (!flags) return flags.error();
+    auto t = nc.doubles(*g, "XYZ", "t");
+    if (!t) return t.error();
+    auto units = nc.time_units(*g, "XYZ", "t");
+    if (!units) return units.error();
+    auto delay = nc.doubles(*g, "XYZ", "FilterDelay");
+    if (!delay) return delay.error();
+    const std::size_t n = z->size();
+    if (north->size() != n || west->size() != n || flags->size() != n || t->size() != n)
+        return Error{ErrorCode::schema_error, fmt::format("{}: XYZ variables have different lengths", nc.name())};
+    const double filter_delay = delay->empty() ? 0.0 : delay->front();
+    const bool window = end_utc_s > start_utc_s && start_utc_s >= 0.0;
+    MeasuredRecord r;
+    r.kind = RecordKind::buoy;
+    r.source = nc.name();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double when = units->first + (*t)[k] * units->second - filter_delay;  // true sample time
+        if (window && (when < start_utc_s || when >= end_utc_s)) continue;
+        if ((*flags)[k] != 1.0 && (*flags)[k] != 2.0) {  // 1 good, 2 not evaluated (real time); 9 missing
+            ++r.skipped_flagged;
+            continue;
+        }
+        if (!std::isfinite((*z)[k]) || (*z)[k] <= -999.0 || (*north)[k] <= -999.0 || (*west)[k] <= -999.0) {
+            ++r.skipped_missing;
+            continue;
+        }
+        r.axis.push_back(when);
+        r.z.push_back((*z)[k]);
+        r.north.push_back((*north)[k]);
+        r.east.push_back(-(*west)[k]);
+    }
+    if (r.axis.empty())
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: no usable XYZ samples{} ({} flagged, {} missing)", nc.name(),
+                                                              window ? " in the time window" : "", r.skipped_flagged, r.skipped_missing)};
+    r.axis_origin = r.axis.front();
+    for (double& a : r.axis) a -= r.axis_origin;
+    if (auto st = validate_record(r); !st) return st.error();
+    return r;
+}
+
+Result<std::vector<CdipWaveSummary>> read_cdip_wave_summaries(const std::filesystem::path& path) {
+    NcFile nc(path);
+    if (auto st = nc.opened(); !st) return st.error();
+    auto g = nc.group("Wave");
+    if (!g) return g.error();
+    auto hs = nc.doubles(*g, "Wave", "Hs");
+    if (!hs) return hs.error();
+    auto tp = nc.doubles(*g, "Wave", "Tp");
+    if (!tp) return tp.error();
+    auto dp = nc.doubles(*g, "Wave", "Dp");
+    if (!dp) return dp.error();
+    auto bounds = nc.doubles(*g, "Wave", "TimeBounds");
+    if (!bounds) return bounds.error();
+    auto units = nc.time_units(*g, "Wave", "TimeBounds");
+    if (!units) return units.error();
+    if (tp->size() != hs->size() || dp->size() != hs->size() || bounds->size() != 2 * hs->size())
+        return Error{ErrorCode::schema_error, fmt::format("{}: Wave variables have different lengths", nc.name())};
+    std::vector<CdipWaveSummary> out(hs->size());
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        out[k].hs = (*hs)[k];
+        out[k].tp = (*tp)[k];
+        out[k].dp = (*dp)[k];
+        out[k].start_utc_s = units->first + (*bounds)[2 * k] * units->second;
+        out[k].end_utc_s = units->first + (*bounds)[2 * k + 1] * units->second;
+    }
+    return out;
+}
+
+}  // namespace tidewater::calibration

@@ -1,0 +1,435 @@
+// The phase-resolved fit (Ceres, automatic differentiation).
+#include <ceres/ceres.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <fmt/format.h>
+#include <thread>
+
+#include "tidewater/calibration/phase_fit.hpp"
+#include "tidewater/calibration/readers.hpp"
+#include "tidewater/constants.hpp"
+
+namespace tidewater::calibration {
+
+namespace {
+
+constexpr double kFoldLimit = 0.95;  // sum(Q k A), as the runtime's shore steepness cap
+constexpr std::size_t kChunk = 32;   // samples per residual block
+
+double scalar(double v) { return v; }
+template <typename T, int N>
+double scalar(const ceres::Jet<T, N>& v) {
+    return v.a;
+}
+
+/// Parameters per wave: amplitude, omega (profile: k), phase, Q, and for a buoy the direction.
+int stride(RecordKind kind) { return kind == RecordKind::buoy ? 5 : 4; }
+
+/// Finite-depth wavenumber; derivatives through one Newton step from the converged value.
+template <typename T>
+T wavenumber(const T& omega, double depth) {
+    using std::tanh;
+    if (!std::isfinite(depth)) return omega * omega / kGravity;
+    const double w = scalar(omega);
+    double k = std::max(w * w / kGravity, w / std::sqrt(kGravity * depth));
+    for (int it = 0; it < 50; ++it) {
+        const double t = std::tanh(k * depth);
+        const double f = kGravity * k * t - w * w;
+        const double df = kGravity * (t + k * depth * (1.0 - t * t));
+        const double step = f / df;
+        k -= step;
+        if (std::abs(step) < 1e-14 * k) break;
+    }
+    const double t = std::tanh(k * depth);
+    const double df = kGravity * (t + k * depth * (1.0 - t * t));
+    return T(k) - (T(kGravity * k * t) - omega * omega) / df;
+}
+
+/// The Gerstner model at one sample.
+struct Model {
+    RecordKind kind;
+    double depth;
+    int waves;
+
+    /// Solves alpha + sum Q A cos(k alpha + c) = target for the Eulerian records; returns z.
+    template <typename T>
+    T eulerian(const T* p, double axis) const {
+        using std::cos;
+        using std::sin;
+        const auto m = static_cast<std::size_t>(stride(kind));
+        const auto n = static_cast<std::size_t>(waves);
+        // Per wave: k and the phase part that does not depend on alpha.
+        std::array<T, 64> k, c;
+        for (std::size_t i = 0; i < n; ++i) {
+            const T* w = p + m * i;
+            if (kind == RecordKind::profile) {
+                k[i] = w[1];
+                c[i] = w[2];
+            } else {
+                k[i] = wavenumber(w[1], depth);
+                c[i] = w[2] - w[1] * axis;
+            }
+        }
+        const double target = kind == RecordKind::profile ? axis : 0.0;
+        // Newton on the values, then one step with T for exact first derivatives.
+        double a = target;
+        for (int it = 0; it < 40; ++it) {
+            double f = a - target, df = 1.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const T* w = p + m * i;
+                const double qa = scalar(w[3]) * scalar(w[0]), th = scalar(k[i]) * a + scalar(c[i]);
+                f += qa * std::cos(th);
+                df -= qa * scalar(k[i]) * std::sin(th);
+            }
+            const double step = df > 0.05 ? f / df : f;  // fixed-point step where the map folds
+            a -= step;
+            if (std::abs(step) < 1e-12) break;
+        }
+        T f = T(a - target), df = T(1.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const T* w = p + m * i;
+            const T th = k[i] * a + c[i];
+            f += w[3] * w[0] * cos(th);
+            df -= w[3] * w[0] * k[i] * sin(th);
+        }
+        const double slope = scalar(df) > 0.05 ? scalar(df) : 1.0;
+        const T alpha = T(a) - f / slope;
+        T z(0.0);
+        for (std::size_t i = 0; i < n; ++i) z += p[m * i] * sin(k[i] * alpha + c[i]);
+        return z;
+    }
+
+    /// Heave, east and north of the buoy at rest position 0.
+    template <typename T>
+    void lagrangian(const T* p, double t, T* out) const {
+        using std::cos;
+        using std::sin;
+        const auto n = static_cast<std::size_t>(waves);
+        out[0] = out[1] = out[2] = T(0.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const T* w = p + 5 * i;
+            const T th = w[2] - w[1] * t;
+            const T horizontal = w[3] * w[0] * cos(th);
+            out[0] += w[0] * sin(th);
+            out[1] += horizontal * cos(w[4]);
+            out[2] += horizontal * sin(w[4]);
+        }
+    }
+};
+
+/// Residuals of a chunk of samples.
+struct ChunkResiduals {
+    Model model;
+    const MeasuredRecord* record;
+    std::size_t first, count;
+
+    template <typename T>
+    bool operator()(T const* const* parameters, T* residuals) const {
+        const T* p = parameters[0];
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::size_t s = first + j;
+            if (model.kind == RecordKind::buoy) {
+                T out[3];
+                model.lagrangian(p, record->axis[s], out);
+                residuals[3 * j] = out[0] - record->z[s];
+                residuals[3 * j + 1] = out[1] - record->east[s];
+                residuals[3 * j + 2] = out[2] - record->north[s];
+            } else {
+                residuals[j] = model.eulerian(p, record->axis[s]) - record->z[s];
+            }
+        }
+        return true;
+    }
+};
+
+/// Pushes sum(Q k A) back under the fold limit.
+struct FoldPenalty {
+    Model model;
+    double weight;
+
+    template <typename T>
+    bool operator()(T const* const* parameters, T* residual) const {
+        const T* p = parameters[0];
+        const int m = stride(model.kind);
+        T sum(0.0);
+        for (int i = 0; i < model.waves; ++i) {
+            const T* w = p + m * i;
+            const T k = model.kind == RecordKind::profile ? w[1] : wavenumber(w[1], model.depth);
+            sum += w[3] * k * w[0];
+        }
+        residual[0] = scalar(sum) > kFoldLimit ? (sum - kFoldLimit) * weight : T(0.0);
+        return true;
+    }
+};
+
+struct Peak {
+    double frequency;  // rad per unit of the axis (omega, or k for a profile)
+    double power;
+};
+
+/// The strongest `count` local maxima of the periodogram of z (works with gaps and uneven spacing).
+std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
+    const double span = r.axis.back() - r.axis.front();
+    const double spacing = r.median_spacing();
+    const double w_min = kTwoPi / span, w_max = kPi / spacing;
+    const double dw = w_min / 4.0;  // 4x oversampled
+    const auto bins = static_cast<std::size_t>((w_max - w_min) / dw) + 1;
+    std::vector<std::complex<double>> sum(bins, 0.0);
+    double mean = 0.0;
+    for (double v : r.z) mean += v;
+    mean /= static_cast<double>(r.size());
+    for (std::size_t s = 0; s < r.size(); ++s) {
+        const double a = r.axis[s];
+        std::complex<double> phasor = std::polar(1.0, -w_min * a);
+        const std::complex<double> step = std::polar(1.0, -dw * a);
+        const double v = r.z[s] - mean;
+        for (std::size_t b = 0; b < bins; ++b) {
+            sum[b] += v * phasor;
+            phasor *= step;
+        }
+    }
+    std::vector<Peak> peaks;
+    for (std::size_t b = 0; b < bins; ++b) {
+        const double p = std::norm(sum[b]);
+        if ((b == 0 || p >= std::norm(sum[b - 1])) && (b + 1 == bins || p > std::norm(sum[b + 1])))
+            peaks.push_back({w_min + dw * static_cast<double>(b), p});
+    }
+    std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.power > b.power; });
+    if (peaks.size() > static_cast<std::size_t>(count)) peaks.resize(static_cast<std::size_t>(count));
+    return peaks;
+}
+
+/// Initial parameters: linear least squares of sines and cosines at the peak frequencies.
+std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vector<Peak>& peaks) {
+    const int n = static_cast<int>(peaks.size()), m = stride(r.kind);
+    const auto rows = static_cast<Eigen::Index>(r.size());
+    Eigen::MatrixXd design(rows, 2 * n);
+    for (Eigen::Index s = 0; s < rows; ++s)
+        for (int i = 0; i < n; ++i) {
+            const double th = peaks[static_cast<std::size_t>(i)].frequency * r.axis[static_cast<std::size_t>(s)];
+            design(s, 2 * i) = std::cos(th);
+            design(s, 2 * i + 1) = std::sin(th);
+        }
+    auto solve = [&](const std::vector<double>& v) {
+        const Eigen::Map<const Eigen::VectorXd> rhs(v.data(), rows);
+        return Eigen::VectorXd(design.colPivHouseholderQr().solve(rhs));
+    };
+    const Eigen::VectorXd cz = solve(r.z);
+    Eigen::VectorXd ce, cn;
+    if (r.kind == RecordKind::buoy) ce = solve(r.east), cn = solve(r.north);
+    std::vector<double> p(static_cast<std::size_t>(m * n), 0.0);
+    for (int i = 0; i < n; ++i) {
+        double* w = p.data() + m * i;
+        const double a = cz(2 * i), b = cz(2 * i + 1);
+        w[0] = std::hypot(a, b);
+        w[1] = peaks[static_cast<std::size_t>(i)].frequency;
+        // gauge/buoy: A sin(phase - omega t) = A sin(phase) cos - A cos(phase) sin; profile: A sin(k x + phase).
+        w[2] = r.kind == RecordKind::profile ? std::atan2(a, b) : std::atan2(a, -b);
+        w[3] = 0.3;
+        if (r.kind == RecordKind::buoy) {
+            const double cp = std::cos(w[2]), sp = std::sin(w[2]);
+            const double he = ce(2 * i) * cp + ce(2 * i + 1) * sp, hn = cn(2 * i) * cp + cn(2 * i + 1) * sp;
+            w[3] = w[0] > 0.0 ? std::clamp(std::hypot(he, hn) / w[0], 0.0, 1.0) : 0.0;
+            w[4] = std::atan2(hn, he);
+        }
+    }
+    return p;
+}
+
+struct Solved {
+    std::vector<double> p;
+    double rss = 0.0;
+    int iterations = 0;
+    bool converged = false;
+    std::unique_ptr<ceres::Problem> problem;
+};
+
+Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const PhaseFitOptions& o, double huber) {
+    const Model model{r.kind, r.depth, waves};
+    const int m = stride(r.kind);
+    auto problem = std::make_unique<ceres::Problem>();
+    const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
+    for (std::size_t first = 0; first < r.size(); first += kChunk) {
+        const std::size_t count = std::min(kChunk, r.size() - first);
+        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 8>(new ChunkResiduals{model, &r, first, count});
+        cost->AddParameterBlock(m * waves);
+        cost->SetNumResiduals(static_cast<int>(count) * per_sample);
+        problem->AddResidualBlock(cost, huber > 0.0 ? new ceres::HuberLoss(huber) : nullptr, p.data());
+    }
+    double scale = 0.0;
+    for (double v : r.z) scale = std::max(scale, std::abs(v));
+    auto* fold = new ceres::DynamicAutoDiffCostFunction<FoldPenalty, 8>(new FoldPenalty{model, 100.0 * scale * std::sqrt(double(r.size()))});
+    fold->AddParameterBlock(m * waves);
+    fold->SetNumResiduals(1);
+    problem->AddResidualBlock(fold, nullptr, p.data());
+    for (int i = 0; i < waves; ++i) {
+        const double w0 = p[static_cast<std::size_t>(m * i + 1)];
+        problem->SetParameterLowerBound(p.data(), m * i, 0.0);
+        problem->SetParameterUpperBound(p.data(), m * i, 4.0 * scale + 1e-9);
+        problem->SetParameterLowerBound(p.data(), m * i + 1, 0.8 * w0);
+        problem->SetParameterUpperBound(p.data(), m * i + 1, 1.25 * w0);
+        problem->SetParameterLowerBound(p.data(), m * i + 3, 0.0);
+        problem->SetParameterUpperBound(p.data(), m * i + 3, 1.0);
+    }
+    ceres::Solver::Options options;
+    options.max_num_iterations = o.max_iterations;
+    options.num_threads = static_cast<int>(o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads);
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.logging_type = ceres::SILENT;
+    options.function_tolerance = 1e-10;
+    options.parameter_tolerance = 1e-10;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, problem.get(), &summary);
+    Solved out;
+    out.iterations = static_cast<int>(summary.iterations.size());
+    out.converged = summary.termination_type == ceres::CONVERGENCE;
+    // Plain residual sum of squares of the elevation (not the robust cost).
+    const Model plain{r.kind, r.depth, waves};
+    for (std::size_t s = 0; s < r.size(); ++s) {
+        double z = 0.0;
+        if (r.kind == RecordKind::buoy) {
+            double o3[3];
+            plain.lagrangian(p.data(), r.axis[s], o3);
+            z = o3[0];
+        } else {
+            z = plain.eulerian(p.data(), r.axis[s]);
+        }
+        out.rss += (z - r.z[s]) * (z - r.z[s]);
+    }
+    out.p = std::move(p);
+    out.problem = std::move(problem);
+    return out;
+}
+
+double wrap(double a) {
+    a = std::fmod(a, kTwoPi);
+    return a < 0.0 ? a + kTwoPi : a;
+}
+
+}  // namespace
+
+double FittedWave::period() const { return omega > 0.0 ? kTwoPi / omega : 0.0; }
+
+Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = validate_record(r); !st) return st.error();
+    if (o.waves < 0 || o.waves > 64 || o.max_waves < 1 || o.max_waves > 64)
+        return Error{ErrorCode::invalid_argument, fmt::format("wave count {} / max {} out of range (1 to 64)", o.waves, o.max_waves)};
+    if (!(r.depth > 0.0)) return Error{ErrorCode::invalid_argument, fmt::format("{}: depth must be > 0 m", r.source)};
+    const int m = stride(r.kind);
+    const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
+    const auto n_res = static_cast<double>(r.size() * static_cast<std::size_t>(per_sample));
+    const int sample_limit = static_cast<int>(r.size() * static_cast<std::size_t>(per_sample)) / (2 * m);
+    if (o.waves > sample_limit)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: {} waves need at least {} samples, the record has {}", r.source, o.waves, 2 * m * o.waves, r.size())};
+    const int top = o.waves > 0 ? o.waves : std::min(o.max_waves, sample_limit);
+    if (top < 1) return Error{ErrorCode::invalid_argument, fmt::format("{}: too few samples for one wave", r.source)};
+    const std::vector<Peak> peaks = spectral_peaks(r, top);
+    if (peaks.empty()) return Error{ErrorCode::invalid_argument, fmt::format("{}: the record has no spectral peak", r.source)};
+
+    // Huber scale from the linear fit's residuals (robust spread).
+    double tss = 0.0, mean = 0.0;
+    for (double v : r.z) mean += v;
+    mean /= static_cast<double>(r.size());
+    for (double v : r.z) tss += (v - mean) * (v - mean);
+
+    std::vector<int> ladder;
+    if (o.waves > 0) {
+        ladder = {std::min<int>(o.waves, static_cast<int>(peaks.size()))};
+    } else {
+        for (int n : {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64})
+            if (n <= static_cast<int>(peaks.size())) ladder.push_back(n);
+    }
+    PhaseFit out;
+    Solved best;
+    double best_bic = INFINITY;
+    int best_n = 0, worse = 0;
+    for (int n : ladder) {
+        std::vector<Peak> use(peaks.begin(), peaks.begin() + n);
+        std::vector<double> p0 = initial_parameters(r, use);
+        const double huber = 3.0 * std::sqrt(tss / static_cast<double>(r.size()));
+        Solved s = solve(r, std::move(p0), n, o, huber);
+        const double bic = n_res * std::log(std::max(s.rss, 1e-300) / n_res) + m * n * std::log(n_res);
+        out.bic.push_back({n, bic});
+        if (o.progress) o.progress(fmt::format("fit: {} waves, R^2 {:.4f}, BIC {:.1f}, {} iterations", n, 1.0 - s.rss / tss, bic, s.iterations));
+        if (bic < best_bic) {
+            best_bic = bic, best_n = n, best = std::move(s), worse = 0;
+        } else if (++worse >= 2) {
+            break;
+        }
+    }
+
+    // Uncertainties from Ceres' covariance of the chosen fit.
+    std::vector<double> sigma(best.p.size(), -1.0);
+    {
+        ceres::Covariance::Options co;
+        co.algorithm_type = ceres::DENSE_SVD;
+        co.null_space_rank = -1;
+        co.num_threads = 1;
+        ceres::Covariance covariance(co);
+        const double* block = best.p.data();
+        std::vector<std::pair<const double*, const double*>> blocks{{block, block}};
+        if (covariance.Compute(blocks, best.problem.get())) {
+            std::vector<double> c(best.p.size() * best.p.size());
+            if (covariance.GetCovarianceBlock(block, block, c.data()))
+                for (std::size_t k = 0; k < best.p.size(); ++k) sigma[k] = std::sqrt(std::max(0.0, c[k * best.p.size() + k]));
+        }
+    }
+    const Model model{r.kind, r.depth, best_n};
+    out.model_z.resize(r.size());
+    double rss_h = 0.0, tss_h = 0.0, me = 0.0, mn = 0.0;
+    if (r.kind == RecordKind::buoy) {
+        for (std::size_t s = 0; s < r.size(); ++s) me += r.east[s], mn += r.north[s];
+        me /= static_cast<double>(r.size()), mn /= static_cast<double>(r.size());
+    }
+    for (std::size_t s = 0; s < r.size(); ++s) {
+        if (r.kind == RecordKind::buoy) {
+            double o3[3];
+            model.lagrangian(best.p.data(), r.axis[s], o3);
+            out.model_z[s] = o3[0];
+            rss_h += (o3[1] - r.east[s]) * (o3[1] - r.east[s]) + (o3[2] - r.north[s]) * (o3[2] - r.north[s]);
+            tss_h += (r.east[s] - me) * (r.east[s] - me) + (r.north[s] - mn) * (r.north[s] - mn);
+        } else {
+            out.model_z[s] = model.eulerian(best.p.data(), r.axis[s]);
+        }
+    }
+    out.rmse = std::sqrt(best.rss / static_cast<double>(r.size()));
+    out.r2 = 1.0 - best.rss / tss;
+    out.horizontal_r2 = tss_h > 0.0 ? 1.0 - rss_h / tss_h : 0.0;
+    out.iterations = best.iterations;
+    out.converged = best.converged;
+    for (int i = 0; i < best_n; ++i) {
+        const double* w = best.p.data() + m * i;
+        const double* sg = sigma.data() + m * i;
+        FittedWave f;
+        f.amplitude = w[0];
+        f.phase = wrap(w[2]);
+        f.steepness = w[3];
+        if (r.kind == RecordKind::profile) {
+            f.k = w[1];
+            f.omega = std::isfinite(r.depth) ? std::sqrt(kGravity * f.k * std::tanh(f.k * r.depth)) : std::sqrt(kGravity * f.k);
+        } else {
+            f.omega = w[1];
+            f.k = wavenumber(w[1], r.depth);
+        }
+        f.direction_deg = r.kind == RecordKind::buoy ? wrap(w[4]) * 180.0 / kPi : 0.0;
+        f.amplitude_sigma = sg[0];
+        if (sg[1] >= 0.0) f.period_sigma = r.kind == RecordKind::profile ? -1.0 : kTwoPi / (w[1] * w[1]) * sg[1];
+        f.phase_sigma = sg[2];
+        f.steepness_sigma = sg[3];
+        if (r.kind == RecordKind::buoy && sg[4] >= 0.0) f.direction_sigma_deg = sg[4] * 180.0 / kPi;
+        // A wave with no amplitude has no phase: flip to keep A >= 0 (bounds already do).
+        out.waves.push_back(f);
+    }
+    std::sort(out.waves.begin(), out.waves.end(), [](const FittedWave& a, const FittedWave& b) { return a.amplitude > b.amplitude; });
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+}  // namespace tidewater::calibration

@@ -1,0 +1,112 @@
+// The JONSWAP fit (Ceres, automatic differentiation). The fitted curve keeps the
+// record's energy: Hs is the measured 4 sqrt(m0) over the band, and Ceres fits the
+// shape (Tp, gamma) by least squares on the density.
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <memory>
+
+#include "tidewater/calibration/spectrum.hpp"
+
+namespace tidewater::calibration {
+
+namespace {
+
+double scalar(double v) { return v; }
+template <typename T, int N>
+double scalar(const ceres::Jet<T, N>& v) {
+    return v.a;
+}
+
+template <typename T>
+T jonswap_shape(double f, const T& tp, const T& gamma) {
+    const T fp = 1.0 / tp;
+    const double sigma = f <= 1.0 / scalar(tp) ? 0.07 : 0.09;
+    const T x = (f - fp) / (sigma * fp);
+    const T r = exp(-0.5 * x * x);
+    const T tf = tp * f;
+    return std::pow(f, -5.0) * exp(-1.25 / (tf * tf * tf * tf)) * exp(r * log(gamma));
+}
+
+/// Residuals over the band: (m0 shape_i / sum_j shape_j df - S_i) / S_peak.
+struct ShapeResiduals {
+    std::vector<double> f, s;
+    double df = 0.0, m0 = 0.0, peak = 1.0;
+
+    template <typename T>
+    bool operator()(T const* const* parameters, T* residuals) const {
+        return evaluate(parameters[0], parameters[1], residuals);
+    }
+
+    template <typename T>
+    bool evaluate(const T* tp, const T* gamma, T* residuals) const {
+        std::vector<T> shape(f.size());
+        T sum(0.0);
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            shape[k] = jonswap_shape(f[k], tp[0], gamma[0]);
+            sum += shape[k] * df;
+        }
+        for (std::size_t k = 0; k < f.size(); ++k) residuals[k] = (m0 * shape[k] / sum - s[k]) / peak;
+        return true;
+    }
+};
+
+}  // namespace
+
+Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, double f_hi) {
+    auto guard = std::make_unique<ShapeResiduals>();
+    ShapeResiduals* residuals = guard.get();
+    for (std::size_t k = 0; k < spectrum.frequency.size(); ++k)
+        if (spectrum.frequency[k] >= f_lo && spectrum.frequency[k] <= f_hi && spectrum.frequency[k] > 0.0) {
+            residuals->f.push_back(spectrum.frequency[k]);
+            residuals->s.push_back(spectrum.density[k]);
+        }
+    if (residuals->f.size() < 4)
+        return Error{ErrorCode::invalid_argument, fmt::format("the spectrum has {} bins in {}-{} Hz: too few to fit", residuals->f.size(), f_lo, f_hi)};
+    residuals->df = spectrum.df;
+    for (double v : residuals->s) residuals->m0 += v * spectrum.df;
+    residuals->peak = *std::max_element(residuals->s.begin(), residuals->s.end());
+    if (!(residuals->m0 > 0.0)) return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
+    const SeaState measured = summarize(spectrum, f_lo, f_hi);
+
+    double tp = std::clamp(measured.tp, 1.0, 40.0), gamma = 3.3;
+    ceres::Problem problem;
+    const int count = static_cast<int>(residuals->f.size());
+    auto* cost = new ceres::DynamicAutoDiffCostFunction<ShapeResiduals, 4>(guard.release());
+    cost->AddParameterBlock(1);
+    cost->AddParameterBlock(1);
+    cost->SetNumResiduals(count);
+    problem.AddResidualBlock(cost, nullptr, &tp, &gamma);
+    problem.SetParameterLowerBound(&tp, 0, 1.0);
+    problem.SetParameterUpperBound(&tp, 0, 40.0);
+    problem.SetParameterLowerBound(&gamma, 0, 1.0);
+    problem.SetParameterUpperBound(&gamma, 0, 20.0);
+    ceres::Solver::Options options;
+    options.max_num_iterations = 100;
+    options.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+
+    JonswapFit fit;
+    fit.hs = measured.hs;
+    fit.tp = tp;
+    fit.gamma = gamma;
+    fit.iterations = static_cast<int>(summary.iterations.size());
+    fit.mean_travel_deg = measured.mean_travel_deg;
+    fit.spreading_s = measured.spreading_s;
+    std::vector<double> r(residuals->f.size());
+    residuals->evaluate(&tp, &gamma, r.data());
+    double mean = 0.0, tss = 0.0, rss = 0.0;
+    for (double v : residuals->s) mean += v;
+    mean /= count;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+        rss += r[k] * r[k] * residuals->peak * residuals->peak;
+        tss += (residuals->s[k] - mean) * (residuals->s[k] - mean);
+    }
+    fit.r2 = tss > 0.0 ? 1.0 - rss / tss : 0.0;
+    return fit;
+}
+
+}  // namespace tidewater::calibration
