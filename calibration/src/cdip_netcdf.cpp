@@ -108,6 +108,14 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
     if (north->size() != n || west->size() != n || flags->size() != n || t->size() != n)
         return Error{ErrorCode::schema_error, fmt::format("{}: XYZ variables have different lengths", nc.name())};
     const double filter_delay = delay->empty() ? 0.0 : delay->front();
+    // The displacements are along magnetic north; turn them to true north with the
+    // station's declination (Meta/Declination, degrees east), as CDIP's directions are.
+    double declination = 0.0;
+    if (auto meta = nc.group("Meta")) {
+        if (auto d = nc.doubles(*meta, "Meta", "Declination"); d && !d->empty() && std::isfinite(d->front())) declination = d->front();
+    }
+    const double dr = declination * 3.14159265358979323846 / 180.0;
+    const double cd = std::cos(dr), sd = std::sin(dr);
     const bool window = end_utc_s > start_utc_s && start_utc_s >= 0.0;
     MeasuredRecord r;
     r.kind = RecordKind::buoy;
@@ -125,8 +133,10 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
         }
         r.axis.push_back(when);
         r.z.push_back((*z)[k]);
-        r.north.push_back((*north)[k]);
-        r.east.push_back(-(*west)[k]);
+        // A bearing grows clockwise: true = magnetic + declination.
+        const double e = -(*west)[k], n_ = (*north)[k];
+        r.east.push_back(e * cd + n_ * sd);
+        r.north.push_back(-e * sd + n_ * cd);
     }
     if (r.axis.empty())
         return Error{ErrorCode::invalid_argument, fmt::format("{}: no usable XYZ samples{} ({} flagged, {} missing)", nc.name(),

@@ -172,56 +172,95 @@ struct Peak {
     double power;
 };
 
-/// The strongest `count` local maxima of the periodogram of z (works with gaps and uneven spacing).
-std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
-    const double span = r.axis.back() - r.axis.front();
+/// Periodogram of `v` on bins w_min + b dw, each sample weighted by its spacing, so gaps
+/// and uneven spacing (a profile clustered at the crest) do not bias it.
+std::vector<double> periodogram(const MeasuredRecord& r, const std::vector<double>& v, double w_min, double dw, std::size_t bins) {
     const double spacing = r.median_spacing();
-    const double w_min = kTwoPi / span, w_max = kPi / spacing;
-    const double dw = w_min / 4.0;  // 4x oversampled
-    const auto bins = static_cast<std::size_t>((w_max - w_min) / dw) + 1;
-    std::vector<std::complex<double>> sum(bins, 0.0);
-    double mean = 0.0;
-    for (double v : r.z) mean += v;
-    mean /= static_cast<double>(r.size());
+    std::vector<double> weight(r.size());
+    double mean = 0.0, total = 0.0;
     for (std::size_t s = 0; s < r.size(); ++s) {
-        const double a = r.axis[s];
-        std::complex<double> phasor = std::polar(1.0, -w_min * a);
-        const std::complex<double> step = std::polar(1.0, -dw * a);
-        const double v = r.z[s] - mean;
+        const double before = s > 0 ? r.axis[s] - r.axis[s - 1] : 0.0, after = s + 1 < r.size() ? r.axis[s + 1] - r.axis[s] : 0.0;
+        weight[s] = 0.5 * (std::min(before, 2.0 * spacing) + std::min(after, 2.0 * spacing));
+        mean += v[s] * weight[s], total += weight[s];
+    }
+    mean /= total;
+    std::vector<std::complex<double>> sum(bins, 0.0);
+    for (std::size_t s = 0; s < r.size(); ++s) {
+        std::complex<double> phasor = std::polar(1.0, -w_min * r.axis[s]);
+        const std::complex<double> step = std::polar(1.0, -dw * r.axis[s]);
+        const double x = (v[s] - mean) * weight[s];
         for (std::size_t b = 0; b < bins; ++b) {
-            sum[b] += v * phasor;
+            sum[b] += x * phasor;
             phasor *= step;
         }
     }
-    std::vector<Peak> peaks;
-    for (std::size_t b = 0; b < bins; ++b) {
-        const double p = std::norm(sum[b]);
-        if ((b == 0 || p >= std::norm(sum[b - 1])) && (b + 1 == bins || p > std::norm(sum[b + 1])))
-            peaks.push_back({w_min + dw * static_cast<double>(b), p});
+    std::vector<double> power(bins);
+    for (std::size_t b = 0; b < bins; ++b) power[b] = std::norm(sum[b]);
+    return power;
+}
+
+/// Least squares of sines and cosines at the given frequencies: coefficients and residual.
+Eigen::VectorXd linear_fit(const MeasuredRecord& r, const std::vector<double>& v, const std::vector<double>& freqs, std::vector<double>* residual) {
+    const auto rows = static_cast<Eigen::Index>(r.size());
+    const auto n = static_cast<Eigen::Index>(freqs.size());
+    Eigen::MatrixXd design(rows, 2 * n);
+    for (Eigen::Index s = 0; s < rows; ++s)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double th = freqs[static_cast<std::size_t>(i)] * r.axis[static_cast<std::size_t>(s)];
+            design(s, 2 * i) = std::cos(th);
+            design(s, 2 * i + 1) = std::sin(th);
+        }
+    const Eigen::Map<const Eigen::VectorXd> rhs(v.data(), rows);
+    Eigen::VectorXd c = design.colPivHouseholderQr().solve(rhs);
+    if (residual) {
+        const Eigen::VectorXd res = rhs - design * c;
+        residual->assign(res.data(), res.data() + rows);
     }
-    std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.power > b.power; });
-    if (peaks.size() > static_cast<std::size_t>(count)) peaks.resize(static_cast<std::size_t>(count));
+    return c;
+}
+
+/// `count` frequencies by orthogonal matching pursuit: the strongest periodogram bin of
+/// what the frequencies so far leave unexplained, at least 0.75 resolution (2 pi / span)
+/// from those taken, then a joint least-squares fit, until `count` are taken.
+std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
+    const double span = r.axis.back() - r.axis.front();
+    const double resolution = kTwoPi / span;
+    const double w_min = resolution, w_max = kPi / r.median_spacing();
+    const double dw = resolution / 4.0;  // 4x oversampled
+    const auto bins = static_cast<std::size_t>((w_max - w_min) / dw) + 1;
+    std::vector<Peak> peaks;
+    std::vector<double> freqs, residual = r.z;
+    for (int i = 0; i < count; ++i) {
+        const std::vector<double> power = periodogram(r, residual, w_min, dw, bins);
+        double best = -1.0, at = 0.0;
+        for (std::size_t b = 0; b < bins; ++b) {
+            const double w = w_min + dw * static_cast<double>(b);
+            if (power[b] <= best) continue;
+            if (std::any_of(freqs.begin(), freqs.end(), [&](double f) { return std::abs(f - w) < 0.75 * resolution; })) continue;
+            best = power[b], at = w;
+        }
+        if (best <= 0.0) break;
+        freqs.push_back(at);
+        peaks.push_back({at, best});
+        linear_fit(r, r.z, freqs, &residual);
+    }
     return peaks;
 }
 
 /// Initial parameters: linear least squares of sines and cosines at the peak frequencies.
-std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vector<Peak>& peaks) {
+/// `linear_rss` gets the elevation's residual sum of squares of that linear fit.
+std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vector<Peak>& peaks, double* linear_rss = nullptr) {
     const int n = static_cast<int>(peaks.size()), m = stride(r.kind);
-    const auto rows = static_cast<Eigen::Index>(r.size());
-    Eigen::MatrixXd design(rows, 2 * n);
-    for (Eigen::Index s = 0; s < rows; ++s)
-        for (int i = 0; i < n; ++i) {
-            const double th = peaks[static_cast<std::size_t>(i)].frequency * r.axis[static_cast<std::size_t>(s)];
-            design(s, 2 * i) = std::cos(th);
-            design(s, 2 * i + 1) = std::sin(th);
-        }
-    auto solve = [&](const std::vector<double>& v) {
-        const Eigen::Map<const Eigen::VectorXd> rhs(v.data(), rows);
-        return Eigen::VectorXd(design.colPivHouseholderQr().solve(rhs));
-    };
-    const Eigen::VectorXd cz = solve(r.z);
+    std::vector<double> freqs;
+    for (const Peak& p : peaks) freqs.push_back(p.frequency);
+    std::vector<double> residual;
+    const Eigen::VectorXd cz = linear_fit(r, r.z, freqs, &residual);
+    if (linear_rss) {
+        *linear_rss = 0.0;
+        for (double v : residual) *linear_rss += v * v;
+    }
     Eigen::VectorXd ce, cn;
-    if (r.kind == RecordKind::buoy) ce = solve(r.east), cn = solve(r.north);
+    if (r.kind == RecordKind::buoy) ce = linear_fit(r, r.east, freqs, nullptr), cn = linear_fit(r, r.north, freqs, nullptr);
     std::vector<double> p(static_cast<std::size_t>(m * n), 0.0);
     for (int i = 0; i < n; ++i) {
         double* w = p.data() + m * i;
@@ -256,7 +295,7 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
     for (std::size_t first = 0; first < r.size(); first += kChunk) {
         const std::size_t count = std::min(kChunk, r.size() - first);
-        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 8>(new ChunkResiduals{model, &r, first, count});
+        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 16>(new ChunkResiduals{model, &r, first, count});
         cost->AddParameterBlock(m * waves);
         cost->SetNumResiduals(static_cast<int>(count) * per_sample);
         problem->AddResidualBlock(cost, huber > 0.0 ? new ceres::HuberLoss(huber) : nullptr, p.data());
@@ -281,8 +320,8 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     options.num_threads = static_cast<int>(o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads);
     options.linear_solver_type = ceres::DENSE_QR;
     options.logging_type = ceres::SILENT;
-    options.function_tolerance = 1e-10;
-    options.parameter_tolerance = 1e-10;
+    options.function_tolerance = 1e-9;
+    options.parameter_tolerance = 1e-9;
     ceres::Solver::Summary summary;
     ceres::Solve(options, problem.get(), &summary);
     Solved out;
@@ -323,7 +362,6 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
     if (!(r.depth > 0.0)) return Error{ErrorCode::invalid_argument, fmt::format("{}: depth must be > 0 m", r.source)};
     const int m = stride(r.kind);
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
-    const auto n_res = static_cast<double>(r.size() * static_cast<std::size_t>(per_sample));
     const int sample_limit = static_cast<int>(r.size() * static_cast<std::size_t>(per_sample)) / (2 * m);
     if (o.waves > sample_limit)
         return Error{ErrorCode::invalid_argument,
@@ -339,32 +377,29 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
     mean /= static_cast<double>(r.size());
     for (double v : r.z) tss += (v - mean) * (v - mean);
 
+    // Model order: BIC of the linear fits at the strongest peaks (cheap), then Ceres on the chosen one.
     std::vector<int> ladder;
     if (o.waves > 0) {
         ladder = {std::min<int>(o.waves, static_cast<int>(peaks.size()))};
     } else {
-        for (int n : {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64})
-            if (n <= static_cast<int>(peaks.size())) ladder.push_back(n);
+        for (int n = 1; n <= static_cast<int>(peaks.size()); n += std::max(1, n / 4)) ladder.push_back(n);
     }
     PhaseFit out;
-    Solved best;
     double best_bic = INFINITY;
-    int best_n = 0, worse = 0;
+    int best_n = ladder.front();
     for (int n : ladder) {
-        std::vector<Peak> use(peaks.begin(), peaks.begin() + n);
-        std::vector<double> p0 = initial_parameters(r, use);
-        const double huber = 3.0 * std::sqrt(tss / static_cast<double>(r.size()));
-        Solved s = solve(r, std::move(p0), n, o, huber);
-        const double bic = n_res * std::log(std::max(s.rss, 1e-300) / n_res) + m * n * std::log(n_res);
+        double rss = 0.0;
+        initial_parameters(r, std::vector<Peak>(peaks.begin(), peaks.begin() + n), &rss);
+        // A buoy's horizontal motion adds residuals but the order is judged on the heave.
+        const double samples = static_cast<double>(r.size());
+        const double bic = samples * std::log(std::max(rss, 1e-300) / samples) + 2.0 * n * std::log(samples);
         out.bic.push_back({n, bic});
-        if (o.progress) o.progress(fmt::format("fit: {} waves, R^2 {:.4f}, BIC {:.1f}, {} iterations", n, 1.0 - s.rss / tss, bic, s.iterations));
-        if (bic < best_bic) {
-            best_bic = bic, best_n = n, best = std::move(s), worse = 0;
-        } else if (++worse >= 2) {
-            break;
-        }
+        if (bic < best_bic) best_bic = bic, best_n = n;
     }
-
+    if (o.progress && ladder.size() > 1) o.progress(fmt::format("fit: {} waves chosen by BIC (of {} tried)", best_n, ladder.size()));
+    const double huber = 3.0 * std::sqrt(tss / static_cast<double>(r.size()));
+    Solved best = solve(r, initial_parameters(r, std::vector<Peak>(peaks.begin(), peaks.begin() + best_n)), best_n, o, huber);
+    if (o.progress) o.progress(fmt::format("fit: {} waves, R^2 {:.4f}, {} iterations", best_n, 1.0 - best.rss / tss, best.iterations));
     // Uncertainties from Ceres' covariance of the chosen fit.
     std::vector<double> sigma(best.p.size(), -1.0);
     {

@@ -1,6 +1,6 @@
-// The JONSWAP fit (Ceres, automatic differentiation). The fitted curve keeps the
+// The JONSWAP fit (Ceres, automatic differentiation). The fitted sea keeps the
 // record's energy: Hs is the measured 4 sqrt(m0) over the band, and Ceres fits the
-// shape (Tp, gamma) by least squares on the density.
+// shape (Tp, gamma) by least squares on the density around the dominant peak.
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -58,18 +58,26 @@ struct ShapeResiduals {
 Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, double f_hi) {
     auto guard = std::make_unique<ShapeResiduals>();
     ShapeResiduals* residuals = guard.get();
-    for (std::size_t k = 0; k < spectrum.frequency.size(); ++k)
-        if (spectrum.frequency[k] >= f_lo && spectrum.frequency[k] <= f_hi && spectrum.frequency[k] > 0.0) {
-            residuals->f.push_back(spectrum.frequency[k]);
+    const SeaState measured = summarize(spectrum, f_lo, f_hi);
+    // One JONSWAP describes one sea: its shape is fitted around the dominant peak
+    // (0.6 to 2.5 fp); the energy is the whole band's.
+    const double fp = measured.tp > 0.0 ? 1.0 / measured.tp : f_lo;
+    const double lo = std::max(f_lo, 0.6 * fp), hi = std::min(f_hi, 2.5 * fp);
+    double band_m0 = 0.0;
+    for (std::size_t k = 0; k < spectrum.frequency.size(); ++k) {
+        const double f = spectrum.frequency[k];
+        if (f >= f_lo && f <= f_hi) band_m0 += spectrum.density[k] * spectrum.df;
+        if (f >= lo && f <= hi && f > 0.0) {
+            residuals->f.push_back(f);
             residuals->s.push_back(spectrum.density[k]);
         }
+    }
     if (residuals->f.size() < 4)
         return Error{ErrorCode::invalid_argument, fmt::format("the spectrum has {} bins in {}-{} Hz: too few to fit", residuals->f.size(), f_lo, f_hi)};
     residuals->df = spectrum.df;
     for (double v : residuals->s) residuals->m0 += v * spectrum.df;
     residuals->peak = *std::max_element(residuals->s.begin(), residuals->s.end());
-    if (!(residuals->m0 > 0.0)) return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
-    const SeaState measured = summarize(spectrum, f_lo, f_hi);
+    if (!(residuals->m0 > 0.0) || !(band_m0 > 0.0)) return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
 
     double tp = std::clamp(measured.tp, 1.0, 40.0), gamma = 3.3;
     ceres::Problem problem;
@@ -90,12 +98,20 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, do
     ceres::Solve(options, &problem, &summary);
 
     JonswapFit fit;
-    fit.hs = measured.hs;
+    fit.hs = 4.0 * std::sqrt(band_m0);
     fit.tp = tp;
     fit.gamma = gamma;
     fit.iterations = static_cast<int>(summary.iterations.size());
     fit.mean_travel_deg = measured.mean_travel_deg;
     fit.spreading_s = measured.spreading_s;
+    if (spectrum.directional) {
+        // The peak direction: the bin holding the fitted peak frequency (CDIP's Dp is its peak band's).
+        const auto bin = static_cast<std::size_t>(std::lround(1.0 / (fit.tp * spectrum.df)));
+        if (bin < spectrum.frequency.size()) {
+            const double travel = std::atan2(spectrum.travel_north[bin], spectrum.travel_east[bin]) * 180.0 / 3.14159265358979323846;
+            fit.peak_from_deg = std::fmod(270.0 - travel + 720.0, 360.0);
+        }
+    }
     std::vector<double> r(residuals->f.size());
     residuals->evaluate(&tp, &gamma, r.data());
     double mean = 0.0, tss = 0.0, rss = 0.0;

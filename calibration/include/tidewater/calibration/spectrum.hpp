@@ -47,6 +47,7 @@ SeaState summarize(const MeasuredSpectrum& spectrum, double f_lo = 0.025, double
 struct JonswapFit {
     double hs = 0.0, tp = 0.0, gamma = 1.0;
     double mean_travel_deg = 0.0;  ///< From the buoy's directional moments (0 for 1-D data).
+    double peak_from_deg = 0.0;    ///< Buoy: direction waves come from in the bin at 1/tp, degrees clockwise from north.
     double spreading_s = 0.0;      ///< cos-2s exponent (0 for 1-D data).
     double r2 = 0.0;               ///< Of the fitted density against the measured one, over the band.
     int iterations = 0;
