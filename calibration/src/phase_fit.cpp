@@ -310,8 +310,8 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
         const double w0 = p[static_cast<std::size_t>(m * i + 1)];
         problem->SetParameterLowerBound(p.data(), m * i, 0.0);
         problem->SetParameterUpperBound(p.data(), m * i, 4.0 * scale + 1e-9);
-        problem->SetParameterLowerBound(p.data(), m * i + 1, 0.8 * w0);
-        problem->SetParameterUpperBound(p.data(), m * i + 1, 1.25 * w0);
+        problem->SetParameterLowerBound(p.data(), m * i + 1, 0.6 * w0);
+        problem->SetParameterUpperBound(p.data(), m * i + 1, 1.6 * w0);
         problem->SetParameterLowerBound(p.data(), m * i + 3, 0.0);
         problem->SetParameterUpperBound(p.data(), m * i + 3, 1.0);
     }
@@ -399,6 +399,15 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
     if (o.progress && ladder.size() > 1) o.progress(fmt::format("fit: {} waves chosen by BIC (of {} tried)", best_n, ladder.size()));
     const double huber = 3.0 * std::sqrt(tss / static_cast<double>(r.size()));
     Solved best = solve(r, initial_parameters(r, std::vector<Peak>(peaks.begin(), peaks.begin() + best_n)), best_n, o, huber);
+    if (r.kind == RecordKind::profile) {
+        // A profile often spans whole wavelengths, where a one-cycle window shifts the
+        // periodogram's peak: also start from the harmonics of the span and keep the better.
+        std::vector<Peak> harmonics;
+        const double span = r.axis.back() - r.axis.front();
+        for (int i = 1; i <= best_n; ++i) harmonics.push_back({kTwoPi * i / span, 0.0});
+        Solved other = solve(r, initial_parameters(r, harmonics), best_n, o, huber);
+        if (other.rss < best.rss) best = std::move(other);
+    }
     if (o.progress) o.progress(fmt::format("fit: {} waves, R^2 {:.4f}, {} iterations", best_n, 1.0 - best.rss / tss, best.iterations));
     // Uncertainties from Ceres' covariance of the chosen fit.
     std::vector<double> sigma(best.p.size(), -1.0);

@@ -232,6 +232,62 @@ PY
     sed 's|"bake": "baked"|"bake": "baked", "resolution": 64|' loads_bake.json > both.json
     expect_error "bake and resolution together" "/shore/bake" "$TW" query --scene both.json --points points.csv --time 0
     ;;
+  fit)
+    # Data made by the runtime: three waves at a gauge at the origin, deep water.
+    cat > waves.json <<'JSON'
+{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -500}}, "shore": {"enabled": false},
+ "ocean": {"waves": [{"direction": 0, "wavelength": 60, "amplitude": 0.5, "steepness": 0.4, "phase": 1.0},
+                     {"direction": 0, "wavelength": 110, "amplitude": 0.8, "steepness": 0.3, "phase": 2.0},
+                     {"direction": 0, "wavelength": 25, "amplitude": 0.2, "steepness": 0.5, "phase": 0.5}]}}
+JSON
+    printf 'x,z\n0,0\n' > gauge.csv
+    "$TW" query --scene waves.json --points gauge.csv --times 0:300:0.5 --out series.csv
+    "$TW" fit --data series.csv --column z=height --waves 3 --preset fitted.json --report report.json --series fitted_series.csv --quiet > log.txt
+    check "fit exits 0" test $? -eq 0
+    check "preset, report and series written" bash -c "test -s fitted.json && test -s report.json && test -s fitted_series.csv"
+    check "report has R^2, RMSE, skipped counts and uncertainties" bash -c "grep -q '\"r2\"' report.json && grep -q '\"rmse_m\"' report.json && grep -q '\"samples_skipped\"' report.json && grep -q '\"amplitude_sigma_m\"' report.json"
+    # The fitted preset loads in the runtime and reproduces the series at the gauge.
+    echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -500}}, "shore": {"enabled": false}, "ocean": "fitted.json"}' > refit.json
+    "$TW" query --scene refit.json --points gauge.csv --times 0:300:0.5 --out replay.csv
+    check "the fitted preset reproduces the record within 1 mm" python3 - series.csv replay.csv <<'PY'
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1]))); b = list(csv.DictReader(open(sys.argv[2])))
+worst = max(abs(float(p["height"]) - float(q["height"])) for p, q in zip(a, b))
+print(f"  {len(a)} samples, worst difference {worst * 1000:.4f} mm")
+sys.exit(0 if len(a) == len(b) == 601 and worst < 1e-3 else 1)
+PY
+
+    # Bad input: a clear error, a non-zero exit, and no preset or report.
+    bad() {  # bad DESCRIPTION NEEDLE FILE [options]
+      local what="$1" needle="$2" file="$3"; shift 3
+      rm -f out_preset.json out_report.json
+      expect_error "$what" "$needle" "$TW" fit --data "$file" --preset out_preset.json --report out_report.json --quiet "$@"
+      check "$what: nothing written" bash -c "! ls out_preset.json* out_report.json* 2>/dev/null"
+    }
+    : > empty.csv
+    bad "empty file" "empty" empty.csv
+    printf 't,z\n0,0.1\n' > single.csv
+    bad "single sample" "at least 8" single.csv
+    printf 't,z\n' > header_only.csv; for k in $(seq 0 20); do echo "$k,0.25" >> header_only.csv; done
+    bad "constant data" "constant" header_only.csv
+    printf 't,z\n0,0.1\n1,0.2\n3,0.1\n2,0.3\n4,0\n5,1\n6,0\n7,1\n8,2\n' > unsorted.csv
+    bad "non-monotonic time" "not strictly increasing" unsorted.csv
+    printf 't,z\n0,0.1\n1,0.2\n1,0.1\n2,0.3\n4,0\n5,1\n6,0\n7,1\n8,2\n' > duplicated.csv
+    bad "duplicated time" "not strictly increasing" duplicated.csv
+    bad "unknown column" "no column \"elevation\"" series.csv --column z=elevation
+    bad "unknown role" "unknown role" series.csv --column w=height
+    bad "bad scale" "not a number" series.csv --column z=height --scale z=cm
+    printf 't,z,q\n' > flagged.csv; for k in $(seq 0 20); do echo "$k,0.$k,9" >> flagged.csv; done
+    bad "all samples flagged" "21 flagged" flagged.csv --column flag=q
+    printf 't,z\n' > sentinels.csv; for k in $(seq 0 20); do echo "$k,-999.99" >> sentinels.csv; done
+    bad "only sentinel values" "21 missing" sentinels.csv
+    printf 'not a netcdf file\n' > corrupt.nc
+    bad "corrupt netCDF" "not a readable netCDF file" corrupt.nc --kind buoy
+    bad "missing file" "cannot open" no_such.csv
+    bad "unknown kind" "--kind" series.csv --kind tide
+    bad "too many waves" "out of range" series.csv --column z=height --waves 99
+    bad "wrong units (a depth that is not a number of metres)" "depth" series.csv --column z=height --depth -5
+    ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;
 esac

@@ -1,0 +1,227 @@
+// tidewater fit: a preset (and a report) from measured surface data. Both files are
+// written only when the fit succeeds, and each appears whole or not at all.
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
+#include "verbs.hpp"
+
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+#include "tidewater/calibration/output.hpp"
+#include "tidewater/calibration/phase_fit.hpp"
+#include "tidewater/calibration/readers.hpp"
+#include "tidewater/calibration/spectrum.hpp"
+#include "tidewater/constants.hpp"
+#endif
+
+namespace tidewater::cli {
+
+namespace {
+
+struct FitArgs {
+    std::string data, kind = "gauge", format, method = "phase", preset, report, series, name;
+    std::vector<std::string> columns, scales;
+    std::vector<double> sentinels;
+    double depth = 0.0;
+    int waves = 0, max_waves = 32;
+    unsigned threads = 1;
+    std::uint64_t seed = 1;
+    bool quiet = false;
+};
+
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+using namespace tidewater::calibration;
+
+Result<std::pair<std::string, std::string>> split_pair(const std::string& s, const char* option) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
+        return Error{ErrorCode::invalid_argument, fmt::format("{} \"{}\": expected ROLE=VALUE", option, s)};
+    return std::pair{s.substr(0, eq), s.substr(eq + 1)};
+}
+
+Result<MeasuredRecord> read_record(const FitArgs& a, RecordKind kind) {
+    std::string format = a.format;
+    const std::string ext = std::filesystem::path(a.data).extension().string();
+    if (format.empty()) format = ext == ".nc" ? "cdip" : ext == ".raw" ? "datawell" : ext == ".csv" ? "csv" : "columns";
+    if (format == "cdip" || format == "datawell") {
+        if (kind != RecordKind::buoy) return Error{ErrorCode::invalid_argument, fmt::format("{} files hold buoy data: give --kind buoy", format)};
+        return format == "cdip" ? read_cdip_xyz(a.data) : read_datawell_raw(a.data);
+    }
+    if (format == "columns") return read_two_column(a.data, kind);
+    if (format != "csv") return Error{ErrorCode::invalid_argument, fmt::format("--format {}: use csv, cdip, datawell or columns", format)};
+    CsvColumns columns;
+    for (const auto& c : a.columns) {
+        auto p = split_pair(c, "--column");
+        if (!p) return p.error();
+        columns.role_to_column[p->first] = p->second;
+    }
+    for (const auto& c : a.scales) {
+        auto p = split_pair(c, "--scale");
+        if (!p) return p.error();
+        double v = 0.0;
+        try {
+            std::size_t used = 0;
+            v = std::stod(p->second, &used);
+            if (used != p->second.size()) throw std::invalid_argument("trailing");
+        } catch (const std::exception&) {
+            return Error{ErrorCode::invalid_argument, fmt::format("--scale {}: \"{}\" is not a number", p->first, p->second)};
+        }
+        columns.scale[p->first] = v;
+    }
+    if (!a.sentinels.empty()) columns.sentinels = a.sentinels;
+    return read_csv_record(a.data, kind, columns);
+}
+
+nlohmann::json wave_json(const FittedWave& w, RecordKind kind) {
+    nlohmann::json j = {{"amplitude_m", w.amplitude}, {"period_s", w.period()}, {"wavenumber_rad_m", w.k},
+                        {"deep_water_wavelength_m", kTwoPi * kGravity / (w.omega * w.omega)}, {"direction_deg", w.direction_deg},
+                        {"phase_rad", w.phase}, {"steepness", w.steepness}};
+    auto sigma = [](double s) { return s >= 0.0 ? nlohmann::json(s) : nlohmann::json(nullptr); };
+    j["amplitude_sigma_m"] = sigma(w.amplitude_sigma);
+    j["period_sigma_s"] = sigma(w.period_sigma);
+    j["phase_sigma_rad"] = sigma(w.phase_sigma);
+    j["steepness_sigma"] = sigma(w.steepness_sigma);
+    j["direction_sigma_deg"] = kind == RecordKind::buoy ? sigma(w.direction_sigma_deg) : nlohmann::json("fixed: +x (a gauge or profile cannot tell)");
+    return j;
+}
+
+int run_fit(const FitArgs& a) {
+    constexpr const char* verb = "fit";
+    if (a.data.empty()) return fail(verb, "give --data FILE");
+    if (a.preset.empty() && a.report.empty()) return fail(verb, "give --preset and/or --report to write");
+    RecordKind kind;
+    if (a.kind == "gauge") kind = RecordKind::gauge;
+    else if (a.kind == "buoy") kind = RecordKind::buoy;
+    else if (a.kind == "profile") kind = RecordKind::profile;
+    else return fail(verb, fmt::format("--kind {}: use gauge, buoy or profile", a.kind));
+    if (a.method != "phase" && a.method != "spectral") return fail(verb, fmt::format("--method {}: use phase or spectral", a.method));
+    if (!(a.depth >= 0.0) || !std::isfinite(a.depth)) return fail(verb, "--depth must be a finite number of metres (0 = deep water)");
+    auto record = read_record(a, kind);
+    if (!record) return fail(verb, record.error().message);
+    if (a.depth > 0.0) record->depth = a.depth;
+    auto say = [&](const std::string& s) {
+        if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
+    };
+    say(fmt::format("fit: {} samples from {} ({} missing, {} flagged skipped)", record->size(), record->source, record->skipped_missing,
+                    record->skipped_flagged));
+
+    nlohmann::json report = {{"source", record->source}, {"kind", to_string(kind)}, {"method", a.method},
+                             {"samples_used", record->size()},
+                             {"samples_skipped", {{"missing", record->skipped_missing}, {"flagged", record->skipped_flagged}}},
+                             {"depth_m", std::isfinite(record->depth) ? nlohmann::json(record->depth) : nlohmann::json("deep")},
+                             {"axis_origin", record->axis_origin},
+                             {"axes", "x east, z north (runtime); directions of travel in degrees from +x toward +z"}};
+    // What was measured: Hs from the variance, and from the spectrum where there is one.
+    double mean = 0.0, var = 0.0;
+    for (double v : record->z) mean += v;
+    mean /= static_cast<double>(record->size());
+    for (double v : record->z) var += (v - mean) * (v - mean);
+    var /= static_cast<double>(record->size());
+    report["measured"] = {{"hs_m", 4.0 * std::sqrt(var)}};
+    std::vector<WaveSpec> waves;
+    if (a.method == "spectral") {
+        auto spectrum = welch_spectrum(*record);
+        if (!spectrum) return fail(verb, spectrum.error().message);
+        auto fit = fit_jonswap(*spectrum);
+        if (!fit) return fail(verb, fit.error().message);
+        const int count = a.waves > 0 ? a.waves : 32;
+        auto sampled = sample_preset_waves(*fit, count, a.seed);
+        if (!sampled) return fail(verb, sampled.error().message);
+        waves = *sampled;
+        const SeaState m = summarize(*spectrum);
+        report["measured"] = {{"hs_m", m.hs}, {"tp_s", m.tp}};
+        if (spectrum->directional) report["measured"]["peak_direction_from_deg"] = fit->peak_from_deg, report["measured"]["mean_travel_deg"] = m.mean_travel_deg;
+        report["spectral_fit"] = {{"hs_m", fit->hs}, {"tp_s", fit->tp}, {"gamma", fit->gamma}, {"spreading_s", fit->spreading_s},
+                                  {"mean_travel_deg", fit->mean_travel_deg}, {"shape_r2", fit->r2}, {"iterations", fit->iterations}};
+    } else {
+        PhaseFitOptions o;
+        o.waves = a.waves;
+        o.max_waves = a.max_waves;
+        o.threads = a.threads;
+        o.progress = say;
+        auto fit = fit_phase_resolved(*record, o);
+        if (!fit) return fail(verb, fit.error().message);
+        nlohmann::json list = nlohmann::json::array();
+        for (const FittedWave& w : fit->waves) {
+            list.push_back(wave_json(w, kind));
+            waves.push_back(to_wave_spec(w));
+        }
+        nlohmann::json bic = nlohmann::json::array();
+        for (auto [n, b] : fit->bic) bic.push_back({{"waves", n}, {"bic", b}});
+        report["fit"] = {{"waves", fit->waves.size()}, {"rmse_m", fit->rmse}, {"r2", fit->r2}, {"iterations", fit->iterations},
+                         {"converged", fit->converged}, {"seconds", fit->seconds}, {"bic_of_linear_fits", bic}};
+        if (kind == RecordKind::buoy) report["fit"]["horizontal_r2"] = fit->horizontal_r2;
+        report["waves"] = list;
+        if (!a.series.empty()) {
+            AtomicFile out(a.series);
+            if (!out.status()) return fail(verb, out.status().error().message);
+            out.stream() << (kind == RecordKind::profile ? "x_m" : "t_s") << ",measured_m,model_m\n";
+            for (std::size_t k = 0; k < record->size(); ++k)
+                out.stream() << fmt::format("{:.6f},{:.6f},{:.6f}\n", record->axis[k], record->z[k], fit->model_z[k]);
+            if (auto st = out.commit(); !st) return fail(verb, st.error().message);
+        }
+    }
+    const SeaState model = sea_state_of(waves);
+    report["model"] = {{"hs_m", model.hs}, {"tp_s", model.tp}, {"mean_travel_deg", model.mean_travel_deg}};
+    const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
+    const nlohmann::json preset = preset_json(name, fmt::format("Fitted to {} ({} data, {} fit) by tidewater fit", record->source,
+                                                                to_string(kind), a.method), waves);
+    // Both outputs or neither: stage both, then commit.
+    std::unique_ptr<AtomicFile> preset_file, report_file;
+    if (!a.preset.empty()) {
+        preset_file = std::make_unique<AtomicFile>(a.preset);
+        if (!preset_file->status()) return fail(verb, preset_file->status().error().message);
+        preset_file->stream() << preset.dump(2) << "\n";
+    }
+    if (!a.report.empty()) {
+        report_file = std::make_unique<AtomicFile>(a.report);
+        if (!report_file->status()) return fail(verb, report_file->status().error().message);
+        report_file->stream() << report.dump(2) << "\n";
+    }
+    if (preset_file)
+        if (auto st = preset_file->commit(); !st) return fail(verb, st.error().message);
+    if (report_file)
+        if (auto st = report_file->commit(); !st) return fail(verb, st.error().message);
+    std::printf("fitted %zu waves to %s: model Hs %.3f m, Tp %.2f s%s\n", waves.size(), record->source.c_str(), model.hs, model.tp,
+                report.contains("fit") ? fmt::format(", R^2 {:.4f}", report["fit"]["r2"].get<double>()).c_str() : "");
+    return 0;
+}
+#endif
+
+}  // namespace
+
+Verb add_fit_verb(CLI::App& app) {
+    auto a = std::make_shared<FitArgs>();
+    CLI::App* cmd = app.add_subcommand("fit", "Fit a wave preset to measured surface data (gauge, buoy or profile) with Ceres");
+    cmd->add_option("--data", a->data, "Measured data: CSV with a header, CDIP netCDF (.nc), Datawell raw (.raw) or two columns");
+    cmd->add_option("--kind", a->kind, "gauge (elevation at a point), buoy (east/north/heave) or profile (elevation along x)")
+        ->capture_default_str();
+    cmd->add_option("--format", a->format, "csv, cdip, datawell or columns (default: from the extension)");
+    cmd->add_option("--column", a->columns, "ROLE=NAME: the CSV column for t, x, z, east, north or flag");
+    cmd->add_option("--scale", a->scales, "ROLE=FACTOR: file units to metres or seconds (e.g. z=0.01 for cm)");
+    cmd->add_option("--sentinel", a->sentinels, "A value that means missing (default: -999, -999.9, -999.99, -9999, 9999, 99999)");
+    cmd->add_option("--depth", a->depth, "Water depth, m, for finite-depth dispersion (0 = deep water)");
+    cmd->add_option("--method", a->method, "phase (phase-resolved waves) or spectral (JONSWAP, then a preset from it)")->capture_default_str();
+    cmd->add_option("--waves", a->waves, "Number of waves (phase: 0 = chosen by BIC; spectral: default 32)");
+    cmd->add_option("--max-waves", a->max_waves, "Upper bound for the BIC choice")->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Ceres threads (0 = all)")->capture_default_str();
+    cmd->add_option("--seed", a->seed, "Spectral presets: seed of the wave phases")->capture_default_str();
+    cmd->add_option("--preset", a->preset, "Write the preset JSON here");
+    cmd->add_option("--report", a->report, "Write the report JSON here");
+    cmd->add_option("--series", a->series, "Phase fits: write axis, measured and model CSV here");
+    cmd->add_option("--name", a->name, "Preset name (default: the data file's stem)");
+    cmd->add_flag("--quiet", a->quiet, "No progress lines");
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+    return {cmd, [a] { return run_fit(*a); }};
+#else
+    return {cmd, [] {
+                return fail("fit", "this build has no calibration: install Ceres and netCDF (apt-get install libceres-dev libnetcdf-dev) "
+                                   "and configure again with -DTIDEWATER_BUILD_CALIBRATION=ON");
+            }};
+#endif
+}
+
+}  // namespace tidewater::cli
