@@ -164,7 +164,9 @@ int run_fit(const FitArgs& a) {
             if (auto st = out.commit(); !st) return fail(verb, st.error().message);
         }
     }
-    const SeaState model = sea_state_of(waves);
+    SeaState model = sea_state_of(waves);
+    // A spectral preset's waves carry equal energy: its Tp is the spectrum's it samples.
+    if (report.contains("spectral_fit")) model.tp = report["spectral_fit"]["tp_s"].get<double>();
     report["model"] = {{"hs_m", model.hs}, {"tp_s", model.tp}, {"mean_travel_deg", model.mean_travel_deg}};
     const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
     const nlohmann::json preset = preset_json(name, fmt::format("Fitted to {} ({} data, {} fit) by tidewater fit", record->source,

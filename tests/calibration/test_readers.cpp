@@ -1,0 +1,56 @@
+// Readers refuse what they cannot use, naming the file: a netCDF file without an XYZ
+// group, and CSV missing values and flags are skipped and counted.
+#include <gtest/gtest.h>
+#include <netcdf.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "tidewater/calibration/readers.hpp"
+
+namespace tidewater::calibration {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_path(const std::string& name) { return fs::temp_directory_path() / ("tidewater_readers_" + std::to_string(::getpid()) + "_" + name); }
+
+TEST(Readers, NetcdfWithoutXyzGroupIsRefused) {
+    const fs::path path = temp_path("no_xyz.nc");
+    int nc = 0, meta = 0;
+    ASSERT_EQ(nc_create(path.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), NC_NOERR);
+    ASSERT_EQ(nc_def_grp(nc, "Meta", &meta), NC_NOERR);
+    ASSERT_EQ(nc_close(nc), NC_NOERR);
+    auto r = read_cdip_xyz(path);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("no XYZ group"), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find(path.string()), std::string::npos);
+    fs::remove(path);
+}
+
+TEST(Readers, CsvSkipsAndCountsMissingAndFlaggedSamples) {
+    const fs::path path = temp_path("gauge.csv");
+    {
+        std::ofstream out(path);
+        out << "time_s,eta_cm,qc\n";
+        for (int k = 0; k < 20; ++k) {
+            const char* value = k == 3 ? "" : k == 5 ? "NaN" : k == 7 ? "-999.99" : nullptr;
+            out << k * 0.5 << "," << (value ? value : std::to_string(10.0 * std::sin(0.7 * k))) << "," << (k == 9 ? 4 : 0) << "\n";
+        }
+    }
+    CsvColumns columns;
+    columns.role_to_column = {{"t", "time_s"}, {"z", "eta_cm"}, {"flag", "qc"}};
+    columns.scale = {{"z", 0.01}};
+    auto r = read_csv_record(path, RecordKind::gauge, columns);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ(r->size(), 16u);
+    EXPECT_EQ(r->skipped_missing, 3u);
+    EXPECT_EQ(r->skipped_flagged, 1u);
+    EXPECT_NEAR(r->z[1], 0.1 * std::sin(0.7), 1e-7);  // cm to m (6 digits in the file)
+    fs::remove(path);
+}
+
+}  // namespace
+}  // namespace tidewater::calibration
