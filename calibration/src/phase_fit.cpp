@@ -220,7 +220,7 @@ Eigen::VectorXd linear_fit(const MeasuredRecord& r, const std::vector<double>& v
 }
 
 /// `count` frequencies by orthogonal matching pursuit: the strongest periodogram bin of
-/// what the frequencies so far leave unexplained, at least 0.75 resolution (2 pi / span)
+/// what the frequencies so far leave unexplained, at least one resolution (2 pi / span)
 /// from those taken, then a joint least-squares fit, until `count` are taken.
 std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
     const double span = r.axis.back() - r.axis.front();
@@ -236,7 +236,7 @@ std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
         for (std::size_t b = 0; b < bins; ++b) {
             const double w = w_min + dw * static_cast<double>(b);
             if (power[b] <= best) continue;
-            if (std::any_of(freqs.begin(), freqs.end(), [&](double f) { return std::abs(f - w) < 0.75 * resolution; })) continue;
+            if (std::any_of(freqs.begin(), freqs.end(), [&](double f) { return std::abs(f - w) < resolution; })) continue;
             best = power[b], at = w;
         }
         if (best <= 0.0) break;
@@ -291,6 +291,7 @@ struct Solved {
 Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const PhaseFitOptions& o, double huber) {
     const Model model{r.kind, r.depth, waves};
     const int m = stride(r.kind);
+    const double resolution = kTwoPi / (r.axis.back() - r.axis.front());
     auto problem = std::make_unique<ceres::Problem>();
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
     for (std::size_t first = 0; first < r.size(); first += kChunk) {
@@ -310,8 +311,10 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
         const double w0 = p[static_cast<std::size_t>(m * i + 1)];
         problem->SetParameterLowerBound(p.data(), m * i, 0.0);
         problem->SetParameterUpperBound(p.data(), m * i, 4.0 * scale + 1e-9);
-        problem->SetParameterLowerBound(p.data(), m * i + 1, 0.6 * w0);
-        problem->SetParameterUpperBound(p.data(), m * i + 1, 1.6 * w0);
+        // Each wave stays within a quarter of a frequency resolution of its start: waves
+        // that drift together can grow large and cancel, fitting noise.
+        problem->SetParameterLowerBound(p.data(), m * i + 1, std::max(0.5 * w0, w0 - 0.25 * resolution));
+        problem->SetParameterUpperBound(p.data(), m * i + 1, w0 + 0.25 * resolution);
         problem->SetParameterLowerBound(p.data(), m * i + 3, 0.0);
         problem->SetParameterUpperBound(p.data(), m * i + 3, 1.0);
     }

@@ -4,6 +4,9 @@
 
 #include "atomic_file.hpp"
 #include "bake_bench.hpp"
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+#include "fit_bench.hpp"
+#endif
 #include "query_bench.hpp"
 #include "verbs.hpp"
 
@@ -14,6 +17,7 @@ namespace {
 struct BenchArgs {
     BenchConfig config;
     bool bake = false;
+    std::string fit_refdata;
     std::string out;
     std::string markdown;
     bool quiet = false;
@@ -35,7 +39,16 @@ int run_bench(const BenchArgs& a) {
         if (!a.quiet) std::fprintf(stderr, "bench: %s\n", line.c_str());
     };
     std::string json, table;
-    if (a.bake) {
+    if (!a.fit_refdata.empty()) {
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+        auto report = run_fit_bench(a.fit_refdata, a.config.threads, progress);
+        if (!report) return fail(verb, report.error().message);
+        json = report->dump(2) + "\n";
+        table = fit_bench_markdown(*report);
+#else
+        return fail(verb, "--fit needs the calibration library: install libceres-dev and libnetcdf-dev and configure again");
+#endif
+    } else if (a.bake) {
         BakeBenchConfig bake_config;
         bake_config.threads = a.config.threads;
         auto report = run_bake_bench(bake_config, progress);
@@ -74,6 +87,7 @@ Verb add_bench_verb(CLI::App& app) {
     cmd->add_option("--threads", args->config.threads, "Thread count of the 'all threads' runs (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines on standard error");
     cmd->add_flag("--bake", args->bake, "Benchmark the shore bake instead of the queries");
+    cmd->add_option("--fit", args->fit_refdata, "Benchmark phase-resolved fits on the reference data in this folder (../shared/refdata)");
     return {cmd, [args] {
                 for (int w : args->config.wave_counts) {
                     if (w < 1 || w > 64) return fail("bench", "--waves: each count must be in 1..64");

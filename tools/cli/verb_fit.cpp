@@ -12,6 +12,7 @@
 #if defined(TIDEWATER_HAVE_CALIBRATION)
 #include "tidewater/calibration/output.hpp"
 #include "tidewater/calibration/phase_fit.hpp"
+#include "tidewater/calibration/plot.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/calibration/spectrum.hpp"
 #include "tidewater/constants.hpp"
@@ -22,7 +23,7 @@ namespace tidewater::cli {
 namespace {
 
 struct FitArgs {
-    std::string data, kind = "gauge", format, method = "phase", preset, report, series, name;
+    std::string data, kind = "gauge", format, method = "phase", preset, report, series, plot, name, window;
     std::vector<std::string> columns, scales;
     std::vector<double> sentinels;
     double depth = 0.0;
@@ -102,6 +103,26 @@ int run_fit(const FitArgs& a) {
     auto record = read_record(a, kind);
     if (!record) return fail(verb, record.error().message);
     if (a.depth > 0.0) record->depth = a.depth;
+    if (!a.window.empty()) {
+        // --window A:B keeps A <= axis < B, in seconds (metres for a profile) from the first sample.
+        double lo = 0.0, hi = 0.0;
+        char extra = 0;
+        if (std::sscanf(a.window.c_str(), "%lf:%lf%c", &lo, &hi, &extra) != 2 || !std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo))
+            return fail(verb, fmt::format("--window \"{}\": expected A:B with A < B", a.window));
+        MeasuredRecord cut = *record;
+        cut.axis.clear(), cut.z.clear(), cut.east.clear(), cut.north.clear();
+        for (std::size_t k = 0; k < record->size(); ++k) {
+            if (record->axis[k] < lo || record->axis[k] >= hi) continue;
+            cut.axis.push_back(record->axis[k]), cut.z.push_back(record->z[k]);
+            if (kind == RecordKind::buoy) cut.east.push_back(record->east[k]), cut.north.push_back(record->north[k]);
+        }
+        if (cut.axis.empty()) return fail(verb, fmt::format("--window {}: no samples in it (the record spans 0 to {})", a.window, record->axis.back()));
+        cut.axis_origin += cut.axis.front();
+        const double first = cut.axis.front();
+        for (double& v : cut.axis) v -= first;
+        if (auto st = validate_record(cut); !st) return fail(verb, st.error().message);
+        *record = std::move(cut);
+    }
     auto say = [&](const std::string& s) {
         if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
     };
@@ -122,6 +143,8 @@ int run_fit(const FitArgs& a) {
     var /= static_cast<double>(record->size());
     report["measured"] = {{"hs_m", 4.0 * std::sqrt(var)}};
     std::vector<WaveSpec> waves;
+    std::string plot_svg;
+    double hs_over_record = -1.0;
     if (a.method == "spectral") {
         auto spectrum = welch_spectrum(*record);
         if (!spectrum) return fail(verb, spectrum.error().message);
@@ -134,6 +157,18 @@ int run_fit(const FitArgs& a) {
         const SeaState m = summarize(*spectrum);
         report["measured"] = {{"hs_m", m.hs}, {"tp_s", m.tp}};
         if (spectrum->directional) report["measured"]["peak_direction_from_deg"] = fit->peak_from_deg, report["measured"]["mean_travel_deg"] = m.mean_travel_deg;
+        if (!a.plot.empty()) {
+            ChartSeries measured{"measured (Welch)", {}, {}, "#1f77b4"}, model{"fitted JONSWAP", {}, {}, "#d62728"};
+            for (std::size_t k = 0; k < spectrum->frequency.size(); ++k) {
+                const double f = spectrum->frequency[k];
+                if (f < 0.025 || f > 0.58) continue;
+                measured.x.push_back(f), measured.y.push_back(spectrum->density[k]);
+                model.x.push_back(f), model.y.push_back(jonswap_density(f, fit->hs, fit->tp, fit->gamma));
+            }
+            plot_svg = line_chart_svg({measured, model}, fmt::format("{}: Hs {:.2f} m, Tp {:.1f} s, gamma {:.1f}", std::filesystem::path(record->source).filename().string(), fit->hs,
+                                                                     fit->tp, fit->gamma),
+                                      "frequency, Hz", "variance density, m^2/Hz");
+        }
         report["spectral_fit"] = {{"hs_m", fit->hs}, {"tp_s", fit->tp}, {"gamma", fit->gamma}, {"spreading_s", fit->spreading_s},
                                   {"mean_travel_deg", fit->mean_travel_deg}, {"shape_r2", fit->r2}, {"iterations", fit->iterations}};
     } else {
@@ -155,6 +190,16 @@ int run_fit(const FitArgs& a) {
                          {"converged", fit->converged}, {"seconds", fit->seconds}, {"bic_of_linear_fits", bic}};
         if (kind == RecordKind::buoy) report["fit"]["horizontal_r2"] = fit->horizontal_r2;
         report["waves"] = list;
+        double model_mean = 0.0, model_var = 0.0;
+        for (double v : fit->model_z) model_mean += v;
+        model_mean /= static_cast<double>(fit->model_z.size());
+        for (double v : fit->model_z) model_var += (v - model_mean) * (v - model_mean);
+        hs_over_record = 4.0 * std::sqrt(model_var / static_cast<double>(fit->model_z.size()));
+        if (!a.plot.empty()) {
+            ChartSeries measured{"measured", record->axis, record->z, "#1f77b4"}, model{"fitted preset", record->axis, fit->model_z, "#d62728"};
+            plot_svg = line_chart_svg({measured, model}, fmt::format("{}: {} waves, R^2 {:.3f}", std::filesystem::path(record->source).filename().string(), fit->waves.size(), fit->r2),
+                                      kind == RecordKind::profile ? "x, m" : "t, s", kind == RecordKind::buoy ? "heave, m" : "elevation, m");
+        }
         if (!a.series.empty()) {
             AtomicFile out(a.series);
             if (!out.status()) return fail(verb, out.status().error().message);
@@ -168,11 +213,17 @@ int run_fit(const FitArgs& a) {
     // A spectral preset's waves carry equal energy: its Tp is the spectrum's it samples.
     if (report.contains("spectral_fit")) model.tp = report["spectral_fit"]["tp_s"].get<double>();
     report["model"] = {{"hs_m", model.hs}, {"tp_s", model.tp}, {"mean_travel_deg", model.mean_travel_deg}};
+    if (hs_over_record >= 0.0) report["model"]["hs_over_record_m"] = hs_over_record;
     const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
     const nlohmann::json preset = preset_json(name, fmt::format("Fitted to {} ({} data, {} fit) by tidewater fit", record->source,
                                                                 to_string(kind), a.method), waves);
-    // Both outputs or neither: stage both, then commit.
-    std::unique_ptr<AtomicFile> preset_file, report_file;
+    // All outputs or none: stage them, then commit.
+    std::unique_ptr<AtomicFile> preset_file, report_file, plot_file;
+    if (!a.plot.empty()) {
+        plot_file = std::make_unique<AtomicFile>(a.plot);
+        if (!plot_file->status()) return fail(verb, plot_file->status().error().message);
+        plot_file->stream() << plot_svg;
+    }
     if (!a.preset.empty()) {
         preset_file = std::make_unique<AtomicFile>(a.preset);
         if (!preset_file->status()) return fail(verb, preset_file->status().error().message);
@@ -187,6 +238,8 @@ int run_fit(const FitArgs& a) {
         if (auto st = preset_file->commit(); !st) return fail(verb, st.error().message);
     if (report_file)
         if (auto st = report_file->commit(); !st) return fail(verb, st.error().message);
+    if (plot_file)
+        if (auto st = plot_file->commit(); !st) return fail(verb, st.error().message);
     std::printf("fitted %zu waves to %s: model Hs %.3f m, Tp %.2f s%s\n", waves.size(), record->source.c_str(), model.hs, model.tp,
                 report.contains("fit") ? fmt::format(", R^2 {:.4f}", report["fit"]["r2"].get<double>()).c_str() : "");
     return 0;
@@ -205,6 +258,7 @@ Verb add_fit_verb(CLI::App& app) {
     cmd->add_option("--column", a->columns, "ROLE=NAME: the CSV column for t, x, z, east, north or flag");
     cmd->add_option("--scale", a->scales, "ROLE=FACTOR: file units to metres or seconds (e.g. z=0.01 for cm)");
     cmd->add_option("--sentinel", a->sentinels, "A value that means missing (default: -999, -999.9, -999.99, -9999, 9999, 99999)");
+    cmd->add_option("--window", a->window, "A:B: fit only A <= t < B, seconds (metres for a profile) from the first sample");
     cmd->add_option("--depth", a->depth, "Water depth, m, for finite-depth dispersion (0 = deep water)");
     cmd->add_option("--method", a->method, "phase (phase-resolved waves) or spectral (JONSWAP, then a preset from it)")->capture_default_str();
     cmd->add_option("--waves", a->waves, "Number of waves (phase: 0 = chosen by BIC; spectral: default 32)");
@@ -214,6 +268,7 @@ Verb add_fit_verb(CLI::App& app) {
     cmd->add_option("--preset", a->preset, "Write the preset JSON here");
     cmd->add_option("--report", a->report, "Write the report JSON here");
     cmd->add_option("--series", a->series, "Phase fits: write axis, measured and model CSV here");
+    cmd->add_option("--plot", a->plot, "Write an SVG chart here: measured vs model series (phase) or spectrum (spectral)");
     cmd->add_option("--name", a->name, "Preset name (default: the data file's stem)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
 #if defined(TIDEWATER_HAVE_CALIBRATION)
