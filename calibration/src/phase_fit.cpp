@@ -474,6 +474,18 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         // A wave with no amplitude has no phase: flip to keep A >= 0 (bounds already do).
         out.waves.push_back(f);
     }
+    // The penalty is soft: make the set fold-free for certain, with the model's k and
+    // with the deep-water k the runtime uses (the larger of the two sums).
+    double fold = 0.0, fold_deep = 0.0;
+    for (const FittedWave& w : out.waves) {
+        fold += w.steepness * w.k * w.amplitude;
+        fold_deep += w.steepness * (w.omega * w.omega / kGravity) * w.amplitude;
+    }
+    if (std::max(fold, fold_deep) > kFoldLimit) {
+        const double scale = kFoldLimit / std::max(fold, fold_deep);
+        for (FittedWave& w : out.waves) w.steepness *= scale;
+        out.steepness_scaled = true;
+    }
     std::sort(out.waves.begin(), out.waves.end(), [](const FittedWave& a, const FittedWave& b) { return a.amplitude > b.amplitude; });
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;

@@ -44,6 +44,19 @@ Status validate_record(const MeasuredRecord& r) {
         for (double x : *v)
             if (!std::isfinite(x)) return Error{ErrorCode::invalid_argument, fmt::format("{}: a value is not finite", r.source)};
     if (constant(r.z)) return Error{ErrorCode::invalid_argument, fmt::format("{}: the elevation is constant: nothing to fit", r.source)};
+    // Units: sea-surface elevations and displacements are metres, sample steps seconds.
+    double largest = 0.0;
+    for (const auto* v : {&r.z, &r.east, &r.north})
+        for (double x : *v) largest = std::max(largest, std::abs(x));
+    if (largest > 100.0)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: displacements reach {:g} m, more than any sea: if the file is in cm or mm, scale it "
+                                 "(--scale z=0.01 or z=0.001, and the same for east and north)", r.source, largest)};
+    const double step = r.median_spacing();
+    if (r.kind != RecordKind::profile && step > 60.0)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: samples are {:g} s apart, too far to resolve waves: if time is in ms, scale it (--scale t=0.001)",
+                                 r.source, step)};
     return {};
 }
 

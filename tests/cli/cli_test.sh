@@ -281,6 +281,8 @@ JSON
     bad "unknown kind" "--kind" series.csv --kind tide
     bad "too many waves" "out of range" series.csv --column z=height --waves 99
     bad "wrong units (a depth that is not a number of metres)" "depth" series.csv --column z=height --depth -5
+    bad "wrong units (elevations in mm read as m)" "--scale z=0.01" series.csv --column z=height --scale z=1000
+    bad "wrong units (time in ms read as s)" "--scale t=0.001" series.csv --column z=height --scale t=1000
     ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;

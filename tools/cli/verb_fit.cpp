@@ -187,7 +187,8 @@ int run_fit(const FitArgs& a) {
         nlohmann::json bic = nlohmann::json::array();
         for (auto [n, b] : fit->bic) bic.push_back({{"waves", n}, {"bic", b}});
         report["fit"] = {{"waves", fit->waves.size()}, {"rmse_m", fit->rmse}, {"r2", fit->r2}, {"iterations", fit->iterations},
-                         {"converged", fit->converged}, {"seconds", fit->seconds}, {"bic_of_linear_fits", bic}};
+                         {"converged", fit->converged}, {"seconds", fit->seconds}, {"bic_of_linear_fits", bic},
+                         {"steepness_scaled_to_fold_limit", fit->steepness_scaled}};
         if (kind == RecordKind::buoy) report["fit"]["horizontal_r2"] = fit->horizontal_r2;
         report["waves"] = list;
         double model_mean = 0.0, model_var = 0.0;

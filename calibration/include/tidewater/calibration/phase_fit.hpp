@@ -51,6 +51,8 @@ struct PhaseFit {
     int iterations = 0;              ///< Ceres iterations of the chosen fit.
     double seconds = 0.0;            ///< Wall time of the whole fit.
     bool converged = false;
+    /// Sum(Q k A) ended above 0.95 and every Q was scaled down to it (the preset stays fold-free).
+    bool steepness_scaled = false;
     std::vector<std::pair<int, double>> bic;  ///< (N, BIC) of every order tried.
 };
 
