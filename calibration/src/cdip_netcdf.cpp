@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "tidewater/calibration/readers.hpp"
+#include "spectrum_direction.hpp"
+#include "tidewater/calibration/spectrum.hpp"
 
 namespace tidewater::calibration {
 
@@ -76,6 +78,7 @@ public:
         return std::pair{epoch, scale};
     }
     const std::string& name() const { return name_; }
+    int root() const { return id_; }
 
 private:
     std::string name_;
@@ -171,6 +174,60 @@ Result<std::vector<CdipWaveSummary>> read_cdip_wave_summaries(const std::filesys
         out[k].dp = (*dp)[k];
         out[k].start_utc_s = units->first + (*bounds)[2 * k] * units->second;
         out[k].end_utc_s = units->first + (*bounds)[2 * k + 1] * units->second;
+    }
+    return out;
+}
+
+
+void set_direction(MeasuredSpectrum& s, std::size_t k, double from_deg, double r1) {
+    const double to = (from_deg + 180.0) * 3.14159265358979323846 / 180.0;  // bearing of travel
+    s.travel_east[k] = s.density[k] * r1 * std::sin(to);
+    s.travel_north[k] = s.density[k] * r1 * std::cos(to);
+    s.r1[k] = r1;
+}
+
+Result<std::vector<SpectralRecord>> read_cdip_spectra(const std::filesystem::path& path) {
+    NcFile nc(path);
+    if (auto st = nc.opened(); !st) return st.error();
+    const int root = nc.root();
+    auto freq = nc.doubles(root, "", "waveFrequency");
+    if (!freq) return freq.error();
+    auto width = nc.doubles(root, "", "waveBandwidth");
+    if (!width) return width.error();
+    auto energy = nc.doubles(root, "", "waveEnergyDensity");
+    if (!energy) return energy.error();
+    auto a1 = nc.doubles(root, "", "waveA1Value");
+    if (!a1) return a1.error();
+    auto b1 = nc.doubles(root, "", "waveB1Value");
+    if (!b1) return b1.error();
+    auto time = nc.doubles(root, "", "waveTime");
+    if (!time) return time.error();
+    auto units = nc.time_units(root, "", "waveTime");
+    if (!units) return units.error();
+    auto hs = nc.doubles(root, "", "waveHs"), tp = nc.doubles(root, "", "waveTp"), dp = nc.doubles(root, "", "waveDp");
+    const std::size_t nf = freq->size(), nt = time->size();
+    if (width->size() != nf || energy->size() != nt * nf || a1->size() != nt * nf || b1->size() != nt * nf)
+        return Error{ErrorCode::schema_error, fmt::format("{}: wave spectrum variables have inconsistent sizes", nc.name())};
+    std::vector<SpectralRecord> out(nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+        SpectralRecord& r = out[t];
+        r.time_utc_s = units->first + (*time)[t] * units->second;
+        if (hs && hs->size() == nt) r.reported_hs = (*hs)[t];
+        if (tp && tp->size() == nt) r.reported_tp = (*tp)[t];
+        if (dp && dp->size() == nt) r.reported_dp = (*dp)[t];
+        MeasuredSpectrum& s = r.spectrum;
+        s.frequency = *freq;
+        s.bandwidth = *width;
+        s.df = (*width)[0];
+        s.directional = true;
+        s.density.resize(nf), s.travel_east.resize(nf), s.travel_north.resize(nf), s.r1.resize(nf);
+        for (std::size_t k = 0; k < nf; ++k) {
+            const double e = (*energy)[t * nf + k];
+            s.density[k] = std::isfinite(e) && e > 0.0 ? e : 0.0;
+            // CDIP's a1, b1 are relative to true north: the mean direction waves come from.
+            const double x = (*a1)[t * nf + k], y = (*b1)[t * nf + k];
+            if (std::isfinite(x) && std::isfinite(y)) set_direction(s, k, std::atan2(y, x) * 180.0 / 3.14159265358979323846, std::hypot(x, y));
+        }
     }
     return out;
 }

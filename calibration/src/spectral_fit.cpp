@@ -32,8 +32,8 @@ T jonswap_shape(double f, const T& tp, const T& gamma) {
 
 /// Residuals over the band: (m0 shape_i / sum_j shape_j df - S_i) / S_peak.
 struct ShapeResiduals {
-    std::vector<double> f, s;
-    double df = 0.0, m0 = 0.0, peak = 1.0;
+    std::vector<double> f, s, w;  // centre, density and width of each bin
+    double m0 = 0.0, peak = 1.0;
 
     template <typename T>
     bool operator()(T const* const* parameters, T* residuals) const {
@@ -46,7 +46,7 @@ struct ShapeResiduals {
         T sum(0.0);
         for (std::size_t k = 0; k < f.size(); ++k) {
             shape[k] = jonswap_shape(f[k], tp[0], gamma[0]);
-            sum += shape[k] * df;
+            sum += shape[k] * w[k];
         }
         for (std::size_t k = 0; k < f.size(); ++k) residuals[k] = (m0 * shape[k] / sum - s[k]) / peak;
         return true;
@@ -66,16 +66,16 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, do
     double band_m0 = 0.0;
     for (std::size_t k = 0; k < spectrum.frequency.size(); ++k) {
         const double f = spectrum.frequency[k];
-        if (f >= f_lo && f <= f_hi) band_m0 += spectrum.density[k] * spectrum.df;
+        if (f >= f_lo && f <= f_hi) band_m0 += spectrum.density[k] * spectrum.width(k);
         if (f >= lo && f <= hi && f > 0.0) {
             residuals->f.push_back(f);
             residuals->s.push_back(spectrum.density[k]);
+            residuals->w.push_back(spectrum.width(k));
         }
     }
     if (residuals->f.size() < 4)
         return Error{ErrorCode::invalid_argument, fmt::format("the spectrum has {} bins in {}-{} Hz: too few to fit", residuals->f.size(), f_lo, f_hi)};
-    residuals->df = spectrum.df;
-    for (double v : residuals->s) residuals->m0 += v * spectrum.df;
+    for (std::size_t k = 0; k < residuals->s.size(); ++k) residuals->m0 += residuals->s[k] * residuals->w[k];
     residuals->peak = *std::max_element(residuals->s.begin(), residuals->s.end());
     if (!(residuals->m0 > 0.0) || !(band_m0 > 0.0)) return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
 
@@ -106,7 +106,7 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, do
     fit.spreading_s = measured.spreading_s;
     if (spectrum.directional) {
         // The peak direction: the bin holding the fitted peak frequency (CDIP's Dp is its peak band's).
-        const auto bin = static_cast<std::size_t>(std::lround(1.0 / (fit.tp * spectrum.df)));
+        const std::size_t bin = spectrum.nearest_bin(1.0 / fit.tp);
         if (bin < spectrum.frequency.size()) {
             const double travel = std::atan2(spectrum.travel_north[bin], spectrum.travel_east[bin]) * 180.0 / 3.14159265358979323846;
             fit.peak_from_deg = std::fmod(270.0 - travel + 720.0, 360.0);

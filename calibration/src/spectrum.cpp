@@ -100,22 +100,32 @@ Result<MeasuredSpectrum> welch_spectrum(const MeasuredRecord& r, const WelchOpti
     return s;
 }
 
+std::size_t MeasuredSpectrum::nearest_bin(double f) const {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < frequency.size(); ++k)
+        if (std::abs(frequency[k] - f) < std::abs(frequency[best] - f)) best = k;
+    return best;
+}
+
 SeaState summarize(const MeasuredSpectrum& s, double f_lo, double f_hi) {
     SeaState out;
     double m0 = 0.0, best = -1.0;
     std::size_t peak = 0;
     for (std::size_t f = 0; f < s.frequency.size(); ++f) {
         if (s.frequency[f] < f_lo || s.frequency[f] > f_hi) continue;
-        m0 += s.density[f] * s.df;
+        m0 += s.density[f] * s.width(f);
         if (s.density[f] > best) best = s.density[f], peak = f;
     }
     out.hs = 4.0 * std::sqrt(m0);
     // Peak frequency refined by a parabola through the peak bin and its neighbours.
     double fp = s.frequency[peak];
     if (peak > 0 && peak + 1 < s.frequency.size()) {
-        const double a = s.density[peak - 1], b = s.density[peak], c = s.density[peak + 1];
-        const double denom = a - 2.0 * b + c;
-        if (denom < 0.0) fp += 0.5 * (a - c) / denom * s.df;
+        // The vertex of the parabola through the peak bin and its neighbours (any spacing).
+        const double x0 = s.frequency[peak - 1], x1 = s.frequency[peak], x2 = s.frequency[peak + 1];
+        const double y0 = s.density[peak - 1], y1 = s.density[peak], y2 = s.density[peak + 1];
+        const double num = (x1 - x0) * (x1 - x0) * (y1 - y2) - (x1 - x2) * (x1 - x2) * (y1 - y0);
+        const double den = (x1 - x0) * (y1 - y2) - (x1 - x2) * (y1 - y0);
+        if (den != 0.0) fp = std::clamp(x1 - 0.5 * num / den, x0, x2);
     }
     out.tp = fp > 0.0 ? 1.0 / fp : 0.0;
     if (s.directional) {

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <map>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -175,6 +177,56 @@ TEST(RealRecords, WaveTankProbesAroundTheHighestCrest) {
         EXPECT_LE(fit->waves.size(), 32u);
         EXPECT_GE(fit->r2, 0.95);
     }
+}
+
+// Spectral files: CDIP's spectral netCDF and NDBC's text spectra, fitted directly.
+TEST(RealRecords, SpectralFilesFitTheirProducersSummaries) {
+    TIDEWATER_REQUIRE_REFDATA("cdip_028_santa_monica_spectral");
+    auto cdip = read_cdip_spectra(refdata_dir() / "cdip_028_santa_monica_spectral" / "028p0_d24_rt.nc");
+    ASSERT_TRUE(cdip.ok()) << cdip.error().message;
+    ASSERT_EQ(cdip->size(), 7u);
+    for (const SpectralRecord& r : *cdip) {
+        auto fit = fit_jonswap(r.spectrum);
+        ASSERT_TRUE(fit.ok()) << fit.error().message;
+        std::printf("CDIP 028 %.0f: Hs %.3f (CDIP %.3f)  Tp %.2f (CDIP %.2f)  Dp %.0f (CDIP %.0f)\n", r.time_utc_s, fit->hs, r.reported_hs,
+                    fit->tp, r.reported_tp, fit->peak_from_deg, r.reported_dp);
+        EXPECT_NEAR(fit->hs, r.reported_hs, 0.05 * r.reported_hs);
+        EXPECT_NEAR(fit->tp, r.reported_tp, 0.10 * r.reported_tp);
+        EXPECT_LT(angle_difference(fit->peak_from_deg, r.reported_dp), 20.0);
+    }
+    TIDEWATER_REQUIRE_REFDATA("ndbc_41010_directional");
+    auto ndbc = read_ndbc_spectra(refdata_dir() / "ndbc_41010_directional" / "41010.data_spec");
+    ASSERT_TRUE(ndbc.ok()) << ndbc.error().message;
+    EXPECT_EQ(ndbc->size(), 149u);
+    // NDBC's bulk file (WVHT, 0.1 m resolution) is stamped 10 minutes before each spectrum.
+    std::ifstream bulk(refdata_dir() / "ndbc_41010_directional" / "41010.spec");
+    std::map<long, double> wvht;
+    for (std::string line; std::getline(bulk, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream c(line);
+        int y, mo, d, h, mi;
+        double hs;
+        c >> y >> mo >> d >> h >> mi >> hs;
+        wvht[((y * 100L + mo) * 100 + d) * 100 + h] = hs;
+    }
+    std::vector<double> differences;
+    for (const SpectralRecord& r : *ndbc) {
+        const auto days = static_cast<long>(std::floor(r.time_utc_s / 86400.0));
+        const std::chrono::year_month_day ymd{std::chrono::sys_days{std::chrono::days{days}}};
+        const long hour = static_cast<long>(std::fmod(r.time_utc_s, 86400.0) / 3600.0);
+        const long key = ((static_cast<int>(ymd.year()) * 100L + static_cast<unsigned>(ymd.month())) * 100 + static_cast<unsigned>(ymd.day())) * 100 + hour;
+        const auto it = wvht.find(key);
+        if (it == wvht.end()) continue;
+        auto fit = fit_jonswap(r.spectrum, 0.02, 0.5);
+        ASSERT_TRUE(fit.ok()) << fit.error().message;
+        differences.push_back(std::abs(fit->hs - it->second));
+    }
+    ASSERT_GT(differences.size(), 100u);
+    std::sort(differences.begin(), differences.end());
+    const double median = differences[differences.size() / 2], worst = differences.back();
+    std::printf("NDBC 41010: %zu spectra against WVHT (0.1 m steps): median |Hs - WVHT| %.3f m, worst %.3f m\n", differences.size(), median, worst);
+    EXPECT_LE(median, 0.05);  // within WVHT's rounding
+    EXPECT_LT(worst, 0.15);
 }
 
 }  // namespace

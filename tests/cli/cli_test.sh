@@ -283,6 +283,21 @@ JSON
     bad "wrong units (a depth that is not a number of metres)" "depth" series.csv --column z=height --depth -5
     bad "wrong units (elevations in mm read as m)" "--scale z=0.01" series.csv --column z=height --scale z=1000
     bad "wrong units (time in ms read as s)" "--scale t=0.001" series.csv --column z=height --scale t=1000
+
+    # Spectral files and buoy archives from ../shared/refdata, when it is there.
+    REFDATA="$EXAMPLES/../../shared/refdata"
+    if [ -d "$REFDATA/ndbc_41010_directional" ] && [ -d "$REFDATA/cdip_067_san_nicolas_xyz" ]; then
+      "$TW" fit --data "$REFDATA/ndbc_41010_directional/41010.data_spec" --method spectral --waves 24 --preset ndbc.json --report ndbc_report.json --plot ndbc.svg --quiet > /dev/null
+      check "NDBC spectral fit writes preset, report and plot" bash -c "grep -q '\"gamma\"' ndbc_report.json && grep -q '<svg' ndbc.svg && test \$(grep -c '\"wavelength\"' ndbc.json) -eq 24"
+      echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -500}}, "shore": {"enabled": false}, "ocean": "ndbc.json"}' > ndbc_scene.json
+      check "the spectral preset loads in the runtime" "$TW" query --scene ndbc_scene.json --points gauge.csv --time 1
+      "$TW" fit --data "$REFDATA/cdip_067_san_nicolas_xyz/067.20220102_0000.20220102_0600.nc" --kind buoy --method spectral --report cdip_report.json --quiet > /dev/null
+      check "CDIP x/y/z netCDF spectral fit" grep -q '"peak_direction_from_deg"' cdip_report.json
+      bad "phase fit of a spectral file" "no phases" "$REFDATA/ndbc_41010_directional/41010.data_spec"
+      bad "spectrum index out of range" "--record 500" "$REFDATA/ndbc_41010_directional/41010.data_spec" --method spectral --record 500
+    else
+      echo "skipped: spectral-file checks ($REFDATA is absent)"
+    fi
     ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;

@@ -27,7 +27,7 @@ struct FitArgs {
     std::vector<std::string> columns, scales;
     std::vector<double> sentinels;
     double depth = 0.0;
-    int waves = 0, max_waves = 32;
+    int waves = 0, max_waves = 32, record_index = 0;
     unsigned threads = 1;
     std::uint64_t seed = 1;
     bool quiet = false;
@@ -89,6 +89,63 @@ nlohmann::json wave_json(const FittedWave& w, RecordKind kind) {
     return j;
 }
 
+/// Writes `text` to each path given, all or none.
+Status write_all(const std::vector<std::pair<std::string, std::string>>& files) {
+    std::vector<std::unique_ptr<AtomicFile>> staged;
+    for (const auto& [path, text] : files) {
+        if (path.empty()) continue;
+        staged.push_back(std::make_unique<AtomicFile>(path));
+        if (!staged.back()->status()) return staged.back()->status();
+        staged.back()->stream() << text;
+    }
+    for (auto& f : staged)
+        if (auto st = f->commit(); !st) return st;
+    return {};
+}
+
+/// A spectrum from a spectral file (CDIP netCDF or NDBC text): JONSWAP fit and a sampled preset.
+int run_spectral_file(const FitArgs& a, const std::string& format) {
+    constexpr const char* verb = "fit";
+    if (a.method != "spectral") return fail(verb, "a spectral file has no phases to fit: use --method spectral");
+    auto records = format == "ndbc" ? read_ndbc_spectra(a.data) : read_cdip_spectra(a.data);
+    if (!records) return fail(verb, records.error().message);
+    if (a.record_index < 0 || a.record_index >= static_cast<int>(records->size()))
+        return fail(verb, fmt::format("--record {}: the file has spectra 0 to {}", a.record_index, records->size() - 1));
+    const SpectralRecord& r = (*records)[static_cast<std::size_t>(a.record_index)];
+    auto fit = fit_jonswap(r.spectrum);
+    if (!fit) return fail(verb, fmt::format("{}: {}", a.data, fit.error().message));
+    auto waves = sample_preset_waves(*fit, a.waves > 0 ? a.waves : 32, a.seed);
+    if (!waves) return fail(verb, waves.error().message);
+    const SeaState m = summarize(r.spectrum);
+    nlohmann::json report = {{"source", a.data}, {"kind", "spectrum"}, {"method", "spectral"}, {"record", a.record_index},
+                             {"record_time_utc_s", r.time_utc_s}, {"bins", r.spectrum.frequency.size()},
+                             {"measured", {{"hs_m", m.hs}, {"tp_s", m.tp}}},
+                             {"spectral_fit", {{"hs_m", fit->hs}, {"tp_s", fit->tp}, {"gamma", fit->gamma}, {"spreading_s", fit->spreading_s},
+                                               {"mean_travel_deg", fit->mean_travel_deg}, {"shape_r2", fit->r2}, {"iterations", fit->iterations}}}};
+    if (r.spectrum.directional) report["measured"]["peak_direction_from_deg"] = fit->peak_from_deg;
+    if (r.reported_hs >= 0.0) report["reported_by_source"] = {{"hs_m", r.reported_hs}, {"tp_s", r.reported_tp}, {"dp_from_deg", r.reported_dp}};
+    const SeaState model = sea_state_of(*waves);
+    report["model"] = {{"hs_m", model.hs}, {"tp_s", fit->tp}, {"mean_travel_deg", model.mean_travel_deg}};
+    std::string plot;
+    if (!a.plot.empty()) {
+        ChartSeries measured{"measured", {}, {}, "#1f77b4"}, fitted{"fitted JONSWAP", {}, {}, "#d62728"};
+        for (std::size_t k = 0; k < r.spectrum.frequency.size(); ++k) {
+            measured.x.push_back(r.spectrum.frequency[k]), measured.y.push_back(r.spectrum.density[k]);
+            fitted.x.push_back(r.spectrum.frequency[k]), fitted.y.push_back(jonswap_density(r.spectrum.frequency[k], fit->hs, fit->tp, fit->gamma));
+        }
+        plot = line_chart_svg({measured, fitted}, fmt::format("{} #{}: Hs {:.2f} m, Tp {:.1f} s, gamma {:.1f}",
+                                                              std::filesystem::path(a.data).filename().string(), a.record_index, fit->hs, fit->tp, fit->gamma),
+                               "frequency, Hz", "variance density, m^2/Hz");
+    }
+    const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
+    const nlohmann::json preset = preset_json(name, fmt::format("Sampled from a JONSWAP fitted to {} (spectrum {})", a.data, a.record_index), *waves);
+    if (auto st = write_all({{a.preset, preset.dump(2) + "\n"}, {a.report, report.dump(2) + "\n"}, {a.plot, plot}}); !st)
+        return fail(verb, st.error().message);
+    std::printf("fitted a JONSWAP to %s #%d: Hs %.3f m, Tp %.2f s, gamma %.2f; preset of %zu waves\n", a.data.c_str(), a.record_index, fit->hs,
+                fit->tp, fit->gamma, waves->size());
+    return 0;
+}
+
 int run_fit(const FitArgs& a) {
     constexpr const char* verb = "fit";
     if (a.data.empty()) return fail(verb, "give --data FILE");
@@ -100,6 +157,9 @@ int run_fit(const FitArgs& a) {
     else return fail(verb, fmt::format("--kind {}: use gauge, buoy or profile", a.kind));
     if (a.method != "phase" && a.method != "spectral") return fail(verb, fmt::format("--method {}: use phase or spectral", a.method));
     if (!(a.depth >= 0.0) || !std::isfinite(a.depth)) return fail(verb, "--depth must be a finite number of metres (0 = deep water)");
+    const std::string ext = std::filesystem::path(a.data).extension().string();
+    if (a.format == "cdip-spectra" || a.format == "ndbc" || (a.format.empty() && ext == ".data_spec"))
+        return run_spectral_file(a, a.format == "cdip-spectra" ? "cdip-spectra" : "ndbc");
     auto record = read_record(a, kind);
     if (!record) return fail(verb, record.error().message);
     if (a.depth > 0.0) record->depth = a.depth;
@@ -255,7 +315,10 @@ Verb add_fit_verb(CLI::App& app) {
     cmd->add_option("--data", a->data, "Measured data: CSV with a header, CDIP netCDF (.nc), Datawell raw (.raw) or two columns");
     cmd->add_option("--kind", a->kind, "gauge (elevation at a point), buoy (east/north/heave) or profile (elevation along x)")
         ->capture_default_str();
-    cmd->add_option("--format", a->format, "csv, cdip, datawell or columns (default: from the extension)");
+    cmd->add_option("--format", a->format,
+                    "csv, cdip (x/y/z), datawell, columns, or the spectral files cdip-spectra and ndbc (.data_spec) "
+                    "(default: from the extension)");
+    cmd->add_option("--record", a->record_index, "Spectral files: which spectrum (0 = the first in the file)")->capture_default_str();
     cmd->add_option("--column", a->columns, "ROLE=NAME: the CSV column for t, x, z, east, north or flag");
     cmd->add_option("--scale", a->scales, "ROLE=FACTOR: file units to metres or seconds (e.g. z=0.01 for cm)");
     cmd->add_option("--sentinel", a->sentinels, "A value that means missing (default: -999, -999.9, -999.99, -9999, 9999, 99999)");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <vector>
 
 #include "tidewater/calibration/record.hpp"
@@ -23,10 +24,29 @@ struct MeasuredSpectrum {
     /// Buoy only: per bin, the direction of travel's vector (east, north) from the heave /
     /// horizontal quadrature spectrum, and r1 (0..1, how concentrated the direction is).
     std::vector<double> travel_east, travel_north, r1;
+    std::vector<double> bandwidth;  ///< Hz per bin when bins differ (spectral files); empty: every bin is df wide.
     double df = 0.0;
     int segments = 0;
     bool directional = false;
+
+    double width(std::size_t bin) const { return bandwidth.empty() ? df : bandwidth[bin]; }
+    /// The bin whose centre is nearest to `f`, Hz.
+    std::size_t nearest_bin(double f) const;
 };
+
+/// One spectrum from a spectral file, with what its producer reported for it.
+struct SpectralRecord {
+    double time_utc_s = 0.0;  ///< Start (CDIP) or stamp (NDBC), s since 1970.
+    MeasuredSpectrum spectrum;
+    double reported_hs = -1.0, reported_tp = -1.0, reported_dp = -1.0;  ///< m, s, degrees from (negative: not given)
+};
+
+/// Spectra of a CDIP spectral netCDF file (wave* variables: energy density, bandwidth,
+/// a1/b1 relative to true north).
+Result<std::vector<SpectralRecord>> read_cdip_spectra(const std::filesystem::path& path);
+/// Spectra of an NDBC .data_spec file, with direction from the sibling .swdir (alpha1)
+/// and .swr1 (r1) files when they are there. Newest first, as NDBC writes them.
+Result<std::vector<SpectralRecord>> read_ndbc_spectra(const std::filesystem::path& data_spec);
 
 /// Welch's estimate over the record's uniformly sampled runs (gaps split segments).
 Result<MeasuredSpectrum> welch_spectrum(const MeasuredRecord& record, const WelchOptions& options = {});
