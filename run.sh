@@ -69,7 +69,7 @@ case "$cmd" in
     ctest --test-dir "$BUILD" --output-on-failure --parallel "$JOBS" --timeout 900
     # The unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
     configure "$BUILD-asan" -DTIDEWATER_SANITIZE=ON -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-    build "$BUILD-asan" --target tidewater_core_tests
+    build "$BUILD-asan" --target tidewater_core_tests tidewater_calibration_tests
     log "running the unit tests under ASan + UBSan"
     ctest --test-dir "$BUILD-asan" --output-on-failure --parallel "$JOBS" --timeout 900 -L unit
     ;;
