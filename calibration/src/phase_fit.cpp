@@ -56,29 +56,33 @@ struct Model {
     double depth;
     int waves;
 
-    /// Solves alpha + sum Q A cos(k alpha + c) = target for the Eulerian records; returns z.
+    /// Each wave's wavenumber (a profile fits k itself).
     template <typename T>
-    T eulerian(const T* p, double axis) const {
+    void wavenumbers(const T* p, std::array<T, 64>& k) const {
+        const auto m = static_cast<std::size_t>(stride(kind));
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i)
+            k[i] = kind == RecordKind::profile ? p[m * i + 1] : wavenumber(p[m * i + 1], depth);
+    }
+
+    /// Solves alpha + sum Q A cos(k alpha + c) = target for the Eulerian records; returns z.
+    /// `known_alpha` skips the double-precision solve (the same parameters, another Jet
+    /// pass); `solved_alpha` receives it.
+    template <typename T>
+    T eulerian(const T* p, const std::array<T, 64>& k, double axis, const double* known_alpha, double* solved_alpha) const {
         using std::cos;
         using std::sin;
         const auto m = static_cast<std::size_t>(stride(kind));
         const auto n = static_cast<std::size_t>(waves);
-        // Per wave: k and the phase part that does not depend on alpha.
-        std::array<T, 64> k, c;
+        // Per wave, the phase part that does not depend on alpha.
+        std::array<T, 64> c;
         for (std::size_t i = 0; i < n; ++i) {
             const T* w = p + m * i;
-            if (kind == RecordKind::profile) {
-                k[i] = w[1];
-                c[i] = w[2];
-            } else {
-                k[i] = wavenumber(w[1], depth);
-                c[i] = w[2] - w[1] * axis;
-            }
+            c[i] = kind == RecordKind::profile ? w[2] : w[2] - w[1] * axis;
         }
         const double target = kind == RecordKind::profile ? axis : 0.0;
         // Newton on the values, then one step with T for exact first derivatives.
-        double a = target;
-        for (int it = 0; it < 40; ++it) {
+        double a = known_alpha ? *known_alpha : target;
+        for (int it = 0; it < 40 && !known_alpha; ++it) {
             double f = a - target, df = 1.0;
             for (std::size_t i = 0; i < n; ++i) {
                 const T* w = p + m * i;
@@ -90,6 +94,7 @@ struct Model {
             a -= step;
             if (std::abs(step) < 1e-12) break;
         }
+        if (solved_alpha) *solved_alpha = a;
         T f = T(a - target), df = T(1.0);
         for (std::size_t i = 0; i < n; ++i) {
             const T* w = p + m * i;
@@ -102,6 +107,12 @@ struct Model {
         T z(0.0);
         for (std::size_t i = 0; i < n; ++i) z += p[m * i] * sin(k[i] * alpha + c[i]);
         return z;
+    }
+
+    double eulerian(const double* p, double axis) const {
+        std::array<double, 64> k;
+        wavenumbers(p, k);
+        return eulerian(p, k, axis, nullptr, nullptr);
     }
 
     /// Heave, east and north of the buoy at rest position 0.
@@ -122,26 +133,43 @@ struct Model {
     }
 };
 
-/// Residuals of a chunk of samples.
+/// Residuals of a chunk of samples. Ceres evaluates a block's Jacobian in several Jet
+/// passes with the same parameter values: the double-precision Eulerian solves are kept
+/// from the first pass for the others. (A block is never evaluated by two threads at once.)
 struct ChunkResiduals {
     Model model;
     const MeasuredRecord* record;
     std::size_t first, count;
+    int parameters;
+    mutable std::vector<double> cached_values, cached_alpha;
 
     template <typename T>
-    bool operator()(T const* const* parameters, T* residuals) const {
-        const T* p = parameters[0];
-        for (std::size_t j = 0; j < count; ++j) {
-            const std::size_t s = first + j;
-            if (model.kind == RecordKind::buoy) {
+    bool operator()(T const* const* blocks, T* residuals) const {
+        const T* p = blocks[0];
+        if (model.kind == RecordKind::buoy) {
+            for (std::size_t j = 0; j < count; ++j) {
+                const std::size_t s = first + j;
                 T out[3];
                 model.lagrangian(p, record->axis[s], out);
                 residuals[3 * j] = out[0] - record->z[s];
                 residuals[3 * j + 1] = out[1] - record->east[s];
                 residuals[3 * j + 2] = out[2] - record->north[s];
-            } else {
-                residuals[j] = model.eulerian(p, record->axis[s]) - record->z[s];
             }
+            return true;
+        }
+        bool same = cached_values.size() == static_cast<std::size_t>(parameters) && cached_alpha.size() == count;
+        for (int i = 0; same && i < parameters; ++i) same = cached_values[static_cast<std::size_t>(i)] == scalar(p[i]);
+        if (!same) {
+            cached_values.resize(static_cast<std::size_t>(parameters));
+            for (int i = 0; i < parameters; ++i) cached_values[static_cast<std::size_t>(i)] = scalar(p[i]);
+            cached_alpha.assign(count, 0.0);
+        }
+        std::array<T, 64> k;
+        model.wavenumbers(p, k);
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::size_t s = first + j;
+            residuals[j] = model.eulerian(p, k, record->axis[s], same ? &cached_alpha[j] : nullptr, same ? nullptr : &cached_alpha[j]) -
+                           record->z[s];
         }
         return true;
     }
@@ -296,7 +324,7 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
     for (std::size_t first = 0; first < r.size(); first += kChunk) {
         const std::size_t count = std::min(kChunk, r.size() - first);
-        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 16>(new ChunkResiduals{model, &r, first, count});
+        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 16>(new ChunkResiduals{model, &r, first, count, m * waves, {}, {}});
         cost->AddParameterBlock(m * waves);
         cost->SetNumResiduals(static_cast<int>(count) * per_sample);
         problem->AddResidualBlock(cost, huber > 0.0 ? new ceres::HuberLoss(huber) : nullptr, p.data());
@@ -325,6 +353,19 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     options.logging_type = ceres::SILENT;
     options.function_tolerance = 1e-9;
     options.parameter_tolerance = 1e-9;
+    // Long fits report every 10 iterations.
+    struct Progress : ceres::IterationCallback {
+        const PhaseFitOptions* o;
+        int waves;
+        ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+            if (s.iteration > 0 && s.iteration % 10 == 0)
+                o->progress(fmt::format("fit: {} waves, iteration {}, cost {:.4g}", waves, s.iteration, s.cost));
+            return ceres::SOLVER_CONTINUE;
+        }
+    } progress;
+    progress.o = &o;
+    progress.waves = waves;
+    if (o.progress) options.callbacks.push_back(&progress);
     ceres::Solver::Summary summary;
     ceres::Solve(options, problem.get(), &summary);
     Solved out;
