@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
+#include <initializer_list>
+#include <map>
 
 #include "tidewater/calibration/readers.hpp"
 #include "spectrum_direction.hpp"
@@ -56,6 +58,16 @@ public:
             return Error{ErrorCode::io_error, fmt::format("{}: {}/{} cannot be read as numbers", name_, group, var)};
         return out;
     }
+    /// Several variables of `group`, by name; fails on the first missing one.
+    Result<std::map<std::string, std::vector<double>>> read_all(int g, const char* group, std::initializer_list<const char*> names) const {
+        std::map<std::string, std::vector<double>> out;
+        for (const char* name : names) {
+            auto v = doubles(g, group, name);
+            if (!v) return v.error();
+            out[name] = std::move(v).value();
+        }
+        return out;
+    }
     /// The epoch of a "UNIT since YYYY-MM-DD HH:MM:SS[.f]" units attribute: seconds since 1970 and seconds per unit.
     Result<std::pair<double, double>> time_units(int g, const char* group, const char* var) const {
         int v = 0;
@@ -93,20 +105,13 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
     if (auto st = nc.opened(); !st) return st.error();
     auto g = nc.group("XYZ");
     if (!g) return g.error();
-    auto north = nc.doubles(*g, "XYZ", "x");  // CDIP's x is north, y west (PROVENANCE.md's cross-phase check)
-    if (!north) return north.error();
-    auto west = nc.doubles(*g, "XYZ", "y");
-    if (!west) return west.error();
-    auto z = nc.doubles(*g, "XYZ", "z");
-    if (!z) return z.error();
-    auto flags = nc.doubles(*g, "XYZ", "FlagPrimary");
-    if (!flags) return flags.error();
-    auto t = nc.doubles(*g, "XYZ", "t");
-    if (!t) return t.error();
+    auto vars = nc.read_all(*g, "XYZ", {"x", "y", "z", "FlagPrimary", "t", "FilterDelay"});
+    if (!vars) return vars.error();
+    // CDIP's x is north, y west (PROVENANCE.md's cross-phase check).
+    const auto *north = &(*vars)["x"], *west = &(*vars)["y"], *z = &(*vars)["z"], *flags = &(*vars)["FlagPrimary"], *t = &(*vars)["t"];
+    const auto* delay = &(*vars)["FilterDelay"];
     auto units = nc.time_units(*g, "XYZ", "t");
     if (!units) return units.error();
-    auto delay = nc.doubles(*g, "XYZ", "FilterDelay");
-    if (!delay) return delay.error();
     const std::size_t n = z->size();
     if (north->size() != n || west->size() != n || flags->size() != n || t->size() != n)
         return Error{ErrorCode::schema_error, fmt::format("{}: XYZ variables have different lengths", nc.name())};
@@ -155,14 +160,9 @@ Result<std::vector<CdipWaveSummary>> read_cdip_wave_summaries(const std::filesys
     if (auto st = nc.opened(); !st) return st.error();
     auto g = nc.group("Wave");
     if (!g) return g.error();
-    auto hs = nc.doubles(*g, "Wave", "Hs");
-    if (!hs) return hs.error();
-    auto tp = nc.doubles(*g, "Wave", "Tp");
-    if (!tp) return tp.error();
-    auto dp = nc.doubles(*g, "Wave", "Dp");
-    if (!dp) return dp.error();
-    auto bounds = nc.doubles(*g, "Wave", "TimeBounds");
-    if (!bounds) return bounds.error();
+    auto vars = nc.read_all(*g, "Wave", {"Hs", "Tp", "Dp", "TimeBounds"});
+    if (!vars) return vars.error();
+    const auto *hs = &(*vars)["Hs"], *tp = &(*vars)["Tp"], *dp = &(*vars)["Dp"], *bounds = &(*vars)["TimeBounds"];
     auto units = nc.time_units(*g, "Wave", "TimeBounds");
     if (!units) return units.error();
     if (tp->size() != hs->size() || dp->size() != hs->size() || bounds->size() != 2 * hs->size())
@@ -190,18 +190,10 @@ Result<std::vector<SpectralRecord>> read_cdip_spectra(const std::filesystem::pat
     NcFile nc(path);
     if (auto st = nc.opened(); !st) return st.error();
     const int root = nc.root();
-    auto freq = nc.doubles(root, "", "waveFrequency");
-    if (!freq) return freq.error();
-    auto width = nc.doubles(root, "", "waveBandwidth");
-    if (!width) return width.error();
-    auto energy = nc.doubles(root, "", "waveEnergyDensity");
-    if (!energy) return energy.error();
-    auto a1 = nc.doubles(root, "", "waveA1Value");
-    if (!a1) return a1.error();
-    auto b1 = nc.doubles(root, "", "waveB1Value");
-    if (!b1) return b1.error();
-    auto time = nc.doubles(root, "", "waveTime");
-    if (!time) return time.error();
+    auto vars = nc.read_all(root, "", {"waveFrequency", "waveBandwidth", "waveEnergyDensity", "waveA1Value", "waveB1Value", "waveTime"});
+    if (!vars) return vars.error();
+    const auto *freq = &(*vars)["waveFrequency"], *width = &(*vars)["waveBandwidth"], *energy = &(*vars)["waveEnergyDensity"];
+    const auto *a1 = &(*vars)["waveA1Value"], *b1 = &(*vars)["waveB1Value"], *time = &(*vars)["waveTime"];
     auto units = nc.time_units(root, "", "waveTime");
     if (!units) return units.error();
     auto hs = nc.doubles(root, "", "waveHs"), tp = nc.doubles(root, "", "waveTp"), dp = nc.doubles(root, "", "waveDp");

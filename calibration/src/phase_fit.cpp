@@ -13,6 +13,7 @@
 #include "tidewater/calibration/phase_fit.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/dispersion.hpp"
 
 namespace tidewater::calibration {
 
@@ -30,21 +31,12 @@ double scalar(const ceres::Jet<T, N>& v) {
 /// Parameters per wave: amplitude, omega (profile: k), phase, Q, and for a buoy the direction.
 int stride(RecordKind kind) { return kind == RecordKind::buoy ? 5 : 4; }
 
-/// Finite-depth wavenumber; derivatives through one Newton step from the converged value.
+/// Finite-depth wavenumber (the runtime's solver); derivatives through one Newton step
+/// from the converged value.
 template <typename T>
 T wavenumber(const T& omega, double depth) {
-    using std::tanh;
     if (!std::isfinite(depth)) return omega * omega / kGravity;
-    const double w = scalar(omega);
-    double k = std::max(w * w / kGravity, w / std::sqrt(kGravity * depth));
-    for (int it = 0; it < 50; ++it) {
-        const double t = std::tanh(k * depth);
-        const double f = kGravity * k * t - w * w;
-        const double df = kGravity * (t + k * depth * (1.0 - t * t));
-        const double step = f / df;
-        k -= step;
-        if (std::abs(step) < 1e-14 * k) break;
-    }
+    const double k = wavenumber_at_depth(scalar(omega), depth);
     const double t = std::tanh(k * depth);
     const double df = kGravity * (t + k * depth * (1.0 - t * t));
     return T(k) - (T(kGravity * k * t) - omega * omega) / df;

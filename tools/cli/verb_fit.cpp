@@ -278,29 +278,8 @@ int run_fit(const FitArgs& a) {
     const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
     const nlohmann::json preset = preset_json(name, fmt::format("Fitted to {} ({} data, {} fit) by tidewater fit", record->source,
                                                                 to_string(kind), a.method), waves);
-    // All outputs or none: stage them, then commit.
-    std::unique_ptr<AtomicFile> preset_file, report_file, plot_file;
-    if (!a.plot.empty()) {
-        plot_file = std::make_unique<AtomicFile>(a.plot);
-        if (!plot_file->status()) return fail(verb, plot_file->status().error().message);
-        plot_file->stream() << plot_svg;
-    }
-    if (!a.preset.empty()) {
-        preset_file = std::make_unique<AtomicFile>(a.preset);
-        if (!preset_file->status()) return fail(verb, preset_file->status().error().message);
-        preset_file->stream() << preset.dump(2) << "\n";
-    }
-    if (!a.report.empty()) {
-        report_file = std::make_unique<AtomicFile>(a.report);
-        if (!report_file->status()) return fail(verb, report_file->status().error().message);
-        report_file->stream() << report.dump(2) << "\n";
-    }
-    if (preset_file)
-        if (auto st = preset_file->commit(); !st) return fail(verb, st.error().message);
-    if (report_file)
-        if (auto st = report_file->commit(); !st) return fail(verb, st.error().message);
-    if (plot_file)
-        if (auto st = plot_file->commit(); !st) return fail(verb, st.error().message);
+    if (auto st = write_all({{a.preset, preset.dump(2) + "\n"}, {a.report, report.dump(2) + "\n"}, {a.plot, plot_svg}}); !st)
+        return fail(verb, st.error().message);
     std::printf("fitted %zu waves to %s: model Hs %.3f m, Tp %.2f s%s\n", waves.size(), record->source.c_str(), model.hs, model.tp,
                 report.contains("fit") ? fmt::format(", R^2 {:.4f}", report["fit"]["r2"].get<double>()).c_str() : "");
     return 0;
