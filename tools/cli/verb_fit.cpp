@@ -203,7 +203,7 @@ int run_fit(const FitArgs& a) {
     var /= static_cast<double>(record->size());
     report["measured"] = {{"hs_m", 4.0 * std::sqrt(var)}};
     std::vector<WaveSpec> waves;
-    std::string plot_svg;
+    std::string plot_svg, series_csv;
     double hs_over_record = -1.0;
     if (a.method == "spectral") {
         auto spectrum = welch_spectrum(*record);
@@ -262,12 +262,9 @@ int run_fit(const FitArgs& a) {
                                       kind == RecordKind::profile ? "x, m" : "t, s", kind == RecordKind::buoy ? "heave, m" : "elevation, m");
         }
         if (!a.series.empty()) {
-            AtomicFile out(a.series);
-            if (!out.status()) return fail(verb, out.status().error().message);
-            out.stream() << (kind == RecordKind::profile ? "x_m" : "t_s") << ",measured_m,model_m\n";
+            series_csv = kind == RecordKind::profile ? "x_m,measured_m,model_m\n" : "t_s,measured_m,model_m\n";
             for (std::size_t k = 0; k < record->size(); ++k)
-                out.stream() << fmt::format("{:.6f},{:.6f},{:.6f}\n", record->axis[k], record->z[k], fit->model_z[k]);
-            if (auto st = out.commit(); !st) return fail(verb, st.error().message);
+                series_csv += fmt::format("{:.6f},{:.6f},{:.6f}\n", record->axis[k], record->z[k], fit->model_z[k]);
         }
     }
     SeaState model = sea_state_of(waves);
@@ -278,7 +275,7 @@ int run_fit(const FitArgs& a) {
     const std::string name = a.name.empty() ? std::filesystem::path(a.data).stem().string() : a.name;
     const nlohmann::json preset = preset_json(name, fmt::format("Fitted to {} ({} data, {} fit) by tidewater fit", record->source,
                                                                 to_string(kind), a.method), waves);
-    if (auto st = write_all({{a.preset, preset.dump(2) + "\n"}, {a.report, report.dump(2) + "\n"}, {a.plot, plot_svg}}); !st)
+    if (auto st = write_all({{a.preset, preset.dump(2) + "\n"}, {a.report, report.dump(2) + "\n"}, {a.plot, plot_svg}, {a.series, series_csv}}); !st)
         return fail(verb, st.error().message);
     std::printf("fitted %zu waves to %s: model Hs %.3f m, Tp %.2f s%s\n", waves.size(), record->source.c_str(), model.hs, model.tp,
                 report.contains("fit") ? fmt::format(", R^2 {:.4f}", report["fit"]["r2"].get<double>()).c_str() : "");
