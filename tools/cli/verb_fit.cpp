@@ -156,6 +156,7 @@ int run_fit(const FitArgs& a) {
     else if (a.kind == "profile") kind = RecordKind::profile;
     else return fail(verb, fmt::format("--kind {}: use gauge, buoy or profile", a.kind));
     if (a.method != "phase" && a.method != "spectral") return fail(verb, fmt::format("--method {}: use phase or spectral", a.method));
+    if (a.method == "spectral" && !a.series.empty()) return fail(verb, "--series writes a phase fit's samples: it needs --method phase");
     if (!(a.depth >= 0.0) || !std::isfinite(a.depth)) return fail(verb, "--depth must be a finite number of metres (0 = deep water)");
     const std::string ext = std::filesystem::path(a.data).extension().string();
     if (a.format == "cdip-spectra" || a.format == "ndbc" || (a.format.empty() && ext == ".data_spec"))
