@@ -299,6 +299,24 @@ JSON
       echo "skipped: spectral-file checks ($REFDATA is absent)"
     fi
     ;;
+  inspect)
+    "$TW" inspect --resolution 24x20 --extent=-500:500,-400:400 --times 0:2:0.5 --export series --quiet > log.txt
+    check "export exits 0" test $? -eq 0
+    check "one .vts per time step, the terrain and the collection" bash -c "ls series/surface_000{0,1,2,3,4}.vts series/terrain.vts series/surface.pvd > /dev/null"
+    check "the collection lists the time steps" bash -c "test \$(grep -c 'part=\"0\"' series/surface.pvd) -eq 5"
+    check "no temporary export folder left" bash -c "! ls -d series.tmp-* 2>/dev/null"
+    if command -v xvfb-run > /dev/null; then
+      xvfb-run -a "$TW" inspect --resolution 64x64 --time 1 --field jacobian --screenshot shot.png --size 320x200 > /dev/null
+      check "screenshot written" test -s shot.png
+    fi
+    expect_error "unknown field" "--field \"vorticity\" is unknown" "$TW" inspect --time 0 --field vorticity --export e1
+    expect_error "empty time range" "--times" "$TW" inspect --times 5:1:1 --export e2
+    expect_error "a grid of 10^9 points" "more than" "$TW" inspect --time 0 --resolution 40000x25000 --export e3
+    touch plain
+    expect_error "unwritable export folder" "cannot create folder" "$TW" inspect --time 0 --resolution 8x8 --export plain/sub
+    expect_error "nothing to write" "--export" "$TW" inspect --time 0
+    check "no partial export" bash -c "! ls -d e1 e2 e3 e1.tmp-* e2.tmp-* e3.tmp-* plain/sub 2>/dev/null"
+    ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;
 esac

@@ -17,6 +17,7 @@ Verb add_bench_verb(CLI::App& app);
 Verb add_demo_verb(CLI::App& app);
 Verb add_bake_verb(CLI::App& app);
 Verb add_fit_verb(CLI::App& app);
+Verb add_inspect_verb(CLI::App& app);
 #if defined(TIDEWATER_HAVE_RENDER)
 Verb add_render_verb(CLI::App& app);
 #endif

@@ -1,0 +1,144 @@
+// The inspector: exported files read back with VTK's own reader hold the documented
+// arrays with values equal to the core queries; pictures have the asked size, are not
+// blank, carry a colour legend, and differ between fields. Runs under xvfb-run.
+#include <gtest/gtest.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkStringArray.h>
+#include <vtkStructuredGrid.h>
+#include <vtkXMLStructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "tidewater/image_io.hpp"
+#include "tidewater/query.hpp"
+#include "vtk_output.hpp"
+
+namespace tidewater::inspect {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir(const std::string& name) {
+    return fs::temp_directory_path() / ("tidewater_inspect_" + std::to_string(::getpid()) + "_" + name);
+}
+
+TEST(Inspect, ExportReadsBackWithTheQueriesValues) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    SampleGrid grid;
+    grid.min = {-900.0, -700.0};
+    grid.max = {900.0, 800.0};  // open water, beaches and the island
+    grid.nx = 41, grid.nz = 37;
+    const fs::path dir = temp_dir("export");
+    const std::vector<double> times{0.0, 7.25};
+    ASSERT_TRUE(export_series(dir, *scene, grid, times, 0).ok());
+    EXPECT_TRUE(fs::exists(dir / "surface.pvd"));
+    EXPECT_TRUE(fs::exists(dir / "terrain.vts"));
+    for (std::size_t step = 0; step < times.size(); ++step) {
+        vtkNew<vtkXMLStructuredGridReader> reader;
+        const fs::path file = dir / ("surface_000" + std::to_string(step) + ".vts");
+        reader->SetFileName(file.c_str());
+        reader->Update();
+        vtkStructuredGrid* sg = reader->GetOutput();
+        ASSERT_EQ(sg->GetNumberOfPoints(), static_cast<vtkIdType>(grid.points())) << file;
+        for (const FieldInfo& f : field_infos()) {
+            auto* a = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray(f.name));
+            ASSERT_NE(a, nullptr) << f.name;
+            EXPECT_EQ(a->GetNumberOfComponents(), f.components) << f.name;
+            EXPECT_EQ(a->GetNumberOfTuples(), static_cast<vtkIdType>(grid.points())) << f.name;
+        }
+        auto* units = vtkStringArray::SafeDownCast(sg->GetFieldData()->GetAbstractArray("units"));
+        ASSERT_NE(units, nullptr);
+        EXPECT_EQ(units->GetNumberOfValues(), static_cast<vtkIdType>(field_infos().size()));
+        EXPECT_EQ(units->GetValue(0).find("height: m"), 0u);
+        // Every 7th point against an Eulerian query at the same place and time.
+        double worst = 0.0;
+        for (vtkIdType k = 0; k < sg->GetNumberOfPoints(); k += 7) {
+            double p[3];
+            sg->GetPoint(k, p);
+            const std::vector<glm::dvec2> where{{p[0], p[2]}};
+            std::vector<SurfacePoint> out(1);
+            ASSERT_TRUE(query_surface(scene->ocean, times[step], where, out).ok());
+            auto* height = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("height"));
+            auto* velocity = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("velocity"));
+            worst = std::max({worst, std::abs(height->GetValue(k) - out[0].height), std::abs(p[1] - out[0].height),
+                              std::abs(velocity->GetComponent(k, 1) - out[0].velocity.y)});
+        }
+        EXPECT_LT(worst, 1e-5) << "step " << step;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Inspect, ExportRefusesBadInputAndLeavesNothing) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    SampleGrid grid;
+    grid.nx = 40000, grid.nz = 25000;  // 10^9 points
+    const fs::path dir = temp_dir("refused");
+    EXPECT_NE(export_series(dir, *scene, grid, {0.0}, 0).error().message.find("more than"), std::string::npos);
+    grid.nx = grid.nz = 8;
+    EXPECT_FALSE(export_series(dir, *scene, grid, {}, 0).ok());  // empty time range
+    { std::ofstream(temp_dir("plain")) << "x"; }
+    EXPECT_FALSE(export_series(temp_dir("plain") / "sub", *scene, grid, {0.0}, 0).ok());
+    EXPECT_FALSE(fs::exists(dir));
+    fs::remove(temp_dir("plain"));
+}
+
+/// Pixels that differ from the background colour (the renderer's clear colour).
+double coverage(const Rgba8Image& img, int x0, int x1) {
+    const std::uint8_t* bg = &img.pixels[0];
+    std::size_t differ = 0, total = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const std::uint8_t* p = &img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x))];
+            differ += std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 30;
+            ++total;
+        }
+    return static_cast<double>(differ) / static_cast<double>(total);
+}
+
+TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    SampleGrid grid;
+    grid.min = {-1200.0, -1200.0};
+    grid.max = {1200.0, 1200.0};
+    grid.nx = grid.nz = 96;
+    auto sample = sample_field(*scene, grid, 3.0, 0);
+    ASSERT_TRUE(sample.ok());
+    const auto terrain = sample_terrain(*scene, grid);
+    std::vector<Rgba8Image> pictures;
+    for (const char* field : {"height", "foam"}) {
+        const fs::path png = temp_dir(std::string(field) + ".png");
+        ScreenshotOptions o;
+        o.field = field;
+        o.width = 640, o.height = 360;
+        ASSERT_TRUE(screenshot(*sample, terrain, o, png).ok()) << field;
+        auto img = read_png_rgba8(png);
+        ASSERT_TRUE(img.ok()) << img.error().message;
+        EXPECT_EQ(img->width, 640);
+        EXPECT_EQ(img->height, 360);
+        EXPECT_GT(coverage(*img, 0, img->width), 0.2) << field << ": the picture is blank";
+        // The legend sits in the right tenth of the picture.
+        EXPECT_GT(coverage(*img, static_cast<int>(0.89 * img->width), static_cast<int>(0.95 * img->width)), 0.3) << field << ": no legend";
+        pictures.push_back(std::move(img).value());
+        fs::remove(png);
+    }
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k) differ += pictures[0].pixels[k] != pictures[1].pixels[k];
+    EXPECT_GT(static_cast<double>(differ) / static_cast<double>(pictures[0].pixels.size()), 0.05);
+    ScreenshotOptions bad;
+    bad.field = "vorticity";
+    EXPECT_NE(screenshot(*sample, terrain, bad, temp_dir("bad.png")).error().message.find("unknown field"), std::string::npos);
+    EXPECT_FALSE(fs::exists(temp_dir("bad.png")));
+}
+
+}  // namespace
+}  // namespace tidewater::inspect

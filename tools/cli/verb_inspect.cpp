@@ -1,0 +1,126 @@
+// tidewater inspect: sample the water the runtime draws over a grid and times, then
+// export it for ParaView or render a picture of a field (VTK; optional at configure time).
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <memory>
+#include <optional>
+
+#include "scene_option.hpp"
+#include "time_range.hpp"
+#include "verbs.hpp"
+
+#if defined(TIDEWATER_HAVE_INSPECT)
+#include "vtk_output.hpp"
+#endif
+
+namespace tidewater::cli {
+
+namespace {
+
+struct InspectArgs {
+    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720";
+    std::optional<double> time;
+    unsigned threads = 0;
+    bool quiet = false;
+};
+
+#if defined(TIDEWATER_HAVE_INSPECT)
+Result<std::pair<int, int>> parse_pair(const std::string& text, const char* option) {
+    int a = 0, b = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X'))
+        return Error{ErrorCode::invalid_argument, fmt::format("{} \"{}\": expected WxH", option, text)};
+    return std::pair{a, b};
+}
+
+int run_inspect(const InspectArgs& a) {
+    constexpr const char* verb = "inspect";
+    if (a.export_dir.empty() && a.screenshot.empty())
+        return fail(verb, "give --export DIR and/or --screenshot PNG (this build has no interactive viewer yet)");
+    if (!inspect::find_field(a.field)) {
+        std::string names;
+        for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
+        return fail(verb, fmt::format("--field \"{}\" is unknown (fields: {})", a.field, names));
+    }
+    auto scene = load_scene_option(a.scene);
+    if (!scene) return fail(verb, scene.error().message);
+    inspect::SampleGrid grid;
+    auto res = parse_pair(a.resolution, "--resolution");
+    if (!res) return fail(verb, res.error().message);
+    grid.nx = res->first, grid.nz = res->second;
+    if (a.extent.empty()) {
+        const double half = scene->terrain.extent_half_size();
+        grid.min = scene->terrain.extent_center() - glm::dvec2(half);
+        grid.max = scene->terrain.extent_center() + glm::dvec2(half);
+    } else {
+        char extra = 0;
+        if (std::sscanf(a.extent.c_str(), "%lf:%lf,%lf:%lf%c", &grid.min.x, &grid.max.x, &grid.min.y, &grid.max.y, &extra) != 4)
+            return fail(verb, fmt::format("--extent \"{}\": expected x0:x1,z0:z1 in metres", a.extent));
+    }
+    if (auto st = inspect::validate_grid(grid); !st) return fail(verb, "--resolution/--extent: " + st.error().message);
+    std::vector<double> times;
+    if (a.time.has_value() == !a.times.empty()) return fail(verb, "give exactly one of --time and --times");
+    if (a.time) {
+        if (auto st = check_time(*a.time, "--time"); !st) return fail(verb, st.error().message);
+        times = {*a.time};
+    } else {
+        auto range = parse_time_range(a.times, "--times");
+        if (!range) return fail(verb, range.error().message);
+        times = *range;
+    }
+    if (!a.export_dir.empty()) {
+        int last = -10;
+        auto progress = [&](double f) {
+            const int percent = static_cast<int>(100.0 * f);
+            if (!a.quiet && percent >= last + 10) std::fprintf(stderr, "inspect: export %d%%\n", last = percent);
+        };
+        if (auto st = inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress); !st) return fail(verb, st.error().message);
+        std::printf("exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView)\n", times.size(), grid.nx, grid.nz,
+                    a.export_dir.c_str());
+    }
+    if (!a.screenshot.empty()) {
+        auto size = parse_pair(a.size, "--size");
+        if (!size) return fail(verb, size.error().message);
+        auto sample = inspect::sample_field(*scene, grid, times.front(), a.threads);
+        if (!sample) return fail(verb, sample.error().message);
+        inspect::ScreenshotOptions o;
+        o.field = a.field;
+        o.width = size->first, o.height = size->second;
+        if (auto st = inspect::screenshot(*sample, inspect::sample_terrain(*scene, grid), o, a.screenshot); !st)
+            return fail(verb, st.error().message);
+        std::printf("rendered %s at t = %g s to %s\n", a.field.c_str(), times.front(), a.screenshot.c_str());
+    }
+    return 0;
+}
+#endif
+
+}  // namespace
+
+Verb add_inspect_verb(CLI::App& app) {
+    auto a = std::make_shared<InspectArgs>();
+    CLI::App* cmd = app.add_subcommand("inspect", "Sample the water over a grid and times: ParaView export or a picture of a field (VTK)");
+    cmd->add_option("--scene", a->scene, "Scene JSON (default: the bundled default scene)");
+    cmd->add_option("--extent", a->extent, "x0:x1,z0:z1, m (default: the terrain's extent)");
+    cmd->add_option("--resolution", a->resolution, "Grid points NXxNZ")->capture_default_str();
+    cmd->add_option("--time", a->time, "Clock time, s");
+    cmd->add_option("--times", a->times, "Time range t0:t1:dt, s (export: one file per time)");
+    cmd->add_option("--field", a->field, "Field to colour: height, displacement, normal, velocity, jacobian, foam, depth, "
+                                         "shore_distance, wet")
+        ->capture_default_str();
+    cmd->add_option("--export", a->export_dir, "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
+    cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");
+    cmd->add_option("--size", a->size, "Screenshot size WxH")->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Query threads (0 = all)");
+    cmd->add_flag("--quiet", a->quiet, "No progress lines");
+#if defined(TIDEWATER_HAVE_INSPECT)
+    return {cmd, [a] { return run_inspect(*a); }};
+#else
+    return {cmd, [] {
+                return fail("inspect", "this build has no inspector: install VTK (apt-get install libvtk9-dev) and configure again "
+                                       "with -DTIDEWATER_BUILD_INSPECTOR=ON");
+            }};
+#endif
+}
+
+}  // namespace tidewater::cli

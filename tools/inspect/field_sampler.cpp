@@ -1,0 +1,104 @@
+#include "field_sampler.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "tidewater/query.hpp"
+
+namespace tidewater::inspect {
+
+Status validate_grid(const SampleGrid& g) {
+    if (g.nx < 2 || g.nz < 2) return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{}: at least 2x2 points", g.nx, g.nz)};
+    const double points = static_cast<double>(g.nx) * static_cast<double>(g.nz);
+    if (points > static_cast<double>(kMaxGridPoints))
+        return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{} is {:.3g} points, more than the {} one sample holds: "
+                                                              "lower the resolution or split the extent",
+                                                              g.nx, g.nz, points, kMaxGridPoints)};
+    if (!std::isfinite(g.min.x) || !std::isfinite(g.min.y) || !std::isfinite(g.max.x) || !std::isfinite(g.max.y) || !(g.max.x > g.min.x) ||
+        !(g.max.y > g.min.y))
+        return Error{ErrorCode::invalid_argument, "grid extent: need finite x0 < x1 and z0 < z1"};
+    return {};
+}
+
+const std::vector<FieldInfo>& field_infos() {
+    static const std::vector<FieldInfo> infos = {
+        {"height", 1, "m", "world y of the surface"},
+        {"displacement", 3, "m", "particle offset from its rest position (x, y, z)"},
+        {"normal", 3, "1", "unit normal of the displaced surface"},
+        {"velocity", 3, "m/s", "water particle velocity"},
+        {"jacobian", 1, "1", "horizontal-map determinant: 1 flat, toward 0 where crests fold"},
+        {"foam", 1, "1", "0..1 foam the physics makes (breaking or folding crests)"},
+        {"depth", 1, "m", "water column: level - terrain at the point"},
+        {"shore_distance", 1, "m", "signed distance to the shoreline (+ over water; NaN without a shore model)"},
+        {"wet", 1, "1", "1 where the surface stands above the terrain"},
+    };
+    return infos;
+}
+
+const FieldInfo* find_field(const std::string& name) {
+    for (const FieldInfo& f : field_infos())
+        if (name == f.name) return &f;
+    return nullptr;
+}
+
+double FieldSample::value(const std::string& field, std::size_t k, int c) const {
+    const auto pick = [&](const glm::dvec3& v) { return c == 0 ? v.x : c == 1 ? v.y : v.z; };
+    if (field == "height") return height[k];
+    if (field == "displacement") return pick(displacement[k]);
+    if (field == "normal") return pick(normal[k]);
+    if (field == "velocity") return pick(velocity[k]);
+    if (field == "jacobian") return jacobian[k];
+    if (field == "foam") return foam[k];
+    if (field == "depth") return depth[k];
+    if (field == "shore_distance") return shore_distance[k];
+    if (field == "wet") return wet[k];
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, double time, unsigned threads) {
+    if (auto st = validate_grid(grid); !st) return st.error();
+    if (!std::isfinite(time)) return Error{ErrorCode::invalid_argument, "time must be finite"};
+    const std::size_t n = grid.points();
+    std::vector<glm::dvec2> where(n);
+    for (int j = 0; j < grid.nz; ++j)
+        for (int i = 0; i < grid.nx; ++i)
+            where[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)] =
+                grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+    std::vector<SurfacePoint> out(n);
+    QueryOptions options;
+    options.threads = threads;
+    if (auto st = query_surface(scene.ocean, time, where, out, options); !st) return st.error();
+    FieldSample s;
+    s.grid = grid;
+    s.time = time;
+    s.has_shore = scene.ocean.shore() != nullptr;
+    s.surface.resize(n), s.height.resize(n), s.jacobian.resize(n), s.foam.resize(n), s.depth.resize(n), s.shore_distance.resize(n);
+    s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const SurfacePoint& p = out[k];
+        const double ground = scene.terrain.height_at(where[k]);
+        s.surface[k] = {where[k].x, p.height, where[k].y};
+        s.height[k] = p.height;
+        s.displacement[k] = {p.displacement.x, p.height - scene.water_level, p.displacement.y};
+        s.normal[k] = p.normal;
+        s.velocity[k] = p.velocity;
+        s.jacobian[k] = p.jacobian;
+        s.foam[k] = p.foam;
+        s.depth[k] = scene.water_level - ground;
+        s.shore_distance[k] = s.has_shore ? p.shore_distance : std::numeric_limits<double>::quiet_NaN();
+        s.wet[k] = p.height > ground ? 1.0 : 0.0;
+    }
+    return s;
+}
+
+std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid) {
+    std::vector<double> h(grid.points());
+    for (int j = 0; j < grid.nz; ++j)
+        for (int i = 0; i < grid.nx; ++i)
+            h[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)] =
+                scene.terrain.height_at(grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1)));
+    return h;
+}
+
+}  // namespace tidewater::inspect

@@ -1,0 +1,61 @@
+// Samples a scene's water over a grid through the core queries: exactly the field
+// the runtime draws, as arrays for the inspector's VTK export and views (no VTK here).
+// Units: metres, seconds, m/s. Threading: reentrant; `threads` query threads.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "tidewater/result.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater::inspect {
+
+/// A regular grid of surface positions (x, z) over [min, max], nx by nz points.
+struct SampleGrid {
+    glm::dvec2 min{-50.0}, max{50.0};
+    int nx = 64, nz = 64;
+    std::size_t points() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
+};
+
+/// The largest grid sampled in one go (about 1.6 GB of arrays).
+inline constexpr std::size_t kMaxGridPoints = 16'000'000;
+
+/// Checks a grid: at least 2 x 2, at most kMaxGridPoints, finite extent with max > min.
+Status validate_grid(const SampleGrid& grid);
+
+/// One array the inspector knows: name, components and unit.
+struct FieldInfo {
+    const char* name;
+    int components;
+    const char* unit;
+    const char* meaning;
+};
+/// Every array a sample holds, in export order.
+const std::vector<FieldInfo>& field_infos();
+const FieldInfo* find_field(const std::string& name);
+
+/// The water over the grid at one time. Point k = i + nx * j is grid point (i, j).
+struct FieldSample {
+    SampleGrid grid;
+    double time = 0.0;
+    std::vector<glm::dvec3> surface;  ///< Displaced surface positions (x, y, z), m, one per grid point.
+    std::vector<double> height, jacobian, foam, depth, shore_distance, wet;
+    std::vector<glm::dvec3> displacement, normal, velocity;
+    bool has_shore = false;  ///< depth, shore_distance and wet are meaningful (the scene has terrain).
+
+    /// The values of a scalar field (components 1) or a component of a vector field.
+    double value(const std::string& field, std::size_t point, int component = 0) const;
+};
+
+/// Samples `scene` at `time`: the surface point above each grid position (Eulerian
+/// queries, as `tidewater query`) plus its particle data.
+Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, double time, unsigned threads = 0);
+
+/// Terrain heights over the grid (the second surface), m.
+std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid);
+
+}  // namespace tidewater::inspect

@@ -1,0 +1,135 @@
+// ParaView export: .vts per time step and a .pvd collection (VTK's XML writers).
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStringArray.h>
+#include <vtkStructuredGrid.h>
+#include <vtkXMLStructuredGridWriter.h>
+
+#include <fmt/format.h>
+#include <fstream>
+#include <unistd.h>
+
+#include "vtk_output.hpp"
+
+namespace tidewater::inspect {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A structured grid over `grid` with the given point heights.
+vtkNew<vtkStructuredGrid> make_grid(const SampleGrid& grid, const std::vector<glm::dvec3>& positions) {
+    vtkNew<vtkStructuredGrid> sg;
+    sg->SetDimensions(grid.nx, grid.nz, 1);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
+    for (std::size_t k = 0; k < positions.size(); ++k)
+        points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);
+    sg->SetPoints(points);
+    return sg;
+}
+
+void add_units(vtkStructuredGrid* sg, double time) {
+    vtkNew<vtkStringArray> units;
+    units->SetName("units");
+    for (const FieldInfo& f : field_infos()) units->InsertNextValue(fmt::format("{}: {} ({})", f.name, f.unit, f.meaning));
+    sg->GetFieldData()->AddArray(units);
+    vtkNew<vtkDoubleArray> t;
+    t->SetName("TimeValue");
+    t->InsertNextValue(time);
+    sg->GetFieldData()->AddArray(t);
+}
+
+Status write(vtkStructuredGrid* sg, const fs::path& path) {
+    vtkNew<vtkXMLStructuredGridWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(sg);
+    writer->SetDataModeToBinary();
+    if (writer->Write() != 1) return Error{ErrorCode::io_error, fmt::format("{}: VTK could not write the file", path.string())};
+    return {};
+}
+
+Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
+                    const std::function<void(double)>& progress) {
+    // The terrain: a second surface.
+    const std::vector<double> ground = sample_terrain(scene, grid);
+    std::vector<glm::dvec3> terrain_points(grid.points());
+    for (int j = 0; j < grid.nz; ++j)
+        for (int i = 0; i < grid.nx; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i);
+            const glm::dvec2 p = grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+            terrain_points[k] = {p.x, ground[k], p.y};
+        }
+    auto terrain = make_grid(grid, terrain_points);
+    if (auto st = write(terrain, temp / "terrain.vts"); !st) return st;
+
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    for (std::size_t step = 0; step < times.size(); ++step) {
+        auto sample = sample_field(scene, grid, times[step], threads);
+        if (!sample) return sample.error();
+        auto sg = make_grid(grid, sample->surface);
+        for (const FieldInfo& f : field_infos()) {
+            vtkNew<vtkDoubleArray> a;
+            a->SetName(f.name);
+            a->SetNumberOfComponents(f.components);
+            a->SetNumberOfTuples(static_cast<vtkIdType>(grid.points()));
+            for (std::size_t k = 0; k < grid.points(); ++k)
+                for (int c = 0; c < f.components; ++c) a->SetComponent(static_cast<vtkIdType>(k), c, sample->value(f.name, k, c));
+            sg->GetPointData()->AddArray(a);
+        }
+        add_units(sg, times[step]);
+        const std::string name = fmt::format("surface_{:04}.vts", step);
+        if (auto st = write(sg, temp / name); !st) return st;
+        pvd += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", times[step], name);
+        if (progress) progress(static_cast<double>(step + 1) / static_cast<double>(times.size()));
+    }
+    pvd += "    <DataSet timestep=\"0\" part=\"1\" file=\"terrain.vts\"/>\n  </Collection>\n</VTKFile>\n";
+    std::ofstream out(temp / "surface.pvd");
+    out << pvd;
+    out.close();
+    if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", (temp / "surface.pvd").string())};
+    return {};
+}
+
+}  // namespace
+
+Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
+                     const std::function<void(double)>& progress) {
+    if (auto st = validate_grid(grid); !st) return st;
+    if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
+    if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
+    fs::path temp = dir;
+    temp += fmt::format(".tmp-{}", ::getpid());
+    std::error_code ec;
+    fs::remove_all(temp, ec);
+    fs::create_directories(temp, ec);
+    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", temp.string(), ec.message())};
+    struct Cleanup {
+        fs::path path;
+        bool keep = false;
+        ~Cleanup() {
+            std::error_code ignored;
+            if (!keep) fs::remove_all(path, ignored);
+        }
+    } cleanup{temp};
+    if (auto st = write_series(temp, scene, grid, times, threads, progress); !st) return st;
+    fs::path old = dir;
+    old += fmt::format(".old-{}", ::getpid());
+    const bool had = fs::exists(dir, ec);
+    if (had) fs::rename(dir, old, ec);
+    if (!ec) fs::rename(temp, dir, ec);
+    if (ec) {
+        std::error_code ignored;
+        if (had && !fs::exists(dir, ignored)) fs::rename(old, dir, ignored);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot replace folder: {}", dir.string(), ec.message())};
+    }
+    cleanup.keep = true;
+    if (had) fs::remove_all(old, ec);
+    return {};
+}
+
+}  // namespace tidewater::inspect

@@ -1,0 +1,31 @@
+// The inspector's VTK side: ParaView files and offscreen pictures of sampled fields.
+// Everything that includes VTK lives in vtk_export.cpp and vtk_view.cpp.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "field_sampler.hpp"
+
+namespace tidewater::inspect {
+
+/// Writes `dir` whole or not at all: surface_NNNN.vts per time (a structured grid of
+/// the displaced surface with every field_infos() array and their units in the field
+/// data), terrain.vts, and surface.pvd, the time collection ParaView opens.
+Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
+                     unsigned threads, const std::function<void(double)>& progress = {});
+
+struct ScreenshotOptions {
+    std::string field = "height";
+    int width = 1280, height = 720;
+};
+
+/// Renders the warped surface coloured by `field` with a colour legend (name and unit)
+/// above the terrain, offscreen, to a PNG (written whole or not at all). Needs an X
+/// display (run under xvfb-run on machines without one).
+Status screenshot(const FieldSample& sample, const std::vector<double>& terrain, const ScreenshotOptions& options,
+                  const std::filesystem::path& png);
+
+}  // namespace tidewater::inspect
