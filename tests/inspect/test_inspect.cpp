@@ -140,5 +140,30 @@ TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
     EXPECT_FALSE(fs::exists(temp_dir("bad.png")));
 }
 
+// A single wave: the probe's dominant period is the wave's, sqrt(2 pi L / g), within 1%.
+TEST(Inspect, ProbeFindsTheWavePeriod) {
+    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "shore": {"enabled": false},
+        "ocean": {"waves": [{"direction": 30, "wavelength": 48, "amplitude": 0.6, "steepness": 0.5, "phase": 0.3}]}})",
+                             "single wave");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const double period = std::sqrt(2.0 * 3.14159265358979 * 48.0 / 9.81);
+    std::vector<double> times;
+    for (int k = 0; k <= 40 * 32; ++k) times.push_back(k * period / 32.0 + 0.37);
+    auto p = probe(*scene, {12.0, -7.0}, times);
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    std::printf("probe: dominant period %.4f s, wave period %.4f s (%.3f%%)\n", p->dominant_period, period,
+                100.0 * std::abs(p->dominant_period - period) / period);
+    EXPECT_NEAR(p->dominant_period, period, 0.01 * period);
+    const fs::path png = temp_dir("probe.png");
+    ASSERT_TRUE(probe_chart(*p, png, 900, 300).ok());
+    auto img = read_png_rgba8(png);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    EXPECT_EQ(img->width, 900);
+    EXPECT_EQ(img->height, 300);
+    EXPECT_GT(coverage(*img, 0, img->width), 0.01);
+    fs::remove(png);
+    EXPECT_FALSE(probe(*scene, {0.0, 0.0}, {0.0, 1.0}).ok());  // too few steps
+}
+
 }  // namespace
 }  // namespace tidewater::inspect

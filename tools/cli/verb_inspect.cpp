@@ -19,7 +19,7 @@ namespace tidewater::cli {
 namespace {
 
 struct InspectArgs {
-    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720";
+    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot;
     std::optional<double> time;
     unsigned threads = 0;
     bool quiet = false;
@@ -36,8 +36,9 @@ Result<std::pair<int, int>> parse_pair(const std::string& text, const char* opti
 
 int run_inspect(const InspectArgs& a) {
     constexpr const char* verb = "inspect";
-    if (a.export_dir.empty() && a.screenshot.empty())
-        return fail(verb, "give --export DIR and/or --screenshot PNG (this build has no interactive viewer yet)");
+    if (a.export_dir.empty() && a.screenshot.empty() && a.plot.empty())
+        return fail(verb, "give --export DIR, --screenshot PNG and/or --plot PNG --probe x,z (this build has no interactive viewer yet)");
+    if (a.plot.empty() != a.probe.empty()) return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
     if (!inspect::find_field(a.field)) {
         std::string names;
         for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
@@ -79,6 +80,18 @@ int run_inspect(const InspectArgs& a) {
         std::printf("exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView)\n", times.size(), grid.nx, grid.nz,
                     a.export_dir.c_str());
     }
+    if (!a.plot.empty()) {
+        glm::dvec2 at{0.0};
+        char extra = 0;
+        if (std::sscanf(a.probe.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2) return fail(verb, fmt::format("--probe \"{}\": expected x,z in metres", a.probe));
+        auto series = inspect::probe(*scene, at, times);
+        if (!series) return fail(verb, "--probe: " + series.error().message);
+        if (auto st = inspect::probe_chart(*series, a.plot); !st) return fail(verb, st.error().message);
+        if (series->dominant_period > 0.0)
+            std::printf("probe at x = %g, z = %g m: dominant period %.4f s -> %s\n", at.x, at.y, series->dominant_period, a.plot.c_str());
+        else
+            std::printf("probe at x = %g, z = %g m: the height does not change (dry land or still water) -> %s\n", at.x, at.y, a.plot.c_str());
+    }
     if (!a.screenshot.empty()) {
         auto size = parse_pair(a.size, "--size");
         if (!size) return fail(verb, size.error().message);
@@ -111,6 +124,8 @@ Verb add_inspect_verb(CLI::App& app) {
     cmd->add_option("--export", a->export_dir, "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
     cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");
     cmd->add_option("--size", a->size, "Screenshot size WxH")->capture_default_str();
+    cmd->add_option("--probe", a->probe, "x,z: a point whose height over --times is charted with its spectrum (--plot)");
+    cmd->add_option("--plot", a->plot, "Write the probe chart (height against time and its spectrum) to this PNG");
     cmd->add_option("--threads", a->threads, "Query threads (0 = all)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
 #if defined(TIDEWATER_HAVE_INSPECT)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "field_sampler.hpp"
+#include "probe.hpp"
 
 namespace tidewater::inspect {
 
@@ -27,5 +28,8 @@ struct ScreenshotOptions {
 /// display (run under xvfb-run on machines without one).
 Status screenshot(const FieldSample& sample, const std::vector<double>& terrain, const ScreenshotOptions& options,
                   const std::filesystem::path& png);
+
+/// The probe chart: height against time beside its spectrum, offscreen, to a PNG.
+Status probe_chart(const ProbeSeries& probe, const std::filesystem::path& png, int width = 1200, int height = 420);
 
 }  // namespace tidewater::inspect

@@ -1,0 +1,96 @@
+// The probe chart (VTK's 2D charts): height against time and its spectrum.
+#include <vtkAxis.h>
+#include <vtkChartMatrix.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "vtk_output.hpp"
+
+namespace tidewater::inspect {
+
+namespace {
+
+vtkNew<vtkTable> table_of(const char* x_name, const std::vector<double>& x, const char* y_name, const std::vector<double>& y, std::size_t count) {
+    vtkNew<vtkTable> table;
+    vtkNew<vtkDoubleArray> xs, ys;
+    xs->SetName(x_name);
+    ys->SetName(y_name);
+    for (std::size_t k = 0; k < count; ++k) xs->InsertNextValue(x[k]), ys->InsertNextValue(y[k]);
+    table->AddColumn(xs);
+    table->AddColumn(ys);
+    return table;
+}
+
+void style(vtkChartXY* chart, const std::string& title, const char* x_title, const char* y_title) {
+    chart->SetTitle(title.c_str());
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(x_title);
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle(y_title);
+}
+
+}  // namespace
+
+Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int width, int height) {
+    if (width < 200 || height < 120 || width > 8192 || height > 8192)
+        return Error{ErrorCode::invalid_argument, fmt::format("chart size {}x{}: 200x120 to 8192x8192", width, height)};
+    auto series = table_of("t (s)", p.time, "height (m)", p.height, p.time.size());
+    // The spectrum up to 4 times the dominant frequency.
+    std::size_t shown = p.frequency.size();
+    if (p.dominant_period > 0.0)
+        while (shown > 2 && p.frequency[shown - 1] > 4.0 / p.dominant_period) --shown;
+    auto spectrum = table_of("f (Hz)", p.frequency, "power (m^2/Hz)", p.power, shown);
+
+    vtkNew<vtkContextView> view;
+    view->GetRenderWindow()->SetOffScreenRendering(1);
+    view->GetRenderWindow()->SetSize(width, height);
+    vtkNew<vtkChartMatrix> matrix;
+    matrix->SetSize(vtkVector2i(2, 1));
+    view->GetScene()->AddItem(matrix);
+    auto* left = vtkChartXY::SafeDownCast(matrix->GetChart(vtkVector2i(0, 0)));
+    auto* right = vtkChartXY::SafeDownCast(matrix->GetChart(vtkVector2i(1, 0)));
+    vtkPlot* line = left->AddPlot(vtkChart::LINE);
+    line->SetInputData(series, 0, 1);
+    line->SetColor(31, 119, 180, 255);
+    style(left, fmt::format("height at x = {:g}, z = {:g} m", p.at.x, p.at.y), "t, s", "height, m");
+    vtkPlot* power = right->AddPlot(vtkChart::LINE);
+    power->SetInputData(spectrum, 0, 1);
+    power->SetColor(214, 39, 40, 255);
+    style(right, p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
+                                         : std::string("spectrum: the height does not change here (dry land or still water)"),
+          "frequency, Hz", "power, m^2/Hz");
+    view->GetRenderWindow()->Render();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(view->GetRenderWindow());
+    capture->ReadFrontBufferOff();
+    capture->Update();
+    std::filesystem::path temp = png;
+    temp += fmt::format(".tmp-{}", ::getpid());
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(temp.c_str());
+    writer->SetInputConnection(capture->GetOutputPort());
+    writer->Write();
+    std::error_code ec;
+    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp, ec)) {
+        std::filesystem::remove(temp, ec);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
+    }
+    std::filesystem::rename(temp, png, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
+    }
+    return {};
+}
+
+}  // namespace tidewater::inspect
