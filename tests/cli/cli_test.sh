@@ -251,6 +251,14 @@ JSON
     "$TW" query --scene refit.json --points gauge.csv --times 0:300:0.5 --out replay.csv
     check "the fitted preset reproduces the record within 1 mm" same_heights series.csv replay.csv 0.001 601
 
+    # The inspector overlays the record and the fitted preset (when it is built, under xvfb-run).
+    if command -v xvfb-run > /dev/null && ! "$TW" inspect --time 0 2>&1 | grep -q "no inspector"; then
+      xvfb-run -a "$TW" inspect --data series.csv --column z=height --preset fitted.json --plot overlay.png > overlay.txt
+      check "overlay chart written" test -s overlay.png
+      check "overlay R^2 of the fitted preset is 1.0000" grep -q "R^2 1.0000" overlay.txt
+      expect_error "overlay without a preset" "--preset" "$TW" inspect --data series.csv --column z=height --plot o.png
+    fi
+
     # Bad input: a clear error, a non-zero exit, and no preset or report.
     bad() {  # bad DESCRIPTION NEEDLE FILE [options]
       local what="$1" needle="$2" file="$3"; shift 3

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "data_options.hpp"
 #include "verbs.hpp"
 
 #if defined(TIDEWATER_HAVE_CALIBRATION)
@@ -22,10 +23,8 @@ namespace tidewater::cli {
 
 namespace {
 
-struct FitArgs {
-    std::string data, kind = "gauge", format, method = "phase", preset, report, series, plot, name, window;
-    std::vector<std::string> columns, scales;
-    std::vector<double> sentinels;
+struct FitArgs : DataOptions {
+    std::string method = "phase", preset, report, series, plot, name, window;
     double depth = 0.0;
     int waves = 0, max_waves = 32, record_index = 0;
     unsigned threads = 1;
@@ -35,46 +34,6 @@ struct FitArgs {
 
 #if defined(TIDEWATER_HAVE_CALIBRATION)
 using namespace tidewater::calibration;
-
-Result<std::pair<std::string, std::string>> split_pair(const std::string& s, const char* option) {
-    const auto eq = s.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
-        return Error{ErrorCode::invalid_argument, fmt::format("{} \"{}\": expected ROLE=VALUE", option, s)};
-    return std::pair{s.substr(0, eq), s.substr(eq + 1)};
-}
-
-Result<MeasuredRecord> read_record(const FitArgs& a, RecordKind kind) {
-    std::string format = a.format;
-    const std::string ext = std::filesystem::path(a.data).extension().string();
-    if (format.empty()) format = ext == ".nc" ? "cdip" : ext == ".raw" ? "datawell" : ext == ".csv" ? "csv" : "columns";
-    if (format == "cdip" || format == "datawell") {
-        if (kind != RecordKind::buoy) return Error{ErrorCode::invalid_argument, fmt::format("{} files hold buoy data: give --kind buoy", format)};
-        return format == "cdip" ? read_cdip_xyz(a.data) : read_datawell_raw(a.data);
-    }
-    if (format == "columns") return read_two_column(a.data, kind);
-    if (format != "csv") return Error{ErrorCode::invalid_argument, fmt::format("--format {}: use csv, cdip, datawell or columns", format)};
-    CsvColumns columns;
-    for (const auto& c : a.columns) {
-        auto p = split_pair(c, "--column");
-        if (!p) return p.error();
-        columns.role_to_column[p->first] = p->second;
-    }
-    for (const auto& c : a.scales) {
-        auto p = split_pair(c, "--scale");
-        if (!p) return p.error();
-        double v = 0.0;
-        try {
-            std::size_t used = 0;
-            v = std::stod(p->second, &used);
-            if (used != p->second.size()) throw std::invalid_argument("trailing");
-        } catch (const std::exception&) {
-            return Error{ErrorCode::invalid_argument, fmt::format("--scale {}: \"{}\" is not a number", p->first, p->second)};
-        }
-        columns.scale[p->first] = v;
-    }
-    if (!a.sentinels.empty()) columns.sentinels = a.sentinels;
-    return read_csv_record(a.data, kind, columns);
-}
 
 nlohmann::json wave_json(const FittedWave& w, RecordKind kind) {
     nlohmann::json j = {{"amplitude_m", w.amplitude}, {"period_s", w.period()}, {"wavenumber_rad_m", w.k},
@@ -150,18 +109,16 @@ int run_fit(const FitArgs& a) {
     constexpr const char* verb = "fit";
     if (a.data.empty()) return fail(verb, "give --data FILE");
     if (a.preset.empty() && a.report.empty()) return fail(verb, "give --preset and/or --report to write");
-    RecordKind kind;
-    if (a.kind == "gauge") kind = RecordKind::gauge;
-    else if (a.kind == "buoy") kind = RecordKind::buoy;
-    else if (a.kind == "profile") kind = RecordKind::profile;
-    else return fail(verb, fmt::format("--kind {}: use gauge, buoy or profile", a.kind));
+    auto parsed_kind = parse_kind(a.kind);
+    if (!parsed_kind) return fail(verb, parsed_kind.error().message);
+    const RecordKind kind = *parsed_kind;
     if (a.method != "phase" && a.method != "spectral") return fail(verb, fmt::format("--method {}: use phase or spectral", a.method));
     if (a.method == "spectral" && !a.series.empty()) return fail(verb, "--series writes a phase fit's samples: it needs --method phase");
     if (!(a.depth >= 0.0) || !std::isfinite(a.depth)) return fail(verb, "--depth must be a finite number of metres (0 = deep water)");
     const std::string ext = std::filesystem::path(a.data).extension().string();
     if (a.format == "cdip-spectra" || a.format == "ndbc" || (a.format.empty() && ext == ".data_spec"))
         return run_spectral_file(a, a.format == "cdip-spectra" ? "cdip-spectra" : "ndbc");
-    auto record = read_record(a, kind);
+    auto record = read_data(a, kind);
     if (!record) return fail(verb, record.error().message);
     if (a.depth > 0.0) record->depth = a.depth;
     if (!a.window.empty()) {
@@ -289,16 +246,8 @@ int run_fit(const FitArgs& a) {
 Verb add_fit_verb(CLI::App& app) {
     auto a = std::make_shared<FitArgs>();
     CLI::App* cmd = app.add_subcommand("fit", "Fit a wave preset to measured surface data (gauge, buoy or profile) with Ceres");
-    cmd->add_option("--data", a->data, "Measured data: CSV with a header, CDIP netCDF (.nc), Datawell raw (.raw) or two columns");
-    cmd->add_option("--kind", a->kind, "gauge (elevation at a point), buoy (east/north/heave) or profile (elevation along x)")
-        ->capture_default_str();
-    cmd->add_option("--format", a->format,
-                    "csv, cdip (x/y/z), datawell, columns, or the spectral files cdip-spectra and ndbc (.data_spec) "
-                    "(default: from the extension)");
+    add_data_options(cmd, *a);
     cmd->add_option("--record", a->record_index, "Spectral files: which spectrum (0 = the first in the file)")->capture_default_str();
-    cmd->add_option("--column", a->columns, "ROLE=NAME: the CSV column for t, x, z, east, north or flag");
-    cmd->add_option("--scale", a->scales, "ROLE=FACTOR: file units to metres or seconds (e.g. z=0.01 for cm)");
-    cmd->add_option("--sentinel", a->sentinels, "A value that means missing (default: -999, -999.9, -999.99, -9999, 9999, 99999)");
     cmd->add_option("--window", a->window, "A:B: fit only A <= t < B, seconds (metres for a profile) from the first sample");
     cmd->add_option("--depth", a->depth, "Water depth, m, for finite-depth dispersion (0 = deep water)");
     cmd->add_option("--method", a->method, "phase (phase-resolved waves) or spectral (JONSWAP, then a preset from it)")->capture_default_str();

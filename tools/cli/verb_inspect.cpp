@@ -6,11 +6,14 @@
 #include <memory>
 #include <optional>
 
+#include "data_options.hpp"
 #include "scene_option.hpp"
 #include "time_range.hpp"
 #include "verbs.hpp"
 
 #if defined(TIDEWATER_HAVE_INSPECT)
+#include "tidewater/gerstner.hpp"
+#include "tidewater/query.hpp"
 #include "vtk_output.hpp"
 #endif
 
@@ -18,8 +21,8 @@ namespace tidewater::cli {
 
 namespace {
 
-struct InspectArgs {
-    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot;
+struct InspectArgs : DataOptions {
+    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset;
     std::optional<double> time;
     unsigned threads = 0;
     bool quiet = false;
@@ -34,8 +37,56 @@ Result<std::pair<int, int>> parse_pair(const std::string& text, const char* opti
     return std::pair{a, b};
 }
 
+/// --data with --preset: the measured record and the preset's prediction at the probe
+/// point (default 0,0) at the record's times (time 0 = its first sample, as `fit` writes).
+int run_overlay(const InspectArgs& a) {
+    constexpr const char* verb = "inspect";
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+    if (a.preset.empty() || a.plot.empty()) return fail(verb, "--data needs --preset P and --plot PNG");
+    auto kind = parse_kind(a.kind);
+    if (!kind) return fail(verb, kind.error().message);
+    if (*kind == calibration::RecordKind::profile) return fail(verb, "--data: a profile has no time series to overlay (use gauge or buoy)");
+    auto record = read_data(a, *kind);
+    if (!record) return fail(verb, record.error().message);
+    auto profile = load_preset(a.preset);
+    if (!profile) return fail(verb, profile.error().message);
+    auto body = WaterBody::create(*profile, 0.0, a.preset);
+    if (!body) return fail(verb, body.error().message);
+    glm::dvec2 at{0.0};
+    char extra = 0;
+    if (!a.probe.empty() && std::sscanf(a.probe.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2)
+        return fail(verb, fmt::format("--probe \"{}\": expected x,z in metres", a.probe));
+    std::vector<double> model(record->size());
+    const std::vector<glm::dvec2> where{at};
+    std::vector<SurfacePoint> out(1);
+    for (std::size_t k = 0; k < record->size(); ++k) {
+        if (*kind == calibration::RecordKind::buoy) {
+            model[k] = evaluate_lagrangian(body->waves(), at, record->axis[k]).displacement.y;  // the buoy rides the particle
+        } else {
+            if (auto st = query_surface(*body, record->axis[k], where, out); !st) return fail(verb, st.error().message);
+            model[k] = out[0].height;
+        }
+    }
+    double mean = 0.0, tss = 0.0, rss = 0.0;
+    for (double v : record->z) mean += v;
+    mean /= static_cast<double>(record->size());
+    for (std::size_t k = 0; k < record->size(); ++k)
+        tss += (record->z[k] - mean) * (record->z[k] - mean), rss += (record->z[k] - model[k]) * (record->z[k] - model[k]);
+    const double r2 = tss > 0.0 ? 1.0 - rss / tss : 0.0;
+    const std::string title = fmt::format("{} against {} at x = {:g}, z = {:g} m: R^2 {:.4f}", std::filesystem::path(record->source).filename().string(),
+                                          std::filesystem::path(a.preset).filename().string(), at.x, at.y, r2);
+    if (auto st = inspect::overlay_chart(record->axis, record->z, model, title, "t, s", a.plot); !st) return fail(verb, st.error().message);
+    std::printf("%s -> %s\n", title.c_str(), a.plot.c_str());
+    return 0;
+#else
+    (void)a;
+    return fail(verb, "--data needs the calibration library (its readers): install libceres-dev and libnetcdf-dev and configure again");
+#endif
+}
+
 int run_inspect(const InspectArgs& a) {
     constexpr const char* verb = "inspect";
+    if (!a.data.empty()) return run_overlay(a);
     if (a.export_dir.empty() && a.screenshot.empty() && a.plot.empty())
         return fail(verb, "give --export DIR, --screenshot PNG and/or --plot PNG --probe x,z (this build has no interactive viewer yet)");
     if (a.plot.empty() != a.probe.empty()) return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
@@ -127,6 +178,8 @@ Verb add_inspect_verb(CLI::App& app) {
     cmd->add_option("--probe", a->probe, "x,z: a point whose height over --times is charted with its spectrum (--plot)");
     cmd->add_option("--plot", a->plot, "Write the probe chart (height against time and its spectrum) to this PNG");
     cmd->add_option("--threads", a->threads, "Query threads (0 = all)");
+    add_data_options(cmd, *a);
+    cmd->add_option("--preset", a->preset, "With --data: the preset whose prediction is overlaid on the record (--plot)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
 #if defined(TIDEWATER_HAVE_INSPECT)
     return {cmd, [a] { return run_inspect(*a); }};

@@ -39,6 +39,32 @@ void style(vtkChartXY* chart, const std::string& title, const char* x_title, con
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(y_title);
 }
 
+/// Renders the view and writes it beside `png`, then renames: no half-written picture.
+Status save_png(vtkContextView* view, const std::filesystem::path& png) {
+    view->GetRenderWindow()->Render();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(view->GetRenderWindow());
+    capture->ReadFrontBufferOff();
+    capture->Update();
+    std::filesystem::path temp = png;
+    temp += fmt::format(".tmp-{}", ::getpid());
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(temp.c_str());
+    writer->SetInputConnection(capture->GetOutputPort());
+    writer->Write();
+    std::error_code ec;
+    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp, ec)) {
+        std::filesystem::remove(temp, ec);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
+    }
+    std::filesystem::rename(temp, png, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
+    }
+    return {};
+}
+
 }  // namespace
 
 Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int width, int height) {
@@ -69,28 +95,36 @@ Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int w
     style(right, p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
                                          : std::string("spectrum: the height does not change here (dry land or still water)"),
           "frequency, Hz", "power, m^2/Hz");
-    view->GetRenderWindow()->Render();
-    vtkNew<vtkWindowToImageFilter> capture;
-    capture->SetInput(view->GetRenderWindow());
-    capture->ReadFrontBufferOff();
-    capture->Update();
-    std::filesystem::path temp = png;
-    temp += fmt::format(".tmp-{}", ::getpid());
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputConnection(capture->GetOutputPort());
-    writer->Write();
-    std::error_code ec;
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp, ec)) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
-    }
-    std::filesystem::rename(temp, png, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
-    }
-    return {};
+    return save_png(view, png);
+}
+
+Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured, const std::vector<double>& model,
+                     const std::string& title, const std::string& x_title, const std::filesystem::path& png, int width, int height) {
+    if (axis.empty() || measured.size() != axis.size() || model.size() != axis.size())
+        return Error{ErrorCode::invalid_argument, "overlay chart: the series have different lengths"};
+    vtkNew<vtkTable> table;
+    vtkNew<vtkDoubleArray> x, m, p;
+    x->SetName(x_title.c_str());
+    m->SetName("measured");
+    p->SetName("preset");
+    for (std::size_t k = 0; k < axis.size(); ++k) x->InsertNextValue(axis[k]), m->InsertNextValue(measured[k]), p->InsertNextValue(model[k]);
+    table->AddColumn(x);
+    table->AddColumn(m);
+    table->AddColumn(p);
+    vtkNew<vtkContextView> view;
+    view->GetRenderWindow()->SetOffScreenRendering(1);
+    view->GetRenderWindow()->SetSize(width, height);
+    vtkNew<vtkChartXY> chart;
+    view->GetScene()->AddItem(chart);
+    vtkPlot* measured_line = chart->AddPlot(vtkChart::LINE);
+    measured_line->SetInputData(table, 0, 1);
+    measured_line->SetColor(31, 119, 180, 255);
+    vtkPlot* model_line = chart->AddPlot(vtkChart::LINE);
+    model_line->SetInputData(table, 0, 2);
+    model_line->SetColor(214, 39, 40, 255);
+    chart->SetShowLegend(true);
+    style(chart, title, x_title.c_str(), "elevation, m");
+    return save_png(view, png);
 }
 
 }  // namespace tidewater::inspect

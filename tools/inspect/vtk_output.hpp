@@ -32,4 +32,9 @@ Status screenshot(const FieldSample& sample, const std::vector<double>& terrain,
 /// The probe chart: height against time beside its spectrum, offscreen, to a PNG.
 Status probe_chart(const ProbeSeries& probe, const std::filesystem::path& png, int width = 1200, int height = 420);
 
+/// A measured record and a model's prediction at the same place on one chart, to a PNG.
+Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured, const std::vector<double>& model,
+                     const std::string& title, const std::string& x_title, const std::filesystem::path& png, int width = 1200,
+                     int height = 420);
+
 }  // namespace tidewater::inspect
