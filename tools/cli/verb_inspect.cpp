@@ -1,5 +1,6 @@
 // tidewater inspect: sample the water the runtime draws over a grid and times, then
 // export it for ParaView or render a picture of a field (VTK; optional at configure time).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
@@ -127,9 +128,14 @@ int run_inspect(const InspectArgs& a) {
             const int percent = static_cast<int>(100.0 * f);
             if (!a.quiet && percent >= last + 10) std::fprintf(stderr, "inspect: export %d%%\n", last = percent);
         };
-        if (auto st = inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress); !st) return fail(verb, st.error().message);
-        std::printf("exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView)\n", times.size(), grid.nx, grid.nz,
-                    a.export_dir.c_str());
+        inspect::ExportStats stats;
+        if (auto st = inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress, &stats); !st)
+            return fail(verb, st.error().message);
+        const double points = static_cast<double>(grid.points()) * static_cast<double>(times.size());
+        std::printf("exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView): sampling %.3g points/s "
+                    "(%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
+                    times.size(), grid.nx, grid.nz, a.export_dir.c_str(), points / std::max(stats.sample_seconds, 1e-9), stats.sample_seconds,
+                    points / std::max(stats.write_seconds, 1e-9), stats.write_seconds, static_cast<double>(stats.bytes) / 1e6);
     }
     if (!a.plot.empty()) {
         glm::dvec2 at{0.0};

@@ -8,6 +8,7 @@
 #include <vtkStructuredGrid.h>
 #include <vtkXMLStructuredGridWriter.h>
 
+#include <chrono>
 #include <fmt/format.h>
 #include <fstream>
 #include <unistd.h>
@@ -48,13 +49,20 @@ Status write(vtkStructuredGrid* sg, const fs::path& path) {
     vtkNew<vtkXMLStructuredGridWriter> writer;
     writer->SetFileName(path.c_str());
     writer->SetInputData(sg);
-    writer->SetDataModeToBinary();
+    // Raw appended binary with LZ4: several times faster to write than base64 + zlib.
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToLZ4();
     if (writer->Write() != 1) return Error{ErrorCode::io_error, fmt::format("{}: VTK could not write the file", path.string())};
     return {};
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
-                    const std::function<void(double)>& progress) {
+                    const std::function<void(double)>& progress, ExportStats& stats) {
     // The terrain: a second surface.
     const std::vector<double> ground = sample_terrain(scene, grid);
     std::vector<glm::dvec3> terrain_points(grid.points());
@@ -69,21 +77,26 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
 
     std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
     for (std::size_t step = 0; step < times.size(); ++step) {
+        auto t0 = std::chrono::steady_clock::now();
         auto sample = sample_field(scene, grid, times[step], threads);
         if (!sample) return sample.error();
+        stats.sample_seconds += seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
         auto sg = make_grid(grid, sample->surface);
         for (const FieldInfo& f : field_infos()) {
             vtkNew<vtkDoubleArray> a;
             a->SetName(f.name);
             a->SetNumberOfComponents(f.components);
             a->SetNumberOfTuples(static_cast<vtkIdType>(grid.points()));
+            double* out = a->WritePointer(0, static_cast<vtkIdType>(grid.points()) * f.components);
             for (std::size_t k = 0; k < grid.points(); ++k)
-                for (int c = 0; c < f.components; ++c) a->SetComponent(static_cast<vtkIdType>(k), c, sample->value(f.name, k, c));
+                for (int c = 0; c < f.components; ++c) out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] = sample->value(f.name, k, c);
             sg->GetPointData()->AddArray(a);
         }
         add_units(sg, times[step]);
         const std::string name = fmt::format("surface_{:04}.vts", step);
         if (auto st = write(sg, temp / name); !st) return st;
+        stats.write_seconds += seconds_since(t0);
         pvd += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", times[step], name);
         if (progress) progress(static_cast<double>(step + 1) / static_cast<double>(times.size()));
     }
@@ -98,7 +111,7 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
 }  // namespace
 
 Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
-                     const std::function<void(double)>& progress) {
+                     const std::function<void(double)>& progress, ExportStats* stats_out) {
     if (auto st = validate_grid(grid); !st) return st;
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
@@ -116,7 +129,11 @@ Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& 
             if (!keep) fs::remove_all(path, ignored);
         }
     } cleanup{temp};
-    if (auto st = write_series(temp, scene, grid, times, threads, progress); !st) return st;
+    ExportStats stats;
+    if (auto st = write_series(temp, scene, grid, times, threads, progress, stats); !st) return st;
+    for (const auto& e : fs::directory_iterator(temp, ec))
+        if (e.is_regular_file(ec)) stats.bytes += e.file_size(ec);
+    if (stats_out) *stats_out = stats;
     fs::path old = dir;
     old += fmt::format(".old-{}", ::getpid());
     const bool had = fs::exists(dir, ec);

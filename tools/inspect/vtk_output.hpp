@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,11 +13,18 @@
 
 namespace tidewater::inspect {
 
+/// Where an export's time went (for the benchmark figures).
+struct ExportStats {
+    double sample_seconds = 0.0;  ///< Queries.
+    double write_seconds = 0.0;   ///< Building VTK data and writing it.
+    std::uintmax_t bytes = 0;     ///< Size of the folder written.
+};
+
 /// Writes `dir` whole or not at all: surface_NNNN.vts per time (a structured grid of
 /// the displaced surface with every field_infos() array and their units in the field
 /// data), terrain.vts, and surface.pvd, the time collection ParaView opens.
 Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
-                     unsigned threads, const std::function<void(double)>& progress = {});
+                     unsigned threads, const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr);
 
 struct ScreenshotOptions {
     std::string field = "height";
