@@ -6,17 +6,15 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPlot.h>
 #include <vtkRenderWindow.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "vtk_output.hpp"
+#include "vtk_png.hpp"
 
 namespace tidewater::inspect {
 
@@ -37,32 +35,6 @@ void style(vtkChartXY* chart, const std::string& title, const char* x_title, con
     chart->SetTitle(title.c_str());
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(x_title);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(y_title);
-}
-
-/// Renders the view and writes it beside `png`, then renames: no half-written picture.
-Status save_png(vtkContextView* view, const std::filesystem::path& png) {
-    view->GetRenderWindow()->Render();
-    vtkNew<vtkWindowToImageFilter> capture;
-    capture->SetInput(view->GetRenderWindow());
-    capture->ReadFrontBufferOff();
-    capture->Update();
-    std::filesystem::path temp = png;
-    temp += fmt::format(".tmp-{}", ::getpid());
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputConnection(capture->GetOutputPort());
-    writer->Write();
-    std::error_code ec;
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp, ec)) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
-    }
-    std::filesystem::rename(temp, png, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the chart", png.string())};
-    }
-    return {};
 }
 
 }  // namespace
@@ -95,7 +67,7 @@ Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int w
     style(right, p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
                                          : std::string("spectrum: the height does not change here (dry land or still water)"),
           "frequency, Hz", "power, m^2/Hz");
-    return save_png(view, png);
+    return save_window_png(view->GetRenderWindow(), png);
 }
 
 Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured, const std::vector<double>& model,
@@ -124,7 +96,7 @@ Status overlay_chart(const std::vector<double>& axis, const std::vector<double>&
     model_line->SetColor(214, 39, 40, 255);
     chart->SetShowLegend(true);
     style(chart, title, x_title.c_str(), "elevation, m");
-    return save_png(view, png);
+    return save_window_png(view->GetRenderWindow(), png);
 }
 
 }  // namespace tidewater::inspect

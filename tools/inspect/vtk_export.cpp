@@ -11,8 +11,8 @@
 #include <chrono>
 #include <fmt/format.h>
 #include <fstream>
-#include <unistd.h>
 
+#include "tidewater/atomic_folder.hpp"
 #include "vtk_output.hpp"
 
 namespace tidewater::inspect {
@@ -115,38 +115,16 @@ Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& 
     if (auto st = validate_grid(grid); !st) return st;
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
-    fs::path temp = dir;
-    temp += fmt::format(".tmp-{}", ::getpid());
-    std::error_code ec;
-    fs::remove_all(temp, ec);
-    fs::create_directories(temp, ec);
-    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", temp.string(), ec.message())};
-    struct Cleanup {
-        fs::path path;
-        bool keep = false;
-        ~Cleanup() {
-            std::error_code ignored;
-            if (!keep) fs::remove_all(path, ignored);
-        }
-    } cleanup{temp};
     ExportStats stats;
-    if (auto st = write_series(temp, scene, grid, times, threads, progress, stats); !st) return st;
-    for (const auto& e : fs::directory_iterator(temp, ec))
-        if (e.is_regular_file(ec)) stats.bytes += e.file_size(ec);
-    if (stats_out) *stats_out = stats;
-    fs::path old = dir;
-    old += fmt::format(".old-{}", ::getpid());
-    const bool had = fs::exists(dir, ec);
-    if (had) fs::rename(dir, old, ec);
-    if (!ec) fs::rename(temp, dir, ec);
-    if (ec) {
-        std::error_code ignored;
-        if (had && !fs::exists(dir, ignored)) fs::rename(old, dir, ignored);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot replace folder: {}", dir.string(), ec.message())};
-    }
-    cleanup.keep = true;
-    if (had) fs::remove_all(old, ec);
-    return {};
+    auto st = write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
+        if (auto written = write_series(temp, scene, grid, times, threads, progress, stats); !written) return written;
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(temp, ec))
+            if (e.is_regular_file(ec)) stats.bytes += e.file_size(ec);
+        return {};
+    });
+    if (st && stats_out) *stats_out = stats;
+    return st;
 }
 
 }  // namespace tidewater::inspect

@@ -6,7 +6,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkProperty.h>
@@ -15,14 +14,13 @@
 #include <vtkScalarBarActor.h>
 #include <vtkStructuredGrid.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "vtk_output.hpp"
+#include "vtk_png.hpp"
 
 namespace tidewater::inspect {
 
@@ -123,29 +121,7 @@ Status screenshot(const FieldSample& sample, const std::vector<double>& terrain,
     window->SetOffScreenRendering(1);
     window->SetSize(o.width, o.height);
     window->AddRenderer(renderer);
-    window->Render();
-    vtkNew<vtkWindowToImageFilter> capture;
-    capture->SetInput(window);
-    capture->ReadFrontBufferOff();
-    capture->Update();
-    // Written beside the target, then renamed: no half-written picture.
-    std::filesystem::path temp = png;
-    temp += fmt::format(".tmp-{}", ::getpid());
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputConnection(capture->GetOutputPort());
-    writer->Write();
-    std::error_code ec;
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp, ec)) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the picture", png.string())};
-    }
-    std::filesystem::rename(temp, png, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot write the picture", png.string())};
-    }
-    return {};
+    return save_window_png(window, png);
 }
 
 }  // namespace tidewater::inspect

@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include "json_reader.hpp"
+#include "tidewater/atomic_folder.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/image_io.hpp"
 
@@ -161,36 +161,7 @@ Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
     if (contents.model->wave_count() != contents.waves->size())
         return Error{ErrorCode::invalid_argument, fmt::format("save_shore_bake: the model has {} waves, the wave set {}",
                                                               contents.model->wave_count(), contents.waves->size())};
-    if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "save_shore_bake: give a folder name"};
-    fs::path temp = dir;
-    temp += fmt::format(".tmp-{}", ::getpid());
-    std::error_code ec;
-    fs::remove_all(temp, ec);
-    fs::create_directories(temp, ec);
-    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", temp.string(), ec.message())};
-    struct Cleanup {
-        fs::path path;
-        bool keep = false;
-        ~Cleanup() {
-            std::error_code ignored;
-            if (!keep) fs::remove_all(path, ignored);
-        }
-    } cleanup{temp};
-    if (auto st = write_bake(temp, contents); !st) return st;
-    // Swap the finished folder into place; an old bake survives any failure.
-    fs::path old = dir;
-    old += fmt::format(".old-{}", ::getpid());
-    const bool had = fs::exists(dir, ec);
-    if (had) fs::rename(dir, old, ec);
-    if (!ec) fs::rename(temp, dir, ec);
-    if (ec) {
-        std::error_code ignored;
-        if (had && !fs::exists(dir, ignored)) fs::rename(old, dir, ignored);
-        return Error{ErrorCode::io_error, fmt::format("{}: cannot replace folder: {}", dir.string(), ec.message())};
-    }
-    cleanup.keep = true;
-    if (had) fs::remove_all(old, ec);
-    return {};
+    return write_folder_atomically(dir, [&](const fs::path& temp) { return write_bake(temp, contents); });
 }
 
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,

@@ -1,0 +1,17 @@
+// Folders that appear whole or not at all (bakes, exports).
+// Threading: reentrant. The temporary folder is named after the target and the process.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+#include "tidewater/result.hpp"
+
+namespace tidewater {
+
+/// Creates a temporary sibling of `dir`, lets `fill` write into it, and only when that
+/// succeeds renames it onto `dir` (an existing `dir` is replaced, and survives any
+/// failure). The temporary folder is removed on failure.
+Status write_folder_atomically(const std::filesystem::path& dir, const std::function<Status(const std::filesystem::path&)>& fill);
+
+}  // namespace tidewater

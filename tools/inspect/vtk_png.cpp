@@ -1,0 +1,34 @@
+#include "vtk_png.hpp"
+
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+namespace tidewater::inspect {
+
+Status save_window_png(vtkRenderWindow* window, const std::filesystem::path& png) {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(window);
+    capture->ReadFrontBufferOff();
+    capture->Update();
+    std::filesystem::path temp = png;
+    temp += fmt::format(".tmp-{}", ::getpid());
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(temp.c_str());
+    writer->SetInputConnection(capture->GetOutputPort());
+    writer->Write();
+    std::error_code ec;
+    if (writer->GetErrorCode() == 0 && std::filesystem::exists(temp, ec)) {
+        std::filesystem::rename(temp, png, ec);
+        if (!ec) return {};
+    }
+    std::filesystem::remove(temp, ec);
+    return Error{ErrorCode::io_error, fmt::format("{}: cannot write the picture", png.string())};
+}
+
+}  // namespace tidewater::inspect
