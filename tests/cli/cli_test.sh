@@ -316,6 +316,8 @@ JSON
     if command -v xvfb-run > /dev/null; then
       xvfb-run -a "$TW" inspect --resolution 64x64 --time 1 --field jacobian --screenshot shot.png --size 320x200 > /dev/null
       check "screenshot written" test -s shot.png
+      rc=0; timeout 6 xvfb-run -a "$TW" inspect --view --times 0:5:0.5 --resolution 48x48 > /dev/null 2>&1 || rc=$?
+      check "the interactive viewer starts and keeps running (stopped after 6 s)" test "$rc" -eq 124
     fi
     expect_error "unknown field" "--field \"vorticity\" is unknown" "$TW" inspect --time 0 --field vorticity --export e1
     expect_error "empty time range" "--times" "$TW" inspect --times 5:1:1 --export e2

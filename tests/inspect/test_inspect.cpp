@@ -19,6 +19,7 @@
 #include "tidewater/image_io.hpp"
 #include "tidewater/query.hpp"
 #include "vtk_output.hpp"
+#include "vtk_viewer.hpp"
 
 namespace tidewater::inspect {
 namespace {
@@ -163,6 +164,54 @@ TEST(Inspect, ProbeFindsTheWavePeriod) {
     EXPECT_GT(coverage(*img, 0, img->width), 0.01);
     fs::remove(png);
     EXPECT_FALSE(probe(*scene, {0.0, 0.0}, {0.0, 1.0}).ok());  // too few steps
+}
+
+// The interactive viewer, driven without its event loop (offscreen): time, field and
+// glyph changes change the picture; a probe from it finds the sea's period.
+TEST(Inspect, ViewerStepsTimeSwitchesFieldsAndProbes) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok());
+    SampleGrid grid;
+    grid.min = {-1200.0, -1200.0};
+    grid.max = {1200.0, 1200.0};
+    grid.nx = grid.nz = 64;
+    std::vector<double> times;
+    for (int k = 0; k < 64; ++k) times.push_back(0.5 * k);
+    auto viewer = Viewer::create(*scene, grid, times, "height", 480, 300, true);
+    ASSERT_TRUE(viewer.ok()) << viewer.error().message;
+    Viewer& v = **viewer;
+    auto shot = [&](const char* name) {
+        const fs::path png = temp_dir(name);
+        EXPECT_TRUE(v.save(png).ok());
+        auto img = read_png_rgba8(png);
+        fs::remove(png);
+        return img.ok() ? std::move(img).value() : Rgba8Image{};
+    };
+    auto differ = [](const Rgba8Image& a, const Rgba8Image& b) {
+        std::size_t d = 0;
+        for (std::size_t k = 0; k < std::min(a.pixels.size(), b.pixels.size()); ++k) d += a.pixels[k] != b.pixels[k];
+        return static_cast<double>(d) / static_cast<double>(std::max<std::size_t>(1, a.pixels.size()));
+    };
+    const Rgba8Image first = shot("v0.png");
+    ASSERT_EQ(first.width, 480);
+    ASSERT_TRUE(v.set_time_index(10).ok());
+    EXPECT_DOUBLE_EQ(v.time(), 5.0);
+    const Rgba8Image later = shot("v1.png");
+    EXPECT_GT(differ(first, later), 0.01) << "a later time looks the same";
+    v.next_field();
+    EXPECT_EQ(v.field(), "displacement");
+    const Rgba8Image other = shot("v2.png");
+    EXPECT_GT(differ(later, other), 0.01) << "another field looks the same";
+    v.set_glyphs(true);
+    EXPECT_GT(differ(other, shot("v3.png")), 0.001) << "glyphs drew nothing";
+    EXPECT_FALSE(v.set_time_index(64).ok());
+    const fs::path png = temp_dir("viewer_probe.png");
+    auto period = v.probe({1000.0, 50.0}, png);
+    ASSERT_TRUE(period.ok()) << period.error().message;
+    EXPECT_GT(*period, 3.0);
+    EXPECT_LT(*period, 20.0);
+    EXPECT_TRUE(fs::exists(png));
+    fs::remove(png);
 }
 
 }  // namespace

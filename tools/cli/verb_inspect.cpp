@@ -16,6 +16,7 @@
 #include "tidewater/gerstner.hpp"
 #include "tidewater/query.hpp"
 #include "vtk_output.hpp"
+#include "vtk_viewer.hpp"
 #endif
 
 namespace tidewater::cli {
@@ -26,7 +27,7 @@ struct InspectArgs : DataOptions {
     std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset;
     std::optional<double> time;
     unsigned threads = 0;
-    bool quiet = false;
+    bool quiet = false, view = false;
 };
 
 #if defined(TIDEWATER_HAVE_INSPECT)
@@ -88,8 +89,8 @@ int run_overlay(const InspectArgs& a) {
 int run_inspect(const InspectArgs& a) {
     constexpr const char* verb = "inspect";
     if (!a.data.empty()) return run_overlay(a);
-    if (a.export_dir.empty() && a.screenshot.empty() && a.plot.empty())
-        return fail(verb, "give --export DIR, --screenshot PNG and/or --plot PNG --probe x,z (this build has no interactive viewer yet)");
+    if (a.export_dir.empty() && a.screenshot.empty() && a.plot.empty() && !a.view)
+        return fail(verb, "give --view (interactive), --export DIR, --screenshot PNG and/or --plot PNG --probe x,z");
     if (a.plot.empty() != a.probe.empty()) return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
     if (!inspect::find_field(a.field)) {
         std::string names;
@@ -149,6 +150,14 @@ int run_inspect(const InspectArgs& a) {
         else
             std::printf("probe at x = %g, z = %g m: the height does not change (dry land or still water) -> %s\n", at.x, at.y, a.plot.c_str());
     }
+    if (a.view) {
+        auto size = parse_pair(a.size, "--size");
+        if (!size) return fail(verb, size.error().message);
+        auto viewer = inspect::Viewer::create(*scene, grid, times, a.field, size->first, size->second, false);
+        if (!viewer) return fail(verb, viewer.error().message);
+        std::printf("viewer: space play/pause, f next field, g velocity glyphs, p probe under the mouse, q quit\n");
+        (*viewer)->run();
+    }
     if (!a.screenshot.empty()) {
         auto size = parse_pair(a.size, "--size");
         if (!size) return fail(verb, size.error().message);
@@ -187,6 +196,7 @@ Verb add_inspect_verb(CLI::App& app) {
     add_data_options(cmd, *a);
     cmd->add_option("--preset", a->preset, "With --data: the preset whose prediction is overlaid on the record (--plot)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
+    cmd->add_flag("--view", a->view, "Open the interactive viewer over --times (time slider, play/pause, fields, glyphs, probe)");
 #if defined(TIDEWATER_HAVE_INSPECT)
     return {cmd, [a] { return run_inspect(*a); }};
 #else

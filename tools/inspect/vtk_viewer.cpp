@@ -1,0 +1,317 @@
+#include "vtk_viewer.hpp"
+
+#include <vtkActor.h>
+#include <vtkArrowSource.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
+#include <vtkCommand.h>
+#include <vtkContourFilter.h>
+#include <vtkDataSetMapper.h>
+#include <vtkDoubleArray.h>
+#include <vtkGlyph3D.h>
+#include <vtkLookupTable.h>
+#include <vtkMaskPoints.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSliderRepresentation2D.h>
+#include <vtkSliderWidget.h>
+#include <vtkStructuredGrid.h>
+#include <vtkStructuredGridGeometryFilter.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+
+#include "probe.hpp"
+#include "vtk_output.hpp"
+#include "vtk_png.hpp"
+
+namespace tidewater::inspect {
+
+struct Viewer::Impl {
+    const Scene* scene = nullptr;
+    SampleGrid grid;
+    std::vector<double> times;
+    std::size_t time_index = 0;
+    std::size_t field_index = 0;
+    FieldSample sample;
+    std::vector<double> terrain;
+    bool playing = false;
+
+    vtkNew<vtkStructuredGrid> surface, land;
+    vtkNew<vtkDoubleArray> scalars, vectors;
+    vtkNew<vtkLookupTable> lut;
+    vtkNew<vtkDataSetMapper> surface_mapper;
+    vtkNew<vtkActor> surface_actor, land_actor, shore_actor, glyph_actor;
+    vtkNew<vtkScalarBarActor> legend;
+    vtkNew<vtkTextActor> caption;
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkRenderWindow> window;
+    vtkNew<vtkSliderRepresentation2D> slider_rep;
+    vtkNew<vtkSliderWidget> slider;
+
+    const FieldInfo& info() const { return field_infos()[field_index]; }
+
+    /// Points and colours for the current sample and field.
+    void update() {
+        const std::size_t n = grid.points();
+        vtkPoints* points = surface->GetPoints();
+        double lo = INFINITY, hi = -INFINITY;
+        scalars->SetNumberOfTuples(static_cast<vtkIdType>(n));
+        vectors->SetNumberOfComponents(3);
+        vectors->SetNumberOfTuples(static_cast<vtkIdType>(n));
+        for (std::size_t k = 0; k < n; ++k) {
+            const glm::dvec3& p = sample.surface[k];
+            // Dry points sink under the terrain, so land shows where there is no water.
+            points->SetPoint(static_cast<vtkIdType>(k), p.x, sample.wet[k] == 0.0 ? terrain[k] - 1.0 : p.y, p.z);
+            double v = 0.0;
+            if (info().components == 1) {
+                v = sample.value(info().name, k);
+            } else {
+                for (int c = 0; c < info().components; ++c) v += sample.value(info().name, k, c) * sample.value(info().name, k, c);
+                v = std::sqrt(v);
+            }
+            scalars->SetValue(static_cast<vtkIdType>(k), v);
+            if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+            vectors->SetTuple3(static_cast<vtkIdType>(k), sample.velocity[k].x, sample.velocity[k].y, sample.velocity[k].z);
+        }
+        if (!(hi > lo)) lo = std::isfinite(lo) ? lo - 0.5 : 0.0, hi = lo + 1.0;
+        points->Modified();
+        scalars->Modified();
+        vectors->Modified();
+        lut->SetTableRange(lo, hi);
+        surface_mapper->SetScalarRange(lo, hi);
+        legend->SetTitle(fmt::format("{} ({})", info().name, info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit).c_str());
+        caption->SetInput(fmt::format("t = {:.2f} s   field: {}   [space] play  [f] field  [g] glyphs  [p] probe", sample.time, info().name).c_str());
+    }
+
+    Status resample(std::size_t index) {
+        auto s = sample_field(*scene, grid, times[index], 0);
+        if (!s) return s.error();
+        sample = std::move(s).value();
+        time_index = index;
+        update();
+        return {};
+    }
+};
+
+Viewer::Viewer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Viewer::~Viewer() = default;
+
+Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleGrid& grid, std::vector<double> times, const std::string& field,
+                                               int width, int height, bool offscreen) {
+    if (auto st = validate_grid(grid); !st) return st.error();
+    if (times.empty()) return Error{ErrorCode::invalid_argument, "viewer: the time range holds no time"};
+    auto m = std::make_unique<Impl>();
+    m->scene = &scene;
+    m->grid = grid;
+    m->times = std::move(times);
+    const auto& infos = field_infos();
+    const auto it = std::find_if(infos.begin(), infos.end(), [&](const FieldInfo& f) { return field == f.name; });
+    if (it == infos.end()) return Error{ErrorCode::invalid_argument, fmt::format("unknown field \"{}\"", field)};
+    m->field_index = static_cast<std::size_t>(it - infos.begin());
+    m->terrain = sample_terrain(scene, grid);
+
+    const std::size_t n = grid.points();
+    vtkNew<vtkPoints> surface_points, land_points;
+    surface_points->SetNumberOfPoints(static_cast<vtkIdType>(n));
+    land_points->SetNumberOfPoints(static_cast<vtkIdType>(n));
+    vtkNew<vtkDoubleArray> ground;
+    ground->SetName("terrain");
+    ground->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    for (int j = 0; j < grid.nz; ++j)
+        for (int i = 0; i < grid.nx; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i);
+            const glm::dvec2 p = grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+            land_points->SetPoint(static_cast<vtkIdType>(k), p.x, m->terrain[k], p.y);
+            ground->SetValue(static_cast<vtkIdType>(k), m->terrain[k] - scene.water_level);
+        }
+    m->surface->SetDimensions(grid.nx, grid.nz, 1);
+    m->surface->SetPoints(surface_points);
+    m->scalars->SetName("field");
+    m->vectors->SetName("velocity");
+    m->vectors->SetNumberOfComponents(3);
+    m->surface->GetPointData()->SetScalars(m->scalars);
+    m->surface->GetPointData()->SetVectors(m->vectors);
+    m->land->SetDimensions(grid.nx, grid.nz, 1);
+    m->land->SetPoints(land_points);
+    m->land->GetPointData()->SetScalars(ground);
+
+    m->lut->SetHueRange(0.667, 0.0);
+    m->lut->Build();
+    m->surface_mapper->SetInputData(m->surface);
+    m->surface_mapper->SetLookupTable(m->lut);
+    m->surface_actor->SetMapper(m->surface_mapper);
+    vtkNew<vtkDataSetMapper> land_mapper;
+    land_mapper->SetInputData(m->land);
+    land_mapper->ScalarVisibilityOff();
+    m->land_actor->SetMapper(land_mapper);
+    m->land_actor->GetProperty()->SetColor(0.55, 0.5, 0.4);
+    // The shoreline: the terrain's contour at the water level.
+    vtkNew<vtkStructuredGridGeometryFilter> land_surface;
+    land_surface->SetInputData(m->land);
+    vtkNew<vtkContourFilter> shoreline;
+    shoreline->SetInputConnection(land_surface->GetOutputPort());
+    shoreline->SetValue(0, 0.0);
+    vtkNew<vtkPolyDataMapper> shore_mapper;
+    shore_mapper->SetInputConnection(shoreline->GetOutputPort());
+    shore_mapper->ScalarVisibilityOff();
+    m->shore_actor->SetMapper(shore_mapper);
+    m->shore_actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+    m->shore_actor->GetProperty()->SetLineWidth(2.0);
+    // Velocity glyphs on about 400 points, an arrow of 1 m/s a twentieth of the view across.
+    vtkNew<vtkStructuredGridGeometryFilter> water_surface;
+    water_surface->SetInputData(m->surface);
+    vtkNew<vtkMaskPoints> mask;
+    mask->SetInputConnection(water_surface->GetOutputPort());
+    mask->SetOnRatio(std::max<int>(1, static_cast<int>(n / 400)));
+    vtkNew<vtkArrowSource> arrow;
+    vtkNew<vtkGlyph3D> glyphs;
+    glyphs->SetInputConnection(mask->GetOutputPort());
+    glyphs->SetSourceConnection(arrow->GetOutputPort());
+    glyphs->SetVectorModeToUseVector();
+    glyphs->SetScaleModeToScaleByVector();
+    glyphs->SetScaleFactor(0.05 * std::max(grid.max.x - grid.min.x, grid.max.y - grid.min.y));
+    vtkNew<vtkPolyDataMapper> glyph_mapper;
+    glyph_mapper->SetInputConnection(glyphs->GetOutputPort());
+    glyph_mapper->ScalarVisibilityOff();
+    m->glyph_actor->SetMapper(glyph_mapper);
+    m->glyph_actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+    m->glyph_actor->SetVisibility(false);
+
+    m->legend->SetLookupTable(m->lut);
+    m->legend->SetNumberOfLabels(5);
+    m->legend->SetPosition(0.88, 0.1);
+    m->legend->SetWidth(0.1);
+    m->legend->SetHeight(0.8);
+    m->legend->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+    m->legend->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+    m->caption->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    m->caption->GetTextProperty()->SetFontSize(14);
+    m->caption->SetDisplayPosition(10, 10);
+
+    m->renderer->SetBackground(0.92, 0.94, 0.97);
+    for (vtkActor* a : {m->land_actor.Get(), m->surface_actor.Get(), m->shore_actor.Get(), m->glyph_actor.Get()}) m->renderer->AddActor(a);
+    m->renderer->AddActor2D(m->legend);
+    m->renderer->AddActor2D(m->caption);
+    vtkCamera* camera = m->renderer->GetActiveCamera();
+    const glm::dvec2 centre = 0.5 * (grid.min + grid.max);
+    const double span = std::max(grid.max.x - grid.min.x, grid.max.y - grid.min.y);
+    camera->SetFocalPoint(centre.x, 0.0, centre.y);
+    camera->SetPosition(centre.x - 0.9 * span, 0.9 * span, centre.y - 1.1 * span);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    m->window->SetOffScreenRendering(offscreen ? 1 : 0);
+    m->window->SetSize(width, height);
+    m->window->SetWindowName("tidewater inspect");
+    m->window->AddRenderer(m->renderer);
+    if (auto st = m->resample(0); !st) return st.error();
+    m->renderer->ResetCameraClippingRange();
+    return std::unique_ptr<Viewer>(new Viewer(std::move(m)));
+}
+
+Status Viewer::set_time_index(std::size_t index) {
+    if (index >= impl_->times.size()) return Error{ErrorCode::invalid_argument, "viewer: time index out of range"};
+    return impl_->resample(index);
+}
+
+void Viewer::next_field() {
+    impl_->field_index = (impl_->field_index + 1) % field_infos().size();
+    impl_->update();
+}
+
+void Viewer::set_glyphs(bool on) { impl_->glyph_actor->SetVisibility(on); }
+
+Result<double> Viewer::probe(glm::dvec2 at, const std::filesystem::path& png) {
+    auto series = inspect::probe(*impl_->scene, at, impl_->times);
+    if (!series) return series.error();
+    if (auto st = probe_chart(*series, png); !st) return st.error();
+    return series->dominant_period;
+}
+
+Status Viewer::save(const std::filesystem::path& png) { return save_window_png(impl_->window, png); }
+std::string Viewer::field() const { return impl_->info().name; }
+double Viewer::time() const { return impl_->sample.time; }
+
+void Viewer::run() {
+    Impl& m = *impl_;
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    interactor->SetRenderWindow(m.window);
+    interactor->Initialize();
+    // The time slider.
+    m.slider_rep->SetMinimumValue(0.0);
+    m.slider_rep->SetMaximumValue(static_cast<double>(m.times.size() - 1));
+    m.slider_rep->SetValue(0.0);
+    m.slider_rep->SetTitleText("time step");
+    m.slider_rep->GetPoint1Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+    m.slider_rep->GetPoint1Coordinate()->SetValue(0.1, 0.08);
+    m.slider_rep->GetPoint2Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+    m.slider_rep->GetPoint2Coordinate()->SetValue(0.8, 0.08);
+    m.slider->SetInteractor(interactor);
+    m.slider->SetRepresentation(m.slider_rep);
+    m.slider->SetAnimationModeToJump();
+    m.slider->EnabledOn();
+    vtkNew<vtkCallbackCommand> on_slide;
+    on_slide->SetClientData(this);
+    on_slide->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+        auto* v = static_cast<Viewer*>(self);
+        const auto index = static_cast<std::size_t>(std::lround(v->impl_->slider_rep->GetValue()));
+        if (index != v->impl_->time_index) (void)v->set_time_index(index);
+        v->impl_->window->Render();
+    });
+    m.slider->AddObserver(vtkCommand::InteractionEvent, on_slide);
+    // Keys: space, f, g, p.
+    vtkNew<vtkCallbackCommand> on_key;
+    on_key->SetClientData(this);
+    on_key->SetCallback([](vtkObject* caller, unsigned long, void* self, void*) {
+        auto* v = static_cast<Viewer*>(self);
+        auto* iren = static_cast<vtkRenderWindowInteractor*>(caller);
+        const std::string key = iren->GetKeySym() ? iren->GetKeySym() : "";
+        if (key == "space") {
+            v->impl_->playing = !v->impl_->playing;
+        } else if (key == "f") {
+            v->next_field();
+        } else if (key == "g") {
+            v->set_glyphs(!v->impl_->glyph_actor->GetVisibility());
+        } else if (key == "p") {
+            vtkNew<vtkCellPicker> picker;
+            int* pos = iren->GetEventPosition();
+            if (picker->Pick(pos[0], pos[1], 0, v->impl_->renderer)) {
+                double* w = picker->GetPickPosition();
+                const std::string png = fmt::format("probe_{:.0f}_{:.0f}.png", w[0], w[2]);
+                auto period = v->probe({w[0], w[2]}, png);
+                if (period) std::printf("probe at x = %.1f, z = %.1f m: dominant period %.3f s -> %s\n", w[0], w[2], *period, png.c_str());
+                else std::printf("probe: %s\n", period.error().message.c_str());
+            }
+        }
+        v->impl_->window->Render();
+    });
+    interactor->AddObserver(vtkCommand::KeyPressEvent, on_key);
+    // Play: a repeating timer advances one step.
+    vtkNew<vtkCallbackCommand> on_timer;
+    on_timer->SetClientData(this);
+    on_timer->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+        auto* v = static_cast<Viewer*>(self);
+        if (!v->impl_->playing || v->impl_->times.size() < 2) return;
+        const std::size_t next = (v->impl_->time_index + 1) % v->impl_->times.size();
+        (void)v->set_time_index(next);
+        v->impl_->slider_rep->SetValue(static_cast<double>(next));
+        v->impl_->window->Render();
+    });
+    interactor->AddObserver(vtkCommand::TimerEvent, on_timer);
+    interactor->CreateRepeatingTimer(100);
+    m.window->Render();
+    interactor->Start();
+}
+
+}  // namespace tidewater::inspect
