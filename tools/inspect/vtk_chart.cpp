@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "vtk_chart.hpp"
 #include "vtk_output.hpp"
 #include "vtk_png.hpp"
 
@@ -39,9 +40,7 @@ void style(vtkChartXY* chart, const std::string& title, const char* x_title, con
 
 }  // namespace
 
-Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int width, int height) {
-    if (width < 200 || height < 120 || width > 8192 || height > 8192)
-        return Error{ErrorCode::invalid_argument, fmt::format("chart size {}x{}: 200x120 to 8192x8192", width, height)};
+vtkSmartPointer<vtkContextView> probe_view(const ProbeSeries& p, int width, int height, bool offscreen) {
     auto series = table_of("t (s)", p.time, "height (m)", p.height, p.time.size());
     // The spectrum up to 4 times the dominant frequency.
     std::size_t shown = p.frequency.size();
@@ -49,9 +48,10 @@ Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int w
         while (shown > 2 && p.frequency[shown - 1] > 4.0 / p.dominant_period) --shown;
     auto spectrum = table_of("f (Hz)", p.frequency, "power (m^2/Hz)", p.power, shown);
 
-    vtkNew<vtkContextView> view;
-    view->GetRenderWindow()->SetOffScreenRendering(1);
+    auto view = vtkSmartPointer<vtkContextView>::New();
+    view->GetRenderWindow()->SetOffScreenRendering(offscreen ? 1 : 0);
     view->GetRenderWindow()->SetSize(width, height);
+    view->GetRenderWindow()->SetWindowName("tidewater probe");
     vtkNew<vtkChartMatrix> matrix;
     matrix->SetSize(vtkVector2i(2, 1));
     view->GetScene()->AddItem(matrix);
@@ -67,6 +67,13 @@ Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int w
     style(right, p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
                                          : std::string("spectrum: the height does not change here (dry land or still water)"),
           "frequency, Hz", "power, m^2/Hz");
+    return view;
+}
+
+Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int width, int height) {
+    if (width < 200 || height < 120 || width > 8192 || height > 8192)
+        return Error{ErrorCode::invalid_argument, fmt::format("chart size {}x{}: 200x120 to 8192x8192", width, height)};
+    auto view = probe_view(p, width, height, true);
     return save_window_png(view->GetRenderWindow(), png);
 }
 

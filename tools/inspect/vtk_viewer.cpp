@@ -34,6 +34,7 @@
 #include <fmt/format.h>
 
 #include "probe.hpp"
+#include "vtk_chart.hpp"
 #include "vtk_output.hpp"
 #include "vtk_png.hpp"
 
@@ -48,6 +49,7 @@ struct Viewer::Impl {
     FieldSample sample;
     std::vector<double> terrain;
     bool playing = false;
+    vtkSmartPointer<vtkContextView> chart;  // the last probe's chart window
 
     vtkNew<vtkStructuredGrid> surface, land;
     vtkNew<vtkDoubleArray> scalars, vectors;
@@ -289,9 +291,17 @@ void Viewer::run() {
             if (picker->Pick(pos[0], pos[1], 0, v->impl_->renderer)) {
                 double* w = picker->GetPickPosition();
                 const std::string png = fmt::format("probe_{:.0f}_{:.0f}.png", w[0], w[2]);
-                auto period = v->probe({w[0], w[2]}, png);
-                if (period) std::printf("probe at x = %.1f, z = %.1f m: dominant period %.3f s -> %s\n", w[0], w[2], *period, png.c_str());
-                else std::printf("probe: %s\n", period.error().message.c_str());
+                auto series = inspect::probe(*v->impl_->scene, {w[0], w[2]}, v->impl_->times);
+                if (!series) {
+                    std::printf("probe: %s\n", series.error().message.c_str());
+                } else {
+                    const Status written = probe_chart(*series, png);
+                    std::printf("probe at x = %.1f, z = %.1f m: dominant period %.3f s%s\n", w[0], w[2], series->dominant_period,
+                                written ? (" -> " + png).c_str() : "");
+                    // Show the chart in a window of its own beside the viewer.
+                    v->impl_->chart = probe_view(*series, 900, 320, false);
+                    v->impl_->chart->GetRenderWindow()->Render();
+                }
             }
         }
         v->impl_->window->Render();

@@ -3,8 +3,9 @@
 // field selector and a click-to-probe chart.
 //
 // Keys (besides VTK's usual mouse camera): space play/pause, f next field,
-// g velocity glyphs on/off, p probe the point under the mouse (writes a chart PNG
-// and prints its dominant period), r reset the camera, q quit.
+// g velocity glyphs on/off, p probe the point under the mouse (shows its chart in a
+// window, writes it to probe_X_Z.png and prints the dominant period), r reset the
+// camera, q quit.
 // Threading: one viewer per thread; VTK windows need a display (xvfb-run without one).
 #pragma once
 
