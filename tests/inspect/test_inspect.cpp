@@ -112,16 +112,13 @@ TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
     grid.min = {-1200.0, -1200.0};
     grid.max = {1200.0, 1200.0};
     grid.nx = grid.nz = 96;
-    auto sample = sample_field(*scene, grid, 3.0, 0);
-    ASSERT_TRUE(sample.ok());
-    const auto terrain = sample_terrain(*scene, grid);
     std::vector<Rgba8Image> pictures;
     for (const char* field : {"height", "foam"}) {
         const fs::path png = temp_dir(std::string(field) + ".png");
         ScreenshotOptions o;
         o.field = field;
         o.width = 640, o.height = 360;
-        ASSERT_TRUE(screenshot(*sample, terrain, o, png).ok()) << field;
+        ASSERT_TRUE(screenshot(*scene, grid, 3.0, o, png).ok()) << field;
         auto img = read_png_rgba8(png);
         ASSERT_TRUE(img.ok()) << img.error().message;
         EXPECT_EQ(img->width, 640);
@@ -137,7 +134,7 @@ TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
     EXPECT_GT(static_cast<double>(differ) / static_cast<double>(pictures[0].pixels.size()), 0.05);
     ScreenshotOptions bad;
     bad.field = "vorticity";
-    EXPECT_NE(screenshot(*sample, terrain, bad, temp_dir("bad.png")).error().message.find("unknown field"), std::string::npos);
+    EXPECT_NE(screenshot(*scene, grid, 3.0, bad, temp_dir("bad.png")).error().message.find("unknown field"), std::string::npos);
     EXPECT_FALSE(fs::exists(temp_dir("bad.png")));
 }
 

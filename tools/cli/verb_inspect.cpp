@@ -161,13 +161,10 @@ int run_inspect(const InspectArgs& a) {
     if (!a.screenshot.empty()) {
         auto size = parse_pair(a.size, "--size");
         if (!size) return fail(verb, size.error().message);
-        auto sample = inspect::sample_field(*scene, grid, times.front(), a.threads);
-        if (!sample) return fail(verb, sample.error().message);
         inspect::ScreenshotOptions o;
         o.field = a.field;
         o.width = size->first, o.height = size->second;
-        if (auto st = inspect::screenshot(*sample, inspect::sample_terrain(*scene, grid), o, a.screenshot); !st)
-            return fail(verb, st.error().message);
+        if (auto st = inspect::screenshot(*scene, grid, times.front(), o, a.screenshot); !st) return fail(verb, st.error().message);
         std::printf("rendered %s at t = %g s to %s\n", a.field.c_str(), times.front(), a.screenshot.c_str());
     }
     return 0;

@@ -63,8 +63,7 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     std::vector<glm::dvec2> where(n);
     for (int j = 0; j < grid.nz; ++j)
         for (int i = 0; i < grid.nx; ++i)
-            where[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)] =
-                grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+            where[grid.index(i, j)] = grid.point(i, j);
     std::vector<SurfacePoint> out(n);
     QueryOptions options;
     options.threads = threads;
@@ -96,8 +95,7 @@ std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid) {
     std::vector<double> h(grid.points());
     for (int j = 0; j < grid.nz; ++j)
         for (int i = 0; i < grid.nx; ++i)
-            h[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)] =
-                scene.terrain.height_at(grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1)));
+            h[grid.index(i, j)] = scene.terrain.height_at(grid.point(i, j));
     return h;
 }
 

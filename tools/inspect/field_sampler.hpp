@@ -19,6 +19,9 @@ struct SampleGrid {
     glm::dvec2 min{-50.0}, max{50.0};
     int nx = 64, nz = 64;
     std::size_t points() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+    /// The world (x, z) of point (i, j), m.
+    glm::dvec2 point(int i, int j) const { return min + (max - min) * glm::dvec2(i / double(nx - 1), j / double(nz - 1)); }
 };
 
 /// The largest grid sampled in one go (about 1.6 GB of arrays).

@@ -68,8 +68,8 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
     std::vector<glm::dvec3> terrain_points(grid.points());
     for (int j = 0; j < grid.nz; ++j)
         for (int i = 0; i < grid.nx; ++i) {
-            const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i);
-            const glm::dvec2 p = grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+            const std::size_t k = grid.index(i, j);
+            const glm::dvec2 p = grid.point(i, j);
             terrain_points[k] = {p.x, ground[k], p.y};
         }
     auto terrain = make_grid(grid, terrain_points);

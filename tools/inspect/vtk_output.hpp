@@ -31,10 +31,10 @@ struct ScreenshotOptions {
     int width = 1280, height = 720;
 };
 
-/// Renders the warped surface coloured by `field` with a colour legend (name and unit)
-/// above the terrain, offscreen, to a PNG (written whole or not at all). Needs an X
-/// display (run under xvfb-run on machines without one).
-Status screenshot(const FieldSample& sample, const std::vector<double>& terrain, const ScreenshotOptions& options,
+/// The viewer's picture of `field` at `time`, offscreen, to a PNG (written whole or not
+/// at all): the warped surface coloured by the field with its legend (name and unit),
+/// the terrain and the shoreline. Needs an X display (xvfb-run without one).
+Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const ScreenshotOptions& options,
                   const std::filesystem::path& png);
 
 /// The probe chart: height against time beside its spectrum, offscreen, to a PNG.

@@ -49,6 +49,7 @@ struct Viewer::Impl {
     FieldSample sample;
     std::vector<double> terrain;
     bool playing = false;
+    bool interactive = false;  // key hints in the caption
     vtkSmartPointer<vtkContextView> chart;  // the last probe's chart window
 
     vtkNew<vtkStructuredGrid> surface, land;
@@ -95,7 +96,8 @@ struct Viewer::Impl {
         lut->SetTableRange(lo, hi);
         surface_mapper->SetScalarRange(lo, hi);
         legend->SetTitle(fmt::format("{} ({})", info().name, info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit).c_str());
-        caption->SetInput(fmt::format("t = {:.2f} s   field: {}   [space] play  [f] field  [g] glyphs  [p] probe", sample.time, info().name).c_str());
+        caption->SetInput(fmt::format("t = {:.2f} s   field: {}{}", sample.time, info().name,
+                                      interactive ? "   [space] play  [f] field  [g] glyphs  [p] probe" : "").c_str());
     }
 
     Status resample(std::size_t index) {
@@ -115,14 +117,20 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
                                                int width, int height, bool offscreen) {
     if (auto st = validate_grid(grid); !st) return st.error();
     if (times.empty()) return Error{ErrorCode::invalid_argument, "viewer: the time range holds no time"};
+    if (width < 64 || height < 64 || width > 8192 || height > 8192)
+        return Error{ErrorCode::invalid_argument, fmt::format("size {}x{}: 64 to 8192 pixels a side", width, height)};
+    const FieldInfo* chosen = find_field(field);
+    if (!chosen) {
+        std::string names;
+        for (const FieldInfo& f : field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
+        return Error{ErrorCode::invalid_argument, fmt::format("unknown field \"{}\" (fields: {})", field, names)};
+    }
     auto m = std::make_unique<Impl>();
     m->scene = &scene;
     m->grid = grid;
     m->times = std::move(times);
-    const auto& infos = field_infos();
-    const auto it = std::find_if(infos.begin(), infos.end(), [&](const FieldInfo& f) { return field == f.name; });
-    if (it == infos.end()) return Error{ErrorCode::invalid_argument, fmt::format("unknown field \"{}\"", field)};
-    m->field_index = static_cast<std::size_t>(it - infos.begin());
+    m->interactive = !offscreen;
+    m->field_index = static_cast<std::size_t>(chosen - field_infos().data());
     m->terrain = sample_terrain(scene, grid);
 
     const std::size_t n = grid.points();
@@ -134,8 +142,8 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     ground->SetNumberOfTuples(static_cast<vtkIdType>(n));
     for (int j = 0; j < grid.nz; ++j)
         for (int i = 0; i < grid.nx; ++i) {
-            const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i);
-            const glm::dvec2 p = grid.min + (grid.max - grid.min) * glm::dvec2(i / double(grid.nx - 1), j / double(grid.nz - 1));
+            const std::size_t k = grid.index(i, j);
+            const glm::dvec2 p = grid.point(i, j);
             land_points->SetPoint(static_cast<vtkIdType>(k), p.x, m->terrain[k], p.y);
             ground->SetValue(static_cast<vtkIdType>(k), m->terrain[k] - scene.water_level);
         }
@@ -322,6 +330,12 @@ void Viewer::run() {
     interactor->CreateRepeatingTimer(100);
     m.window->Render();
     interactor->Start();
+}
+
+Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const ScreenshotOptions& o, const std::filesystem::path& png) {
+    auto viewer = Viewer::create(scene, grid, {time}, o.field, o.width, o.height, true);
+    if (!viewer) return viewer.error();
+    return (*viewer)->save(png);
 }
 
 }  // namespace tidewater::inspect
