@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <thread>
 
+#include "jet_scalar.hpp"
 #include "tidewater/calibration/phase_fit.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/constants.hpp"
@@ -22,11 +23,7 @@ namespace {
 constexpr double kFoldLimit = 0.95;  // sum(Q k A), as the runtime's shore steepness cap
 constexpr std::size_t kChunk = 32;   // samples per residual block
 
-double scalar(double v) { return v; }
-template <typename T, int N>
-double scalar(const ceres::Jet<T, N>& v) {
-    return v.a;
-}
+using detail::scalar;
 
 /// Parameters per wave: amplitude, omega (profile: k), phase, Q, and for a buoy the direction.
 int stride(RecordKind kind) { return kind == RecordKind::buoy ? 5 : 4; }

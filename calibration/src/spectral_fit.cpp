@@ -8,27 +8,16 @@
 #include <fmt/format.h>
 #include <memory>
 
+#include "jet_scalar.hpp"
+#include "jonswap_shape.hpp"
 #include "tidewater/calibration/spectrum.hpp"
 
 namespace tidewater::calibration {
 
 namespace {
 
-double scalar(double v) { return v; }
-template <typename T, int N>
-double scalar(const ceres::Jet<T, N>& v) {
-    return v.a;
-}
-
-template <typename T>
-T jonswap_shape(double f, const T& tp, const T& gamma) {
-    const T fp = 1.0 / tp;
-    const double sigma = f <= 1.0 / scalar(tp) ? 0.07 : 0.09;
-    const T x = (f - fp) / (sigma * fp);
-    const T r = exp(-0.5 * x * x);
-    const T tf = tp * f;
-    return std::pow(f, -5.0) * exp(-1.25 / (tf * tf * tf * tf)) * exp(r * log(gamma));
-}
+using detail::jonswap_shape;
+using detail::scalar;
 
 /// Residuals over the band: (m0 shape_i / sum_j shape_j df - S_i) / S_peak.
 struct ShapeResiduals {
@@ -45,7 +34,7 @@ struct ShapeResiduals {
         std::vector<T> shape(f.size());
         T sum(0.0);
         for (std::size_t k = 0; k < f.size(); ++k) {
-            shape[k] = jonswap_shape(f[k], tp[0], gamma[0]);
+            shape[k] = jonswap_shape(f[k], tp[0], gamma[0], f[k] <= 1.0 / scalar(tp[0]));
             sum += shape[k] * w[k];
         }
         for (std::size_t k = 0; k < f.size(); ++k) residuals[k] = (m0 * shape[k] / sum - s[k]) / peak;

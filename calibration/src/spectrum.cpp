@@ -6,6 +6,7 @@
 #include <random>
 #include <unsupported/Eigen/FFT>
 
+#include "jonswap_shape.hpp"
 #include "tidewater/calibration/spectrum.hpp"
 #include "tidewater/constants.hpp"
 
@@ -150,22 +151,15 @@ SeaState summarize(const MeasuredSpectrum& s, double f_lo, double f_hi) {
 double jonswap_density(double f, double hs, double tp, double gamma) {
     if (f <= 0.0 || tp <= 0.0) return 0.0;
     const double fp = 1.0 / tp;
-    const double sigma = f <= fp ? 0.07 : 0.09;
-    const double r = std::exp(-(f - fp) * (f - fp) / (2.0 * sigma * sigma * fp * fp));
-    const double shape = std::pow(f, -5.0) * std::exp(-1.25 * std::pow(tp * f, -4.0)) * std::pow(gamma, r);
-    // Normalise numerically: the integral of the shape at this (tp, gamma).
+    // Normalise numerically: the integral of the shape at this (tp, gamma), kept for the next call.
     static thread_local double cached_tp = -1.0, cached_gamma = -1.0, cached_integral = 0.0;
     if (tp != cached_tp || gamma != cached_gamma) {
         double integral = 0.0;
         const double df = fp / 400.0;
-        for (double x = 0.3 * fp; x < 8.0 * fp; x += df) {
-            const double sx = x <= fp ? 0.07 : 0.09;
-            const double rx = std::exp(-(x - fp) * (x - fp) / (2.0 * sx * sx * fp * fp));
-            integral += std::pow(x, -5.0) * std::exp(-1.25 * std::pow(tp * x, -4.0)) * std::pow(gamma, rx) * df;
-        }
+        for (double x = 0.3 * fp; x < 8.0 * fp; x += df) integral += detail::jonswap_shape(x, tp, gamma, x <= fp) * df;
         cached_tp = tp, cached_gamma = gamma, cached_integral = integral;
     }
-    return hs * hs / 16.0 * shape / cached_integral;
+    return hs * hs / 16.0 * detail::jonswap_shape(f, tp, gamma, f <= fp) / cached_integral;
 }
 
 Result<std::vector<WaveSpec>> sample_preset_waves(const JonswapFit& fit, int count, std::uint64_t seed, double fold) {
