@@ -47,4 +47,11 @@ Result<std::vector<double>> parse_time_range(const std::string& text, const char
     return times;
 }
 
+Result<std::vector<double>> times_from_options(const std::optional<double>& time, const std::string& times) {
+    if (time.has_value() == !times.empty()) return Error{ErrorCode::invalid_argument, "give exactly one of --time and --times"};
+    if (!time) return parse_time_range(times, "--times");
+    if (auto st = check_time(*time, "--time"); !st) return st.error();
+    return std::vector<double>{*time};
+}
+
 }  // namespace tidewater::cli

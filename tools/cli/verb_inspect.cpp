@@ -31,6 +31,15 @@ struct InspectArgs : DataOptions {
 };
 
 #if defined(TIDEWATER_HAVE_INSPECT)
+/// "x,z" in metres.
+Result<glm::dvec2> parse_point(const std::string& text, const char* option) {
+    glm::dvec2 at{0.0};
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2 || !std::isfinite(at.x) || !std::isfinite(at.y))
+        return Error{ErrorCode::invalid_argument, fmt::format("{} \"{}\": expected x,z in metres", option, text)};
+    return at;
+}
+
 Result<std::pair<int, int>> parse_pair(const std::string& text, const char* option) {
     int a = 0, b = 0;
     char x = 0, extra = 0;
@@ -55,9 +64,11 @@ int run_overlay(const InspectArgs& a) {
     auto body = WaterBody::create(*profile, 0.0, a.preset);
     if (!body) return fail(verb, body.error().message);
     glm::dvec2 at{0.0};
-    char extra = 0;
-    if (!a.probe.empty() && std::sscanf(a.probe.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2)
-        return fail(verb, fmt::format("--probe \"{}\": expected x,z in metres", a.probe));
+    if (!a.probe.empty()) {
+        auto parsed = parse_point(a.probe, "--probe");
+        if (!parsed) return fail(verb, parsed.error().message);
+        at = *parsed;
+    }
     std::vector<double> model(record->size());
     const std::vector<glm::dvec2> where{at};
     std::vector<SurfacePoint> out(1);
@@ -113,16 +124,9 @@ int run_inspect(const InspectArgs& a) {
             return fail(verb, fmt::format("--extent \"{}\": expected x0:x1,z0:z1 in metres", a.extent));
     }
     if (auto st = inspect::validate_grid(grid); !st) return fail(verb, "--resolution/--extent: " + st.error().message);
-    std::vector<double> times;
-    if (a.time.has_value() == !a.times.empty()) return fail(verb, "give exactly one of --time and --times");
-    if (a.time) {
-        if (auto st = check_time(*a.time, "--time"); !st) return fail(verb, st.error().message);
-        times = {*a.time};
-    } else {
-        auto range = parse_time_range(a.times, "--times");
-        if (!range) return fail(verb, range.error().message);
-        times = *range;
-    }
+    auto parsed_times = times_from_options(a.time, a.times);
+    if (!parsed_times) return fail(verb, parsed_times.error().message);
+    const std::vector<double> times = std::move(parsed_times).value();
     if (!a.export_dir.empty()) {
         int last = -10;
         auto progress = [&](double f) {
@@ -139,9 +143,9 @@ int run_inspect(const InspectArgs& a) {
                     points / std::max(stats.write_seconds, 1e-9), stats.write_seconds, static_cast<double>(stats.bytes) / 1e6);
     }
     if (!a.plot.empty()) {
-        glm::dvec2 at{0.0};
-        char extra = 0;
-        if (std::sscanf(a.probe.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2) return fail(verb, fmt::format("--probe \"{}\": expected x,z in metres", a.probe));
+        auto parsed = parse_point(a.probe, "--probe");
+        if (!parsed) return fail(verb, parsed.error().message);
+        const glm::dvec2 at = *parsed;
         auto series = inspect::probe(*scene, at, times);
         if (!series) return fail(verb, "--probe: " + series.error().message);
         if (auto st = inspect::probe_chart(*series, a.plot); !st) return fail(verb, st.error().message);

@@ -52,16 +52,9 @@ void write_rows(std::string& buffer, const Sink& sink, const std::optional<doubl
 
 int run_query(const QueryArgs& a) {
     constexpr const char* verb = "query";
-    if (a.time.has_value() == !a.times.empty()) return fail(verb, "give exactly one of --time and --times");
-    std::vector<double> times;
-    if (a.time) {
-        if (auto st = check_time(*a.time, "--time"); !st) return fail(verb, st.error().message);
-        times.push_back(*a.time);
-    } else {
-        auto range = parse_time_range(a.times, "--times");
-        if (!range) return fail(verb, range.error().message);
-        times = std::move(range).value();
-    }
+    auto parsed_times = times_from_options(a.time, a.times);
+    if (!parsed_times) return fail(verb, parsed_times.error().message);
+    const std::vector<double> times = std::move(parsed_times).value();
     auto scene = load_scene_option(a.scene);
     if (!scene) return fail(verb, scene.error().message);
     for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
