@@ -22,6 +22,22 @@ using uint = std::uint32_t;
 TW_CONST uint kGpuMaxWaves = 64u;
 TW_CONST uint kQueryWorkgroupSize = 64u;
 
+// The Eulerian solve (x0 + d(x0) = p by Newton's method), the same on CPU and GPU.
+// A point stops at the first evaluation whose residual |x0 + d(x0) - p| is under
+// max(floor, scale * sum(Q A)) m; after the cap it is reported unconverged.
+TW_CONST int kMaxNewtonIterations = 32;
+TW_CONST float kNewtonToleranceFloor = 1.0e-5f;   // m: above float rounding of the residual
+TW_CONST float kNewtonToleranceScale = 4.0e-6f;   // per metre of sum(Q A)
+// The rest position lies within sum(Q A) of the point; steps are kept within
+// sum(Q A) * slack + floor (the slack keeps the clamp from cutting the true solution).
+TW_CONST float kNewtonRadiusSlack = 1.001f;
+TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
+
+// Crest foam from the horizontal map folding: 0 above a Jacobian of kFoamJacobianStart,
+// 1 at kFoamJacobianStart - kFoamJacobianWidth, smoothstep between.
+TW_CONST float kFoamJacobianStart = 0.75f;
+TW_CONST float kFoamJacobianWidth = 0.4f;
+
 // One Gerstner wave. Phases are not stored: the host reduces them in double
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
 struct GpuWave {
@@ -76,8 +92,8 @@ struct GpuFrame {
 struct GpuQueryParams {
     uint wave_count;
     uint point_count;
-    float tolerance;     // residual accepted as converged, m
-    float max_offset;    // sum(Q*A) with slack, m
+    float max_offset;    // sum(Q*A): how far a rest position can lie from its point, m
+    float pad2;
     uint shore_resolution;  // texels per side of the shore fields; 0 = open water
     float shore_texel;      // m
     float pad0, pad1;

@@ -34,17 +34,4 @@ vec4 tap_shared(ShoreTap t) {
     return t.w.x * shore_shared[t.k00] + t.w.y * shore_shared[t.k10] + t.w.z * shore_shared[t.k01] + t.w.w * shore_shared[t.k11];
 }
 
-// The wave as the shore shapes it at this tap: returns false where it has no amplitude.
-// `w` gets the local direction, wavenumber, amplitude and steepness; `theta` the residual phase.
-bool shore_local_wave(ShoreTap tap, vec4 shared_fields, uint wave_index, uint texels, inout GpuWave w, inout float theta) {
-    vec4 local = tap_waves(tap, wave_index * texels);
-    float kl = length(local.zw);
-    float a = shared_fields.x > 0.0 ? w.dir_k_amp.w * local.y : 0.0;
-    if (a <= 0.0 || kl <= 0.0) return false;
-    theta += local.x;
-    w.dir_k_amp = vec4(local.zw / kl, kl, a);
-    w.steep_omega.x *= shared_fields.z;
-    return true;
-}
-
 #endif

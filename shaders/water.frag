@@ -6,6 +6,7 @@
 #include "host_device.h"
 #include "frame.glsl"
 #include "water_lod.glsl"
+#include "water_point.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 geo_normal;
 layout(location = 2) in vec2 rest_xz;
@@ -24,18 +25,18 @@ vec3 world_from_depth(vec2 uv, float depth) {
     return p.xyz / p.w;
 }
 
-// Normal detail: waves faded out of the geometry, then ripples.
+// Normal detail: the slope of the waves faded out of the geometry, then ripples.
 vec3 detail_normal() {
-    vec2 slope = vec2(0.0);
+    SurfaceSums faded = surface_zero();
     uint count = uint(frame.params.y);
     for (uint i = 0u; i < count; ++i) {
         GpuWave w = waves[i];
         float missing = 1.0 - wave_lod_fade(w.steep_omega.w, spacing);
         if (missing <= 0.0) continue;
-        float theta = w.dir_k_amp.z * dot(w.dir_k_amp.xy, rest_xz) + w.steep_omega.z;
-        slope += missing * w.dir_k_amp.w * w.dir_k_amp.z * w.dir_k_amp.xy * cos(theta);
+        vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
+        add_wave(faded, kvec, missing * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
-    slope += ripple_slope(rest_xz);
+    vec2 slope = faded.slope + ripple_slope(rest_xz);
     vec3 n = normalize(geo_normal);
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
 }
@@ -110,7 +111,7 @@ void main() {
     // and in bands along the coast that run up the beach with the swash.
     // Breaking foam rides the crests (and lingers thinly in the troughs).
     float crest_band = smoothstep(-0.3, 0.5, eta / max(frame.ripple_drift.w * 0.25, 1e-3));
-    float foam = max(smoothstep(0.75, 0.35, jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
+    float foam = max(crest_foam(jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
     if (frame.shore_rect.w > 0.0) {
         float d = shore_info.x;
         float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);

@@ -11,10 +11,4 @@ float camera_distance(vec2 xz) {
 float vertex_spacing(float distance) {
     return max(distance, 1.0) / frame.params.z;
 }
-// A wave keeps full amplitude while its wavelength spans 4+ vertices, none below 2:
-// seed 000's "fewer waves far away", continuous in space.
-float wave_lod_fade(float wavelength, float spacing) {
-    return smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
-}
-
 #endif

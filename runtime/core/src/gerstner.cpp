@@ -1,10 +1,12 @@
 #include "tidewater/gerstner.hpp"
 
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "gerstner_sums.hpp"
 #include "tidewater/constants.hpp"
+#include "water/open_sea_water.hpp"
+#include "water/shore_water.hpp"
 
 namespace tidewater {
 
@@ -21,51 +23,43 @@ void phase_offsets_at(const WaveSet& set, double time, std::span<double> out) {
     }
 }
 
-namespace detail {
+namespace {
 
-LagrangianSample assemble_sample(const GerstnerSums& s) {
+LagrangianSample to_sample(const detail::SurfaceSums<double>& s) {
+    const detail::SurfaceFrame<double> f = detail::surface_frame(s);
     LagrangianSample out;
     out.displacement = {s.dx, s.eta, s.dz};
     out.velocity = {s.vx, s.vy, s.vz};
-    out.jxx = 1.0 - s.mxx;
-    out.jxz = -s.mxz;
-    out.jzz = 1.0 - s.mzz;
-    out.jacobian = out.jxx * out.jzz - out.jxz * out.jxz;
+    out.jxx = f.jxx;
+    out.jxz = f.jxz;
+    out.jzz = f.jzz;
+    out.jacobian = f.det;
     out.slope = {s.sx, s.sz};
-    // Tangents of the displaced surface along x0 and z0; normal = Tz x Tx (y up).
-    const glm::dvec3 tx{out.jxx, s.sx, out.jxz};
-    const glm::dvec3 tz{out.jxz, s.sz, out.jzz};
-    out.normal = glm::normalize(glm::cross(tz, tx));
+    out.normal = glm::normalize(glm::dvec3(f.nx, f.ny, f.nz));
     return out;
 }
 
-}  // namespace detail
+}  // namespace
 
 LagrangianSample evaluate_lagrangian(const WaveSet& set, glm::dvec2 rest, double time) {
-    detail::GerstnerSums g;
-    double &dx = g.dx, &dz = g.dz, &eta = g.eta, &mxx = g.mxx, &mxz = g.mxz, &mzz = g.mzz;
-    double &sx = g.sx, &sz = g.sz, &vx = g.vx, &vy = g.vy, &vz = g.vz;
-    for (const Wave& w : set.waves()) {
-        const double travelled = std::fmod(w.omega * time, kTwoPi);
-        const double theta = w.k * (w.dir_x * rest.x + w.dir_z * rest.y) - travelled + w.phase;
-        const double s = std::sin(theta), c = std::cos(theta);
-        const double qa = w.steepness * w.amplitude;
-        dx += qa * w.dir_x * c;
-        dz += qa * w.dir_z * c;
-        eta += w.amplitude * s;
-        const double qak_s = qa * w.k * s;
-        mxx += qak_s * w.dir_x * w.dir_x;
-        mxz += qak_s * w.dir_x * w.dir_z;
-        mzz += qak_s * w.dir_z * w.dir_z;
-        const double ak_c = w.amplitude * w.k * c;
-        sx += ak_c * w.dir_x;
-        sz += ak_c * w.dir_z;
-        // d theta / dt = -omega.
-        vx += qa * w.omega * w.dir_x * s;
-        vz += qa * w.omega * w.dir_z * s;
-        vy -= w.amplitude * w.omega * c;
+    const auto waves = detail::prepare_waves<double>(set, time, 0.0);
+    std::array<double, kMaxWaves> base{};
+    detail::base_phases(waves, rest.x, rest.y, base.data(), 1);
+    const detail::OpenSeaWater<double> water(waves, base.data());
+    return to_sample(water.evaluate<true>(0.0, 0.0));
+}
+
+LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest, double time,
+                                           LocalShore* local) {
+    const auto waves = detail::prepare_waves<double>(set, time, 0.0);
+    std::array<double, kMaxWaves> base{};
+    detail::base_phases(waves, rest.x, rest.y, base.data(), 1);
+    detail::ShoreWater<double> water(waves, shore, &rest.x, &rest.y, base.data());
+    if (local) {
+        std::array<LocalWave, kMaxWaves> per_wave;
+        *local = shore.sample(rest, std::span<LocalWave>(per_wave.data(), set.size()));
     }
-    return detail::assemble_sample(g);
+    return to_sample(water.evaluate<true>(0.0, 0.0));
 }
 
 }  // namespace tidewater

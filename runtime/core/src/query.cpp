@@ -5,11 +5,10 @@
 #include <cstring>
 #include <exception>
 #include <fmt/format.h>
-#include <thread>
 #include <vector>
 
 #include "kernel/kernel_waves.hpp"
-#include "shore/shore_query.hpp"
+#include "parallel.hpp"
 #include "tidewater/shore_waves.hpp"
 
 namespace tidewater {
@@ -43,29 +42,25 @@ const Kernel& kernel() {
     return k;
 }
 
-/// Below this many points per thread, spawning threads costs more than it saves.
-constexpr std::size_t kMinPointsPerThread = 2048;
+/// Points per scheduled chunk: a multiple of every kernel's lane count, large enough that
+/// scheduling costs nothing next to the solves.
+constexpr std::size_t kPointsPerChunk = 512;
 
-template <typename Work>
-Status run_parallel(std::size_t n, unsigned requested, const Work& work) {
-    unsigned threads = requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, n / kMinPointsPerThread)));
+/// Runs the kernel over the points on the shared scheduler, reporting any failure as an Error.
+Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2> points, SurfacePoint* full,
+                  double* heights, const QueryOptions& options) {
     try {
-        if (threads <= 1) {
-            work(std::size_t{0}, n);
-            return {};
-        }
-        std::vector<std::thread> pool;
-        pool.reserve(threads - 1);
-        const std::size_t chunk = (n + threads - 1) / threads;
-        for (unsigned t = 1; t < threads; ++t) {
-            const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
-            pool.emplace_back([&work, begin, end] { work(begin, end); });
-        }
-        work(std::size_t{0}, std::min(n, chunk));
-        for (std::thread& th : pool) th.join();
+        const detail::PreparedWaves<float> waves =
+            detail::prepare_waves<float>(body.waves(), body.local_time(time), body.level());
+        detail::KernelInput in;
+        in.waves = &waves;
+        if (const auto& shore = body.shore(); shore && !shore->trivial()) in.shore = shore.get();
+        const SolveFn solve = kernel().solve;
+        detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
+            solve(in, points.data() + begin, end - begin, full ? full + begin : nullptr, heights ? heights + begin : nullptr);
+        });
     } catch (const std::exception& e) {
-        return Error{ErrorCode::invalid_argument, fmt::format("query: could not run: {}", e.what())};
+        return Error{ErrorCode::internal, fmt::format("query: could not run: {}", e.what())};
     }
     return {};
 }
@@ -86,37 +81,14 @@ Status query_surface(const WaterBody& body, double time, std::span<const glm::dv
                      std::span<SurfacePoint> out, const QueryOptions& options) {
     if (auto st = check_sizes(points.size(), out.size()); !st) return st;
     if (points.empty()) return {};
-    if (const auto& shore = body.shore(); shore && !shore->trivial()) {
-        return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-            detail::solve_points_shore(body, *shore, body.local_time(time), points.data() + begin, end - begin,
-                                       out.data() + begin, nullptr);
-        });
-    }
-    const detail::KernelWaves waves =
-        detail::prepare_kernel_waves(body.waves(), body.local_time(time), body.level());
-    const SolveFn solve = kernel().solve;
-    return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-        solve(waves, points.data() + begin, end - begin, out.data() + begin, nullptr);
-        for (std::size_t i = begin; i < end; ++i) out[i].foam = crest_foam(out[i].jacobian);
-    });
+    return run_kernel(body, time, points, out.data(), nullptr, options);
 }
 
 Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                      std::span<double> heights, const QueryOptions& options) {
     if (auto st = check_sizes(points.size(), heights.size()); !st) return st;
     if (points.empty()) return {};
-    if (const auto& shore = body.shore(); shore && !shore->trivial()) {
-        return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-            detail::solve_points_shore(body, *shore, body.local_time(time), points.data() + begin, end - begin, nullptr,
-                                       heights.data() + begin);
-        });
-    }
-    const detail::KernelWaves waves =
-        detail::prepare_kernel_waves(body.waves(), body.local_time(time), body.level());
-    const SolveFn solve = kernel().solve;
-    return run_parallel(points.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-        solve(waves, points.data() + begin, end - begin, nullptr, heights.data() + begin);
-    });
+    return run_kernel(body, time, points, nullptr, heights.data(), options);
 }
 
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {

@@ -14,6 +14,7 @@ std::string_view to_string(ErrorCode code) noexcept {
         case ErrorCode::no_device: return "no device";
         case ErrorCode::unsupported: return "unsupported";
         case ErrorCode::device_error: return "device error";
+        case ErrorCode::internal: return "internal error";
     }
     return "unknown error";
 }

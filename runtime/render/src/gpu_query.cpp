@@ -191,13 +191,11 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
     std::memcpy(m.phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
     std::memcpy(m.points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * points.size());
 
-    // The same tolerance and step bound as the CPU kernel.
-    const double max_offset = set.max_horizontal_displacement();
+    // The shader derives the tolerance and step bound from sum(Q A) as the CPU does.
     gpu::GpuQueryParams params{};
     params.wave_count = static_cast<std::uint32_t>(waves.size());
     params.point_count = static_cast<std::uint32_t>(points.size());
-    params.tolerance = static_cast<float>(std::max(1e-5, 4e-6 * max_offset));
-    params.max_offset = static_cast<float>(max_offset * 1.001 + 1e-6);
+    params.max_offset = static_cast<float>(set.max_horizontal_displacement());
     params.shore_resolution = shore ? static_cast<std::uint32_t>(shore->resolution()) : 0u;
     params.shore_texel = shore ? static_cast<float>(shore->texel()) : 1.0f;
 
@@ -229,7 +227,7 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
             o.depth = static_cast<double>(r.shore.x);
             o.shore_distance = static_cast<double>(r.shore.y);
         }
-        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, crest_foam(o.jacobian));
+        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, crest_foam(o.jacobian));  // as detail::surface_foam
     }
     return {};
 }

@@ -72,9 +72,10 @@ double fixed_point_height(const WaveSet& set, double local_time, glm::dvec2 poin
 void fixed_point_heights(const WaveSet& set, double local_time, std::span<const glm::dvec2> points,
                          std::span<double> heights);
 
-/// Scalar double-precision Newton solve to 1e-12 m with backtracking, for
-/// accuracy checks. Returns the rest position x0 with x0 + d(x0) = point.
-glm::dvec2 solve_rest_position(const WaveSet& set, double local_time, glm::dvec2 point);
+/// query_point on the scalar double path: the same evaluation and Newton solver as the
+/// SIMD kernel, in double and one point at a time. The yardstick for the kernel's
+/// float arithmetic (tests and benchmarks), not a fast path.
+SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
 
 }  // namespace reference
 

@@ -21,6 +21,7 @@ enum class ErrorCode {
     no_device,         ///< No Vulkan device fits; the message lists what was found.
     unsupported,       ///< A format or feature the device lacks; the message names it.
     device_error,      ///< A Vulkan call failed; the message names the call and VkResult.
+    internal,          ///< Work failed inside the library (out of memory, a worker's exception).
 };
 
 std::string_view to_string(ErrorCode code) noexcept;

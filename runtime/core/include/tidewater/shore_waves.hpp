@@ -82,6 +82,11 @@ public:
     std::size_t wave_count() const { return f_.phase_residual.size(); }
     /// True when every texel is deep water: the waves are unchanged and queries may skip the shore.
     bool trivial() const { return trivial_; }
+    /// The fields interleaved per texel for the query kernel: query_texel_stride(wave_count())
+    /// floats each, W phase residuals, W amplitude factors, W wavevector x, W wavevector z,
+    /// then depth, breaking, steepness scale and shore distance.
+    const std::vector<float>& query_texels() const { return query_texels_; }
+    static std::size_t query_texel_stride(std::size_t waves) { return 4 * waves + 4; }
     /// Raw fields for upload to the GPU.
     const std::vector<float>& phase_residual(std::size_t wave) const { return f_.phase_residual[wave]; }
     const std::vector<float>& amplitude_factor(std::size_t wave) const { return f_.amplitude_factor[wave]; }
@@ -93,7 +98,10 @@ public:
     const std::vector<float>& shore_distance() const { return f_.shore_distance; }
 
 private:
+    void pack_query_texels();
+
     ShoreWaveFields f_;
+    std::vector<float> query_texels_;
     bool trivial_ = false;
 };
 

@@ -1,8 +1,8 @@
 #include "contour.hpp"
+#include "parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
 
 namespace tidewater::detail {
 
@@ -76,14 +76,7 @@ std::vector<ContourChain> extract_contours(const std::vector<double>& values, in
     // Rows of cells are independent: find their segments in parallel.
     const int cell_rows = n - 1;
     std::vector<std::vector<Segment>> rows(static_cast<std::size_t>(std::max(cell_rows, 0)));
-    std::atomic<int> next{0};
-    auto worker = [&] {
-        for (int j = next++; j < cell_rows; j = next++) row_segments(values, n, j, rows[static_cast<std::size_t>(j)]);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
+    parallel_for_each(rows.size(), threads, [&](std::size_t j) { row_segments(values, n, static_cast<int>(j), rows[j]); });
 
     std::vector<Segment> segments;
     std::vector<std::size_t> row_start(rows.size() + 1, 0);

@@ -9,11 +9,12 @@
 // per texel, several times faster: the tree is walked from its root once per root block.
 // The sign is the texel's side of the water level, so it always agrees with the depth.
 #include "distance_field.hpp"
+#include "parallel.hpp"
+#include <mutex>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 #include <xsimd/xsimd.hpp>
 
@@ -165,22 +166,20 @@ void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsig
     const int n = field.resolution;
     const int block_rows = (n + kRootBlock - 1) / kRootBlock;
     const BlockFiller filler(distance, field);
-    std::atomic<int> next{0}, done{0};
-    auto worker = [&] {
+    std::atomic<int> done{0};
+    std::mutex progress_lock;  // the callback is the caller's: one call at a time
+    parallel_for_each(static_cast<std::size_t>(block_rows), threads, [&](std::size_t row) {
         Workspace w;
         ShoreDistance::Hit hint;
-        for (int bj = next++; bj < block_rows; bj = next++) {
-            bool have_hint = false;
-            const int j0 = bj * kRootBlock, j1 = std::min(n, j0 + kRootBlock);
-            for (int i0 = 0; i0 < n; i0 += kRootBlock) filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), j1}, w, hint, have_hint);
-            const int rows = ++done;
-            if (progress) progress(static_cast<double>(rows) / block_rows);
+        bool have_hint = false;
+        const int j0 = static_cast<int>(row) * kRootBlock, j1 = std::min(n, j0 + kRootBlock);
+        for (int i0 = 0; i0 < n; i0 += kRootBlock) filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), j1}, w, hint, have_hint);
+        const int rows = ++done;
+        if (progress) {
+            const std::lock_guard<std::mutex> lock(progress_lock);
+            progress(static_cast<double>(rows) / block_rows);
         }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
+    });
 }
 
 }  // namespace tidewater::detail

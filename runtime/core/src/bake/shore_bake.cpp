@@ -1,11 +1,11 @@
 #include "tidewater/shore_bake.hpp"
+#include "parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <thread>
 
 #include "contour.hpp"
 #include "distance_field.hpp"
@@ -21,14 +21,7 @@ constexpr std::size_t kMaxShoreLines = 200'000;
 
 template <typename RowWork>
 void parallel_rows(int rows, unsigned threads, const RowWork& work) {
-    std::atomic<int> next{0};
-    auto worker = [&] {
-        for (int j = next++; j < rows; j = next++) work(j);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
+    detail::parallel_for_each(static_cast<std::size_t>(rows), threads, [&](std::size_t j) { work(static_cast<int>(j)); });
 }
 
 /// Seconds since the last call (or construction): one stage of the bake.
@@ -66,7 +59,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         return Error{ErrorCode::invalid_argument, "bake: simplify_tolerance must be finite and >= 0"};
     }
     const int n = options.resolution;
-    const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+    const unsigned threads = options.threads;
     auto report = [&](double f) {
         if (options.progress) options.progress(f);
     };

@@ -1,6 +1,7 @@
 // Everything that includes CGAL lives in this file: the shoreline's polygons with
 // holes and the AABB tree for exact distances.
 #include <CGAL/AABB_segment_primitive.h>
+#include "parallel.hpp"
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 #include "shore_geometry.hpp"
 #include "simplify_line.hpp"
@@ -39,14 +39,7 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K3, Primitive>>;
 ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads) {
     ClassifiedShore shore;
     // The lines are independent: simplify them in parallel.
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t k = next++; k < lines.size(); k = next++) lines[k].points = simplify_line(lines[k], tolerance);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
+    detail::parallel_for_each(lines.size(), threads, [&](std::size_t k) { lines[k].points = simplify_line(lines[k], tolerance); });
     std::vector<Polygon> outers, holes;
     for (ShoreLine& line : lines) {
         if (line.closed && line.points.size() >= 3) {

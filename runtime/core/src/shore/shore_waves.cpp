@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
-#include <thread>
 
 #include "fast_marching.hpp"
-#include "gerstner_sums.hpp"
+#include "parallel.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/dispersion.hpp"
 #include "tidewater/shore_bake.hpp"
@@ -21,18 +19,6 @@ namespace {
 /// The deep-water boundary: k h >= pi, where tanh(k h) > 0.996.
 constexpr double kDeepKh = kPi;
 constexpr double kMaxFold = 0.95;
-
-template <typename Work>
-void parallel_for(std::size_t count, unsigned threads, const Work& work) {
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t k = next++; k < count; k = next++) work(k);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
-}
 
 /// Deep everywhere with nothing changed: the waves are exactly the open-ocean ones.
 bool all_deep_and_unchanged(const ShoreWaveFields& f) {
@@ -52,137 +38,141 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
         return Error{ErrorCode::invalid_argument, fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
     if (!(options.breaking_index > 0.0 && options.breaking_index <= 1.2))
         return Error{ErrorCode::invalid_argument, "shore waves: breaking_index must be in (0, 1.2]"};
-    BakeOptions bake;
-    bake.resolution = options.resolution;
-    bake.threads = options.threads;
-    auto field = bake_shore(terrain, water_level, bake);
-    if (!field) return field.error();
-    const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+    try {
+        BakeOptions bake;
+        bake.resolution = options.resolution;
+        bake.threads = options.threads;
+        auto field = bake_shore(terrain, water_level, bake);
+        if (!field) return field.error();
 
-    auto out = std::make_shared<ShoreWaves>();
-    const int n = field->resolution;
-    ShoreWaveFields& f = out->f_;
-    f.resolution = n;
-    f.texel = field->texel;
-    f.corner = field->corner;
-    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-    f.depth = field->depth;
-    f.shore_distance = field->signed_distance;
-    const auto waves = set.waves();
-    const std::size_t nw = waves.size();
-    f.phase_residual.assign(nw, std::vector<float>(count, 0.0f));
-    f.amplitude_factor.assign(nw, std::vector<float>(count, 0.0f));
-    f.wavevector_x.assign(nw, std::vector<float>(count, 0.0f));
-    f.wavevector_z.assign(nw, std::vector<float>(count, 0.0f));
+        auto out = std::make_shared<ShoreWaves>();
+        const int n = field->resolution;
+        ShoreWaveFields& f = out->f_;
+        f.resolution = n;
+        f.texel = field->texel;
+        f.corner = field->corner;
+        const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+        f.depth = field->depth;
+        f.shore_distance = field->signed_distance;
+        const auto waves = set.waves();
+        const std::size_t nw = waves.size();
+        f.phase_residual.assign(nw, std::vector<float>(count, 0.0f));
+        f.amplitude_factor.assign(nw, std::vector<float>(count, 0.0f));
+        f.wavevector_x.assign(nw, std::vector<float>(count, 0.0f));
+        f.wavevector_z.assign(nw, std::vector<float>(count, 0.0f));
 
-    parallel_for(nw, threads, [&](std::size_t w) {
-        const Wave& wave = waves[w];
-        const double k0 = wave.k;
-        const glm::dvec2 dir{wave.dir_x, wave.dir_z};
-        std::vector<double> slowness(count, 0.0), phase(count, detail::kUnreached);
-        std::vector<unsigned char> deep(count, 0);
-        bool any_deep = false;
-        for (std::size_t k = 0; k < count; ++k) {
-            const double h = static_cast<double>(field->depth[k]);
-            if (h <= 0.0) continue;  // land blocks the waves
-            slowness[k] = wavenumber_at_depth(wave.omega, h);
-            deep[k] = slowness[k] * h >= kDeepKh;
-            any_deep = any_deep || deep[k];
-        }
-        // Sources: deep water, where the open-ocean phase holds. A domain with no deep
-        // water takes the wave from the edges it enters through instead (shallow edges
-        // would otherwise pin the unrefracted phase along them).
-        for (int j = 0; j < n; ++j) {
-            for (int i = 0; i < n; ++i) {
-                const std::size_t k = field->index(i, j);
-                if (slowness[k] <= 0.0) continue;
-                const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) ||
-                                        (j == 0 && dir.y > 0.05) || (j == n - 1 && dir.y < -0.05);
-                if (any_deep ? deep[k] != 0 : entry_edge) phase[k] = k0 * glm::dot(dir, field->texel_center(i, j));
+        detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
+            const Wave& wave = waves[w];
+            const double k0 = wave.k;
+            const glm::dvec2 dir{wave.dir_x, wave.dir_z};
+            std::vector<double> slowness(count, 0.0), phase(count, detail::kUnreached);
+            std::vector<unsigned char> deep(count, 0);
+            bool any_deep = false;
+            for (std::size_t k = 0; k < count; ++k) {
+                const double h = static_cast<double>(field->depth[k]);
+                if (h <= 0.0) continue;  // land blocks the waves
+                slowness[k] = wavenumber_at_depth(wave.omega, h);
+                deep[k] = slowness[k] * h >= kDeepKh;
+                any_deep = any_deep || deep[k];
             }
-        }
-        // Offset so the marched values start near zero (keeps doubles exact on big domains).
-        const double base = k0 * glm::dot(dir, field->corner);
-        for (double& v : phase)
-            if (std::isfinite(v)) v -= base;
-        detail::fast_march(slowness, phase, n, field->texel);
-        auto& residual = f.phase_residual[w];
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const std::size_t k = field->index(i, j);
-                if (!std::isfinite(phase[k])) continue;  // unreached: no wave
-                if (any_deep && deep[k]) continue;       // a source: the open-ocean phase, residual exactly 0
-                residual[k] = static_cast<float>(phase[k] + base - k0 * glm::dot(dir, field->texel_center(i, j)));
-            }
-        // Local wavevector = k0 D + grad(residual), central differences over reached water.
-        auto& kx = f.wavevector_x[w];
-        auto& kz = f.wavevector_z[w];
-        auto& amp = f.amplitude_factor[w];
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const std::size_t k = field->index(i, j);
-                const double h = field->depth[k];
-                if (h <= 0.0 || !std::isfinite(phase[k])) continue;
-                auto diff = [&](int a0, int b0, int a1, int b1) {
-                    const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field->index(a0, b0)]);
-                    const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field->index(a1, b1)]);
-                    const double v0 = ok0 ? phase[field->index(a0, b0)] : phase[k];
-                    const double v1 = ok1 ? phase[field->index(a1, b1)] : phase[k];
-                    const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
-                    return span > 0.0 ? (v1 - v0) / (span * field->texel) : 0.0;
-                };
-                glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
-                const double kl = slowness[k];  // k(h), solved once above
-                const double len = glm::length(kvec);
-                kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
-                kx[k] = static_cast<float>(kvec.x);
-                kz[k] = static_cast<float>(kvec.y);
-                // Shoaling and refraction (rays against the shore normal).
-                // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
-                const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
-                const glm::dvec2 normal{static_cast<double>(field->gradient_x[k]), static_cast<double>(field->gradient_z[k])};
-                double kr = 1.0;
-                if (glm::length(normal) > 0.5) {
-                    const double cos0 = std::abs(glm::dot(dir, normal));
-                    const double cos1 = std::abs(glm::dot(kvec / kl, normal));
-                    if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
+            // Sources: deep water, where the open-ocean phase holds. A domain with no deep
+            // water takes the wave from the edges it enters through instead (shallow edges
+            // would otherwise pin the unrefracted phase along them).
+            for (int j = 0; j < n; ++j) {
+                for (int i = 0; i < n; ++i) {
+                    const std::size_t k = field->index(i, j);
+                    if (slowness[k] <= 0.0) continue;
+                    const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) ||
+                                            (j == 0 && dir.y > 0.05) || (j == n - 1 && dir.y < -0.05);
+                    if (any_deep ? deep[k] != 0 : entry_edge) phase[k] = k0 * glm::dot(dir, field->texel_center(i, j));
                 }
-                amp[k] = static_cast<float>(ks * kr);
             }
-    });
+            // Offset so the marched values start near zero (keeps doubles exact on big domains).
+            const double base = k0 * glm::dot(dir, field->corner);
+            for (double& v : phase)
+                if (std::isfinite(v)) v -= base;
+            detail::fast_march(slowness, phase, n, field->texel);
+            auto& residual = f.phase_residual[w];
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const std::size_t k = field->index(i, j);
+                    if (!std::isfinite(phase[k])) continue;  // unreached: no wave
+                    if (any_deep && deep[k]) continue;       // a source: the open-ocean phase, residual exactly 0
+                    residual[k] = static_cast<float>(phase[k] + base - k0 * glm::dot(dir, field->texel_center(i, j)));
+                }
+            // Local wavevector = k0 D + grad(residual), central differences over reached water.
+            auto& kx = f.wavevector_x[w];
+            auto& kz = f.wavevector_z[w];
+            auto& amp = f.amplitude_factor[w];
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const std::size_t k = field->index(i, j);
+                    const double h = field->depth[k];
+                    if (h <= 0.0 || !std::isfinite(phase[k])) continue;
+                    auto diff = [&](int a0, int b0, int a1, int b1) {
+                        const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field->index(a0, b0)]);
+                        const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field->index(a1, b1)]);
+                        const double v0 = ok0 ? phase[field->index(a0, b0)] : phase[k];
+                        const double v1 = ok1 ? phase[field->index(a1, b1)] : phase[k];
+                        const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
+                        return span > 0.0 ? (v1 - v0) / (span * field->texel) : 0.0;
+                    };
+                    glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
+                    const double kl = slowness[k];  // k(h), solved once above
+                    const double len = glm::length(kvec);
+                    kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
+                    kx[k] = static_cast<float>(kvec.x);
+                    kz[k] = static_cast<float>(kvec.y);
+                    // Shoaling and refraction (rays against the shore normal).
+                    // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
+                    const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
+                    const glm::dvec2 normal{static_cast<double>(field->gradient_x[k]), static_cast<double>(field->gradient_z[k])};
+                    double kr = 1.0;
+                    if (glm::length(normal) > 0.5) {
+                        const double cos0 = std::abs(glm::dot(dir, normal));
+                        const double cos1 = std::abs(glm::dot(kvec / kl, normal));
+                        if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
+                    }
+                    amp[k] = static_cast<float>(ks * kr);
+                }
+        });
 
-    // Breaking (all waves together) and steepness, per texel.
-    f.breaking.assign(count, 0.0f);
-    f.steepness_scale.assign(count, 1.0f);
-    const double cap_ratio = 0.5 * options.breaking_index;  // amplitude cap = index * h / 2
-    for (std::size_t k = 0; k < count; ++k) {
-        const double h = static_cast<double>(f.depth[k]);
-        // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
-        // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
-        double energy = 0.0;
-        for (std::size_t w = 0; w < nw; ++w) {
-            const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
-            energy += a * a;
+        // Breaking (all waves together) and steepness, per texel.
+        f.breaking.assign(count, 0.0f);
+        f.steepness_scale.assign(count, 1.0f);
+        const double cap_ratio = 0.5 * options.breaking_index;  // amplitude cap = index * h / 2
+        for (std::size_t k = 0; k < count; ++k) {
+            const double h = static_cast<double>(f.depth[k]);
+            // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
+            // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
+            double energy = 0.0;
+            for (std::size_t w = 0; w < nw; ++w) {
+                const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+                energy += a * a;
+            }
+            const double total = std::sqrt(energy);
+            if (h <= 0.0) {
+                for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
+                continue;
+            }
+            const double cap = cap_ratio * h;
+            const double ratio = total > 0.0 ? total / cap : 0.0;
+            f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+            if (ratio > 1.0)
+                for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
+            double fold = 0.0;
+            for (std::size_t w = 0; w < nw; ++w) {
+                const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
+                fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+            }
+            if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
         }
-        const double total = std::sqrt(energy);
-        if (h <= 0.0) {
-            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
-            continue;
-        }
-        const double cap = cap_ratio * h;
-        const double ratio = total > 0.0 ? total / cap : 0.0;
-        f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
-        if (ratio > 1.0)
-            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
-        double fold = 0.0;
-        for (std::size_t w = 0; w < nw; ++w) {
-            const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
-            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
-        }
-        if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
+        out->trivial_ = all_deep_and_unchanged(f);
+        out->pack_query_texels();
+        return std::shared_ptr<const ShoreWaves>(std::move(out));
+    } catch (const std::exception& e) {
+        return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};
     }
-    out->trivial_ = all_deep_and_unchanged(f);
-    return std::shared_ptr<const ShoreWaves>(std::move(out));
 }
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::size_t wave_count) {
@@ -215,7 +205,26 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveField
     auto out = std::make_shared<ShoreWaves>();
     out->trivial_ = all_deep_and_unchanged(fields);
     out->f_ = std::move(fields);
+    out->pack_query_texels();
     return std::shared_ptr<const ShoreWaves>(std::move(out));
+}
+
+void ShoreWaves::pack_query_texels() {
+    const std::size_t nw = wave_count(), stride = query_texel_stride(nw), texels = f_.depth.size();
+    query_texels_.assign(texels * stride, 0.0f);
+    for (std::size_t k = 0; k < texels; ++k) {
+        float* t = query_texels_.data() + k * stride;
+        for (std::size_t w = 0; w < nw; ++w) {
+            t[w] = f_.phase_residual[w][k];
+            t[nw + w] = f_.amplitude_factor[w][k];
+            t[2 * nw + w] = f_.wavevector_x[w][k];
+            t[3 * nw + w] = f_.wavevector_z[w][k];
+        }
+        t[4 * nw] = f_.depth[k];
+        t[4 * nw + 1] = f_.breaking[k];
+        t[4 * nw + 2] = f_.steepness_scale[k];
+        t[4 * nw + 3] = f_.shore_distance[k];
+    }
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
@@ -241,43 +250,6 @@ LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
         waves[w].wavevector = {lerp(f_.wavevector_x[w]), lerp(f_.wavevector_z[w])};
     }
     return s;
-}
-
-LagrangianSample evaluate_lagrangian_shore(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest, double time,
-                                           LocalShore* local) {
-    // At most kMaxWaves waves: no allocation in the query's inner loop.
-    std::array<LocalWave, kMaxWaves> storage;
-    const std::span<LocalWave> lw(storage.data(), set.size());
-    const LocalShore ls = shore.sample(rest, lw);
-    if (local) *local = ls;
-    detail::GerstnerSums g;
-    double &dx = g.dx, &dz = g.dz, &eta = g.eta, &mxx = g.mxx, &mxz = g.mxz, &mzz = g.mzz;
-    double &sx = g.sx, &sz = g.sz, &vx = g.vx, &vy = g.vy, &vz = g.vz;
-    const auto waves = set.waves();
-    for (std::size_t i = 0; i < waves.size(); ++i) {
-        const Wave& w = waves[i];
-        const glm::dvec2 kv = lw[i].wavevector;
-        const double kl = std::sqrt(kv.x * kv.x + kv.y * kv.y);
-        const double a = w.amplitude * lw[i].amplitude_factor;
-        if (a <= 0.0 || kl <= 0.0) continue;
-        const glm::dvec2 d = kv / kl;
-        const double travelled = std::fmod(w.omega * time, kTwoPi);
-        const double theta = w.k * (w.dir_x * rest.x + w.dir_z * rest.y) + lw[i].phase_residual - travelled + w.phase;
-        const double s = std::sin(theta), c = std::cos(theta);
-        const double qa = w.steepness * ls.steepness_scale * a;
-        dx += qa * d.x * c;
-        dz += qa * d.y * c;
-        eta += a * s;
-        mxx += qa * kl * s * d.x * d.x;
-        mxz += qa * kl * s * d.x * d.y;
-        mzz += qa * kl * s * d.y * d.y;
-        sx += a * c * kv.x;
-        sz += a * c * kv.y;
-        vx += qa * w.omega * d.x * s;
-        vz += qa * w.omega * d.y * s;
-        vy -= a * w.omega * c;
-    }
-    return detail::assemble_sample(g);
 }
 
 }  // namespace tidewater

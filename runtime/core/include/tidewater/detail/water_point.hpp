@@ -1,0 +1,153 @@
+// The water at one rest position: the single Gerstner evaluation every part of
+// Tidewater uses (queries, bakes, the inspector, calibration). Its GLSL twin is
+// shaders/water_point.glsl; shared constants live in shaders/host_device.h.
+//
+// Written once over the number type T:
+//   double                     the scalar reference and one-off evaluations;
+//   xsimd::batch<float, Arch>  the SIMD query kernel (lanes are query points);
+//   ceres::Jet<double, N>      calibration (derivatives by automatic differentiation).
+// Number-type operations go through NumberOps<T>, which the SIMD kernel
+// specialises for its batches.
+//
+// For wave i with local wavevector K = k D (rad/m), amplitude A (m), steepness Q and
+// angular frequency omega, at phase theta:
+//   displacement  (Q A D cos, A sin)          horizontal and vertical, m
+//   d(disp)/dx0   Q A k D D^T sin              gradient of the horizontal map
+//   slope         A K cos                      d eta / d x0
+//   velocity      (Q A omega D sin, -A omega cos)
+// A body, a shore, a river current or a wake changes what K, A, Q and theta are at
+// a point (or adds a term to the sums); it never writes these sums again.
+// Units: metres, seconds, radians. Threading: pure functions.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+namespace tidewater::detail {
+
+/// Number-type operations the templates need. The primary template serves double
+/// and Ceres Jets (found by argument-dependent lookup); SIMD batches specialise it.
+template <typename T>
+struct NumberOps {
+    using Mask = bool;
+    using Scalar = T;                        ///< one lane's type
+    static constexpr std::size_t kLanes = 1;
+    static T load(const Scalar* p) { return *p; }
+    static void store(const T& v, Scalar* p) { *p = v; }
+    static T mul_add(const T& a, const T& b, const T& c) { return a * b + c; }
+    static void sin_cos(const T& x, T& s, T& c) {
+        using std::cos;
+        using std::sin;
+        s = sin(x);
+        c = cos(x);
+    }
+    static T sqrt(const T& x) {
+        using std::sqrt;
+        return sqrt(x);
+    }
+    static T select(Mask m, const T& a, const T& b) { return m ? a : b; }
+    static bool any(Mask m) { return m; }
+};
+
+/// A constant of the number type T (rounded once to T's lane type).
+template <typename T>
+T constant(double v) {
+    return T(static_cast<typename NumberOps<T>::Scalar>(v));
+}
+
+/// One wave's coefficients at a point: the products the sums need, formed once.
+template <typename T>
+struct WaveTerm {
+    T a;                       ///< A: elevation
+    T ak_x, ak_z;              ///< A K: slope
+    T qa_x, qa_z;              ///< Q A D: horizontal displacement
+    T qak_xx, qak_xz, qak_zz;  ///< Q A k D D^T: displacement gradient
+    T qaw_x, qaw_z, aw;        ///< Q A omega D, A omega: particle velocity
+};
+
+/// The coefficients of a wave with local wavevector (kx, kz), amplitude `a`, steepness
+/// `q` and angular frequency `omega`. A zero amplitude gives an exactly zero term, even
+/// where the wavevector is zero (dry land).
+template <typename T>
+WaveTerm<T> wave_term(const T& kx, const T& kz, const T& a, const T& q, const T& omega) {
+    using Ops = NumberOps<T>;
+    const T k = Ops::sqrt(kx * kx + kz * kz);
+    // 1/k where it exists; a zero wavevector only occurs with zero amplitude.
+    const T inv_k = T(1.0) / Ops::select(k > T(0.0), k, T(1.0));
+    const T qa = q * a;
+    const T dx = kx * inv_k, dz = kz * inv_k;
+    WaveTerm<T> w;
+    w.a = a;
+    w.ak_x = a * kx;
+    w.ak_z = a * kz;
+    w.qa_x = qa * dx;
+    w.qa_z = qa * dz;
+    w.qak_xx = qa * kx * dx;
+    w.qak_xz = qa * kx * dz;
+    w.qak_zz = qa * kz * dz;
+    w.qaw_x = qa * omega * dx;
+    w.qaw_z = qa * omega * dz;
+    w.aw = a * omega;
+    return w;
+}
+
+/// The sums of one evaluation, at rest position x0.
+template <typename T>
+struct SurfaceSums {
+    T dx = T(0.0), dz = T(0.0), eta = T(0.0);  ///< displacement, m
+    T mxx = T(0.0), mxz = T(0.0), mzz = T(0.0);  ///< sum Q A k D D^T sin: I - (these) is the map's Jacobian
+    T sx = T(0.0), sz = T(0.0);            ///< d eta / d x0
+    T vx = T(0.0), vy = T(0.0), vz = T(0.0);   ///< particle velocity, m/s
+};
+
+/// Adds one wave at phase theta (given as its sine and cosine). `kVelocity` false skips
+/// the velocity sums (heights-only queries).
+template <bool kVelocity = true, typename T>
+void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& sin_theta, const T& cos_theta) {
+    using Ops = NumberOps<T>;
+    s.dx = Ops::mul_add(w.qa_x, cos_theta, s.dx);
+    s.dz = Ops::mul_add(w.qa_z, cos_theta, s.dz);
+    s.eta = Ops::mul_add(w.a, sin_theta, s.eta);
+    s.mxx = Ops::mul_add(w.qak_xx, sin_theta, s.mxx);
+    s.mxz = Ops::mul_add(w.qak_xz, sin_theta, s.mxz);
+    s.mzz = Ops::mul_add(w.qak_zz, sin_theta, s.mzz);
+    s.sx = Ops::mul_add(w.ak_x, cos_theta, s.sx);
+    s.sz = Ops::mul_add(w.ak_z, cos_theta, s.sz);
+    if constexpr (kVelocity) {
+        s.vx = Ops::mul_add(w.qaw_x, sin_theta, s.vx);
+        s.vz = Ops::mul_add(w.qaw_z, sin_theta, s.vz);
+        s.vy = s.vy - w.aw * cos_theta;  // d theta / dt = -omega
+    }
+}
+
+/// Adds one wave at phase `theta`.
+template <bool kVelocity = true, typename T>
+void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& theta) {
+    T sn, cs;
+    NumberOps<T>::sin_cos(theta, sn, cs);
+    add_wave<kVelocity>(s, w, sn, cs);
+}
+
+/// What follows from the sums: the horizontal map's Jacobian [[jxx, jxz], [jxz, jzz]]
+/// (symmetric), its determinant and the unnormalised normal Tz x Tx, with the
+/// tangents Tx = (jxx, sx, jxz) and Tz = (jxz, sz, jzz) of the displaced surface.
+template <typename T>
+struct SurfaceFrame {
+    T jxx, jxz, jzz, det;
+    T nx, ny, nz;
+};
+
+template <typename T>
+SurfaceFrame<T> surface_frame(const SurfaceSums<T>& s) {
+    SurfaceFrame<T> f;
+    f.jxx = T(1.0) - s.mxx;
+    f.jxz = T(0.0) - s.mxz;
+    f.jzz = T(1.0) - s.mzz;
+    f.det = f.jxx * f.jzz - f.jxz * f.jxz;
+    f.nx = s.sz * f.jxz - f.jzz * s.sx;
+    f.ny = f.det;
+    f.nz = f.jxz * s.sx - s.sz * f.jxx;
+    return f;
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,44 @@
+#include "parallel.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+namespace tidewater::detail {
+
+unsigned worker_count(unsigned threads) {
+    const unsigned all = static_cast<unsigned>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    return threads == 0 ? all : threads;
+}
+
+void parallel_chunks(std::size_t count, std::size_t grain, unsigned threads,
+                     const std::function<void(std::size_t, std::size_t)>& body) {
+    if (count == 0) return;
+    grain = std::max<std::size_t>(grain, 1);
+    if (threads == 1 || count <= grain) {
+        body(0, count);
+        return;
+    }
+    auto run = [&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain),
+                          [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
+    };
+    if (threads == 0 || static_cast<int>(threads) >= tbb::this_task_arena::max_concurrency()) {
+        run();
+    } else {
+        // A narrower arena caps this call's workers; its threads come from the same pool.
+        tbb::task_arena arena(static_cast<int>(threads));
+        arena.execute(run);
+    }
+}
+
+void parallel_for_each(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body) {
+    parallel_chunks(count, 1, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) body(i);
+    });
+}
+
+}  // namespace tidewater::detail

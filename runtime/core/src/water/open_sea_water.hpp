@@ -1,0 +1,41 @@
+// Open water at rest offsets from a batch of query points (private): every wave keeps
+// its open-sea wavevector, amplitude and steepness. A provider for solve_rest_offset.
+#pragma once
+
+#include "tidewater/detail/water_point.hpp"
+#include "water/prepared_waves.hpp"
+
+namespace tidewater::detail {
+
+template <typename T>
+class OpenSeaWater {
+public:
+    using Ops = NumberOps<T>;
+    using Scalar = typename Ops::Scalar;
+
+    /// `base` holds each wave's phase at the query points, [wave * kLanes + lane].
+    OpenSeaWater(const PreparedWaves<Scalar>& waves, const Scalar* base) : w_(waves), base_(base) {}
+
+    template <bool kVelocity>
+    SurfaceSums<T> evaluate(const T& ex, const T& ez) const {
+        SurfaceSums<T> s;
+        for (std::size_t i = 0; i < w_.count; ++i) {
+            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * Ops::kLanes)));
+            add_wave<kVelocity>(s, broadcast(w_.open_sea[i]), theta);
+        }
+        return s;
+    }
+
+    void record(typename Ops::Mask) {}
+
+private:
+    static WaveTerm<T> broadcast(const WaveTerm<Scalar>& w) {
+        return {T(w.a), T(w.ak_x), T(w.ak_z), T(w.qa_x), T(w.qa_z), T(w.qak_xx), T(w.qak_xz), T(w.qak_zz),
+                T(w.qaw_x), T(w.qaw_z), T(w.aw)};
+    }
+
+    const PreparedWaves<Scalar>& w_;
+    const Scalar* base_;
+};
+
+}  // namespace tidewater::detail

@@ -1,0 +1,45 @@
+// A water body's waves at a rest position (GLSL twin of the providers in
+// runtime/core/src/water/: open sea, and the shore fields that reshape each wave).
+// The includer declares waves[] (GpuWave), the shore buffers of shore_fields.glsl,
+// and defines WAVE_COUNT and WAVE_BASE_PHASE(i): wave i's phase at its origin.
+#ifndef TIDEWATER_WATER_BODY_GLSL
+#define TIDEWATER_WATER_BODY_GLSL
+
+// What the shore fields hold at the last evaluated position: depth (m), breaking,
+// steepness scale, shore distance (m). Open water: deep, no breaking, no shore.
+vec4 g_shore_fields = vec4(1e9, 0.0, 1.0, 1e9);
+
+// The sums at a rest position `rel` (m, from the phase origin) that lies at `shore_rel`
+// from the shore grid's corner. `fade_spacing` > 0 fades waves shorter than a few
+// vertex spacings (render LOD; queries pass 0).
+SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
+    SurfaceSums s = surface_zero();
+    ShoreTap tap;
+    uint texels = SHORE_RESOLUTION * SHORE_RESOLUTION;
+    g_shore_fields = vec4(1e9, 0.0, 1.0, 1e9);
+    if (shore) {
+        tap = shore_tap(shore_rel);
+        g_shore_fields = tap_shared(tap);
+    }
+    for (uint i = 0u; i < WAVE_COUNT; ++i) {
+        GpuWave w = waves[i];
+        vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
+        // The same association as the CPU: base + kz z + kx x (fma order).
+        float theta = fma(kvec.x, rel.x, fma(kvec.y, rel.y, WAVE_BASE_PHASE(i)));
+        float a = w.dir_k_amp.w;
+        float q = w.steep_omega.x;
+        if (shore) {
+            // The wave as the shore shapes it: marched phase, local wavevector, shoaled amplitude.
+            vec4 local = tap_waves(tap, i * texels);
+            theta += local.x;
+            kvec = local.zw;
+            a = g_shore_fields.x > 0.0 ? a * local.y : 0.0;
+            q *= g_shore_fields.z;
+        }
+        if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);
+        add_wave(s, kvec, a, q, w.steep_omega.y, theta);
+    }
+    return s;
+}
+
+#endif

@@ -1,0 +1,123 @@
+// The water at one rest position: the GLSL twin of
+// runtime/core/include/tidewater/detail/water_point.hpp (the sums) and
+// runtime/core/src/water/newton.hpp (the Eulerian solve). Constants come from
+// host_device.h. A body, shore, current or wake changes what a wave's wavevector,
+// amplitude, steepness and phase are at a point (water_body.glsl); it never writes
+// these sums again.
+#ifndef TIDEWATER_WATER_POINT_GLSL
+#define TIDEWATER_WATER_POINT_GLSL
+
+struct SurfaceSums {
+    vec2 disp;      // sum Q A D cos
+    vec3 m;         // sum Q A k sin * (Dx Dx, Dx Dz, Dz Dz)
+    float eta;      // sum A sin
+    vec2 slope;     // sum A K cos
+    vec3 velocity;  // (sum Q A w Dx sin, -sum A w cos, sum Q A w Dz sin)
+};
+
+SurfaceSums surface_zero() {
+    SurfaceSums s;
+    s.disp = vec2(0.0);
+    s.m = vec3(0.0);
+    s.eta = 0.0;
+    s.slope = vec2(0.0);
+    s.velocity = vec3(0.0);
+    return s;
+}
+
+// One wave with local wavevector K = k D (rad/m), amplitude a (m), steepness q and
+// angular frequency omega, at phase theta. Zero amplitude adds exactly nothing.
+void add_wave(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, float theta) {
+    float k = length(kvec);
+    vec2 d = kvec / (k > 0.0 ? k : 1.0);
+    float sn = sin(theta);
+    float cs = cos(theta);
+    float qa = q * a;
+    s.disp += qa * d * cs;
+    s.m += qa * k * sn * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
+    s.eta += a * sn;
+    s.slope += a * kvec * cs;
+    s.velocity += vec3(qa * omega * d.x * sn, -a * omega * cs, qa * omega * d.y * sn);
+}
+
+// Jacobian of the horizontal map [[jxx, jxz], [jxz, jzz]]: xyz = (jxx, jxz, jzz).
+vec3 surface_jacobian_matrix(SurfaceSums s) {
+    return vec3(1.0 - s.m.x, -s.m.y, 1.0 - s.m.z);
+}
+float surface_jacobian(SurfaceSums s) {
+    vec3 j = surface_jacobian_matrix(s);
+    return j.x * j.z - j.y * j.y;
+}
+// Normal of the displaced surface: Tz x Tx with Tx = (jxx, sx, jxz), Tz = (jxz, sz, jzz).
+vec3 surface_normal(SurfaceSums s) {
+    vec3 j = surface_jacobian_matrix(s);
+    return normalize(cross(vec3(j.y, s.slope.y, j.z), vec3(j.x, s.slope.x, j.y)));
+}
+
+// Foam from crests folding (tidewater::crest_foam).
+float crest_foam(float jacobian) {
+    return smoothstep(kFoamJacobianStart, kFoamJacobianStart - kFoamJacobianWidth, jacobian);
+}
+
+// Render LOD, seed 000's "fewer waves far away": a wave keeps full amplitude while its
+// wavelength spans 4+ vertices, none below 2; continuous in space (no seams, no popping).
+float wave_lod_fade(float wavelength, float spacing) {
+    return smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
+}
+
+float newton_tolerance(float max_offset) {
+    return max(kNewtonToleranceFloor, kNewtonToleranceScale * max_offset);
+}
+float newton_radius(float max_offset) {
+    return max_offset * kNewtonRadiusSlack + kNewtonRadiusFloor;
+}
+
+#ifdef TW_WATER_NEWTON
+// The includer defines the water at rest offset e from its query point.
+SurfaceSums water_at_offset(vec2 e);
+
+struct NewtonResult {
+    SurfaceSums sums;  // at the last evaluation
+    vec2 step_e;       // the Newton step from it (results carry it to first order)
+    vec2 e;            // the rest offset of that evaluation
+    float iterations;
+    float converged;
+};
+
+// Solves e + d(p + e) = 0 for the rest offset e = x0 - p: the same steps, stopping
+// rule, back-off and radius as solve_rest_offset in newton.hpp.
+NewtonResult solve_rest_offset(float tolerance, float radius) {
+    NewtonResult r;
+    r.e = vec2(0.0);
+    r.iterations = 0.0;
+    r.converged = 0.0;
+    vec2 last_e = vec2(0.0);
+    float last_f2 = 3.0e38;
+    for (int it = 0; it < kMaxNewtonIterations; ++it) {
+        r.sums = water_at_offset(r.e);
+        r.iterations += 1.0;
+        vec3 j = surface_jacobian_matrix(r.sums);
+        float det = j.x * j.z - j.y * j.y;
+        vec2 f = r.e + r.sums.disp;
+        r.step_e = vec2(j.y * f.y - j.z * f.x, j.y * f.x - j.x * f.y) / det;
+        float f2 = dot(f, f);
+        if (f2 <= tolerance * tolerance) {
+            r.converged = 1.0;
+            break;
+        }
+        if (it + 1 == kMaxNewtonIterations) break;  // reported unconverged
+        bool grew = f2 > last_f2;
+        vec2 next_e = grew ? 0.5 * (r.e + last_e) : r.e + r.step_e;
+        if (!grew) {
+            last_e = r.e;
+            last_f2 = f2;
+        }
+        float r2 = dot(next_e, next_e);
+        if (r2 > radius * radius) next_e *= sqrt(radius * radius / r2);
+        r.e = next_e;
+    }
+    return r;
+}
+#endif
+
+#endif
