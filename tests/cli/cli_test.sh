@@ -144,10 +144,12 @@ case "$CASE" in
   bench_small)
     "$TW" bench --points 4000 --repeats 1 --waves 8 --threads 2 --quiet --out b.json > table.md
     check "exit 0" test $? -eq 0
-    for key in '"kernel"' '"queries_per_second"' '"max_height_error"' '"fixed_point_reference"' '"newton_simd_heights"' '"speedup_per_core"'; do
+    for key in '"kernel"' '"queries_per_second"' '"max_height_error"' '"fixed_point_reference"' '"newton_simd_heights"' '"speedup_per_core"' \
+               '"shore_over_open_heights"' '"batch_400"' '"shore_max_height_error"'; do
       check "report has $key" grep -q "$key" b.json
     done
     check "table printed" grep -q "speed-up per core" table.md
+    check "shore table printed" grep -q "shore / open" table.md
     expect_error "bad wave count" "--waves" "$TW" bench --waves 65 --out c.json
     check "no report after failure" no_file c.json
     ;;

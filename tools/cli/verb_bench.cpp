@@ -8,6 +8,7 @@
 #include "fit_bench.hpp"
 #endif
 #include "query_bench.hpp"
+#include "shore_query_bench.hpp"
 #include "verbs.hpp"
 
 namespace tidewater::cli {
@@ -58,8 +59,17 @@ int run_bench(const BenchArgs& a) {
     } else {
         auto report = run_query_bench(a.config, progress);
         if (!report) return fail(verb, report.error().message);
-        json = to_json(*report).dump(2) + "\n";
-        table = to_markdown(*report);
+        ShoreBenchConfig shore_config;
+        shore_config.points = a.config.points;
+        shore_config.repeats = a.config.repeats;
+        shore_config.threads = a.config.threads;
+        shore_config.batch_calls = a.config.points >= 100000 ? 2000 : 200;
+        auto shore = run_shore_query_bench(shore_config, progress);
+        if (!shore) return fail(verb, shore.error().message);
+        nlohmann::json combined = to_json(*report);
+        combined["shore"] = *shore;
+        json = combined.dump(2) + "\n";
+        table = to_markdown(*report) + "\n" + shore_query_bench_markdown(*shore);
     }
     std::fputs(table.c_str(), stdout);
     if (!json_file) std::fputs(json.c_str(), stdout);
