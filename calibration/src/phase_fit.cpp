@@ -14,7 +14,9 @@
 #include "tidewater/calibration/phase_fit.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/water_point.hpp"
 #include "tidewater/dispersion.hpp"
+#include "water/newton.hpp"
 
 namespace tidewater::calibration {
 
@@ -24,6 +26,13 @@ constexpr double kFoldLimit = 0.95;  // sum(Q k A), as the runtime's shore steep
 constexpr std::size_t kChunk = 32;   // samples per residual block
 
 using detail::scalar;
+using tidewater::detail::add_wave;
+using tidewater::detail::newton_radius;
+using tidewater::detail::newton_tolerance;
+using tidewater::detail::solve_rest_offset;
+using tidewater::detail::SurfaceSums;
+using tidewater::detail::wave_term;
+using tidewater::detail::WaveTerm;
 
 /// Parameters per wave: amplitude, omega (profile: k), phase, Q, and for a buoy the direction.
 int stride(RecordKind kind) { return kind == RecordKind::buoy ? 5 : 4; }
@@ -53,72 +62,117 @@ struct Model {
             k[i] = kind == RecordKind::profile ? p[m * i + 1] : wavenumber(p[m * i + 1], depth);
     }
 
-    /// Solves alpha + sum Q A cos(k alpha + c) = target for the Eulerian records; returns z.
-    /// `known_alpha` skips the double-precision solve (the same parameters, another Jet
-    /// pass); `solved_alpha` receives it.
+    /// Each wave's coefficients along the record's axis (direction +x): they depend on
+    /// the parameters only, so a chunk of samples forms them once.
     template <typename T>
-    T eulerian(const T* p, const std::array<T, 64>& k, double axis, const double* known_alpha, double* solved_alpha) const {
-        using std::cos;
-        using std::sin;
+    struct AxisWaves {
+        std::array<T, 64> k;
+        std::array<WaveTerm<T>, 64> terms;
+    };
+
+    template <typename T>
+    void axis_waves(const T* p, AxisWaves<T>& out) const {
+        const auto m = static_cast<std::size_t>(stride(kind));
+        wavenumbers(p, out.k);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i)
+            out.terms[i] = wave_term<T>(out.k[i], T(0.0), p[m * i], p[m * i + 3], T(0.0));
+    }
+
+    /// The runtime's water evaluation along the axis at rest offset alpha: phase k alpha + c.
+    template <typename T>
+    SurfaceSums<T> along_axis(const AxisWaves<T>& w, const std::array<T, 64>& c, const T& alpha) const {
+        SurfaceSums<T> s;
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i) add_wave<false>(s, w.terms[i], w.k[i] * alpha + c[i]);
+        return s;
+    }
+
+    /// The water along the axis at rest offsets from the target, for the Newton solve.
+    struct AxisWater {
+        const Model* model;
+        const AxisWaves<double>* w;
+        const std::array<double, 64>* c;  // phases at the target
+        template <bool kVelocity>
+        SurfaceSums<double> evaluate(double ex, double) const {
+            return model->along_axis(*w, *c, ex);
+        }
+        void record(bool) {}
+    };
+
+    /// Solves alpha + sum Q A cos(k alpha + c) = target for the Eulerian records; returns z.
+    /// `wd` holds the same waves in double. `known_alpha` skips the double-precision solve
+    /// (the same parameters, another Jet pass); `solved_alpha` receives it.
+    template <typename T>
+    T eulerian(const T* p, const AxisWaves<T>& w, const AxisWaves<double>& wd, double sum_qa, double axis,
+               const double* known_alpha, double* solved_alpha) const {
         const auto m = static_cast<std::size_t>(stride(kind));
         const auto n = static_cast<std::size_t>(waves);
         // Per wave, the phase part that does not depend on alpha.
         std::array<T, 64> c;
         for (std::size_t i = 0; i < n; ++i) {
-            const T* w = p + m * i;
-            c[i] = kind == RecordKind::profile ? w[2] : w[2] - w[1] * axis;
+            const T* wave = p + m * i;
+            c[i] = kind == RecordKind::profile ? wave[2] : wave[2] - wave[1] * axis;
         }
         const double target = kind == RecordKind::profile ? axis : 0.0;
-        // Newton on the values, then one step with T for exact first derivatives.
-        double a = known_alpha ? *known_alpha : target;
-        for (int it = 0; it < 40 && !known_alpha; ++it) {
-            double f = a - target, df = 1.0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const T* w = p + m * i;
-                const double qa = scalar(w[3]) * scalar(w[0]), th = scalar(k[i]) * a + scalar(c[i]);
-                f += qa * std::cos(th);
-                df -= qa * scalar(k[i]) * std::sin(th);
-            }
-            const double step = df > 0.05 ? f / df : f;  // fixed-point step where the map folds
-            a -= step;
-            if (std::abs(step) < 1e-12) break;
+        // The runtime's Newton solve on the values, as a rest offset from the target.
+        double a = target;
+        if (known_alpha) {
+            a = *known_alpha;
+        } else {
+            std::array<double, 64> cd;
+            for (std::size_t i = 0; i < n; ++i) cd[i] = scalar(c[i]) + wd.k[i] * target;
+            AxisWater water{this, &wd, &cd};
+            const auto r = solve_rest_offset<false, double>(water, newton_tolerance(sum_qa), newton_radius(sum_qa));
+            a = target + r.ex + r.step_x;
         }
         if (solved_alpha) *solved_alpha = a;
-        T f = T(a - target), df = T(1.0);
-        for (std::size_t i = 0; i < n; ++i) {
-            const T* w = p + m * i;
-            const T th = k[i] * a + c[i];
-            f += w[3] * w[0] * cos(th);
-            df -= w[3] * w[0] * k[i] * sin(th);
-        }
-        const double slope = scalar(df) > 0.05 ? scalar(df) : 1.0;
-        const T alpha = T(a) - f / slope;
-        T z(0.0);
-        for (std::size_t i = 0; i < n; ++i) z += p[m * i] * sin(k[i] * alpha + c[i]);
-        return z;
+        // One Newton step in T gives alpha's exact first derivatives (implicit function
+        // theorem); z is carried along it to first order, as the query kernel does.
+        const SurfaceSums<T> at = along_axis(w, c, T(a));
+        const T f = T(a - target) + at.dx, df = T(1.0) - at.mxx;
+        const T slope = scalar(df) > 0.05 ? df : T(1.0);  // where the map folds, a plain fixed-point step
+        return at.eta - at.sx * f / slope;
+    }
+
+    template <typename T>
+    static double sum_qa(const T* p, int m, int n) {
+        double s = 0.0;
+        for (int i = 0; i < n; ++i) s += std::abs(scalar(p[m * i + 3]) * scalar(p[m * i]));
+        return s;
     }
 
     double eulerian(const double* p, double axis) const {
-        std::array<double, 64> k;
-        wavenumbers(p, k);
-        return eulerian(p, k, axis, nullptr, nullptr);
+        AxisWaves<double> w;
+        axis_waves(p, w);
+        return eulerian(p, w, w, sum_qa(p, stride(kind), waves), axis, nullptr, nullptr);
     }
 
-    /// Heave, east and north of the buoy at rest position 0.
+    /// Each buoy wave's coefficients (direction w[4]); formed once per chunk.
     template <typename T>
-    void lagrangian(const T* p, double t, T* out) const {
+    void buoy_waves(const T* p, std::array<WaveTerm<T>, 64>& terms) const {
         using std::cos;
         using std::sin;
-        const auto n = static_cast<std::size_t>(waves);
-        out[0] = out[1] = out[2] = T(0.0);
-        for (std::size_t i = 0; i < n; ++i) {
+        std::array<T, 64> k;
+        wavenumbers(p, k);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i) {
             const T* w = p + 5 * i;
-            const T th = w[2] - w[1] * t;
-            const T horizontal = w[3] * w[0] * cos(th);
-            out[0] += w[0] * sin(th);
-            out[1] += horizontal * cos(w[4]);
-            out[2] += horizontal * sin(w[4]);
+            terms[i] = wave_term<T>(k[i] * cos(w[4]), k[i] * sin(w[4]), w[0], w[3], w[1]);
         }
+    }
+
+    /// Heave, east and north of the buoy at rest position 0: the runtime's water evaluation.
+    template <typename T>
+    void lagrangian(const T* p, const std::array<WaveTerm<T>, 64>& terms, double t, T* out) const {
+        SurfaceSums<T> s;
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i) add_wave<false>(s, terms[i], p[5 * i + 2] - p[5 * i + 1] * t);
+        out[0] = s.eta;
+        out[1] = s.dx;
+        out[2] = s.dz;
+    }
+
+    void lagrangian(const double* p, double t, double* out) const {
+        std::array<WaveTerm<double>, 64> terms;
+        buoy_waves(p, terms);
+        lagrangian(p, terms, t, out);
     }
 };
 
@@ -136,10 +190,12 @@ struct ChunkResiduals {
     bool operator()(T const* const* blocks, T* residuals) const {
         const T* p = blocks[0];
         if (model.kind == RecordKind::buoy) {
+            std::array<WaveTerm<T>, 64> terms;
+            model.buoy_waves(p, terms);
             for (std::size_t j = 0; j < count; ++j) {
                 const std::size_t s = first + j;
                 T out[3];
-                model.lagrangian(p, record->axis[s], out);
+                model.lagrangian(p, terms, record->axis[s], out);
                 residuals[3 * j] = out[0] - record->z[s];
                 residuals[3 * j + 1] = out[1] - record->east[s];
                 residuals[3 * j + 2] = out[2] - record->north[s];
@@ -153,11 +209,16 @@ struct ChunkResiduals {
             for (int i = 0; i < parameters; ++i) cached_values[static_cast<std::size_t>(i)] = scalar(p[i]);
             cached_alpha.assign(count, 0.0);
         }
-        std::array<T, 64> k;
-        model.wavenumbers(p, k);
+        Model::AxisWaves<T> w;
+        model.axis_waves(p, w);
+        Model::AxisWaves<double> wd;
+        std::vector<double> plain(static_cast<std::size_t>(parameters));
+        for (int i = 0; i < parameters; ++i) plain[static_cast<std::size_t>(i)] = scalar(p[i]);
+        model.axis_waves(plain.data(), wd);
+        const double qa = Model::sum_qa(p, stride(model.kind), model.waves);
         for (std::size_t j = 0; j < count; ++j) {
             const std::size_t s = first + j;
-            residuals[j] = model.eulerian(p, k, record->axis[s], same ? &cached_alpha[j] : nullptr, same ? nullptr : &cached_alpha[j]) -
+            residuals[j] = model.eulerian(p, w, wd, qa, record->axis[s], same ? &cached_alpha[j] : nullptr, same ? nullptr : &cached_alpha[j]) -
                            record->z[s];
         }
         return true;
