@@ -33,6 +33,11 @@ TW_CONST float kNewtonToleranceScale = 4.0e-6f;   // per metre of sum(Q A)
 TW_CONST float kNewtonRadiusSlack = 1.001f;
 TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
 
+// Waves die out over the last metres of water: amplitudes scale by
+// clamp(depth / kWaterlineRampDepth, 0, 1) at the rest position, so the surface is
+// continuous across the waterline (the Eulerian solve has a root there) and rests on land.
+TW_CONST float kWaterlineRampDepth = 0.5f;  // m
+
 // Crest foam from the horizontal map folding: 0 above a Jacobian of kFoamJacobianStart,
 // 1 at kFoamJacobianStart - kFoamJacobianWidth, smoothstep between.
 TW_CONST float kFoamJacobianStart = 0.75f;

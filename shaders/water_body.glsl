@@ -33,7 +33,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
             vec4 local = tap_waves(tap, i * texels);
             theta += local.x;
             kvec = local.zw;
-            a = g_shore_fields.x > 0.0 ? a * local.y : 0.0;
+            a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);
             q *= g_shore_fields.z;
         }
         if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);

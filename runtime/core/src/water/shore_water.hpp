@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 
+#include "host_device.h"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_point.hpp"
 #include "tidewater/shore_waves.hpp"
@@ -46,7 +47,8 @@ public:
     SurfaceSums<T> evaluate(const T& ex, const T& ez) {
         locate(ex, ez);
         const std::size_t nw = w_.count;
-        const Mask wet = depth_ > T(0.0);
+        // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
+        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ / ramp_depth_, T(1.0)), T(0.0));
         const T steepness_scale = blend(4 * nw + 2);
         SurfaceSums<T> s;
         for (std::size_t i = 0; i < nw; ++i) {
@@ -54,7 +56,7 @@ public:
             const T kx = blend(2 * nw + i), kz = blend(3 * nw + i);
             // The phase follows the shore: open-sea phase at p, k0 D.e, and the marched residual.
             const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) + residual;
-            const T a = Ops::select(wet, T(w_.amplitude[i]) * amplitude_factor, T(0.0));
+            const T a = T(w_.amplitude[i]) * amplitude_factor * ramp;
             add_wave<kVelocity>(s, wave_term<T>(kx, kz, a, T(w_.steepness[i]) * steepness_scale, T(w_.omega[i])), theta);
         }
         return s;
@@ -112,6 +114,7 @@ private:
                                          Ops::mul_add(w01_, Ops::load(rows_[2].data() + at), w11_ * Ops::load(rows_[3].data() + at))));
     }
 
+    const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));
     const PreparedWaves<Scalar>& w_;
     const float* texels_;
     int n_;

@@ -1,0 +1,173 @@
+// Shore queries through the SIMD kernel against the scalar double path of the same
+// evaluation, on the default island: the waterline, the surf zone and dry land, at
+// three times. Tolerances: height 0.1 mm, normal 0.05 degrees, and exactly no motion
+// on dry land; at most 3% (waterline) and 1% (surf zone) of the points may stall
+// unconverged at kinks of the bilinear shore fields. Then determinism across thread counts, and queries while another
+// thread bakes.
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "tidewater/constants.hpp"
+#include "tidewater/query.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater {
+namespace {
+
+const Scene& island() {
+    static const Scene scene = [] {
+        auto s = default_scene();
+        EXPECT_TRUE(s.ok()) << (s ? "" : s.error().message);
+        return std::move(s).value();
+    }();
+    return scene;
+}
+
+/// Some (keep_in_16 in 16) of the texel centres whose shore distance lies in [lo, hi] m, jittered inside the texel.
+std::vector<glm::dvec2> band(double lo, double hi, std::size_t count, unsigned keep_in_16) {
+    const ShoreWaves& shore = *island().ocean.shore();
+    const int n = shore.resolution();
+    std::vector<glm::dvec2> pts;
+    std::uint64_t h = 12345;
+    for (int j = 0; j < n && pts.size() < count; j += 1)
+        for (int i = 0; i < n && pts.size() < count; i += 1) {
+            const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
+            h = h * 6364136223846793005ull + 1442695040888963407ull;
+            if (d < lo || d > hi || (h >> 60) >= keep_in_16) continue;
+            const double jx = static_cast<double>((h >> 20) & 1023) / 1024.0 - 0.5, jz = static_cast<double>((h >> 40) & 1023) / 1024.0 - 0.5;
+            pts.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5 + jx, j + 0.5 + jz));
+        }
+    return pts;
+}
+
+struct Band {
+    const char* name;
+    double lo, hi;
+    unsigned keep_in_16;
+    double stall_allowance;  ///< share of points allowed to end unconverged
+};
+
+TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
+    const WaterBody& body = island().ocean;
+    ASSERT_TRUE(body.shore() && !body.shore()->trivial());
+    for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01}, Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
+        const std::vector<glm::dvec2> pts = band(b.lo, b.hi, 1500, b.keep_in_16);
+        ASSERT_GT(pts.size(), 200u) << b.name;
+        for (double t : {0.0, 37.5, 1000.25}) {
+            std::vector<SurfacePoint> simd(pts.size());
+            ASSERT_TRUE(query_surface(body, t, pts, simd).ok());
+            double worst_h = 0.0, worst_n = 0.0;
+            int dry = 0, unconverged = 0;
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                const SurfacePoint ref = reference::query_point(body, t, pts[i]);
+                if (!simd[i].converged || !ref.converged) {
+                    // Within a texel of the waterline the shore fields have kinks that the
+                    // damped Newton step (local waves taken as constant) can stall at.
+                    ++unconverged;
+                    continue;
+                }
+                worst_h = std::max(worst_h, std::abs(simd[i].height - ref.height));
+                worst_n = std::max(worst_n, std::acos(std::clamp(glm::dot(simd[i].normal, ref.normal), -1.0, 1.0)) * 180.0 / kPi);
+                EXPECT_NEAR(simd[i].depth, ref.depth, 1e-3) << b.name;
+                EXPECT_NEAR(simd[i].shore_distance, ref.shore_distance, 1e-2) << b.name;
+                if (ref.depth < -0.5) {
+                    // Every tap around a point this far up the beach is dry: the water rests.
+                    ++dry;
+                    EXPECT_EQ(simd[i].height, body.level()) << b.name << " point " << i;
+                    EXPECT_EQ(glm::length(simd[i].displacement), 0.0);
+                    EXPECT_EQ(glm::length(simd[i].velocity), 0.0);
+                    EXPECT_EQ(simd[i].normal, glm::dvec3(0.0, 1.0, 0.0));
+                }
+            }
+            const double stalled = static_cast<double>(unconverged) / static_cast<double>(pts.size());
+            std::printf("%s, t = %g s: %zu points, %.1f%% unconverged, worst height %.2e m, normal %.3f deg\n", b.name, t,
+                        pts.size(), 100.0 * stalled, worst_h, worst_n);
+            EXPECT_LT(worst_h, 1e-4) << b.name << " at t = " << t;
+            EXPECT_LT(worst_n, 0.05) << b.name << " at t = " << t;
+            EXPECT_LE(stalled, b.stall_allowance) << b.name << " at t = " << t;
+            if (std::string(b.name) == "dry land") {
+                EXPECT_GT(dry, 200) << "dry points checked";
+            }
+        }
+    }
+}
+
+std::vector<SurfacePoint> run(const WaterBody& body, const std::vector<glm::dvec2>& pts, unsigned threads) {
+    std::vector<SurfacePoint> out(pts.size());
+    QueryOptions o;
+    o.threads = threads;
+    EXPECT_TRUE(query_surface(body, 55.5, pts, out, o).ok());
+    return out;
+}
+
+void expect_identical(const std::vector<SurfacePoint>& a, const std::vector<SurfacePoint>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(std::memcmp(&a[i].height, &b[i].height, sizeof(double)), 0) << i;
+        ASSERT_EQ(std::memcmp(&a[i].normal, &b[i].normal, sizeof(glm::dvec3)), 0) << i;
+        ASSERT_EQ(std::memcmp(&a[i].velocity, &b[i].velocity, sizeof(glm::dvec3)), 0) << i;
+        ASSERT_EQ(a[i].foam, b[i].foam) << i;
+    }
+}
+
+std::vector<glm::dvec2> coast_points() {
+    std::vector<glm::dvec2> pts(30001);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const double a = static_cast<double>(i) * 0.0137, r = 450.0 + 250.0 * std::sin(static_cast<double>(i) * 0.011);
+        pts[i] = {r * std::cos(a), r * std::sin(a)};
+    }
+    return pts;
+}
+
+TEST(ShoreQuery, BitIdenticalForAnyThreadCount) {
+    const auto pts = coast_points();
+    const auto one = run(island().ocean, pts, 1);
+    for (unsigned threads : {0u, 2u, 3u, 8u}) expect_identical(one, run(island().ocean, pts, threads));
+}
+
+// Two threads query (one open water, one the shore) while a third bakes a shore model:
+// one scheduler serves all three, and the answers do not change.
+TEST(ShoreQuery, QueriesWhileAnotherThreadBakes) {
+    const auto pts = coast_points();
+    const auto expected = run(island().ocean, pts, 1);
+    auto open = island().ocean.with_shore(nullptr);
+    ASSERT_TRUE(open.ok());
+    const auto expected_open = run(*open, pts, 1);
+    std::atomic<bool> baking{true};
+    std::atomic<int> shore_rounds{0}, open_rounds{0};
+    std::thread baker([&] {
+        ShoreWaveOptions options;
+        options.resolution = 512;
+        options.threads = 0;
+        for (int i = 0; i < 2; ++i) {
+            auto model = ShoreWaves::bake(island().ocean.waves(), island().terrain, island().water_level, options);
+            EXPECT_TRUE(model.ok());
+        }
+        baking = false;
+    });
+    std::thread shore_queries([&] {
+        do {
+            expect_identical(expected, run(island().ocean, pts, 0));
+            ++shore_rounds;
+        } while (baking);
+    });
+    std::thread open_queries([&] {
+        do {
+            expect_identical(expected_open, run(*open, pts, 2));
+            ++open_rounds;
+        } while (baking);
+    });
+    baker.join();
+    shore_queries.join();
+    open_queries.join();
+    EXPECT_GE(shore_rounds.load(), 1);
+    EXPECT_GE(open_rounds.load(), 1);
+}
+
+}  // namespace
+}  // namespace tidewater
