@@ -1,5 +1,7 @@
 #include "query_bench.hpp"
 
+#include "bench_timing.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,7 +18,6 @@ namespace tidewater::cli {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr double kBenchTime = 1000.25;  // s; away from t = 0 so phases are generic
 
 std::vector<glm::dvec2> random_points(std::size_t n, std::uint64_t seed) {
@@ -30,17 +31,6 @@ std::vector<glm::dvec2> random_points(std::size_t n, std::uint64_t seed) {
     return pts;
 }
 
-/// Best wall time of `repeats` runs of `work`, in seconds.
-template <typename Work>
-double best_time(int repeats, const Work& work) {
-    double best = 1e300;
-    for (int r = 0; r < repeats; ++r) {
-        const auto t0 = Clock::now();
-        work();
-        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
-    }
-    return best;
-}
 
 /// Runs the reference loop over `threads` contiguous chunks.
 void reference_parallel(const WaveSet& set, std::span<const glm::dvec2> pts, std::span<double> out, unsigned threads) {

@@ -1,5 +1,7 @@
 #include "shore_query_bench.hpp"
 
+#include "bench_timing.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,16 +23,6 @@ constexpr std::size_t kBatch = 400;     // 100 floating objects, 4 points each
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-template <typename Work>
-double best_time(int repeats, const Work& work) {
-    double best = 1e300;
-    for (int r = 0; r < repeats; ++r) {
-        const auto t0 = Clock::now();
-        work();
-        best = std::min(best, seconds_since(t0));
-    }
-    return best;
-}
 
 /// Points on the shore grid where the signed shore distance lies in [lo, hi] m, jittered
 /// within their texel, in a fixed random order.
