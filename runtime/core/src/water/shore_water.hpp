@@ -80,8 +80,8 @@ private:
         alignas(64) Scalar fu[kLanes], fv[kLanes];
         const double top = n_ - 1.0;
         for (std::size_t l = 0; l < kLanes; ++l) {
-            const double u = std::clamp(u_[l] + static_cast<double>(exs[l]) * inv_texel_, 0.0, top);
-            const double v = std::clamp(v_[l] + static_cast<double>(ezs[l]) * inv_texel_, 0.0, top);
+            const double u = clamp_texel(u_[l] + static_cast<double>(exs[l]) * inv_texel_, top);
+            const double v = clamp_texel(v_[l] + static_cast<double>(ezs[l]) * inv_texel_, top);
             const int i = std::min(static_cast<int>(u), n_ - 2), j = std::min(static_cast<int>(v), n_ - 2);
             fu[l] = static_cast<Scalar>(u - i);
             fv[l] = static_cast<Scalar>(v - j);
@@ -95,6 +95,10 @@ private:
         w11_ = u * v;
         depth_ = blend(4 * w_.count);
     }
+
+    /// Clamps to [0, top]; a non-finite coordinate (a NaN query point) maps to 0, never to
+    /// an out-of-range cell.
+    static double clamp_texel(double u, double top) { return u >= 0.0 ? (u <= top ? u : top) : 0.0; }
 
     void fetch(std::size_t lane, long cell) {
         cell_[lane] = cell;
