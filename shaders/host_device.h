@@ -26,8 +26,8 @@ TW_CONST uint kQueryWorkgroupSize = 64u;
 // A point stops at the first evaluation whose residual |x0 + d(x0) - p| is under
 // max(floor, scale * sum(Q A)) m; after the cap it is reported unconverged.
 TW_CONST int kMaxNewtonIterations = 32;
-TW_CONST float kNewtonToleranceFloor = 1.0e-5f;   // m: above float rounding of the residual
-TW_CONST float kNewtonToleranceScale = 4.0e-6f;   // per metre of sum(Q A)
+TW_CONST float kNewtonToleranceFloor = 3.0e-5f;   // m: above float rounding of the residual
+TW_CONST float kNewtonToleranceScale = 1.2e-5f;   // per metre of sum(Q A)
 // The rest position lies within sum(Q A) of the point; steps are kept within
 // sum(Q A) * slack + floor (the slack keeps the clamp from cutting the true solution).
 TW_CONST float kNewtonRadiusSlack = 1.001f;

@@ -1,5 +1,6 @@
 // Google Benchmark: Eulerian height queries (SIMD Newton) against the seed
-// project's fixed-point loop, and the full surface query, for 8/32/64 waves.
+// project's fixed-point loop, and the full surface query, for 8/32/64 waves; and
+// the harbour frame near the default island's shore (100 boats, 4 hull corners each).
 // Run: build/bin/tidewater_query_benchmark [--benchmark_filter=...]
 // `tidewater bench` measures the same with accuracy figures, as JSON.
 #include <benchmark/benchmark.h>
@@ -71,6 +72,41 @@ void BM_FixedPointReference(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
 }
 
+/// 400 points of 100 boats moored 2 to 120 m off the default island's shore.
+std::vector<glm::dvec2> harbour_points(const ShoreWaves& shore) {
+    std::vector<glm::dvec2> centres;
+    const int n = shore.resolution();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
+            if (d >= 2.0 && d <= 120.0) centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
+        }
+    std::mt19937_64 rng(9);
+    std::vector<glm::dvec2> pts;
+    for (int boat = 0; boat < 100; ++boat) {
+        const glm::dvec2 c = centres[rng() % centres.size()];
+        for (const glm::dvec2 corner : {glm::dvec2(2, 1), glm::dvec2(2, -1), glm::dvec2(-2, 1), glm::dvec2(-2, -1)}) pts.push_back(c + corner);
+    }
+    return pts;
+}
+
+void BM_ShoreHarbour(benchmark::State& state) {
+    static const Scene scene = default_scene().value();
+    const auto pts = harbour_points(*scene.ocean.shore());
+    std::vector<double> h(pts.size());
+    std::vector<SurfacePoint> out(pts.size());
+    const bool full = state.range(0) != 0;
+    double t = kTime;
+    for (auto _ : state) {
+        t += 1.0 / 60.0;
+        benchmark::DoNotOptimize(full ? query_surface(scene.ocean, t, pts, out).ok() : query_heights(scene.ocean, t, pts, h).ok());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+    state.SetLabel(full ? "surface" : "heights");
+}
+
+BENCHMARK(BM_ShoreHarbour)->Arg(0)->Arg(1);
 BENCHMARK(BM_NewtonHeights)->Arg(8)->Arg(32)->Arg(64);
 BENCHMARK(BM_NewtonSurface)->Arg(8)->Arg(32)->Arg(64);
 BENCHMARK(BM_FixedPointReference)->Arg(8)->Arg(32)->Arg(64);

@@ -1,7 +1,8 @@
 // The shore query benchmark behind `tidewater bench` (printed beside the open-sea
 // table): the default island's ocean (24 waves), queried on open water, near the
 // shore (waterline, surf zone, swash) and as a game would (batches of 400 points
-// near the shore, each call timed with its overhead), with the SIMD results'
+// near the shore, each call timed with its overhead: a harbour of 100 boats frame after
+// frame, and scattered cold-cache batches), with the SIMD results'
 // worst height and normal error against the scalar double path.
 #pragma once
 

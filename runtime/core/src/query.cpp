@@ -1,6 +1,7 @@
 #include "tidewater/query.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -10,6 +11,7 @@
 #include "kernel/kernel_waves.hpp"
 #include "parallel.hpp"
 #include "tidewater/shore_waves.hpp"
+#include "water/shore_order.hpp"
 
 namespace tidewater {
 
@@ -46,6 +48,27 @@ const Kernel& kernel() {
 /// scheduling costs nothing next to the solves.
 constexpr std::size_t kPointsPerChunk = 512;
 
+/// Solves the points tile by tile over the shore grid (detail::shore_tile_order) and
+/// writes each result back to its caller's index.
+void solve_in_shore_order(const detail::KernelInput& in, SolveFn solve, std::span<const glm::dvec2> points,
+                          SurfacePoint* full, double* heights, const QueryOptions& options) {
+    const std::vector<std::uint32_t> order = detail::shore_tile_order(*in.shore, points);
+    std::vector<glm::dvec2> sorted(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
+    detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
+        const std::size_t n = end - begin;
+        if (full) {
+            std::vector<SurfacePoint> chunk(n);
+            solve(in, sorted.data() + begin, n, chunk.data(), nullptr);
+            for (std::size_t k = 0; k < n; ++k) full[order[begin + k]] = chunk[k];
+        } else {
+            std::vector<double> chunk(n);
+            solve(in, sorted.data() + begin, n, nullptr, chunk.data());
+            for (std::size_t k = 0; k < n; ++k) heights[order[begin + k]] = chunk[k];
+        }
+    });
+}
+
 /// Runs the kernel over the points on the shared scheduler, reporting any failure as an Error.
 Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2> points, SurfacePoint* full,
                   double* heights, const QueryOptions& options) {
@@ -56,9 +79,13 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
         in.waves = &waves;
         if (const auto& shore = body.shore(); shore && !shore->trivial()) in.shore = shore.get();
         const SolveFn solve = kernel().solve;
-        detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
-            solve(in, points.data() + begin, end - begin, full ? full + begin : nullptr, heights ? heights + begin : nullptr);
-        });
+        if (in.shore != nullptr && points.size() >= detail::kShoreOrderMinPoints && points.size() <= UINT32_MAX) {
+            solve_in_shore_order(in, solve, points, full, heights, options);
+        } else {
+            detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
+                solve(in, points.data() + begin, end - begin, full ? full + begin : nullptr, heights ? heights + begin : nullptr);
+            });
+        }
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("query: could not run: {}", e.what())};
     }

@@ -40,6 +40,8 @@ public:
             u_[l] = (px[l] - shore.corner().x) * inv_texel_ - 0.5;
             v_[l] = (pz[l] - shore.corner().y) * inv_texel_ - 0.5;
             cell_[l] = -1;
+            edge_lane_[l] = true;
+            cell_u_[l] = cell_v_[l] = Scalar(0);
         }
     }
 
@@ -48,18 +50,20 @@ public:
         locate(ex, ez);
         const std::size_t nw = w_.count;
         // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
-        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ / ramp_depth_, T(1.0)), T(0.0));
+        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
         const T steepness_scale = blend(4 * nw + 2);
         SurfaceSums<T> s;
         for (std::size_t i = 0; i < nw; ++i) {
-            const T residual = blend(i), amplitude_factor = blend(nw + i);
+            const T residual = blend(i), amplitude = blend(nw + i);
             const T kx = blend(2 * nw + i), kz = blend(3 * nw + i);
             // The phase follows the shore: open-sea phase at p, k0 D.e, and the marched residual.
             const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) + residual;
-            const T a = T(w_.amplitude[i]) * amplitude_factor * ramp;
+            const T a = amplitude * ramp;
             add_wave<kVelocity>(s, wave_term<T>(kx, kz, a, T(w_.steepness[i]) * steepness_scale, T(w_.omega[i])), theta);
         }
-        return s;
+        // A copy, not the named local: the sums stay in registers instead of the caller's
+        // memory, which the row loads might alias.
+        return SurfaceSums<T>(s);
     }
 
     /// Keeps the shore values sampled by the last evaluation for the lanes in `m`.
@@ -72,27 +76,52 @@ public:
     T depth = T(0.0), breaking = T(0.0), shore_distance = T(0.0);  ///< at the recorded rest positions
 
 private:
-    /// Finds each lane's cell and bilinear weights at rest offset e; refreshes the cached taps.
+    /// Finds each lane's place in its cell at rest offset e. Newton moves the rest position
+    /// by far less than a texel, so a lane's cached cell nearly always still holds it: the
+    /// place is then cell_u + e / texel in float, checked for all lanes in one SIMD pass.
+    /// A lane that left its cell, or lies on the grid's edge, is placed in double and its
+    /// taps are fetched again. Every choice depends on the lane alone, never on its batch
+    /// neighbours, so a point's answer does not depend on how points are batched.
     void locate(const T& ex, const T& ez) {
-        alignas(64) Scalar exs[kLanes], ezs[kLanes];
+        const T u = Ops::mul_add(ex, inv_texel_t_, Ops::load(cell_u_)), v = Ops::mul_add(ez, inv_texel_t_, Ops::load(cell_v_));
+        const T zero(0.0), one(1.0);
+        const auto inside = u >= zero && u <= one && v >= zero && v <= one;
+        if (!edge_ && Ops::all(inside)) {
+            u_frac_ = u;
+            v_frac_ = v;
+            depth_ = blend(4 * w_.count);
+            return;
+        }
+        alignas(64) Scalar exs[kLanes], ezs[kLanes], fu[kLanes], fv[kLanes];
         Ops::store(ex, exs);
         Ops::store(ez, ezs);
-        alignas(64) Scalar fu[kLanes], fv[kLanes];
+        Ops::store(u, fu);
+        Ops::store(v, fv);
+        long cells[kLanes];
+        bool moved = false;
         const double top = n_ - 1.0;
+        edge_ = false;
         for (std::size_t l = 0; l < kLanes; ++l) {
-            const double u = clamp_texel(u_[l] + static_cast<double>(exs[l]) * inv_texel_, top);
-            const double v = clamp_texel(v_[l] + static_cast<double>(ezs[l]) * inv_texel_, top);
-            const int i = std::min(static_cast<int>(u), n_ - 2), j = std::min(static_cast<int>(v), n_ - 2);
-            fu[l] = static_cast<Scalar>(u - i);
-            fv[l] = static_cast<Scalar>(v - j);
-            const long cell = static_cast<long>(j) * n_ + i;
-            if (cell != cell_[l]) fetch(l, cell);
+            cells[l] = cell_[l];
+            const bool keep = !edge_lane_[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) && fv[l] <= Scalar(1);
+            if (keep) continue;
+            const double u_raw = u_[l] + static_cast<double>(exs[l]) * inv_texel_;
+            const double v_raw = v_[l] + static_cast<double>(ezs[l]) * inv_texel_;
+            const double uc = clamp_texel(u_raw, top), vc = clamp_texel(v_raw, top);
+            // NaN never equals itself: a NaN point is an edge lane too.
+            edge_lane_[l] = uc != u_raw || vc != v_raw;
+            edge_ = edge_ || edge_lane_[l];
+            const int i = std::min(static_cast<int>(uc), n_ - 2), j = std::min(static_cast<int>(vc), n_ - 2);
+            fu[l] = static_cast<Scalar>(uc - i);
+            fv[l] = static_cast<Scalar>(vc - j);
+            cell_u_[l] = static_cast<Scalar>(u_[l] - i);
+            cell_v_[l] = static_cast<Scalar>(v_[l] - j);
+            cells[l] = static_cast<long>(j) * n_ + i;
+            moved = moved || cells[l] != cell_[l];
         }
-        const T one(1.0), u = Ops::load(fu), v = Ops::load(fv);
-        w00_ = (one - u) * (one - v);
-        w10_ = u * (one - v);
-        w01_ = (one - u) * v;
-        w11_ = u * v;
+        if (moved) fetch(cells);
+        u_frac_ = Ops::load(fu);
+        v_frac_ = Ops::load(fv);
         depth_ = blend(4 * w_.count);
     }
 
@@ -100,25 +129,53 @@ private:
     /// an out-of-range cell.
     static double clamp_texel(double u, double top) { return u >= 0.0 ? (u <= top ? u : top) : 0.0; }
 
-    void fetch(std::size_t lane, long cell) {
-        cell_[lane] = cell;
-        const std::size_t k00 = static_cast<std::size_t>(cell), n = static_cast<std::size_t>(n_);
-        const std::array<std::size_t, 4> taps{k00, k00 + 1, k00 + n, k00 + n + 1};
+    /// Copies the four taps of every lane's cell into the lane-major rows (all lanes at
+    /// once: a transpose costs about what two single-lane copies do).
+    void fetch(const long* cells) {
+        const std::size_t n = static_cast<std::size_t>(n_);
+        const std::array<std::size_t, 4> offsets{0, 1, n, n + 1};
         for (std::size_t t = 0; t < 4; ++t) {
-            const float* src = texels_ + taps[t] * stride_;
-            Scalar* dst = rows_[t].data() + lane;
-            for (std::size_t f = 0; f < stride_; ++f) dst[f * kLanes] = static_cast<Scalar>(src[f]);
+            const float* src[kLanes];
+            for (std::size_t l = 0; l < kLanes; ++l) src[l] = texels_ + (static_cast<std::size_t>(cells[l]) + offsets[t]) * stride_;
+            Ops::interleave(src, stride_, rows_[t].data());
         }
+        // Taps to the bilinear form c0 + c1 u + c2 v + c3 u v: three multiply-adds a value.
+        for (std::size_t at = 0; at < stride_ * kLanes; at += kLanes) {
+            const T t00 = Ops::load(rows_[0].data() + at), t10 = Ops::load(rows_[1].data() + at);
+            const T t01 = Ops::load(rows_[2].data() + at), t11 = Ops::load(rows_[3].data() + at);
+            Ops::store(t10 - t00, rows_[1].data() + at);
+            Ops::store(t01 - t00, rows_[2].data() + at);
+            Ops::store((t11 - t10) - (t01 - t00), rows_[3].data() + at);
+        }
+        // Phase residuals grow to hundreds of radians inshore; taking whole turns out of the
+        // cell's base value keeps the phase sums small and float-exact. 2 pi in two parts
+        // (Cody-Waite): the turns come off exactly.
+        const T turns_per_rad = constant<T>(1.0 / kTwoPi), two_pi_hi = T(Scalar(6.28125)),
+                two_pi_lo = constant<T>(kTwoPi - 6.28125);
+        for (std::size_t at = 0; at < w_.count * kLanes; at += kLanes) {
+            const T c0 = Ops::load(rows_[0].data() + at);
+            const T turns = Ops::round(c0 * turns_per_rad);
+            Ops::store((c0 - turns * two_pi_hi) - turns * two_pi_lo, rows_[0].data() + at);
+        }
+        // Amplitude factors to amplitudes (the form is linear in its coefficients).
+        for (std::size_t i = 0; i < w_.count; ++i) {
+            const T a0(w_.amplitude[i]);
+            for (auto& row : rows_) {
+                Scalar* at = row.data() + (w_.count + i) * kLanes;
+                Ops::store(a0 * Ops::load(at), at);
+            }
+        }
+        std::copy(cells, cells + kLanes, cell_);
     }
 
     T blend(std::size_t field) const {
         const std::size_t at = field * kLanes;
-        return Ops::mul_add(w00_, Ops::load(rows_[0].data() + at),
-                            Ops::mul_add(w10_, Ops::load(rows_[1].data() + at),
-                                         Ops::mul_add(w01_, Ops::load(rows_[2].data() + at), w11_ * Ops::load(rows_[3].data() + at))));
+        const T c2_uc3 = Ops::mul_add(u_frac_, Ops::load(rows_[3].data() + at), Ops::load(rows_[2].data() + at));
+        return Ops::mul_add(v_frac_, c2_uc3, Ops::mul_add(u_frac_, Ops::load(rows_[1].data() + at), Ops::load(rows_[0].data() + at)));
     }
 
     const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));
+    const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kWaterlineRampDepth));
     const PreparedWaves<Scalar>& w_;
     const float* texels_;
     int n_;
@@ -127,7 +184,11 @@ private:
     const Scalar* base_;
     double u_[kLanes], v_[kLanes];  // query points in texel units from the first texel centre
     long cell_[kLanes];
-    T w00_ = T(0.0), w10_ = T(0.0), w01_ = T(0.0), w11_ = T(0.0), depth_ = T(0.0);
+    alignas(64) Scalar cell_u_[kLanes], cell_v_[kLanes];  // query points relative to their cached cell, texels
+    bool edge_lane_[kLanes];  // the lane was clamped at the grid's edge (or nothing is cached yet)
+    bool edge_ = true;        // any lane is
+    const T inv_texel_t_ = constant<T>(inv_texel_);
+    T u_frac_ = T(0.0), v_frac_ = T(0.0), depth_ = T(0.0);  // position in the cell, 0..1
     alignas(64) std::array<std::array<Scalar, kMaxStride * kLanes>, 4> rows_;
 };
 

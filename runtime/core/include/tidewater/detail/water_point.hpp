@@ -45,8 +45,21 @@ struct NumberOps {
         using std::sqrt;
         return sqrt(x);
     }
+    /// The nearest integer (ties to even).
+    static T round(const T& x) {
+        using std::nearbyint;
+        return nearbyint(x);
+    }
+    /// 1 / sqrt(x) for x > 0.
+    static T inv_sqrt(const T& x) { return T(1.0) / sqrt(x); }
+    /// Copies `count` consecutive floats from each lane's source into lane-major `dst`:
+    /// dst[f * kLanes + lane] = src[lane][f].
+    static void interleave(const float* const* src, std::size_t count, Scalar* dst) {
+        for (std::size_t f = 0; f < count; ++f) dst[f] = Scalar(src[0][f]);
+    }
     static T select(Mask m, const T& a, const T& b) { return m ? a : b; }
     static bool any(Mask m) { return m; }
+    static bool all(Mask m) { return m; }
 };
 
 /// A constant of the number type T (rounded once to T's lane type).
@@ -71,9 +84,9 @@ struct WaveTerm {
 template <typename T>
 WaveTerm<T> wave_term(const T& kx, const T& kz, const T& a, const T& q, const T& omega) {
     using Ops = NumberOps<T>;
-    const T k = Ops::sqrt(kx * kx + kz * kz);
+    const T k2 = kx * kx + kz * kz;
     // 1/k where it exists; a zero wavevector only occurs with zero amplitude.
-    const T inv_k = T(1.0) / Ops::select(k > T(0.0), k, T(1.0));
+    const T inv_k = Ops::inv_sqrt(Ops::select(k2 > T(0.0), k2, T(1.0)));
     const T qa = q * a;
     const T dx = kx * inv_k, dz = kz * inv_k;
     WaveTerm<T> w;
