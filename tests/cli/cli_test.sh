@@ -320,6 +320,8 @@ JSON
       check "screenshot written" test -s shot.png
       rc=0; timeout 6 xvfb-run -a "$TW" inspect --view --times 0:5:0.5 --resolution 48x48 > /dev/null 2>&1 || rc=$?
       check "the interactive viewer starts and keeps running (stopped after 6 s)" test "$rc" -eq 124
+      xvfb-run -a "$TW" inspect --view --play 12 --times 0:5:0.5 --resolution 48x48 --size 320x200 --quiet > play.txt
+      check "playback runs past the last time step and reports its rate" grep -q "played 12 steps of a 48x48 grid in .* steps/s" play.txt
     fi
     expect_error "unknown field" "--field \"vorticity\" is unknown" "$TW" inspect --time 0 --field vorticity --export e1
     expect_error "empty time range" "--times" "$TW" inspect --times 5:1:1 --export e2

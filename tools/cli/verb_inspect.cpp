@@ -1,6 +1,7 @@
 // tidewater inspect: sample the water the runtime draws over a grid and times, then
 // export it for ParaView or render a picture of a field (VTK; optional at configure time).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
@@ -27,6 +28,7 @@ struct InspectArgs : DataOptions {
     std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset;
     std::optional<double> time;
     unsigned threads = 0;
+    std::size_t play = 0;
     bool quiet = false, view = false;
 };
 
@@ -157,8 +159,20 @@ int run_inspect(const InspectArgs& a) {
     if (a.view) {
         auto size = parse_pair(a.size, "--size");
         if (!size) return fail(verb, size.error().message);
-        auto viewer = inspect::Viewer::create(*scene, grid, times, a.field, size->first, size->second, false);
+        auto viewer = inspect::Viewer::create(*scene, grid, times, a.field, size->first, size->second, a.play > 0);
         if (!viewer) return fail(verb, viewer.error().message);
+        if (a.play > 0) {
+            // Playback as the time slider would, each step resampled and drawn: a benchmark.
+            const auto t0 = std::chrono::steady_clock::now();
+            for (std::size_t k = 0; k < a.play; ++k) {
+                if (auto st = (*viewer)->set_time_index(k % times.size()); !st) return fail(verb, st.error().message);
+                (*viewer)->render();
+            }
+            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            std::printf("played %zu steps of a %dx%d grid in %.3f s: %.1f steps/s\n", a.play, grid.nx, grid.nz, s,
+                        static_cast<double>(a.play) / s);
+            return 0;
+        }
         std::printf("viewer: space play/pause, f next field, g velocity glyphs, p probe under the mouse, q quit\n");
         (*viewer)->run();
     }
@@ -197,6 +211,7 @@ Verb add_inspect_verb(CLI::App& app) {
     add_data_options(cmd, *a);
     cmd->add_option("--preset", a->preset, "With --data: the preset whose prediction is overlaid on the record (--plot)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
+    cmd->add_option("--play", a->play, "With --view: play this many time steps offscreen (resample and draw each), print steps/s and exit");
     cmd->add_flag("--view", a->view, "Open the interactive viewer over --times (time slider, play/pause, fields, glyphs, probe)");
 #if defined(TIDEWATER_HAVE_INSPECT)
     return {cmd, [a] { return run_inspect(*a); }};

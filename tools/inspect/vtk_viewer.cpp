@@ -7,7 +7,7 @@
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkContourFilter.h>
-#include <vtkDataSetMapper.h>
+#include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkGlyph3D.h>
 #include <vtkLookupTable.h>
@@ -23,8 +23,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkSliderRepresentation2D.h>
 #include <vtkSliderWidget.h>
-#include <vtkStructuredGrid.h>
-#include <vtkStructuredGridGeometryFilter.h>
+#include <vtkPolyData.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -40,6 +39,42 @@
 
 namespace tidewater::inspect {
 
+namespace {
+
+/// The grid's cells as triangle strips along rows, over `points` (grid.points() of them):
+/// what the renderer draws fastest, built once while only the points change. Only cells
+/// where `drawn(i, j)` holds are kept.
+template <typename Drawn>
+vtkSmartPointer<vtkPolyData> grid_strips(const SampleGrid& grid, vtkPoints* points, Drawn drawn) {
+    vtkNew<vtkCellArray> strips;
+    std::vector<vtkIdType> ids;
+    auto flush = [&] {
+        if (ids.size() >= 4) strips->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+        ids.clear();
+    };
+    for (int j = 0; j + 1 < grid.nz; ++j) {
+        for (int i = 0; i < grid.nx; ++i) {
+            // Column i closes cell i - 1 and opens cell i.
+            const bool closes = i > 0 && drawn(i - 1, j), opens = i + 1 < grid.nx && drawn(i, j);
+            if (closes || opens) {
+                ids.push_back(static_cast<vtkIdType>(grid.index(i, j + 1)));
+                ids.push_back(static_cast<vtkIdType>(grid.index(i, j)));
+            }
+            if (!opens) flush();
+        }
+        flush();
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetStrips(strips);
+    return poly;
+}
+
+/// Terrain this far under the level is always behind the (opaque) water surface.
+constexpr double kHiddenSeabed = 10.0;  // m
+
+}  // namespace
+
 struct Viewer::Impl {
     const Scene* scene = nullptr;
     SampleGrid grid;
@@ -52,10 +87,10 @@ struct Viewer::Impl {
     bool interactive = false;  // key hints in the caption
     vtkSmartPointer<vtkContextView> chart;  // the last probe's chart window
 
-    vtkNew<vtkStructuredGrid> surface, land;
+    vtkSmartPointer<vtkPolyData> surface, land;
     vtkNew<vtkDoubleArray> scalars, vectors;
     vtkNew<vtkLookupTable> lut;
-    vtkNew<vtkDataSetMapper> surface_mapper;
+    vtkNew<vtkPolyDataMapper> surface_mapper;
     vtkNew<vtkActor> surface_actor, land_actor, shore_actor, glyph_actor;
     vtkNew<vtkScalarBarActor> legend;
     vtkNew<vtkTextActor> caption;
@@ -147,15 +182,19 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
             land_points->SetPoint(static_cast<vtkIdType>(k), p.x, m->terrain[k], p.y);
             ground->SetValue(static_cast<vtkIdType>(k), m->terrain[k] - scene.water_level);
         }
-    m->surface->SetDimensions(grid.nx, grid.nz, 1);
-    m->surface->SetPoints(surface_points);
+    m->surface = grid_strips(grid, surface_points, [](int, int) { return true; });
     m->scalars->SetName("field");
     m->vectors->SetName("velocity");
     m->vectors->SetNumberOfComponents(3);
     m->surface->GetPointData()->SetScalars(m->scalars);
     m->surface->GetPointData()->SetVectors(m->vectors);
-    m->land->SetDimensions(grid.nx, grid.nz, 1);
-    m->land->SetPoints(land_points);
+    // Only the land that can show: where the water thins out or the terrain is dry.
+    m->land = grid_strips(grid, land_points, [&](int i, int j) {
+        double top = -INFINITY;
+        for (int dj = 0; dj < 2; ++dj)
+            for (int di = 0; di < 2; ++di) top = std::max(top, m->terrain[grid.index(i + di, j + dj)]);
+        return top > scene.water_level - kHiddenSeabed;
+    });
     m->land->GetPointData()->SetScalars(ground);
 
     m->lut->SetHueRange(0.667, 0.0);
@@ -163,16 +202,14 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     m->surface_mapper->SetInputData(m->surface);
     m->surface_mapper->SetLookupTable(m->lut);
     m->surface_actor->SetMapper(m->surface_mapper);
-    vtkNew<vtkDataSetMapper> land_mapper;
+    vtkNew<vtkPolyDataMapper> land_mapper;
     land_mapper->SetInputData(m->land);
     land_mapper->ScalarVisibilityOff();
     m->land_actor->SetMapper(land_mapper);
     m->land_actor->GetProperty()->SetColor(0.55, 0.5, 0.4);
     // The shoreline: the terrain's contour at the water level.
-    vtkNew<vtkStructuredGridGeometryFilter> land_surface;
-    land_surface->SetInputData(m->land);
     vtkNew<vtkContourFilter> shoreline;
-    shoreline->SetInputConnection(land_surface->GetOutputPort());
+    shoreline->SetInputData(m->land);
     shoreline->SetValue(0, 0.0);
     vtkNew<vtkPolyDataMapper> shore_mapper;
     shore_mapper->SetInputConnection(shoreline->GetOutputPort());
@@ -181,10 +218,8 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     m->shore_actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
     m->shore_actor->GetProperty()->SetLineWidth(2.0);
     // Velocity glyphs on about 400 points, an arrow of 1 m/s a twentieth of the view across.
-    vtkNew<vtkStructuredGridGeometryFilter> water_surface;
-    water_surface->SetInputData(m->surface);
     vtkNew<vtkMaskPoints> mask;
-    mask->SetInputConnection(water_surface->GetOutputPort());
+    mask->SetInputData(m->surface);
     mask->SetOnRatio(std::max<int>(1, static_cast<int>(n / 400)));
     vtkNew<vtkArrowSource> arrow;
     vtkNew<vtkGlyph3D> glyphs;
@@ -223,6 +258,8 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     camera->SetViewUp(0.0, 1.0, 0.0);
     m->window->SetOffScreenRendering(offscreen ? 1 : 0);
     m->window->SetSize(width, height);
+    // No multisampling: in software GL (llvmpipe) it costs more than sampling the water.
+    m->window->SetMultiSamples(0);
     m->window->SetWindowName("tidewater inspect");
     m->window->AddRenderer(m->renderer);
     if (auto st = m->resample(0); !st) return st.error();
@@ -250,6 +287,7 @@ Result<double> Viewer::probe(glm::dvec2 at, const std::filesystem::path& png) {
 }
 
 Status Viewer::save(const std::filesystem::path& png) { return save_window_png(impl_->window, png); }
+void Viewer::render() { impl_->window->Render(); }
 std::string Viewer::field() const { return impl_->info().name; }
 double Viewer::time() const { return impl_->sample.time; }
 

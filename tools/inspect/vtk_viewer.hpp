@@ -31,6 +31,7 @@ public:
     /// Charts the height at (x, z) over the viewer's times to `png`; returns the dominant period.
     Result<double> probe(glm::dvec2 at, const std::filesystem::path& png);
     Status save(const std::filesystem::path& png);  ///< The current view, as drawn.
+    void render();                                  ///< Draws the current view.
     std::string field() const;
     double time() const;
     /// Opens the window and runs until it is closed.
