@@ -62,7 +62,7 @@ struct GpuQueryResult {
     vec4 height_normal;  // x: eta (m, without the water level), yzw: unit normal
     vec4 velocity_jac;   // xyz: particle velocity (m/s), w: Jacobian determinant
     vec4 disp_iter;      // xy: horizontal displacement (m), z: Newton evaluations, w: 1 if converged
-    vec4 shore;          // x: depth (m), y: shore distance (m), z: breaking, w: unused
+    vec4 shore;          // x: depth (m), y: shore distance (m), both at the query point; z: breaking at the rest position; w: unused
 };
 
 // Debug views (GpuFrame.params.w).

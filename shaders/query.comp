@@ -35,12 +35,14 @@ void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= params.point_count) return;
     g_point = points[id];
+    // Depth and shore distance belong to the query point itself (rest offset 0).
+    vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(cell_origin[g_point.cell] + g_point.local)) : vec4(1e9, 0.0, 1.0, 1e9);
     NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset));
     GpuQueryResult r;
     // First-order carry to the final step, as on the CPU.
     r.height_normal = vec4(n.sums.eta + dot(n.sums.slope, n.step_e), surface_normal(n.sums));
     r.velocity_jac = vec4(n.sums.velocity, surface_jacobian(n.sums));
     r.disp_iter = vec4(-(n.e + n.step_e), n.iterations, n.converged);
-    r.shore = vec4(g_shore_fields.x, g_shore_fields.w, g_shore_fields.y, 0.0);
+    r.shore = vec4(at_point.x, at_point.w, g_shore_fields.y, 0.0);
     results[id] = r;
 }

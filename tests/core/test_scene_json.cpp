@@ -22,7 +22,7 @@ TEST(SceneJson, LoadsInlineWavesAndFlatTerrain) {
     auto scene = parse_scene(scene_with_ocean(kInlineWaves), "s.json");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     EXPECT_EQ(scene->name, "t");
-    EXPECT_DOUBLE_EQ(scene->water_level, 0.5);
+    EXPECT_DOUBLE_EQ(scene->water_level(), 0.5);
     EXPECT_DOUBLE_EQ(scene->ocean.level(), 0.5);
     EXPECT_DOUBLE_EQ(scene->terrain.height_at({100.0, 3.0}), -20.0);
     ASSERT_EQ(scene->ocean.waves().size(), 2u);

@@ -107,7 +107,7 @@ TEST(ShoreBake, CgalDistanceEqualsBruteForce) {
     ASSERT_TRUE(scene.ok());
     BakeOptions o;
     o.resolution = 128;
-    auto f = bake_shore(scene->terrain, scene->water_level, o);
+    auto f = bake_shore(scene->terrain, scene->water_level(), o);
     ASSERT_TRUE(f.ok()) << f.error().message;
     EXPECT_GT(f->segment_count, 30u);
     for (int j = 0; j < f->resolution; j += 7)
@@ -117,7 +117,7 @@ TEST(ShoreBake, CgalDistanceEqualsBruteForce) {
         }
     // Depth is the water column.
     const glm::dvec2 p = f->texel_center(3, 3);
-    EXPECT_NEAR(f->depth[f->index(3, 3)], scene->water_level - scene->terrain.height_at(p), 1e-3);
+    EXPECT_NEAR(f->depth[f->index(3, 3)], scene->water_level() - scene->terrain.height_at(p), 1e-3);
 }
 
 /// Hundreds of islands from fractal noise: a coast with every kind of curvature.

@@ -52,14 +52,14 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     ShoreBakeContents contents;
     contents.model = &model;
     contents.waves = &scene->ocean.waves();
-    contents.water_level = scene->water_level;
+    contents.water_level = scene->water_level();
     contents.scene_name = "island";
     const fs::path folder = dir.path / "bake";
     ASSERT_TRUE(save_shore_bake(folder, contents).ok());
     EXPECT_TRUE(fs::exists(folder / "shore.json"));
     EXPECT_FALSE(fs::exists(folder / "shorelines.json"));  // no distance field given
 
-    auto loaded = load_shore_bake(folder, scene->ocean.waves(), scene->water_level, scene->terrain);
+    auto loaded = load_shore_bake(folder, scene->ocean.waves(), scene->water_level(), scene->terrain);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     const ShoreWaves& back = **loaded;
     ASSERT_EQ(back.resolution(), model.resolution());

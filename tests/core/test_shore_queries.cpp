@@ -97,6 +97,57 @@ TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
     }
 }
 
+// Depth and shore distance are properties of the query point: the shore model's grids
+// there (level - terrain at texel centres), the same at any time and for any waves;
+// `wet` is the surface standing above that terrain. Without a shore model both are
+// +infinity and everything is wet.
+TEST(ShoreQuery, DepthAndShoreDistanceBelongToTheQueryPoint) {
+    const WaterBody& body = island().ocean;
+    const ShoreWaves& shore = *body.shore();
+    std::vector<glm::dvec2> pts = band(-30.0, 60.0, 2000, 4);
+    ASSERT_GT(pts.size(), 500u);
+    // Texel centres too, where the grid holds level - terrain exactly.
+    const std::size_t jittered = pts.size();
+    for (std::size_t k = 0; k < 200; ++k) {
+        const glm::dvec2 p = pts[k * 2];
+        const glm::dvec2 cell = glm::floor((p - shore.corner()) / shore.texel());
+        pts.push_back(shore.corner() + shore.texel() * (cell + 0.5));
+    }
+    std::vector<LocalWave> local(body.waves().size());
+    std::vector<SurfacePoint> first;
+    std::size_t wet = 0, dry = 0;
+    for (double t : {0.0, 3.3, 17.9}) {
+        std::vector<SurfacePoint> out(pts.size());
+        ASSERT_TRUE(query_surface(body, t, pts, out).ok());
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            const LocalShore at = shore.sample(pts[i], local);
+            ASSERT_NEAR(out[i].depth, at.depth, 1e-4) << i;
+            ASSERT_NEAR(out[i].shore_distance, at.shore_distance, 1e-3) << i;
+            if (i >= jittered) {
+                ASSERT_NEAR(out[i].depth, body.level() - island().terrain.height_at(pts[i]), 1e-3) << i;
+            }
+            ASSERT_EQ(out[i].wet, out[i].height > body.level() - out[i].depth) << i;
+            if (!first.empty()) {
+                ASSERT_EQ(out[i].depth, first[i].depth) << "depth moved with the waves at " << i;
+            }
+            (out[i].wet ? wet : dry) += 1;
+        }
+        if (first.empty()) first = out;
+    }
+    EXPECT_GT(wet, 100u);
+    EXPECT_GT(dry, 100u);
+
+    auto open = body.with_shore(nullptr);
+    ASSERT_TRUE(open.ok());
+    std::vector<SurfacePoint> out(pts.size());
+    ASSERT_TRUE(query_surface(*open, 1.0, pts, out).ok());
+    for (const SurfacePoint& p : out) {
+        EXPECT_TRUE(std::isinf(p.depth) && p.depth > 0.0);
+        EXPECT_TRUE(std::isinf(p.shore_distance) && p.shore_distance > 0.0);
+        EXPECT_TRUE(p.wet);
+    }
+}
+
 std::vector<SurfacePoint> run(const WaterBody& body, const std::vector<glm::dvec2>& pts, unsigned threads) {
     std::vector<SurfacePoint> out(pts.size());
     QueryOptions o;
@@ -145,7 +196,7 @@ TEST(ShoreQuery, QueriesWhileAnotherThreadBakes) {
         options.resolution = 512;
         options.threads = 0;
         for (int i = 0; i < 2; ++i) {
-            auto model = ShoreWaves::bake(island().ocean.waves(), island().terrain, island().water_level, options);
+            auto model = ShoreWaves::bake(island().ocean.waves(), island().terrain, island().water_level(), options);
             EXPECT_TRUE(model.ok());
         }
         baking = false;

@@ -20,8 +20,8 @@ render::Camera default_camera(const Scene& scene) {
     }
     const glm::dvec2 c = scene.terrain.extent_center();
     const double h = std::min(scene.terrain.extent_half_size(), 600.0);
-    cam.target = {c.x, scene.water_level, c.y};
-    cam.position = {c.x - 0.5 * h, scene.water_level + 0.12 * h + 8.0, c.y + 0.8 * h};
+    cam.target = {c.x, scene.water_level(), c.y};
+    cam.position = {c.x - 0.5 * h, scene.water_level() + 0.12 * h + 8.0, c.y + 0.8 * h};
     return cam;
 }
 

@@ -56,7 +56,7 @@ int run_bake(const BakeArgs& a) {
     model_options.threads = a.threads;
     if (!a.quiet) std::fprintf(stderr, "bake: shore model %dx%d, %zu waves\n", model_options.resolution, model_options.resolution,
                                scene->ocean.waves().size());
-    auto model = ShoreWaves::bake(scene->ocean.waves(), scene->terrain, scene->water_level, model_options);
+    auto model = ShoreWaves::bake(scene->ocean.waves(), scene->terrain, scene->water_level(), model_options);
     if (!model) return fail(verb, model.error().message);
 
     BakeOptions options;
@@ -65,13 +65,13 @@ int run_bake(const BakeArgs& a) {
     options.threads = a.threads;
     Progress progress(a.quiet, "signed distance");
     options.progress = [&](double f) { progress(f); };
-    auto field = bake_shore(scene->terrain, scene->water_level, options);
+    auto field = bake_shore(scene->terrain, scene->water_level(), options);
     if (!field) return fail(verb, field.error().message);
 
     ShoreBakeContents contents;
     contents.model = model->get();
     contents.waves = &scene->ocean.waves();
-    contents.water_level = scene->water_level;
+    contents.water_level = scene->water_level();
     contents.breaking_index = model_options.breaking_index;
     contents.scene_name = scene->name;
     contents.distance_field = &*field;

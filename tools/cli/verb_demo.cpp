@@ -73,11 +73,10 @@ int run_demo(const DemoArgs& a) {
         if (auto st = query_surface(ocean, t, pts, surf, opt); !st) return fail(verb, st.error().message);
         for (std::size_t k = 0; k < pts.size(); ++k) {
             const SurfacePoint& s = surf[k];
-            const double ground = scene->terrain.height_at(pts[k]);
             csv.stream() << fmt::format("{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},{:.6f},{:.3f},{},{:.3f}\n", t,
                                         pts[k].x, pts[k].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                                        s.velocity.y, s.velocity.z, s.jacobian, scene->water_level - ground,
-                                        s.height > ground ? 1 : 0, s.foam);
+                                        s.velocity.y, s.velocity.z, s.jacobian, s.depth,
+                                        s.wet ? 1 : 0, s.foam);
             min_h = std::min(min_h, s.height);
             max_h = std::max(max_h, s.height);
             min_jac = std::min(min_jac, s.jacobian);
@@ -88,7 +87,7 @@ int run_demo(const DemoArgs& a) {
     nlohmann::json summary = {
         {"tidewater_version", TIDEWATER_VERSION_STRING},
         {"scene", scene->name},
-        {"water_level_m", scene->water_level},
+        {"water_level_m", scene->water_level()},
         {"terrain", scene->terrain.kind_name()},
         {"terrain_height_at_origin_m", scene->terrain.height_at({0.0, 0.0})},
         {"ocean", ocean.profile().name},

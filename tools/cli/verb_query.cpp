@@ -26,23 +26,18 @@ struct QueryArgs {
     std::string backend = "cpu";
 };
 
-/// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large.
-/// depth is the water column at the query point (level - terrain), wet is 1 where the
-/// surface stands above the terrain, shore_distance comes from the scene's shore model
-/// (nan when the scene turns it off), foam is breaking or folding crests.
+/// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large. Every
+/// column is the library's SurfacePoint as returned (depth and shore_distance at the
+/// query point, inf without a shore model).
 template <typename Sink>
-void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t, const Scene& scene,
-                const std::vector<glm::dvec2>& points, const std::vector<SurfacePoint>& results) {
-    const bool shore = scene.ocean.shore() != nullptr;
+void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t, const std::vector<glm::dvec2>& points,
+                const std::vector<SurfacePoint>& results) {
     for (std::size_t i = 0; i < points.size(); ++i) {
         const SurfacePoint& s = results[i];
-        const double ground = scene.terrain.height_at(points[i]);
         if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
-        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{},{},{:.4g}\n",
+        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g}\n",
                        points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                       s.velocity.y, s.velocity.z, s.jacobian, scene.water_level - ground,
-                       shore ? fmt::format("{:.6g}", s.shore_distance) : std::string("nan"), s.height > ground ? 1 : 0,
-                       s.foam);
+                       s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.shore_distance, s.wet ? 1 : 0, s.foam);
         if (buffer.size() > (1u << 20)) {
             sink(buffer);
             buffer.clear();
@@ -92,7 +87,7 @@ int run_query(const QueryArgs& a) {
             if (!scene->ocean.shore()) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
             ++unconverged;
         }
-        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *scene, *points, results);
+        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *points, results);
     }
     sink(buffer);
     if (unconverged > 0) {
@@ -121,8 +116,8 @@ Verb add_query_verb(CLI::App& app) {
         ->check(CLI::IsMember({"cpu", "gpu"}))
         ->capture_default_str();
     cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam\n"
-                "(SI units; height is world y; depth = level - terrain at the point; wet = 1 where the surface is\n"
-                "above the terrain; shore_distance > 0 over water, nan if the scene has no shore model; foam 0..1).");
+                "(SI units; height is world y; depth = level - terrain at the point and shore_distance (> 0 over\n"
+                "water) come from the shore model, inf without one; wet = 1 where the surface is above the terrain; foam 0..1).");
     return {cmd, [args] { return run_query(*args); }};
 }
 

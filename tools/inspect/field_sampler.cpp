@@ -29,8 +29,8 @@ const std::vector<FieldInfo>& field_infos() {
         {"velocity", 3, "m/s", "water particle velocity"},
         {"jacobian", 1, "1", "horizontal-map determinant: 1 flat, toward 0 where crests fold"},
         {"foam", 1, "1", "0..1 foam the physics makes (breaking or folding crests)"},
-        {"depth", 1, "m", "water column: level - terrain at the point"},
-        {"shore_distance", 1, "m", "signed distance to the shoreline (+ over water; NaN without a shore model)"},
+        {"depth", 1, "m", "still-water depth at the point: level - terrain (inf without a shore model)"},
+        {"shore_distance", 1, "m", "signed distance to the shoreline (+ over water; inf without a shore model)"},
         {"wet", 1, "1", "1 where the surface stands above the terrain"},
     };
     return infos;
@@ -76,17 +76,16 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const SurfacePoint& p = out[k];
-        const double ground = scene.terrain.height_at(where[k]);
         s.surface[k] = {where[k].x, p.height, where[k].y};
         s.height[k] = p.height;
-        s.displacement[k] = {p.displacement.x, p.height - scene.water_level, p.displacement.y};
+        s.displacement[k] = {p.displacement.x, p.height - scene.water_level(), p.displacement.y};
         s.normal[k] = p.normal;
         s.velocity[k] = p.velocity;
         s.jacobian[k] = p.jacobian;
         s.foam[k] = p.foam;
-        s.depth[k] = scene.water_level - ground;
-        s.shore_distance[k] = s.has_shore ? p.shore_distance : std::numeric_limits<double>::quiet_NaN();
-        s.wet[k] = p.height > ground ? 1.0 : 0.0;
+        s.depth[k] = p.depth;
+        s.shore_distance[k] = p.shore_distance;
+        s.wet[k] = p.wet ? 1.0 : 0.0;
     }
     return s;
 }

@@ -180,7 +180,7 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
             const std::size_t k = grid.index(i, j);
             const glm::dvec2 p = grid.point(i, j);
             land_points->SetPoint(static_cast<vtkIdType>(k), p.x, m->terrain[k], p.y);
-            ground->SetValue(static_cast<vtkIdType>(k), m->terrain[k] - scene.water_level);
+            ground->SetValue(static_cast<vtkIdType>(k), m->terrain[k] - scene.water_level());
         }
     m->surface = grid_strips(grid, surface_points, [](int, int) { return true; });
     m->scalars->SetName("field");
@@ -193,7 +193,7 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
         double top = -INFINITY;
         for (int dj = 0; dj < 2; ++dj)
             for (int di = 0; di < 2; ++di) top = std::max(top, m->terrain[grid.index(i + di, j + dj)]);
-        return top > scene.water_level - kHiddenSeabed;
+        return top > scene.water_level() - kHiddenSeabed;
     });
     m->land->GetPointData()->SetScalars(ground);
 

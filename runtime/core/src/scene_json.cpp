@@ -368,8 +368,8 @@ Status bake_scene_shore(Scene& scene) {
     std::shared_ptr<const ShoreWaves> model;
     if (scene.shore.enabled) {
         auto made = scene.shore.bake_folder.empty()
-                        ? ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level, scene.shore.options)
-                        : load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level, scene.terrain);
+                        ? ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level(), scene.shore.options)
+                        : load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), scene.terrain);
         if (!made) return made.error();
         if (!(*made)->trivial()) model = std::move(made).value();
     }
@@ -390,10 +390,10 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
     if (auto st = r->string("name", scene.name); !st) return st.error();
-    if (auto st = r->number("water_level", scene.water_level, true); !st) return st.error();
-    if (std::abs(scene.water_level) > kMaxAbsHeight) {
-        return r->error("water_level",
-                        fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", scene.water_level));
+    double level = 0.0;
+    if (auto st = r->number("water_level", level, true); !st) return st.error();
+    if (std::abs(level) > kMaxAbsHeight) {
+        return r->error("water_level", fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", level));
     }
     if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
     auto terrain = read_terrain(*r, base_dir);
@@ -402,7 +402,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!r->has("ocean")) return r->error("ocean", "required ocean (a preset name, a file or an object) is missing");
     auto profile = read_ocean(r->at("ocean"), source, base_dir);
     if (!profile) return profile.error();
-    auto body = WaterBody::create(*profile, scene.water_level, r->context("ocean"), &scene.warnings);
+    auto body = WaterBody::create(*profile, level, r->context("ocean"), &scene.warnings);
     if (!body) return body.error();
     scene.ocean = std::move(body).value();
     // The waves feel the shore unless the scene turns it off; deep water everywhere needs no model.

@@ -48,7 +48,7 @@ Status validate_camera(const Camera& c) {
     return {};
 }
 
-FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, double water_level,
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
                      const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy) {
     FramePlan plan;
     const Camera& cam = info.camera;
@@ -72,7 +72,7 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     // Tessellation scale: about one vertex every 3 pixels.
     const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
     const double tess_scale = static_cast<double>(extent.height) / (6.0 * tan_half);
-    f.params = glm::vec4(static_cast<float>(water_level), static_cast<float>(water.waves().size()),
+    f.params = glm::vec4(static_cast<float>(water.level()), static_cast<float>(water.waves().size()),
                          static_cast<float>(tess_scale), static_cast<float>(static_cast<std::uint32_t>(info.view)));
     f.terrain_rect = glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
                                static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),

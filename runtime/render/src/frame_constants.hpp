@@ -31,7 +31,7 @@ glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_pla
 
 Status validate_camera(const Camera& camera);
 
-FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, double water_level,
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
                      const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy);
 
 }  // namespace tidewater::render::detail

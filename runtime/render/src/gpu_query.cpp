@@ -226,7 +226,10 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
         if (shore) {
             o.depth = static_cast<double>(r.shore.x);
             o.shore_distance = static_cast<double>(r.shore.y);
+        } else {
+            o.depth = o.shore_distance = kDeepWater;
         }
+        o.wet = tidewater::detail::surface_wet(o.height, body.level(), o.depth);
         o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, crest_foam(o.jacobian));  // as detail::surface_foam
     }
     return {};

@@ -69,7 +69,6 @@ struct Renderer::Impl {
     // Scene data.
     bool has_scene = false;
     WaterBody ocean;
-    double water_level = 0.0;
     detail::TerrainPlacement placement;
     double water_half_size = 3000.0;
     GpuBuffer terrain_vertices, terrain_indices;
@@ -341,7 +340,7 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     slot = &slots[frame.frame_index % slots.size()];
     slot->recorded_frame = frame.frame_index;
-    plan = detail::plan_frame(frame, extent, ocean, water_level, placement, water_half_size, scene_copy);
+    plan = detail::plan_frame(frame, extent, ocean, placement, water_half_size, scene_copy);
     if (uploaded_shore) {
         const glm::dvec2 rel = uploaded_shore->corner() - plan.origin;
         plan.frame.shore_rect = glm::vec4(static_cast<float>(rel.x), static_cast<float>(rel.y),
@@ -459,7 +458,6 @@ Status Renderer::set_scene(const Scene& scene) {
     m.placement.height_rect_corner = scene.terrain.extent_center() - glm::dvec2(half);
     m.placement.height_rect_size = 2.0 * half;
     m.water_half_size = std::max(3000.0, half);
-    m.water_level = scene.water_level;
     m.ocean = scene.ocean;
     if (auto st = m.upload_shore(scene.ocean.shore()); !st) return st;
     m.has_scene = true;

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 
 #include <glm/vec2.hpp>
@@ -22,20 +23,35 @@
 
 namespace tidewater {
 
+/// Depth and shore distance of water with no known bottom or shore.
+inline constexpr double kDeepWater = std::numeric_limits<double>::infinity();
+
 struct SurfacePoint {
     double height = 0.0;             ///< World y of the surface, m.
     glm::dvec3 normal{0.0, 1.0, 0.0};  ///< Unit normal of the displaced surface.
     glm::dvec2 displacement{0.0};    ///< Horizontal offset of this particle from its rest position, m.
     glm::dvec3 velocity{0.0};        ///< Water particle velocity, m/s.
     double jacobian = 1.0;           ///< Horizontal-map determinant; -> 0 where crests fold (foam).
-    double depth = 0.0;              ///< Water column under the rest position (level - terrain), m; 0 without a shore model.
-    double shore_distance = 0.0;     ///< Signed distance to the shoreline, m (+ over water); 0 without a shore model.
+    /// Still-water depth at the query point: the body's level minus the terrain there, m
+    /// (< 0 on land), from the shore model's grid. +infinity where the body has no shore
+    /// model (open water: no bottom is known).
+    double depth = kDeepWater;
+    /// Signed distance from the query point to the shoreline, m (+ over water, - on land),
+    /// from the shore model; +infinity without one.
+    double shore_distance = kDeepWater;
+    /// The surface stands above the terrain at the query point: height > level - depth.
+    bool wet = true;
     /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian)). The water shader
     /// adds visual detail on top (foam riding the crests, swash bands along the coast).
     double foam = 0.0;
     int iterations = 0;              ///< Newton evaluations used.
     bool converged = true;
 };
+
+namespace detail {
+/// SurfacePoint::wet, the one definition every backend uses.
+inline bool surface_wet(double height, double level, double depth) { return height > level - depth; }
+}  // namespace detail
 
 struct QueryOptions {
     /// Worker threads; 0 uses every hardware thread. Small batches run on the caller's thread.

@@ -36,12 +36,15 @@ struct SceneShore {
 
 struct Scene {
     std::string name;
-    double water_level = 0.0;  ///< m, world y of the rest water surface.
     Terrain terrain;
-    WaterBody ocean;           ///< Its shore() is the model the waves feel (null: none or all deep water).
+    /// The water; its level() is the scene's rest water level (stored only there) and its
+    /// shore() the model the waves feel (null: none or all deep water).
+    WaterBody ocean;
     SceneShore shore;
     std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
+
+    double water_level() const { return ocean.level(); }  ///< m, world y of the rest water surface.
 };
 
 struct SceneLoadOptions {

@@ -135,9 +135,9 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, con
         store(r.iterations, it);
         store(r.converged, conv);
         if (shore) {
-            store(shore->depth, depth);
+            store(shore->depth_at_point, depth);
             store(shore->breaking, breaking);
-            store(shore->shore_distance, distance);
+            store(shore->shore_distance_at_point, distance);
         }
         for (std::size_t l = 0; l < used; ++l) {
             SurfacePoint& o = full[l];
@@ -148,8 +148,9 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, con
             o.jacobian = jac[l];
             o.iterations = static_cast<int>(it[l]);
             o.converged = conv[l] != 0.0;
-            o.depth = shore ? depth[l] : 0.0;
-            o.shore_distance = shore ? distance[l] : 0.0;
+            o.depth = shore ? depth[l] : kDeepWater;
+            o.shore_distance = shore ? distance[l] : kDeepWater;
+            o.wet = surface_wet(o.height, in.waves->level, o.depth);
             o.foam = surface_foam(shore ? breaking[l] : 0.0, jac[l]);
         }
     }

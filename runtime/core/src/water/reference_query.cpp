@@ -22,8 +22,8 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     if (shore) {
         detail::ShoreWater<double> water(waves, *shore, &point.x, &point.y, base.data());
         r = detail::solve_rest_offset<true, double>(water, waves.tolerance, waves.radius);
-        o.depth = water.depth;
-        o.shore_distance = water.shore_distance;
+        o.depth = water.depth_at_point;
+        o.shore_distance = water.shore_distance_at_point;
         breaking = water.breaking;
     } else {
         detail::OpenSeaWater<double> water(waves, base.data());
@@ -31,6 +31,7 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     }
     const detail::PointState<double> p = detail::point_state(r);
     o.height = waves.level + p.eta;
+    o.wet = detail::surface_wet(o.height, waves.level, o.depth);
     o.normal = {p.nx, p.ny, p.nz};
     o.displacement = {p.disp_x, p.disp_z};
     o.velocity = {r.sums.vx, r.sums.vy, r.sums.vz};

@@ -43,6 +43,11 @@ public:
             edge_lane_[l] = true;
             cell_u_[l] = cell_v_[l] = Scalar(0);
         }
+        // The still water at the query points themselves (rest offset 0, where Newton
+        // starts: the taps fetched here serve its first evaluation).
+        locate(T(0.0), T(0.0));
+        depth_at_point = depth_;
+        shore_distance_at_point = blend(4 * w_.count + 3);
     }
 
     template <bool kVelocity>
@@ -66,14 +71,12 @@ public:
         return SurfaceSums<T>(s);
     }
 
-    /// Keeps the shore values sampled by the last evaluation for the lanes in `m`.
-    void record(Mask m) {
-        depth = Ops::select(m, depth_, depth);
-        breaking = Ops::select(m, blend(4 * w_.count + 1), breaking);
-        shore_distance = Ops::select(m, blend(4 * w_.count + 3), shore_distance);
-    }
+    /// Keeps the breaking sampled by the last evaluation for the lanes in `m`.
+    void record(Mask m) { breaking = Ops::select(m, blend(4 * w_.count + 1), breaking); }
 
-    T depth = T(0.0), breaking = T(0.0), shore_distance = T(0.0);  ///< at the recorded rest positions
+    T breaking = T(0.0);  ///< at the recorded rest positions: the foam of the particle's wave
+    /// Still-water depth (level - terrain) and signed shore distance at the query points, m.
+    T depth_at_point = T(0.0), shore_distance_at_point = T(0.0);
 
 private:
     /// Finds each lane's place in its cell at rest offset e. Newton moves the rest position
