@@ -2,6 +2,7 @@
 // on steep seas, determinism. Tolerances are stated next to each check.
 #include <cmath>
 #include <cstring>
+#include "tidewater/detail/reference.hpp"
 
 #include "kernel/kernel_waves.hpp"
 #include "test_helpers.hpp"

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "test_helpers.hpp"
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/shore_bake.hpp"
 

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"

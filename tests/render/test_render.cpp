@@ -12,6 +12,7 @@
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "tidewater/shore_waves.hpp"
+#include "vk_util.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace tidewater {
@@ -320,6 +321,17 @@ TEST_F(RenderTest, SmallCameraMovesDoNotPop) {
     EXPECT_LT(within, 0.02);
     EXPECT_LT(across, 0.02);
     EXPECT_LT(across, 3.0 * within + 0.005) << "crossing the origin grid adds no visible jump";
+}
+
+// A failed Vulkan call reaches the host as device_error with its VkResult as a field,
+// not only inside the message.
+TEST(VulkanErrors, KeepTheVkResult) {
+    const Error e = render::detail::vk_error(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+    EXPECT_EQ(e.code, ErrorCode::device_error);
+    EXPECT_EQ(e.vk_result, static_cast<std::int32_t>(VK_ERROR_DEVICE_LOST));
+    EXPECT_NE(e.message.find("vkQueueSubmit"), std::string::npos);
+    EXPECT_NE(e.message.find("VK_ERROR_DEVICE_LOST"), std::string::npos);
+    EXPECT_EQ(Error{}.vk_result, 0);
 }
 
 TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/tidewater.hpp"
 
 namespace {

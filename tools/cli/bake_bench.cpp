@@ -7,6 +7,7 @@
 #include <memory>
 #include <thread>
 
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/shore_bake.hpp"

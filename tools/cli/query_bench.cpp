@@ -9,6 +9,7 @@
 #include <random>
 #include <thread>
 
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/gerstner.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/spectrum.hpp"

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <random>
 
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"

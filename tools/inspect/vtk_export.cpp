@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <fstream>
 
-#include "tidewater/atomic_folder.hpp"
+#include "tidewater/detail/atomic_folder.hpp"
 #include "vtk_output.hpp"
 
 namespace tidewater::inspect {
@@ -116,7 +116,7 @@ Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& 
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
     ExportStats stats;
-    auto st = write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
+    auto st = detail::write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
         if (auto written = write_series(temp, scene, grid, times, threads, progress, stats); !written) return written;
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(temp, ec))

@@ -1,9 +1,9 @@
-#include "tidewater/atomic_folder.hpp"
+#include "tidewater/detail/atomic_folder.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
-namespace tidewater {
+namespace tidewater::detail {
 
 namespace fs = std::filesystem;
 
@@ -40,4 +40,4 @@ Status write_folder_atomically(const fs::path& dir, const std::function<Status(c
     return {};
 }
 
-}  // namespace tidewater
+}  // namespace tidewater::detail

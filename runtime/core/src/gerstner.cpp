@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/reference.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/shore_water.hpp"
 

@@ -26,8 +26,9 @@ const char* vk_result_name(VkResult result) {
 }
 
 Error vk_error(VkResult result, const char* call) {
-    return Error{ErrorCode::device_error, fmt::format("Vulkan: {} failed with {} ({})", call, vk_result_name(result),
-                                                  static_cast<int>(result))};
+    return Error{ErrorCode::device_error,
+                 fmt::format("Vulkan: {} failed with {} ({})", call, vk_result_name(result), static_cast<int>(result)),
+                 static_cast<std::int32_t>(result)};
 }
 
 void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,

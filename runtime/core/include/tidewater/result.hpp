@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cassert>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -31,6 +32,9 @@ std::string_view to_string(ErrorCode code) noexcept;
 struct Error {
     ErrorCode code = ErrorCode::invalid_argument;
     std::string message;
+    /// For device_error: the VkResult the failing Vulkan call returned (a VkResult value,
+    /// kept as an integer so the core needs no Vulkan headers); 0 (VK_SUCCESS) otherwise.
+    std::int32_t vk_result = 0;
 };
 
 template <typename T>

@@ -70,9 +70,5 @@ struct ShoreField {
 /// (naming where) or out-of-range options.
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
 
-namespace reference {
-/// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and tests).
-double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p);
-}  // namespace reference
 
 }  // namespace tidewater

@@ -1,4 +1,5 @@
 #include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/reference.hpp"
 #include "parallel.hpp"
 
 #include <algorithm>

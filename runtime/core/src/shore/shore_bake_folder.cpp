@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "json_reader.hpp"
-#include "tidewater/atomic_folder.hpp"
+#include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/image_io.hpp"
 
@@ -161,7 +161,7 @@ Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
     if (contents.model->wave_count() != contents.waves->size())
         return Error{ErrorCode::invalid_argument, fmt::format("save_shore_bake: the model has {} waves, the wave set {}",
                                                               contents.model->wave_count(), contents.waves->size())};
-    return write_folder_atomically(dir, [&](const fs::path& temp) { return write_bake(temp, contents); });
+    return detail::write_folder_atomically(dir, [&](const fs::path& temp) { return write_bake(temp, contents); });
 }
 
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,

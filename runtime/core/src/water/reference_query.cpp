@@ -4,6 +4,7 @@
 #include <array>
 
 #include "kernel/kernel_waves.hpp"
+#include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
 #include "water/newton.hpp"
 #include "water/open_sea_water.hpp"
