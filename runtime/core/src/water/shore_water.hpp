@@ -1,13 +1,14 @@
 // Water near a shore at rest offsets from a batch of query points (private): each
 // wave's wavevector, amplitude, steepness and phase come from the shore fields at
 // the rest position, sampled bilinearly between texel centres and clamped at the
-// edges (ShoreWaves::sample in the same arithmetic). A provider for solve_rest_offset.
+// edges (as ShoreWaves::sample does in double). A provider for solve_rest_offset.
 //
 // The fields come from ShoreWaves::query_texels(): per texel, kQueryTexelStride(W)
 // floats: W phase residuals, W amplitude factors, W wavevector x, W wavevector z, then
 // depth, breaking, steepness scale and shore distance. The four texels around each
-// lane's rest position are copied once into lane-major rows and reused until the rest
-// position leaves that cell (Newton moves it by far less than a texel).
+// lane's rest position are transposed once into lane-major rows, in the bilinear form
+// c0 + c1 u + c2 v + c3 u v, and reused until the rest position leaves that cell
+// (Newton moves it by far less than a texel).
 #pragma once
 
 #include <algorithm>
