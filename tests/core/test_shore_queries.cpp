@@ -176,6 +176,23 @@ std::vector<glm::dvec2> coast_points() {
     return pts;
 }
 
+// A point's answer depends on the point alone: one large call (solved in shore-tile
+// order) and many small calls of 37 points (caller's order, other batch neighbours)
+// give the same bits, heights-only calls included.
+TEST(ShoreQuery, BitIdenticalForAnyBatching) {
+    const auto pts = coast_points();
+    const auto whole = run(island().ocean, pts, 1);
+    std::vector<SurfacePoint> pieces(pts.size());
+    std::vector<double> heights(pts.size());
+    ASSERT_TRUE(query_heights(island().ocean, 55.5, pts, heights).ok());
+    for (std::size_t at = 0; at < pts.size(); at += 37) {
+        const std::size_t n = std::min<std::size_t>(37, pts.size() - at);
+        ASSERT_TRUE(query_surface(island().ocean, 55.5, std::span(pts.data() + at, n), std::span(pieces.data() + at, n)).ok());
+    }
+    expect_identical(whole, pieces);
+    for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0) << i;
+}
+
 TEST(ShoreQuery, BitIdenticalForAnyThreadCount) {
     const auto pts = coast_points();
     const auto one = run(island().ocean, pts, 1);
