@@ -36,7 +36,7 @@ void main() {
     if (id >= params.point_count) return;
     g_point = points[id];
     // Depth and shore distance belong to the query point itself (rest offset 0).
-    vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(cell_origin[g_point.cell] + g_point.local)) : vec4(1e9, 0.0, 1.0, 1e9);
+    vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(cell_origin[g_point.cell] + g_point.local)) : kOpenWaterShore;
     NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset));
     GpuQueryResult r;
     // First-order carry to the final step, as on the CPU.

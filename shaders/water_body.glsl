@@ -5,9 +5,12 @@
 #ifndef TIDEWATER_WATER_BODY_GLSL
 #define TIDEWATER_WATER_BODY_GLSL
 
+// The shared shore fields of open water: deep, no breaking, full steepness, no shore.
+const vec4 kOpenWaterShore = vec4(1e9, 0.0, 1.0, 1e9);
+
 // What the shore fields hold at the last evaluated position: depth (m), breaking,
-// steepness scale, shore distance (m). Open water: deep, no breaking, no shore.
-vec4 g_shore_fields = vec4(1e9, 0.0, 1.0, 1e9);
+// steepness scale, shore distance (m).
+vec4 g_shore_fields = kOpenWaterShore;
 
 // The sums at a rest position `rel` (m, from the phase origin) that lies at `shore_rel`
 // from the shore grid's corner. `fade_spacing` > 0 fades waves shorter than a few
@@ -16,7 +19,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
     SurfaceSums s = surface_zero();
     ShoreTap tap;
     uint texels = SHORE_RESOLUTION * SHORE_RESOLUTION;
-    g_shore_fields = vec4(1e9, 0.0, 1.0, 1e9);
+    g_shore_fields = kOpenWaterShore;
     if (shore) {
         tap = shore_tap(shore_rel);
         g_shore_fields = tap_shared(tap);
