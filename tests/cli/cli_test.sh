@@ -188,7 +188,7 @@ case "$CASE" in
     check "no partial PNG anywhere" bash -c "! ls o.png* no 2>/dev/null"
     ;;
   bake)
-    "$TW" bake --resolution 128 --out baked --quiet > log.txt
+    "$TW" bake --resolution 256 --out baked --quiet > log.txt
     check "exit 0" test $? -eq 0
     for f in distance_signed_distance.png distance_gradient_x.png distance_gradient_z.png distance_depth.png depth.png \
              shore_distance.png breaking.png steepness_scale.png shore.json shorelines.json; do
@@ -212,11 +212,13 @@ case "$CASE" in
     "$TW" bake --resolution 64 --model-resolution 32 --out baked --quiet > /dev/null
     check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && grep -q '\"resolution\": 32' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"
     expect_error "bad resolution" "resolution" "$TW" bake --resolution 4 --out b2
+    expect_error "distance field coarser than the model" "coarser than the shore model" "$TW" bake --resolution 128 --out b4
+    check "no folder after a refused bake" test ! -e b4
     check "no folder after a failed bake" test ! -e b2
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "x.png", "size": [100, 100], "height_range": [5, -5]}}, "ocean": "pool_calm"}' > inverted.json
     expect_error "inverted height range" "height_range" "$TW" bake --scene inverted.json --out b3
     touch plain
-    expect_error "unwritable folder" "cannot create folder" "$TW" bake --resolution 32 --out plain/sub --quiet
+    expect_error "unwritable folder" "cannot create folder" "$TW" bake --resolution 32 --model-resolution 32 --out plain/sub --quiet
 
     # A bake that does not fit the scene is refused, naming the file and field.
     sed 's|"water_level": 0.0|"water_level": 0.5|' loads_bake.json > other_level.json

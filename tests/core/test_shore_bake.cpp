@@ -4,9 +4,10 @@
 #include <cmath>
 
 #include "test_helpers.hpp"
+#include "../baked_scene.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/ripples.hpp"
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -104,7 +105,7 @@ TEST(ShoreBake, RingLagoonMatchesExactDistance) {
 }
 
 TEST(ShoreBake, CgalDistanceEqualsBruteForce) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     BakeOptions o;
     o.resolution = 128;

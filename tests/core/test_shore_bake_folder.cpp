@@ -1,11 +1,13 @@
 // Saved shore bakes: a model survives saving and loading within its 16-bit encoding,
-// bakes that do not fit the scene are refused, and an editor re-bakes with a call.
+// and bakes that do not fit the scene are refused.
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
+#include "../baked_scene.hpp"
 #include "test_helpers.hpp"
-#include "tidewater/shore_bake_folder.hpp"
+#include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/shore_bake_folder.hpp"
 
 namespace tidewater {
 namespace {
@@ -45,7 +47,7 @@ double half_step(const std::vector<float>& v) {
 
 TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     TempDir dir;
-    auto scene = parse_scene(kIslandScene, "island");
+    auto scene = test::baked(parse_scene(kIslandScene, "island"));
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     ASSERT_TRUE(scene->ocean.shore());
     const ShoreWaves& model = *scene->ocean.shore();
@@ -94,7 +96,7 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
 
 TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     TempDir dir;
-    auto scene = parse_scene(kIslandScene, "island");
+    auto scene = test::baked(parse_scene(kIslandScene, "island"));
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     ShoreBakeContents contents;
     contents.model = scene->ocean.shore().get();
@@ -123,7 +125,7 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     Gray16Image small;
     small.width = small.height = 8;
     small.pixels.assign(64, 0);
-    ASSERT_TRUE(write_png_gray16(folder / "breaking.png", small).ok());
+    ASSERT_TRUE(detail::write_png_gray16(folder / "breaking.png", small).ok());
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("8x8"), std::string::npos);
     EXPECT_FALSE(load_shore_bake(dir.path / "nowhere", scene->ocean.waves(), 0.0, scene->terrain).ok());
 
@@ -132,35 +134,6 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     EXPECT_FALSE(save_shore_bake(dir.path / "plain" / "bake", contents).ok());
     for (const auto& e : fs::directory_iterator(dir.path))
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
-}
-
-TEST(ShoreBakeFolder, EditorRebakesAfterATerrainEdit) {
-    // Deep water everywhere: no shore model.
-    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling",
-                                 "shore": {"resolution": 64}})",
-                             "edit");
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    EXPECT_FALSE(scene->ocean.shore());
-    // The editor raises an island and re-bakes: the waves now stop on its land.
-    IslandTerrain island;
-    island.radius = 300.0;
-    island.height = 40.0;
-    island.seabed = -30.0;
-    scene->terrain = Terrain(island);
-    ASSERT_TRUE(bake_scene_shore(*scene).ok());
-    ASSERT_TRUE(scene->ocean.shore());
-    std::vector<glm::dvec2> centre{{0.0, 0.0}};
-    std::vector<SurfacePoint> out(1);
-    ASSERT_TRUE(query_surface(scene->ocean, 3.0, centre, out).ok());
-    EXPECT_NEAR(out[0].height, 0.0, 1e-9);  // dry land: nothing moves
-    // Turning the shore off removes the model; a failed re-bake leaves the scene as it was.
-    scene->shore.enabled = false;
-    ASSERT_TRUE(bake_scene_shore(*scene).ok());
-    EXPECT_FALSE(scene->ocean.shore());
-    scene->shore.enabled = true;
-    scene->shore.options.resolution = 3;
-    EXPECT_FALSE(bake_scene_shore(*scene).ok());
-    EXPECT_FALSE(scene->ocean.shore());
 }
 
 TEST(ShoreBakeFolder, ModelFromFieldsChecksSizesAndValues) {

@@ -12,7 +12,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "../baked_scene.hpp"
 #include "tidewater/detail/reference.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
@@ -22,7 +24,7 @@ namespace {
 
 const Scene& island() {
     static const Scene scene = [] {
-        auto s = default_scene();
+        auto s = test::baked(default_scene());
         EXPECT_TRUE(s.ok()) << (s ? "" : s.error().message);
         return std::move(s).value();
     }();

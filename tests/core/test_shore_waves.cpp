@@ -5,10 +5,17 @@
 
 #include "test_helpers.hpp"
 #include "tidewater/dispersion.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater {
 namespace {
+
+/// Bake options for a model of `n` x `n` texels.
+ShoreWaveOptions grid(int n) {
+    ShoreWaveOptions o;
+    o.resolution = n;
+    return o;
+}
 
 TEST(Dispersion, SolvesTheRelationWithItsLimits) {
     for (double omega : {0.3, 1.0, 3.0})
@@ -86,7 +93,7 @@ TEST(ShoreWaves, PlanarBeachShoalsAsLinearTheory) {
     const Beach beach = planar_beach();
     const double omega = deep_water_omega(100.0), a0 = 0.3;
     const WaveSet set = single_wave(omega, a0, 0.5);
-    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, {512, 0, 0.78});
+    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
     ASSERT_TRUE(shore.ok()) << shore.error().message;
     double worst = 0.0;
     int checked = 0;
@@ -108,7 +115,7 @@ TEST(ShoreWaves, BreaksAtTheDepthLimitAndStopsOnLand) {
     const Beach beach = planar_beach();
     const double omega = deep_water_omega(100.0);
     const WaveSet set = single_wave(omega, 1.2, 0.8);
-    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, {512, 0, 0.78});
+    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
     ASSERT_TRUE(shore.ok()) << shore.error().message;
     double worst_excess = -1e9, foam_in_surf = 0.0;
     for (double h = 12.0; h > 0.2; h *= 0.85) {
@@ -141,7 +148,7 @@ TEST(ShoreWaves, ObliqueIncidenceFollowsSnellsLaw) {
     const double omega = deep_water_omega(80.0), k0 = omega * omega / kGravity;
     for (double theta0 : {30.0, 60.0}) {
         const WaveSet set = single_wave(omega, 0.2, 0.5, theta0);
-        auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, {512, 0, 0.78});
+        auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
         ASSERT_TRUE(shore.ok()) << shore.error().message;
         const double along = k0 * std::sin(theta0 * kPi / 180.0);
         double worst_along = 0.0, worst_cross = 0.0;
@@ -162,7 +169,7 @@ TEST(ShoreWaves, ObliqueIncidenceFollowsSnellsLaw) {
 
 TEST(ShoreWaves, BodyRefusesAShoreBakedForOtherWaves) {
     const WaveSet one = single_wave(deep_water_omega(50.0), 0.3, 0.5);
-    auto shore = ShoreWaves::bake(one, Terrain(planar_beach().plane), 0.0, {64, 0, 0.78});
+    auto shore = ShoreWaves::bake(one, Terrain(planar_beach().plane), 0.0, grid(64));
     ASSERT_TRUE(shore.ok());
     const WaterBody two = test::make_body(test::random_waves(2, 0.3, 1));
     auto refused = two.with_shore(*shore);

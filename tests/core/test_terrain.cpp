@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "test_helpers.hpp"
-#include "tidewater/image_io.hpp"
+#include "tidewater/detail/image_io.hpp"
 
 namespace tidewater {
 namespace {
@@ -37,7 +37,7 @@ Gray16Image cone(int n) {
 // the 16-bit quantisation (40 m / 65535 = 0.6 mm) at pixel centres.
 TEST(Terrain, HeightmapRoundTripsThroughPng) {
     const fs::path dir = temp_dir("tidewater_heightmap_test");
-    ASSERT_TRUE(write_png_gray16(dir / "cone.png", cone(65)).ok());
+    ASSERT_TRUE(detail::write_png_gray16(dir / "cone.png", cone(65)).ok());
     std::ofstream(dir / "scene.json") << R"({"version": 1, "water_level": 0,
         "terrain": {"heightmap": {"file": "cone.png", "size": [640, 640], "height_range": [-20, 20], "center": [100, 0]}},
         "ocean": "pool_calm"})";
@@ -57,7 +57,7 @@ TEST(Terrain, BadHeightmapsNameTheFile) {
     const fs::path dir = temp_dir("tidewater_bad_heightmap_test");
     std::ofstream(dir / "garbage.png") << "this is not a png";
     const std::vector<std::uint8_t> rgba(4 * 4 * 4, 200);
-    ASSERT_TRUE(write_png_rgba8(dir / "colour.png", 4, 4, rgba).ok());
+    ASSERT_TRUE(detail::write_png_rgba8(dir / "colour.png", 4, 4, rgba).ok());
     auto scene_text = [](const char* file) {
         return std::string(R"({"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": ")") + file +
                R"(", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"})";

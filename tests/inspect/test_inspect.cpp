@@ -16,7 +16,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "tidewater/image_io.hpp"
+#include "../baked_scene.hpp"
+#include "tidewater/detail/image_io.hpp"
 #include "tidewater/query.hpp"
 #include "vtk_output.hpp"
 #include "vtk_viewer.hpp"
@@ -31,7 +32,7 @@ fs::path temp_dir(const std::string& name) {
 }
 
 TEST(Inspect, ExportReadsBackWithTheQueriesValues) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     SampleGrid grid;
     grid.min = {-900.0, -700.0};
@@ -78,7 +79,7 @@ TEST(Inspect, ExportReadsBackWithTheQueriesValues) {
 }
 
 TEST(Inspect, ExportRefusesBadInputAndLeavesNothing) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     SampleGrid grid;
     grid.nx = 40000, grid.nz = 25000;  // 10^9 points
@@ -93,7 +94,7 @@ TEST(Inspect, ExportRefusesBadInputAndLeavesNothing) {
 }
 
 /// Pixels that differ from the background colour (the renderer's clear colour).
-double coverage(const Rgba8Image& img, int x0, int x1) {
+double coverage(const detail::Rgba8Image& img, int x0, int x1) {
     const std::uint8_t* bg = &img.pixels[0];
     std::size_t differ = 0, total = 0;
     for (int y = 0; y < img.height; ++y)
@@ -106,20 +107,20 @@ double coverage(const Rgba8Image& img, int x0, int x1) {
 }
 
 TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     SampleGrid grid;
     grid.min = {-1200.0, -1200.0};
     grid.max = {1200.0, 1200.0};
     grid.nx = grid.nz = 96;
-    std::vector<Rgba8Image> pictures;
+    std::vector<detail::Rgba8Image> pictures;
     for (const char* field : {"height", "foam"}) {
         const fs::path png = temp_dir(std::string(field) + ".png");
         ScreenshotOptions o;
         o.field = field;
         o.width = 640, o.height = 360;
         ASSERT_TRUE(screenshot(*scene, grid, 3.0, o, png).ok()) << field;
-        auto img = read_png_rgba8(png);
+        auto img = detail::read_png_rgba8(png);
         ASSERT_TRUE(img.ok()) << img.error().message;
         EXPECT_EQ(img->width, 640);
         EXPECT_EQ(img->height, 360);
@@ -154,7 +155,7 @@ TEST(Inspect, ProbeFindsTheWavePeriod) {
     EXPECT_NEAR(p->dominant_period, period, 0.01 * period);
     const fs::path png = temp_dir("probe.png");
     ASSERT_TRUE(probe_chart(*p, png, 900, 300).ok());
-    auto img = read_png_rgba8(png);
+    auto img = detail::read_png_rgba8(png);
     ASSERT_TRUE(img.ok()) << img.error().message;
     EXPECT_EQ(img->width, 900);
     EXPECT_EQ(img->height, 300);
@@ -166,7 +167,7 @@ TEST(Inspect, ProbeFindsTheWavePeriod) {
 // The interactive viewer, driven without its event loop (offscreen): time, field and
 // glyph changes change the picture; a probe from it finds the sea's period.
 TEST(Inspect, ViewerStepsTimeSwitchesFieldsAndProbes) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     SampleGrid grid;
     grid.min = {-1200.0, -1200.0};
@@ -180,24 +181,24 @@ TEST(Inspect, ViewerStepsTimeSwitchesFieldsAndProbes) {
     auto shot = [&](const char* name) {
         const fs::path png = temp_dir(name);
         EXPECT_TRUE(v.save(png).ok());
-        auto img = read_png_rgba8(png);
+        auto img = detail::read_png_rgba8(png);
         fs::remove(png);
-        return img.ok() ? std::move(img).value() : Rgba8Image{};
+        return img.ok() ? std::move(img).value() : detail::Rgba8Image{};
     };
-    auto differ = [](const Rgba8Image& a, const Rgba8Image& b) {
+    auto differ = [](const detail::Rgba8Image& a, const detail::Rgba8Image& b) {
         std::size_t d = 0;
         for (std::size_t k = 0; k < std::min(a.pixels.size(), b.pixels.size()); ++k) d += a.pixels[k] != b.pixels[k];
         return static_cast<double>(d) / static_cast<double>(std::max<std::size_t>(1, a.pixels.size()));
     };
-    const Rgba8Image first = shot("v0.png");
+    const detail::Rgba8Image first = shot("v0.png");
     ASSERT_EQ(first.width, 480);
     ASSERT_TRUE(v.set_time_index(10).ok());
     EXPECT_DOUBLE_EQ(v.time(), 5.0);
-    const Rgba8Image later = shot("v1.png");
+    const detail::Rgba8Image later = shot("v1.png");
     EXPECT_GT(differ(first, later), 0.01) << "a later time looks the same";
     v.next_field();
     EXPECT_EQ(v.field(), "displacement");
-    const Rgba8Image other = shot("v2.png");
+    const detail::Rgba8Image other = shot("v2.png");
     EXPECT_GT(differ(later, other), 0.01) << "another field looks the same";
     v.set_glyphs(true);
     EXPECT_GT(differ(other, shot("v3.png")), 0.001) << "glyphs drew nothing";

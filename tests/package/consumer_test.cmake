@@ -25,6 +25,13 @@ if(MODE STREQUAL "find_package")
      AND NOT EXISTS ${WORK_DIR}/prefix/lib/x86_64-linux-gnu/cmake/Tidewater/TidewaterConfig.cmake)
     message(FATAL_ERROR "TidewaterConfig.cmake was not installed")
   endif()
+  # Installed headers hold what hosts call; the internal ones stay in the source tree.
+  if(EXISTS ${WORK_DIR}/prefix/include/tidewater/detail)
+    message(FATAL_ERROR "internal headers (tidewater/detail) were installed")
+  endif()
+  if(NOT EXISTS ${WORK_DIR}/prefix/include/tidewater/scene_bake.hpp)
+    message(FATAL_ERROR "the public header tidewater/scene_bake.hpp was not installed")
+  endif()
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build -G ${GENERATOR}
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix ${launcher})
 elseif(MODE STREQUAL "add_subdirectory")

@@ -8,6 +8,7 @@
 
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
+#include "../baked_scene.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -188,7 +189,7 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         init.log = [&](const std::string& m) { log.push_back(m); };
         auto renderer = render::Renderer::create(init);
         ASSERT_TRUE(renderer.ok()) << renderer.error().message;
-        auto scene = default_scene();
+        auto scene = test::baked(default_scene());
         ASSERT_TRUE(scene.ok());
         ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
 

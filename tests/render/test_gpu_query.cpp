@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "../core/test_helpers.hpp"
+#include "../baked_scene.hpp"
 #include "tidewater/render/gpu_query.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -112,7 +113,7 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
     auto q = render::GpuQuery::create(context());
     ASSERT_TRUE(q.ok()) << q.error().message;
     query_ = std::move(q).value();
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     ASSERT_NE(scene->ocean.shore(), nullptr);
     std::mt19937_64 rng(5);

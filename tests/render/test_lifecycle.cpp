@@ -18,6 +18,7 @@
 #include <unordered_map>
 
 #include "../core/test_helpers.hpp"
+#include "../baked_scene.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "vulkan_fixture.hpp"
@@ -118,9 +119,9 @@ struct Cycler {
     Scene island, flat, deep;
     std::vector<WaterBody> presets;
     Cycler() {
-        island = default_scene().value();
-        flat = parse_scene(R"({"version": 1, "water_level": 2, "terrain": {"plane": {"height": -10, "slope": [0.01, 0]}}, "ocean": "lake_rippled"})", "flat").value();
-        deep = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -50}}, "ocean": "pool_calm"})", "deep").value();
+        island = test::baked(default_scene()).value();
+        flat = test::baked(parse_scene(R"({"version": 1, "water_level": 2, "terrain": {"plane": {"height": -10, "slope": [0.01, 0]}}, "ocean": "lake_rippled"})", "flat")).value();
+        deep = test::baked(parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -50}}, "ocean": "pool_calm"})", "deep")).value();
         for (const auto& name : bundled_preset_names()) presets.push_back(WaterBody::create(*load_preset(name), 0.0, name).value());
     }
     void run(int i, const render::DeviceContext& ctx, render::Renderer& renderer, std::unique_ptr<render::OffscreenTarget>& target) {

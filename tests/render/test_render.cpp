@@ -8,10 +8,11 @@
 
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
-#include "tidewater/image_io.hpp"
+#include "../baked_scene.hpp"
+#include "tidewater/detail/image_io.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/render/standalone.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "vk_util.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -51,12 +52,12 @@ protected:
         if (const char* dir = std::getenv("TIDEWATER_TEST_IMAGE_DIR"); dir && img.ok()) {
             const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
             const auto path = std::filesystem::path(dir) / (std::string(info->name()) + "_" + std::to_string(dumped_++) + ".png");
-            EXPECT_TRUE(write_png_rgba8(path, img->width, img->height, img->pixels).ok());
+            EXPECT_TRUE(detail::write_png_rgba8(path, img->width, img->height, img->pixels).ok());
         }
         return img.ok() ? std::move(img).value() : render::RgbaImage{};
     }
     static Scene scene_from(const std::string& json) {
-        auto s = parse_scene(json, "test scene");
+        auto s = test::baked(parse_scene(json, "test scene"));
         EXPECT_TRUE(s.ok()) << s.error().message;
         return s.ok() ? std::move(s).value() : Scene{};
     }
@@ -73,7 +74,7 @@ bool is_land(Rgb c) { return c.g > c.b && c.r > 0.08; }  // grass, sand and rock
 // The default island from its own camera: sky above the horizon, land at the island's
 // middle, water offshore; a water pixel is not land-coloured and vice versa.
 TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     render::FrameInfo frame;
     frame.camera.position = scene->camera->position;
@@ -120,7 +121,7 @@ TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
 // the coast (found from the shore model along rays from the centre) shows breaking and
 // water 1.1 km out shows none.
 TEST_F(RenderTest, WavesBreakAlongTheCoastOnly) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     ASSERT_NE(scene->ocean.shore(), nullptr);
     render::FrameInfo frame;
@@ -232,7 +233,7 @@ TEST_F(RenderTest, FoamOnSteepCrestsOnly) {
 // and 99% of pixels within 10% (lavapipe rounding differs between LLVM builds).
 // TIDEWATER_UPDATE_REFERENCES=1 rewrites them.
 TEST_F(RenderTest, MatchesReferenceImages) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     const std::filesystem::path dir = TIDEWATER_REFERENCE_DIR;
     const bool update = std::getenv("TIDEWATER_UPDATE_REFERENCES") != nullptr;
@@ -247,11 +248,11 @@ TEST_F(RenderTest, MatchesReferenceImages) {
         const auto img = render(*scene, frame);
         const auto path = dir / ("default_" + std::string(render::to_string(view)) + ".png");
         if (update) {
-            ASSERT_TRUE(write_png_rgba8(path, img.width, img.height, img.pixels).ok());
+            ASSERT_TRUE(detail::write_png_rgba8(path, img.width, img.height, img.pixels).ok());
             continue;
         }
         ASSERT_TRUE(std::filesystem::exists(path)) << path << " (run with TIDEWATER_UPDATE_REFERENCES=1 to create)";
-        auto reference = read_png_rgba8(path);
+        auto reference = detail::read_png_rgba8(path);
         ASSERT_TRUE(reference.ok()) << reference.error().message;
         ASSERT_EQ(reference->width, img.width);
         ASSERT_EQ(reference->height, img.height);
@@ -299,7 +300,7 @@ TEST_F(RenderTest, WaterSurfaceHasNoCracks) {
 // move crosses a 64 m cell of the render origin (the origin jumps a whole cell
 // there, and every wave phase is re-based in double).
 TEST_F(RenderTest, SmallCameraMovesDoNotPop) {
-    auto scene = default_scene();
+    auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());
     auto frame_at = [&](double x) {
         render::FrameInfo frame;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tidewater/detail/reference.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/tidewater.hpp"
 
 namespace {
@@ -92,7 +93,7 @@ std::vector<glm::dvec2> harbour_points(const ShoreWaves& shore) {
 }
 
 void BM_ShoreHarbour(benchmark::State& state) {
-    static const Scene scene = default_scene().value();
+    static const Scene scene = *bake_scene(default_scene().value()).value();
     const auto pts = harbour_points(*scene.ocean.shore());
     std::vector<double> h(pts.size());
     std::vector<SurfacePoint> out(pts.size());

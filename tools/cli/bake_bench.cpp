@@ -10,8 +10,8 @@
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/ripples.hpp"
-#include "tidewater/shore_bake.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/spectrum.hpp"
 
 namespace tidewater::cli {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 
-#include "tidewater/image_io.hpp"
+#include "tidewater/detail/image_io.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
 
@@ -61,7 +61,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
         const std::string path = job.frames == 1 && !job.single_output.empty()
                                      ? job.single_output
                                      : (std::filesystem::path(job.output_dir) / fmt::format("frame_{:04}.png", i)).string();
-        if (auto st = write_png_rgba8(path, image->width, image->height, image->pixels); !st) return st.error();
+        if (auto st = detail::write_png_rgba8(path, image->width, image->height, image->pixels); !st) return st.error();
         result.files.push_back(path);
         if (auto t = (*renderer)->timings(frame.frame_index); t) {
             frames.push_back({{"frame", i}, {"time_s", frame.time}, {"sky_and_terrain_ms", t->sky_and_terrain_ms},

@@ -13,6 +13,8 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/scene_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater::cli {
 
@@ -92,9 +94,12 @@ Accuracy accuracy(const WaterBody& body, const std::vector<glm::dvec2>& pts, std
 Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
                                              const std::function<void(const std::string&)>& progress) {
     if (progress) progress("shore: loading and baking the default island");
-    auto scene = default_scene();
+    auto parsed = default_scene();
+    if (!parsed) return parsed.error();
+    auto scene = bake_scene(*parsed);
     if (!scene) return scene.error();
-    const WaterBody& shore_body = scene->ocean;
+    const std::shared_ptr<const Scene> baked = std::move(scene).value();
+    const WaterBody& shore_body = baked->ocean;
     if (!shore_body.shore() || shore_body.shore()->trivial())
         return Error{ErrorCode::invalid_argument, "shore bench: the default scene has no shore model"};
     auto open_body = shore_body.with_shore(nullptr);

@@ -1,13 +1,14 @@
-// tidewater bake: the shore model and signed distance field of a scene as 16-bit
-// PNGs with a JSON sidecar (save_shore_bake: whole or not at all). A scene loads it
-// with "shore": {"bake": "folder"}.
+// tidewater bake: a scene's bake (bake_scene: one shoreline bake, the shore model
+// sampling it) saved as 16-bit PNGs with a JSON sidecar, whole or not at all. A scene
+// loads it with "shore": {"bake": "folder"}.
 #include <cstdio>
+#include <fmt/format.h>
 #include <memory>
+#include <string_view>
 
 #include "scene_option.hpp"
-#include "tidewater/shore_bake.hpp"
-#include "tidewater/shore_bake_folder.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "verbs.hpp"
 
 namespace tidewater::cli {
@@ -24,62 +25,49 @@ struct BakeArgs {
     bool quiet = false;
 };
 
-/// Progress lines every 10% of a stage.
+/// A progress line every 10% of the whole bake, naming the stage.
 class Progress {
 public:
-    Progress(bool quiet, const char* stage) : quiet_(quiet), stage_(stage) {}
-    void operator()(double f) {
+    explicit Progress(bool quiet) : quiet_(quiet) {}
+    void operator()(std::string_view stage, double f) {
         const int percent = static_cast<int>(f * 100.0);
         if (!quiet_ && percent >= last_ + 10) {
-            std::fprintf(stderr, "bake: %s %d%%\n", stage_, percent);
+            std::fprintf(stderr, "bake: %3d%% (%.*s)\n", percent, static_cast<int>(stage.size()), stage.data());
             last_ = percent;
         }
     }
 
 private:
     bool quiet_;
-    const char* stage_;
     int last_ = -10;
 };
 
 int run_bake(const BakeArgs& a) {
     constexpr const char* verb = "bake";
     if (a.out.empty()) return fail(verb, "give --out DIR");
-    // The scene's own shore model is what this verb makes: don't bake it on load too.
-    SceneLoadOptions load;
-    load.shore_model = false;
-    auto scene = load_scene_option(a.scene, load);
+    auto scene = parse_scene_option(a.scene);
     if (!scene) return fail(verb, scene.error().message);
-
-    ShoreWaveOptions model_options = scene->shore.options;
-    if (a.model_resolution != 0) model_options.resolution = a.model_resolution;
-    model_options.threads = a.threads;
-    if (!a.quiet) std::fprintf(stderr, "bake: shore model %dx%d, %zu waves\n", model_options.resolution, model_options.resolution,
-                               scene->ocean.waves().size());
-    auto model = ShoreWaves::bake(scene->ocean.waves(), scene->terrain, scene->water_level(), model_options);
-    if (!model) return fail(verb, model.error().message);
-
-    BakeOptions options;
-    options.resolution = a.resolution;
-    options.simplify_tolerance = a.tolerance;
+    if (!scene->shore.enabled) return fail(verb, fmt::format("scene \"{}\" has its shore disabled: there is nothing to bake", scene->name));
+    // This verb makes the scene's bake: a saved one it names is not loaded but redone.
+    scene->shore.bake_folder.clear();
+    if (a.model_resolution != 0) scene->shore.resolution = a.model_resolution;
+    if (!a.quiet)
+        std::fprintf(stderr, "bake: shore model %dx%d over a %dx%d shoreline, %zu waves\n", scene->shore.resolution, scene->shore.resolution,
+                     a.resolution, a.resolution, scene->ocean.waves().size());
+    SceneBakeOptions options;
+    options.distance_resolution = a.resolution;
     options.threads = a.threads;
-    Progress progress(a.quiet, "signed distance");
-    options.progress = [&](double f) { progress(f); };
-    auto field = bake_shore(scene->terrain, scene->water_level(), options);
-    if (!field) return fail(verb, field.error().message);
-
-    ShoreBakeContents contents;
-    contents.model = model->get();
-    contents.waves = &scene->ocean.waves();
-    contents.water_level = scene->water_level();
-    contents.breaking_index = model_options.breaking_index;
-    contents.scene_name = scene->name;
-    contents.distance_field = &*field;
-    if (auto st = save_shore_bake(a.out, contents); !st) return fail(verb, st.error().message);
-    std::printf("baked \"%s\": shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu shoreline "
-                "segments, %zu land polygons, %zu enclosed waters -> %s/\n",
-                scene->name.c_str(), (*model)->resolution(), (*model)->resolution(), (*model)->texel(), (*model)->wave_count(),
-                field->resolution, field->resolution, field->texel, field->segment_count, field->polygons, field->holes, a.out.c_str());
+    Progress progress(a.quiet);
+    options.progress = [&](std::string_view stage, double f) { progress(stage, f); };
+    auto baked = bake_scene(*scene, options);
+    if (!baked) return fail(verb, baked.error().message);
+    if (auto st = save_scene_bake(a.out, **baked); !st) return fail(verb, st.error().message);
+    const ShoreWaves& model = *(*baked)->bake->ocean_shore;
+    const ShoreField& field = *(*baked)->bake->shoreline;
+    std::printf("baked \"%s\" in %.2f s: shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu "
+                "shoreline segments, %zu land polygons, %zu enclosed waters -> %s/\n",
+                (*baked)->name.c_str(), (*baked)->bake->seconds, model.resolution(), model.resolution(), model.texel(), model.wave_count(),
+                field.resolution, field.resolution, field.texel, field.segment_count, field.polygons, field.holes, a.out.c_str());
     return 0;
 }
 

@@ -34,8 +34,9 @@ int run_demo(const DemoArgs& a) {
     constexpr const char* verb = "demo";
     if (a.grid < 2 || a.grid > 2048) return fail(verb, "--grid: must be in 2..2048");
     if (!std::isfinite(a.extent) || a.extent <= 0.0 || a.extent > 1e6) return fail(verb, "--extent: must be in (0, 1e6] m");
-    auto scene = load_scene_option(a.scene);
-    if (!scene) return fail(verb, scene.error().message);
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
     if (ec) return fail(verb, fmt::format("{}: cannot create folder: {}", a.out_dir, ec.message()));

@@ -110,8 +110,9 @@ int run_inspect(const InspectArgs& a) {
         for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
         return fail(verb, fmt::format("--field \"{}\" is unknown (fields: {})", a.field, names));
     }
-    auto scene = load_scene_option(a.scene);
-    if (!scene) return fail(verb, scene.error().message);
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     inspect::SampleGrid grid;
     auto res = parse_pair(a.resolution, "--resolution");
     if (!res) return fail(verb, res.error().message);

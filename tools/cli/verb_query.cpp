@@ -50,8 +50,9 @@ int run_query(const QueryArgs& a) {
     auto parsed_times = times_from_options(a.time, a.times);
     if (!parsed_times) return fail(verb, parsed_times.error().message);
     const std::vector<double> times = std::move(parsed_times).value();
-    auto scene = load_scene_option(a.scene);
-    if (!scene) return fail(verb, scene.error().message);
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
     auto points = read_points_csv(a.points);
     if (!points) return fail(verb, points.error().message);

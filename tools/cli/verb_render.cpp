@@ -58,8 +58,9 @@ int run_render(const RenderArgs& a) {
     if (a.frames == 1 && a.out.empty() && a.out_dir.empty()) return fail(verb, "give --out FILE.png (or --frames N --out-dir D)");
     if (a.frames > 1 && a.out_dir.empty()) return fail(verb, "--frames > 1 needs --out-dir");
     if (check_time(a.time + (a.frames - 1) / a.fps, "--time").ok() == false) return fail(verb, "--time: the sequence ends out of range");
-    auto scene = load_scene_option(a.scene);
-    if (!scene) return fail(verb, scene.error().message);
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
 
     RenderJob job;
     job.extent = *extent;

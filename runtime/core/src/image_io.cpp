@@ -1,6 +1,6 @@
 // PNG I/O: stb (Debian's libstb ships the compiled implementations) reads
 // and writes 8-bit; libpng's simplified API writes 16-bit greyscale.
-#include "tidewater/image_io.hpp"
+#include "tidewater/detail/image_io.hpp"
 
 #include <cstdio>
 #include <fmt/format.h>
@@ -9,7 +9,7 @@
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
-namespace tidewater {
+namespace tidewater::detail {
 
 namespace {
 
@@ -109,4 +109,4 @@ Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& im
     });
 }
 
-}  // namespace tidewater
+}  // namespace tidewater::detail

@@ -10,7 +10,7 @@
 
 #include "kernel/kernel_waves.hpp"
 #include "parallel.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "water/shore_order.hpp"
 
 namespace tidewater {

@@ -15,6 +15,7 @@ std::string_view to_string(ErrorCode code) noexcept {
         case ErrorCode::unsupported: return "unsupported";
         case ErrorCode::device_error: return "device error";
         case ErrorCode::internal: return "internal error";
+        case ErrorCode::cancelled: return "cancelled";
     }
     return "unknown error";
 }

@@ -7,8 +7,7 @@
 #include "json_reader.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/scene.hpp"
-#include "tidewater/shore_bake_folder.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/image_io.hpp"
 
 namespace tidewater {
 
@@ -204,7 +203,7 @@ Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::pat
     if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
     std::filesystem::path path = t.file;
     if (path.is_relative() && !base_dir.empty()) path = base_dir / path;
-    auto image = read_png_gray16(path);
+    auto image = detail::read_png_gray16(path);
     if (!image) {
         Error e = std::move(image).error();
         e.message = fmt::format("{}: {}", r.context("file"), e.message);
@@ -296,11 +295,11 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
         if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
         shore.enabled = r->at("enabled").get<bool>();
     }
-    std::int64_t resolution = shore.options.resolution;
+    std::int64_t resolution = shore.resolution;
     if (auto st = r->integer("resolution", resolution, 16, 4096); !st) return st.error();
-    shore.options.resolution = static_cast<int>(resolution);
-    if (auto st = r->number("breaking_index", shore.options.breaking_index); !st) return st.error();
-    if (auto st = check_range(*r, "breaking_index", shore.options.breaking_index, 0.3, 1.2, ""); !st) return st.error();
+    shore.resolution = static_cast<int>(resolution);
+    if (auto st = r->number("breaking_index", shore.breaking_index); !st) return st.error();
+    if (auto st = check_range(*r, "breaking_index", shore.breaking_index, 0.3, 1.2, ""); !st) return st.error();
     if (r->has("bake")) {
         if (r->has("resolution") || r->has("breaking_index"))
             return r->error("bake", "a saved bake fixes the resolution and breaking index: give either bake or those");
@@ -364,23 +363,7 @@ Result<WaterProfile> load_preset(const std::string& name_or_path, const std::fil
     return parse_preset(*text, path.string());
 }
 
-Status bake_scene_shore(Scene& scene) {
-    std::shared_ptr<const ShoreWaves> model;
-    if (scene.shore.enabled) {
-        auto made = scene.shore.bake_folder.empty()
-                        ? ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level(), scene.shore.options)
-                        : load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), scene.terrain);
-        if (!made) return made.error();
-        if (!(*made)->trivial()) model = std::move(made).value();
-    }
-    auto body = scene.ocean.with_shore(std::move(model));
-    if (!body) return body.error();
-    scene.ocean = std::move(body).value();
-    return {};
-}
-
-Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir,
-                          const SceneLoadOptions& options) {
+Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir) {
     auto doc = detail::parse_json_text(json_text, source);
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
@@ -405,17 +388,10 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     auto body = WaterBody::create(*profile, level, r->context("ocean"), &scene.warnings);
     if (!body) return body.error();
     scene.ocean = std::move(body).value();
-    // The waves feel the shore unless the scene turns it off; deep water everywhere needs no model.
+    // How the waves feel the shore; bake_scene makes the model.
     auto shore = read_shore(*r, base_dir);
     if (!shore) return shore.error();
     scene.shore = std::move(shore).value();
-    if (options.shore_model) {
-        if (auto st = bake_scene_shore(scene); !st) {
-            Error e = st.error();
-            e.message = fmt::format("{}: {}", r->context("shore"), e.message);
-            return e;
-        }
-    }
     if (r->has("camera")) {
         auto camera = read_camera(*r);
         if (!camera) return camera.error();
@@ -424,15 +400,15 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     return scene;
 }
 
-Result<Scene> load_scene(const std::filesystem::path& path, const SceneLoadOptions& options) {
+Result<Scene> load_scene(const std::filesystem::path& path) {
     auto text = detail::read_text_file(path.string());
     if (!text) return text.error();
-    return parse_scene(*text, path.string(), path.parent_path(), options);
+    return parse_scene(*text, path.string(), path.parent_path());
 }
 
-Result<Scene> default_scene(const SceneLoadOptions& options) {
+Result<Scene> default_scene() {
     for (const auto& e : embedded::scenes::entries()) {
-        if (e.name == "default") return parse_scene(e.text, "<default scene>", {}, options);
+        if (e.name == "default") return parse_scene(e.text, "<default scene>", {});
     }
     return Error{ErrorCode::not_found, "the default scene is not bundled in this build"};
 }

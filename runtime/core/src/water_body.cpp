@@ -1,6 +1,6 @@
 #include "tidewater/water_body.hpp"
 
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 #include <cmath>
 #include <fmt/format.h>

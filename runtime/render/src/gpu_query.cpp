@@ -5,10 +5,11 @@
 #include <fmt/format.h>
 
 #include "embedded_shaders.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
-#include "shore_upload.hpp"
+#include "scene_uploads.hpp"
+#include "vk_handle.hpp"
 #include "vk_util.hpp"
 
 namespace tidewater::render {
@@ -21,26 +22,21 @@ constexpr std::uint32_t kBindings = 7;  // see shaders/query.comp
 
 struct GpuQuery::Impl {
     DeviceContext ctx;
-    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    VkCommandPool commands = VK_NULL_HANDLE;
-    GpuBuffer waves, phases, points, results;
-    GpuBuffer shore_waves, shore_shared, cell_origins;
-    const ShoreWaves* uploaded_shore = nullptr;     // the shore model in shore_waves/shore_shared
-    std::shared_ptr<const ShoreWaves> shore_alive;  // keeps it alive while its pointer is compared
+    detail::OwnedSetLayout set_layout;
+    detail::OwnedPipelineLayout pipeline_layout;
+    detail::OwnedPipeline pipeline;
+    detail::OwnedDescriptorPool pool;
+    VkDescriptorSet set = VK_NULL_HANDLE;  // freed with the pool
+    detail::OwnedCommandPool commands;
+    GpuBuffer waves, phases, points, results, cell_origins;
+    detail::ShoreBuffers shore;  // the same upload the renderer uses
 
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
     ~Impl() {
-        if (!ctx.device) return;
-        vkDeviceWaitIdle(ctx.device);
-        for (GpuBuffer* b : {&waves, &phases, &points, &results, &shore_waves, &shore_shared, &cell_origins}) b->reset();
-        if (commands) vkDestroyCommandPool(ctx.device, commands, ctx.allocator);
-        if (pool) vkDestroyDescriptorPool(ctx.device, pool, ctx.allocator);
-        if (pipeline) vkDestroyPipeline(ctx.device, pipeline, ctx.allocator);
-        if (pipeline_layout) vkDestroyPipelineLayout(ctx.device, pipeline_layout, ctx.allocator);
-        if (set_layout) vkDestroyDescriptorSetLayout(ctx.device, set_layout, ctx.allocator);
+        // Every member destroys its own handles; none may be in use by the GPU then.
+        if (ctx.device) vkDeviceWaitIdle(ctx.device);
     }
 
     /// Grows `buffer` to hold at least `bytes`; reports whether it was replaced.
@@ -54,9 +50,9 @@ struct GpuQuery::Impl {
 
     void bind_buffers() {
         VkDescriptorBufferInfo infos[kBindings] = {
-            {waves.handle(), 0, VK_WHOLE_SIZE},       {phases.handle(), 0, VK_WHOLE_SIZE},
-            {points.handle(), 0, VK_WHOLE_SIZE},      {results.handle(), 0, VK_WHOLE_SIZE},
-            {shore_waves.handle(), 0, VK_WHOLE_SIZE}, {shore_shared.handle(), 0, VK_WHOLE_SIZE},
+            {waves.handle(), 0, VK_WHOLE_SIZE},     {phases.handle(), 0, VK_WHOLE_SIZE},
+            {points.handle(), 0, VK_WHOLE_SIZE},    {results.handle(), 0, VK_WHOLE_SIZE},
+            {shore.per_wave(), 0, VK_WHOLE_SIZE},   {shore.shared(), 0, VK_WHOLE_SIZE},
             {cell_origins.handle(), 0, VK_WHOLE_SIZE}};
         VkWriteDescriptorSet writes[kBindings];
         for (std::uint32_t i = 0; i < kBindings; ++i) {
@@ -70,21 +66,6 @@ struct GpuQuery::Impl {
         vkUpdateDescriptorSets(ctx.device, kBindings, writes, 0, nullptr);
     }
 
-    /// Uploads the body's shore fields when they change (or 1-element placeholders).
-    Result<bool> upload_shore(const std::shared_ptr<const ShoreWaves>& shore) {
-        const ShoreWaves* wanted = shore && !shore->trivial() ? shore.get() : nullptr;
-        if (shore_waves.handle() && wanted == uploaded_shore) return false;
-        const detail::PackedShore packed = detail::pack_shore(wanted);
-    for (auto [buffer, data] : {std::pair{&shore_waves, &packed.per_wave}, std::pair{&shore_shared, &packed.shared}}) {
-            auto fresh = GpuBuffer::create(ctx, data->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-            if (!fresh) return fresh.error();
-            std::memcpy(fresh->mapped(), data->data(), data->size() * sizeof(glm::vec4));
-            *buffer = std::move(fresh).value();
-        }
-        uploaded_shore = wanted;
-        shore_alive = wanted ? shore : nullptr;
-        return true;
-    }
 };
 
 GpuQuery::GpuQuery(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -105,15 +86,20 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = kBindings;
     set_info.pBindings = bindings;
-    TW_VK_TRY(vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, &impl->set_layout));
+    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->set_layout, [&](VkDescriptorSetLayout* out) {
+        return vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, out);
+    }));
+    const VkDescriptorSetLayout set_layout = impl->set_layout.get();
 
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::GpuQueryParams)};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &impl->set_layout;
+    layout_info.pSetLayouts = &set_layout;
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &push;
-    TW_VK_TRY(vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, &impl->pipeline_layout));
+    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->pipeline_layout, [&](VkPipelineLayout* out) {
+        return vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
+    }));
 
     const auto spirv = detail::embedded_spirv("query.comp");
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
@@ -126,8 +112,10 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     pipe.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipe.stage.module = module;
     pipe.stage.pName = "main";
-    pipe.layout = impl->pipeline_layout;
-    const VkResult made = vkCreateComputePipelines(ctx.device, ctx.pipeline_cache, 1, &pipe, ctx.allocator, &impl->pipeline);
+    pipe.layout = impl->pipeline_layout.get();
+    const VkResult made = detail::make_owned(ctx.device, ctx.allocator, impl->pipeline, [&](VkPipeline* out) {
+        return vkCreateComputePipelines(ctx.device, ctx.pipeline_cache, 1, &pipe, ctx.allocator, out);
+    });
     vkDestroyShaderModule(ctx.device, module, ctx.allocator);
     if (made != VK_SUCCESS) return detail::vk_error(made, "vkCreateComputePipelines(query.comp)");
 
@@ -136,17 +124,20 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 1;
     pool_info.pPoolSizes = &size;
-    TW_VK_TRY(vkCreateDescriptorPool(ctx.device, &pool_info, ctx.allocator, &impl->pool));
+    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->pool, [&](VkDescriptorPool* out) {
+        return vkCreateDescriptorPool(ctx.device, &pool_info, ctx.allocator, out);
+    }));
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = impl->pool;
+    alloc.descriptorPool = impl->pool.get();
     alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &impl->set_layout;
+    alloc.pSetLayouts = &set_layout;
     TW_VK_TRY(vkAllocateDescriptorSets(ctx.device, &alloc, &impl->set));
 
     VkCommandPoolCreateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cmd_info.queueFamilyIndex = ctx.queue_family;
     cmd_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(vkCreateCommandPool(ctx.device, &cmd_info, ctx.allocator, &impl->commands));
+    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->commands,
+                                 [&](VkCommandPool* out) { return vkCreateCommandPool(ctx.device, &cmd_info, ctx.allocator, out); }));
     return std::unique_ptr<GpuQuery>(new GpuQuery(std::move(impl)));
 }
 
@@ -173,10 +164,11 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
         if (!grown) return grown.error();
         rebind = rebind || *grown;
     }
-    auto uploaded = m.upload_shore(body.shore());
+    // Every submit below waits for completion: no GPU work can still read the old fields.
+    auto uploaded = m.shore.upload(m.ctx, body.shore());
     if (!uploaded) return uploaded.error();
     rebind = rebind || *uploaded;
-    const ShoreWaves* shore = m.uploaded_shore;
+    const ShoreWaves* shore = m.shore.model();
     std::vector<glm::vec2> origins(std::max<std::size_t>(1, cells.origins.size()), glm::vec2(0.0f));
     for (std::size_t c = 0; c < cells.origins.size(); ++c) {
         const glm::dvec2 rel = cells.origins[c] - (shore ? shore->corner() : glm::dvec2(0.0));
@@ -199,10 +191,10 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
     params.shore_resolution = shore ? static_cast<std::uint32_t>(shore->resolution()) : 0u;
     params.shore_texel = shore ? static_cast<float>(shore->texel()) : 1.0f;
 
-    Status st = detail::submit_and_wait(m.ctx, m.commands, [&](VkCommandBuffer cmd) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout, 0, 1, &m.set, 0, nullptr);
-        vkCmdPushConstants(cmd, m.pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
+    Status st = detail::submit_and_wait(m.ctx, m.commands.get(), [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline.get());
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout.get(), 0, 1, &m.set, 0, nullptr);
+        vkCmdPushConstants(cmd, m.pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
         vkCmdDispatch(cmd, (params.point_count + gpu::kQueryWorkgroupSize - 1) / gpu::kQueryWorkgroupSize, 1, 1);
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

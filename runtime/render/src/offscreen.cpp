@@ -59,6 +59,8 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
 Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& frame) {
     Impl& m = *impl_;
     const VkExtent2D extent = m.color.extent();
+    // The renderer's own copies follow the target's size (a no-op when it already does).
+    if (auto st = renderer.resize(extent); !st) return st.error();
     Status recorded;
     Status submitted = detail::submit_and_wait(m.ctx, m.pool, [&](VkCommandBuffer cmd) {
         detail::transition(cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

@@ -117,4 +117,86 @@ Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc&
     return pipeline;
 }
 
+namespace {
+
+Status create_layouts(const DeviceContext& ctx, FramePipelines& p) {
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_ALL_GRAPHICS;
+    const VkDescriptorSetLayoutBinding bindings[kFrameBindings] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},          // GpuFrame
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // waves
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // terrain heights
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene colour copy
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene depth copy
+        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // shore fields per wave
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};         // shore fields shared
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = kFrameBindings;
+    set_info.pBindings = bindings;
+    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.set_layout, [&](VkDescriptorSetLayout* out) {
+        return vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, out);
+    }));
+    const VkDescriptorSetLayout set_layout = p.set_layout.get();
+    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 16};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.layout, [&](VkPipelineLayout* out) {
+        return vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
+    }));
+    return {};
+}
+
+Status create_samplers(const DeviceContext& ctx, FramePipelines& p) {
+    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    s.magFilter = s.minFilter = VK_FILTER_LINEAR;
+    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    s.maxLod = 0.0f;
+    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.linear, [&](VkSampler* out) { return vkCreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    s.magFilter = s.minFilter = VK_FILTER_NEAREST;
+    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.nearest, [&](VkSampler* out) { return vkCreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    return {};
+}
+
+}  // namespace
+
+Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe) {
+    FramePipelines p;
+    if (auto st = create_layouts(ctx, p); !st) return st.error();
+    if (auto st = create_samplers(ctx, p); !st) return st.error();
+    PipelineDesc base;
+    base.layout = p.layout.get();
+    base.color_format = color_format;
+    base.depth_format = depth_format;
+    auto make = [&](OwnedPipeline& out, const PipelineDesc& d) -> Status {
+        auto made = create_pipeline(ctx, d);
+        if (!made) return made.error();
+        out = OwnedPipeline(ctx.device, ctx.allocator, *made);
+        return {};
+    };
+    PipelineDesc sky = base;
+    sky.vertex = "sky.vert";
+    sky.fragment = "sky.frag";
+    sky.depth_write = false;
+    if (auto st = make(p.sky, sky); !st) return st.error();
+    PipelineDesc terrain = base;
+    terrain.vertex = "terrain.vert";
+    terrain.fragment = "terrain.frag";
+    terrain.terrain_vertices = true;
+    if (auto st = make(p.terrain, terrain); !st) return st.error();
+    PipelineDesc water = base;
+    water.vertex = "water.vert";
+    water.tess_control = "water.tesc";
+    water.tess_eval = "water.tese";
+    water.fragment = "water.frag";
+    if (auto st = make(p.water, water); !st) return st.error();
+    if (wireframe) {
+        terrain.polygon_mode = water.polygon_mode = VK_POLYGON_MODE_LINE;
+        if (auto st = make(p.terrain_wire, terrain); !st) return st.error();
+        if (auto st = make(p.water_wire, water); !st) return st.error();
+    }
+    return p;
+}
+
 }  // namespace tidewater::render::detail

@@ -1,12 +1,15 @@
-// Graphics pipeline creation for the renderer (private): dynamic rendering,
-// SPIR-V from the embedded shaders.
+// The renderer's pipelines (private): its descriptor set and pipeline layouts, the
+// sky, terrain and water pipelines (dynamic rendering, SPIR-V from the embedded
+// shaders) and its samplers.
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 #include <vulkan/vulkan.h>
 
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/result.hpp"
+#include "vk_handle.hpp"
 
 namespace tidewater::render::detail {
 
@@ -21,5 +24,19 @@ struct PipelineDesc {
 };
 
 Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& desc);
+
+/// Bindings of the frame's descriptor set: see shaders/frame.glsl.
+constexpr std::uint32_t kFrameBindings = 7;
+
+/// Everything a frame's draws bind, made once per renderer. Wireframe pipelines exist
+/// only when asked for (they need fillModeNonSolid).
+struct FramePipelines {
+    OwnedSetLayout set_layout;
+    OwnedPipelineLayout layout;
+    OwnedPipeline sky, terrain, terrain_wire, water, water_wire;
+    OwnedSampler linear, nearest;
+
+    static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe);
+};
 
 }  // namespace tidewater::render::detail

@@ -23,6 +23,7 @@ enum class ErrorCode {
     unsupported,       ///< A format or feature the device lacks; the message names it.
     device_error,      ///< A Vulkan call failed; the message names the call and VkResult.
     internal,          ///< Work failed inside the library (out of memory, a worker's exception).
+    cancelled,         ///< The caller cancelled the work (a bake's stop token); nothing was kept.
 };
 
 std::string_view to_string(ErrorCode code) noexcept;

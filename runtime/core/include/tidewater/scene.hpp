@@ -1,10 +1,14 @@
 // Scenes and presets: JSON loading with errors that name the file, the JSON
 // path and the allowed range. The format is documented in docs/scene-format.md.
 //
+// Parsing only reads and validates: it never bakes. bake_scene (scene_bake.hpp)
+// derives what the renderer and the shore-aware queries need.
+//
 // Threading: loading functions are reentrant; a Scene is a plain value.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include <glm/vec3.hpp>
@@ -12,7 +16,6 @@
 #include <string_view>
 #include <vector>
 
-#include "tidewater/shore_waves.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/water_body.hpp"
 
@@ -30,42 +33,40 @@ struct SceneCamera {
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {
     bool enabled = true;
-    ShoreWaveOptions options;            ///< Grid and breaking index of a bake on load.
-    std::filesystem::path bake_folder;   ///< A saved bake to load instead (empty: bake on load).
+    int resolution = 256;                ///< Texels per side of the shore model, 16 to 4096.
+    double breaking_index = 0.78;        ///< Breaker height / depth (McCowan), 0.3 to 1.2.
+    std::filesystem::path bake_folder;   ///< A saved bake for bake_scene to load (empty: bake).
 };
+
+struct SceneBake;
 
 struct Scene {
     std::string name;
     Terrain terrain;
     /// The water; its level() is the scene's rest water level (stored only there) and its
-    /// shore() the model the waves feel (null: none or all deep water).
+    /// shore() the model the waves feel: null as parsed, set by bake_scene unless the
+    /// shore is disabled or all deep water.
     WaterBody ocean;
     SceneShore shore;
     std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
+    /// What bake_scene made (null as parsed). Copies share it; it is never modified.
+    std::shared_ptr<const SceneBake> bake;
 
     double water_level() const { return ocean.level(); }  ///< m, world y of the rest water surface.
-};
-
-struct SceneLoadOptions {
-    /// Bake (or load) the shore model. Off, the ocean has no shore until bake_scene_shore().
-    bool shore_model = true;
+    /// True when the scene is ready to draw and query: baked, or with nothing to bake.
+    bool baked() const { return bake != nullptr || !shore.enabled; }
 };
 
 /// Parses scene JSON text. `source` names it in messages (a path or "<default scene>");
-/// relative preset files and bake folders resolve against `base_dir`.
+/// relative preset files and bake folders resolve against `base_dir`. Reads and
+/// validates only; a saved bake the scene names is checked when bake_scene loads it.
 Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
-                          const std::filesystem::path& base_dir = {}, const SceneLoadOptions& options = {});
+                          const std::filesystem::path& base_dir = {});
 /// Reads and parses a scene file.
-Result<Scene> load_scene(const std::filesystem::path& path, const SceneLoadOptions& options = {});
+Result<Scene> load_scene(const std::filesystem::path& path);
 /// The bundled default scene (examples/scenes/default.json, embedded at build time).
-Result<Scene> default_scene(const SceneLoadOptions& options = {});
-
-/// (Re)makes the shore model of `scene` from its terrain, water level and waves as
-/// `scene.shore` says: baked, or loaded from `scene.shore.bake_folder`, or none when
-/// disabled. An editor calls this after editing the terrain; it then hands the scene to
-/// the renderer (Renderer::set_scene). On failure the scene is unchanged.
-Status bake_scene_shore(Scene& scene);
+Result<Scene> default_scene();
 
 /// Parses a preset (a WaterProfile with "version" and "name").
 Result<WaterProfile> parse_preset(std::string_view json_text, const std::string& source);

@@ -7,12 +7,18 @@
 #include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
-#include "tidewater/image_io.hpp"
-
 namespace tidewater {
+
+/// A single-channel 16-bit image, row-major from the top row (a heightmap's pixels).
+struct Gray16Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint16_t> pixels;
+};
 
 struct FlatTerrain {
     double height = -100.0;  ///< m

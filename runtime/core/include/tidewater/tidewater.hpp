@@ -9,6 +9,7 @@
 #include "tidewater/result.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/scene_bake.hpp"
 #include "tidewater/spectrum.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/version.hpp"

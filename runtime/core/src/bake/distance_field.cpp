@@ -162,13 +162,14 @@ private:
 }  // namespace
 
 void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsigned threads,
-                         const std::function<void(double)>& progress) {
+                         const std::function<void(double)>& progress, const std::stop_token& cancel) {
     const int n = field.resolution;
     const int block_rows = (n + kRootBlock - 1) / kRootBlock;
     const BlockFiller filler(distance, field);
     std::atomic<int> done{0};
     std::mutex progress_lock;  // the callback is the caller's: one call at a time
     parallel_for_each(static_cast<std::size_t>(block_rows), threads, [&](std::size_t row) {
+        if (cancel.stop_requested()) return;  // the caller throws the field away
         Workspace w;
         ShoreDistance::Hit hint;
         bool have_hint = false;

@@ -1,4 +1,4 @@
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "parallel.hpp"
 
@@ -41,13 +41,13 @@ private:
 
 }  // namespace
 
-double ShoreField::distance_at(glm::dvec2 p) const {
+double ShoreField::sample(const std::vector<float>& grid, glm::dvec2 p) const {
     if (resolution <= 0) return 0.0;
     const double u = std::clamp((p.x - corner.x) / texel - 0.5, 0.0, resolution - 1.0);
     const double v = std::clamp((p.y - corner.y) / texel - 0.5, 0.0, resolution - 1.0);
     const int i = std::min(static_cast<int>(u), resolution - 2), j = std::min(static_cast<int>(v), resolution - 2);
     const double fu = u - i, fv = v - j;
-    auto at = [&](int a, int b) { return static_cast<double>(signed_distance[index(a, b)]); };
+    auto at = [&](int a, int b) { return static_cast<double>(grid[index(a, b)]); };
     return (1 - fv) * ((1 - fu) * at(i, j) + fu * at(i + 1, j)) + fv * ((1 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1));
 }
 
@@ -64,6 +64,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     auto report = [&](double f) {
         if (options.progress) options.progress(f);
     };
+    const auto cancelled = [] { return Error{ErrorCode::cancelled, "bake: cancelled"}; };
 
     ShoreField field;
     field.resolution = n;
@@ -93,6 +94,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         return Error{ErrorCode::invalid_argument,
                      fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
     }
+    if (options.cancel.stop_requested()) return cancelled();
     report(0.1);
 
     // A coast crosses O(n) cells; O(n^2) crossings is noise (say, millions of one-texel
@@ -136,11 +138,13 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         lines.push_back(std::move(line));
     }
     field.timings.contour = clock.lap();
+    if (options.cancel.stop_requested()) return cancelled();
     detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance, threads);
     field.polygons = shore.polygons;
     field.holes = shore.holes;
     field.shorelines = std::move(shore.lines);
     field.timings.simplify = clock.lap();
+    if (options.cancel.stop_requested()) return cancelled();
     report(0.3);
 
     field.signed_distance.assign(count, 0.0f);
@@ -157,7 +161,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         report(1.0);
         return field;
     }
-    detail::fill_distance_field(*distance, field, threads, [&](double f) { report(0.3 + 0.7 * f); });
+    detail::fill_distance_field(*distance, field, threads, [&](double f) { report(0.3 + 0.7 * f); }, options.cancel);
+    if (options.cancel.stop_requested()) return cancelled();
     field.timings.distance = clock.lap();
     report(1.0);
     return field;

@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "tidewater/result.hpp"
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater::detail {
 

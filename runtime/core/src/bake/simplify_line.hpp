@@ -1,7 +1,7 @@
 // Shoreline simplification (private).
 #pragma once
 
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater::detail {
 

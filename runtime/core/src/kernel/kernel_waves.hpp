@@ -6,7 +6,7 @@
 #include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "water/prepared_waves.hpp"
 
 namespace tidewater::detail {

@@ -1,4 +1,4 @@
-#include "tidewater/shore_bake_folder.hpp"
+#include "tidewater/detail/shore_bake_folder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "json_reader.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/constants.hpp"
-#include "tidewater/image_io.hpp"
+#include "tidewater/detail/image_io.hpp"
 
 namespace tidewater {
 
@@ -50,7 +50,7 @@ Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name,
     img.pixels.resize(values.size());
     for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
     const std::string file = name + ".png";
-    if (auto st = write_png_gray16(dir / file, img); !st) return st.error();
+    if (auto st = detail::write_png_gray16(dir / file, img); !st) return st.error();
     return nlohmann::json{{"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
 }
 
@@ -135,7 +135,7 @@ Result<std::vector<float>> read_field(const fs::path& dir, const ObjectReader& f
     if (auto st = r->number("zero_pixel", zero, true); !st) return st.error();
     if (!(step > 0.0) || !std::isfinite(step)) return r->error("step", "must be a finite number > 0");
     if (zero != std::floor(zero) || std::abs(zero) > 1e15) return r->error("zero_pixel", "must be an integer");
-    auto img = read_png_gray16(dir / file);
+    auto img = detail::read_png_gray16(dir / file);
     if (!img) return img.error();
     if (img->width != n || img->height != n)
         return Error{ErrorCode::invalid_argument,

@@ -1,7 +1,9 @@
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <mutex>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -10,7 +12,7 @@
 #include "parallel.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/dispersion.hpp"
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
 
@@ -30,20 +32,76 @@ bool all_deep_and_unchanged(const ShoreWaveFields& f) {
     return true;
 }
 
+/// The model's own grid from a shoreline baked at another resolution: depth from the
+/// terrain at this grid's texel centres; distance and gradient sampled from `shoreline`,
+/// the distance signed by the texel's own depth so that it agrees with `depth`.
+Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level, int n, const ShoreField& shoreline,
+                                      unsigned threads) {
+    ShoreField g;
+    g.resolution = n;
+    const double half = terrain.extent_half_size();
+    g.texel = 2.0 * half / n;
+    g.corner = terrain.extent_center() - glm::dvec2(half);
+    if (std::abs(shoreline.texel * shoreline.resolution - 2.0 * half) > 1e-6 * half ||
+        glm::length(shoreline.corner - g.corner) > 1e-6 * half)
+        return Error{ErrorCode::invalid_argument, "shore waves: the shoreline field covers another extent than the terrain"};
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    g.depth.resize(count);
+    g.signed_distance.resize(count);
+    g.gradient_x.resize(count);
+    g.gradient_z.resize(count);
+    std::atomic<bool> finite{true};
+    detail::parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
+        const int j = static_cast<int>(row);
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = g.index(i, j);
+            const glm::dvec2 p = g.texel_center(i, j);
+            const double depth = water_level - terrain.height_at(p);
+            if (!std::isfinite(depth)) finite = false;
+            g.depth[k] = static_cast<float>(depth);
+            g.signed_distance[k] = static_cast<float>(std::copysign(std::abs(shoreline.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+            glm::dvec2 grad{shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)};
+            const double len = glm::length(grad);
+            grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
+            g.gradient_x[k] = static_cast<float>(grad.x);
+            g.gradient_z[k] = static_cast<float>(grad.y);
+        }
+    });
+    if (!finite) return Error{ErrorCode::invalid_argument, "shore waves: the terrain height is not finite somewhere on the model grid"};
+    return g;
+}
+
+Error cancelled() { return Error{ErrorCode::cancelled, "shore waves: cancelled"}; }
+
 }  // namespace
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, const Terrain& terrain, double water_level,
-                                                           const ShoreWaveOptions& options) {
+                                                           const ShoreWaveOptions& options, const ShoreField* shoreline) {
     if (options.resolution < 16 || options.resolution > 4096)
         return Error{ErrorCode::invalid_argument, fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
     if (!(options.breaking_index > 0.0 && options.breaking_index <= 1.2))
         return Error{ErrorCode::invalid_argument, "shore waves: breaking_index must be in (0, 1.2]"};
     try {
-        BakeOptions bake;
-        bake.resolution = options.resolution;
-        bake.threads = options.threads;
-        auto field = bake_shore(terrain, water_level, bake);
+        // The grid: 0..30% of the progress when the shoreline is baked here, then the waves.
+        const double grid_share = shoreline ? 0.0 : 0.3;
+        auto report = [&](double f) {
+            if (options.progress) options.progress(f);
+        };
+        Result<ShoreField> field = Error{};
+        if (shoreline && shoreline->resolution == options.resolution) {
+            field = *shoreline;
+        } else if (shoreline) {
+            field = resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
+        } else {
+            BakeOptions bake;
+            bake.resolution = options.resolution;
+            bake.threads = options.threads;
+            bake.cancel = options.cancel;
+            bake.progress = [&](double f) { report(grid_share * f); };
+            field = bake_shore(terrain, water_level, bake);
+        }
         if (!field) return field.error();
+        if (options.cancel.stop_requested()) return cancelled();
 
         auto out = std::make_shared<ShoreWaves>();
         const int n = field->resolution;
@@ -61,7 +119,10 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
         f.wavevector_x.assign(nw, std::vector<float>(count, 0.0f));
         f.wavevector_z.assign(nw, std::vector<float>(count, 0.0f));
 
+        std::atomic<std::size_t> waves_done{0};
+        std::mutex progress_lock;  // the callback is the caller's: one call at a time
         detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
+            if (options.cancel.stop_requested()) return;  // the fields are thrown away below
             const Wave& wave = waves[w];
             const double k0 = wave.k;
             const glm::dvec2 dir{wave.dir_x, wave.dir_z};
@@ -135,7 +196,13 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
                     }
                     amp[k] = static_cast<float>(ks * kr);
                 }
+            const std::size_t done = ++waves_done;
+            if (options.progress) {
+                const std::lock_guard<std::mutex> lock(progress_lock);
+                report(grid_share + (1.0 - grid_share) * static_cast<double>(done) / static_cast<double>(nw));
+            }
         });
+        if (options.cancel.stop_requested()) return cancelled();
 
         // Breaking (all waves together) and steepness, per texel.
         f.breaking.assign(count, 0.0f);

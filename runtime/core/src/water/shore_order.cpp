@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater::detail {
 

@@ -17,7 +17,7 @@
 #include "host_device.h"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_point.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "water/prepared_waves.hpp"
 
 namespace tidewater::detail {

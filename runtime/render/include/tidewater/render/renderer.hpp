@@ -5,8 +5,9 @@
 // - The host owns the instance, device, queue, swapchain and frame loop, and
 //   lends them through RendererInitInfo, which the renderer copies.
 // - The renderer only records into the host's command buffers. It never
-//   presents, never owns a swapchain, and submits to the queue only inside
-//   set_scene / set_water (explicit uploads, which wait for completion).
+//   presents, never owns a swapchain, and submits to the queue or waits for the
+//   device only inside set_scene / set_water / resize (explicit calls that wait
+//   for completion). record_frame and record_in_pass never submit or wait.
 // - Depth is reversed-Z: clear to 0, nearer is larger (compare GREATER_OR_EQUAL).
 //   Host geometry that shares a depth buffer with Tidewater must use the same.
 // - record_frame() renders a whole frame into the host's images (it begins and
@@ -106,12 +107,14 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     /// Uploads the scene's terrain and water (submits and waits). Call again after edits.
+    /// The scene must be baked (bake_scene) unless its shore is disabled; an unbaked one
+    /// is refused rather than drawn as open sea.
     Status set_scene(const Scene& scene);
     /// Swaps only the water (a preset change); the terrain stays.
     Status set_water(const WaterBody& water);
-    /// Reallocates the refraction copies for a new target size (waits for the device).
-    /// Optional: record_frame does it on the first frame of a new size; hosts call it
-    /// when they recreate their swapchain so that no frame pays for it.
+    /// Sizes the refraction copies for the host's targets (waits for the device when the
+    /// size changes). Call it before the first record_frame and whenever the targets
+    /// change size (swapchain recreation); record_frame refuses targets of another size.
     Status resize(VkExtent2D extent);
 
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);

@@ -1,5 +1,6 @@
 // The shore bake: the shoreline (the terrain's contour at the water level)
 // and the signed distance to it, computed exactly from that contour with CGAL.
+// Internal: hosts bake through bake_scene (scene_bake.hpp).
 //
 // Grid: `resolution` x `resolution` texels over the terrain's square extent;
 // values are at texel centres, rows along +z. Units: metres.
@@ -9,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stop_token>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -23,6 +25,7 @@ struct BakeOptions {
     double simplify_tolerance = 0.0;  ///< m; the contour moves at most this far (0 = half a texel).
     unsigned threads = 0;             ///< 0 = every hardware thread.
     std::function<void(double)> progress;  ///< Called with 0..1 during long bakes (optional).
+    std::stop_token cancel;                ///< Requested: the bake stops and returns ErrorCode::cancelled.
 };
 
 /// One closed or open (domain-edge) shoreline, land on its left.
@@ -62,12 +65,14 @@ struct ShoreField {
 
     std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i); }
     glm::dvec2 texel_center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
+    /// Bilinear sample of one of this field's grids at a world point (clamped at the edges).
+    double sample(const std::vector<float>& grid, glm::dvec2 p) const;
     /// Bilinear sample of the signed distance at a world point (clamped at the edges).
-    double distance_at(glm::dvec2 p) const;
+    double distance_at(glm::dvec2 p) const { return sample(signed_distance, p); }
 };
 
 /// Bakes the shore of `terrain` at `water_level`. Fails on non-finite terrain heights
-/// (naming where) or out-of-range options.
+/// (naming where) or out-of-range options, and with ErrorCode::cancelled when cancelled.
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
 
 

@@ -1,4 +1,5 @@
-// PNG reading and writing for heightmaps, baked fields and rendered frames.
+// PNG reading and writing for heightmaps, baked fields and rendered frames
+// (internal: the tools and tests use it; hosts read and write images their own way).
 // Writes are atomic: a temporary file beside the target is renamed over it
 // only when complete, so a failure never leaves a half-written image.
 // Threading: reentrant.
@@ -10,15 +11,9 @@
 #include <vector>
 
 #include "tidewater/result.hpp"
+#include "tidewater/terrain.hpp"
 
-namespace tidewater {
-
-/// A single-channel 16-bit image, row-major from the top row.
-struct Gray16Image {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint16_t> pixels;
-};
+namespace tidewater::detail {
 
 /// An 8-bit RGBA image, row-major from the top row.
 struct Rgba8Image {
@@ -39,4 +34,4 @@ Status write_png_rgba8(const std::filesystem::path& path, int width, int height,
 /// Writes a 16-bit greyscale PNG (heightmaps, baked fields).
 Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& image);
 
-}  // namespace tidewater
+}  // namespace tidewater::detail

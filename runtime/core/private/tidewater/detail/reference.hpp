@@ -9,7 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
-#include "tidewater/shore_bake.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
 

@@ -14,11 +14,15 @@
 // - steepness: Q is scaled so that sum(Q k A) stays <= 0.95 (no folding).
 // Local fields vary slowly against a wavelength, so derivatives use the local
 // wavevector and treat amplitude and direction as constant over a wave.
+// Internal: hosts get a model through bake_scene (scene_bake.hpp) and use it through
+// WaterBody::shore(); the raw grids are for the renderer, saved bakes and tests.
 // Threading: immutable after bake; share it freely.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <span>
+#include <stop_token>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -27,6 +31,7 @@
 #include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/waves.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
 
@@ -34,6 +39,8 @@ struct ShoreWaveOptions {
     int resolution = 256;           ///< Texels per side over the terrain's extent, 16 to 4096.
     unsigned threads = 0;           ///< 0 = every hardware thread.
     double breaking_index = 0.78;   ///< Breaker height / depth (McCowan), in (0, 1.2].
+    std::function<void(double)> progress;  ///< Called with 0..1, one call at a time (optional).
+    std::stop_token cancel;                ///< Requested: the bake returns ErrorCode::cancelled.
 };
 
 /// What the shore does to one wave at one place.
@@ -66,8 +73,12 @@ struct ShoreWaveFields {
 
 class ShoreWaves {
 public:
+    /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed
+    /// distance field already baked there (any resolution): the model samples it instead
+    /// of baking the shoreline again.
     static Result<std::shared_ptr<const ShoreWaves>> bake(const WaveSet& set, const Terrain& terrain, double water_level,
-                                                          const ShoreWaveOptions& options = {});
+                                                          const ShoreWaveOptions& options = {},
+                                                          const ShoreField* shoreline = nullptr);
     /// A model from fields made elsewhere (a saved bake). Fails unless every grid is
     /// resolution^2 finite values and there are `wave_count` of each per-wave field.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::size_t wave_count);

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "tidewater/result.hpp"
-#include "tidewater/shore_bake.hpp"
-#include "tidewater/shore_waves.hpp"
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/waves.hpp"
 

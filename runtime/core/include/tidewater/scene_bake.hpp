@@ -1,0 +1,69 @@
+// Baking a scene: what is derived once from its terrain, levels and waves rather
+// than per frame or per query. Today that is the ocean's shore model (per-wave
+// fields from fast marching over the depth) and the exact signed distance to the
+// shoreline (CGAL) it is built on.
+//
+// parse_scene (scene.hpp) only reads. bake_scene does the work, or loads the saved
+// bake the scene names ("shore": {"bake": folder}) without redoing it, and returns a
+// new scene ready for the renderer and the queries. An editor re-bakes after a
+// terrain edit on a worker thread, with progress and cancellation, while other
+// threads keep drawing and querying the previous result.
+//
+// Lifetime: the result is a std::shared_ptr<const Scene>; every holder keeps it alive,
+// and nothing in it changes after bake_scene returns.
+// Threading: bake_scene is reentrant and only reads its input, so it may run beside
+// queries and rendering of any scene. Its parallel loops share the library's one task
+// scheduler (oneTBB) with the queries. Units: metres, seconds.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <stop_token>
+#include <string_view>
+
+#include "tidewater/result.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater {
+
+class ShoreWaves;
+struct ShoreField;
+
+/// What bake_scene made. Immutable; scenes copied from a baked one share it.
+struct SceneBake {
+    /// The ocean's shore model as baked or loaded, even when it is all deep water (the
+    /// ocean itself then carries none, and queries skip the shore). Null when the scene's
+    /// shore is disabled.
+    std::shared_ptr<const ShoreWaves> ocean_shore;
+    /// The exact signed distance to the simplified shoreline (m, positive over water) at
+    /// the resolution it was baked at. Null when the shore is disabled or was loaded.
+    std::shared_ptr<const ShoreField> shoreline;
+    bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
+    double seconds = 0.0;  ///< Wall-clock time of the bake or load.
+};
+
+struct SceneBakeOptions {
+    unsigned threads = 0;  ///< Worker threads, 0 = all.
+    /// Texels per side of the signed distance field, 8 to 8192 and at least the shore
+    /// model's grid; 0 = the model's grid. The model samples this one field: the
+    /// shoreline is baked once, and a finer field makes a slightly better model.
+    int distance_resolution = 0;
+    /// Told the stage ("shoreline", "shore waves" or "loading") and the fraction of the
+    /// whole bake done, 0 to 1, never decreasing. One call at a time, from a baking thread.
+    std::function<void(std::string_view stage, double fraction)> progress;
+    /// Request a stop from any thread: bake_scene returns ErrorCode::cancelled soon after
+    /// (within one wave or one tile row of the work) and keeps nothing.
+    std::stop_token cancel;
+};
+
+/// Bakes `scene` (or loads its saved bake) into a new scene whose ocean feels its shore.
+/// Errors name the scene's "shore" entry, the saved bake's file and field, or the
+/// terrain where it cannot be baked.
+Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options = {});
+
+/// Writes a baked scene's bake to `dir`, whole or not at all, for "shore": {"bake": dir}.
+/// Fails when the scene has no bake or its shore is disabled.
+Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked);
+
+}  // namespace tidewater

@@ -1,0 +1,117 @@
+#include "tidewater/scene_bake.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <fmt/format.h>
+#include <mutex>
+
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_bake_folder.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+
+namespace tidewater {
+
+namespace {
+
+/// Forwards stage progress as a whole-bake fraction that never goes back.
+class BakeProgress {
+public:
+    explicit BakeProgress(const SceneBakeOptions& options) : options_(options) {}
+
+    /// Reports `fraction` of a stage that spans [begin, end] of the whole bake.
+    void report(std::string_view stage, double begin, double end, double fraction) {
+        if (!options_.progress) return;
+        const std::lock_guard<std::mutex> lock(lock_);
+        last_ = std::max(last_, begin + (end - begin) * std::clamp(fraction, 0.0, 1.0));
+        options_.progress(stage, last_);
+    }
+
+private:
+    const SceneBakeOptions& options_;
+    std::mutex lock_;
+    double last_ = 0.0;
+};
+
+Error in_shore(const Scene& scene, Error e) {
+    e.message = fmt::format("scene \"{}\" /shore: {}", scene.name, e.message);
+    return e;
+}
+
+}  // namespace
+
+Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    if (options.distance_resolution != 0 && (options.distance_resolution < 8 || options.distance_resolution > 8192))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: distance_resolution {} is out of range (8 to 8192, or 0)", options.distance_resolution)};
+    try {
+        auto bake = std::make_shared<SceneBake>();
+        BakeProgress progress(options);
+        if (scene.shore.enabled && !scene.shore.bake_folder.empty()) {
+            progress.report("loading", 0.0, 1.0, 0.0);
+            auto loaded = load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), scene.terrain);
+            if (!loaded) return in_shore(scene, loaded.error());
+            bake->ocean_shore = std::move(loaded).value();
+            bake->loaded = true;
+            progress.report("loading", 0.0, 1.0, 1.0);
+        } else if (scene.shore.enabled) {
+            // One shoreline bake serves the distance field and the shore model, which
+            // samples it: it may be finer than the model's grid, never coarser.
+            const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
+            if (distance_resolution < scene.shore.resolution)
+                return in_shore(scene, Error{ErrorCode::invalid_argument,
+                                             fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
+                                                         "which samples it: give a distance resolution of at least {1}",
+                                                         distance_resolution, scene.shore.resolution)});
+            const double shoreline_share = 0.3;
+            BakeOptions shoreline_options;
+            shoreline_options.resolution = distance_resolution;
+            shoreline_options.threads = options.threads;
+            shoreline_options.cancel = options.cancel;
+            shoreline_options.progress = [&](double f) { progress.report("shoreline", 0.0, shoreline_share, f); };
+            auto shoreline = bake_shore(scene.terrain, scene.water_level(), shoreline_options);
+            if (!shoreline) return in_shore(scene, shoreline.error());
+
+            ShoreWaveOptions model_options;
+            model_options.resolution = scene.shore.resolution;
+            model_options.breaking_index = scene.shore.breaking_index;
+            model_options.threads = options.threads;
+            model_options.cancel = options.cancel;
+            model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
+            auto model = ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level(), model_options, &*shoreline);
+            if (!model) return in_shore(scene, model.error());
+            bake->ocean_shore = std::move(model).value();
+            bake->shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
+        }
+        if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
+
+        auto baked = std::make_shared<Scene>(scene);
+        // An all-deep model changes nothing: the ocean carries none and queries skip the shore.
+        std::shared_ptr<const ShoreWaves> felt = bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
+        auto ocean = scene.ocean.with_shore(std::move(felt));
+        if (!ocean) return in_shore(scene, ocean.error());
+        baked->ocean = std::move(ocean).value();
+        bake->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        baked->bake = std::move(bake);
+        return std::shared_ptr<const Scene>(std::move(baked));
+    } catch (const std::exception& e) {
+        return Error{ErrorCode::internal, fmt::format("scene \"{}\": the bake failed: {}", scene.name, e.what())};
+    }
+}
+
+Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
+    if (!baked.bake || !baked.bake->ocean_shore)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("scene \"{}\" has no shore bake to save: {}", baked.name,
+                                 baked.shore.enabled ? "pass it through bake_scene first" : "its shore is disabled")};
+    ShoreBakeContents contents;
+    contents.model = baked.bake->ocean_shore.get();
+    contents.waves = &baked.ocean.waves();
+    contents.water_level = baked.water_level();
+    contents.breaking_index = baked.shore.breaking_index;
+    contents.scene_name = baked.name;
+    contents.distance_field = baked.bake->shoreline.get();
+    return save_shore_bake(dir, contents);
+}
+
+}  // namespace tidewater

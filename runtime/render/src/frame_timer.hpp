@@ -1,0 +1,32 @@
+// GPU timestamps per frame (private): four marks per in-flight slot, read back
+// as the time of each pass once the host knows the frame has finished.
+#pragma once
+
+#include <cstdint>
+#include <vulkan/vulkan.h>
+
+#include "tidewater/render/renderer.hpp"
+#include "vk_handle.hpp"
+
+namespace tidewater::render::detail {
+
+class FrameTimer {
+public:
+    enum Mark : std::uint32_t { start, opaque_done, copy_done, water_done, mark_count };
+
+    /// A query pool for `slots` frames, or none when the queue family has no timestamps.
+    static Result<FrameTimer> create(const DeviceContext& ctx, std::uint32_t slots);
+    bool available() const { return static_cast<bool>(pool_); }
+
+    /// Resets the slot's queries and writes the start mark.
+    void begin(VkCommandBuffer cmd, std::uint32_t slot) const;
+    void mark(VkCommandBuffer cmd, std::uint32_t slot, Mark mark, VkPipelineStageFlagBits stage) const;
+    /// The slot's pass times; fails while the GPU has not finished it.
+    Result<PassTimings> read(const DeviceContext& ctx, std::uint32_t slot) const;
+
+private:
+    OwnedQueryPool pool_;
+    double period_ns_ = 1.0;
+};
+
+}  // namespace tidewater::render::detail

@@ -1,0 +1,114 @@
+#include "scene_copies.hpp"
+
+#include <cstdint>
+#include <fmt/format.h>
+
+#include "scene_uploads.hpp"
+#include "vk_util.hpp"
+
+namespace tidewater::render::detail {
+
+namespace {
+constexpr VkImageUsageFlags kCopyUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+constexpr VkPipelineStageFlags kDepthStage = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+}  // namespace
+
+Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool pool, VkFormat color_format, VkFormat depth_format) {
+    SceneCopies c;
+    c.color_format_ = color_format;
+    c.depth_format_ = depth_format;
+    auto color = GpuImage::create(ctx, {1, 1}, color_format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
+    if (!color) return color.error();
+    auto depth = GpuImage::create(ctx, {1, 1}, depth_format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (!depth) return depth.error();
+    const std::uint32_t black = 0;
+    const float far_depth = 0.0f;
+    if (auto st = upload_image(ctx, pool, *color, &black, 4, VK_IMAGE_ASPECT_COLOR_BIT); !st) return st.error();
+    if (auto st = upload_image(ctx, pool, *depth, &far_depth, 4, VK_IMAGE_ASPECT_DEPTH_BIT); !st) return st.error();
+    c.placeholder_color_ = std::move(color).value();
+    c.placeholder_depth_ = std::move(depth).value();
+    return c;
+}
+
+Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExtent2D extent) {
+    if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
+    if (color_.handle() && extent.width == extent_.width && extent.height == extent_.height) return {};
+    vkDeviceWaitIdle(ctx.device);  // frames in flight may still sample the old copies
+    color_.reset();
+    depth_.reset();
+    extent_ = {};
+    auto color = GpuImage::create(ctx, extent, color_format_, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
+    if (!color) return color.error();
+    auto depth = GpuImage::create(ctx, extent, depth_format_, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (!depth) return depth.error();
+    // Give the new images a defined layout before any frame samples them.
+    Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
+        transition(cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+        transition(cmd, depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    });
+    if (!st) return st;
+    color_ = std::move(color).value();
+    depth_ = std::move(depth).value();
+    extent_ = extent;
+    return {};
+}
+
+void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const {
+    transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    transition(cmd, t.depth_image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               kDepthStage, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    const struct {
+        VkImage source;
+        const GpuImage& copy;
+        VkImageAspectFlags aspect;
+    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT}, {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT}};
+    for (const auto& p : pairs) {
+        // The previous frame's water pass sampled the copy: wait for it before overwriting.
+        transition(cmd, p.copy.handle(), p.aspect, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_WRITE_BIT);
+        VkImageCopy region{};
+        region.srcSubresource = {p.aspect, 0, 0, 1};
+        region.dstSubresource = {p.aspect, 0, 0, 1};
+        region.extent = {t.extent.width, t.extent.height, 1};
+        vkCmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                       &region);
+        transition(cmd, p.copy.handle(), p.aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                   VK_ACCESS_SHADER_READ_BIT);
+    }
+    transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kColorStage,
+               VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    transition(cmd, t.depth_image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kDepthStage,
+               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+}
+
+FramePasses::FramePasses(const FrameTargets& t) {
+    color.imageView = t.color_view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = t.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth = color;
+    depth.imageView = t.depth_view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far
+    rendering.renderArea = {{0, 0}, t.extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depth;
+}
+
+void FramePasses::load_for_water() {
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+}
+
+}  // namespace tidewater::render::detail

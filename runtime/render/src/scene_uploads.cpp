@@ -1,0 +1,97 @@
+#include "scene_uploads.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "terrain_mesh.hpp"
+#include "vk_util.hpp"
+
+namespace tidewater::render::detail {
+
+namespace {
+constexpr std::uint32_t kTerrainCells = 384;
+constexpr std::uint32_t kHeightTextureSize = 1024;
+}  // namespace
+
+PackedShore pack_shore(const ShoreWaves* shore) {
+    PackedShore p;
+    if (!shore) return p;
+    const std::size_t texels = static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
+    p.per_wave.assign(std::max<std::size_t>(1, texels * shore->wave_count()), glm::vec4(0.0f));
+    for (std::size_t w = 0; w < shore->wave_count(); ++w)
+        for (std::size_t k = 0; k < texels; ++k)
+            p.per_wave[w * texels + k] = {shore->phase_residual(w)[k], shore->amplitude_factor(w)[k], shore->wavevector_x(w)[k],
+                                          shore->wavevector_z(w)[k]};
+    p.shared.resize(texels);
+    for (std::size_t k = 0; k < texels; ++k)
+        p.shared[k] = {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]};
+    return p;
+}
+
+Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
+    if (holds(shore)) return false;
+    const ShoreWaves* model = wanted(shore);
+    const PackedShore packed = pack_shore(model);
+    GpuBuffer fresh[2];
+    const std::vector<glm::vec4>* data[2] = {&packed.per_wave, &packed.shared};
+    for (int i = 0; i < 2; ++i) {
+        auto made = GpuBuffer::create(ctx, data[i]->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!made) return made.error();
+        std::memcpy(made->mapped(), data[i]->data(), data[i]->size() * sizeof(glm::vec4));
+        fresh[i] = std::move(made).value();
+    }
+    per_wave_ = std::move(fresh[0]);
+    shared_ = std::move(fresh[1]);
+    uploaded_ = model;
+    alive_ = model ? shore : nullptr;
+    return true;
+}
+
+Status upload_image(const DeviceContext& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
+                    VkImageAspectFlags aspect) {
+    auto staging = GpuBuffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    if (!staging) return staging.error();
+    std::memcpy(staging->mapped(), data, bytes);
+    return submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
+        transition(cmd, image.handle(), aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {aspect, 0, 0, 1};
+        region.imageExtent = {image.extent().width, image.extent().height, 1};
+        vkCmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        transition(cmd, image.handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                   VK_ACCESS_SHADER_READ_BIT);
+    });
+}
+
+Result<TerrainUpload> TerrainUpload::create(const DeviceContext& ctx, VkCommandPool pool, const Terrain& terrain) {
+    TerrainUpload t;
+    const TerrainMesh mesh = build_terrain_mesh(terrain, kTerrainCells);
+    const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(float), ibytes = mesh.indices.size() * sizeof(std::uint32_t);
+    auto vb = GpuBuffer::create(ctx, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    if (!vb) return vb.error();
+    auto ib = GpuBuffer::create(ctx, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    if (!ib) return ib.error();
+    std::memcpy(vb->mapped(), mesh.vertices.data(), vbytes);
+    std::memcpy(ib->mapped(), mesh.indices.data(), ibytes);
+    auto heights = GpuImage::create(ctx, {kHeightTextureSize, kHeightTextureSize}, VK_FORMAT_R32_SFLOAT,
+                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    if (!heights) return heights.error();
+    const std::vector<float> samples = sample_height_texture(terrain, kHeightTextureSize);
+    if (auto st = upload_image(ctx, pool, *heights, samples.data(), samples.size() * sizeof(float), VK_IMAGE_ASPECT_COLOR_BIT); !st)
+        return st.error();
+    t.vertices = std::move(vb).value();
+    t.indices = std::move(ib).value();
+    t.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+    t.vertex_count = mesh.vertices.size() / 6;
+    t.heights = std::move(heights).value();
+    const double half = terrain.extent_half_size();
+    t.placement.mesh_origin = mesh.origin;
+    t.placement.height_rect_corner = terrain.extent_center() - glm::dvec2(half);
+    t.placement.height_rect_size = 2.0 * half;
+    t.water_half_size = std::max(3000.0, half);
+    return t;
+}
+
+}  // namespace tidewater::render::detail

@@ -1,0 +1,271 @@
+// Parsing is not baking: parse_scene only reads; bake_scene makes the shore model
+// once, with progress and cancellation, into an immutable scene that threads share;
+// a saved bake loads without the work.
+#include <atomic>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "test_helpers.hpp"
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+
+namespace tidewater {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kSmallIsland = R"({"version": 1, "name": "small island", "water_level": 0,
+    "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
+    "ocean": "ocean_rolling", "shore": {"resolution": 64}})";
+
+std::vector<glm::dvec2> beach_points() {
+    std::vector<glm::dvec2> points;
+    for (int k = 0; k < 300; ++k) {
+        const double angle = 0.021 * k, r = 240.0 + 120.0 * std::fmod(k * 0.618, 1.0);
+        points.push_back({r * std::cos(angle), r * std::sin(angle)});
+    }
+    return points;
+}
+
+TEST(SceneBake, ParsingDoesNotBake) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->ocean.shore(), nullptr);
+    EXPECT_EQ(scene->bake, nullptr);
+    EXPECT_FALSE(scene->baked());
+    // A scene whose shore is off has nothing to bake.
+    auto off = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -9}}, "ocean": "pool_calm",
+                               "shore": {"enabled": false}})",
+                           "off.json");
+    ASSERT_TRUE(off.ok());
+    EXPECT_TRUE(off->baked());
+}
+
+TEST(SceneBake, BakesTheShoreWithProgressAndLeavesItsInputAlone) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    std::vector<std::pair<std::string, double>> calls;
+    SceneBakeOptions options;
+    options.progress = [&](std::string_view stage, double f) { calls.emplace_back(std::string(stage), f); };
+    auto baked = bake_scene(*scene, options);
+    ASSERT_TRUE(baked.ok()) << baked.error().message;
+    const Scene& s = **baked;
+    ASSERT_TRUE(s.baked());
+    ASSERT_NE(s.ocean.shore(), nullptr);
+    EXPECT_EQ(s.ocean.shore(), s.bake->ocean_shore);
+    ASSERT_NE(s.bake->shoreline, nullptr);
+    EXPECT_FALSE(s.bake->loaded);
+    EXPECT_GT(s.bake->seconds, 0.0);
+    EXPECT_EQ(scene->ocean.shore(), nullptr);  // the parsed scene is unchanged
+    EXPECT_EQ(scene->bake, nullptr);
+
+    ASSERT_GE(calls.size(), 3u);
+    EXPECT_EQ(calls.front().first, "shoreline");
+    EXPECT_EQ(calls.back().first, "shore waves");
+    EXPECT_DOUBLE_EQ(calls.back().second, 1.0);
+    for (std::size_t k = 1; k < calls.size(); ++k) EXPECT_GE(calls[k].second, calls[k - 1].second) << k;
+}
+
+// The shoreline is baked once, at the distance field's resolution, and the model samples
+// it: its shore distance is that field's, signed by the model texel's own depth.
+TEST(SceneBake, OneShorelineBakeServesTheModel) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    SceneBakeOptions options;
+    options.distance_resolution = 256;
+    auto baked = bake_scene(*scene, options);
+    ASSERT_TRUE(baked.ok()) << baked.error().message;
+    const ShoreField& line = *(*baked)->bake->shoreline;
+    const ShoreWaves& model = *(*baked)->bake->ocean_shore;
+    ASSERT_EQ(line.resolution, 256);
+    ASSERT_EQ(model.resolution(), 64);
+    const int n = model.resolution();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * n + i;
+            const glm::dvec2 p = model.corner() + model.texel() * glm::dvec2(i + 0.5, j + 0.5);
+            const double depth = model.depth()[k];
+            EXPECT_NEAR(depth, 0.0 - scene->terrain.height_at(p), 1e-4 * (1.0 + std::abs(depth)));
+            const double expected = std::abs(line.distance_at(p)) * (depth > 0.0 ? 1.0 : -1.0);
+            ASSERT_NEAR(model.shore_distance()[k], expected, 1e-3 * (1.0 + std::abs(expected))) << i << "," << j;
+        }
+    // Against a model that baked its own 64-texel shoreline: within a model texel.
+    auto own = bake_scene(*scene);
+    ASSERT_TRUE(own.ok());
+    const ShoreWaves& coarse = *(*own)->bake->ocean_shore;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < coarse.shore_distance().size(); ++k)
+        worst = std::max(worst, std::abs(double(coarse.shore_distance()[k]) - double(model.shore_distance()[k])));
+    std::printf("shore distance from a 256 shoreline vs its own 64 bake: worst %.2f m (texel %.2f m)\n", worst, model.texel());
+    EXPECT_LT(worst, model.texel());
+}
+
+TEST(SceneBake, CancelStopsTheBakeAndKeepsNothing) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    // Cancelled before it starts.
+    std::stop_source before;
+    before.request_stop();
+    SceneBakeOptions options;
+    options.cancel = before.get_token();
+    auto none = bake_scene(*scene, options);
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(none.error().code, ErrorCode::cancelled);
+
+    // Cancelled from another thread part way through the waves.
+    std::stop_source stop;
+    std::atomic<bool> asked{false};
+    std::atomic<int> calls_after{0};
+    SceneBakeOptions during;
+    during.cancel = stop.get_token();
+    during.progress = [&](std::string_view stage, double) {
+        if (asked) ++calls_after;
+        if (stage == "shore waves" && !asked.exchange(true)) std::thread([&] { stop.request_stop(); }).join();
+    };
+    auto stopped = bake_scene(*scene, during);
+    ASSERT_FALSE(stopped.ok());
+    EXPECT_EQ(stopped.error().code, ErrorCode::cancelled);
+    EXPECT_NE(stopped.error().message.find("cancelled"), std::string::npos);
+    EXPECT_TRUE(asked);
+    // The waves still to do were skipped: far fewer reports than waves.
+    EXPECT_LT(calls_after.load(), static_cast<int>(scene->ocean.waves().size()) / 2);
+}
+
+TEST(SceneBake, SavedBakeLoadsWithoutTheWork) {
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_scene_bake_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    auto baked = bake_scene(*scene);
+    ASSERT_TRUE(baked.ok());
+    ASSERT_TRUE(save_scene_bake(dir / "bake", **baked).ok());
+    EXPECT_FALSE(save_scene_bake(dir / "other", *scene).ok());  // parsed, not baked
+
+    Scene from_folder = *scene;
+    from_folder.shore.bake_folder = dir / "bake";
+    std::vector<std::string> stages;
+    SceneBakeOptions options;
+    options.progress = [&](std::string_view stage, double) { stages.emplace_back(stage); };
+    auto loaded = bake_scene(from_folder, options);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_TRUE((*loaded)->bake->loaded);
+    EXPECT_EQ((*loaded)->bake->shoreline, nullptr);
+    for (const auto& s : stages) EXPECT_EQ(s, "loading");
+    // The same water within the 16-bit encoding.
+    const auto points = beach_points();
+    std::vector<double> a(points.size()), b(points.size());
+    ASSERT_TRUE(query_heights((*baked)->ocean, 3.0, points, a).ok());
+    ASSERT_TRUE(query_heights((*loaded)->ocean, 3.0, points, b).ok());
+    for (std::size_t k = 0; k < points.size(); ++k) EXPECT_NEAR(a[k], b[k], 5e-3) << k;
+
+    // A folder that is not there names the scene's shore entry and the file.
+    from_folder.shore.bake_folder = dir / "missing";
+    auto missing = bake_scene(from_folder);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("/shore"), std::string::npos) << missing.error().message;
+    EXPECT_NE(missing.error().message.find("missing"), std::string::npos) << missing.error().message;
+    fs::remove_all(dir);
+}
+
+TEST(SceneBake, EditorRebakesAfterATerrainEdit) {
+    // Deep water everywhere: the bake finds nothing to change.
+    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling",
+                                 "shore": {"resolution": 64}})",
+                             "edit");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto deep = bake_scene(*scene);
+    ASSERT_TRUE(deep.ok());
+    EXPECT_FALSE((*deep)->ocean.shore());
+    ASSERT_TRUE((*deep)->bake->ocean_shore);
+    EXPECT_TRUE((*deep)->bake->ocean_shore->trivial());
+    // The editor raises an island and re-bakes: the waves now stop on its land.
+    IslandTerrain island;
+    island.radius = 300.0;
+    island.height = 40.0;
+    island.seabed = -30.0;
+    scene->terrain = Terrain(island);
+    auto edited = bake_scene(*scene);
+    ASSERT_TRUE(edited.ok());
+    ASSERT_TRUE((*edited)->ocean.shore());
+    std::vector<glm::dvec2> centre{{0.0, 0.0}};
+    std::vector<SurfacePoint> out(1);
+    ASSERT_TRUE(query_surface((*edited)->ocean, 3.0, centre, out).ok());
+    EXPECT_EQ(out[0].height, 0.0);  // dry land: nothing moves
+    // A shore turned off bakes to no model; a bad grid is an error naming the shore.
+    scene->shore.enabled = false;
+    auto off = bake_scene(*scene);
+    ASSERT_TRUE(off.ok());
+    EXPECT_FALSE((*off)->ocean.shore());
+    scene->shore.enabled = true;
+    scene->shore.resolution = 3;
+    auto bad = bake_scene(*scene);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("/shore"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("resolution"), std::string::npos) << bad.error().message;
+}
+
+// Two threads query a shared baked scene while a third bakes an edit of it: the
+// queries give the same bits as before, and the new bake is whole.
+TEST(SceneBake, TwoThreadsQueryWhileAThirdBakes) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    auto first = bake_scene(*scene);
+    ASSERT_TRUE(first.ok());
+    const std::shared_ptr<const Scene> shared = *first;
+    const auto points = beach_points();
+    std::vector<double> expected(points.size());
+    ASSERT_TRUE(query_heights(shared->ocean, 2.0, points, expected).ok());
+
+    std::atomic<bool> baking{true};
+    std::atomic<int> mismatches{0}, rounds{0};
+    auto query_loop = [&] {
+        std::vector<double> h(points.size());
+        // At least a few rounds, and on until the bake is done.
+        for (int round = 0; round < 3 || baking; ++round) {
+            if (!query_heights(shared->ocean, 2.0, points, h).ok()) ++mismatches;
+            for (std::size_t k = 0; k < points.size(); ++k)
+                if (h[k] != expected[k]) ++mismatches;
+            ++rounds;
+        }
+    };
+    Scene edit = *scene;
+    IslandTerrain higher = std::get<IslandTerrain>(edit.terrain.shape());
+    higher.height = 60.0;
+    edit.terrain = Terrain(higher);
+    Result<std::shared_ptr<const Scene>> rebaked = Error{};
+    std::thread a(query_loop), b(query_loop);
+    std::thread baker([&] {
+        rebaked = bake_scene(edit);
+        baking = false;
+    });
+    baker.join();
+    a.join();
+    b.join();
+    EXPECT_EQ(mismatches.load(), 0);
+    EXPECT_GE(rounds.load(), 6);
+    ASSERT_TRUE(rebaked.ok()) << rebaked.error().message;
+    ASSERT_TRUE((*rebaked)->ocean.shore());
+    // The edit's bake is the one a quiet machine makes.
+    auto quiet = bake_scene(edit);
+    ASSERT_TRUE(quiet.ok());
+    std::vector<double> x(points.size()), y(points.size());
+    ASSERT_TRUE(query_heights((*rebaked)->ocean, 2.0, points, x).ok());
+    ASSERT_TRUE(query_heights((*quiet)->ocean, 2.0, points, y).ok());
+    for (std::size_t k = 0; k < points.size(); ++k) ASSERT_EQ(x[k], y[k]) << k;
+}
+
+TEST(SceneBake, RefusesABadDistanceResolution) {
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    SceneBakeOptions options;
+    options.distance_resolution = 4;
+    auto r = bake_scene(*scene, options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("distance_resolution"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tidewater
