@@ -278,5 +278,78 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
     for (const auto& m : host.messages) ADD_FAILURE() << m;
 }
 
+// The host's explicit calls do the waiting: record_frame refuses targets of a size the
+// renderer was not given with resize(), and an unbaked scene with a shore is refused
+// rather than drawn as open sea.
+TEST(Embedding, FramesNeedAResizeAndScenesABake) {
+    TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    {
+        render::RendererInitInfo init;
+        init.device = host.context();
+        init.frames_in_flight = 1;
+        auto renderer = render::Renderer::create(init);
+        ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+        auto parsed = default_scene();
+        ASSERT_TRUE(parsed.ok());
+        auto unbaked = (*renderer)->set_scene(*parsed);
+        ASSERT_FALSE(unbaked.ok());
+        EXPECT_NE(unbaked.error().message.find("bake_scene"), std::string::npos) << unbaked.error().message;
+        auto scene = test::baked(parsed);
+        ASSERT_TRUE(scene.ok());
+        ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
+
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = host.pool;
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+        ASSERT_EQ(vkAllocateCommandBuffers(host.device, &ai, &cmd), VK_SUCCESS);
+        render::FrameTargets targets;
+        targets.color_image = host.color.image;
+        targets.color_view = host.color.view;
+        targets.depth_image = host.depth.image;
+        targets.depth_view = host.depth.view;
+        targets.extent = {TestHost::kWidth, TestHost::kHeight};
+        render::FrameInfo frame;
+        frame.camera.position = scene->camera->position;
+        frame.camera.target = scene->camera->target;
+        frame.time = 1.0;
+
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        vkBeginCommandBuffer(cmd, &bi);
+        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        // Not sized yet, then sized for another extent: both refused, naming resize().
+        auto first = (*renderer)->record_frame(cmd, frame, targets);
+        ASSERT_FALSE(first.ok());
+        EXPECT_NE(first.error().message.find("resize()"), std::string::npos) << first.error().message;
+        vkEndCommandBuffer(cmd);
+        ASSERT_TRUE((*renderer)->resize({TestHost::kWidth * 2, TestHost::kHeight}).ok());
+        vkResetCommandPool(host.device, host.pool, 0);  // the refused recording is thrown away
+        vkBeginCommandBuffer(cmd, &bi);
+        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        auto other = (*renderer)->record_frame(cmd, frame, targets);
+        ASSERT_FALSE(other.ok());
+        EXPECT_NE(other.error().message.find("512x144"), std::string::npos) << other.error().message;
+        // Sized right, the frame records and the host submits it.
+        ASSERT_TRUE((*renderer)->resize(targets.extent).ok());
+        auto recorded = (*renderer)->record_frame(cmd, frame, targets);
+        ASSERT_TRUE(recorded.ok()) << recorded.error().message;
+        vkEndCommandBuffer(cmd);
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cmd;
+        ASSERT_EQ(vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE), VK_SUCCESS);
+        ASSERT_EQ(vkQueueWaitIdle(host.queue), VK_SUCCESS);
+        vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
+        renderer->reset();
+    }
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
+}
+
 }  // namespace
 }  // namespace tidewater
