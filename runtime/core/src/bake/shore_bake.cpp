@@ -1,4 +1,5 @@
 #include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "parallel.hpp"
 
@@ -42,13 +43,8 @@ private:
 }  // namespace
 
 double ShoreField::sample(const std::vector<float>& grid, glm::dvec2 p) const {
-    if (resolution <= 0) return 0.0;
-    const double u = std::clamp((p.x - corner.x) / texel - 0.5, 0.0, resolution - 1.0);
-    const double v = std::clamp((p.y - corner.y) / texel - 0.5, 0.0, resolution - 1.0);
-    const int i = std::min(static_cast<int>(u), resolution - 2), j = std::min(static_cast<int>(v), resolution - 2);
-    const double fu = u - i, fv = v - j;
-    auto at = [&](int a, int b) { return static_cast<double>(grid[index(a, b)]); };
-    return (1 - fv) * ((1 - fu) * at(i, j) + fu * at(i + 1, j)) + fv * ((1 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1));
+    if (resolution < 2) return resolution == 1 ? static_cast<double>(grid[0]) : 0.0;
+    return detail::grid_taps(corner, texel, resolution, p)(grid);
 }
 
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options) {

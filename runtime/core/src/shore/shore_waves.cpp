@@ -12,6 +12,7 @@
 #include "parallel.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/dispersion.hpp"
+#include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
@@ -295,17 +296,7 @@ void ShoreWaves::pack_query_texels() {
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
-    const double u = std::clamp((p.x - f_.corner.x) / f_.texel - 0.5, 0.0, f_.resolution - 1.0);
-    const double v = std::clamp((p.y - f_.corner.y) / f_.texel - 0.5, 0.0, f_.resolution - 1.0);
-    const int i = std::min(static_cast<int>(u), f_.resolution - 2), j = std::min(static_cast<int>(v), f_.resolution - 2);
-    const double fu = u - i, fv = v - j;
-    const std::size_t k00 = static_cast<std::size_t>(j) * static_cast<std::size_t>(f_.resolution) + static_cast<std::size_t>(i);
-    const std::size_t k10 = k00 + 1, k01 = k00 + static_cast<std::size_t>(f_.resolution), k11 = k01 + 1;
-    const double w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv), w01 = (1 - fu) * fv, w11 = fu * fv;
-    auto lerp = [&](const std::vector<float>& f) {
-        return w00 * static_cast<double>(f[k00]) + w10 * static_cast<double>(f[k10]) + w01 * static_cast<double>(f[k01]) +
-               w11 * static_cast<double>(f[k11]);
-    };
+    const detail::GridTaps lerp = detail::grid_taps(f_.corner, f_.texel, f_.resolution, p);
     LocalShore s;
     s.depth = lerp(f_.depth);
     s.shore_distance = lerp(f_.shore_distance);
