@@ -195,7 +195,7 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         !model->at("corner_m")[0].is_number() || !model->at("corner_m")[1].is_number())
         return model->error("corner_m", "expected [x, z] in metres");
     f.corner = {model->at("corner_m")[0].get<double>(), model->at("corner_m")[1].get<double>()};
-    // The grid covers the terrain's extent, as a bake on load would.
+    // The grid covers the terrain's extent, as bake_scene's own bake would.
     const double half = terrain.extent_half_size();
     const glm::dvec2 corner = terrain.extent_center() - glm::dvec2(half);
     if (!close(f.texel * static_cast<double>(n), 2.0 * half) || !close(f.corner.x, corner.x) || !close(f.corner.y, corner.y))
