@@ -175,6 +175,33 @@ void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkIm
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
+/// Begins `cmd` and moves the host's images to attachment layouts.
+void begin_attachments(TestHost& host, VkCommandBuffer cmd) {
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    vkBeginCommandBuffer(cmd, &bi);
+    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+}
+
+/// A fresh primary command buffer, begun, with the host's images moved to attachment layouts.
+VkCommandBuffer begin_commands(TestHost& host) {
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = host.pool;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    if (vkAllocateCommandBuffers(host.device, &ai, &cmd) != VK_SUCCESS) return VK_NULL_HANDLE;
+    begin_attachments(host, cmd);
+    return cmd;
+}
+
+bool submit_and_wait(TestHost& host, VkCommandBuffer cmd) {
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    return vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE) == VK_SUCCESS && vkQueueWaitIdle(host.queue) == VK_SUCCESS;
+}
+
 TEST(Embedding, RecordsIntoTheHostsOwnPass) {
     TestHost host;
     host.create();
@@ -193,16 +220,8 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         ASSERT_TRUE(scene.ok());
         ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
 
-        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        ai.commandPool = host.pool;
-        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        ai.commandBufferCount = 1;
-        VkCommandBuffer cmd = VK_NULL_HANDLE;
-        ASSERT_EQ(vkAllocateCommandBuffers(host.device, &ai, &cmd), VK_SUCCESS);
-        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        vkBeginCommandBuffer(cmd, &bi);
-        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        VkCommandBuffer cmd = begin_commands(host);
+        ASSERT_NE(cmd, VK_NULL_HANDLE);
         VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         color.imageView = host.color.view;
         color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -243,11 +262,7 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
         vkEndCommandBuffer(cmd);
-        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        si.commandBufferCount = 1;
-        si.pCommandBuffers = &cmd;
-        ASSERT_EQ(vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE), VK_SUCCESS);
-        ASSERT_EQ(vkQueueWaitIdle(host.queue), VK_SUCCESS);
+        ASSERT_TRUE(submit_and_wait(host, cmd));
 
         render::RgbaImage img;
         img.width = TestHost::kWidth;
@@ -300,12 +315,8 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
         ASSERT_TRUE(scene.ok());
         ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
 
-        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        ai.commandPool = host.pool;
-        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        ai.commandBufferCount = 1;
-        VkCommandBuffer cmd = VK_NULL_HANDLE;
-        ASSERT_EQ(vkAllocateCommandBuffers(host.device, &ai, &cmd), VK_SUCCESS);
+        VkCommandBuffer cmd = begin_commands(host);
+        ASSERT_NE(cmd, VK_NULL_HANDLE);
         render::FrameTargets targets;
         targets.color_image = host.color.image;
         targets.color_view = host.color.view;
@@ -317,10 +328,6 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
         frame.camera.target = scene->camera->target;
         frame.time = 1.0;
 
-        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        vkBeginCommandBuffer(cmd, &bi);
-        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
         // Not sized yet, then sized for another extent: both refused, naming resize().
         auto first = (*renderer)->record_frame(cmd, frame, targets);
         ASSERT_FALSE(first.ok());
@@ -328,9 +335,7 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
         vkEndCommandBuffer(cmd);
         ASSERT_TRUE((*renderer)->resize({TestHost::kWidth * 2, TestHost::kHeight}).ok());
         vkResetCommandPool(host.device, host.pool, 0);  // the refused recording is thrown away
-        vkBeginCommandBuffer(cmd, &bi);
-        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-        barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        begin_attachments(host, cmd);
         auto other = (*renderer)->record_frame(cmd, frame, targets);
         ASSERT_FALSE(other.ok());
         EXPECT_NE(other.error().message.find("512x144"), std::string::npos) << other.error().message;
@@ -339,11 +344,7 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
         auto recorded = (*renderer)->record_frame(cmd, frame, targets);
         ASSERT_TRUE(recorded.ok()) << recorded.error().message;
         vkEndCommandBuffer(cmd);
-        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        si.commandBufferCount = 1;
-        si.pCommandBuffers = &cmd;
-        ASSERT_EQ(vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE), VK_SUCCESS);
-        ASSERT_EQ(vkQueueWaitIdle(host.queue), VK_SUCCESS);
+        ASSERT_TRUE(submit_and_wait(host, cmd));
         vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
         renderer->reset();
     }
