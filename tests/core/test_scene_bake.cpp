@@ -260,11 +260,14 @@ TEST(SceneBake, TwoThreadsQueryWhileAThirdBakes) {
 TEST(SceneBake, RefusesABadDistanceResolution) {
     auto scene = parse_scene(kSmallIsland, "s.json");
     ASSERT_TRUE(scene.ok());
-    SceneBakeOptions options;
-    options.distance_resolution = 4;
-    auto r = bake_scene(*scene, options);
-    ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.error().message.find("distance_resolution"), std::string::npos);
+    // Out of range, and coarser than the 64-texel model that would sample it.
+    for (const auto& [resolution, words] : {std::pair{4, "distance_resolution"}, std::pair{32, "coarser than the shore model"}}) {
+        SceneBakeOptions options;
+        options.distance_resolution = resolution;
+        auto r = bake_scene(*scene, options);
+        ASSERT_FALSE(r.ok()) << resolution;
+        EXPECT_NE(r.error().message.find(words), std::string::npos) << r.error().message;
+    }
 }
 
 }  // namespace
