@@ -187,8 +187,16 @@ TEST(SceneBake, EditorRebakesAfterATerrainEdit) {
     island.height = 40.0;
     island.seabed = -30.0;
     scene->terrain = Terrain(island);
+    // A copy of the old bake with the new terrain is not baked: it would draw the old shore.
+    Scene stale = **deep;
+    EXPECT_TRUE(stale.baked());
+    stale.terrain = scene->terrain;
+    EXPECT_FALSE(stale.baked());
     auto edited = bake_scene(*scene);
     ASSERT_TRUE(edited.ok());
+    Scene swapped_ocean = **edited;
+    swapped_ocean.ocean = scene->ocean;  // the parsed ocean: no shore model
+    EXPECT_FALSE(swapped_ocean.baked());
     ASSERT_TRUE((*edited)->ocean.shore());
     std::vector<glm::dvec2> centre{{0.0, 0.0}};
     std::vector<SurfacePoint> out(1);

@@ -91,12 +91,26 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         auto ocean = scene.ocean.with_shore(std::move(felt));
         if (!ocean) return in_shore(scene, ocean.error());
         baked->ocean = std::move(ocean).value();
+        bake->terrain = scene.terrain;
+        bake->water_level = scene.water_level();
+        bake->shore = scene.shore;
         bake->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         baked->bake = std::move(bake);
         return std::shared_ptr<const Scene>(std::move(baked));
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("scene \"{}\": the bake failed: {}", scene.name, e.what())};
     }
+}
+
+bool Scene::baked() const {
+    if (!shore.enabled) return true;
+    if (!bake || !(bake->terrain == terrain) || bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
+        bake->shore.resolution != shore.resolution || bake->shore.breaking_index != shore.breaking_index ||
+        bake->shore.bake_folder != shore.bake_folder)
+        return false;
+    const auto& model = bake->ocean_shore;
+    const bool felt = model && !model->trivial();
+    return ocean.shore() == (felt ? model : nullptr);
 }
 
 Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {

@@ -258,8 +258,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
 Status Renderer::set_scene(const Scene& scene) {
     Impl& m = *impl_;
     if (!scene.baked())
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked: pass it through "
-                                                              "bake_scene (or disable its shore) before set_scene", scene.name)};
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
+                                                              "since its bake: pass it through bake_scene (or disable its shore) "
+                                                              "before set_scene", scene.name)};
     vkDeviceWaitIdle(m.ctx().device);  // the old terrain may be in use by frames in flight
     auto terrain = detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain);
     if (!terrain) return terrain.error();

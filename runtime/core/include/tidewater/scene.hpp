@@ -54,8 +54,10 @@ struct Scene {
     std::shared_ptr<const SceneBake> bake;
 
     double water_level() const { return ocean.level(); }  ///< m, world y of the rest water surface.
-    /// True when the scene is ready to draw and query: baked, or with nothing to bake.
-    bool baked() const { return bake != nullptr || !shore.enabled; }
+    /// True when the scene is ready to draw and query: its shore is disabled, or `bake`
+    /// was made from this terrain, water level and shore settings and the ocean carries
+    /// its model. A copy edited since its bake (say, a new terrain) is not baked.
+    bool baked() const;
 };
 
 /// Parses scene JSON text. `source` names it in messages (a path or "<default scene>");

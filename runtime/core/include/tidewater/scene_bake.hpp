@@ -41,6 +41,10 @@ struct SceneBake {
     std::shared_ptr<const ShoreField> shoreline;
     bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
     double seconds = 0.0;  ///< Wall-clock time of the bake or load.
+    /// What it was made from, so that Scene::baked() can tell an edited copy.
+    Terrain terrain;
+    double water_level = 0.0;
+    SceneShore shore;
 };
 
 struct SceneBakeOptions {

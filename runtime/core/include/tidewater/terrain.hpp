@@ -22,12 +22,14 @@ struct Gray16Image {
 
 struct FlatTerrain {
     double height = -100.0;  ///< m
+    bool operator==(const FlatTerrain&) const = default;
 };
 
 /// h(x, z) = height + slope.x * x + slope.y * z.
 struct PlaneTerrain {
     double height = -100.0;   ///< m at the origin
     glm::dvec2 slope{0.0};    ///< dh/dx, dh/dz (dimensionless)
+    bool operator==(const PlaneTerrain&) const = default;
 };
 
 /// A 16-bit greyscale heightmap: pixel value 0 is min_height, 65535 is max_height.
@@ -40,6 +42,7 @@ struct HeightmapTerrain {
     double min_height = -50.0;            ///< m
     double max_height = 50.0;             ///< m
     std::shared_ptr<const Gray16Image> image;
+    bool operator==(const HeightmapTerrain&) const = default;  ///< The same pixels object, not equal pixels.
 };
 
 /// A procedural island: beaches of a gentle slope, cliffs along part of the
@@ -50,6 +53,7 @@ struct IslandTerrain {
     double height = 80.0;     ///< m, typical inland height
     double seabed = -40.0;    ///< m, depth far offshore (< 0)
     glm::dvec2 center{0.0};   ///< m
+    bool operator==(const IslandTerrain&) const = default;
 };
 
 class Terrain {
@@ -61,6 +65,8 @@ public:
 
     double height_at(glm::dvec2 p) const;
     const Shape& shape() const { return shape_; }
+    /// The same shape with the same parameters (a heightmap: the same pixels object).
+    bool operator==(const Terrain&) const = default;
     const char* kind_name() const;
     /// Centre and half-size (m) of the square region worth drawing; unbounded
     /// shapes (flat, plane) report a 3 km half-size around the origin.
