@@ -199,7 +199,7 @@ case "$CASE" in
     check "per-wave fields" bash -c "test -s baked/wave_00_phase_residual.png && test -s baked/wave_00_amplitude_factor.png && test -s baked/wave_00_wavevector_x.png && test -s baked/wave_00_wavevector_z.png"
     check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
 
-    # A scene that loads the bake queries like one that bakes on load (within the 16-bit encoding).
+    # A scene that loads the bake queries like one that bakes its own (within the 16-bit encoding).
     sed 's|"ocean": "ocean_rolling",|"ocean": "ocean_rolling", "shore": {"bake": "baked"},|' "$EXAMPLES/scenes/default.json" > loads_bake.json
     check "scene names the bake" grep -q '"bake": "baked"' loads_bake.json
     printf 'x,z\n' > shore_points.csv
@@ -207,7 +207,7 @@ case "$CASE" in
     "$TW" query --points shore_points.csv --time 7.5 --out on_load.csv 2>/dev/null
     "$TW" query --scene loads_bake.json --points shore_points.csv --time 7.5 --out from_bake.csv 2>/dev/null
     check "query with the loaded bake exits 0" test -s from_bake.csv
-    check "loaded bake matches a bake on load (heights within 5 mm)" same_heights on_load.csv from_bake.csv 0.005 200
+    check "loaded bake matches a fresh bake (heights within 5 mm)" same_heights on_load.csv from_bake.csv 0.005 200
 
     "$TW" bake --resolution 64 --model-resolution 32 --out baked --quiet > /dev/null
     check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && grep -q '\"resolution\": 32' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"

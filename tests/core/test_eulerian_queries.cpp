@@ -12,6 +12,8 @@ namespace {
 
 using test::make_body;
 using test::random_waves;
+using test::expect_bitwise_equal;
+using test::surface_on_threads;
 
 /// An independent yardstick: the rest position whose particle lands on `point`, found
 /// by Newton with backtracking on the forward (Lagrangian) map to 1e-12 m.
@@ -188,28 +190,13 @@ TEST(EulerianQuery, RejectsMismatchedSpans) {
     EXPECT_TRUE(query_heights(body, 0.0, {}, none).ok());
 }
 
-std::vector<SurfacePoint> run_with_threads(const WaterBody& body, const std::vector<glm::dvec2>& pts, unsigned threads) {
-    std::vector<SurfacePoint> out(pts.size());
-    QueryOptions o;
-    o.threads = threads;
-    EXPECT_TRUE(query_surface(body, 123.0, pts, out, o).ok());
-    return out;
-}
-
 // Bit-identical results for 1, 2, 3 and 8 threads (each point is solved on its own).
 TEST(EulerianQuery, DeterministicAcrossThreadCounts) {
     const WaterBody body = make_body(random_waves(32, 0.8, 9));
     std::vector<glm::dvec2> pts(50001);
     for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {std::sin(i * 0.1) * 300.0, std::cos(i * 0.07) * 300.0};
-    const auto one = run_with_threads(body, pts, 1);
-    for (unsigned threads : {2u, 3u, 8u}) {
-        const auto many = run_with_threads(body, pts, threads);
-        for (std::size_t i = 0; i < pts.size(); ++i) {
-            ASSERT_EQ(std::memcmp(&one[i].height, &many[i].height, sizeof(double)), 0) << i;
-            ASSERT_EQ(std::memcmp(&one[i].normal, &many[i].normal, sizeof(glm::dvec3)), 0) << i;
-            ASSERT_EQ(std::memcmp(&one[i].velocity, &many[i].velocity, sizeof(glm::dvec3)), 0) << i;
-        }
-    }
+    const auto one = surface_on_threads(body, 123.0, pts, 1);
+    for (unsigned threads : {2u, 3u, 8u}) expect_bitwise_equal(one, surface_on_threads(body, 123.0, pts, threads));
     // Heights-only and full queries give the same heights.
     std::vector<double> heights(pts.size());
     ASSERT_TRUE(query_heights(body, 123.0, pts, heights).ok());

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <random>
 #include <vector>
@@ -37,6 +38,27 @@ inline std::vector<WaveSpec> random_waves(int n, double fold, std::uint64_t seed
     // Scale amplitudes (not Q, which is capped at 1) so that sum(QkA) hits the target.
     for (auto& s : w) s.amplitude *= fold / sum;
     return w;
+}
+
+/// The full surface at `pts` and `time`, solved on `threads` threads.
+inline std::vector<SurfacePoint> surface_on_threads(const WaterBody& body, double time, const std::vector<glm::dvec2>& pts,
+                                                    unsigned threads) {
+    std::vector<SurfacePoint> out(pts.size());
+    QueryOptions o;
+    o.threads = threads;
+    EXPECT_TRUE(query_surface(body, time, pts, out, o).ok());
+    return out;
+}
+
+/// The same bits for every point: height, normal, velocity and foam.
+inline void expect_bitwise_equal(const std::vector<SurfacePoint>& a, const std::vector<SurfacePoint>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(std::memcmp(&a[i].height, &b[i].height, sizeof(double)), 0) << i;
+        ASSERT_EQ(std::memcmp(&a[i].normal, &b[i].normal, sizeof(glm::dvec3)), 0) << i;
+        ASSERT_EQ(std::memcmp(&a[i].velocity, &b[i].velocity, sizeof(glm::dvec3)), 0) << i;
+        ASSERT_EQ(std::memcmp(&a[i].foam, &b[i].foam, sizeof(double)), 0) << i;
+    }
 }
 
 }  // namespace tidewater::test

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "../baked_scene.hpp"
+#include "test_helpers.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/constants.hpp"
@@ -151,24 +152,6 @@ TEST(ShoreQuery, DepthAndShoreDistanceBelongToTheQueryPoint) {
     }
 }
 
-std::vector<SurfacePoint> run(const WaterBody& body, const std::vector<glm::dvec2>& pts, unsigned threads) {
-    std::vector<SurfacePoint> out(pts.size());
-    QueryOptions o;
-    o.threads = threads;
-    EXPECT_TRUE(query_surface(body, 55.5, pts, out, o).ok());
-    return out;
-}
-
-void expect_identical(const std::vector<SurfacePoint>& a, const std::vector<SurfacePoint>& b) {
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        ASSERT_EQ(std::memcmp(&a[i].height, &b[i].height, sizeof(double)), 0) << i;
-        ASSERT_EQ(std::memcmp(&a[i].normal, &b[i].normal, sizeof(glm::dvec3)), 0) << i;
-        ASSERT_EQ(std::memcmp(&a[i].velocity, &b[i].velocity, sizeof(glm::dvec3)), 0) << i;
-        ASSERT_EQ(a[i].foam, b[i].foam) << i;
-    }
-}
-
 std::vector<glm::dvec2> coast_points() {
     std::vector<glm::dvec2> pts(30001);
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -183,7 +166,7 @@ std::vector<glm::dvec2> coast_points() {
 // give the same bits, heights-only calls included.
 TEST(ShoreQuery, BitIdenticalForAnyBatching) {
     const auto pts = coast_points();
-    const auto whole = run(island().ocean, pts, 1);
+    const auto whole = test::surface_on_threads(island().ocean, 55.5, pts, 1);
     std::vector<SurfacePoint> pieces(pts.size());
     std::vector<double> heights(pts.size());
     ASSERT_TRUE(query_heights(island().ocean, 55.5, pts, heights).ok());
@@ -191,24 +174,24 @@ TEST(ShoreQuery, BitIdenticalForAnyBatching) {
         const std::size_t n = std::min<std::size_t>(37, pts.size() - at);
         ASSERT_TRUE(query_surface(island().ocean, 55.5, std::span(pts.data() + at, n), std::span(pieces.data() + at, n)).ok());
     }
-    expect_identical(whole, pieces);
+    test::expect_bitwise_equal(whole, pieces);
     for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0) << i;
 }
 
 TEST(ShoreQuery, BitIdenticalForAnyThreadCount) {
     const auto pts = coast_points();
-    const auto one = run(island().ocean, pts, 1);
-    for (unsigned threads : {0u, 2u, 3u, 8u}) expect_identical(one, run(island().ocean, pts, threads));
+    const auto one = test::surface_on_threads(island().ocean, 55.5, pts, 1);
+    for (unsigned threads : {0u, 2u, 3u, 8u}) test::expect_bitwise_equal(one, test::surface_on_threads(island().ocean, 55.5, pts, threads));
 }
 
 // Two threads query (one open water, one the shore) while a third bakes a shore model:
 // one scheduler serves all three, and the answers do not change.
 TEST(ShoreQuery, QueriesWhileAnotherThreadBakes) {
     const auto pts = coast_points();
-    const auto expected = run(island().ocean, pts, 1);
+    const auto expected = test::surface_on_threads(island().ocean, 55.5, pts, 1);
     auto open = island().ocean.with_shore(nullptr);
     ASSERT_TRUE(open.ok());
-    const auto expected_open = run(*open, pts, 1);
+    const auto expected_open = test::surface_on_threads(*open, 55.5, pts, 1);
     std::atomic<bool> baking{true};
     std::atomic<int> shore_rounds{0}, open_rounds{0};
     std::thread baker([&] {
@@ -223,13 +206,13 @@ TEST(ShoreQuery, QueriesWhileAnotherThreadBakes) {
     });
     std::thread shore_queries([&] {
         do {
-            expect_identical(expected, run(island().ocean, pts, 0));
+            test::expect_bitwise_equal(expected, test::surface_on_threads(island().ocean, 55.5, pts, 0));
             ++shore_rounds;
         } while (baking);
     });
     std::thread open_queries([&] {
         do {
-            expect_identical(expected_open, run(*open, pts, 2));
+            test::expect_bitwise_equal(expected_open, test::surface_on_threads(*open, 55.5, pts, 2));
             ++open_rounds;
         } while (baking);
     });

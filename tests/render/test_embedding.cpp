@@ -202,16 +202,22 @@ bool submit_and_wait(TestHost& host, VkCommandBuffer cmd) {
     return vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE) == VK_SUCCESS && vkQueueWaitIdle(host.queue) == VK_SUCCESS;
 }
 
+/// The renderer for the host's images: their formats, one frame in flight.
+render::RendererInitInfo renderer_info(const TestHost& host) {
+    render::RendererInitInfo init;
+    init.device = host.context();
+    init.color_format = VK_FORMAT_R8G8B8A8_UNORM;
+    init.depth_format = VK_FORMAT_D32_SFLOAT;
+    init.frames_in_flight = 1;
+    return init;
+}
+
 TEST(Embedding, RecordsIntoTheHostsOwnPass) {
     TestHost host;
     host.create();
     ASSERT_NE(host.device, VK_NULL_HANDLE);
     {
-        render::RendererInitInfo init;
-        init.device = host.context();
-        init.color_format = VK_FORMAT_R8G8B8A8_UNORM;
-        init.depth_format = VK_FORMAT_D32_SFLOAT;
-        init.frames_in_flight = 1;
+        render::RendererInitInfo init = renderer_info(host);
         std::vector<std::string> log;
         init.log = [&](const std::string& m) { log.push_back(m); };
         auto renderer = render::Renderer::create(init);
@@ -301,9 +307,7 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
     host.create();
     ASSERT_NE(host.device, VK_NULL_HANDLE);
     {
-        render::RendererInitInfo init;
-        init.device = host.context();
-        init.frames_in_flight = 1;
+        render::RendererInitInfo init = renderer_info(host);
         auto renderer = render::Renderer::create(init);
         ASSERT_TRUE(renderer.ok()) << renderer.error().message;
         auto parsed = default_scene();

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <mutex>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <mutex>
 
 #include "fast_marching.hpp"
 #include "parallel.hpp"
