@@ -8,6 +8,7 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 
 namespace tidewater {
 
@@ -47,14 +48,31 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
     try {
         auto bake = std::make_shared<SceneBake>();
         BakeProgress progress(options);
-        if (scene.shore.enabled && !scene.shore.bake_folder.empty()) {
-            progress.report("loading", 0.0, 1.0, 0.0);
-            auto loaded = load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), scene.terrain);
+        // Lakes and rivers first: a river carves the terrain the shore is baked over.
+        Terrain terrain = scene.terrain.with_cuts({});
+        const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
+        const double bodies_share = has_bodies ? 0.2 : 0.0;
+        if (has_bodies) {
+            detail::BodiesBakeOptions bodies_options;
+            bodies_options.lake_resolution = scene.shore.resolution;
+            bodies_options.cancel = options.cancel;
+            bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_share, f); };
+            Scene uncut = scene;
+            uncut.terrain = terrain;
+            auto bodies = detail::bake_water_bodies(uncut, bodies_options);
+            if (!bodies) return bodies.error();
+            terrain = bodies->terrain;
+            bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
+        }
+        const bool shore = scene.shore.enabled && scene.has_ocean;
+        if (shore && !scene.shore.bake_folder.empty()) {
+            progress.report("loading", bodies_share, 1.0, 0.0);
+            auto loaded = load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), terrain);
             if (!loaded) return in_shore(scene, loaded.error());
             bake->ocean_shore = std::move(loaded).value();
             bake->loaded = true;
-            progress.report("loading", 0.0, 1.0, 1.0);
-        } else if (scene.shore.enabled) {
+            progress.report("loading", bodies_share, 1.0, 1.0);
+        } else if (shore) {
             // One shoreline bake serves the distance field and the shore model, which
             // samples it: it may be finer than the model's grid, never coarser.
             const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
@@ -63,13 +81,13 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
                                              fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
                                                          "which samples it: give a distance resolution of at least {1}",
                                                          distance_resolution, scene.shore.resolution)});
-            const double shoreline_share = 0.3;
+            const double shoreline_share = bodies_share + 0.3 * (1.0 - bodies_share);
             BakeOptions shoreline_options;
             shoreline_options.resolution = distance_resolution;
             shoreline_options.threads = options.threads;
             shoreline_options.cancel = options.cancel;
-            shoreline_options.progress = [&](double f) { progress.report("shoreline", 0.0, shoreline_share, f); };
-            auto shoreline = bake_shore(scene.terrain, scene.water_level(), shoreline_options);
+            shoreline_options.progress = [&](double f) { progress.report("shoreline", bodies_share, shoreline_share, f); };
+            auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
             if (!shoreline) return in_shore(scene, shoreline.error());
 
             ShoreWaveOptions model_options;
@@ -78,7 +96,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             model_options.threads = options.threads;
             model_options.cancel = options.cancel;
             model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
-            auto model = ShoreWaves::bake(scene.ocean.waves(), scene.terrain, scene.water_level(), model_options, &*shoreline);
+            auto model = ShoreWaves::bake(scene.ocean.waves(), terrain, scene.water_level(), model_options, &*shoreline);
             if (!model) return in_shore(scene, model.error());
             bake->ocean_shore = std::move(model).value();
             bake->shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
@@ -86,12 +104,17 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
 
         auto baked = std::make_shared<Scene>(scene);
+        if (has_bodies)
+            baked->warnings.push_back(fmt::format("scene \"{}\": its lakes and rivers are baked (extents, falling surfaces, "
+                                                  "carved channels, currents) and their channels drawn, but their water is not "
+                                                  "drawn or queried yet", scene.name));
         // An all-deep model changes nothing: the ocean carries none and queries skip the shore.
         std::shared_ptr<const ShoreWaves> felt = bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
         auto ocean = scene.ocean.with_shore(std::move(felt));
         if (!ocean) return in_shore(scene, ocean.error());
         baked->ocean = std::move(ocean).value();
-        bake->terrain = scene.terrain;
+        baked->terrain = terrain;
+        bake->terrain = terrain;
         bake->water_level = scene.water_level();
         bake->shore = scene.shore;
         bake->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -103,8 +126,13 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
 }
 
 bool Scene::baked() const {
-    if (!shore.enabled) return true;
-    if (!bake || !(bake->terrain == terrain) || bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
+    const bool has_bodies = !lakes.empty() || !rivers.empty();
+    if (!has_bodies && !(shore.enabled && has_ocean)) return true;
+    if (!bake || !(bake->terrain == terrain)) return false;
+    if (has_bodies && (!bake->bodies || bake->bodies->lakes.size() != lakes.size() || bake->bodies->rivers.size() != rivers.size()))
+        return false;
+    if (!(shore.enabled && has_ocean)) return true;
+    if (bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
         bake->shore.resolution != shore.resolution || bake->shore.breaking_index != shore.breaking_index ||
         bake->shore.bake_folder != shore.bake_folder)
         return false;

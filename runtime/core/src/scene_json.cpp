@@ -5,15 +5,19 @@
 
 #include "embedded_text.hpp"
 #include "json_reader.hpp"
+#include "scene/scene_json_parts.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/detail/image_io.hpp"
 
 namespace tidewater {
 
+
 namespace {
 
 using detail::ObjectReader;
+using detail::check_range;
+using detail::read_pair;
 using nlohmann::json;
 
 constexpr double kMaxAbsHeight = 1e5;
@@ -147,48 +151,6 @@ Status read_profile_settings(const ObjectReader& r, WaterProfile& p) {
     return r.number("time_offset", p.time_offset);
 }
 
-Result<WaterProfile> read_ocean(const json& value, const std::string& source, const std::filesystem::path& base_dir) {
-    if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
-    auto r = ObjectReader::open(value, source, "/ocean");
-    if (!r) return r.error();
-    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "fold_policy", "time_offset", "name",
-                                 "description"});
-        !st)
-        return st.error();
-    WaterProfile profile;
-    if (r->has("preset")) {
-        std::string name;
-        if (auto st = r->string("preset", name); !st) return st.error();
-        auto preset = load_preset(name, base_dir);
-        if (!preset) return preset.error();
-        profile = std::move(preset).value();
-    }
-    if (auto st = read_wave_source(*r, profile, true); !st) return st.error();
-    if (auto st = read_profile_settings(*r, profile); !st) return st.error();
-    return profile;
-}
-
-/// Reads [a, b] at `key` into `out`; each value within |v| <= limit.
-Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit) {
-    if (!r.has(key)) return required ? Status(r.error(key, "required [a, b] is missing")) : Status();
-    const json& v = r.at(key);
-    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) {
-        return r.error(key, "expected [a, b], two numbers");
-    }
-    const glm::dvec2 pair{v[0].get<double>(), v[1].get<double>()};
-    for (double x : {pair.x, pair.y}) {
-        if (!std::isfinite(x) || std::abs(x) > limit)
-            return r.error(key, fmt::format("{} is out of range (allowed: |value| <= {})", x, limit));
-    }
-    out = pair;
-    return {};
-}
-
-Status check_range(const ObjectReader& r, std::string_view key, double v, double lo, double hi, const char* unit) {
-    if (v < lo || v > hi) return r.error(key, fmt::format("{} is out of range (allowed: {} to {}{})", v, lo, hi, unit));
-    return {};
-}
-
 Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::path& base_dir) {
     if (auto st = r.allow_only({"file", "size", "height_range", "center"}); !st) return st.error();
     HeightmapTerrain t;
@@ -319,6 +281,54 @@ bool looks_like_path(const std::string& name) {
 
 }  // namespace
 
+namespace detail {
+
+using nlohmann::json;
+
+Result<WaterProfile> read_water_profile(const json& value, const std::string& source, const std::string& path,
+                                        const std::filesystem::path& base_dir) {
+    if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
+    auto r = ObjectReader::open(value, source, path);
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "fold_policy", "time_offset", "name",
+                                 "description"});
+        !st)
+        return st.error();
+    WaterProfile profile;
+    if (r->has("preset")) {
+        std::string name;
+        if (auto st = r->string("preset", name); !st) return st.error();
+        auto preset = load_preset(name, base_dir);
+        if (!preset) return preset.error();
+        profile = std::move(preset).value();
+    }
+    if (auto st = read_wave_source(*r, profile, true); !st) return st.error();
+    if (auto st = read_profile_settings(*r, profile); !st) return st.error();
+    return profile;
+}
+
+Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit) {
+    if (!r.has(key)) return required ? Status(r.error(key, "required [a, b] is missing")) : Status();
+    const json& v = r.at(key);
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) {
+        return r.error(key, "expected [a, b], two numbers");
+    }
+    const glm::dvec2 pair{v[0].get<double>(), v[1].get<double>()};
+    for (double x : {pair.x, pair.y}) {
+        if (!std::isfinite(x) || std::abs(x) > limit)
+            return r.error(key, fmt::format("{} is out of range (allowed: |value| <= {})", x, limit));
+    }
+    out = pair;
+    return {};
+}
+
+Status check_range(const ObjectReader& r, std::string_view key, double v, double lo, double hi, const char* unit) {
+    if (v < lo || v > hi) return r.error(key, fmt::format("{} is out of range (allowed: {} to {}{})", v, lo, hi, unit));
+    return {};
+}
+
+}  // namespace detail
+
 std::vector<std::string> bundled_preset_names() {
     std::vector<std::string> names;
     for (const auto& e : embedded::presets::entries()) names.emplace_back(e.name);
@@ -368,26 +378,40 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "camera", "shore"}); !st)
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "lakes", "rivers", "camera", "shore"}); !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
     if (auto st = r->string("name", scene.name); !st) return st.error();
+    if (!r->has("ocean") && !r->has("lakes") && !r->has("rivers"))
+        return r->error("ocean", "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
+    // The ocean's level: required with an ocean, meaningless without one.
     double level = 0.0;
-    if (auto st = r->number("water_level", level, true); !st) return st.error();
-    if (std::abs(level) > kMaxAbsHeight) {
-        return r->error("water_level", fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", level));
+    if (r->has("ocean") || r->has("water_level")) {
+        if (!r->has("ocean")) return r->error("water_level", "is the ocean's level, and this scene has no \"ocean\"");
+        if (auto st = r->number("water_level", level, true); !st) return st.error();
+        if (std::abs(level) > kMaxAbsHeight) {
+            return r->error("water_level", fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", level));
+        }
     }
     if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
     auto terrain = read_terrain(*r, base_dir);
     if (!terrain) return terrain.error();
     scene.terrain = std::move(terrain).value();
-    if (!r->has("ocean")) return r->error("ocean", "required ocean (a preset name, a file or an object) is missing");
-    auto profile = read_ocean(r->at("ocean"), source, base_dir);
-    if (!profile) return profile.error();
-    auto body = WaterBody::create(*profile, level, r->context("ocean"), &scene.warnings);
-    if (!body) return body.error();
-    scene.ocean = std::move(body).value();
+    if (r->has("ocean")) {
+        auto profile = detail::read_water_profile(r->at("ocean"), source, "/ocean", base_dir);
+        if (!profile) return profile.error();
+        auto body = WaterBody::create(*profile, level, r->context("ocean"), &scene.warnings);
+        if (!body) return body.error();
+        scene.ocean = std::move(body).value();
+    } else {
+        scene.has_ocean = false;
+    }
+    if (auto st = detail::read_lakes(*r, base_dir, scene.lakes, scene.warnings); !st) return st.error();
+    if (auto st = detail::read_rivers(*r, base_dir, scene.rivers, scene.warnings); !st) return st.error();
+    if (!scene.has_ocean && scene.lakes.empty() && scene.rivers.empty())
+        return r->error("ocean", "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
+    if (auto st = detail::check_body_names(*r, scene); !st) return st.error();
     // How the waves feel the shore; bake_scene makes the model.
     auto shore = read_shore(*r, base_dir);
     if (!shore) return shore.error();

@@ -83,7 +83,32 @@ double sample_island(const IslandTerrain& t, glm::dvec2 p) {
 
 }  // namespace
 
+double TerrainCut::depth_at(glm::dvec2 p) const {
+    const double u = (p.x - corner.x) / texel - 0.5, v = (p.y - corner.y) / texel - 0.5;
+    // Half a texel of zero cut rings the grid, so the cut fades to nothing at its edge.
+    if (!(u > -1.0 && v > -1.0 && u < nx && v < nz)) return 0.0;
+    const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+    const double fu = u - i0, fv = v - j0;
+    auto at = [&](int i, int j) -> double {
+        if (i < 0 || j < 0 || i >= nx || j >= nz) return 0.0;
+        return depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)];
+    };
+    return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+}
+
 double Terrain::height_at(glm::dvec2 p) const {
+    double cut = 0.0;
+    for (const auto& c : cuts_) cut = std::max(cut, c->depth_at(p));
+    return shape_height_at(p) - cut;
+}
+
+Terrain Terrain::with_cuts(std::vector<std::shared_ptr<const TerrainCut>> cuts) const {
+    Terrain t = *this;
+    t.cuts_ = std::move(cuts);
+    return t;
+}
+
+double Terrain::shape_height_at(glm::dvec2 p) const {
     return std::visit(Overloaded{[](const FlatTerrain& f) { return f.height; },
                                  [&](const PlaneTerrain& s) { return s.height + s.slope.x * p.x + s.slope.y * p.y; },
                                  [&](const HeightmapTerrain& h) { return sample_heightmap(h, p); },

@@ -261,6 +261,9 @@ Status Renderer::set_scene(const Scene& scene) {
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
                                                               "since its bake: pass it through bake_scene (or disable its shore) "
                                                               "before set_scene", scene.name)};
+    if (!scene.has_ocean)
+        return Error{ErrorCode::unsupported, fmt::format("renderer: scene \"{}\" has no ocean; scenes of lakes and rivers "
+                                                         "alone are not drawn yet", scene.name)};
     vkDeviceWaitIdle(m.ctx().device);  // the old terrain may be in use by frames in flight
     auto terrain = detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain);
     if (!terrain) return terrain.error();

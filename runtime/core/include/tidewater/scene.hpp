@@ -38,6 +38,27 @@ struct SceneShore {
     std::filesystem::path bake_folder;   ///< A saved bake for bake_scene to load (empty: bake).
 };
 
+/// A lake: the terrain below `level` connected to `at` (found by bake_scene), with its own
+/// waves. Its body's level() is the lake's level.
+struct SceneLake {
+    std::string name;       ///< Unique among the scene's bodies.
+    glm::dvec2 at{0.0};     ///< World xz, m: a point under the lake's level.
+    WaterBody body;         ///< Waves and ripples of its preset, at the lake's level.
+};
+
+/// A river: a centreline from source to mouth with its discharge. Its falling surface,
+/// carved bed and current come from bake_scene.
+struct SceneRiver {
+    std::string name;                ///< Unique among the scene's bodies.
+    std::vector<glm::dvec2> path;    ///< World xz, m, source first; at least two points.
+    std::vector<double> width;       ///< Wetted width per path point, m (> 0).
+    double discharge = 1.0;          ///< Q, m^3/s (> 0).
+    double manning = 0.035;          ///< Manning roughness n, s/m^(1/3).
+    bool carve = true;               ///< Cut the channel into terrain that has none.
+    /// Waves and ripples of its preset, directions relative to downstream (level unused).
+    WaterBody body;
+};
+
 struct SceneBake;
 
 struct Scene {
@@ -48,6 +69,11 @@ struct Scene {
     /// shore is disabled or all deep water.
     WaterBody ocean;
     SceneShore shore;
+    /// False in an inland scene (no "ocean"): `ocean` is then an empty body nothing
+    /// draws or queries, and the lakes and rivers are the only water.
+    bool has_ocean = true;
+    std::vector<SceneLake> lakes;
+    std::vector<SceneRiver> rivers;
     std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
     /// What bake_scene made (null as parsed). Copies share it; it is never modified.

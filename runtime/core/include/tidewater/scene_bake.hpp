@@ -1,7 +1,8 @@
 // Baking a scene: what is derived once from its terrain, levels and waves rather
-// than per frame or per query. Today that is the ocean's shore model (per-wave
-// fields from fast marching over the depth) and the exact signed distance to the
-// shoreline (CGAL) it is built on.
+// than per frame or per query: the lakes' extents; each river's falling surface, carved
+// channel and current (a stream function, so that water is conserved); the ocean's
+// shore model (per-wave fields from fast marching over the depth) and the exact signed
+// distance to the shoreline (CGAL) it is built on.
 //
 // parse_scene (scene.hpp) only reads. bake_scene does the work, or loads the saved
 // bake the scene names ("shore": {"bake": folder}) without redoing it, and returns a
@@ -29,6 +30,9 @@ namespace tidewater {
 
 class ShoreWaves;
 struct ShoreField;
+namespace detail {
+struct WaterBodiesBake;
+}
 
 /// What bake_scene made. Immutable; scenes copied from a baked one share it.
 struct SceneBake {
@@ -39,9 +43,13 @@ struct SceneBake {
     /// The exact signed distance to the simplified shoreline (m, positive over water) at
     /// the resolution it was baked at. Null when the shore is disabled or was loaded.
     std::shared_ptr<const ShoreField> shoreline;
+    /// The lakes' extents and the rivers' surfaces, carved beds and currents (null when
+    /// the scene has neither). Internal: reach them through the queries.
+    std::shared_ptr<const detail::WaterBodiesBake> bodies;
     bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
     double seconds = 0.0;  ///< Wall-clock time of the bake or load.
-    /// What it was made from, so that Scene::baked() can tell an edited copy.
+    /// What it was made from, so that Scene::baked() can tell an edited copy: the terrain
+    /// with the rivers' channels cut into it (the baked scene's terrain too).
     Terrain terrain;
     double water_level = 0.0;
     SceneShore shore;
@@ -53,7 +61,7 @@ struct SceneBakeOptions {
     /// model's grid; 0 = the model's grid. The model samples this one field: the
     /// shoreline is baked once, and a finer field makes a slightly better model.
     int distance_resolution = 0;
-    /// Told the stage ("shoreline", "shore waves" or "loading") and the fraction of the
+    /// Told the stage ("water bodies", "shoreline", "shore waves" or "loading") and the fraction of the
     /// whole bake done, 0 to 1, never decreasing. One call at a time, from a baking thread.
     std::function<void(std::string_view stage, double fraction)> progress;
     /// Request a stop from any thread: bake_scene returns ErrorCode::cancelled soon after

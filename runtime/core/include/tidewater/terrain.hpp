@@ -56,6 +56,17 @@ struct IslandTerrain {
     bool operator==(const IslandTerrain&) const = default;
 };
 
+/// A channel cut into a terrain (a river bake's "carve"): the depth removed below the
+/// shape at texel centres, m (>= 0, 0 where nothing is cut), sampled bilinearly.
+struct TerrainCut {
+    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+    double texel = 1.0;      ///< m
+    int nx = 0, nz = 0;      ///< texels along x and z; rows along +z
+    std::vector<float> depth;
+    /// The cut depth at a world point (0 outside the grid).
+    double depth_at(glm::dvec2 p) const;
+};
+
 class Terrain {
 public:
     using Shape = std::variant<FlatTerrain, PlaneTerrain, HeightmapTerrain, IslandTerrain>;
@@ -63,9 +74,17 @@ public:
     Terrain() = default;
     explicit Terrain(Shape shape) : shape_(std::move(shape)) {}
 
+    /// The shape's height minus the deepest cut at p, m.
     double height_at(glm::dvec2 p) const;
+    /// The shape alone, without cuts.
+    double shape_height_at(glm::dvec2 p) const;
     const Shape& shape() const { return shape_; }
-    /// The same shape with the same parameters (a heightmap: the same pixels object).
+    /// Channels cut into the shape (empty as parsed; bake_scene's rivers add them).
+    const std::vector<std::shared_ptr<const TerrainCut>>& cuts() const { return cuts_; }
+    /// This terrain with `cuts` in place of any it had.
+    Terrain with_cuts(std::vector<std::shared_ptr<const TerrainCut>> cuts) const;
+    /// The same shape with the same parameters (a heightmap: the same pixels object) and
+    /// the same cut objects.
     bool operator==(const Terrain&) const = default;
     const char* kind_name() const;
     /// Centre and half-size (m) of the square region worth drawing; unbounded
@@ -75,6 +94,7 @@ public:
 
 private:
     Shape shape_{FlatTerrain{}};
+    std::vector<std::shared_ptr<const TerrainCut>> cuts_;
 };
 
 }  // namespace tidewater

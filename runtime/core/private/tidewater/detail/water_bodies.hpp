@@ -1,0 +1,110 @@
+// Lakes and rivers as baked (internal): their extents, a river's falling surface,
+// carved bed and current. Hosts reach them through bake_scene and query_world.
+//
+// Grids: values at texel centres, rows along +z, bilinear between centres.
+// Units: metres, seconds; discharge m^3/s.
+// Threading: immutable once baked, safe to share.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/result.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater::detail {
+
+/// A regular grid of texels over a rectangle of the world.
+struct FieldGrid {
+    glm::dvec2 corner{0.0};  ///< World xz of the outer corner, m.
+    double texel = 1.0;      ///< m
+    int nx = 0, nz = 0;
+
+    std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+    glm::dvec2 center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
+    bool contains(glm::dvec2 p) const {
+        return p.x >= corner.x && p.y >= corner.y && p.x < corner.x + texel * nx && p.y < corner.y + texel * nz;
+    }
+    /// The texel holding p, clamped to the grid.
+    void texel_of(glm::dvec2 p, int& i, int& j) const;
+    /// Bilinear sample between texel centres, clamped at the edges.
+    double sample(const std::vector<float>& field, glm::dvec2 p) const;
+};
+
+/// What a river runs into.
+enum class RiverEnd { domain_edge, ocean, lake, river };
+
+/// Which body a river texel's water belongs to.
+enum class RiverTexel : std::uint8_t {
+    none = 0,   ///< not this river's water
+    river = 1,  ///< the river's own channel
+    plume = 2,  ///< still water of the body it runs into, where its current fades out
+};
+
+struct LakeBake {
+    std::string name;
+    double level = 0.0;
+    FieldGrid grid;                     ///< the lake's bounding box on the scene's body grid
+    std::vector<std::uint8_t> inside;   ///< 1 where the lake is (at its level)
+    std::size_t texels = 0;             ///< lake texels
+    /// Whether p lies in the lake: below its level in or next to one of its texels.
+    bool holds(glm::dvec2 p, double terrain_height) const;
+};
+
+struct RiverBake {
+    std::string name;
+    double discharge = 0.0;       ///< Q through every cross-section below all tributaries, m^3/s
+    double own_discharge = 0.0;   ///< Q at the source
+    double manning = 0.035;
+    RiverEnd end = RiverEnd::domain_edge;
+    int receiver = -1;            ///< index of the lake or river it runs into
+    double mouth_level = 0.0;     ///< the surface where it ends (a lake's or the ocean's level), m
+    double mean_speed = 0.0;      ///< Q / mean cross-section area, m/s: the waves ride it
+
+    /// Centreline samples from source to mouth.
+    std::vector<glm::dvec2> centreline;
+    std::vector<double> along;     ///< distance from the source, m
+    std::vector<double> width;     ///< wetted width, m
+    std::vector<double> surface;   ///< water surface, never rising, m
+    std::vector<double> bed;       ///< deepest bed in the section, m
+    std::vector<double> slope;     ///< energy slope used for Manning
+
+    FieldGrid grid;
+    std::vector<std::uint8_t> texel;     ///< RiverTexel
+    std::vector<float> surface_height;   ///< water surface, m (where texel != none)
+    std::vector<float> depth;            ///< water column: surface - carved terrain, m (<= 0 dry)
+    std::vector<float> psi;              ///< stream function, m^3/s
+    std::vector<float> discharge_x, discharge_z;  ///< h u, m^2/s (half the flux on bank texels)
+    std::vector<float> flow_x, flow_z;   ///< depth-averaged current u, m/s (0 where dry)
+    std::vector<float> channel_s, channel_n;      ///< along and across the centreline, m (n > 0 left)
+    std::vector<float> tangent_x, tangent_z;      ///< downstream unit direction of the nearest centreline
+    std::shared_ptr<const TerrainCut> cut;        ///< the carved channel (null: not carved)
+    std::size_t islands = 0;                      ///< dry islands inside the channel
+};
+
+/// Everything lakes and rivers bake to.
+struct WaterBodiesBake {
+    std::vector<LakeBake> lakes;    ///< in the scene's order
+    std::vector<RiverBake> rivers;  ///< in the scene's order
+    Terrain terrain;                ///< the scene's terrain with every river's cut
+};
+
+struct BodiesBakeOptions {
+    int lake_resolution = 256;            ///< texels per side of the grid lakes are found on
+    double texels_across = 8.0;           ///< a river grid's texels across its narrowest width
+    std::function<void(double)> progress; ///< 0..1
+    std::stop_token cancel;
+};
+
+/// Finds the lakes' extents and bakes the rivers of `scene` over its terrain. Errors name
+/// the scene and the body's JSON path.
+Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options);
+
+}  // namespace tidewater::detail

@@ -1,0 +1,332 @@
+#include "bodies/river_channel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "bodies/monotone_cubic.hpp"
+#include "bodies/stream_function.hpp"
+
+namespace tidewater::detail {
+
+namespace {
+
+/// The largest river grid, texels per side.
+constexpr int kMaxRiverGrid = 4096;
+
+/// Where each texel lies relative to the centreline: its nearest point on it.
+struct ChannelFrame {
+    std::vector<float> along, across, tx, tz;
+    std::vector<std::int8_t> beyond;  // -1 before the source, +1 past the end, 0 alongside
+    std::vector<float> distance;
+};
+
+double smoothstep(double a, double b, double x) {
+    const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+/// Interpolates a per-sample quantity at distance `s` along the centreline.
+double at_along(const std::vector<double>& along, const std::vector<double>& values, double s) {
+    if (s <= along.front()) return values.front();
+    if (s >= along.back()) return values.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(along.begin(), along.end(), s) - along.begin()) - 1;
+    const double t = (s - along[k]) / (along[k + 1] - along[k]);
+    return values[k] + t * (values[k + 1] - values[k]);
+}
+
+/// For every texel within `reach` of a segment of `line`, the nearest point of the line.
+ChannelFrame nearest_on_line(const FieldGrid& g, const std::vector<glm::dvec2>& line, const std::vector<double>& along,
+                             const std::vector<double>& reach) {
+    ChannelFrame f;
+    f.along.assign(g.size(), 0.0f);
+    f.across.assign(g.size(), 0.0f);
+    f.tx.assign(g.size(), 1.0f);
+    f.tz.assign(g.size(), 0.0f);
+    f.beyond.assign(g.size(), 1);
+    f.distance.assign(g.size(), std::numeric_limits<float>::infinity());
+    const std::size_t last = line.size() - 2;
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+        const glm::dvec2 a = line[k], b = line[k + 1], d = b - a;
+        const double len2 = d.x * d.x + d.y * d.y, len = std::sqrt(len2);
+        const glm::dvec2 t = d / len;
+        const double r = std::max(reach[k], reach[k + 1]);
+        const int i0 = std::max(0, static_cast<int>(std::floor((std::min(a.x, b.x) - r - g.corner.x) / g.texel)));
+        const int i1 = std::min(g.nx - 1, static_cast<int>(std::ceil((std::max(a.x, b.x) + r - g.corner.x) / g.texel)));
+        const int j0 = std::max(0, static_cast<int>(std::floor((std::min(a.y, b.y) - r - g.corner.y) / g.texel)));
+        const int j1 = std::min(g.nz - 1, static_cast<int>(std::ceil((std::max(a.y, b.y) + r - g.corner.y) / g.texel)));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const glm::dvec2 p = g.center(i, j), ap = p - a;
+                const double raw = (ap.x * d.x + ap.y * d.y) / len2, u = std::clamp(raw, 0.0, 1.0);
+                const glm::dvec2 q = a + u * d, pq = p - q;
+                const double dist = std::sqrt(pq.x * pq.x + pq.y * pq.y);
+                const std::size_t at = g.index(i, j);
+                if (dist >= static_cast<double>(f.distance[at])) continue;
+                f.distance[at] = static_cast<float>(dist);
+                f.along[at] = static_cast<float>(along[k] + u * len);
+                f.across[at] = static_cast<float>(t.x * ap.y - t.y * ap.x);
+                f.tx[at] = static_cast<float>(t.x);
+                f.tz[at] = static_cast<float>(t.y);
+                f.beyond[at] = (k == 0 && raw < 0.0) ? -1 : (k == last && raw > 1.0) ? 1 : 0;
+            }
+    }
+    return f;
+}
+
+/// Texels of land inside the channel: islands where no bank or end touches them.
+int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vector<std::uint8_t>& dry_inside,
+                 std::vector<int>& island_of) {
+    island_of.assign(g.size(), -1);
+    std::vector<int> label(g.size(), -1);
+    int islands = 0;
+    std::vector<std::pair<int, int>> stack, members;
+    for (int j0 = 0; j0 < g.nz; ++j0)
+        for (int i0 = 0; i0 < g.nx; ++i0) {
+            if (!dry_inside[g.index(i0, j0)] || label[g.index(i0, j0)] >= 0) continue;
+            bool touches_land = false;
+            members.clear();
+            stack.assign(1, {i0, j0});
+            label[g.index(i0, j0)] = 0;
+            while (!stack.empty()) {
+                const auto [i, j] = stack.back();
+                stack.pop_back();
+                members.push_back({i, j});
+                for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+                    const int a = i + di, b = j + dj;
+                    if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) {
+                        touches_land = true;
+                        continue;
+                    }
+                    const std::size_t n = g.index(a, b);
+                    if (dry_inside[n]) {
+                        if (label[n] < 0) {
+                            label[n] = 0;
+                            stack.push_back({a, b});
+                        }
+                    } else if (cell[n] != FlowCell::wet) {
+                        touches_land = true;
+                    }
+                }
+            }
+            for (const auto& [i, j] : members) {
+                if (touches_land) continue;  // part of a bank: it keeps its bank value
+                cell[g.index(i, j)] = FlowCell::island;
+                island_of[g.index(i, j)] = islands;
+            }
+            if (!touches_land) ++islands;
+        }
+    return islands;
+}
+
+}  // namespace
+
+double bank_psi(const ChannelInputs& in, double own_discharge, double along, int side) {
+    double psi = side > 0 ? in.psi_left : in.psi_left + own_discharge;
+    for (const Inflow& f : in.inflows) {
+        if (f.side != side) continue;
+        const double ramp = std::clamp((along - (f.along - 0.5 * f.width)) / f.width, 0.0, 1.0);
+        psi += side > 0 ? -f.discharge * ramp : f.discharge * ramp;
+    }
+    return psi;
+}
+
+Status bake_channel(const ChannelInputs& in, RiverBake& river) {
+    const double mouth = river.along.back();
+    const double mouth_width = river.width.back();
+    // The centreline and, past a lake or ocean mouth, the plume's axis.
+    std::vector<glm::dvec2> line = river.centreline;
+    std::vector<double> along = river.along, width = river.width;
+    if (in.plume_length > 0.0) {
+        const glm::dvec2 d = line.back() - line[line.size() - 2];
+        const glm::dvec2 t = d / std::sqrt(d.x * d.x + d.y * d.y);
+        const int steps = 8;
+        for (int k = 1; k <= steps; ++k) {
+            const double s = in.plume_length * k / steps;
+            line.push_back(river.centreline.back() + s * t);
+            along.push_back(mouth + s);
+            width.push_back(mouth_width * (1.0 + 2.0 * s / in.plume_length));
+        }
+    }
+    const double widest = *std::max_element(width.begin(), width.end());
+    std::vector<double> reach(width.size());
+    for (std::size_t k = 0; k < width.size(); ++k) reach[k] = width[k] + 2.0 * in.texel;  // half width, banks and their slope
+    glm::dvec2 lo = line[0], hi = line[0];
+    for (const auto& p : line) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    const double margin = widest + 3.0 * in.texel;
+    FieldGrid& g = river.grid;
+    g.texel = in.texel;
+    g.corner = lo - glm::dvec2(margin);
+    const double nx = std::ceil((hi.x - lo.x + 2 * margin) / in.texel), nz = std::ceil((hi.y - lo.y + 2 * margin) / in.texel);
+    if (nx > kMaxRiverGrid || nz > kMaxRiverGrid)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("its grid at {:.2f} m texels would be {} x {} (at most {} per side): widen the river or "
+                                 "split it",
+                                 in.texel, nx, nz, kMaxRiverGrid)};
+    g.nx = static_cast<int>(nx);
+    g.nz = static_cast<int>(nz);
+    const ChannelFrame frame = nearest_on_line(g, line, along, reach);
+    const MonotoneCubic surface_at(river.along, river.surface);
+
+    StreamProblem problem;
+    problem.grid = g;
+    problem.cell.assign(g.size(), FlowCell::open_end);
+    problem.depth.assign(g.size(), 0.0f);
+    problem.bank_value.assign(g.size(), 0.0);
+    std::vector<std::uint8_t> dry_inside(g.size(), 0);
+    river.texel.assign(g.size(), static_cast<std::uint8_t>(RiverTexel::none));
+    river.surface_height.assign(g.size(), 0.0f);
+    river.depth.assign(g.size(), 0.0f);
+    auto cut = std::make_shared<TerrainCut>();
+    cut->corner = g.corner;
+    cut->texel = g.texel;
+    cut->nx = g.nx;
+    cut->nz = g.nz;
+    cut->depth.assign(g.size(), 0.0f);
+    bool any_cut = false;
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t t = g.index(i, j);
+            const glm::dvec2 p = g.center(i, j);
+            const double s = frame.along[t], n = frame.across[t];
+            const bool plume = s > mouth;
+            const double eta = plume ? river.surface.back() : surface_at(s);
+            const double ground = in.terrain->height_at(p);
+            river.surface_height[t] = static_cast<float>(eta);
+            river.depth[t] = static_cast<float>(eta - ground);
+            if (frame.beyond[t] != 0) continue;  // the cut at the ends: open
+            const double half = 0.5 * at_along(along, width, s);
+            double bed = ground;
+            if (!plume && in.carve) {
+                const double hc = at_along(river.along, in.centre_depth, s);
+                const double x = std::abs(n) / half;
+                const double profile = x <= 1.0 ? eta - hc * carved_depth_fraction(x) : eta + (std::abs(n) - half) * kCarvedBankSlope;
+                if (profile < ground) {
+                    bed = profile;
+                    cut->depth[t] = static_cast<float>(in.terrain->shape_height_at(p) - profile);
+                    any_cut = true;
+                }
+            }
+            const double depth = eta - bed;
+            river.surface_height[t] = static_cast<float>(eta);
+            river.depth[t] = static_cast<float>(depth);
+            problem.bank_value[t] = bank_psi(in, river.own_discharge, std::min(s, mouth), n >= 0.0 ? 1 : -1);
+            if (std::abs(n) > half) {
+                problem.cell[t] = FlowCell::bank;
+                continue;
+            }
+            bool wet = depth > 0.0;
+            if (plume) wet = wet && in.in_receiver && in.in_receiver(p, ground);
+            if (wet && in.receiver_river) {
+                int a = 0, b = 0;
+                in.receiver_river->grid.texel_of(p, a, b);
+                const std::size_t r = in.receiver_river->grid.index(a, b);
+                if (in.receiver_river->grid.contains(p) && in.receiver_river->texel[r] == static_cast<std::uint8_t>(RiverTexel::river)) {
+                    problem.cell[t] = FlowCell::open_end;  // the river it joins owns this water
+                    continue;
+                }
+            }
+            if (wet) {
+                problem.cell[t] = FlowCell::wet;
+                problem.depth[t] = static_cast<float>(depth);
+                river.texel[t] = static_cast<std::uint8_t>(plume ? RiverTexel::plume : RiverTexel::river);
+            } else {
+                problem.cell[t] = FlowCell::bank;
+                dry_inside[t] = 1;
+            }
+        }
+    problem.islands = mark_islands(g, problem.cell, dry_inside, problem.island_of);
+    river.islands = static_cast<std::size_t>(problem.islands);
+    auto solved = solve_stream_function(problem);
+    if (!solved) return solved.error();
+    const std::vector<double>& psi = solved->psi;
+
+    // h u = (-d psi/dz, d psi/dx) by central differences. A bank texel next to the water
+    // carries half the flux of its faces, so the flux summed across a section is exactly
+    // the psi difference between the banks: the discharge.
+    river.psi.assign(g.size(), 0.0f);
+    river.discharge_x.assign(g.size(), 0.0f);
+    river.discharge_z.assign(g.size(), 0.0f);
+    river.flow_x.assign(g.size(), 0.0f);
+    river.flow_z.assign(g.size(), 0.0f);
+    auto has = [&](int i, int j) { return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]); };
+    auto flowing = [&](int i, int j) { return has(i, j) && problem.cell[g.index(i, j)] == FlowCell::wet; };
+    auto next_to_land = [&](int i, int j) {
+        for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+            const int a = i + di, b = j + dj;
+            if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) continue;
+            const FlowCell c = problem.cell[g.index(a, b)];
+            if (c == FlowCell::bank || c == FlowCell::island) return true;
+        }
+        return false;
+    };
+    auto depth_gradient = [&](int i, int j) {
+        auto d = [&](int a, int b) {
+            a = std::clamp(a, 0, g.nx - 1);
+            b = std::clamp(b, 0, g.nz - 1);
+            return static_cast<double>(river.depth[g.index(a, b)]);
+        };
+        return glm::dvec2(d(i + 1, j) - d(i - 1, j), d(i, j + 1) - d(i, j - 1));
+    };
+    double area_sum = 0.0;
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t t = g.index(i, j);
+            if (!has(i, j)) continue;
+            river.psi[t] = static_cast<float>(psi[t]);
+            const bool wet = problem.cell[t] == FlowCell::wet;
+            // d psi along one axis: across faces to water (and, from water, to banks and islands).
+            auto derivative = [&](int di, int dj) {
+                double sum = 0.0;
+                int faces = 0;
+                for (const int sgn : {1, -1}) {
+                    const int a = i + sgn * di, b = j + sgn * dj;
+                    if (!has(a, b) || !(wet || flowing(a, b))) continue;
+                    sum += sgn * (psi[g.index(a, b)] - psi[t]);
+                    ++faces;
+                }
+                // Water between two faces: a central difference; water at an open end: one-sided.
+                return wet && faces == 1 ? sum / g.texel : sum / (2.0 * g.texel);
+            };
+            const double dpsi_dx = derivative(1, 0), dpsi_dz = derivative(0, 1);
+            double fade = 1.0;
+            if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::plume))
+                fade = 1.0 - smoothstep(mouth, mouth + in.plume_length, frame.along[t]);
+            const double qx = -dpsi_dz * fade, qz = dpsi_dx * fade;
+            river.discharge_x[t] = static_cast<float>(qx);
+            river.discharge_z[t] = static_cast<float>(qz);
+            if (wet) {
+                const double h = std::max(static_cast<double>(problem.depth[t]), 0.05);
+                double ux = qx / h, uz = qz / h;
+                // At the waterline the staircase of texels bends the discrete contours of psi;
+                // the current there keeps the no-flux condition: nothing across the bank,
+                // whose normal is the depth's gradient.
+                if (next_to_land(i, j)) {
+                    const glm::dvec2 normal = depth_gradient(i, j);
+                    const double len = std::hypot(normal.x, normal.y);
+                    if (len > 0.0) {
+                        const double across = (ux * normal.x + uz * normal.y) / (len * len);
+                        ux -= across * normal.x;
+                        uz -= across * normal.y;
+                    }
+                }
+                river.flow_x[t] = static_cast<float>(ux);
+                river.flow_z[t] = static_cast<float>(uz);
+                if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river)) area_sum += static_cast<double>(problem.depth[t]);
+            }
+        }
+    river.channel_s = frame.along;
+    river.channel_n = frame.across;
+    river.tangent_x = frame.tx;
+    river.tangent_z = frame.tz;
+    // Mean speed: discharge over the mean section (wet area / length).
+    const double mean_area = area_sum * g.texel * g.texel / std::max(mouth, g.texel);
+    river.mean_speed = mean_area > 0.0 ? river.discharge / mean_area : 0.0;
+    if (any_cut) river.cut = std::move(cut);
+    return {};
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,275 @@
+// Lakes first (their extents are what rivers run into), then the rivers from the
+// last receiver up: a tributary meets the surface of the river it joins.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "bodies/lake_extent.hpp"
+#include "bodies/river_channel.hpp"
+#include "tidewater/detail/water_bodies.hpp"
+
+namespace tidewater::detail {
+
+namespace {
+
+/// A plume reaches this many mouth widths into still water.
+constexpr double kPlumeWidths = 4.0;
+
+Error named(const std::string& where, Error e) {
+    e.message = fmt::format("{}: {}", where, e.message);
+    return e;
+}
+
+std::string river_path(const Scene& scene, std::size_t r) { return fmt::format("scene \"{}\" /rivers/{}", scene.name, r); }
+
+/// Distance from p to the polyline and the distance along it of the nearest point.
+double distance_to_line(const std::vector<glm::dvec2>& line, const std::vector<double>& along, glm::dvec2 p,
+                        double* at_along = nullptr, glm::dvec2* tangent = nullptr, double* across = nullptr) {
+    double best = 1e300;
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+        const glm::dvec2 a = line[k], d = line[k + 1] - a, ap = p - a;
+        const double len2 = d.x * d.x + d.y * d.y;
+        const double u = std::clamp((ap.x * d.x + ap.y * d.y) / len2, 0.0, 1.0);
+        const glm::dvec2 q = a + u * d;
+        const double dist = std::hypot(p.x - q.x, p.y - q.y);
+        if (dist < best) {
+            best = dist;
+            const double len = std::sqrt(len2);
+            if (at_along) *at_along = along[k] + u * len;
+            if (tangent) *tangent = d / len;
+            if (across) *across = (d.x * ap.y - d.y * ap.x) / len;
+        }
+    }
+    return best;
+}
+
+struct RiverPlan {
+    CentrelineSamples samples;  // truncated at the mouth
+    RiverEnd end = RiverEnd::domain_edge;
+    int receiver = -1;
+    double joins_at = 0.0;      // along the receiving river
+    int side = 0;               // the receiving river's bank it enters from
+    double total = 0.0;         // discharge below all tributaries
+};
+
+Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const BodiesBakeOptions& options) {
+    std::vector<LakeBake> lakes;
+    if (scene.lakes.empty()) return lakes;
+    FieldGrid grid;
+    const double half = scene.terrain.extent_half_size();
+    grid.nx = grid.nz = options.lake_resolution;
+    grid.texel = 2.0 * half / options.lake_resolution;
+    grid.corner = scene.terrain.extent_center() - glm::dvec2(half);
+    const std::vector<float> heights = sample_terrain(scene.terrain, grid);
+    for (std::size_t i = 0; i < scene.lakes.size(); ++i) {
+        auto lake = find_lake_extent(scene.lakes[i], grid, heights, fmt::format("scene \"{}\" /lakes/{}", scene.name, i));
+        if (!lake) return lake.error();
+        lakes.push_back(std::move(lake).value());
+    }
+    for (std::size_t a = 0; a < lakes.size(); ++a)
+        for (std::size_t b = a + 1; b < lakes.size(); ++b) {
+            const LakeBake &la = lakes[a], &lb = lakes[b];
+            for (int j = 0; j < la.grid.nz; ++j)
+                for (int i = 0; i < la.grid.nx; ++i) {
+                    const glm::dvec2 p = la.grid.center(i, j);
+                    if (!la.inside[la.grid.index(i, j)] || !lb.grid.contains(p)) continue;
+                    int bi = 0, bj = 0;
+                    lb.grid.texel_of(p, bi, bj);
+                    if (lb.inside[lb.grid.index(bi, bj)])
+                        return Error{ErrorCode::invalid_argument,
+                                     fmt::format("scene \"{}\" /lakes/{}: lake \"{}\" overlaps lake \"{}\" at [{:.1f}, {:.1f}]",
+                                                 scene.name, b, lb.name, la.name, p.x, p.y)};
+                }
+        }
+    return lakes;
+}
+
+/// Walks each river to where it first meets a lake, the ocean or another river.
+Status plan_mouth(const Scene& scene, const std::vector<LakeBake>& lakes, const std::vector<CentrelineSamples>& raw,
+                  std::size_t r, RiverPlan& plan) {
+    const SceneRiver& river = scene.rivers[r];
+    const CentrelineSamples& s = raw[r];
+    // Whether river a's mouth lies within river b's channel.
+    auto ends_in = [&](std::size_t a, std::size_t b) {
+        double at = 0.0;
+        const double d = distance_to_line(raw[b].points, raw[b].along, raw[a].points.back(), &at);
+        std::size_t k = 0;
+        while (k + 2 < raw[b].along.size() && raw[b].along[k + 1] < at) ++k;
+        return d <= 0.5 * raw[b].width[k];
+    };
+    auto water_at = [&](glm::dvec2 p, RiverPlan& hit) {
+        const double ground = scene.terrain.height_at(p);
+        for (std::size_t l = 0; l < lakes.size(); ++l)
+            if (lakes[l].holds(p, ground)) {
+                hit.end = RiverEnd::lake;
+                hit.receiver = static_cast<int>(l);
+                return true;
+            }
+        for (std::size_t o = 0; o < raw.size(); ++o) {
+            if (o == r || ends_in(o, r)) continue;  // a tributary of this river is not its receiver
+            double at = 0.0, across = 0.0;
+            const double d = distance_to_line(raw[o].points, raw[o].along, p, &at, nullptr, &across);
+            std::size_t k = 0;
+            while (k + 2 < raw[o].along.size() && raw[o].along[k + 1] < at) ++k;
+            if (d <= 0.5 * raw[o].width[k]) {
+                hit.end = RiverEnd::river;
+                hit.receiver = static_cast<int>(o);
+                hit.joins_at = at;
+                hit.side = across >= 0.0 ? 1 : -1;
+                return true;
+            }
+        }
+        if (scene.has_ocean && ground < scene.water_level()) {
+            hit.end = RiverEnd::ocean;
+            return true;
+        }
+        return false;
+    };
+    RiverPlan probe;
+    if (water_at(s.points[0], probe))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}/path/0: the river \"{}\" starts in water (its source must be on land)",
+                                 river_path(scene, r), river.name)};
+    for (std::size_t k = 1; k < s.points.size(); ++k) {
+        if (!water_at(s.points[k], plan)) continue;
+        plan.samples.points.assign(s.points.begin(), s.points.begin() + static_cast<long>(k) + 1);
+        plan.samples.along.assign(s.along.begin(), s.along.begin() + static_cast<long>(k) + 1);
+        plan.samples.width.assign(s.width.begin(), s.width.begin() + static_cast<long>(k) + 1);
+        return {};
+    }
+    // No body: it must leave the terrain's extent.
+    const glm::dvec2 c = scene.terrain.extent_center(), e = s.points.back();
+    const double half = scene.terrain.extent_half_size();
+    const double slack = std::max(s.width.back(), 0.01 * half);
+    if (std::max(std::abs(e.x - c.x), std::abs(e.y - c.y)) < half - slack)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}/path: the river \"{}\" ends on land at [{:.1f}, {:.1f}]; a river ends in a lake, the "
+                                 "ocean, another river or at the domain edge",
+                                 river_path(scene, r), river.name, e.x, e.y)};
+    plan.samples = s;
+    plan.end = RiverEnd::domain_edge;
+    return {};
+}
+
+/// Receivers before their tributaries; rivers running into each other in a loop are an error.
+Result<std::vector<std::size_t>> bake_order(const Scene& scene, const std::vector<RiverPlan>& plans) {
+    std::vector<std::size_t> order;
+    std::vector<bool> placed(plans.size(), false);
+    while (order.size() < plans.size()) {
+        const std::size_t before = order.size();
+        for (std::size_t r = 0; r < plans.size(); ++r) {
+            if (placed[r]) continue;
+            if (plans[r].end == RiverEnd::river && !placed[static_cast<std::size_t>(plans[r].receiver)]) continue;
+            placed[r] = true;
+            order.push_back(r);
+        }
+        if (order.size() == before) {
+            const std::size_t r = static_cast<std::size_t>(std::find(placed.begin(), placed.end(), false) - placed.begin());
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}: the river \"{}\" runs into a loop of rivers", river_path(scene, r), scene.rivers[r].name)};
+        }
+    }
+    return order;
+}
+
+}  // namespace
+
+Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options) {
+    WaterBodiesBake out;
+    auto lakes = find_lakes(scene, options);
+    if (!lakes) return lakes.error();
+    out.lakes = std::move(lakes).value();
+    const std::size_t count = scene.rivers.size();
+    std::vector<CentrelineSamples> raw(count);
+    for (std::size_t r = 0; r < count; ++r) {
+        const auto& w = scene.rivers[r].width;
+        raw[r] = resample_centreline(scene.rivers[r].path, w, 0.25 * *std::min_element(w.begin(), w.end()));
+    }
+    std::vector<RiverPlan> plans(count);
+    for (std::size_t r = 0; r < count; ++r)
+        if (auto st = plan_mouth(scene, out.lakes, raw, r, plans[r]); !st) return st.error();
+    auto order = bake_order(scene, plans);
+    if (!order) return order.error();
+    // Discharges add downstream: tributaries (later in the order) first.
+    for (std::size_t r = 0; r < count; ++r) plans[r].total = scene.rivers[r].discharge;
+    for (auto it = order->rbegin(); it != order->rend(); ++it)
+        if (plans[*it].end == RiverEnd::river) plans[static_cast<std::size_t>(plans[*it].receiver)].total += plans[*it].total;
+
+    out.rivers.resize(count);
+    std::vector<std::shared_ptr<const TerrainCut>> cuts;
+    std::vector<ChannelInputs> inputs(count);
+    for (std::size_t done = 0; done < order->size(); ++done) {
+        if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, "bake: cancelled"};
+        const std::size_t r = (*order)[done];
+        const SceneRiver& river = scene.rivers[r];
+        const RiverPlan& plan = plans[r];
+        const Terrain terrain = scene.terrain.with_cuts(cuts);
+        RiverBake& bake = out.rivers[r];
+        bake.name = river.name;
+        bake.own_discharge = river.discharge;
+        bake.discharge = plan.total;
+        bake.manning = river.manning;
+        bake.end = plan.end;
+        bake.receiver = plan.receiver;
+        ChannelInputs& in = inputs[r];
+        in.terrain = &terrain;
+        in.carve = river.carve;
+        in.texel = *std::min_element(river.width.begin(), river.width.end()) / options.texels_across;
+        for (std::size_t t = 0; t < count; ++t)
+            if (plans[t].end == RiverEnd::river && static_cast<std::size_t>(plans[t].receiver) == r)
+                in.inflows.push_back({plans[t].joins_at, plans[t].samples.width.back(), plans[t].total, plans[t].side});
+        ProfileInputs profile;
+        profile.terrain = &terrain;
+        profile.carve = river.carve;
+        profile.texel = in.texel;
+        profile.manning = river.manning;
+        profile.mouth_level = std::nan("");
+        switch (plan.end) {
+            case RiverEnd::ocean: profile.mouth_level = scene.water_level(); break;
+            case RiverEnd::lake: profile.mouth_level = out.lakes[static_cast<std::size_t>(plan.receiver)].level; break;
+            case RiverEnd::river: {
+                const RiverBake& main = out.rivers[static_cast<std::size_t>(plan.receiver)];
+                const double at = plan.joins_at;
+                std::size_t k = 0;
+                while (k + 2 < main.along.size() && main.along[k + 1] < at) ++k;
+                const double t = std::clamp((at - main.along[k]) / (main.along[k + 1] - main.along[k]), 0.0, 1.0);
+                profile.mouth_level = main.surface[k] + t * (main.surface[k + 1] - main.surface[k]);
+                // Its banks continue the ones of the river it joins, upstream of the junction.
+                const ChannelInputs& main_in = inputs[static_cast<std::size_t>(plan.receiver)];
+                const double upstream = at - 0.5 * plan.samples.width.back();
+                in.psi_left = plan.side < 0 ? bank_psi(main_in, main.own_discharge, upstream, -1)
+                                            : bank_psi(main_in, main.own_discharge, upstream, 1) - plan.total;
+                in.receiver_river = &main;
+                break;
+            }
+            case RiverEnd::domain_edge: break;
+        }
+        bake.mouth_level = std::isnan(profile.mouth_level) ? 0.0 : profile.mouth_level;
+        profile.discharge.resize(plan.samples.along.size());
+        for (std::size_t k = 0; k < profile.discharge.size(); ++k) {
+            double q = river.discharge;
+            for (const Inflow& f : in.inflows)
+                q += f.discharge * std::clamp((plan.samples.along[k] - (f.along - 0.5 * f.width)) / f.width, 0.0, 1.0);
+            profile.discharge[k] = q;
+        }
+        in.centre_depth = bake_profile(plan.samples, profile, bake);
+        if (plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean) {
+            in.plume_length = kPlumeWidths * plan.samples.width.back();
+            if (plan.end == RiverEnd::lake) {
+                const LakeBake* lake = &out.lakes[static_cast<std::size_t>(plan.receiver)];
+                in.in_receiver = [lake](glm::dvec2 p, double ground) { return lake->holds(p, ground); };
+            } else {
+                const double level = scene.water_level();
+                in.in_receiver = [level](glm::dvec2, double ground) { return ground < level; };
+            }
+        }
+        if (auto st = bake_channel(in, bake); !st) return named(river_path(scene, r), st.error());
+        in.terrain = nullptr;  // `terrain` ends with this iteration
+        if (bake.cut) cuts.push_back(bake.cut);
+        if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));
+    }
+    out.terrain = scene.terrain.with_cuts(cuts);
+    return out;
+}
+
+}  // namespace tidewater::detail

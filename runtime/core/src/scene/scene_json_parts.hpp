@@ -1,0 +1,36 @@
+// Readers shared by the scene parser's files (private).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "json_reader.hpp"
+#include "tidewater/scene.hpp"
+
+namespace tidewater::detail {
+
+/// Reads [a, b] at `key` into `out`; each value within |v| <= limit.
+Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit);
+
+/// Fails unless lo <= v <= hi, naming the key, the value and the range.
+Status check_range(const ObjectReader& r, std::string_view key, double v, double lo, double hi, const char* unit);
+
+/// A body's waves: a bundled preset name, a preset file, or an object with "preset",
+/// "waves" or "spectrum" and the profile settings. `path` is its JSON path.
+Result<WaterProfile> read_water_profile(const nlohmann::json& value, const std::string& source, const std::string& path,
+                                        const std::filesystem::path& base_dir);
+
+/// The scene's "lakes" and "rivers" (absent: none). Names must be unique among them and
+/// must not be "ocean"; `warnings` collects the profiles' notes.
+Status read_lakes(const ObjectReader& scene, const std::filesystem::path& base_dir, std::vector<SceneLake>& lakes,
+                  std::vector<std::string>& warnings);
+Status read_rivers(const ObjectReader& scene, const std::filesystem::path& base_dir, std::vector<SceneRiver>& rivers,
+                   std::vector<std::string>& warnings);
+/// Every body name once, none called "ocean" but the ocean.
+Status check_body_names(const ObjectReader& scene, const Scene& parsed);
+
+}  // namespace tidewater::detail
