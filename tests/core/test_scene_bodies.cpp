@@ -97,6 +97,16 @@ TEST(SceneBodies, ALakeFillsItsBasinAndRefusesToSpill) {
         << refused.error().message;
 }
 
+TEST(SceneBodies, AVeryLongNarrowRiverIsRefusedNotBaked) {
+    auto scene = parse_scene(scene_with(R"("rivers": [ { "name": "thread", "path": [[0, 0], [9000000, 0]], "width": 0.5, "discharge": 1 } ])"),
+                             "long.json");
+    ASSERT_TRUE(scene) << scene.error().message;
+    auto baked = bake_scene(*scene);
+    ASSERT_FALSE(baked);
+    EXPECT_NE(baked.error().message.find("/rivers/0/path: the river \"thread\" is 9000000 m long"), std::string::npos)
+        << baked.error().message;
+}
+
 TEST(SceneBodies, ALakeOverTheSummitSpills) {
     auto scene = parse_scene(R"({ "version": 1, "name": "summit", "water_level": 0.0, "ocean": "ocean_rolling",
       "shore": { "enabled": false, "resolution": 256 },

@@ -14,6 +14,8 @@ namespace {
 
 /// A plume reaches this many mouth widths into still water.
 constexpr double kPlumeWidths = 4.0;
+/// The most centreline samples a river may need.
+constexpr double kMaxCentrelineSamples = 1e5;
 
 Error named(const std::string& where, Error e) {
     e.message = fmt::format("{}: {}", where, e.message);
@@ -182,8 +184,19 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
     const std::size_t count = scene.rivers.size();
     std::vector<CentrelineSamples> raw(count);
     for (std::size_t r = 0; r < count; ++r) {
+        const auto& path = scene.rivers[r].path;
         const auto& w = scene.rivers[r].width;
-        raw[r] = resample_centreline(scene.rivers[r].path, w, 0.25 * *std::min_element(w.begin(), w.end()));
+        const double spacing = 0.25 * *std::min_element(w.begin(), w.end());
+        double length = 0.0;
+        for (std::size_t k = 0; k + 1 < path.size(); ++k) length += std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
+        // Samples every quarter of the narrowest width: a very long, very narrow river would
+        // need more than memory allows, and its grid could not hold it anyway.
+        if (length / spacing > kMaxCentrelineSamples)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}/path: the river \"{}\" is {:.0f} m long and {} m wide at its narrowest: at most "
+                                     "{:.0f} widths long allowed",
+                                     river_path(scene, r), scene.rivers[r].name, length, 4.0 * spacing, kMaxCentrelineSamples / 4.0)};
+        raw[r] = resample_centreline(path, w, spacing);
     }
     std::vector<RiverPlan> plans(count);
     for (std::size_t r = 0; r < count; ++r)
