@@ -2,6 +2,7 @@
 // path), and a lake's extent as baked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "tidewater/detail/water_bodies.hpp"
@@ -95,6 +96,34 @@ TEST(SceneBodies, ALakeFillsItsBasinAndRefusesToSpill) {
     EXPECT_NE(refused.error().message.find("/lakes/0/at: the terrain there is 0.00 m, not under the lake's level -1 m"),
               std::string::npos)
         << refused.error().message;
+}
+
+TEST(SceneBodies, BakingReportsProgressToTheEndAndReBakingDoesNotCutTwice) {
+    auto scene = parse_scene(R"({ "version": 1, "name": "carve", "water_level": 0.0, "ocean": "ocean_rolling",
+      "shore": { "enabled": false },
+      "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } },
+      "rivers": [ { "name": "straight", "path": [[-1500, 0], [2400, 0]], "width": 20, "discharge": 10.0 } ] })", "carve.json");
+    ASSERT_TRUE(scene) << scene.error().message;
+    std::vector<double> fractions;
+    SceneBakeOptions options;
+    options.progress = [&](std::string_view stage, double f) {
+        EXPECT_EQ(stage, "water bodies");
+        fractions.push_back(f);
+    };
+    auto baked = bake_scene(*scene, options);
+    ASSERT_TRUE(baked) << baked.error().message;
+    ASSERT_FALSE(fractions.empty());
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
+    EXPECT_TRUE((*baked)->baked());
+    EXPECT_FALSE(scene->baked()) << "the parsed scene has rivers and no bake";
+    // Re-baking the baked scene (whose terrain carries the channel) cuts from the shape again.
+    auto again = bake_scene(**baked);
+    ASSERT_TRUE(again) << again.error().message;
+    for (const glm::dvec2 p : {glm::dvec2(0.0, 0.0), glm::dvec2(500.0, 3.0), glm::dvec2(-800.0, -4.0)}) {
+        EXPECT_LT((*baked)->terrain.height_at(p), scene->terrain.height_at(p) - 0.3) << "carved at " << p.x;
+        EXPECT_NEAR((*again)->terrain.height_at(p), (*baked)->terrain.height_at(p), 1e-9) << "at " << p.x;
+    }
 }
 
 TEST(SceneBodies, AVeryLongNarrowRiverIsRefusedNotBaked) {

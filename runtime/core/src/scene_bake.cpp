@@ -51,20 +51,18 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         // Lakes and rivers first: a river carves the terrain the shore is baked over.
         Terrain terrain = scene.terrain.with_cuts({});
         const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
-        const double bodies_share = has_bodies ? 0.2 : 0.0;
+        const bool shore = scene.shore.enabled && scene.has_ocean;
+        const double bodies_share = !has_bodies ? 0.0 : shore ? 0.2 : 1.0;
         if (has_bodies) {
             detail::BodiesBakeOptions bodies_options;
             bodies_options.lake_resolution = scene.shore.resolution;
             bodies_options.cancel = options.cancel;
             bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_share, f); };
-            Scene uncut = scene;
-            uncut.terrain = terrain;
-            auto bodies = detail::bake_water_bodies(uncut, bodies_options);
+            auto bodies = detail::bake_water_bodies(scene, bodies_options);
             if (!bodies) return bodies.error();
             terrain = bodies->terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
         }
-        const bool shore = scene.shore.enabled && scene.has_ocean;
         if (shore && !scene.shore.bake_folder.empty()) {
             progress.report("loading", bodies_share, 1.0, 0.0);
             auto loaded = load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), terrain);

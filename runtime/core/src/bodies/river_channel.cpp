@@ -26,15 +26,6 @@ double smoothstep(double a, double b, double x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-/// Interpolates a per-sample quantity at distance `s` along the centreline.
-double at_along(const std::vector<double>& along, const std::vector<double>& values, double s) {
-    if (s <= along.front()) return values.front();
-    if (s >= along.back()) return values.back();
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(along.begin(), along.end(), s) - along.begin()) - 1;
-    const double t = (s - along[k]) / (along[k + 1] - along[k]);
-    return values[k] + t * (values[k + 1] - values[k]);
-}
-
 /// For every texel within `reach` of a segment of `line`, the nearest point of the line.
 ChannelFrame nearest_on_line(const FieldGrid& g, const std::vector<glm::dvec2>& line, const std::vector<double>& along,
                              const std::vector<double>& reach) {
@@ -78,16 +69,16 @@ ChannelFrame nearest_on_line(const FieldGrid& g, const std::vector<glm::dvec2>& 
 int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vector<std::uint8_t>& dry_inside,
                  std::vector<int>& island_of) {
     island_of.assign(g.size(), -1);
-    std::vector<int> label(g.size(), -1);
+    std::vector<std::uint8_t> visited(g.size(), 0);
     int islands = 0;
     std::vector<std::pair<int, int>> stack, members;
     for (int j0 = 0; j0 < g.nz; ++j0)
         for (int i0 = 0; i0 < g.nx; ++i0) {
-            if (!dry_inside[g.index(i0, j0)] || label[g.index(i0, j0)] >= 0) continue;
+            if (!dry_inside[g.index(i0, j0)] || visited[g.index(i0, j0)]) continue;
             bool touches_land = false;
             members.clear();
             stack.assign(1, {i0, j0});
-            label[g.index(i0, j0)] = 0;
+            visited[g.index(i0, j0)] = 1;
             while (!stack.empty()) {
                 const auto [i, j] = stack.back();
                 stack.pop_back();
@@ -100,8 +91,8 @@ int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vec
                     }
                     const std::size_t n = g.index(a, b);
                     if (dry_inside[n]) {
-                        if (label[n] < 0) {
-                            label[n] = 0;
+                        if (!visited[n]) {
+                            visited[n] = 1;
                             stack.push_back({a, b});
                         }
                     } else if (cell[n] != FlowCell::wet) {
@@ -125,8 +116,7 @@ double bank_psi(const ChannelInputs& in, double own_discharge, double along, int
     double psi = side > 0 ? in.psi_left : in.psi_left + own_discharge;
     for (const Inflow& f : in.inflows) {
         if (f.side != side) continue;
-        const double ramp = std::clamp((along - (f.along - 0.5 * f.width)) / f.width, 0.0, 1.0);
-        psi += side > 0 ? -f.discharge * ramp : f.discharge * ramp;
+        psi += side > 0 ? -f.entered(along) : f.entered(along);
     }
     return psi;
 }

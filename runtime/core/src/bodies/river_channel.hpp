@@ -12,6 +12,12 @@ struct Inflow {
     double width = 0.0;      ///< the tributary's width there, m
     double discharge = 0.0;  ///< m^3/s
     int side = -1;           ///< +1: from the left (n > 0), -1: from the right
+    /// The part of its discharge that has entered by `at` m along this river: it enters
+    /// evenly over its width.
+    double entered(double at) const {
+        const double ramp = (at - (along - 0.5 * width)) / width;
+        return discharge * (ramp < 0.0 ? 0.0 : ramp > 1.0 ? 1.0 : ramp);
+    }
 };
 
 struct ChannelInputs {

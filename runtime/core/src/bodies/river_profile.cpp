@@ -31,6 +31,14 @@ double increasing_root(F f, double lo, double hi) {
 
 }  // namespace
 
+double at_along(const std::vector<double>& along, const std::vector<double>& values, double s) {
+    if (s <= along.front()) return values.front();
+    if (s >= along.back()) return values.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(along.begin(), along.end(), s) - along.begin()) - 1;
+    const double t = (s - along[k]) / (along[k + 1] - along[k]);
+    return values[k] + t * (values[k + 1] - values[k]);
+}
+
 CentrelineSamples resample_centreline(const std::vector<glm::dvec2>& path, const std::vector<double>& width,
                                       double spacing) {
     CentrelineSamples out;

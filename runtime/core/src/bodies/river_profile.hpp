@@ -35,6 +35,10 @@ struct CentrelineSamples {
     std::vector<double> along, width;
 };
 
+/// A per-sample quantity at distance `s` along the centreline, linear between samples and
+/// held at the ends.
+double at_along(const std::vector<double>& along, const std::vector<double>& values, double s);
+
 /// Samples the path every `spacing` m (and at its ends), widths interpolated along it.
 CentrelineSamples resample_centreline(const std::vector<glm::dvec2>& path, const std::vector<double>& width,
                                       double spacing);

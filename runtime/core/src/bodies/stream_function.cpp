@@ -65,7 +65,6 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
     const int total = count + p.islands;
     StreamSolution out;
     out.psi.assign(g.size(), std::nan(""));
-    out.island_psi.assign(static_cast<std::size_t>(p.islands), 0.0);
     out.unknowns = static_cast<std::size_t>(total);
     if (total == 0) return out;
 
@@ -133,7 +132,6 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
         else if (p.cell[t] == FlowCell::bank) out.psi[t] = p.bank_value[t];
         else if (p.cell[t] == FlowCell::island) out.psi[t] = x[count + p.island_of[t]];
     }
-    for (int k = 0; k < p.islands; ++k) out.island_psi[static_cast<std::size_t>(k)] = x[count + k];
     return out;
 }
 

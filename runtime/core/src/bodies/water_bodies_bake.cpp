@@ -26,7 +26,7 @@ std::string river_path(const Scene& scene, std::size_t r) { return fmt::format("
 
 /// Distance from p to the polyline and the distance along it of the nearest point.
 double distance_to_line(const std::vector<glm::dvec2>& line, const std::vector<double>& along, glm::dvec2 p,
-                        double* at_along = nullptr, glm::dvec2* tangent = nullptr, double* across = nullptr) {
+                        double* along_at = nullptr, double* across = nullptr) {
     double best = 1e300;
     for (std::size_t k = 0; k + 1 < line.size(); ++k) {
         const glm::dvec2 a = line[k], d = line[k + 1] - a, ap = p - a;
@@ -37,8 +37,7 @@ double distance_to_line(const std::vector<glm::dvec2>& line, const std::vector<d
         if (dist < best) {
             best = dist;
             const double len = std::sqrt(len2);
-            if (at_along) *at_along = along[k] + u * len;
-            if (tangent) *tangent = d / len;
+            if (along_at) *along_at = along[k] + u * len;
             if (across) *across = (d.x * ap.y - d.y * ap.x) / len;
         }
     }
@@ -54,15 +53,15 @@ struct RiverPlan {
     double total = 0.0;         // discharge below all tributaries
 };
 
-Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const BodiesBakeOptions& options) {
+Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& ground, const BodiesBakeOptions& options) {
     std::vector<LakeBake> lakes;
     if (scene.lakes.empty()) return lakes;
     FieldGrid grid;
-    const double half = scene.terrain.extent_half_size();
+    const double half = ground.extent_half_size();
     grid.nx = grid.nz = options.lake_resolution;
     grid.texel = 2.0 * half / options.lake_resolution;
-    grid.corner = scene.terrain.extent_center() - glm::dvec2(half);
-    const std::vector<float> heights = sample_terrain(scene.terrain, grid);
+    grid.corner = ground.extent_center() - glm::dvec2(half);
+    const std::vector<float> heights = sample_terrain(ground, grid);
     for (std::size_t i = 0; i < scene.lakes.size(); ++i) {
         auto lake = find_lake_extent(scene.lakes[i], grid, heights, fmt::format("scene \"{}\" /lakes/{}", scene.name, i));
         if (!lake) return lake.error();
@@ -87,7 +86,7 @@ Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const BodiesBakeOpt
 }
 
 /// Walks each river to where it first meets a lake, the ocean or another river.
-Status plan_mouth(const Scene& scene, const std::vector<LakeBake>& lakes, const std::vector<CentrelineSamples>& raw,
+Status plan_mouth(const Scene& scene, const Terrain& terrain, const std::vector<LakeBake>& lakes, const std::vector<CentrelineSamples>& raw,
                   std::size_t r, RiverPlan& plan) {
     const SceneRiver& river = scene.rivers[r];
     const CentrelineSamples& s = raw[r];
@@ -95,12 +94,10 @@ Status plan_mouth(const Scene& scene, const std::vector<LakeBake>& lakes, const 
     auto ends_in = [&](std::size_t a, std::size_t b) {
         double at = 0.0;
         const double d = distance_to_line(raw[b].points, raw[b].along, raw[a].points.back(), &at);
-        std::size_t k = 0;
-        while (k + 2 < raw[b].along.size() && raw[b].along[k + 1] < at) ++k;
-        return d <= 0.5 * raw[b].width[k];
+        return d <= 0.5 * at_along(raw[b].along, raw[b].width, at);
     };
     auto water_at = [&](glm::dvec2 p, RiverPlan& hit) {
-        const double ground = scene.terrain.height_at(p);
+        const double ground = terrain.height_at(p);
         for (std::size_t l = 0; l < lakes.size(); ++l)
             if (lakes[l].holds(p, ground)) {
                 hit.end = RiverEnd::lake;
@@ -110,10 +107,8 @@ Status plan_mouth(const Scene& scene, const std::vector<LakeBake>& lakes, const 
         for (std::size_t o = 0; o < raw.size(); ++o) {
             if (o == r || ends_in(o, r)) continue;  // a tributary of this river is not its receiver
             double at = 0.0, across = 0.0;
-            const double d = distance_to_line(raw[o].points, raw[o].along, p, &at, nullptr, &across);
-            std::size_t k = 0;
-            while (k + 2 < raw[o].along.size() && raw[o].along[k + 1] < at) ++k;
-            if (d <= 0.5 * raw[o].width[k]) {
+            const double d = distance_to_line(raw[o].points, raw[o].along, p, &at, &across);
+            if (d <= 0.5 * at_along(raw[o].along, raw[o].width, at)) {
                 hit.end = RiverEnd::river;
                 hit.receiver = static_cast<int>(o);
                 hit.joins_at = at;
@@ -140,8 +135,8 @@ Status plan_mouth(const Scene& scene, const std::vector<LakeBake>& lakes, const 
         return {};
     }
     // No body: it must leave the terrain's extent.
-    const glm::dvec2 c = scene.terrain.extent_center(), e = s.points.back();
-    const double half = scene.terrain.extent_half_size();
+    const glm::dvec2 c = terrain.extent_center(), e = s.points.back();
+    const double half = terrain.extent_half_size();
     const double slack = std::max(s.width.back(), 0.01 * half);
     if (std::max(std::abs(e.x - c.x), std::abs(e.y - c.y)) < half - slack)
         return Error{ErrorCode::invalid_argument,
@@ -178,7 +173,9 @@ Result<std::vector<std::size_t>> bake_order(const Scene& scene, const std::vecto
 
 Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options) {
     WaterBodiesBake out;
-    auto lakes = find_lakes(scene, options);
+    // Always from the shape alone: a baked scene's terrain already carries its cuts.
+    const Terrain uncut = scene.terrain.with_cuts({});
+    auto lakes = find_lakes(scene, uncut, options);
     if (!lakes) return lakes.error();
     out.lakes = std::move(lakes).value();
     const std::size_t count = scene.rivers.size();
@@ -200,7 +197,7 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
     }
     std::vector<RiverPlan> plans(count);
     for (std::size_t r = 0; r < count; ++r)
-        if (auto st = plan_mouth(scene, out.lakes, raw, r, plans[r]); !st) return st.error();
+        if (auto st = plan_mouth(scene, uncut, out.lakes, raw, r, plans[r]); !st) return st.error();
     auto order = bake_order(scene, plans);
     if (!order) return order.error();
     // Discharges add downstream: tributaries (later in the order) first.
@@ -216,7 +213,7 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         const std::size_t r = (*order)[done];
         const SceneRiver& river = scene.rivers[r];
         const RiverPlan& plan = plans[r];
-        const Terrain terrain = scene.terrain.with_cuts(cuts);
+        const Terrain terrain = uncut.with_cuts(cuts);
         RiverBake& bake = out.rivers[r];
         bake.name = river.name;
         bake.own_discharge = river.discharge;
@@ -243,10 +240,7 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             case RiverEnd::river: {
                 const RiverBake& main = out.rivers[static_cast<std::size_t>(plan.receiver)];
                 const double at = plan.joins_at;
-                std::size_t k = 0;
-                while (k + 2 < main.along.size() && main.along[k + 1] < at) ++k;
-                const double t = std::clamp((at - main.along[k]) / (main.along[k + 1] - main.along[k]), 0.0, 1.0);
-                profile.mouth_level = main.surface[k] + t * (main.surface[k + 1] - main.surface[k]);
+                profile.mouth_level = at_along(main.along, main.surface, at);
                 // Its banks continue the ones of the river it joins, upstream of the junction.
                 const ChannelInputs& main_in = inputs[static_cast<std::size_t>(plan.receiver)];
                 const double upstream = at - 0.5 * plan.samples.width.back();
@@ -261,8 +255,7 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         profile.discharge.resize(plan.samples.along.size());
         for (std::size_t k = 0; k < profile.discharge.size(); ++k) {
             double q = river.discharge;
-            for (const Inflow& f : in.inflows)
-                q += f.discharge * std::clamp((plan.samples.along[k] - (f.along - 0.5 * f.width)) / f.width, 0.0, 1.0);
+            for (const Inflow& f : in.inflows) q += f.entered(plan.samples.along[k]);
             profile.discharge[k] = q;
         }
         in.centre_depth = bake_profile(plan.samples, profile, bake);
@@ -281,7 +274,8 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         if (bake.cut) cuts.push_back(bake.cut);
         if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));
     }
-    out.terrain = scene.terrain.with_cuts(cuts);
+    out.terrain = uncut.with_cuts(cuts);
+    if (options.progress) options.progress(1.0);
     return out;
 }
 

@@ -103,8 +103,9 @@ struct BodiesBakeOptions {
     std::stop_token cancel;
 };
 
-/// Finds the lakes' extents and bakes the rivers of `scene` over its terrain. Errors name
-/// the scene and the body's JSON path.
+/// Finds the lakes' extents and bakes the rivers of `scene` over its terrain's shape (any
+/// cuts it carries are replaced by the rivers'). Errors name the scene and the body's
+/// JSON path.
 Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options);
 
 }  // namespace tidewater::detail
