@@ -38,6 +38,19 @@ TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
 // continuous across the waterline (the Eulerian solve has a root there) and rests on land.
 TW_CONST float kWaterlineRampDepth = 0.5f;  // m
 
+// A river's fields as the water evaluation samples them: kRiverQueryStride floats per
+// texel of its grid, bilinear between texel centres. The surface is relative to the
+// river's mouth level; the tangent points downstream (normalised after sampling); the
+// river's wave weight is 1 in its water and falls to 0 over a blend width of the still
+// water it runs into, whose own waves take the rest (still weight, 0 on land).
+TW_CONST uint kRiverQueryStride = 6u;
+TW_CONST uint kRiverQuerySurface = 0u;     // m above the mouth level
+TW_CONST uint kRiverQueryDepth = 1u;       // still water column, m (<= 0 dry)
+TW_CONST uint kRiverQueryTangentX = 2u;
+TW_CONST uint kRiverQueryTangentZ = 3u;
+TW_CONST uint kRiverQueryWaveWeight = 4u;
+TW_CONST uint kRiverQueryStillWeight = 5u;
+
 // Crest foam from the horizontal map folding: 0 above a Jacobian of kFoamJacobianStart,
 // 1 at kFoamJacobianStart - kFoamJacobianWidth, smoothstep between.
 TW_CONST float kFoamJacobianStart = 0.75f;

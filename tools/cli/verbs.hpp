@@ -13,6 +13,7 @@ struct Verb {
 };
 
 Verb add_query_verb(CLI::App& app);
+Verb add_drift_verb(CLI::App& app);
 Verb add_bench_verb(CLI::App& app);
 Verb add_demo_verb(CLI::App& app);
 Verb add_bake_verb(CLI::App& app);

@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <fmt/format.h>
 #include <vector>
 
-#include "kernel/kernel_waves.hpp"
+#include "kernel/kernel_select.hpp"
 #include "parallel.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "water/shore_order.hpp"
@@ -18,31 +16,6 @@ namespace tidewater {
 namespace {
 
 using detail::SolveFn;
-
-struct Kernel {
-    SolveFn solve;
-    const char* name;
-};
-
-/// Picks the widest kernel this CPU runs. TIDEWATER_QUERY_KERNEL=sse2 forces
-/// the baseline (tests compare the two).
-Kernel select_kernel() {
-    const char* forced = std::getenv("TIDEWATER_QUERY_KERNEL");
-    const bool want_baseline = forced != nullptr && std::strcmp(forced, "sse2") == 0;
-#if defined(TIDEWATER_HAVE_AVX2_KERNEL)
-    if (!want_baseline && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
-        return {&detail::kernel_avx2::solve, detail::kernel_avx2::name()};
-    }
-#else
-    (void)want_baseline;
-#endif
-    return {&detail::kernel_sse2::solve, detail::kernel_sse2::name()};
-}
-
-const Kernel& kernel() {
-    static const Kernel k = select_kernel();
-    return k;
-}
 
 /// Points per scheduled chunk: a multiple of every kernel's lane count, large enough that
 /// scheduling costs nothing next to the solves.
@@ -78,7 +51,7 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
         detail::KernelInput in;
         in.waves = &waves;
         if (const auto& shore = body.shore(); shore && !shore->trivial()) in.shore = shore.get();
-        const SolveFn solve = kernel().solve;
+        const SolveFn solve = detail::query_kernel().solve;
         if (in.shore != nullptr && points.size() >= detail::kShoreOrderMinPoints && points.size() <= UINT32_MAX) {
             solve_in_shore_order(in, solve, points, full, heights, options);
         } else {
@@ -102,7 +75,7 @@ Status check_sizes(std::size_t points, std::size_t out) {
 
 }  // namespace
 
-const char* query_kernel_name() { return kernel().name; }
+const char* query_kernel_name() { return detail::query_kernel().name; }
 
 Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                      std::span<SurfacePoint> out, const QueryOptions& options) {

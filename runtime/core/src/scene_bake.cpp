@@ -38,6 +38,53 @@ Error in_shore(const Scene& scene, Error e) {
     return e;
 }
 
+/// Each lake's own shore model over its basin (the square round its extent, with a
+/// margin of beach), at the scene's shore resolution.
+Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Scene& scene, const detail::WaterBodiesBake& bodies,
+                                                                       const SceneBakeOptions& options,
+                                                                       const std::function<void(double)>& progress) {
+    std::vector<std::shared_ptr<const ShoreWaves>> models;
+    const std::size_t count = bodies.lakes.size();
+    for (std::size_t l = 0; l < count; ++l) {
+        const detail::FieldGrid& g = bodies.lakes[l].grid;
+        SquareRegion region;
+        region.center = g.corner + 0.5 * g.texel * glm::dvec2(g.nx, g.nz);
+        region.half_size = 0.5 * g.texel * std::max(g.nx, g.nz) * 1.1 + 2.0 * g.texel;
+        ShoreWaveOptions model_options;
+        model_options.resolution = scene.shore.resolution;
+        model_options.region = region;
+        model_options.breaking_index = scene.shore.breaking_index;
+        model_options.threads = options.threads;
+        model_options.cancel = options.cancel;
+        model_options.progress = [&](double f) { progress((static_cast<double>(l) + f) / static_cast<double>(count)); };
+        auto model = ShoreWaves::bake(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
+        if (!model) {
+            Error e = model.error();
+            e.message = fmt::format("scene \"{}\" /lakes/{}: its shore: {}", scene.name, l, e.message);
+            return e;
+        }
+        models.push_back(std::move(model).value());
+    }
+    return models;
+}
+
+/// The lakes and rivers as baked, where what shapes their water is concerned.
+bool same_bodies(const Scene& scene, const SceneBake& bake) {
+    if (scene.lakes.size() != bake.lakes.size() || scene.rivers.size() != bake.rivers.size()) return false;
+    for (std::size_t l = 0; l < scene.lakes.size(); ++l) {
+        const SceneLake &a = scene.lakes[l], &b = bake.lakes[l];
+        if (a.name != b.name || a.at != b.at || a.body.level() != b.body.level() || a.body.waves().waves().size() != b.body.waves().waves().size())
+            return false;
+    }
+    for (std::size_t r = 0; r < scene.rivers.size(); ++r) {
+        const SceneRiver &a = scene.rivers[r], &b = bake.rivers[r];
+        if (a.name != b.name || a.path != b.path || a.width != b.width || a.discharge != b.discharge || a.manning != b.manning ||
+            a.carve != b.carve)
+            return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options) {
@@ -52,16 +99,27 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         Terrain terrain = scene.terrain.with_cuts({});
         const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
         const bool shore = scene.shore.enabled && scene.has_ocean;
-        const double bodies_share = !has_bodies ? 0.0 : shore ? 0.2 : 1.0;
+        const bool lake_shores = scene.shore.enabled && !scene.lakes.empty();
+        // Shares of the progress: the bodies 1, the lakes' shores 1, the ocean's shore 3.
+        const double total = (has_bodies ? 1.0 : 0.0) + (lake_shores ? 1.0 : 0.0) + (shore ? 3.0 : 0.0);
+        const double bodies_end = total > 0.0 && has_bodies ? 1.0 / total : 0.0;
+        const double bodies_share = total > 0.0 && lake_shores ? bodies_end + 1.0 / total : bodies_end;
         if (has_bodies) {
             detail::BodiesBakeOptions bodies_options;
             bodies_options.lake_resolution = scene.shore.resolution;
             bodies_options.cancel = options.cancel;
-            bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_share, f); };
+            bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
             if (!bodies) return bodies.error();
             terrain = bodies->terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
+        }
+        if (lake_shores) {
+            auto models = bake_lake_shores(scene, *bake->bodies, options, [&](double f) {
+                progress.report("lake shores", bodies_end, bodies_share, f);
+            });
+            if (!models) return models.error();
+            bake->lake_shores = std::move(models).value();
         }
         if (shore && !scene.shore.bake_folder.empty()) {
             progress.report("loading", bodies_share, 1.0, 0.0);
@@ -103,9 +161,16 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
 
         auto baked = std::make_shared<Scene>(scene);
         if (has_bodies)
-            baked->warnings.push_back(fmt::format("scene \"{}\": its lakes and rivers are baked (extents, falling surfaces, "
-                                                  "carved channels, currents) and their channels drawn, but their water is not "
-                                                  "drawn or queried yet", scene.name));
+            baked->warnings.push_back(fmt::format("scene \"{}\": its lakes and rivers are baked and queried (query_world), and "
+                                                  "their channels drawn, but their water is not drawn yet", scene.name));
+        for (std::size_t l = 0; l < bake->lake_shores.size(); ++l) {
+            const auto& model = bake->lake_shores[l];
+            auto lake = scene.lakes[l].body.with_shore(model && !model->trivial() ? model : nullptr);
+            if (!lake) return lake.error();
+            baked->lakes[l].body = std::move(lake).value();
+        }
+        bake->lakes = scene.lakes;
+        bake->rivers = scene.rivers;
         // An all-deep model changes nothing: the ocean carries none and queries skip the shore.
         std::shared_ptr<const ShoreWaves> felt = bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
         auto ocean = scene.ocean.with_shore(std::move(felt));
@@ -127,8 +192,14 @@ bool Scene::baked() const {
     const bool has_bodies = !lakes.empty() || !rivers.empty();
     if (!has_bodies && !(shore.enabled && has_ocean)) return true;
     if (!bake || !(bake->terrain == terrain)) return false;
-    if (has_bodies && (!bake->bodies || bake->bodies->lakes.size() != lakes.size() || bake->bodies->rivers.size() != rivers.size()))
-        return false;
+    if (has_bodies && (!bake->bodies || !same_bodies(*this, *bake))) return false;
+    if (shore.enabled && !lakes.empty()) {
+        if (bake->lake_shores.size() != lakes.size()) return false;
+        for (std::size_t l = 0; l < lakes.size(); ++l) {
+            const auto& model = bake->lake_shores[l];
+            if (lakes[l].body.shore() != (model && !model->trivial() ? model : nullptr)) return false;
+        }
+    }
     if (!(shore.enabled && has_ocean)) return true;
     if (bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
         bake->shore.resolution != shore.resolution || bake->shore.breaking_index != shore.breaking_index ||

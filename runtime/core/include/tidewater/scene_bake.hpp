@@ -22,6 +22,7 @@
 #include <memory>
 #include <stop_token>
 #include <string_view>
+#include <vector>
 
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
@@ -46,6 +47,9 @@ struct SceneBake {
     /// The lakes' extents and the rivers' surfaces, carved beds and currents (null when
     /// the scene has neither). Internal: reach them through the queries.
     std::shared_ptr<const detail::WaterBodiesBake> bodies;
+    /// Each lake's shore model, in the scene's order (null where the shore is disabled);
+    /// the baked scene's lakes carry the ones that change their waves.
+    std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
     bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
     double seconds = 0.0;  ///< Wall-clock time of the bake or load.
     /// What it was made from, so that Scene::baked() can tell an edited copy: the terrain
@@ -53,6 +57,8 @@ struct SceneBake {
     Terrain terrain;
     double water_level = 0.0;
     SceneShore shore;
+    std::vector<SceneLake> lakes;    ///< as baked (levels and seeds)
+    std::vector<SceneRiver> rivers;  ///< as baked (paths, widths, discharges)
 };
 
 struct SceneBakeOptions {
@@ -61,7 +67,7 @@ struct SceneBakeOptions {
     /// model's grid; 0 = the model's grid. The model samples this one field: the
     /// shoreline is baked once, and a finer field makes a slightly better model.
     int distance_resolution = 0;
-    /// Told the stage ("water bodies", "shoreline", "shore waves" or "loading") and the fraction of the
+    /// Told the stage ("water bodies", "lake shores", "shoreline", "shore waves" or "loading") and the fraction of the
     /// whole bake done, 0 to 1, never decreasing. One call at a time, from a baking thread.
     std::function<void(std::string_view stage, double fraction)> progress;
     /// Request a stop from any thread: bake_scene returns ErrorCode::cancelled soon after

@@ -15,3 +15,5 @@
 #include "tidewater/version.hpp"
 #include "tidewater/water_body.hpp"
 #include "tidewater/waves.hpp"
+#include "tidewater/world_query.hpp"
+#include "tidewater/drift.hpp"

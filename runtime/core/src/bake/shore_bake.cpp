@@ -64,9 +64,12 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
 
     ShoreField field;
     field.resolution = n;
-    const double half = terrain.extent_half_size();
+    if (options.region && !(options.region->half_size > 0.0 && std::isfinite(options.region->half_size) &&
+                            std::isfinite(options.region->center.x) && std::isfinite(options.region->center.y)))
+        return Error{ErrorCode::invalid_argument, "bake: the region must have a finite centre and a finite half-size > 0"};
+    const double half = options.region ? options.region->half_size : terrain.extent_half_size();
     field.texel = 2.0 * half / n;
-    field.corner = terrain.extent_center() - glm::dvec2(half);
+    field.corner = (options.region ? options.region->center : terrain.extent_center()) - glm::dvec2(half);
     field.simplify_tolerance = options.simplify_tolerance > 0.0 ? options.simplify_tolerance : 0.5 * field.texel;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     StageClock clock;

@@ -18,3 +18,20 @@ double FieldGrid::sample(const std::vector<float>& field, glm::dvec2 p) const {
 }
 
 }  // namespace tidewater::detail
+
+namespace tidewater::detail {
+
+RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
+    const FieldGrid& g = river.grid;
+    const GridTaps taps = grid_taps(g.corner, g.texel, g.nx, g.nz, p);
+    RiverSample out;
+    out.s = taps(river.channel_s);
+    out.n = taps(river.channel_n);
+    out.flow_x = taps(river.flow_x);
+    out.flow_z = taps(river.flow_z);
+    out.depth = taps(river.depth);
+    out.surface = taps(river.surface_height);
+    return out;
+}
+
+}  // namespace tidewater::detail

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "bodies/monotone_cubic.hpp"
+#include "bodies/river_blend.hpp"
+#include "host_device.h"
 #include "bodies/stream_function.hpp"
 
 namespace tidewater::detail {
@@ -166,7 +168,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     problem.cell.assign(g.size(), FlowCell::open_end);
     problem.depth.assign(g.size(), 0.0f);
     problem.bank_value.assign(g.size(), 0.0);
-    std::vector<std::uint8_t> dry_inside(g.size(), 0);
+    std::vector<std::uint8_t> dry_inside(g.size(), 0), still(g.size(), 0);
     river.texel.assign(g.size(), static_cast<std::uint8_t>(RiverTexel::none));
     river.surface_height.assign(g.size(), 0.0f);
     river.depth.assign(g.size(), 0.0f);
@@ -185,13 +187,17 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
             const bool plume = s > mouth;
             const double eta = plume ? river.surface.back() : surface_at(s);
             const double ground = in.terrain->height_at(p);
+            if (in.in_receiver) still[t] = in.in_receiver(p, ground);
             river.surface_height[t] = static_cast<float>(eta);
             river.depth[t] = static_cast<float>(eta - ground);
             if (frame.beyond[t] != 0) continue;  // the cut at the ends: open
             const double half = 0.5 * at_along(along, width, s);
             double bed = ground;
-            if (!plume && in.carve) {
-                const double hc = at_along(river.along, in.centre_depth, s);
+            if (in.carve) {
+                // The channel runs on into the still water and shoals out through the plume,
+                // so the river does not pour off a step into shallows.
+                const double fade = plume ? 1.0 - smoothstep(mouth, mouth + in.plume_length, s) : 1.0;
+                const double hc = at_along(river.along, in.centre_depth, std::min(s, mouth)) * fade;
                 const double x = std::abs(n) / half;
                 const double profile = x <= 1.0 ? eta - hc * carved_depth_fraction(x) : eta + (std::abs(n) - half) * kCarvedBankSlope;
                 if (profile < ground) {
@@ -214,7 +220,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
                 int a = 0, b = 0;
                 in.receiver_river->grid.texel_of(p, a, b);
                 const std::size_t r = in.receiver_river->grid.index(a, b);
-                if (in.receiver_river->grid.contains(p) && in.receiver_river->texel[r] == static_cast<std::uint8_t>(RiverTexel::river)) {
+                if (in.receiver_river->grid.contains(p) && river_water(in.receiver_river->texel[r])) {
                     problem.cell[t] = FlowCell::open_end;  // the river it joins owns this water
                     continue;
                 }
@@ -308,6 +314,18 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
                 if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river)) area_sum += static_cast<double>(problem.depth[t]);
             }
         }
+    std::vector<float> river_weight, still_weight;
+    blend_with_still_water(g, still, std::max(mouth_width, 2.0 * g.texel), river.texel, river_weight, still_weight);
+    river.query_texels.assign(g.size() * gpu::kRiverQueryStride, 0.0f);
+    for (std::size_t t = 0; t < g.size(); ++t) {
+        float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
+        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
+        q[gpu::kRiverQueryDepth] = river.depth[t];
+        q[gpu::kRiverQueryTangentX] = frame.tx[t];
+        q[gpu::kRiverQueryTangentZ] = frame.tz[t];
+        q[gpu::kRiverQueryWaveWeight] = river_weight[t];
+        q[gpu::kRiverQueryStillWeight] = still_weight[t];
+    }
     river.channel_s = frame.along;
     river.channel_n = frame.across;
     river.tangent_x = frame.tx;

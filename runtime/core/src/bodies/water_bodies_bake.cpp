@@ -251,7 +251,7 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             }
             case RiverEnd::domain_edge: break;
         }
-        bake.mouth_level = std::isnan(profile.mouth_level) ? 0.0 : profile.mouth_level;
+        bake.mouth_level = profile.mouth_level;
         profile.discharge.resize(plan.samples.along.size());
         for (std::size_t k = 0; k < profile.discharge.size(); ++k) {
             double q = river.discharge;
@@ -259,6 +259,8 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             profile.discharge[k] = q;
         }
         in.centre_depth = bake_profile(plan.samples, profile, bake);
+        // A river off the domain's edge meets no level: its surface there is its reference.
+        if (std::isnan(bake.mouth_level)) bake.mouth_level = bake.surface.back();
         if (plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean) {
             in.plume_length = kPlumeWidths * plan.samples.width.back();
             if (plan.end == RiverEnd::lake) {

@@ -21,6 +21,7 @@
 #include "kernel/kernel_waves.hpp"
 #include "water/newton.hpp"
 #include "water/open_sea_water.hpp"
+#include "water/river_solve.hpp"
 #include "water/shore_water.hpp"
 
 namespace tidewater::detail::TIDEWATER_KERNEL_NS {
@@ -182,6 +183,11 @@ void solve_points(const KernelInput& in, const glm::dvec2* points, std::size_t n
             write_results<kFull>(in, r, nullptr, used, out_full, out_heights);
         }
     }
+}
+
+void solve_river(const RiverInput<float>& in, const glm::dvec2* points, std::size_t n, SurfacePoint* out) {
+    for (std::size_t start = 0; start < n; start += kLanes)
+        solve_river_batch<FloatBatch>(in, points + start, n - start < kLanes ? n - start : kLanes, out + start);
 }
 
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights) {

@@ -18,6 +18,24 @@ struct KernelInput {
     const ShoreWaves* shore = nullptr;
 };
 
+struct RiverBake;
+
+/// What a batch of river points evaluates (see water/river_solve.hpp).
+template <typename Scalar>
+struct RiverInput {
+    const RiverBake* river = nullptr;
+    /// prepare_river_waves of the river's preset; its level is the river's mouth level,
+    /// which its surface fields are relative to.
+    const PreparedWaves<Scalar>* river_waves = nullptr;
+    /// The plume's still water: its waves (level included) and shore model. Null waves:
+    /// the points are in the river's own water.
+    const PreparedWaves<Scalar>* still_waves = nullptr;
+    const ShoreWaves* still_shore = nullptr;
+};
+
+/// River kernel entry: solves `n` points of one river or one plume, full results.
+using RiverSolveFn = void (*)(const RiverInput<float>& in, const glm::dvec2* points, std::size_t n, SurfacePoint* out);
+
 /// Kernel entry: solves `n` points; exactly one of `full` and `heights` is non-null.
 using SolveFn = void (*)(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full,
                          double* heights);
@@ -27,11 +45,13 @@ double surface_foam(double breaking, double jacobian);
 
 namespace kernel_sse2 {
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights);
+void solve_river(const RiverInput<float>& in, const glm::dvec2* points, std::size_t n, SurfacePoint* out);
 const char* name();
 }  // namespace kernel_sse2
 
 namespace kernel_avx2 {
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights);
+void solve_river(const RiverInput<float>& in, const glm::dvec2* points, std::size_t n, SurfacePoint* out);
 const char* name();
 }  // namespace kernel_avx2
 

@@ -89,6 +89,8 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
             if (options.progress) options.progress(f);
         };
         Result<ShoreField> field = Error{};
+        if (shoreline && options.region)
+            return Error{ErrorCode::invalid_argument, "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
         if (shoreline && shoreline->resolution == options.resolution) {
             field = *shoreline;
         } else if (shoreline) {
@@ -96,6 +98,7 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::bake(const WaveSet& set, c
         } else {
             BakeOptions bake;
             bake.resolution = options.resolution;
+            bake.region = options.region;
             bake.threads = options.threads;
             bake.cancel = options.cancel;
             bake.progress = [&](double f) { report(grid_share * f); };

@@ -52,6 +52,16 @@ PreparedWaves<Scalar> prepare_waves(const WaveSet& set, double local_time, doubl
 template PreparedWaves<float> prepare_waves<float>(const WaveSet&, double, double);
 template PreparedWaves<double> prepare_waves<double>(const WaveSet&, double, double);
 
+template <typename Scalar>
+PreparedWaves<Scalar> prepare_river_waves(const WaveSet& set, double local_time, double level, double mean_speed) {
+    PreparedWaves<Scalar> p = prepare_waves<Scalar>(set, local_time, level);
+    for (std::size_t i = 0; i < p.count; ++i) p.offset[i] = wrap_angle(p.offset[i] - p.kx[i] * mean_speed * local_time);
+    return p;
+}
+
+template PreparedWaves<float> prepare_river_waves<float>(const WaveSet&, double, double, double);
+template PreparedWaves<double> prepare_river_waves<double>(const WaveSet&, double, double, double);
+
 namespace {
 template <typename Scalar>
 void reduced_phases(const PreparedWaves<Scalar>& w, double px, double pz, Scalar* base, std::size_t stride) {

@@ -29,6 +29,13 @@ struct PreparedWaves {
 template <typename Scalar>
 PreparedWaves<Scalar> prepare_waves(const WaveSet& set, double local_time, double level);
 
+/// A river's waves: wavevectors in its channel frame (k_s along downstream, k_n across,
+/// left > 0) and phases that ride its mean speed U: offset = phase - (omega + k_s U) t,
+/// the Doppler shift of waves carried by the current. base_phases then takes channel
+/// coordinates (s, n) in place of (x, z).
+template <typename Scalar>
+PreparedWaves<Scalar> prepare_river_waves(const WaveSet& set, double local_time, double level, double mean_speed);
+
 /// Each wave's phase k D.p + offset at the point (px, pz), reduced in double to [-pi, pi),
 /// into base[i * stride]. (Not inline: the kernels are compiled per instruction set.)
 void base_phases(const PreparedWaves<float>& w, double px, double pz, float* base, std::size_t stride);

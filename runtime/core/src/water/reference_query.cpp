@@ -6,7 +6,10 @@
 #include "kernel/kernel_waves.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
+#include "tidewater/scene_bake.hpp"
+#include "water/body_at.hpp"
 #include "water/newton.hpp"
+#include "water/river_solve.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/shore_water.hpp"
 
@@ -41,6 +44,54 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     o.converged = r.converged != 0.0;
     o.foam = detail::surface_foam(breaking, p.jacobian);
     return o;
+}
+
+WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) {
+    const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
+    const detail::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
+    if (has_bodies && (bodies == nullptr || !scene.baked())) return WorldPoint{};
+    const detail::BodyFinder finder(scene, bodies);
+    const detail::PointBody at = finder.find(point);
+    WorldPoint out;
+    out.body = at.body;
+    out.flow = at.flow;
+    const detail::EvaluationKey key = finder.evaluation_key(at.evaluation);
+    switch (key.kind) {
+        case detail::EvaluationKind::land:
+            out.surface.height = (bodies != nullptr ? bodies->terrain : scene.terrain).height_at(point);
+            out.surface.depth = 0.0;
+            out.surface.wet = false;
+            break;
+        case detail::EvaluationKind::ocean:
+            out.surface = reference::query_point(scene.ocean, time, point);
+            detail::settle_on_terrain(out.surface, at, scene.water_level());
+            break;
+        case detail::EvaluationKind::lake: {
+            const WaterBody& lake = scene.lakes[static_cast<std::size_t>(key.lake)].body;
+            out.surface = reference::query_point(lake, time, point);
+            detail::settle_on_terrain(out.surface, at, lake.level());
+            break;
+        }
+        case detail::EvaluationKind::river: {
+            const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
+            const detail::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];
+            const auto river_waves = detail::prepare_river_waves<double>(river.body.waves(), river.body.local_time(time),
+                                                                         baked.mouth_level, baked.mean_speed);
+            detail::RiverInput<double> in;
+            in.river = &baked;
+            in.river_waves = &river_waves;
+            detail::PreparedWaves<double> still_waves;
+            if (key.plume) {
+                const WaterBody& still = detail::still_body(scene, baked);
+                still_waves = detail::prepare_waves<double>(still.waves(), still.local_time(time), still.level());
+                in.still_waves = &still_waves;
+                if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
+            }
+            detail::solve_river_batch<double>(in, &point, 1, &out.surface);
+            break;
+        }
+    }
+    return out;
 }
 
 void fixed_point_heights(const WaveSet& set, double local_time, std::span<const glm::dvec2> points,

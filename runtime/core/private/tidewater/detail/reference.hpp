@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
+#include "tidewater/world_query.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
@@ -28,6 +29,10 @@ void fixed_point_heights(const WaveSet& set, double local_time, std::span<const 
 /// SIMD kernel, in double and one point at a time. The yardstick for the kernel's
 /// float arithmetic (tests and benchmarks), not a fast path.
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
+
+/// query_world for one point on the scalar double path (rivers and plumes included).
+/// The scene must be baked where it has lakes or rivers (a default WorldPoint if not).
+WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point);
 
 /// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and tests).
 double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p);

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stop_token>
 #include <vector>
 
@@ -20,8 +21,16 @@
 
 namespace tidewater {
 
+/// A square part of the world, m.
+struct SquareRegion {
+    glm::dvec2 center{0.0};
+    double half_size = 0.0;  ///< > 0
+};
+
 struct BakeOptions {
     int resolution = 1024;            ///< Texels per side, 8 to 8192.
+    /// The square the grid covers; none: the terrain's extent (a lake's shore: its basin).
+    std::optional<SquareRegion> region;
     double simplify_tolerance = 0.0;  ///< m; the contour moves at most this far (0 = half a texel).
     unsigned threads = 0;             ///< 0 = every hardware thread.
     std::function<void(double)> progress;  ///< Called with 0..1 during long bakes (optional).

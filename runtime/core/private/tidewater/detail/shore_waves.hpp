@@ -21,12 +21,14 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stop_token>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/gerstner.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
@@ -37,6 +39,9 @@ namespace tidewater {
 
 struct ShoreWaveOptions {
     int resolution = 256;           ///< Texels per side over the terrain's extent, 16 to 4096.
+    /// The square the model covers; none: the terrain's extent (a lake's: its basin). Not
+    /// with a shoreline baked elsewhere.
+    std::optional<SquareRegion> region;
     unsigned threads = 0;           ///< 0 = every hardware thread.
     double breaking_index = 0.78;   ///< Breaker height / depth (McCowan), in (0, 1.2].
     std::function<void(double)> progress;  ///< Called with 0..1, one call at a time (optional).

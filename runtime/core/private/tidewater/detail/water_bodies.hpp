@@ -45,8 +45,14 @@ enum class RiverEnd { domain_edge, ocean, lake, river };
 enum class RiverTexel : std::uint8_t {
     none = 0,   ///< not this river's water
     river = 1,  ///< the river's own channel
-    plume = 2,  ///< still water of the body it runs into, where its current fades out
+    plume = 2,  ///< still water of the body it runs into, where its current fades out and its waves hand over
+    mouth = 3,  ///< the river's own water next to that still water (its waves blend there too)
 };
+
+/// The river's own water (its channel, mouth included).
+inline bool river_water(std::uint8_t texel) {
+    return texel == static_cast<std::uint8_t>(RiverTexel::river) || texel == static_cast<std::uint8_t>(RiverTexel::mouth);
+}
 
 struct LakeBake {
     std::string name;
@@ -65,7 +71,7 @@ struct RiverBake {
     double manning = 0.035;
     RiverEnd end = RiverEnd::domain_edge;
     int receiver = -1;            ///< index of the lake or river it runs into
-    double mouth_level = 0.0;     ///< the surface where it ends (a lake's or the ocean's level), m
+    double mouth_level = 0.0;     ///< the surface where it ends (a lake's or the ocean's level, the river's at a confluence or the domain's edge), m
     double mean_speed = 0.0;      ///< Q / mean cross-section area, m/s: the waves ride it
 
     /// Centreline samples from source to mouth.
@@ -85,9 +91,22 @@ struct RiverBake {
     std::vector<float> flow_x, flow_z;   ///< depth-averaged current u, m/s (0 where dry)
     std::vector<float> channel_s, channel_n;      ///< along and across the centreline, m (n > 0 left)
     std::vector<float> tangent_x, tangent_z;      ///< downstream unit direction of the nearest centreline
+    /// What the water evaluation samples, gpu::kRiverQueryStride floats per texel
+    /// (host_device.h): surface above mouth_level, depth, tangent x and z, the weights of
+    /// the river's waves and of the still water's.
+    std::vector<float> query_texels;
     std::shared_ptr<const TerrainCut> cut;        ///< the carved channel (null: not carved)
     std::size_t islands = 0;                      ///< dry islands inside the channel
 };
+
+/// A river's fields at a world point (bilinear, clamped to its grid).
+struct RiverSample {
+    double s = 0.0, n = 0.0;            ///< channel coordinates: along and across (left > 0), m
+    double flow_x = 0.0, flow_z = 0.0;  ///< current, m/s
+    double depth = 0.0;                 ///< still water column, m
+    double surface = 0.0;               ///< still surface, world y, m
+};
+RiverSample sample_river(const RiverBake& river, glm::dvec2 p);
 
 /// Everything lakes and rivers bake to.
 struct WaterBodiesBake {

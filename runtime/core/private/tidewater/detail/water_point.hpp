@@ -133,6 +133,23 @@ void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& sin_theta, const
     }
 }
 
+/// s += w * b: the sums of a second water, scaled (waves fading in as another body's fade out).
+template <typename T>
+void add_scaled(SurfaceSums<T>& s, const SurfaceSums<T>& b, const T& w) {
+    using Ops = NumberOps<T>;
+    s.dx = Ops::mul_add(w, b.dx, s.dx);
+    s.dz = Ops::mul_add(w, b.dz, s.dz);
+    s.eta = Ops::mul_add(w, b.eta, s.eta);
+    s.mxx = Ops::mul_add(w, b.mxx, s.mxx);
+    s.mxz = Ops::mul_add(w, b.mxz, s.mxz);
+    s.mzz = Ops::mul_add(w, b.mzz, s.mzz);
+    s.sx = Ops::mul_add(w, b.sx, s.sx);
+    s.sz = Ops::mul_add(w, b.sz, s.sz);
+    s.vx = Ops::mul_add(w, b.vx, s.vx);
+    s.vy = Ops::mul_add(w, b.vy, s.vy);
+    s.vz = Ops::mul_add(w, b.vz, s.vz);
+}
+
 /// Adds one wave at phase `theta`.
 template <bool kVelocity = true, typename T>
 void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& theta) {

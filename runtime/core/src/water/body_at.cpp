@@ -1,0 +1,76 @@
+#include "water/body_at.hpp"
+
+#include <cmath>
+
+#include "tidewater/scene_bake.hpp"
+
+namespace tidewater::detail {
+
+PointBody BodyFinder::find(glm::dvec2 p) const {
+    int plume_river = -1;
+    if (bodies_ != nullptr) {
+        for (std::size_t r = 0; r < bodies_->rivers.size(); ++r) {
+            const RiverBake& river = bodies_->rivers[r];
+            if (!river.grid.contains(p)) continue;
+            int i = 0, j = 0;
+            river.grid.texel_of(p, i, j);
+            const auto texel = static_cast<RiverTexel>(river.texel[river.grid.index(i, j)]);
+            const int index = static_cast<int>(r);
+            if (texel == RiverTexel::river || texel == RiverTexel::mouth) {
+                const RiverSample at = sample_river(river, p);
+                return {{BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, texel == RiverTexel::mouth)};
+            }
+            if (texel == RiverTexel::plume && plume_river < 0) plume_river = index;
+        }
+    }
+    if (plume_river >= 0) {
+        const RiverBake& river = bodies_->rivers[static_cast<std::size_t>(plume_river)];
+        const RiverSample at = sample_river(river, p);
+        const BodyRef still = river.end == RiverEnd::lake ? BodyRef{BodyKind::lake, river.receiver} : BodyRef{BodyKind::ocean, -1};
+        return {still, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(plume_river, true)};
+    }
+    const double ground = (bodies_ != nullptr ? bodies_->terrain : scene_.terrain).height_at(p);
+    if (bodies_ != nullptr) {
+        for (std::size_t l = 0; l < bodies_->lakes.size(); ++l) {
+            if (!bodies_->lakes[l].holds(p, ground)) continue;
+            const int index = static_cast<int>(l);
+            return {{BodyKind::lake, index}, {0.0, 0.0}, ground, lake_evaluation(index)};
+        }
+    }
+    if (!scene_.has_ocean) return {{}, {0.0, 0.0}, ground, 0};
+    const BodyRef ocean = ground < scene_.water_level() ? BodyRef{BodyKind::ocean, -1} : BodyRef{};
+    return {ocean, {0.0, 0.0}, ground, 1};
+}
+
+EvaluationKey BodyFinder::evaluation_key(std::size_t evaluation) const {
+    EvaluationKey key;
+    if (evaluation == 0) return key;
+    if (evaluation == 1) {
+        key.kind = EvaluationKind::ocean;
+        return key;
+    }
+    std::size_t k = evaluation - 2;
+    if (k < scene_.lakes.size()) {
+        key.kind = EvaluationKind::lake;
+        key.lake = static_cast<int>(k);
+        return key;
+    }
+    k -= scene_.lakes.size();
+    key.kind = EvaluationKind::river;
+    key.river = static_cast<int>(k / 2);
+    key.plume = k % 2 == 1;
+    return key;
+}
+
+void settle_on_terrain(SurfacePoint& point, const PointBody& at, double level) {
+    if (std::isfinite(point.depth) || std::isnan(at.ground)) return;
+    point.depth = level - at.ground;
+    point.wet = surface_wet(point.height, level, point.depth);
+}
+
+const WaterBody& still_body(const Scene& scene, const RiverBake& river) {
+    if (river.end == RiverEnd::lake) return scene.lakes[static_cast<std::size_t>(river.receiver)].body;
+    return scene.ocean;
+}
+
+}  // namespace tidewater::detail

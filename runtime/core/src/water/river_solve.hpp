@@ -1,0 +1,119 @@
+// Solving points in a river or its plume (private), once over the number type: the SIMD
+// kernels and the double reference instantiate it. A river point sees the river's
+// surface and waves; a plume point sees the still water it runs into (a lake's or the
+// ocean's waves, with their shore model) with the river's waves fading out. Both carry
+// the river's current at the point, added to the particles' orbital velocity.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+#include <glm/vec2.hpp>
+
+#include "kernel/kernel_waves.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/query.hpp"
+#include "water/newton.hpp"
+#include "water/open_sea_water.hpp"
+#include "water/prepared_waves.hpp"
+#include "water/river_water.hpp"
+#include "water/shore_water.hpp"
+
+namespace tidewater::detail {
+
+namespace river_solve_impl {
+
+template <typename T, typename V>
+void store_lanes(const T& b, V* lanes) {
+    using Ops = NumberOps<T>;
+    alignas(64) typename Ops::Scalar tmp[Ops::kLanes];
+    Ops::store(b, tmp);
+    for (std::size_t l = 0; l < Ops::kLanes; ++l) lanes[l] = static_cast<V>(tmp[l]);
+}
+
+/// Writes the first `used` lanes of a solve.
+template <typename T>
+void write_points(const NewtonResult<T>& r, double level, const RiverSample* at, const double* breaking,
+                  const double* shore_distance, std::size_t used, SurfacePoint* out) {
+    constexpr std::size_t kLanes = NumberOps<T>::kLanes;
+    const PointState<T> p = point_state(r);
+    double eta[kLanes], nx[kLanes], ny[kLanes], nz[kLanes], vx[kLanes], vy[kLanes], vz[kLanes], jac[kLanes];
+    double dx[kLanes], dz[kLanes], it[kLanes], conv[kLanes];
+    store_lanes(p.eta, eta);
+    store_lanes(p.nx, nx);
+    store_lanes(p.ny, ny);
+    store_lanes(p.nz, nz);
+    store_lanes(r.sums.vx, vx);
+    store_lanes(r.sums.vy, vy);
+    store_lanes(r.sums.vz, vz);
+    store_lanes(p.jacobian, jac);
+    store_lanes(p.disp_x, dx);
+    store_lanes(p.disp_z, dz);
+    store_lanes(r.iterations, it);
+    store_lanes(r.converged, conv);
+    for (std::size_t l = 0; l < used; ++l) {
+        SurfacePoint& o = out[l];
+        o.height = level + eta[l];
+        o.normal = {nx[l], ny[l], nz[l]};
+        o.displacement = {dx[l], dz[l]};
+        o.velocity = {vx[l] + at[l].flow_x, vy[l], vz[l] + at[l].flow_z};
+        o.jacobian = jac[l];
+        o.iterations = static_cast<int>(it[l]);
+        o.converged = conv[l] != 0.0;
+        o.depth = at[l].depth;
+        o.shore_distance = shore_distance ? shore_distance[l] : kDeepWater;
+        o.wet = surface_wet(o.height, at[l].surface, at[l].depth);
+        o.foam = surface_foam(breaking ? breaking[l] : 0.0, jac[l]);
+    }
+}
+
+}  // namespace river_solve_impl
+
+/// Solves `used` points (1 to the lane count) of one river or one plume.
+template <typename T>
+void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, const glm::dvec2* points, std::size_t used,
+                       SurfacePoint* out) {
+    using Ops = NumberOps<T>;
+    using Scalar = typename Ops::Scalar;
+    constexpr std::size_t kLanes = Ops::kLanes;
+    alignas(64) double px[kLanes], pz[kLanes];
+    alignas(64) Scalar river_base[kMaxWaves * kLanes], still_base[kMaxWaves * kLanes];
+    RiverSample at[kLanes];
+    const bool plume = in.still_waves != nullptr;
+    for (std::size_t l = 0; l < kLanes; ++l) {
+        // Spare lanes repeat the last point; lanes never interact.
+        const glm::dvec2 p = points[l < used ? l : used - 1];
+        px[l] = p.x;
+        pz[l] = p.y;
+        at[l] = sample_river(*in.river, p);
+        // The river's phases run in channel coordinates.
+        base_phases(*in.river_waves, at[l].s, at[l].n, river_base + l, kLanes);
+        if (plume) base_phases(*in.still_waves, p.x, p.y, still_base + l, kLanes);
+    }
+    RiverWater<T> river(*in.river_waves, *in.river, px, pz, river_base);
+    if (!plume) {
+        const auto r = solve_rest_offset<true, T>(river, in.river_waves->tolerance, in.river_waves->radius);
+        river_solve_impl::write_points(r, in.river_waves->level, at, nullptr, nullptr, used, out);
+        return;
+    }
+    const double max_offset = in.river_waves->max_offset + in.still_waves->max_offset;
+    const double tolerance = newton_tolerance(max_offset), radius = newton_radius(max_offset);
+    if (in.still_shore != nullptr) {
+        ShoreWater<T> still(*in.still_waves, *in.still_shore, px, pz, still_base);
+        PlumeWater<T, ShoreWater<T>> water(river, still);
+        const auto r = solve_rest_offset<true, T>(water, tolerance, radius);
+        double breaking[kLanes], distance[kLanes];
+        river_solve_impl::store_lanes(still.breaking, breaking);
+        river_solve_impl::store_lanes(still.shore_distance_at_point, distance);
+        river_solve_impl::write_points(r, in.still_waves->level, at, breaking, distance, used, out);
+    } else {
+        OpenSeaWater<T> still(*in.still_waves, still_base);
+        PlumeWater<T, OpenSeaWater<T>> water(river, still);
+        const auto r = solve_rest_offset<true, T>(water, tolerance, radius);
+        river_solve_impl::write_points(r, in.still_waves->level, at, nullptr, nullptr, used, out);
+    }
+}
+
+}  // namespace tidewater::detail

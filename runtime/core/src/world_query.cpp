@@ -1,0 +1,144 @@
+#include "tidewater/world_query.hpp"
+
+#include <exception>
+#include <fmt/format.h>
+#include <vector>
+
+#include "kernel/kernel_select.hpp"
+#include "parallel.hpp"
+#include "tidewater/scene_bake.hpp"
+#include "water/body_at.hpp"
+#include "water/prepared_waves.hpp"
+
+namespace tidewater {
+
+namespace {
+
+/// Points per scheduled chunk of river points (a multiple of every kernel's lane count).
+constexpr std::size_t kRiverPointsPerChunk = 256;
+
+/// The points of one evaluation: one body's water, or one river's plume.
+struct Group {
+    std::vector<std::size_t> members;  ///< indices into the caller's points
+    std::vector<glm::dvec2> points;
+    std::vector<SurfacePoint> results;
+
+    void add(std::size_t i, glm::dvec2 p) {
+        members.push_back(i);
+        points.push_back(p);
+    }
+};
+
+Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies, const detail::EvaluationKey& key,
+                       double time, Group& group, const QueryOptions& options) {
+    const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
+    const detail::RiverBake& baked = bodies.rivers[static_cast<std::size_t>(key.river)];
+    const auto river_waves = detail::prepare_river_waves<float>(river.body.waves(), river.body.local_time(time),
+                                                                baked.mouth_level, baked.mean_speed);
+    detail::RiverInput<float> in;
+    in.river = &baked;
+    in.river_waves = &river_waves;
+    detail::PreparedWaves<float> still_waves;
+    if (key.plume) {
+        const WaterBody& still = detail::still_body(scene, baked);
+        still_waves = detail::prepare_waves<float>(still.waves(), still.local_time(time), still.level());
+        in.still_waves = &still_waves;
+        if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
+    }
+    const detail::RiverSolveFn solve = detail::query_kernel().solve_river;
+    detail::parallel_chunks(group.points.size(), kRiverPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
+        solve(in, group.points.data() + begin, end - begin, group.results.data() + begin);
+    });
+    return {};
+}
+
+/// Land in a scene without an ocean: the terrain itself.
+void fill_land(const Scene& scene, Group& group) {
+    const Terrain& terrain = scene.bake ? scene.bake->terrain : scene.terrain;
+    for (std::size_t k = 0; k < group.points.size(); ++k) {
+        SurfacePoint& o = group.results[k];
+        o = SurfacePoint{};
+        o.height = terrain.height_at(group.points[k]);
+        o.depth = 0.0;
+        o.wet = false;
+    }
+}
+
+Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
+                 const QueryOptions& options) {
+    const detail::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
+    const detail::BodyFinder finder(scene, bodies);
+    std::vector<detail::PointBody> where(points.size());
+    detail::parallel_chunks(points.size(), 1024, options.threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) where[i] = finder.find(points[i]);
+    });
+    std::vector<Group> groups(finder.evaluation_count());
+    for (std::size_t i = 0; i < points.size(); ++i) groups[where[i].evaluation].add(i, points[i]);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        Group& group = groups[g];
+        if (group.points.empty()) continue;
+        group.results.resize(group.points.size());
+        const detail::EvaluationKey key = finder.evaluation_key(g);
+        Status st;
+        switch (key.kind) {
+            case detail::EvaluationKind::land: fill_land(scene, group); break;
+            case detail::EvaluationKind::ocean: st = query_surface(scene.ocean, time, group.points, group.results, options); break;
+            case detail::EvaluationKind::lake:
+                st = query_surface(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, group.points, group.results, options);
+                break;
+            case detail::EvaluationKind::river: st = run_river_group(scene, *bodies, key, time, group, options); break;
+        }
+        if (!st) return st;
+        const double still_level = key.kind == detail::EvaluationKind::ocean ? scene.water_level()
+                                   : key.kind == detail::EvaluationKind::lake
+                                       ? scene.lakes[static_cast<std::size_t>(key.lake)].body.level()
+                                       : 0.0;
+        for (std::size_t k = 0; k < group.members.size(); ++k) {
+            const std::size_t i = group.members[k];
+            out[i].surface = group.results[k];
+            if (key.kind == detail::EvaluationKind::ocean || key.kind == detail::EvaluationKind::lake)
+                detail::settle_on_terrain(out[i].surface, where[i], still_level);
+            out[i].body = where[i].body;
+            out[i].flow = where[i].flow;
+        }
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string_view body_name(const Scene& scene, BodyRef body) {
+    const auto index = static_cast<std::size_t>(body.index);
+    switch (body.kind) {
+        case BodyKind::ocean: return "ocean";
+        case BodyKind::lake: return body.index >= 0 && index < scene.lakes.size() ? std::string_view(scene.lakes[index].name) : "";
+        case BodyKind::river: return body.index >= 0 && index < scene.rivers.size() ? std::string_view(scene.rivers[index].name) : "";
+        case BodyKind::none: break;
+    }
+    return "";
+}
+
+Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
+                   const QueryOptions& options) {
+    if (points.size() != out.size())
+        return Error{ErrorCode::invalid_argument, fmt::format("query_world: {} points but room for {} results", points.size(), out.size())};
+    const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
+    if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass it "
+                                 "through bake_scene first", scene.name)};
+    if (points.empty()) return {};
+    try {
+        return run_world(scene, time, points, out, options);
+    } catch (const std::exception& e) {
+        return Error{ErrorCode::internal, fmt::format("query_world: could not run: {}", e.what())};
+    }
+}
+
+WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) {
+    WorldPoint out;
+    if (!query_world(scene, time, std::span<const glm::dvec2>(&point, 1), std::span<WorldPoint>(&out, 1))) return WorldPoint{};
+    return out;
+}
+
+}  // namespace tidewater
