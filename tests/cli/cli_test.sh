@@ -51,17 +51,50 @@ case "$CASE" in
   query_columns)
     "$TW" query --time 2.5 --points points.csv > out.csv
     check "exit 0" test $? -eq 0
-    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam"
+    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z"
     check "one row per point" test "$(wc -l < out.csv)" -eq 4
     check "rows echo the points" bash -c "sed -n 3p out.csv | grep -q '^12.5,-3,'"
-    check "fourteen columns" bash -c "awk -F, 'NR>1 && NF!=14 {bad=1} END {exit bad}' out.csv"
+    check "seventeen columns" bash -c "awk -F, 'NR>1 && NF!=17 {bad=1} END {exit bad}' out.csv"
+    check "bodies: none on the island's middle, the ocean offshore; no current in the ocean" bash -c "sed -n 2p out.csv | awk -F, '{exit !(\$15 == \"\")}' && sed -n 4p out.csv | awk -F, '{exit !(\$15 == \"ocean\" && \$16 == 0 && \$17 == 0)}'"
     check "the island's middle is dry land, far offshore is wet" bash -c "sed -n 2p out.csv | awk -F, '{exit !(\$13 == 0 && \$11 < 0)}' && sed -n 4p out.csv | awk -F, '{exit !(\$13 == 1)}'"
     check "unit normals" bash -c "awk -F, 'NR>1 { n=\$4*\$4+\$5*\$5+\$6*\$6; if (n<0.999999 || n>1.000001) bad=1 } END {exit bad}' out.csv"
+    ;;
+  query_river)
+    cat > river.json <<'JSON'
+{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
+  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
+  "rivers": [ { "name": "mill", "path": [[-1500, 0], [-500, 200], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
+JSON
+    printf 'x,z\n-1000,100\n0,500\n2500,0\n' > river_points.csv
+    "$TW" query --scene river.json --time 3 --points river_points.csv --out river_out.csv
+    check "exit 0" test $? -eq 0
+    check "a river point is in the river, with a current" bash -c "sed -n 2p river_out.csv | awk -F, '{exit !(\$15 == \"mill\" && \$16 > 0.3)}'"
+    check "a point beside it is on land, without one" bash -c "sed -n 3p river_out.csv | awk -F, '{exit !(\$15 == \"\" && \$16 == 0 && \$13 == 0)}'"
+    check "the sea past the mouth is the ocean's" bash -c "sed -n 4p river_out.csv | awk -F, '{exit !(\$15 == \"ocean\")}'"
+    expect_error "the gpu backend refuses rivers" "--backend cpu" "$TW" query --scene river.json --backend gpu --time 0 --points river_points.csv --out gpu_river.csv
+    check "no output after a refusal" no_file gpu_river.csv
+    ;;
+  drift)
+    cat > river.json <<'JSON'
+{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
+  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
+  "rivers": [ { "name": "mill", "path": [[-1500, 0], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
+JSON
+    "$TW" drift --scene river.json --start=-1000,0 --duration 60 --dt 0.1 --out track.csv
+    check "exit 0" test $? -eq 0
+    check "header" test "$(head -1 track.csv)" = "t,x,z,height,body"
+    check "601 samples" test "$(wc -l < track.csv)" -eq 602
+    check "carried downstream in the river" bash -c "tail -1 track.csv | awk -F, '{exit !(\$1 == 60 && \$2 > -990 && \$5 == \"mill\")}'"
+    expect_error "a start on land" "not in water" "$TW" drift --scene river.json --start=0,300 --duration 10 --out land.csv
+    check "no output after a refusal" no_file land.csv
+    expect_error "a malformed start" "--start" "$TW" drift --scene river.json --start=abc --duration 10 --out bad.csv
+    expect_error "a step longer than the run" "dt" "$TW" drift --scene river.json --start=-1000,0 --duration 1 --dt 2 --out bad.csv
+    check "no output after refusals" no_file bad.csv
     ;;
   query_times)
     "$TW" query --times 0:1:0.25 --points points.csv --out long.csv
     check "exit 0" test $? -eq 0
-    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam"
+    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z"
     check "5 times x 3 points" test "$(wc -l < long.csv)" -eq 16
     check "last time is 1" bash -c "tail -1 long.csv | grep -q '^1,'"
     # The row for t = 0.5 equals a single-time query at 0.5.

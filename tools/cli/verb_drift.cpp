@@ -45,7 +45,7 @@ int run_drift(const DriftArgs& a) {
     constexpr const char* verb = "drift";
     auto start = parse_start(a.start);
     if (!start) return fail(verb, start.error().message);
-    auto loaded = load_scene_option(a.scene);
+    auto loaded = load_scene_option(a.scene, OceanNeed::optional);
     if (!loaded) return fail(verb, loaded.error().message);
     const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater drift: warning: %s\n", w.c_str());

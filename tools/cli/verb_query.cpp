@@ -9,6 +9,7 @@
 #include "points_csv.hpp"
 #include "scene_option.hpp"
 #include "tidewater/query.hpp"
+#include "tidewater/world_query.hpp"
 #include "time_range.hpp"
 #include "verbs.hpp"
 
@@ -27,17 +28,19 @@ struct QueryArgs {
 };
 
 /// Appends CSV rows to `buffer`, handing it to `sink` whenever it grows large. Every
-/// column is the library's SurfacePoint as returned (depth and shore_distance at the
-/// query point, inf without a shore model).
+/// column is the library's WorldPoint as returned: the SurfacePoint (depth at the query
+/// point, from the shore model or else the terrain; shore_distance inf without a shore
+/// model), then the body's name and the current.
 template <typename Sink>
-void write_rows(std::string& buffer, const Sink& sink, const std::optional<double>& t, const std::vector<glm::dvec2>& points,
-                const std::vector<SurfacePoint>& results) {
+void write_rows(std::string& buffer, const Sink& sink, const Scene& scene, const std::optional<double>& t,
+                const std::vector<glm::dvec2>& points, const std::vector<WorldPoint>& results) {
     for (std::size_t i = 0; i < points.size(); ++i) {
-        const SurfacePoint& s = results[i];
+        const SurfacePoint& s = results[i].surface;
         if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
-        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g}\n",
+        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g},{},{:.6g},{:.6g}\n",
                        points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                       s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.shore_distance, s.wet ? 1 : 0, s.foam);
+                       s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.shore_distance, s.wet ? 1 : 0, s.foam,
+                       body_name(scene, results[i].body), results[i].flow.x, results[i].flow.y);
         if (buffer.size() > (1u << 20)) {
             sink(buffer);
             buffer.clear();
@@ -50,7 +53,7 @@ int run_query(const QueryArgs& a) {
     auto parsed_times = times_from_options(a.time, a.times);
     if (!parsed_times) return fail(verb, parsed_times.error().message);
     const std::vector<double> times = std::move(parsed_times).value();
-    auto loaded = load_scene_option(a.scene);
+    auto loaded = load_scene_option(a.scene, OceanNeed::optional);
     if (!loaded) return fail(verb, loaded.error().message);
     const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
@@ -74,21 +77,45 @@ int run_query(const QueryArgs& a) {
     std::string buffer;
     buffer.reserve(1u << 21);
     buffer += a.time ? "" : "t,";
-    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam\n";
+    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z\n";
 
-    auto backend = make_query_backend(a.backend, a.threads);
-    if (!backend) return fail(verb, backend.error().message);
-    std::vector<SurfacePoint> results(points->size());
+    const bool has_bodies = !scene->lakes.empty() || !scene->rivers.empty();
+    if (a.backend == "gpu" && has_bodies)
+        return fail(verb, "the gpu backend evaluates the ocean only; query a scene with lakes or rivers with --backend cpu");
+    // The CPU answers through query_world; the GPU backend replaces its surfaces.
+    std::optional<QueryBackend> gpu;
+    if (a.backend == "gpu") {
+        auto backend = make_query_backend(a.backend, a.threads);
+        if (!backend) return fail(verb, backend.error().message);
+        gpu = std::move(backend).value();
+    }
+    std::vector<WorldPoint> results(points->size());
+    std::vector<SurfacePoint> surfaces(gpu ? points->size() : 0);
+    const bool open_water = !scene->ocean.shore() && !has_bodies;
     std::size_t unconverged = 0;
     for (double t : times) {
-        if (auto st = (*backend)(scene->ocean, t, *points, results); !st) return fail(verb, st.error().message);
-        for (const SurfacePoint& s : results) {
-            if (s.converged) continue;
-            // Open water always converges; at the waterline the shore can fold the surface.
-            if (!scene->ocean.shore()) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
+        QueryOptions options;
+        options.threads = a.threads;
+        // The body, the current and (on the CPU) the surface of every point, in one query.
+        if (auto st = query_world(*scene, t, *points, results, options); !st) return fail(verb, st.error().message);
+        if (gpu) {
+            if (auto st = (*gpu)(scene->ocean, t, *points, surfaces); !st) return fail(verb, st.error().message);
+            for (std::size_t i = 0; i < surfaces.size(); ++i) {
+                const double depth = results[i].surface.depth;  // the terrain's, where the ocean has no shore model
+                results[i].surface = surfaces[i];
+                if (!scene->ocean.shore()) {
+                    results[i].surface.depth = depth;
+                    results[i].surface.wet = detail::surface_wet(surfaces[i].height, scene->water_level(), depth);
+                }
+            }
+        }
+        for (const WorldPoint& w : results) {
+            if (w.surface.converged) continue;
+            // Open water always converges; at the waterline a shore or a bank can fold the surface.
+            if (open_water) return fail(verb, fmt::format("the surface solve did not converge at t = {}", t));
             ++unconverged;
         }
-        write_rows(buffer, sink, a.time ? std::nullopt : std::optional<double>(t), *points, results);
+        write_rows(buffer, sink, *scene, a.time ? std::nullopt : std::optional<double>(t), *points, results);
     }
     sink(buffer);
     if (unconverged > 0) {
@@ -116,9 +143,11 @@ Verb add_query_verb(CLI::App& app) {
     cmd->add_option("--backend", args->backend, "cpu, or gpu (a Vulkan compute shader; same columns)")
         ->check(CLI::IsMember({"cpu", "gpu"}))
         ->capture_default_str();
-    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam\n"
-                "(SI units; height is world y; depth = level - terrain at the point and shore_distance (> 0 over\n"
-                "water) come from the shore model, inf without one; wet = 1 where the surface is above the terrain; foam 0..1).");
+    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z\n"
+                "(SI units; height is world y; velocity is the current plus the waves' orbital velocity; depth is the still\n"
+                "water column at the point (< 0 on land); shore_distance (> 0 over water) comes from the shore model, inf\n"
+                "without one; wet = 1 where the surface is above the terrain; foam 0..1; body is the water body's name, empty\n"
+                "on land; flow_x, flow_z are the current alone, m/s).");
     return {cmd, [args] { return run_query(*args); }};
 }
 
