@@ -13,6 +13,7 @@
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/drift.hpp"
+#include "tidewater/floating_body.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/world_query.hpp"
 
@@ -219,6 +220,22 @@ TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
     EXPECT_EQ(land.body.kind, BodyKind::none);
     EXPECT_NEAR(land.surface.height, scene->terrain.height_at({260.0, 0.0}), 1e-9) << "an inland scene's land is its terrain";
     EXPECT_FALSE(land.surface.wet);
+}
+
+TEST(WorldQuery, AFloatingBodyRidesTheRiverAndFeelsItsCurrent) {
+    const auto scene = bake_json(kReach);
+    FloatingBody barrel = FloatingBody::four_point(1.0, 1.0);
+    barrel.position = {0.0, 30.0};
+    auto att = hull_attitude(*scene, barrel, 4.0);
+    ASSERT_TRUE(att) << att.error().message;
+    const WorldPoint under = query_world_point(*scene, 4.0, barrel.position);
+    EXPECT_NEAR(att->heave, under.surface.height, 0.06) << "it floats on the river's surface, not the sea's";
+    EXPECT_NEAR(att->current.x, under.flow.x, 0.02);
+    EXPECT_GT(att->current.x, 0.3);
+    barrel.position = {2800.0, -300.0};
+    att = hull_attitude(*scene, barrel, 4.0);
+    ASSERT_TRUE(att);
+    EXPECT_EQ(att->current, glm::dvec2(0.0)) << "no current in the open sea";
 }
 
 TEST(WorldQuery, RefusesAnUnbakedSceneWithBodies) {

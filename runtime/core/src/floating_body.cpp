@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "tidewater/constants.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater {
 
@@ -13,7 +14,10 @@ FloatingBody FloatingBody::four_point(double length, double beam) {
     return b;
 }
 
-Result<HullAttitude> hull_attitude(const WaterBody& body, const FloatingBody& hull, double time) {
+namespace {
+
+/// The hull points in world xz, or an error naming a bad one.
+Result<std::vector<glm::dvec2>> hull_world_points(const FloatingBody& hull) {
     const std::size_t n = hull.hull_points.size();
     if (n < 3) {
         return Error{ErrorCode::invalid_argument,
@@ -30,9 +34,12 @@ Result<HullAttitude> hull_attitude(const WaterBody& body, const FloatingBody& hu
         }
         world[i] = hull.position + b.x * forward + b.y * starboard;
     }
-    std::vector<double> heights(n);
-    if (auto st = query_heights(body, time, world, heights); !st) return st.error();
+    return world;
+}
 
+/// The plane through the surface heights under the hull points.
+Result<HullAttitude> fit_attitude(const FloatingBody& hull, const std::vector<double>& heights) {
+    const std::size_t n = hull.hull_points.size();
     // Least squares for y = h + a*x + b*z in the body frame: 3x3 normal equations.
     double sxx = 0, sxz = 0, szz = 0, sx = 0, sz = 0, sy = 0, sxy = 0, szy = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -61,6 +68,32 @@ Result<HullAttitude> hull_attitude(const WaterBody& body, const FloatingBody& hu
     att.heave = sol[0];
     att.pitch = std::atan(sol[1]);   // bow (+x) higher -> positive pitch
     att.roll = std::atan(-sol[2]);   // starboard (+z) lower -> positive roll
+    return att;
+}
+
+}  // namespace
+
+Result<HullAttitude> hull_attitude(const WaterBody& body, const FloatingBody& hull, double time) {
+    auto world = hull_world_points(hull);
+    if (!world) return world.error();
+    std::vector<double> heights(world->size());
+    if (auto st = query_heights(body, time, *world, heights); !st) return st.error();
+    return fit_attitude(hull, heights);
+}
+
+Result<HullAttitude> hull_attitude(const Scene& scene, const FloatingBody& hull, double time) {
+    auto world = hull_world_points(hull);
+    if (!world) return world.error();
+    std::vector<WorldPoint> water(world->size());
+    if (auto st = query_world(scene, time, *world, water); !st) return st.error();
+    std::vector<double> heights(world->size());
+    glm::dvec2 current{0.0};
+    for (std::size_t i = 0; i < water.size(); ++i) {
+        heights[i] = water[i].surface.height;
+        current += water[i].flow;
+    }
+    auto att = fit_attitude(hull, heights);
+    if (att) att->current = current / static_cast<double>(water.size());
     return att;
 }
 

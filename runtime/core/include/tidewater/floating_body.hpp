@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
+#include "tidewater/scene.hpp"
 
 namespace tidewater {
 
@@ -21,6 +22,9 @@ struct HullAttitude {
     double heave = 0.0;  ///< World y of the fitted plane under the body origin, m.
     double pitch = 0.0;  ///< Bow-up rotation about the body's z axis, rad.
     double roll = 0.0;   ///< Starboard-down rotation about the body's x axis, rad.
+    /// The mean current under the hull points (rivers and their plumes), m/s: what carries
+    /// the body along. 0 from the WaterBody overload, which knows no currents.
+    glm::dvec2 current{0.0};
 };
 
 struct FloatingBody {
@@ -33,5 +37,10 @@ struct FloatingBody {
 };
 
 Result<HullAttitude> hull_attitude(const WaterBody& body, const FloatingBody& hull, double time);
+
+/// The same over a whole scene (query_world): the hull rides whichever body it is in (a
+/// river's falling surface, a lake) and reports the current it feels. A scene with lakes
+/// or rivers must be baked.
+Result<HullAttitude> hull_attitude(const Scene& scene, const FloatingBody& hull, double time);
 
 }  // namespace tidewater
