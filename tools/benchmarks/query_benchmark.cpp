@@ -1,6 +1,7 @@
 // Google Benchmark: Eulerian height queries (SIMD Newton) against the seed
 // project's fixed-point loop, and the full surface query, for 8/32/64 waves; and
-// the harbour frame near the default island's shore (100 boats, 4 hull corners each).
+// the harbour frame near the default island's shore (100 boats, 4 hull corners each);
+// whole-scene queries in a river's channel and at its mouth.
 // Run: build/bin/tidewater_query_benchmark [--benchmark_filter=...]
 // `tidewater bench` measures the same with accuracy figures, as JSON.
 #include <benchmark/benchmark.h>
@@ -108,7 +109,37 @@ void BM_ShoreHarbour(benchmark::State& state) {
     state.SetLabel(full ? "surface" : "heights");
 }
 
+/// 4096 points scattered over a 24 m river's channel (and, with Arg 1, its mouth and the
+/// sea beside it), queried through query_world: body lookup, river surface, waves riding
+/// the current, the blend into still water.
+void BM_RiverWorld(benchmark::State& state) {
+    static const auto scene = [] {
+        auto parsed = parse_scene(R"({ "version": 1, "name": "reach", "water_level": 0.0, "shore": { "enabled": false },
+          "terrain": { "plane": { "height": 10.0, "slope": [-0.004, 0.0] } }, "ocean": "ocean_rolling",
+          "rivers": [ { "name": "reach", "path": [[-2000, 30], [2900, 30]], "width": 24, "discharge": 40.0 } ] })",
+                                  "benchmark");
+        return bake_scene(parsed.value()).value();
+    }();
+    const bool mouth = state.range(0) != 0;
+    std::mt19937_64 rng(11);
+    std::vector<glm::dvec2> pts(kPoints);
+    for (auto& p : pts) {
+        const double u = static_cast<double>(rng() % 1000000) * 1e-6, v = static_cast<double>(rng() % 1000000) * 1e-6;
+        p = mouth ? glm::dvec2(2460.0 + 120.0 * u, 30.0 + 40.0 * (v - 0.5)) : glm::dvec2(-1800.0 + 4000.0 * u, 30.0 + 20.0 * (v - 0.5));
+    }
+    std::vector<WorldPoint> out(pts.size());
+    double t = kTime;
+    for (auto _ : state) {
+        t += 1.0 / 60.0;
+        benchmark::DoNotOptimize(query_world(*scene, t, pts, out).ok());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+    state.SetLabel(mouth ? "mouth" : "channel");
+}
+
 BENCHMARK(BM_ShoreHarbour)->Arg(0)->Arg(1);
+BENCHMARK(BM_RiverWorld)->Arg(0)->Arg(1);
 BENCHMARK(BM_NewtonHeights)->Arg(8)->Arg(32)->Arg(64);
 BENCHMARK(BM_NewtonSurface)->Arg(8)->Arg(32)->Arg(64);
 BENCHMARK(BM_FixedPointReference)->Arg(8)->Arg(32)->Arg(64);
