@@ -31,20 +31,8 @@ struct Group {
 
 Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies, const detail::EvaluationKey& key,
                        double time, Group& group, const QueryOptions& options) {
-    const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
-    const detail::RiverBake& baked = bodies.rivers[static_cast<std::size_t>(key.river)];
-    const auto river_waves = detail::prepare_river_waves<float>(river.body.waves(), river.body.local_time(time),
-                                                                baked.mouth_level, baked.mean_speed);
-    detail::RiverInput<float> in;
-    in.river = &baked;
-    in.river_waves = &river_waves;
-    detail::PreparedWaves<float> still_waves;
-    if (key.plume) {
-        const WaterBody& still = detail::still_body(scene, baked);
-        still_waves = detail::prepare_waves<float>(still.waves(), still.local_time(time), still.level());
-        in.still_waves = &still_waves;
-        if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
-    }
+    detail::PreparedWaves<float> river_waves, still_waves;
+    const detail::RiverInput<float> in = detail::prepare_river_input<float>(scene, bodies, key, time, river_waves, still_waves);
     const detail::RiverSolveFn solve = detail::query_kernel().solve_river;
     detail::parallel_chunks(group.points.size(), kRiverPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
         solve(in, group.points.data() + begin, end - begin, group.results.data() + begin);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/scene_bake.hpp"
 
 namespace tidewater::detail {
@@ -72,5 +73,28 @@ const WaterBody& still_body(const Scene& scene, const RiverBake& river) {
     if (river.end == RiverEnd::lake) return scene.lakes[static_cast<std::size_t>(river.receiver)].body;
     return scene.ocean;
 }
+
+template <typename Scalar>
+RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake& bodies, const EvaluationKey& key, double time,
+                                       PreparedWaves<Scalar>& river_waves, PreparedWaves<Scalar>& still_waves) {
+    const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
+    const RiverBake& baked = bodies.rivers[static_cast<std::size_t>(key.river)];
+    river_waves = prepare_river_waves<Scalar>(river.body.waves(), river.body.local_time(time), baked.mouth_level, baked.mean_speed);
+    RiverInput<Scalar> in;
+    in.river = &baked;
+    in.river_waves = &river_waves;
+    if (key.plume) {
+        const WaterBody& still = still_body(scene, baked);
+        still_waves = prepare_waves<Scalar>(still.waves(), still.local_time(time), still.level());
+        in.still_waves = &still_waves;
+        if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
+    }
+    return in;
+}
+
+template RiverInput<float> prepare_river_input<float>(const Scene&, const WaterBodiesBake&, const EvaluationKey&, double,
+                                                      PreparedWaves<float>&, PreparedWaves<float>&);
+template RiverInput<double> prepare_river_input<double>(const Scene&, const WaterBodiesBake&, const EvaluationKey&, double,
+                                                        PreparedWaves<double>&, PreparedWaves<double>&);
 
 }  // namespace tidewater::detail

@@ -11,6 +11,8 @@
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/world_query.hpp"
+#include "kernel/kernel_waves.hpp"
+#include "water/prepared_waves.hpp"
 
 namespace tidewater::detail {
 
@@ -59,5 +61,12 @@ void settle_on_terrain(SurfacePoint& point, const PointBody& at, double level);
 
 /// The still body a river's plume runs into (a lake or the ocean).
 const WaterBody& still_body(const Scene& scene, const RiverBake& river);
+
+/// What a river evaluation (key.kind == river) needs at clock time `time`: the river's
+/// waves prepared in its channel frame and, for a plume or mouth, the still water's.
+/// The input points into `river_waves` and `still_waves`, which must outlive it.
+template <typename Scalar>
+RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake& bodies, const EvaluationKey& key, double time,
+                                       PreparedWaves<Scalar>& river_waves, PreparedWaves<Scalar>& still_waves);
 
 }  // namespace tidewater::detail

@@ -73,20 +73,8 @@ WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) 
             break;
         }
         case detail::EvaluationKind::river: {
-            const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
-            const detail::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];
-            const auto river_waves = detail::prepare_river_waves<double>(river.body.waves(), river.body.local_time(time),
-                                                                         baked.mouth_level, baked.mean_speed);
-            detail::RiverInput<double> in;
-            in.river = &baked;
-            in.river_waves = &river_waves;
-            detail::PreparedWaves<double> still_waves;
-            if (key.plume) {
-                const WaterBody& still = detail::still_body(scene, baked);
-                still_waves = detail::prepare_waves<double>(still.waves(), still.local_time(time), still.level());
-                in.still_waves = &still_waves;
-                if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
-            }
+            detail::PreparedWaves<double> river_waves, still_waves;
+            const auto in = detail::prepare_river_input<double>(scene, *bodies, key, time, river_waves, still_waves);
             detail::solve_river_batch<double>(in, &point, 1, &out.surface);
             break;
         }
