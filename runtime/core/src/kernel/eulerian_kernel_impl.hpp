@@ -21,6 +21,7 @@
 #include "kernel/kernel_waves.hpp"
 #include "water/newton.hpp"
 #include "water/open_sea_water.hpp"
+#include "water/point_lanes.hpp"
 #include "water/river_solve.hpp"
 #include "water/shore_water.hpp"
 
@@ -104,55 +105,30 @@ namespace tidewater::detail::TIDEWATER_KERNEL_NS {
 using Ops = NumberOps<FloatBatch>;
 inline constexpr std::size_t kLanes = Ops::kLanes;
 
-template <typename V>
-void store(const FloatBatch& b, V* lanes) {
-    alignas(64) float tmp[kLanes];
-    b.store_aligned(tmp);
-    for (std::size_t l = 0; l < kLanes; ++l) lanes[l] = static_cast<V>(tmp[l]);
-}
-
 template <bool kFull>
 void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, const ShoreWater<FloatBatch>* shore,
                    std::size_t used, SurfacePoint* full, double* heights) {
-    const PointState<FloatBatch> p = point_state(r);
-    double height[kLanes];
-    store(p.eta, height);
     if constexpr (!kFull) {
-        for (std::size_t l = 0; l < used; ++l) heights[l] = in.waves->level + height[l];
+        double eta[kLanes];
+        store_lanes(point_state(r).eta, eta);
+        for (std::size_t l = 0; l < used; ++l) heights[l] = in.waves->level + eta[l];
         (void)shore;
         (void)full;
     } else {
-        double nx[kLanes], ny[kLanes], nz[kLanes], vx[kLanes], vy[kLanes], vz[kLanes], jac[kLanes], dx[kLanes], dz[kLanes];
-        double it[kLanes], conv[kLanes], depth[kLanes], breaking[kLanes], distance[kLanes];
-        store(p.nx, nx);
-        store(p.ny, ny);
-        store(p.nz, nz);
-        store(r.sums.vx, vx);
-        store(r.sums.vy, vy);
-        store(r.sums.vz, vz);
-        store(p.jacobian, jac);
-        store(p.disp_x, dx);
-        store(p.disp_z, dz);
-        store(r.iterations, it);
-        store(r.converged, conv);
+        const PointLanes<FloatBatch> lanes(r);
+        double depth[kLanes], breaking[kLanes], distance[kLanes];
         if (shore) {
-            store(shore->depth_at_point, depth);
-            store(shore->breaking, breaking);
-            store(shore->shore_distance_at_point, distance);
+            store_lanes(shore->depth_at_point, depth);
+            store_lanes(shore->breaking, breaking);
+            store_lanes(shore->shore_distance_at_point, distance);
         }
         for (std::size_t l = 0; l < used; ++l) {
             SurfacePoint& o = full[l];
-            o.height = in.waves->level + height[l];
-            o.normal = {nx[l], ny[l], nz[l]};
-            o.displacement = {dx[l], dz[l]};
-            o.velocity = {vx[l], vy[l], vz[l]};
-            o.jacobian = jac[l];
-            o.iterations = static_cast<int>(it[l]);
-            o.converged = conv[l] != 0.0;
+            lanes.fill(l, in.waves->level, o);
             o.depth = shore ? depth[l] : kDeepWater;
             o.shore_distance = shore ? distance[l] : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
-            o.foam = surface_foam(shore ? breaking[l] : 0.0, jac[l]);
+            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l]);
         }
     }
 }

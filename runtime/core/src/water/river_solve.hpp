@@ -17,6 +17,7 @@
 #include "tidewater/query.hpp"
 #include "water/newton.hpp"
 #include "water/open_sea_water.hpp"
+#include "water/point_lanes.hpp"
 #include "water/prepared_waves.hpp"
 #include "water/river_water.hpp"
 #include "water/shore_water.hpp"
@@ -25,47 +26,20 @@ namespace tidewater::detail {
 
 namespace river_solve_impl {
 
-template <typename T, typename V>
-void store_lanes(const T& b, V* lanes) {
-    using Ops = NumberOps<T>;
-    alignas(64) typename Ops::Scalar tmp[Ops::kLanes];
-    Ops::store(b, tmp);
-    for (std::size_t l = 0; l < Ops::kLanes; ++l) lanes[l] = static_cast<V>(tmp[l]);
-}
-
-/// Writes the first `used` lanes of a solve.
+/// Writes the first `used` lanes of a solve: the surface, with the river's current at
+/// each point added to the orbital velocity.
 template <typename T>
 void write_points(const NewtonResult<T>& r, double level, const RiverSample* at, const double* breaking,
                   const double* shore_distance, std::size_t used, SurfacePoint* out) {
-    constexpr std::size_t kLanes = NumberOps<T>::kLanes;
-    const PointState<T> p = point_state(r);
-    double eta[kLanes], nx[kLanes], ny[kLanes], nz[kLanes], vx[kLanes], vy[kLanes], vz[kLanes], jac[kLanes];
-    double dx[kLanes], dz[kLanes], it[kLanes], conv[kLanes];
-    store_lanes(p.eta, eta);
-    store_lanes(p.nx, nx);
-    store_lanes(p.ny, ny);
-    store_lanes(p.nz, nz);
-    store_lanes(r.sums.vx, vx);
-    store_lanes(r.sums.vy, vy);
-    store_lanes(r.sums.vz, vz);
-    store_lanes(p.jacobian, jac);
-    store_lanes(p.disp_x, dx);
-    store_lanes(p.disp_z, dz);
-    store_lanes(r.iterations, it);
-    store_lanes(r.converged, conv);
+    const PointLanes<T> lanes(r);
     for (std::size_t l = 0; l < used; ++l) {
         SurfacePoint& o = out[l];
-        o.height = level + eta[l];
-        o.normal = {nx[l], ny[l], nz[l]};
-        o.displacement = {dx[l], dz[l]};
-        o.velocity = {vx[l] + at[l].flow_x, vy[l], vz[l] + at[l].flow_z};
-        o.jacobian = jac[l];
-        o.iterations = static_cast<int>(it[l]);
-        o.converged = conv[l] != 0.0;
+        lanes.fill(l, level, o);
+        o.velocity += glm::dvec3(at[l].flow_x, 0.0, at[l].flow_z);
         o.depth = at[l].depth;
         o.shore_distance = shore_distance ? shore_distance[l] : kDeepWater;
         o.wet = surface_wet(o.height, at[l].surface, at[l].depth);
-        o.foam = surface_foam(breaking ? breaking[l] : 0.0, jac[l]);
+        o.foam = surface_foam(breaking ? breaking[l] : 0.0, lanes.jacobian[l]);
     }
 }
 
@@ -105,8 +79,8 @@ void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, cons
         PlumeWater<T, ShoreWater<T>> water(river, still);
         const auto r = solve_rest_offset<true, T>(water, tolerance, radius);
         double breaking[kLanes], distance[kLanes];
-        river_solve_impl::store_lanes(still.breaking, breaking);
-        river_solve_impl::store_lanes(still.shore_distance_at_point, distance);
+        store_lanes(still.breaking, breaking);
+        store_lanes(still.shore_distance_at_point, distance);
         river_solve_impl::write_points(r, in.still_waves->level, at, breaking, distance, used, out);
     } else {
         OpenSeaWater<T> still(*in.still_waves, still_base);
