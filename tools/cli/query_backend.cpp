@@ -9,16 +9,7 @@
 
 namespace tidewater::cli {
 
-Result<QueryBackend> make_query_backend(const std::string& name, unsigned threads) {
-    if (name == "cpu") {
-        return QueryBackend([threads](const WaterBody& body, double t, std::span<const glm::dvec2> pts,
-                                      std::span<SurfacePoint> out) {
-            QueryOptions options;
-            options.threads = threads;
-            return query_surface(body, t, pts, out, options);
-        });
-    }
-    if (name != "gpu") return Error{ErrorCode::invalid_argument, "--backend: expected cpu or gpu, got " + name};
+Result<QueryBackend> make_gpu_query_backend() {
 #if defined(TIDEWATER_HAVE_RENDER)
     auto device = render::StandaloneDevice::create();
     if (!device) return device.error();

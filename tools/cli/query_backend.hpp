@@ -1,5 +1,6 @@
-// The engine behind `tidewater query --backend`: the CPU kernel, or the GPU
-// compute shader on a standalone Vulkan device when the renderer is built.
+// The engine behind `tidewater query --backend gpu`: the GPU compute shader on a
+// standalone Vulkan device when the renderer is built (the CPU answers through
+// query_world).
 #pragma once
 
 #include <functional>
@@ -12,6 +13,6 @@ namespace tidewater::cli {
 
 using QueryBackend = std::function<Status(const WaterBody&, double, std::span<const glm::dvec2>, std::span<SurfacePoint>)>;
 
-Result<QueryBackend> make_query_backend(const std::string& name, unsigned threads);
+Result<QueryBackend> make_gpu_query_backend();
 
 }  // namespace tidewater::cli

@@ -85,7 +85,7 @@ int run_query(const QueryArgs& a) {
     // The CPU answers through query_world; the GPU backend replaces its surfaces.
     std::optional<QueryBackend> gpu;
     if (a.backend == "gpu") {
-        auto backend = make_query_backend(a.backend, a.threads);
+        auto backend = make_gpu_query_backend();
         if (!backend) return fail(verb, backend.error().message);
         gpu = std::move(backend).value();
     }

@@ -15,13 +15,15 @@ PointBody BodyFinder::find(glm::dvec2 p) const {
             if (!river.grid.contains(p)) continue;
             int i = 0, j = 0;
             river.grid.texel_of(p, i, j);
-            const auto texel = static_cast<RiverTexel>(river.texel[river.grid.index(i, j)]);
+            const std::uint8_t texel = river.texel[river.grid.index(i, j)];
             const int index = static_cast<int>(r);
-            if (texel == RiverTexel::river || texel == RiverTexel::mouth) {
+            if (river_water(texel)) {
+                // Mouth texels blend with the still water: the plume's evaluation answers them.
+                const bool blends = texel == static_cast<std::uint8_t>(RiverTexel::mouth);
                 const RiverSample at = sample_river(river, p);
-                return {{BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, texel == RiverTexel::mouth)};
+                return {{BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, blends)};
             }
-            if (texel == RiverTexel::plume && plume_river < 0) plume_river = index;
+            if (texel == static_cast<std::uint8_t>(RiverTexel::plume) && plume_river < 0) plume_river = index;
         }
     }
     if (plume_river >= 0) {
