@@ -51,6 +51,13 @@ TW_CONST uint kRiverQueryTangentZ = 3u;
 TW_CONST uint kRiverQueryWaveWeight = 4u;
 TW_CONST uint kRiverQueryStillWeight = 5u;
 
+// Flow-mapped detail (tidewater::flow_detail, shaders/flow_detail.glsl): the noise
+// lattice repeats every kFlowNoisePeriod cells; the per-texel time offset is a noise
+// kFlowOffsetScale times as fine as the detail's, seeded kFlowStaggerSeed above it.
+TW_CONST float kFlowNoisePeriod = 256.0f;
+TW_CONST float kFlowOffsetScale = 0.25f;
+TW_CONST uint kFlowStaggerSeed = 101u;
+
 // Crest foam from the horizontal map folding: 0 above a Jacobian of kFoamJacobianStart,
 // 1 at kFoamJacobianStart - kFoamJacobianWidth, smoothstep between.
 TW_CONST float kFoamJacobianStart = 0.75f;
@@ -61,6 +68,14 @@ TW_CONST float kFoamJacobianWidth = 0.4f;
 struct GpuWave {
     vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
     vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame), w: wavelength (m)
+};
+
+// One river wave in the river's channel frame. Its phase at a point is
+// k_s s + k_n n + omega_phase.y, with (s, n) the channel coordinates there and the
+// offset (phase minus the Doppler-shifted omega t) reduced in double on the host.
+struct GpuRiverWave {
+    vec4 k_amp;        // x: k_s (rad/m, downstream), y: k_n (rad/m, left), z: amplitude (m), w: steepness Q
+    vec4 omega_phase;  // x: omega (rad/s), y: phase offset at the time (rad, in [-pi, pi)), zw: unused
 };
 
 // A query point, relative to the origin of its phase cell.
@@ -75,7 +90,9 @@ struct GpuQueryResult {
     vec4 height_normal;  // x: eta (m, without the water level), yzw: unit normal
     vec4 velocity_jac;   // xyz: particle velocity (m/s), w: Jacobian determinant
     vec4 disp_iter;      // xy: horizontal displacement (m), z: Newton evaluations, w: 1 if converged
-    vec4 shore;          // x: depth (m), y: shore distance (m), both at the query point; z: breaking at the rest position; w: unused
+    vec4 shore;          // x: depth (m), y: shore distance (m), both at the query point; z: breaking at the rest position;
+                         // w: river mode: the still river surface at the point, m above the mouth level
+    vec4 flow;           // xy: the river current at the query point (m/s, 0 outside rivers); zw: its flow-detail slope
 };
 
 // Debug views (GpuFrame.params.w).
@@ -107,14 +124,32 @@ struct GpuFrame {
     vec4 shore_rect;         // xy: shore grid corner relative to O (m); z: texel (m); w: resolution (0 = no shore)
 };
 
+// A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
+// its FlowDetailClock).
+struct GpuFlowDetail {
+    vec4 params;  // x: tiling (1/m), y: speed, z: strength (0 = off), w: offset
+    vec4 clock;   // x: period (s), y: frac(t / period), zw: jump per cycle (noise cells)
+    vec4 jump;    // xy: floor(t / period) * jump mod kFlowNoisePeriod (cells); z: seed; w: unused
+    vec4 origin;  // xy: world xz of the positions' zero, reduced modulo kFlowNoisePeriod / (tiling * kFlowOffsetScale) m
+};
+
+// What one GPU query dispatch solves. Still water (a body's waves, with its shore
+// fields when shore_resolution > 0) is evaluated at cell_origin + local; in river mode
+// (river_wave_count > 0 or river_size.x > 0) cell origins are relative to the river
+// grid's corner, the river's water is evaluated there, and the still water's waves
+// join it with the river's still weight when `still` is 1 (a mouth or plume).
 struct GpuQueryParams {
-    uint wave_count;
+    uint wave_count;        // the still water's waves
     uint point_count;
-    float max_offset;    // sum(Q*A): how far a rest position can lie from its point, m
-    float pad2;
+    float max_offset;       // sum(Q*A) of every wave that can move the point: how far a rest position can lie from it, m
+    uint river_wave_count;
     uint shore_resolution;  // texels per side of the shore fields; 0 = open water
     float shore_texel;      // m
-    float pad0, pad1;
+    vec2 shore_offset;      // the shore grid's corner seen from the cell origins' zero, m (subtracted)
+    uint river_nx, river_nz;  // the river grid; 0 = no river (plain still water)
+    float river_texel;      // m
+    float still;            // 1: the still water's waves join the river's (mouth, plume); 0: not
+    GpuFlowDetail flow;     // the river preset's flow detail (strength 0: none)
 };
 
 // The shore fields (tidewater::ShoreWaves), as storage buffers read with the
@@ -128,8 +163,10 @@ struct GpuShoreTexel {
 #ifdef __cplusplus
 static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
-static_assert(sizeof(GpuQueryResult) == 64);
-static_assert(sizeof(GpuQueryParams) == 32);
+static_assert(sizeof(GpuRiverWave) == 32);
+static_assert(sizeof(GpuQueryResult) == 80);
+static_assert(sizeof(GpuQueryParams) == 112);
+static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuFrame) == 2 * 64 + 10 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST

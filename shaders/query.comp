@@ -1,7 +1,9 @@
 #version 450
 // GPU surface queries: one point per invocation, the Eulerian solve of
-// water_point.glsl over the body's waves (water_body.glsl). Phases arrive reduced
-// per phase cell, so float keeps micro-radian accuracy anywhere in the world.
+// water_point.glsl over one evaluation of the water: a body's still water
+// (water_body.glsl, with its shore fields), or a river (river_water.glsl) with the
+// still water it runs into fading in at its mouth. Phases arrive reduced per phase
+// cell, so float keeps micro-radian accuracy anywhere in the world.
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 
@@ -11,38 +13,78 @@ layout(std430, set = 0, binding = 0) readonly buffer Waves { GpuWave waves[]; };
 layout(std430, set = 0, binding = 1) readonly buffer BasePhases { float base_phase[]; };  // [cell * wave_count + i]
 layout(std430, set = 0, binding = 2) readonly buffer Points { GpuQueryPoint points[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Results { GpuQueryResult results[]; };
-// Shore fields; cell origins relative to the shore grid's corner (m).
+// Shore fields; cell origins relative to the shore grid's corner plus params.shore_offset (m).
 layout(std430, set = 0, binding = 4) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // [wave * texels + texel]
 layout(std430, set = 0, binding = 5) readonly buffer ShoreShared { vec4 shore_shared[]; };     // [texel]
 layout(std430, set = 0, binding = 6) readonly buffer CellOrigins { vec2 cell_origin[]; };
+// A river: its query texels, its channel coordinates and current per texel, its waves.
+layout(std430, set = 0, binding = 7) readonly buffer RiverTexels { float river_texels[]; };
+layout(std430, set = 0, binding = 8) readonly buffer RiverChannel { vec4 river_channel[]; };   // s, n (m), flow x, z (m/s)
+layout(std430, set = 0, binding = 9) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
 #define SHORE_RESOLUTION params.shore_resolution
 #define SHORE_TEXEL params.shore_texel
 #define WAVE_COUNT params.wave_count
 #define WAVE_BASE_PHASE(i) base_phase[g_point.cell * params.wave_count + (i)]
+#define RIVER_NX params.river_nx
+#define RIVER_NZ params.river_nz
+#define RIVER_TEXEL params.river_texel
+#define RIVER_FIRST_TEXEL 0u
+#define RIVER_FIRST_WAVE 0u
+#define RIVER_WAVE_COUNT params.river_wave_count
+#define RIVER_BASE_PHASE(i) fma(river_waves[i].k_amp.x, g_channel.x, fma(river_waves[i].k_amp.y, g_channel.y, river_waves[i].omega_phase.y))
 #define TW_WATER_NEWTON
 GpuQueryPoint g_point;
+vec4 g_channel;  // the query point's channel coordinates and current (river mode)
+#include "noise.glsl"
 #include "shore_fields.glsl"
 #include "water_point.glsl"
 #include "water_body.glsl"
+#include "river_water.glsl"
+#include "flow_detail.glsl"
+
+bool river_mode() { return params.river_nx > 0u; }
+
+// The still water's sums at rest offset e (its shore fields when it has them).
+SurfaceSums still_water_at(vec2 e) {
+    vec2 at = cell_origin[g_point.cell] + g_point.local + e;
+    return water_at(g_point.local + e, at - params.shore_offset, params.shore_resolution > 0u, 0.0);
+}
 
 SurfaceSums water_at_offset(vec2 e) {
-    return water_at(g_point.local + e, cell_origin[g_point.cell] + g_point.local + e, params.shore_resolution > 0u, 0.0);
+    if (!river_mode()) return still_water_at(e);
+    SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, 0.0);
+    if (params.still > 0.5) add_scaled(s, still_water_at(e), g_river_still_weight);
+    return s;
+}
+
+// Bilinear channel fields at a point relative to the river grid's corner.
+vec4 channel_at(vec2 rel) {
+    RiverTap t = river_tap(rel);
+    return t.w.x * river_channel[t.k00] + t.w.y * river_channel[t.k10] + t.w.z * river_channel[t.k01] + t.w.w * river_channel[t.k11];
 }
 
 void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= params.point_count) return;
     g_point = points[id];
+    vec2 at = cell_origin[g_point.cell] + g_point.local;
     // Depth and shore distance belong to the query point itself (rest offset 0).
-    vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(cell_origin[g_point.cell] + g_point.local)) : kOpenWaterShore;
+    vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(at - params.shore_offset)) : kOpenWaterShore;
+    g_channel = river_mode() ? channel_at(at) : vec4(0.0);
     NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset));
     GpuQueryResult r;
     // First-order carry to the final step, as on the CPU.
     r.height_normal = vec4(n.sums.eta + dot(n.sums.slope, n.step_e), surface_normal(n.sums));
-    r.velocity_jac = vec4(n.sums.velocity, surface_jacobian(n.sums));
+    // The river's current joins the particles' orbital velocity.
+    r.velocity_jac = vec4(n.sums.velocity + vec3(g_channel.z, 0.0, g_channel.w), surface_jacobian(n.sums));
     r.disp_iter = vec4(-(n.e + n.step_e), n.iterations, n.converged);
-    r.shore = vec4(at_point.x, at_point.w, g_shore_fields.y, 0.0);
+    float depth = at_point.x;
+    if (river_mode()) depth = river_field(river_tap(at), kRiverQueryDepth);
+    float still_surface = river_mode() ? river_field(river_tap(at), kRiverQuerySurface) : 0.0;
+    r.shore = vec4(depth, at_point.w, g_shore_fields.y, still_surface);
+    vec2 detail = params.flow.params.z > 0.0 && river_mode() ? flow_detail_slope(at, g_channel.zw, params.flow) : vec2(0.0);
+    r.flow = vec4(g_channel.zw, detail);
     results[id] = r;
 }

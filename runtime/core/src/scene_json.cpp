@@ -106,6 +106,22 @@ Status read_ripples(const ObjectReader& parent, RippleSpec& s) {
     return validate(s, r->context());
 }
 
+Status read_flow_detail(const ObjectReader& parent, FlowDetailSpec& s) {
+    auto r = ObjectReader::open(parent.at("flow"), parent.source(), parent.child_path("flow"));
+    if (!r) return r.error();
+    if (auto st = r->allow_only({"tiling", "speed", "strength", "offset", "period", "jump", "seed"}); !st) return st;
+    std::int64_t seed = s.seed;
+    if (auto st = r->number("tiling", s.tiling); !st) return st;
+    if (auto st = r->number("speed", s.speed); !st) return st;
+    if (auto st = r->number("strength", s.strength); !st) return st;
+    if (auto st = r->number("offset", s.offset); !st) return st;
+    if (auto st = r->number("period", s.period); !st) return st;
+    if (auto st = read_pair(*r, "jump", s.jump, false, 0.5); !st) return st;
+    if (auto st = r->integer("seed", seed, 0, 65535); !st) return st;
+    s.seed = static_cast<std::uint32_t>(seed);
+    return validate(s, r->context());
+}
+
 Status read_fold_policy(const ObjectReader& r, FoldPolicy& policy) {
     if (!r.has("fold_policy")) return {};
     std::string text;
@@ -146,6 +162,9 @@ Status read_profile_settings(const ObjectReader& r, WaterProfile& p) {
     if (auto st = r.string("description", p.description); !st) return st;
     if (r.has("ripples")) {
         if (auto st = read_ripples(r, p.ripples); !st) return st;
+    }
+    if (r.has("flow")) {
+        if (auto st = read_flow_detail(r, p.flow); !st) return st;
     }
     if (auto st = read_fold_policy(r, p.fold_policy); !st) return st;
     return r.number("time_offset", p.time_offset);
@@ -290,7 +309,7 @@ Result<WaterProfile> read_water_profile(const json& value, const std::string& so
     if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
-    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "fold_policy", "time_offset", "name",
+    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset", "name",
                                  "description"});
         !st)
         return st.error();
@@ -341,7 +360,7 @@ Result<WaterProfile> parse_preset(std::string_view json_text, const std::string&
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "waves", "spectrum", "ripples", "fold_policy",
+    if (auto st = r->allow_only({"version", "name", "description", "waves", "spectrum", "ripples", "flow", "fold_policy",
                                  "time_offset"});
         !st)
         return st.error();

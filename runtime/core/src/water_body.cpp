@@ -21,6 +21,7 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     auto waves = WaveSet::create(profile.waves, profile.fold_policy, context + "/waves", warnings);
     if (!waves) return std::move(waves).error();
     if (auto st = validate(profile.ripples, context + "/ripples"); !st) return st.error();
+    if (auto st = validate(profile.flow, context + "/flow"); !st) return st.error();
     WaterBody body;
     body.profile_ = profile;
     body.waves_ = std::move(waves).value();

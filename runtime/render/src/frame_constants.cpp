@@ -116,4 +116,18 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     return plan;
 }
 
+gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero) {
+    const FlowDetailClock clock = flow_detail_clock(spec, local_time);
+    // Both noises repeat over the coarser one's period: reduce the zero modulo it.
+    const double period = static_cast<double>(gpu::kFlowNoisePeriod) / (spec.tiling * static_cast<double>(gpu::kFlowOffsetScale));
+    gpu::GpuFlowDetail d{};
+    d.params = glm::vec4(static_cast<float>(spec.tiling), static_cast<float>(spec.speed), static_cast<float>(spec.strength),
+                         static_cast<float>(spec.offset));
+    d.clock = glm::vec4(static_cast<float>(spec.period), static_cast<float>(clock.cycle_fraction), static_cast<float>(spec.jump.x),
+                        static_cast<float>(spec.jump.y));
+    d.jump = glm::vec4(static_cast<float>(clock.jump_base.x), static_cast<float>(clock.jump_base.y), static_cast<float>(spec.seed), 0.0f);
+    d.origin = glm::vec4(static_cast<float>(positive_mod(zero.x, period)), static_cast<float>(positive_mod(zero.y, period)), 0.0f, 0.0f);
+    return d;
+}
+
 }  // namespace tidewater::render::detail

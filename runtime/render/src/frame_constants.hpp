@@ -31,6 +31,10 @@ glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_pla
 
 Status validate_camera(const Camera& camera);
 
+/// A body's flow-detail settings at clock time `local_time` for shaders whose positions
+/// are relative to world xz `zero` (the render origin, or a river grid's corner).
+gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero);
+
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
                      const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy);
 

@@ -3,8 +3,14 @@
 #include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
+#include <tuple>
+#include <vector>
 
 #include "embedded_shaders.hpp"
+#include "frame_constants.hpp"
+#include "tidewater/detail/body_finder.hpp"
+#include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/scene_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
@@ -17,7 +23,14 @@ namespace tidewater::render {
 using detail::GpuBuffer;
 
 namespace {
-constexpr std::uint32_t kBindings = 7;  // see shaders/query.comp
+constexpr std::uint32_t kBindings = 10;  // see shaders/query.comp
+
+/// A river evaluation: the river, its preset, and whether still water joins it.
+struct RiverDispatch {
+    const tidewater::detail::RiverBake* river = nullptr;
+    const WaterBody* body = nullptr;  ///< the river's preset
+    bool still = false;               ///< mouth or plume: the still body's waves fade in
+};
 }  // namespace
 
 struct GpuQuery::Impl {
@@ -29,6 +42,8 @@ struct GpuQuery::Impl {
     VkDescriptorSet set = VK_NULL_HANDLE;  // freed with the pool
     detail::OwnedCommandPool commands;
     GpuBuffer waves, phases, points, results, cell_origins;
+    GpuBuffer river_texels, river_channel, river_waves;  // placeholders outside river mode
+    const tidewater::detail::RiverBake* uploaded_river = nullptr;
     detail::ShoreBuffers shore;  // the same upload the renderer uses
 
     Impl() = default;
@@ -53,7 +68,8 @@ struct GpuQuery::Impl {
             {waves.handle(), 0, VK_WHOLE_SIZE},     {phases.handle(), 0, VK_WHOLE_SIZE},
             {points.handle(), 0, VK_WHOLE_SIZE},    {results.handle(), 0, VK_WHOLE_SIZE},
             {shore.per_wave(), 0, VK_WHOLE_SIZE},   {shore.shared(), 0, VK_WHOLE_SIZE},
-            {cell_origins.handle(), 0, VK_WHOLE_SIZE}};
+            {cell_origins.handle(), 0, VK_WHOLE_SIZE}, {river_texels.handle(), 0, VK_WHOLE_SIZE},
+            {river_channel.handle(), 0, VK_WHOLE_SIZE}, {river_waves.handle(), 0, VK_WHOLE_SIZE}};
         VkWriteDescriptorSet writes[kBindings];
         for (std::uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -66,7 +82,36 @@ struct GpuQuery::Impl {
         vkUpdateDescriptorSets(ctx.device, kBindings, writes, 0, nullptr);
     }
 
+    /// Uploads a river's fields (null: placeholders) unless they are there already.
+    Result<bool> use_river(const tidewater::detail::RiverBake* river);
+
+    /// Solves `points` against `still` (its waves and shore) or, with `river`, the river's
+    /// water with `still` fading in at its mouth. `flow`, when not empty, receives the
+    /// current (xy) and flow-detail slope (zw) at each point.
+    Status solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
+                 std::span<SurfacePoint> out, std::span<glm::vec4> flow);
 };
+
+Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river) {
+    if (river_texels.handle() && river == uploaded_river) return false;
+    const std::size_t texels = river ? river->grid.size() : 0;
+    std::vector<float> query(std::max<std::size_t>(1, texels * gpu::kRiverQueryStride), 0.0f);
+    std::vector<glm::vec4> channel(std::max<std::size_t>(1, texels), glm::vec4(0.0f));
+    if (river) {
+        std::copy(river->query_texels.begin(), river->query_texels.end(), query.begin());
+        for (std::size_t t = 0; t < texels; ++t)
+            channel[t] = {river->channel_s[t], river->channel_n[t], river->flow_x[t], river->flow_z[t]};
+    }
+    for (auto [buffer, data, bytes] : {std::tuple{&river_texels, static_cast<const void*>(query.data()), query.size() * sizeof(float)},
+                                       std::tuple{&river_channel, static_cast<const void*>(channel.data()), channel.size() * sizeof(glm::vec4)}}) {
+        auto fresh = GpuBuffer::create(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!fresh) return fresh.error();
+        std::memcpy(fresh->mapped(), data, bytes);
+        *buffer = std::move(fresh).value();
+    }
+    uploaded_river = river;
+    return true;
+}
 
 GpuQuery::GpuQuery(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuQuery::~GpuQuery() = default;
@@ -141,60 +186,85 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     return std::unique_ptr<GpuQuery>(new GpuQuery(std::move(impl)));
 }
 
-Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
-                               std::span<SurfacePoint> out) {
-    if (points.size() != out.size()) {
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
-    }
-    if (points.empty()) return {};
-    if (points.size() > (1u << 26)) {
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
-    }
-    Impl& m = *impl_;
-    const WaveSet& set = body.waves();
-    const detail::PhaseCells cells = detail::build_phase_cells(set, body.local_time(time), points);
-    const auto waves = detail::gpu_waves(set);
+Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
+                             std::span<SurfacePoint> out, std::span<glm::vec4> flow) {
+    const WaveSet& still_set = still.waves();
+    const bool river_mode = river != nullptr;
+    // The still water's waves: none in a river's own channel away from its mouth.
+    const bool still_waves = !river_mode || river->still;
+    const detail::PhaseCells cells = detail::build_phase_cells(still_set, still.local_time(time), query_points);
+    auto wave_data = detail::gpu_waves(still_set);
+    if (!still_waves) wave_data.clear();
 
+    std::vector<gpu::GpuRiverWave> channel_waves;
+    double river_max_offset = 0.0;
+    if (river_mode) {
+        for (const auto& w : tidewater::detail::river_waves_at(river->body->waves(), river->body->local_time(time), river->river->mean_speed)) {
+            channel_waves.push_back({glm::vec4(static_cast<float>(w.k_s), static_cast<float>(w.k_n), static_cast<float>(w.amplitude),
+                                               static_cast<float>(w.steepness)),
+                                     glm::vec4(static_cast<float>(w.omega), static_cast<float>(w.offset), 0.0f, 0.0f)});
+            river_max_offset += w.steepness * w.amplitude;
+        }
+    }
     bool rebind = false;
-    for (auto [buffer, bytes] : {std::pair{&m.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, waves.size())},
-                                 std::pair{&m.phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
-                                 std::pair{&m.points, sizeof(gpu::GpuQueryPoint) * points.size()},
-                                 std::pair{&m.results, sizeof(gpu::GpuQueryResult) * points.size()}}) {
-        auto grown = m.ensure(*buffer, bytes);
+    for (auto [buffer, bytes] : {std::pair{&waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, wave_data.size())},
+                                 std::pair{&phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
+                                 std::pair{&points, sizeof(gpu::GpuQueryPoint) * query_points.size()},
+                                 std::pair{&results, sizeof(gpu::GpuQueryResult) * query_points.size()},
+                                 std::pair{&river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(1, channel_waves.size())}}) {
+        auto grown = ensure(*buffer, bytes);
         if (!grown) return grown.error();
         rebind = rebind || *grown;
     }
     // Every submit below waits for completion: no GPU work can still read the old fields.
-    auto uploaded = m.shore.upload(m.ctx, body.shore());
+    auto uploaded = shore.upload(ctx, still_waves ? still.shore() : nullptr);
     if (!uploaded) return uploaded.error();
     rebind = rebind || *uploaded;
-    const ShoreWaves* shore = m.shore.model();
+    auto river_uploaded = use_river(river_mode ? river->river : nullptr);
+    if (!river_uploaded) return river_uploaded.error();
+    rebind = rebind || *river_uploaded;
+    const ShoreWaves* model = shore.model();
+    // Cell origins are relative to the river grid's corner in river mode, else to the shore's.
+    const glm::dvec2 zero = river_mode ? river->river->grid.corner : (model ? model->corner() : glm::dvec2(0.0));
     std::vector<glm::vec2> origins(std::max<std::size_t>(1, cells.origins.size()), glm::vec2(0.0f));
     for (std::size_t c = 0; c < cells.origins.size(); ++c) {
-        const glm::dvec2 rel = cells.origins[c] - (shore ? shore->corner() : glm::dvec2(0.0));
+        const glm::dvec2 rel = cells.origins[c] - zero;
         origins[c] = glm::vec2(static_cast<float>(rel.x), static_cast<float>(rel.y));
     }
-    auto grown_origins = m.ensure(m.cell_origins, sizeof(glm::vec2) * origins.size());
+    auto grown_origins = ensure(cell_origins, sizeof(glm::vec2) * origins.size());
     if (!grown_origins) return grown_origins.error();
     rebind = rebind || *grown_origins;
-    if (rebind) m.bind_buffers();
-    std::memcpy(m.cell_origins.mapped(), origins.data(), sizeof(glm::vec2) * origins.size());
-    std::memcpy(m.waves.mapped(), waves.data(), sizeof(gpu::GpuWave) * waves.size());
-    std::memcpy(m.phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
-    std::memcpy(m.points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * points.size());
+    if (rebind) bind_buffers();
+    std::memcpy(cell_origins.mapped(), origins.data(), sizeof(glm::vec2) * origins.size());
+    if (!wave_data.empty()) std::memcpy(waves.mapped(), wave_data.data(), sizeof(gpu::GpuWave) * wave_data.size());
+    if (!channel_waves.empty()) std::memcpy(river_waves.mapped(), channel_waves.data(), sizeof(gpu::GpuRiverWave) * channel_waves.size());
+    std::memcpy(phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
+    std::memcpy(points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * query_points.size());
 
     // The shader derives the tolerance and step bound from sum(Q A) as the CPU does.
     gpu::GpuQueryParams params{};
-    params.wave_count = static_cast<std::uint32_t>(waves.size());
-    params.point_count = static_cast<std::uint32_t>(points.size());
-    params.max_offset = static_cast<float>(set.max_horizontal_displacement());
-    params.shore_resolution = shore ? static_cast<std::uint32_t>(shore->resolution()) : 0u;
-    params.shore_texel = shore ? static_cast<float>(shore->texel()) : 1.0f;
+    params.wave_count = static_cast<std::uint32_t>(wave_data.size());
+    params.point_count = static_cast<std::uint32_t>(query_points.size());
+    params.max_offset = static_cast<float>((still_waves ? still_set.max_horizontal_displacement() : 0.0) + river_max_offset);
+    params.river_wave_count = static_cast<std::uint32_t>(channel_waves.size());
+    params.shore_resolution = model ? static_cast<std::uint32_t>(model->resolution()) : 0u;
+    params.shore_texel = model ? static_cast<float>(model->texel()) : 1.0f;
+    if (model && river_mode) {
+        const glm::dvec2 offset = model->corner() - zero;
+        params.shore_offset = glm::vec2(static_cast<float>(offset.x), static_cast<float>(offset.y));
+    }
+    if (river_mode) {
+        params.river_nx = static_cast<std::uint32_t>(river->river->grid.nx);
+        params.river_nz = static_cast<std::uint32_t>(river->river->grid.nz);
+        params.river_texel = static_cast<float>(river->river->grid.texel);
+        params.still = river->still ? 1.0f : 0.0f;
+        params.flow = detail::gpu_flow_detail(river->body->profile().flow, river->body->local_time(time), zero);
+    }
 
-    Status st = detail::submit_and_wait(m.ctx, m.commands.get(), [&](VkCommandBuffer cmd) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline.get());
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout.get(), 0, 1, &m.set, 0, nullptr);
-        vkCmdPushConstants(cmd, m.pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
+    Status st = detail::submit_and_wait(ctx, commands.get(), [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.get());
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout.get(), 0, 1, &set, 0, nullptr);
+        vkCmdPushConstants(cmd, pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
         vkCmdDispatch(cmd, (params.point_count + gpu::kQueryWorkgroupSize - 1) / gpu::kQueryWorkgroupSize, 1, 1);
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -204,25 +274,106 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
     });
     if (!st) return st;
 
-    const auto* results = static_cast<const gpu::GpuQueryResult*>(m.results.mapped());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const gpu::GpuQueryResult& r = results[i];
+    const double level = river_mode ? river->river->mouth_level : still.level();
+    const auto* r = static_cast<const gpu::GpuQueryResult*>(results.mapped());
+    for (std::size_t i = 0; i < query_points.size(); ++i) {
         SurfacePoint& o = out[i];
-        o.height = body.level() + static_cast<double>(r.height_normal.x);
-        o.normal = {r.height_normal.y, r.height_normal.z, r.height_normal.w};
-        o.velocity = {r.velocity_jac.x, r.velocity_jac.y, r.velocity_jac.z};
-        o.jacobian = static_cast<double>(r.velocity_jac.w);
-        o.displacement = {r.disp_iter.x, r.disp_iter.y};
-        o.iterations = static_cast<int>(r.disp_iter.z);
-        o.converged = r.disp_iter.w != 0.0f;
-        if (shore) {
-            o.depth = static_cast<double>(r.shore.x);
-            o.shore_distance = static_cast<double>(r.shore.y);
-        } else {
-            o.depth = o.shore_distance = kDeepWater;
+        o.height = level + static_cast<double>(r[i].height_normal.x);
+        o.normal = {r[i].height_normal.y, r[i].height_normal.z, r[i].height_normal.w};
+        o.velocity = {r[i].velocity_jac.x, r[i].velocity_jac.y, r[i].velocity_jac.z};
+        o.jacobian = static_cast<double>(r[i].velocity_jac.w);
+        o.displacement = {r[i].disp_iter.x, r[i].disp_iter.y};
+        o.iterations = static_cast<int>(r[i].disp_iter.z);
+        o.converged = r[i].disp_iter.w != 0.0f;
+        o.depth = model || river_mode ? static_cast<double>(r[i].shore.x) : kDeepWater;
+        o.shore_distance = model ? static_cast<double>(r[i].shore.y) : kDeepWater;
+        const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
+        o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
+        o.foam = std::max(model ? static_cast<double>(r[i].shore.z) : 0.0, crest_foam(o.jacobian));  // as detail::surface_foam
+        if (!flow.empty()) flow[i] = r[i].flow;
+    }
+    return {};
+}
+
+Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
+                               std::span<SurfacePoint> out) {
+    if (points.size() != out.size()) {
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
+    }
+    if (points.empty()) return {};
+    if (points.size() > (1u << 26)) {
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
+    }
+    return impl_->solve(body, nullptr, time, points, out, {});
+}
+
+Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
+                             std::span<glm::dvec2> detail) {
+    if (points.size() != out.size() || (!detail.empty() && detail.size() != points.size()))
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
+    const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
+    if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass "
+                                 "it through bake_scene first", scene.name)};
+    if (points.empty()) return {};
+    if (points.size() > (1u << 26))
+        return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points in one call, at most 2^26", points.size())};
+    namespace td = tidewater::detail;
+    const td::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
+    const td::BodyFinder finder(scene, bodies);
+    std::vector<td::PointBody> where(points.size());
+    std::vector<std::vector<std::size_t>> groups(finder.evaluation_count());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        where[i] = finder.find(points[i]);
+        groups[where[i].evaluation].push_back(i);
+    }
+    const Terrain& terrain = scene.bake ? scene.bake->terrain : scene.terrain;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::vector<std::size_t>& members = groups[g];
+        if (members.empty()) continue;
+        std::vector<glm::dvec2> group_points(members.size());
+        for (std::size_t k = 0; k < members.size(); ++k) group_points[k] = points[members[k]];
+        std::vector<SurfacePoint> results(members.size());
+        std::vector<glm::vec4> flow(members.size(), glm::vec4(0.0f));
+        const td::EvaluationKey key = finder.evaluation_key(g);
+        Status st;
+        double still_level = 0.0;
+        switch (key.kind) {
+            case td::EvaluationKind::land:
+                for (std::size_t k = 0; k < members.size(); ++k) {  // the terrain itself, as query_world
+                    results[k] = SurfacePoint{};
+                    results[k].height = terrain.height_at(group_points[k]);
+                    results[k].depth = 0.0;
+                }
+                break;
+            case td::EvaluationKind::ocean:
+                still_level = scene.water_level();
+                st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {});
+                break;
+            case td::EvaluationKind::lake: {
+                const WaterBody& lake = scene.lakes[static_cast<std::size_t>(key.lake)].body;
+                still_level = lake.level();
+                st = impl_->solve(lake, nullptr, time, group_points, results, {});
+                break;
+            }
+            case td::EvaluationKind::river: {
+                const td::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];
+                RiverDispatch river{&baked, &scene.rivers[static_cast<std::size_t>(key.river)].body, key.plume};
+                st = impl_->solve(td::still_body(scene, baked), &river, time, group_points, results, flow);
+                break;
+            }
         }
-        o.wet = tidewater::detail::surface_wet(o.height, body.level(), o.depth);
-        o.foam = std::max(shore ? static_cast<double>(r.shore.z) : 0.0, crest_foam(o.jacobian));  // as detail::surface_foam
+        if (!st) return st;
+        for (std::size_t k = 0; k < members.size(); ++k) {
+            const std::size_t i = members[k];
+            out[i].surface = results[k];
+            if (key.kind == td::EvaluationKind::ocean || key.kind == td::EvaluationKind::lake)
+                td::settle_on_terrain(out[i].surface, where[i], still_level);
+            out[i].body = where[i].body;
+            out[i].flow = key.kind == td::EvaluationKind::river ? glm::dvec2(flow[k].x, flow[k].y) : glm::dvec2(0.0);
+            if (!detail.empty()) detail[i] = glm::dvec2(flow[k].z, flow[k].w);
+        }
     }
     return {};
 }

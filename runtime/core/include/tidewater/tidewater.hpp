@@ -7,6 +7,7 @@
 #include "tidewater/gerstner.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/result.hpp"
+#include "tidewater/flow_detail.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"

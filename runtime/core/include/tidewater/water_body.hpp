@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tidewater/flow_detail.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/spectrum.hpp"
 #include "tidewater/waves.hpp"
@@ -25,6 +26,7 @@ struct WaterProfile {
     std::vector<WaveSpec> waves;
     std::optional<SpectrumSpec> spectrum;
     RippleSpec ripples;
+    FlowDetailSpec flow;  ///< detail a current carries (rivers); strength 0 = none
     FoldPolicy fold_policy = FoldPolicy::reject;
     double time_offset = 0.0;  ///< s, added to the clock time for this body.
 };

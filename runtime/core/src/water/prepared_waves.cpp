@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
 #include "water/newton.hpp"
 
@@ -61,6 +62,14 @@ PreparedWaves<Scalar> prepare_river_waves(const WaveSet& set, double local_time,
 
 template PreparedWaves<float> prepare_river_waves<float>(const WaveSet&, double, double, double);
 template PreparedWaves<double> prepare_river_waves<double>(const WaveSet&, double, double, double);
+
+std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed) {
+    const PreparedWaves<double> p = prepare_river_waves<double>(waves, local_time, 0.0, mean_speed);
+    std::vector<RiverWaveAt> out(p.count);
+    for (std::size_t i = 0; i < p.count; ++i)
+        out[i] = {p.kx[i], p.kz[i], p.amplitude[i], p.steepness[i], p.omega[i], p.offset[i]};
+    return out;
+}
 
 namespace {
 template <typename Scalar>

@@ -108,6 +108,17 @@ struct RiverSample {
 };
 RiverSample sample_river(const RiverBake& river, glm::dvec2 p);
 
+/// A river's wave at one instant in its channel frame, as the shaders take it: its phase
+/// at channel coordinates (s, n) is k_s s + k_n n + offset, the offset riding the river's
+/// mean speed (the Doppler shift of prepare_river_waves), reduced to [-pi, pi).
+struct RiverWaveAt {
+    double k_s = 0.0, k_n = 0.0;  ///< rad/m, downstream and to the left
+    double amplitude = 0.0, steepness = 0.0, omega = 0.0;
+    double offset = 0.0;          ///< rad
+};
+/// `waves` of a river's preset at the body's local time.
+std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed);
+
 /// Everything lakes and rivers bake to.
 struct WaterBodiesBake {
     std::vector<LakeBake> lakes;    ///< in the scene's order

@@ -15,6 +15,8 @@
 
 #include "tidewater/query.hpp"
 #include "tidewater/render/device_context.hpp"
+#include "tidewater/scene.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater::render {
 
@@ -28,6 +30,13 @@ public:
     /// Same contract as tidewater::query_surface.
     Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                          std::span<SurfacePoint> out);
+
+    /// Same contract as tidewater::query_world: points are sorted into bodies on the
+    /// host as the CPU does, then each body's water (a river's falling surface, waves and
+    /// current included) is solved by the shader. `detail`, when given (the same size
+    /// as `points`), receives the river flow-detail slope at each point (0 elsewhere).
+    Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
+                       std::span<glm::dvec2> detail = {});
 
 private:
     struct Impl;

@@ -1,0 +1,93 @@
+// A river's water at a rest position: the GLSL twin of RiverWater and PlumeWater in
+// runtime/core/src/water/river_water.hpp. The river's waves run in its channel frame
+// (k_s downstream, k_n across to the left); at the rest position they turn with the
+// downstream tangent there, die out over the last kWaterlineRampDepth of water and over
+// the still water the river runs into, and ride the falling surface (one more term of
+// the sums: its height above the mouth level and its gradient).
+//
+// The includer declares river_texels[] (kRiverQueryStride floats per texel of this
+// river, from RIVER_FIRST_TEXEL), river_waves[] (GpuRiverWave) and defines RIVER_NX,
+// RIVER_NZ, RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_WAVE_COUNT and RIVER_BASE_PHASE(i):
+// wave i's phase at the point the rest offsets are measured from.
+#ifndef TIDEWATER_RIVER_WATER_GLSL
+#define TIDEWATER_RIVER_WATER_GLSL
+
+// Bilinear taps of the river's rectangular grid (tidewater::detail::grid_taps).
+struct RiverTap {
+    uint k00, k10, k01, k11;
+    vec4 w;  // weights of k00, k10, k01, k11
+    vec2 f;  // the fractions (u, v) in the cell
+};
+
+// `rel` is the position relative to the river grid's outer corner, m.
+RiverTap river_tap(vec2 rel) {
+    int nx = int(RIVER_NX), nz = int(RIVER_NZ);
+    vec2 uv = clamp(rel / RIVER_TEXEL - 0.5, vec2(0.0), vec2(float(nx - 1), float(nz - 1)));
+    ivec2 ij = min(ivec2(uv), ivec2(max(nx - 2, 0), max(nz - 2, 0)));
+    vec2 f = uv - vec2(ij);
+    RiverTap t;
+    t.k00 = uint(ij.y * nx + ij.x);
+    t.k10 = t.k00 + (nx > 1 ? 1u : 0u);
+    t.k01 = t.k00 + (nz > 1 ? uint(nx) : 0u);
+    t.k11 = t.k01 + (nx > 1 ? 1u : 0u);
+    t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    t.f = f;
+    return t;
+}
+float river_field(RiverTap t, uint field) {
+    uint base = RIVER_FIRST_TEXEL * kRiverQueryStride + field;
+    return t.w.x * river_texels[base + t.k00 * kRiverQueryStride] + t.w.y * river_texels[base + t.k10 * kRiverQueryStride] +
+           t.w.z * river_texels[base + t.k01 * kRiverQueryStride] + t.w.w * river_texels[base + t.k11 * kRiverQueryStride];
+}
+
+// The still water's share at the last evaluated rest position (PlumeWater's weight).
+float g_river_still_weight = 0.0;
+// The still water column there, m.
+float g_river_depth = 0.0;
+
+// The river's sums at rest position `rel` (m, from the river grid's corner), with rest
+// offset `e` from the point its base phases belong to. `fade_spacing` > 0 fades short
+// waves for render LOD (queries pass 0).
+SurfaceSums river_water_at(vec2 rel, vec2 e, float fade_spacing) {
+    RiverTap t = river_tap(rel);
+    uint base = RIVER_FIRST_TEXEL * kRiverQueryStride;
+    float surface = river_field(t, kRiverQuerySurface);
+    float depth = river_field(t, kRiverQueryDepth);
+    vec2 tangent = vec2(river_field(t, kRiverQueryTangentX), river_field(t, kRiverQueryTangentZ));
+    float weight = river_field(t, kRiverQueryWaveWeight);
+    g_river_still_weight = river_field(t, kRiverQueryStillWeight);
+    g_river_depth = depth;
+    // The surface's gradient: the bilinear form's derivatives in the cell.
+    float s00 = river_texels[base + t.k00 * kRiverQueryStride], s10 = river_texels[base + t.k10 * kRiverQueryStride];
+    float s01 = river_texels[base + t.k01 * kRiverQueryStride], s11 = river_texels[base + t.k11 * kRiverQueryStride];
+    vec2 surface_slope = vec2((1.0 - t.f.y) * (s10 - s00) + t.f.y * (s11 - s01), (1.0 - t.f.x) * (s01 - s00) + t.f.x * (s11 - s10)) / RIVER_TEXEL;
+
+    float len2 = dot(tangent, tangent);
+    tangent *= inversesqrt(len2 > 0.0 ? len2 : 1.0);
+    vec2 left = vec2(-tangent.y, tangent.x);
+    float depth_ramp = depth > 0.0 ? (depth < kWaterlineRampDepth ? depth / kWaterlineRampDepth : 1.0) : 0.0;
+    float ramp = depth_ramp * weight;
+    SurfaceSums s = surface_zero();
+    for (uint i = 0u; i < RIVER_WAVE_COUNT; ++i) {
+        GpuRiverWave w = river_waves[RIVER_FIRST_WAVE + i];
+        vec2 kvec = w.k_amp.x * tangent + w.k_amp.y * left;
+        float theta = fma(kvec.x, e.x, fma(kvec.y, e.y, RIVER_BASE_PHASE(i)));
+        float a = w.k_amp.z * ramp;
+        if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);
+        add_wave(s, kvec, a, w.k_amp.w, w.omega_phase.x, theta);
+    }
+    s.eta += surface;
+    s.slope += surface_slope;
+    return s;
+}
+
+// s += w * b: another water's sums, scaled (tidewater::detail::add_scaled).
+void add_scaled(inout SurfaceSums s, SurfaceSums b, float w) {
+    s.disp += w * b.disp;
+    s.m += w * b.m;
+    s.eta += w * b.eta;
+    s.slope += w * b.slope;
+    s.velocity += w * b.velocity;
+}
+
+#endif
