@@ -22,8 +22,9 @@ Result<QueryBackend> make_gpu_query_backend() {
         std::unique_ptr<render::GpuQuery> query;
     };
     auto engine = std::make_shared<Engine>(Engine{shared_device, std::move(gpu).value()});
-    return QueryBackend([engine](const WaterBody& body, double t, std::span<const glm::dvec2> pts,
-                                 std::span<SurfacePoint> out) { return engine->query->query_surface(body, t, pts, out); });
+    return QueryBackend([engine](const Scene& scene, double t, std::span<const glm::dvec2> pts, std::span<WorldPoint> out) {
+        return engine->query->query_world(scene, t, pts, out);
+    });
 #else
     return Error{ErrorCode::unsupported, "--backend gpu: this build has no renderer (configure with TIDEWATER_BUILD_RENDER=ON)"};
 #endif

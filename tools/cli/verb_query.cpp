@@ -80,9 +80,7 @@ int run_query(const QueryArgs& a) {
     buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z\n";
 
     const bool has_bodies = !scene->lakes.empty() || !scene->rivers.empty();
-    if (a.backend == "gpu" && has_bodies)
-        return fail(verb, "the gpu backend evaluates the ocean only; query a scene with lakes or rivers with --backend cpu");
-    // The CPU answers through query_world; the GPU backend replaces its surfaces.
+    // Both backends answer the whole scene with query_world's contract.
     std::optional<QueryBackend> gpu;
     if (a.backend == "gpu") {
         auto backend = make_gpu_query_backend();
@@ -90,25 +88,14 @@ int run_query(const QueryArgs& a) {
         gpu = std::move(backend).value();
     }
     std::vector<WorldPoint> results(points->size());
-    std::vector<SurfacePoint> surfaces(gpu ? points->size() : 0);
     const bool open_water = !scene->ocean.shore() && !has_bodies;
     std::size_t unconverged = 0;
     for (double t : times) {
         QueryOptions options;
         options.threads = a.threads;
-        // The body, the current and (on the CPU) the surface of every point, in one query.
-        if (auto st = query_world(*scene, t, *points, results, options); !st) return fail(verb, st.error().message);
-        if (gpu) {
-            if (auto st = (*gpu)(scene->ocean, t, *points, surfaces); !st) return fail(verb, st.error().message);
-            for (std::size_t i = 0; i < surfaces.size(); ++i) {
-                const double depth = results[i].surface.depth;  // the terrain's, where the ocean has no shore model
-                results[i].surface = surfaces[i];
-                if (!scene->ocean.shore()) {
-                    results[i].surface.depth = depth;
-                    results[i].surface.wet = detail::surface_wet(surfaces[i].height, scene->water_level(), depth);
-                }
-            }
-        }
+        // The body, the current and the surface of every point, in one query.
+        const Status st = gpu ? (*gpu)(*scene, t, *points, results) : query_world(*scene, t, *points, results, options);
+        if (!st) return fail(verb, st.error().message);
         for (const WorldPoint& w : results) {
             if (w.surface.converged) continue;
             // Open water always converges; at the waterline a shore or a bank can fold the surface.
