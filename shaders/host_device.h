@@ -105,6 +105,14 @@ TW_CONST uint kViewLod = 5u;
 TW_CONST uint kViewWireframe = 6u;
 TW_CONST uint kViewShore = 7u;
 TW_CONST uint kViewBreaking = 8u;
+TW_CONST uint kViewFlow = 9u;
+
+// What a water draw covers (GpuBodyDraw.body.x).
+TW_CONST uint kBodyOcean = 0u;
+TW_CONST uint kBodyLake = 1u;
+TW_CONST uint kBodyRiver = 2u;
+// A river texel's kind in the body masks (tidewater::detail::RiverTexel).
+TW_CONST float kRiverTexelNone = 0.0f;
 
 // Per-frame constants. Positions are relative to the render origin O (the
 // camera snapped to the phase-cell grid, in double on the host), so float
@@ -138,6 +146,19 @@ struct GpuFlowDetail {
 // (river_wave_count > 0 or river_size.x > 0) cell origins are relative to the river
 // grid's corner, the river's water is evaluated there, and the still water's waves
 // join it with the river's still weight when `still` is 1 (a mouth or plume).
+// One water draw of a frame: the ocean, a lake or a river. Counts and indices are
+// stored as floats (exact below 2^24).
+struct GpuBodyDraw {
+    vec4 patch_grid;  // xy: patch grid corner relative to O (m); z: patch size (m); w: patches per row, 0: patches from the patch list
+    vec4 body;        // x: kind (kBodyOcean, kBodyLake, kBodyRiver); y: rest level (m; a river's mouth level); z: first wave; w: wave count (a river's still water)
+    vec4 grid;        // xy: the river's or lake's grid corner relative to O (m); z: texel (m); w: its first texel in the river fields or body masks
+    vec4 river;       // x, y: grid texels along x and z; z: first river wave; w: river wave count
+    vec4 extra;       // x: 1 where the still water reads the frame's shore fields; y: first patch in the patch list;
+                      // z: highest rest surface above the level (m); w: largest wave displacement (m)
+    vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own)
+    GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
+};
+
 struct GpuQueryParams {
     uint wave_count;        // the still water's waves
     uint point_count;
@@ -167,6 +188,7 @@ static_assert(sizeof(GpuRiverWave) == 32);
 static_assert(sizeof(GpuQueryResult) == 80);
 static_assert(sizeof(GpuQueryParams) == 112);
 static_assert(sizeof(GpuFlowDetail) == 64);
+static_assert(sizeof(GpuBodyDraw) == 6 * 16 + 64);
 static_assert(sizeof(GpuFrame) == 2 * 64 + 10 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -7,7 +7,8 @@
 //
 // The includer declares river_texels[] (kRiverQueryStride floats per texel of this
 // river, from RIVER_FIRST_TEXEL), river_waves[] (GpuRiverWave) and defines RIVER_NX,
-// RIVER_NZ, RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_WAVE_COUNT and RIVER_BASE_PHASE(i):
+// RIVER_NZ, RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_FIRST_WAVE, RIVER_WAVE_COUNT and
+// RIVER_BASE_PHASE(i):
 // wave i's phase at the point the rest offsets are measured from.
 #ifndef TIDEWATER_RIVER_WATER_GLSL
 #define TIDEWATER_RIVER_WATER_GLSL

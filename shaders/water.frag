@@ -7,6 +7,9 @@
 #include "frame.glsl"
 #include "water_lod.glsl"
 #include "water_point.glsl"
+#include "water_draw.glsl"
+#include "body_masks.glsl"
+#include "flow_detail.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 geo_normal;
 layout(location = 2) in vec2 rest_xz;
@@ -14,6 +17,8 @@ layout(location = 3) in float jacobian;
 layout(location = 4) in float eta;
 layout(location = 5) in float spacing;
 layout(location = 6) in vec2 shore_info;
+layout(location = 7) in float rest_level;
+layout(location = 8) in vec2 current;
 layout(location = 0) out vec4 out_color;
 
 const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
@@ -25,34 +30,41 @@ vec3 world_from_depth(vec2 uv, float depth) {
     return p.xyz / p.w;
 }
 
-// Normal detail: the slope of the waves faded out of the geometry, then ripples.
-vec3 detail_normal() {
+// Normal detail: the slope of the waves faded out of the geometry, then ripples (the
+// ocean's) or a river's flow-mapped detail carried by its current.
+vec3 detail_normal(GpuBodyDraw d) {
     SurfaceSums faded = surface_zero();
-    uint count = uint(frame.params.y);
-    for (uint i = 0u; i < count; ++i) {
+    bool river = uint(d.body.x) == kBodyRiver;
+    uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
+    for (uint i = first; i < first + count; ++i) {
         GpuWave w = waves[i];
         float missing = 1.0 - wave_lod_fade(w.steep_omega.w, spacing);
         if (missing <= 0.0) continue;
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
         add_wave(faded, kvec, missing * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
-    vec2 slope = faded.slope + ripple_slope(rest_xz);
+    vec2 slope = faded.slope;
+    if (uint(d.body.x) == kBodyOcean) slope += ripple_slope(rest_xz);
+    if (river && d.flow.params.z > 0.0) slope += flow_detail_slope(rest_xz - d.grid.xy, current, d.flow);
     vec3 n = normalize(geo_normal);
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
 }
 
 void main() {
+    if (!owns_water(draw_push.draw_index, rest_xz)) discard;
+    GpuBodyDraw d = draws[draw_push.draw_index];
+    float max_eta = max(d.extra.w, 1e-3);
     uint view = uint(frame.params.w);
     vec3 to_camera = frame.camera.xyz - world_pos;
     float distance = length(to_camera);
     vec3 v = to_camera / distance;
-    vec3 n = detail_normal();
+    vec3 n = detail_normal(d);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.ripple_drift.z > 0.5;
 
     // Water column along the view ray, and what lies behind it.
-    float column_depth = max(frame.params.x - terrain_height_at(world_pos.xz), 0.0);
+    float column_depth = max(rest_level - terrain_height_at(world_pos.xz), 0.0);
     float thickness = column_depth / max(v.y, 0.15);
     vec3 behind = vec3(0.62, 0.56, 0.42) * 0.8;
     if (has_scene) {
@@ -103,16 +115,18 @@ void main() {
     color += frame.sun.w * pow(max(dot(n, h), 0.0), 400.0) * vec3(2.4, 2.25, 2.0);
 
     // Subsurface light through thin crests facing away from the sun.
-    float crest = clamp(eta / max(frame.ripple_drift.w, 1e-3), 0.0, 1.0);
+    float crest = clamp(eta / max_eta, 0.0, 1.0);
     float sss = pow(max(dot(v, -normalize(frame.sun.xyz + n * 0.5)), 0.0), 4.0) * crest;
     color += sss * vec3(0.06, 0.45, 0.38) * frame.sun.w;
 
     // Foam where the surface compresses toward folding (Jacobian -> 0), where waves break,
     // and in bands along the coast that run up the beach with the swash.
     // Breaking foam rides the crests (and lingers thinly in the troughs).
-    float crest_band = smoothstep(-0.3, 0.5, eta / max(frame.ripple_drift.w * 0.25, 1e-3));
+    float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     float foam = max(crest_foam(jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
-    if (frame.shore_rect.w > 0.0) {
+    // A fast current churns white water.
+    foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)));
+    if (frame.shore_rect.w > 0.0 && d.extra.x > 0.5) {
         float d = shore_info.x;
         float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);
         foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
@@ -123,7 +137,7 @@ void main() {
     }
     color = apply_fog(color, distance, -v);
 
-    if (view == kViewHeight) color = heat_color(0.5 + 0.5 * eta / max(frame.ripple_drift.w, 1e-3));
+    if (view == kViewHeight) color = heat_color(0.5 + 0.5 * eta / max_eta);
     if (view == kViewNormals) color = n * 0.5 + 0.5;
     if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
     if (view == kViewDepth) color = heat_color(column_depth / 40.0);
@@ -131,5 +145,6 @@ void main() {
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);
+    if (view == kViewFlow) color = uint(d.body.x) == kBodyRiver ? heat_color(length(current) / 3.0) : vec3(0.05, 0.08, 0.2);
     out_color = vec4(color, 1.0);
 }

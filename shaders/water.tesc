@@ -3,23 +3,26 @@
 #include "host_device.h"
 #include "frame.glsl"
 #include "water_lod.glsl"
+#include "water_draw.glsl"
 layout(vertices = 4) out;
 layout(location = 0) in vec2 patch_xz[];
 layout(location = 0) out vec2 control_xz[];
 
 float edge_level(vec2 a, vec2 b) {
-    float spacing = vertex_spacing(camera_distance(0.5 * (a + b)));
+    float spacing = vertex_spacing(camera_distance(0.5 * (a + b), draws[draw_push.draw_index].body.y));
     return clamp(length(b - a) / spacing, 1.0, 64.0);
 }
 
 bool outside_frustum() {
-    // The displaced surface stays within the rest patch grown by the largest displacement.
-    float margin = frame.ripple_drift.w;
+    // The displaced surface stays within the rest patch grown by the largest displacement,
+    // between the rest level and the highest rest surface (a river's source).
+    GpuBodyDraw d = draws[draw_push.draw_index];
+    float margin = d.extra.w;
     vec2 lo = min(min(patch_xz[0], patch_xz[1]), min(patch_xz[2], patch_xz[3])) - margin;
     vec2 hi = max(max(patch_xz[0], patch_xz[1]), max(patch_xz[2], patch_xz[3])) + margin;
     vec4 c[8];
     for (int i = 0; i < 8; ++i) {
-        vec3 p = vec3((i & 1) != 0 ? hi.x : lo.x, frame.params.x + ((i & 2) != 0 ? margin : -margin), (i & 4) != 0 ? hi.y : lo.y);
+        vec3 p = vec3((i & 1) != 0 ? hi.x : lo.x, d.body.y + ((i & 2) != 0 ? d.extra.z + margin : -margin), (i & 4) != 0 ? hi.y : lo.y);
         c[i] = frame.view_proj * vec4(p, 1.0);
     }
     bvec4 all_out_a = bvec4(true), all_out_b = bvec4(true);

@@ -1,18 +1,23 @@
 #version 450
-// Displaces each water vertex by the body's waves at its rest position: the same
-// evaluation the CPU queries solve for (water_point.glsl, water_body.glsl), with far,
-// short waves faded for LOD.
+// Displaces each water vertex by its body's water at its rest position: the same
+// evaluation the CPU queries solve for (water_point.glsl; the ocean's and lakes'
+// waves in water_body.glsl, a river's in river_water.glsl with the still water it
+// runs into fading in at its mouth), with far, short waves faded for LOD.
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
 #include "water_lod.glsl"
+#include "water_draw.glsl"
+uint g_wave_first = 0u, g_wave_count = 0u;
 #define SHORE_RESOLUTION uint(frame.shore_rect.w)
 #define SHORE_TEXEL frame.shore_rect.z
-#define WAVE_COUNT uint(frame.params.y)
-#define WAVE_BASE_PHASE(i) waves[i].steep_omega.z
+#define WAVE_FIRST g_wave_first
+#define WAVE_COUNT g_wave_count
+#define WAVE_BASE_PHASE(i) waves[WAVE_FIRST + (i)].steep_omega.z
 #include "shore_fields.glsl"
 #include "water_point.glsl"
 #include "water_body.glsl"
+#include "river_water.glsl"
 layout(quads, fractional_odd_spacing, ccw) in;
 layout(location = 0) in vec2 control_xz[];
 layout(location = 0) out vec3 world_pos;
@@ -22,16 +27,41 @@ layout(location = 3) out float jacobian;
 layout(location = 4) out float eta;
 layout(location = 5) out float spacing;
 layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: breaking 0..1
+layout(location = 7) out float rest_level; // the still surface here, world y (m)
+layout(location = 8) out vec2 current;     // a river's current (m/s)
+
+vec4 channel_at(vec2 rel) {
+    RiverTap t = river_tap(rel);
+    uint first = RIVER_FIRST_TEXEL;
+    return t.w.x * river_channel[first + t.k00] + t.w.y * river_channel[first + t.k10] + t.w.z * river_channel[first + t.k01] +
+           t.w.w * river_channel[first + t.k11];
+}
 
 void main() {
+    g_draw = draws[draw_push.draw_index];
+    g_wave_first = uint(g_draw.body.z);
+    g_wave_count = uint(g_draw.body.w);
     vec2 uv = gl_TessCoord.xy;
     rest_xz = mix(mix(control_xz[0], control_xz[1], uv.x), mix(control_xz[2], control_xz[3], uv.x), uv.y);
-    spacing = vertex_spacing(camera_distance(rest_xz));
-    SurfaceSums s = water_at(rest_xz, rest_xz - frame.shore_rect.xy, frame.shore_rect.w > 0.0, spacing);
+    spacing = vertex_spacing(camera_distance(rest_xz, g_draw.body.y));
+    bool shore = g_draw.extra.x > 0.5 && frame.shore_rect.w > 0.0;
+    SurfaceSums s;
+    rest_level = g_draw.body.y;
+    current = vec2(0.0);
+    if (uint(g_draw.body.x) == kBodyRiver) {
+        vec2 rel = rest_xz - g_draw.grid.xy;
+        g_channel = channel_at(rel);
+        s = river_water_at(rel, vec2(0.0), spacing);
+        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing), g_river_still_weight);
+        rest_level += river_field(river_tap(rel), kRiverQuerySurface);
+        current = g_channel.zw;
+    } else {
+        s = water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing);
+    }
     shore_info = vec2(g_shore_fields.w, g_shore_fields.y);
-    eta = s.eta;
+    eta = s.eta - (rest_level - g_draw.body.y);
     jacobian = surface_jacobian(s);
     geo_normal = surface_normal(s);
-    world_pos = vec3(rest_xz.x + s.disp.x, frame.params.x + s.eta, rest_xz.y + s.disp.y);
+    world_pos = vec3(rest_xz.x + s.disp.x, g_draw.body.y + s.eta, rest_xz.y + s.disp.y);
     gl_Position = frame.view_proj * vec4(world_pos, 1.0);
 }

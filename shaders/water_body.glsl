@@ -1,9 +1,13 @@
 // A water body's waves at a rest position (GLSL twin of the providers in
 // runtime/core/src/water/: open sea, and the shore fields that reshape each wave).
 // The includer declares waves[] (GpuWave), the shore buffers of shore_fields.glsl,
-// and defines WAVE_COUNT and WAVE_BASE_PHASE(i): wave i's phase at its origin.
+// and defines WAVE_COUNT and WAVE_BASE_PHASE(i): wave i's phase at its origin; it may
+// define WAVE_FIRST, the body's first wave in waves[] (default 0).
 #ifndef TIDEWATER_WATER_BODY_GLSL
 #define TIDEWATER_WATER_BODY_GLSL
+#ifndef WAVE_FIRST
+#define WAVE_FIRST 0u
+#endif
 
 // The shared shore fields of open water: deep, no breaking, full steepness, no shore.
 const vec4 kOpenWaterShore = vec4(1e9, 0.0, 1.0, 1e9);
@@ -25,7 +29,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
         g_shore_fields = tap_shared(tap);
     }
     for (uint i = 0u; i < WAVE_COUNT; ++i) {
-        GpuWave w = waves[i];
+        GpuWave w = waves[WAVE_FIRST + i];
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
         // The same association as the CPU: base + kz z + kx x (fma order).
         float theta = fma(kvec.x, rel.x, fma(kvec.y, rel.y, WAVE_BASE_PHASE(i)));

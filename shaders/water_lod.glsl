@@ -4,8 +4,9 @@
 #ifndef TIDEWATER_WATER_LOD_GLSL
 #define TIDEWATER_WATER_LOD_GLSL
 
-float camera_distance(vec2 xz) {
-    return length(vec3(xz.x, frame.params.x, xz.y) - frame.camera.xyz);
+// Distance from the camera to a point of water at rest height `level`.
+float camera_distance(vec2 xz, float level) {
+    return length(vec3(xz.x, level, xz.y) - frame.camera.xyz);
 }
 // Target vertex spacing (m) at a distance: grows linearly with distance.
 float vertex_spacing(float distance) {

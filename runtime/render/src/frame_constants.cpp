@@ -101,19 +101,23 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.water_patch = glm::vec4(static_cast<float>(patch), static_cast<float>(plan.patches_per_side),
                               static_cast<float>(corner.x - plan.origin.x), static_cast<float>(corner.y - plan.origin.y));
 
-    // Waves with their phase at the render origin, reduced in double.
-    plan.waves = gpu_waves(water.waves());
-    std::vector<double> offsets(water.waves().size());
-    phase_offsets_at(water.waves(), local_time, offsets);
-    const auto ws = water.waves().waves();
-    for (std::size_t i = 0; i < ws.size(); ++i) {
-        const double phase = ws[i].k * (ws[i].dir_x * plan.origin.x + ws[i].dir_z * plan.origin.y) + offsets[i];
-        plan.waves[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
-        plan.waves[i].steep_omega.w = static_cast<float>(kTwoPi / ws[i].k);
-    }
+    plan.waves = waves_at_origin(water, info.time, plan.origin);
     plan.terrain_mesh_offset = glm::vec4(static_cast<float>(terrain.mesh_origin.x - plan.origin.x), 0.0f,
                                          static_cast<float>(terrain.mesh_origin.y - plan.origin.y), 0.0f);
     return plan;
+}
+
+std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin) {
+    std::vector<gpu::GpuWave> out = gpu_waves(body.waves());
+    std::vector<double> offsets(body.waves().size());
+    phase_offsets_at(body.waves(), body.local_time(time), offsets);
+    const auto ws = body.waves().waves();
+    for (std::size_t i = 0; i < ws.size(); ++i) {
+        const double phase = ws[i].k * (ws[i].dir_x * origin.x + ws[i].dir_z * origin.y) + offsets[i];
+        out[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
+        out[i].steep_omega.w = static_cast<float>(kTwoPi / ws[i].k);
+    }
+    return out;
 }
 
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero) {

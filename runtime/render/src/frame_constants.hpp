@@ -31,6 +31,10 @@ glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_pla
 
 Status validate_camera(const Camera& camera);
 
+/// A body's waves as the shaders read them, with their phases at world xz `origin`
+/// (the render origin) at clock time `time`, reduced in double.
+std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin);
+
 /// A body's flow-detail settings at clock time `local_time` for shaders whose positions
 /// are relative to world xz `zero` (the render origin, or a river grid's corner).
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero);

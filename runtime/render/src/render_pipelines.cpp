@@ -128,7 +128,13 @@ Status create_layouts(const DeviceContext& ctx, FramePipelines& p) {
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene colour copy
         {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene depth copy
         {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // shore fields per wave
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};         // shore fields shared
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // shore fields shared
+        {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // water draws
+        {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // river query texels
+        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // river channel and current
+        {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // body masks
+        {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // river waves
+        {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};        // patch list
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = kFrameBindings;
     set_info.pBindings = bindings;
@@ -136,7 +142,8 @@ Status create_layouts(const DeviceContext& ctx, FramePipelines& p) {
         return vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, out);
     }));
     const VkDescriptorSetLayout set_layout = p.set_layout.get();
-    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 16};
+    // Bytes 0-15: the terrain mesh's origin; 16-19: the water draw's index (water_draw.glsl).
+    VkPushConstantRange push{VK_SHADER_STAGE_ALL_GRAPHICS, 0, kPushConstantBytes};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
     layout_info.pSetLayouts = &set_layout;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "body_uploads.hpp"
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
 #include "frame_timer.hpp"
@@ -24,11 +25,11 @@ using detail::GpuBuffer;
 
 namespace {
 
-constexpr std::array<DebugView, 9> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
-                                             DebugView::jacobian, DebugView::depth, DebugView::lod,
-                                             DebugView::wireframe, DebugView::shore, DebugView::breaking};
-constexpr std::array<std::string_view, 9> kViewNames = {"shaded", "height", "normals", "jacobian", "depth",
-                                                        "lod", "wireframe", "shore", "breaking"};
+constexpr std::array<DebugView, 10> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
+                                              DebugView::jacobian, DebugView::depth, DebugView::lod,
+                                              DebugView::wireframe, DebugView::shore, DebugView::breaking, DebugView::flow};
+constexpr std::array<std::string_view, 10> kViewNames = {"shaded", "height", "normals", "jacobian", "depth",
+                                                         "lod", "wireframe", "shore", "breaking", "flow"};
 
 }  // namespace
 
@@ -58,7 +59,7 @@ struct Renderer::Impl {
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
-        GpuBuffer frame, waves;
+        GpuBuffer frame, waves, draws, river_waves;
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
@@ -66,7 +67,9 @@ struct Renderer::Impl {
 
     std::optional<detail::TerrainUpload> terrain;  // set by set_scene
     detail::ShoreBuffers shore;
-    WaterBody ocean;
+    detail::BodyBuffers bodies;  // lakes and rivers (placeholders without)
+    Scene scene;                 // as set; its ocean is replaced by set_water
+    std::vector<std::uint32_t> draw_patches;  // instances of each water draw of the last planned frame
     std::uint64_t last_patches = 0;
 
     Impl() = default;
@@ -81,6 +84,7 @@ struct Renderer::Impl {
         if (info.log) info.log(message);
     }
     Status create_slots();
+    Status size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves);
     Status use_shore(const std::shared_ptr<const ShoreWaves>& model);
     void write_descriptors(Slot& slot, bool with_scene_copy);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot, detail::FramePlan& plan);
@@ -91,7 +95,7 @@ struct Renderer::Impl {
 Status Renderer::Impl::create_slots() {
     const std::uint32_t n = info.frames_in_flight;
     VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * n},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 9 * n},
                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * n}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = n;
@@ -106,14 +110,26 @@ Status Renderer::Impl::create_slots() {
         auto frame = GpuBuffer::create(ctx(), sizeof(gpu::GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         if (!frame) return frame.error();
         s.frame = std::move(frame).value();
-        auto waves = GpuBuffer::create(ctx(), sizeof(gpu::GpuWave) * kMaxWaves, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        if (!waves) return waves.error();
-        s.waves = std::move(waves).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         alloc.descriptorPool = descriptor_pool.get();
         alloc.descriptorSetCount = 1;
         alloc.pSetLayouts = &set_layout;
         TW_VK_TRY(vkAllocateDescriptorSets(ctx().device, &alloc, &s.set));
+    }
+    return size_slots(1, kMaxWaves, 1);
+}
+
+// Per-frame buffers sized for a scene's draws; called with no frame in flight.
+Status Renderer::Impl::size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves) {
+    for (Slot& s : slots) {
+        for (auto [buffer, bytes] : {std::pair{&s.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(waves, 1)},
+                                     std::pair{&s.draws, sizeof(gpu::GpuBodyDraw) * std::max<std::size_t>(draws, 1)},
+                                     std::pair{&s.river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(river_waves, 1)}}) {
+            if (buffer->handle() && buffer->size() >= bytes) continue;
+            auto made = GpuBuffer::create(ctx(), bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            if (!made) return made.error();
+            *buffer = std::move(made).value();
+        }
     }
     return {};
 }
@@ -134,6 +150,12 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     VkDescriptorImageInfo depth{pipelines.nearest.get(), copies.depth_view(with_scene_copy), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo shore_wave_info{shore.per_wave(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo shore_shared_info{shore.shared(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo body_infos[6] = {{slot.draws.handle(), 0, VK_WHOLE_SIZE},
+                                                  {bodies.river_texels.handle(), 0, VK_WHOLE_SIZE},
+                                                  {bodies.river_channel.handle(), 0, VK_WHOLE_SIZE},
+                                                  {bodies.masks.handle(), 0, VK_WHOLE_SIZE},
+                                                  {slot.river_waves.handle(), 0, VK_WHOLE_SIZE},
+                                                  {bodies.patches.handle(), 0, VK_WHOLE_SIZE}};
     VkWriteDescriptorSet w[detail::kFrameBindings];
     for (std::uint32_t i = 0; i < detail::kFrameBindings; ++i) {
         w[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -152,6 +174,10 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     w[5].descriptorType = w[6].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     w[5].pBufferInfo = &shore_wave_info;
     w[6].pBufferInfo = &shore_shared_info;
+    for (std::uint32_t i = 7; i < detail::kFrameBindings; ++i) {
+        w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        w[i].pBufferInfo = &body_infos[i - 7];
+    }
     vkUpdateDescriptorSets(ctx().device, detail::kFrameBindings, w, 0, nullptr);
 }
 
@@ -167,14 +193,20 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     slot = &slots[frame.frame_index % slots.size()];
     slot->recorded_frame = frame.frame_index;
-    plan = detail::plan_frame(frame, extent, ocean, terrain->placement, terrain->water_half_size, scene_copy);
+    plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy);
     if (const ShoreWaves* model = shore.model()) {
         const glm::dvec2 rel = model->corner() - plan.origin;
         plan.frame.shore_rect = glm::vec4(static_cast<float>(rel.x), static_cast<float>(rel.y), static_cast<float>(model->texel()),
                                           static_cast<float>(model->resolution()));
     }
+    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan.origin, plan.waves, plan.frame.water_patch,
+                                                            plan.patches_per_side * plan.patches_per_side, shore.model() != nullptr);
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
-    if (!plan.waves.empty()) std::memcpy(slot->waves.mapped(), plan.waves.data(), sizeof(gpu::GpuWave) * plan.waves.size());
+    if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
+    if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
+    if (!draws.river_waves.empty())
+        std::memcpy(slot->river_waves.mapped(), draws.river_waves.data(), sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
+    draw_patches = draws.patch_counts;
     write_descriptors(*slot, scene_copy);
     return {};
 }
@@ -184,7 +216,7 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const de
     detail::set_viewport(cmd, extent);
     const VkPipelineLayout layout = pipelines.layout.get();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, 16, &plan.terrain_mesh_offset);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, 16, &plan.terrain_mesh_offset);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.terrain_wire : pipelines.terrain).get());
     const VkDeviceSize offset = 0;
     const VkBuffer vb = terrain->vertices.handle();
@@ -201,9 +233,16 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
     detail::set_viewport(cmd, extent);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.water_wire : pipelines.water).get());
-    const std::uint32_t patches = plan.patches_per_side * plan.patches_per_side;
-    vkCmdDraw(cmd, 4, patches, 0, 0);
+    // One draw per body: the ocean, each lake, each river (water_draw.glsl).
+    std::uint64_t patches = 0;
+    for (std::uint32_t i = 0; i < draw_patches.size(); ++i) {
+        if (draw_patches[i] == 0) continue;
+        vkCmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, detail::kDrawIndexOffset, sizeof(i), &i);
+        vkCmdDraw(cmd, 4, draw_patches[i], 0, 0);
+        patches += draw_patches[i];
+    }
     last_patches = patches;
+    (void)plan;
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -261,17 +300,21 @@ Status Renderer::set_scene(const Scene& scene) {
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
                                                               "since its bake: pass it through bake_scene (or disable its shore) "
                                                               "before set_scene", scene.name)};
-    if (!scene.has_ocean)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: scene \"{}\" has no ocean; scenes of lakes and rivers "
-                                                         "alone are not drawn yet", scene.name)};
+    std::size_t waves = scene.has_ocean ? scene.ocean.waves().size() : 0, river_waves = 0;
+    for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
+    for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();
     vkDeviceWaitIdle(m.ctx().device);  // the old terrain may be in use by frames in flight
     auto terrain = detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain);
     if (!terrain) return terrain.error();
-    if (auto st = m.use_shore(scene.ocean.shore()); !st) return st;
+    auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
+    if (!bodies) return bodies.error();
+    if (auto st = m.size_slots(1 + scene.lakes.size() + scene.rivers.size(), waves, river_waves); !st) return st;
+    if (auto st = m.use_shore(scene.has_ocean ? scene.ocean.shore() : nullptr); !st) return st;
     m.terrain = std::move(terrain).value();
-    m.ocean = scene.ocean;
-    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves", scene.name, m.terrain->vertex_count,
-                      scene.ocean.waves().size()));
+    m.bodies = std::move(bodies).value();
+    m.scene = scene;
+    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves, {} lakes, {} rivers", scene.name,
+                      m.terrain->vertex_count, scene.ocean.waves().size(), scene.lakes.size(), scene.rivers.size()));
     return {};
 }
 
@@ -289,7 +332,14 @@ Status Renderer::set_water(const WaterBody& water) {
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
     // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
     if (auto st = impl_->use_shore(water.shore()); !st) return st;
-    impl_->ocean = water;
+    if (water.waves().size() > impl_->scene.ocean.waves().size()) {
+        // The frame's wave buffers hold the ocean's waves first: make room.
+        std::size_t waves = water.waves().size();
+        for (const SceneLake& lake : impl_->scene.lakes) waves += lake.body.waves().size();
+        vkDeviceWaitIdle(impl_->ctx().device);
+        if (auto st = impl_->size_slots(1 + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1); !st) return st;
+    }
+    impl_->scene.ocean = water;
     return {};
 }
 
@@ -350,7 +400,7 @@ RendererStats Renderer::stats() const {
     s.terrain_vertices = impl_->terrain ? impl_->terrain->vertex_count : 0;
     s.terrain_triangles = impl_->terrain ? impl_->terrain->index_count / 3 : 0;
     s.water_patches = impl_->last_patches;
-    s.waves = static_cast<std::uint32_t>(impl_->ocean.waves().size());
+    s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;
 }
 

@@ -38,10 +38,10 @@
 
 namespace tidewater::render {
 
-enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking };
+enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow };
 
 /// "shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe", "shore" (signed shore
-/// distance), "breaking" (where waves break).
+/// distance), "breaking" (where waves break), "flow" (a river's current speed).
 std::string_view to_string(DebugView view);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::span<const DebugView> all_debug_views();

@@ -1,0 +1,28 @@
+// What the water stages of one draw share: the draw's description (the ocean, a lake
+// or a river), the rivers' fields and waves, the lakes' masks and the patch list.
+// Descriptor set 0 bindings 7 to 12 (see Renderer); the push constant picks the draw.
+#ifndef TIDEWATER_WATER_DRAW_GLSL
+#define TIDEWATER_WATER_DRAW_GLSL
+
+layout(std430, set = 0, binding = 7) readonly buffer BodyDraws { GpuBodyDraw draws[]; };
+layout(std430, set = 0, binding = 8) readonly buffer RiverTexels { float river_texels[]; };   // kRiverQueryStride per texel
+layout(std430, set = 0, binding = 9) readonly buffer RiverChannel { vec4 river_channel[]; };  // s, n (m), flow x, z (m/s)
+layout(std430, set = 0, binding = 10) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks
+layout(std430, set = 0, binding = 11) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
+layout(std430, set = 0, binding = 12) readonly buffer PatchList { uint patch_list[]; };       // x | z << 16
+layout(push_constant) uniform DrawPush { layout(offset = 16) uint draw_index; } draw_push;
+
+// The draw whose river fields river_water.glsl reads (set before evaluating).
+GpuBodyDraw g_draw;
+vec4 g_channel;  // channel coordinates and current at the point the river's phases belong to
+
+#define RIVER_NX uint(g_draw.river.x)
+#define RIVER_NZ uint(g_draw.river.y)
+#define RIVER_TEXEL g_draw.grid.z
+#define RIVER_FIRST_TEXEL uint(g_draw.grid.w)
+#define RIVER_FIRST_WAVE uint(g_draw.river.z)
+#define RIVER_WAVE_COUNT uint(g_draw.river.w)
+#define RIVER_BASE_PHASE(i) fma(river_waves[RIVER_FIRST_WAVE + (i)].k_amp.x, g_channel.x, \
+                                fma(river_waves[RIVER_FIRST_WAVE + (i)].k_amp.y, g_channel.y, river_waves[RIVER_FIRST_WAVE + (i)].omega_phase.y))
+
+#endif
