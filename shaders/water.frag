@@ -125,7 +125,7 @@ void main() {
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     float foam = max(crest_foam(jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
     // A fast current churns white water.
-    foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)));
+    foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
     if (frame.shore_rect.w > 0.0 && d.extra.x > 0.5) {
         float d = shore_info.x;
         float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);

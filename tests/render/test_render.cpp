@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
@@ -369,6 +370,137 @@ TEST_F(RenderTest, BadFrameInputIsAnError) {
     EXPECT_FALSE(target_->render(*renderer_, frame).ok());
     EXPECT_FALSE(render::OffscreenTarget::create(context(), 0, 64).ok());
     EXPECT_FALSE(render::OffscreenTarget::create(context(), 100000, 64).ok());
+}
+
+// Lakes and rivers (issue: rivers and lakes).
+
+/// A river on a plane falling 4 m per km, bending and widening into a calm sea at x = 2500
+/// (a rolling sea would bare the 0.4% beach in its troughs far from the mouth).
+const char* kRiverScene = R"({ "version": 1, "name": "river", "water_level": 0.0,
+  "terrain": { "plane": { "height": 10.0, "slope": [-0.004, 0.0] } }, "ocean": "pool_calm", "shore": { "enabled": false },
+  "rivers": [ { "name": "bend", "path": [[-1500, 0], [-600, 120], [200, -80], [1200, 60], [2900, 40]],
+                "width": [40, 44, 50, 60, 70], "discharge": 60.0, "manning": 0.032 } ] })";
+
+// The river is drawn where it runs, at its falling surface, and nothing wet shows on the
+// dry land beside it (which stands above the river's surface).
+TEST_F(RenderTest, RiverIsDrawnWhereItRunsAndTheLandBesideItIsDry) {
+    const Scene scene = scene_from(kRiverScene);
+    render::FrameInfo frame;
+    frame.camera.position = {600.0, 160.0, -320.0};
+    frame.camera.target = {900.0, 0.0, 40.0};
+    frame.time = 2.0;
+    const auto img = render(scene, frame, 480, 270);
+    const auto& path = scene.rivers[0].path;
+    int river_points = 0, land_points = 0;
+    for (int k = 0; k <= 40; ++k) {
+        // Along the reach from (200, -80) to (1200, 60): the centreline and 120 m beside it.
+        const glm::dvec2 a = path[2], b = path[3];
+        const glm::dvec2 c = a + (b - a) * (k / 40.0);
+        const glm::dvec2 t = glm::normalize(b - a), left{-t.y, t.x};
+        const WorldPoint on = query_world_point(scene, frame.time, c);
+        ASSERT_EQ(on.body.kind, BodyKind::river) << k;
+        if (auto q = test::project(frame.camera, 480, 270, {c.x, on.surface.height, c.y})) {
+            const Rgb col = test::block(img, q->x, q->y, 1);
+            EXPECT_TRUE(is_water(col)) << "river at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " " << col.b;
+            ++river_points;
+        }
+        for (double side : {-120.0, 120.0}) {
+            const glm::dvec2 d = c + left * side;
+            ASSERT_EQ(query_world_point(scene, frame.time, d).body.kind, BodyKind::none);
+            if (auto q = test::project(frame.camera, 480, 270, {d.x, scene.terrain.height_at(d), d.y})) {
+                const Rgb col = test::block(img, q->x, q->y, 1);
+                EXPECT_TRUE(is_land(col)) << "dry land at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " " << col.b;
+                ++land_points;
+            }
+        }
+    }
+    EXPECT_GT(river_points, 20);
+    EXPECT_GT(land_points, 50);
+}
+
+// Where the river meets the sea the water is continuous: along the river's axis through its
+// mouth every pixel is water, and neighbouring pixels differ by no more than the waves do.
+TEST_F(RenderTest, RiverMeetsTheSeaWithoutASeam) {
+    const Scene scene = scene_from(kRiverScene);
+    render::FrameInfo frame;
+    frame.camera.position = {2200.0, 120.0, -260.0};
+    frame.camera.target = {2500.0, 0.0, 40.0};
+    frame.time = 4.0;
+    const auto img = render(scene, frame, 480, 270);
+    int samples = 0;
+    double worst_step = 0.0;
+    std::optional<Rgb> last;
+    for (int k = 0; k <= 120; ++k) {
+        const glm::dvec2 p{2300.0 + 400.0 * k / 120.0, 40.0};
+        const WorldPoint w = query_world_point(scene, frame.time, p);
+        ASSERT_NE(w.body.kind, BodyKind::none) << p.x;
+        const auto q = test::project(frame.camera, 480, 270, {p.x, w.surface.height, p.y});
+        if (!q) continue;
+        const Rgb col = test::block(img, q->x, q->y, 1);
+        EXPECT_TRUE(is_water(col)) << "at x = " << p.x << " (" << q->x << "," << q->y << "): " << col.r << " " << col.g << " " << col.b;
+        if (last) worst_step = std::max({worst_step, std::abs(col.r - last->r), std::abs(col.g - last->g), std::abs(col.b - last->b)});
+        last = col;
+        ++samples;
+    }
+    EXPECT_GT(samples, 60);
+    EXPECT_LT(worst_step, 0.2);
+}
+
+/// A bowl 500 m across in the hills: floor 10 m, rim 40 m at r = 300 m.
+Terrain bowl_terrain() {
+    auto image = std::make_shared<Gray16Image>();
+    image->width = image->height = 257;
+    image->pixels.resize(257 * 257);
+    for (int j = 0; j < 257; ++j)
+        for (int i = 0; i < 257; ++i) {
+            const double x = (i - 128) * 1000.0 / 256.0, z = (j - 128) * 1000.0 / 256.0;
+            const double h = 10.0 + 30.0 * (x * x + z * z) / (300.0 * 300.0);
+            image->pixels[static_cast<std::size_t>(j) * 257 + static_cast<std::size_t>(i)] =
+                static_cast<std::uint16_t>(std::lround(std::min(h, 100.0) / 100.0 * 65535.0));
+        }
+    HeightmapTerrain map;
+    map.file = "bowl";
+    map.size = {1000.0 * 257.0 / 256.0, 1000.0 * 257.0 / 256.0};
+    map.min_height = 0.0;
+    map.max_height = 100.0;
+    map.image = std::move(image);
+    return Terrain(map);
+}
+
+// A lake at 30 m in a bowl of an inland scene (no ocean): water inside its waterline
+// (r = 245 m), dry slopes outside it; the floor at 10 m would hide water at any lower level.
+TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
+    auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
+      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })", "lake.json");
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    parsed->terrain = bowl_terrain();
+    auto scene = test::baked(*parsed);
+    ASSERT_TRUE(scene) << scene.error().message;
+    render::FrameInfo frame;
+    frame.camera.position = {-420.0, 260.0, -420.0};
+    frame.camera.target = {0.0, 30.0, 0.0};
+    frame.time = 1.0;
+    const auto img = render(*scene, frame, 480, 270);
+    int water = 0, land = 0;
+    for (int a = 0; a < 24; ++a) {
+        const glm::dvec2 dir{std::cos(a * kPi / 12.0), std::sin(a * kPi / 12.0)};
+        for (double r : {0.0, 120.0, 220.0}) {
+            const glm::dvec2 p = dir * r;
+            if (auto q = test::project(frame.camera, 480, 270, {p.x, 30.0, p.y})) {
+                const Rgb col = test::block(img, q->x, q->y, 1);
+                EXPECT_TRUE(is_water(col)) << "lake at r = " << r << ": " << col.r << " " << col.g << " " << col.b;
+                ++water;
+            }
+        }
+        const glm::dvec2 p = dir * 285.0;  // the slope 8 m above the lake
+        if (auto q = test::project(frame.camera, 480, 270, {p.x, scene->terrain.height_at(p), p.y})) {
+            const Rgb col = test::block(img, q->x, q->y, 1);
+            EXPECT_TRUE(is_land(col)) << "slope at angle " << a << ": " << col.r << " " << col.g << " " << col.b;
+            ++land;
+        }
+    }
+    EXPECT_GT(water, 40);
+    EXPECT_GT(land, 12);
 }
 
 }  // namespace
