@@ -107,7 +107,7 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of a sequence")->capture_default_str();
     cmd->add_option("--out-dir", args->out_dir, "Folder for frame_NNNN.png");
-    cmd->add_option("--view", args->view, "shaded, height, normals, jacobian, depth, lod, wireframe, shore or breaking")->capture_default_str();
+    cmd->add_option("--view", args->view, "shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking or flow")->capture_default_str();
     cmd->add_option("--stats", args->stats, "Write per-pass GPU times, the device and counts as JSON");
     cmd->add_option("--camera", args->camera, "Camera position x y z, m")->expected(3);
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);
