@@ -143,7 +143,7 @@ struct GpuFlowDetail {
 
 // What one GPU query dispatch solves. Still water (a body's waves, with its shore
 // fields when shore_resolution > 0) is evaluated at cell_origin + local; in river mode
-// (river_wave_count > 0 or river_size.x > 0) cell origins are relative to the river
+// (river_nx > 0) cell origins are relative to the river
 // grid's corner, the river's water is evaluated there, and the still water's waves
 // join it with the river's still weight when `still` is 1 (a mouth or plume).
 // One water draw of a frame: the ocean, a lake or a river. Counts and indices are
