@@ -38,6 +38,15 @@ same_heights() {
 
 printf 'x,z\n0,0\n12.5,-3\n1200,400\n' > points.csv
 
+# A river on a plane falling 1% toward the sea at x = 2000: river.json.
+write_mill_scene() {
+  cat > river.json <<'JSON'
+{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
+  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
+  "rivers": [ { "name": "mill", "path": [[-1500, 0], [-500, 200], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
+JSON
+}
+
 case "$CASE" in
   help)
     for verb in query bench demo; do
@@ -60,11 +69,7 @@ case "$CASE" in
     check "unit normals" bash -c "awk -F, 'NR>1 { n=\$4*\$4+\$5*\$5+\$6*\$6; if (n<0.999999 || n>1.000001) bad=1 } END {exit bad}' out.csv"
     ;;
   query_river)
-    cat > river.json <<'JSON'
-{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
-  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
-  "rivers": [ { "name": "mill", "path": [[-1500, 0], [-500, 200], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
-JSON
+    write_mill_scene
     printf 'x,z\n-1000,100\n0,500\n2500,0\n' > river_points.csv
     "$TW" query --scene river.json --time 3 --points river_points.csv --out river_out.csv
     check "exit 0" test $? -eq 0
@@ -107,11 +112,7 @@ JSON
     check "same rows" test "$(wc -l < gpu.csv)" -eq "$(wc -l < cpu.csv)"
     check "heights within 1 mm, normals within 1e-3" bash -c "paste -d, cpu.csv gpu.csv | awk -F, 'NR>1 { h=NF/2; d=\$4-\$(4+h); if (d<0) d=-d; if (d>1e-3) bad=1; for (i=5;i<=7;i++) { e=\$i-\$(i+h); if (e<0) e=-e; if (e>1e-3) bad=1 } } END {exit bad}'"
     expect_error "unknown backend" "--backend" "$TW" query --backend tpu --time 0 --points points.csv
-    cat > river.json <<'JSON'
-{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
-  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
-  "rivers": [ { "name": "mill", "path": [[-1500, 0], [-500, 200], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
-JSON
+    write_mill_scene
     printf 'x,z\n-1000,100\n-990,102\n0,500\n2500,0\n2290,3\n' > river_points.csv
     "$TW" query --scene river.json --time 3 --points river_points.csv --out cpu_river.csv
     "$TW" query --scene river.json --backend gpu --time 3 --points river_points.csv --out gpu_river.csv

@@ -16,6 +16,7 @@
 #include "tidewater/floating_body.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/world_query.hpp"
+#include "../bowl_terrain.hpp"
 
 namespace tidewater {
 namespace {
@@ -172,32 +173,11 @@ TEST(WorldQuery, KernelMatchesTheDoubleReference) {
     EXPECT_LT(worst_velocity, 1e-3) << "m/s";
 }
 
-/// A bowl 500 m across in the hills: floor 10 m, rim 40 m at r = 300 m.
-Terrain bowl() {
-    auto image = std::make_shared<Gray16Image>();
-    image->width = image->height = 257;
-    image->pixels.resize(257 * 257);
-    for (int j = 0; j < 257; ++j)
-        for (int i = 0; i < 257; ++i) {
-            const double x = (i - 128) * 1000.0 / 256.0, z = (j - 128) * 1000.0 / 256.0;
-            const double h = 10.0 + 30.0 * (x * x + z * z) / (300.0 * 300.0);
-            image->pixels[static_cast<std::size_t>(j) * 257 + static_cast<std::size_t>(i)] =
-                static_cast<std::uint16_t>(std::lround(std::min(h, 100.0) / 100.0 * 65535.0));
-        }
-    HeightmapTerrain map;
-    map.file = "bowl";
-    map.size = {1000.0 * 257.0 / 256.0, 1000.0 * 257.0 / 256.0};
-    map.min_height = 0.0;
-    map.max_height = 100.0;
-    map.image = std::move(image);
-    return Terrain(map);
-}
-
 TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
     auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
       "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })", "lake.json");
     ASSERT_TRUE(parsed) << parsed.error().message;
-    parsed->terrain = bowl();
+    parsed->terrain = test::bowl_terrain();
     const auto scene = bake_or_die(*parsed);
     ASSERT_TRUE(scene->lakes[0].body.shore()) << "the lake has its own shore model";
     auto spread = [&](glm::dvec2 p) {

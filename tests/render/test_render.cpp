@@ -10,6 +10,7 @@
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
 #include "../baked_scene.hpp"
+#include "../bowl_terrain.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/render/standalone.hpp"
@@ -446,34 +447,13 @@ TEST_F(RenderTest, RiverMeetsTheSeaWithoutASeam) {
     EXPECT_LT(worst_step, 0.2);
 }
 
-/// A bowl 500 m across in the hills: floor 10 m, rim 40 m at r = 300 m.
-Terrain bowl_terrain() {
-    auto image = std::make_shared<Gray16Image>();
-    image->width = image->height = 257;
-    image->pixels.resize(257 * 257);
-    for (int j = 0; j < 257; ++j)
-        for (int i = 0; i < 257; ++i) {
-            const double x = (i - 128) * 1000.0 / 256.0, z = (j - 128) * 1000.0 / 256.0;
-            const double h = 10.0 + 30.0 * (x * x + z * z) / (300.0 * 300.0);
-            image->pixels[static_cast<std::size_t>(j) * 257 + static_cast<std::size_t>(i)] =
-                static_cast<std::uint16_t>(std::lround(std::min(h, 100.0) / 100.0 * 65535.0));
-        }
-    HeightmapTerrain map;
-    map.file = "bowl";
-    map.size = {1000.0 * 257.0 / 256.0, 1000.0 * 257.0 / 256.0};
-    map.min_height = 0.0;
-    map.max_height = 100.0;
-    map.image = std::move(image);
-    return Terrain(map);
-}
-
 // A lake at 30 m in a bowl of an inland scene (no ocean): water inside its waterline
 // (r = 245 m), dry slopes outside it; the floor at 10 m would hide water at any lower level.
 TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
     auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
       "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })", "lake.json");
     ASSERT_TRUE(parsed) << parsed.error().message;
-    parsed->terrain = bowl_terrain();
+    parsed->terrain = test::bowl_terrain();
     auto scene = test::baked(*parsed);
     ASSERT_TRUE(scene) << scene.error().message;
     render::FrameInfo frame;
