@@ -33,7 +33,6 @@ layout(push_constant) uniform Push { GpuQueryParams params; };
 #define RIVER_FIRST_TEXEL 0u
 #define RIVER_FIRST_WAVE 0u
 #define RIVER_WAVE_COUNT params.river_wave_count
-#define RIVER_BASE_PHASE(i) fma(river_waves[i].k_amp.x, g_channel.x, fma(river_waves[i].k_amp.y, g_channel.y, river_waves[i].omega_phase.y))
 #define TW_WATER_NEWTON
 GpuQueryPoint g_point;
 vec4 g_channel;  // the query point's channel coordinates and current (river mode)
@@ -54,15 +53,9 @@ SurfaceSums still_water_at(vec2 e) {
 
 SurfaceSums water_at_offset(vec2 e) {
     if (!river_mode()) return still_water_at(e);
-    SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, 0.0);
+    SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, g_channel.xy, 0.0);
     if (params.still > 0.5) add_scaled(s, still_water_at(e), g_river_still_weight);
     return s;
-}
-
-// Bilinear channel fields at a point relative to the river grid's corner.
-vec4 channel_at(vec2 rel) {
-    RiverTap t = river_tap(rel);
-    return t.w.x * river_channel[t.k00] + t.w.y * river_channel[t.k10] + t.w.z * river_channel[t.k01] + t.w.w * river_channel[t.k11];
 }
 
 void main() {
@@ -72,7 +65,8 @@ void main() {
     vec2 at = cell_origin[g_point.cell] + g_point.local;
     // Depth and shore distance belong to the query point itself (rest offset 0).
     vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(at - params.shore_offset)) : kOpenWaterShore;
-    g_channel = river_mode() ? channel_at(at) : vec4(0.0);
+    RiverTap at_tap = river_tap(at);  // river mode only
+    g_channel = river_mode() ? river_channel_at(at_tap) : vec4(0.0);
     NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset));
     GpuQueryResult r;
     // First-order carry to the final step, as on the CPU.
@@ -80,9 +74,8 @@ void main() {
     // The river's current joins the particles' orbital velocity.
     r.velocity_jac = vec4(n.sums.velocity + vec3(g_channel.z, 0.0, g_channel.w), surface_jacobian(n.sums));
     r.disp_iter = vec4(-(n.e + n.step_e), n.iterations, n.converged);
-    float depth = at_point.x;
-    if (river_mode()) depth = river_field(river_tap(at), kRiverQueryDepth);
-    float still_surface = river_mode() ? river_field(river_tap(at), kRiverQuerySurface) : 0.0;
+    float depth = river_mode() ? river_field(at_tap, kRiverQueryDepth) : at_point.x;
+    float still_surface = river_mode() ? river_field(at_tap, kRiverQuerySurface) : 0.0;
     r.shore = vec4(depth, at_point.w, g_shore_fields.y, still_surface);
     vec2 detail = params.flow.params.z > 0.0 && river_mode() ? flow_detail_slope(at, g_channel.zw, params.flow) : vec2(0.0);
     r.flow = vec4(g_channel.zw, detail);

@@ -6,10 +6,9 @@
 // the sums: its height above the mouth level and its gradient).
 //
 // The includer declares river_texels[] (kRiverQueryStride floats per texel of this
-// river, from RIVER_FIRST_TEXEL), river_waves[] (GpuRiverWave) and defines RIVER_NX,
-// RIVER_NZ, RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_FIRST_WAVE, RIVER_WAVE_COUNT and
-// RIVER_BASE_PHASE(i):
-// wave i's phase at the point the rest offsets are measured from.
+// river, from RIVER_FIRST_TEXEL), river_channel[] (s, n, flow x, z per texel, from the
+// same index) and river_waves[] (GpuRiverWave), and defines RIVER_NX, RIVER_NZ,
+// RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_FIRST_WAVE and RIVER_WAVE_COUNT.
 #ifndef TIDEWATER_RIVER_WATER_GLSL
 #define TIDEWATER_RIVER_WATER_GLSL
 
@@ -41,15 +40,28 @@ float river_field(RiverTap t, uint field) {
            t.w.z * river_texels[base + t.k01 * kRiverQueryStride] + t.w.w * river_texels[base + t.k11 * kRiverQueryStride];
 }
 
+// Channel coordinates (s, n, m) and current (m/s) at a tap.
+vec4 river_channel_at(RiverTap t) {
+    uint first = RIVER_FIRST_TEXEL;
+    return t.w.x * river_channel[first + t.k00] + t.w.y * river_channel[first + t.k10] + t.w.z * river_channel[first + t.k01] +
+           t.w.w * river_channel[first + t.k11];
+}
+
+// A river wave's phase at channel coordinates sn (the CPU's base_phases in the channel
+// frame, with the offset reduced on the host).
+float river_wave_phase(GpuRiverWave w, vec2 sn) {
+    return fma(w.k_amp.x, sn.x, fma(w.k_amp.y, sn.y, w.omega_phase.y));
+}
+
 // The still water's share at the last evaluated rest position (PlumeWater's weight).
 float g_river_still_weight = 0.0;
 // The still water column there, m.
 float g_river_depth = 0.0;
 
 // The river's sums at rest position `rel` (m, from the river grid's corner), with rest
-// offset `e` from the point its base phases belong to. `fade_spacing` > 0 fades short
-// waves for render LOD (queries pass 0).
-SurfaceSums river_water_at(vec2 rel, vec2 e, float fade_spacing) {
+// offset `e` from the point whose channel coordinates are `sn` (the point the phases
+// are formed at). `fade_spacing` > 0 fades short waves for render LOD (queries pass 0).
+SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, float fade_spacing) {
     RiverTap t = river_tap(rel);
     uint base = RIVER_FIRST_TEXEL * kRiverQueryStride;
     float surface = river_field(t, kRiverQuerySurface);
@@ -72,7 +84,7 @@ SurfaceSums river_water_at(vec2 rel, vec2 e, float fade_spacing) {
     for (uint i = 0u; i < RIVER_WAVE_COUNT; ++i) {
         GpuRiverWave w = river_waves[RIVER_FIRST_WAVE + i];
         vec2 kvec = w.k_amp.x * tangent + w.k_amp.y * left;
-        float theta = fma(kvec.x, e.x, fma(kvec.y, e.y, RIVER_BASE_PHASE(i)));
+        float theta = fma(kvec.x, e.x, fma(kvec.y, e.y, river_wave_phase(w, sn)));
         float a = w.k_amp.z * ramp;
         if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);
         add_wave(s, kvec, a, w.k_amp.w, w.omega_phase.x, theta);

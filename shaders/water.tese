@@ -30,13 +30,6 @@ layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: b
 layout(location = 7) out float rest_level; // the still surface here, world y (m)
 layout(location = 8) out vec2 current;     // a river's current (m/s)
 
-vec4 channel_at(vec2 rel) {
-    RiverTap t = river_tap(rel);
-    uint first = RIVER_FIRST_TEXEL;
-    return t.w.x * river_channel[first + t.k00] + t.w.y * river_channel[first + t.k10] + t.w.z * river_channel[first + t.k01] +
-           t.w.w * river_channel[first + t.k11];
-}
-
 void main() {
     g_draw = draws[draw_push.draw_index];
     g_wave_first = uint(g_draw.body.z);
@@ -50,11 +43,12 @@ void main() {
     current = vec2(0.0);
     if (uint(g_draw.body.x) == kBodyRiver) {
         vec2 rel = rest_xz - g_draw.grid.xy;
-        g_channel = channel_at(rel);
-        s = river_water_at(rel, vec2(0.0), spacing);
+        RiverTap tap = river_tap(rel);
+        vec4 channel = river_channel_at(tap);
+        s = river_water_at(rel, vec2(0.0), channel.xy, spacing);
         if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing), g_river_still_weight);
-        rest_level += river_field(river_tap(rel), kRiverQuerySurface);
-        current = g_channel.zw;
+        rest_level += river_field(tap, kRiverQuerySurface);
+        current = channel.zw;
     } else {
         s = water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing);
     }

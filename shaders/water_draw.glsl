@@ -14,7 +14,6 @@ layout(push_constant) uniform DrawPush { layout(offset = 16) uint draw_index; } 
 
 // The draw whose river fields river_water.glsl reads (set before evaluating).
 GpuBodyDraw g_draw;
-vec4 g_channel;  // channel coordinates and current at the point the river's phases belong to
 
 #define RIVER_NX uint(g_draw.river.x)
 #define RIVER_NZ uint(g_draw.river.y)
@@ -22,7 +21,5 @@ vec4 g_channel;  // channel coordinates and current at the point the river's pha
 #define RIVER_FIRST_TEXEL uint(g_draw.grid.w)
 #define RIVER_FIRST_WAVE uint(g_draw.river.z)
 #define RIVER_WAVE_COUNT uint(g_draw.river.w)
-#define RIVER_BASE_PHASE(i) fma(river_waves[RIVER_FIRST_WAVE + (i)].k_amp.x, g_channel.x, \
-                                fma(river_waves[RIVER_FIRST_WAVE + (i)].k_amp.y, g_channel.y, river_waves[RIVER_FIRST_WAVE + (i)].omega_phase.y))
 
 #endif

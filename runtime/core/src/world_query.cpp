@@ -40,18 +40,6 @@ Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies
     return {};
 }
 
-/// Land in a scene without an ocean: the terrain itself.
-void fill_land(const Scene& scene, Group& group) {
-    const Terrain& terrain = scene.bake ? scene.bake->terrain : scene.terrain;
-    for (std::size_t k = 0; k < group.points.size(); ++k) {
-        SurfacePoint& o = group.results[k];
-        o = SurfacePoint{};
-        o.height = terrain.height_at(group.points[k]);
-        o.depth = 0.0;
-        o.wet = false;
-    }
-}
-
 Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                  const QueryOptions& options) {
     const detail::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
@@ -69,7 +57,9 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
         const detail::EvaluationKey key = finder.evaluation_key(g);
         Status st;
         switch (key.kind) {
-            case detail::EvaluationKind::land: fill_land(scene, group); break;
+            case detail::EvaluationKind::land:
+                for (std::size_t k = 0; k < group.points.size(); ++k) group.results[k] = detail::land_surface(scene, group.points[k]);
+                break;
             case detail::EvaluationKind::ocean: st = query_surface(scene.ocean, time, group.points, group.results, options); break;
             case detail::EvaluationKind::lake:
                 st = query_surface(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, group.points, group.results, options);
@@ -77,17 +67,9 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
             case detail::EvaluationKind::river: st = run_river_group(scene, *bodies, key, time, group, options); break;
         }
         if (!st) return st;
-        const double still_level = key.kind == detail::EvaluationKind::ocean ? scene.water_level()
-                                   : key.kind == detail::EvaluationKind::lake
-                                       ? scene.lakes[static_cast<std::size_t>(key.lake)].body.level()
-                                       : 0.0;
         for (std::size_t k = 0; k < group.members.size(); ++k) {
             const std::size_t i = group.members[k];
-            out[i].surface = group.results[k];
-            if (key.kind == detail::EvaluationKind::ocean || key.kind == detail::EvaluationKind::lake)
-                detail::settle_on_terrain(out[i].surface, where[i], still_level);
-            out[i].body = where[i].body;
-            out[i].flow = where[i].flow;
+            out[i] = detail::world_point(scene, key, where[i], group.results[k], where[i].flow);
         }
     }
     return {};

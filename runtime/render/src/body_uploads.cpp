@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "frame_constants.hpp"
 #include "tidewater/detail/body_finder.hpp"
@@ -15,42 +14,68 @@ namespace {
 
 namespace td = tidewater::detail;
 
-/// The patches of an nx x nz grid (texel m, patch m) that hold a texel where `wet`,
-/// grown by one patch so that displaced water at their edges is drawn.
-template <typename Wet>
-std::vector<std::uint32_t> wet_patches(int nx, int nz, double texel, double patch, Wet wet) {
-    const int per = std::max(1, static_cast<int>(std::round(patch / texel)));
+/// The patches of `per` x `per` texels of an nx x nz grid that hold a texel where `wet`
+/// (nx * nz flags), grown by one patch so that displaced water at their edges is drawn.
+std::vector<std::uint32_t> wet_patches(int nx, int nz, int per, const std::vector<std::uint8_t>& wet) {
     const int px = (nx + per - 1) / per, pz = (nz + per - 1) / per;
-    std::vector<std::uint8_t> hit(static_cast<std::size_t>(px) * static_cast<std::size_t>(pz), 0);
+    auto at = [](int i, int j, int row) { return static_cast<std::size_t>(j) * static_cast<std::size_t>(row) + static_cast<std::size_t>(i); };
+    std::vector<std::uint8_t> hit(at(0, pz, px), 0);
     for (int j = 0; j < nz; ++j)
         for (int i = 0; i < nx; ++i)
-            if (wet(i, j)) hit[static_cast<std::size_t>(j / per) * static_cast<std::size_t>(px) + static_cast<std::size_t>(i / per)] = 1;
+            if (wet[at(i, j, nx)]) hit[at(i / per, j / per, px)] = 1;
     std::vector<std::uint32_t> out;
     for (int b = 0; b < pz; ++b)
         for (int a = 0; a < px; ++a) {
             bool near = false;
-            for (int db = -1; db <= 1 && !near; ++db)
-                for (int da = -1; da <= 1 && !near; ++da) {
-                    const int x = a + da, z = b + db;
-                    near = x >= 0 && z >= 0 && x < px && z < pz && hit[static_cast<std::size_t>(z) * static_cast<std::size_t>(px) + static_cast<std::size_t>(x)];
-                }
+            for (int z = std::max(b - 1, 0); z <= std::min(b + 1, pz - 1) && !near; ++z)
+                for (int x = std::max(a - 1, 0); x <= std::min(a + 1, px - 1) && !near; ++x) near = hit[at(x, z, px)] != 0;
             if (near) out.push_back(static_cast<std::uint32_t>(a) | (static_cast<std::uint32_t>(b) << 16));
         }
     return out;
 }
 
-Result<GpuBuffer> upload(const DeviceContext& ctx, const void* data, std::size_t bytes) {
-    auto made = GpuBuffer::create(ctx, std::max<std::size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    if (!made) return made.error();
-    if (bytes > 0) std::memcpy(made->mapped(), data, bytes);
-    return made;
+/// A lake's extent grown by one texel: the terrain hides the water above it.
+std::vector<std::uint8_t> grown_extent(const td::LakeBake& lake) {
+    const td::FieldGrid& g = lake.grid;
+    std::vector<std::uint8_t> out(g.size(), 0);
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            if (!lake.inside[g.index(i, j)]) continue;
+            for (int z = std::max(j - 1, 0); z <= std::min(j + 1, g.nz - 1); ++z)
+                for (int x = std::max(i - 1, 0); x <= std::min(i + 1, g.nx - 1); ++x) out[g.index(x, z)] = 1;
+        }
+    return out;
 }
 
 glm::vec2 rel(glm::dvec2 p, glm::dvec2 origin) {
     return glm::vec2(static_cast<float>(p.x - origin.x), static_cast<float>(p.y - origin.y));
 }
 
+/// A body's layout on `grid` with patches of about `patch` m, its texels from `first`.
+BodyLayout layout_on(const td::FieldGrid& grid, double patch, std::size_t first, const std::vector<std::uint8_t>& wet,
+                     std::vector<std::uint32_t>& patches) {
+    BodyLayout l;
+    l.corner = grid.corner;
+    l.texel = grid.texel;
+    l.nx = grid.nx;
+    l.nz = grid.nz;
+    l.first_texel = static_cast<std::uint32_t>(first);
+    const int per = std::max(1, static_cast<int>(std::round(patch / grid.texel)));
+    l.patch = per * grid.texel;
+    const auto list = wet_patches(grid.nx, grid.nz, per, wet);
+    l.first_patch = static_cast<std::uint32_t>(patches.size());
+    l.patch_count = static_cast<std::uint32_t>(list.size());
+    patches.insert(patches.end(), list.begin(), list.end());
+    return l;
+}
+
 }  // namespace
+
+void append_river_fields(const td::RiverBake& river, std::vector<float>& texels, std::vector<glm::vec4>& channel) {
+    texels.insert(texels.end(), river.query_texels.begin(), river.query_texels.end());
+    for (std::size_t t = 0; t < river.grid.size(); ++t)
+        channel.emplace_back(river.channel_s[t], river.channel_n[t], river.flow_x[t], river.flow_z[t]);
+}
 
 Result<BodyBuffers> BodyBuffers::create(const DeviceContext& ctx, const Scene& scene) {
     BodyBuffers b;
@@ -60,64 +85,29 @@ Result<BodyBuffers> BodyBuffers::create(const DeviceContext& ctx, const Scene& s
     const td::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
     if (bodies) {
         for (const td::RiverBake& r : bodies->rivers) {
-            BodyLayout l;
-            l.corner = r.grid.corner;
-            l.texel = r.grid.texel;
-            l.nx = r.grid.nx;
-            l.nz = r.grid.nz;
-            l.first_texel = static_cast<std::uint32_t>(channel.size());
-            l.first_mask = static_cast<std::uint32_t>(masks.size());
-            l.patch = std::max(8.0, 4.0 * r.grid.texel);
-            texels.insert(texels.end(), r.query_texels.begin(), r.query_texels.end());
+            std::vector<std::uint8_t> wet(r.texel.size());
+            for (std::size_t t = 0; t < wet.size(); ++t) wet[t] = r.texel[t] != 0;
+            BodyLayout l = layout_on(r.grid, std::max(8.0, 4.0 * r.grid.texel), masks.size(), wet, patches);
+            append_river_fields(r, texels, channel);
             for (std::size_t t = 0; t < r.grid.size(); ++t) {
-                channel.emplace_back(r.channel_s[t], r.channel_n[t], r.flow_x[t], r.flow_z[t]);
                 masks.push_back(static_cast<float>(r.texel[t]));
-                if (r.texel[t] != 0) l.surface_rise = std::max(l.surface_rise, static_cast<double>(r.surface_height[t]) - r.mouth_level);
+                if (wet[t]) l.surface_rise = std::max(l.surface_rise, static_cast<double>(r.surface_height[t]) - r.mouth_level);
             }
-            const auto list = wet_patches(r.grid.nx, r.grid.nz, r.grid.texel, l.patch,
-                                          [&](int i, int j) { return r.texel[r.grid.index(i, j)] != 0; });
-            l.first_patch = static_cast<std::uint32_t>(patches.size());
-            l.patch_count = static_cast<std::uint32_t>(list.size());
-            l.patch = std::max(1, static_cast<int>(std::round(l.patch / r.grid.texel))) * r.grid.texel;
-            patches.insert(patches.end(), list.begin(), list.end());
             b.rivers.push_back(l);
         }
         for (const td::LakeBake& lake : bodies->lakes) {
-            const td::FieldGrid& g = lake.grid;
-            BodyLayout l;
-            l.corner = g.corner;
-            l.texel = g.texel;
-            l.nx = g.nx;
-            l.nz = g.nz;
-            l.first_mask = static_cast<std::uint32_t>(masks.size());
-            l.first_texel = l.first_mask;
-            l.patch = std::max(16.0, 2.0 * g.texel);
-            // The extent grown by a texel: the terrain hides the water above it.
-            auto inside = [&](int i, int j) {
-                for (int dj = -1; dj <= 1; ++dj)
-                    for (int di = -1; di <= 1; ++di) {
-                        const int x = i + di, z = j + dj;
-                        if (x >= 0 && z >= 0 && x < g.nx && z < g.nz && lake.inside[g.index(x, z)]) return true;
-                    }
-                return false;
-            };
-            for (int j = 0; j < g.nz; ++j)
-                for (int i = 0; i < g.nx; ++i) masks.push_back(inside(i, j) ? 1.0f : 0.0f);
-            const auto list = wet_patches(g.nx, g.nz, g.texel, l.patch, inside);
-            l.first_patch = static_cast<std::uint32_t>(patches.size());
-            l.patch_count = static_cast<std::uint32_t>(list.size());
-            l.patch = std::max(1, static_cast<int>(std::round(l.patch / g.texel))) * g.texel;
-            patches.insert(patches.end(), list.begin(), list.end());
-            b.lakes.push_back(l);
+            const std::vector<std::uint8_t> extent = grown_extent(lake);
+            b.lakes.push_back(layout_on(lake.grid, std::max(16.0, 2.0 * lake.grid.texel), masks.size(), extent, patches));
+            for (std::uint8_t v : extent) masks.push_back(static_cast<float>(v));
         }
     }
-    auto t = upload(ctx, texels.data(), texels.size() * sizeof(float));
+    auto t = GpuBuffer::storage_with(ctx, texels.data(), texels.size() * sizeof(float));
     if (!t) return t.error();
-    auto c = upload(ctx, channel.data(), channel.size() * sizeof(glm::vec4));
+    auto c = GpuBuffer::storage_with(ctx, channel.data(), channel.size() * sizeof(glm::vec4));
     if (!c) return c.error();
-    auto m = upload(ctx, masks.data(), masks.size() * sizeof(float));
+    auto m = GpuBuffer::storage_with(ctx, masks.data(), masks.size() * sizeof(float));
     if (!m) return m.error();
-    auto p = upload(ctx, patches.data(), patches.size() * sizeof(std::uint32_t));
+    auto p = GpuBuffer::storage_with(ctx, patches.data(), patches.size() * sizeof(std::uint32_t));
     if (!p) return p.error();
     b.river_texels = std::move(t).value();
     b.river_channel = std::move(c).value();
@@ -126,15 +116,14 @@ Result<BodyBuffers> BodyBuffers::create(const DeviceContext& ctx, const Scene& s
     return b;
 }
 
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, glm::dvec2 origin,
-                          const std::vector<gpu::GpuWave>& ocean_waves, const glm::vec4& ocean_patch, std::uint32_t ocean_patches,
-                          bool ocean_shore) {
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, bool ocean_shore) {
     BodyDraws out;
+    const glm::dvec2 origin = plan.origin;
     const float first_river = (scene.has_ocean ? 1.0f : 0.0f) + static_cast<float>(scene.lakes.size());
     const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), 0.0f, 0.0f);
     // Each still body's waves: where they start in the frame's wave buffer.
     std::vector<std::uint32_t> lake_first(scene.lakes.size(), 0);
-    if (scene.has_ocean) out.waves = ocean_waves;
+    if (scene.has_ocean) out.waves = plan.waves;
     const std::uint32_t ocean_count = static_cast<std::uint32_t>(out.waves.size());
     for (std::size_t l = 0; l < scene.lakes.size(); ++l) {
         lake_first[l] = static_cast<std::uint32_t>(out.waves.size());
@@ -146,12 +135,13 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
     };
     if (scene.has_ocean) {
         gpu::GpuBodyDraw d{};
-        d.patch_grid = glm::vec4(ocean_patch.z, ocean_patch.w, ocean_patch.x, ocean_patch.y);
+        const glm::vec4& grid = plan.frame.water_patch;  // size, per side, corner
+        d.patch_grid = glm::vec4(grid.z, grid.w, grid.x, grid.y);
         d.body = glm::vec4(static_cast<float>(gpu::kBodyOcean), static_cast<float>(scene.water_level()), 0.0f, static_cast<float>(ocean_count));
         d.extra = glm::vec4(ocean_shore ? 1.0f : 0.0f, 0.0f, 0.0f, static_cast<float>(displacement(scene.ocean)));
         d.rivers = rivers;
         out.draws.push_back(d);
-        out.patch_counts.push_back(ocean_patches);
+        out.patch_counts.push_back(plan.patches_per_side * plan.patches_per_side);
     }
     for (std::size_t l = 0; l < scene.lakes.size() && l < bodies.lakes.size(); ++l) {
         const BodyLayout& b = bodies.lakes[l];
@@ -161,7 +151,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.patch_grid = glm::vec4(corner, static_cast<float>(b.patch), 0.0f);
         d.body = glm::vec4(static_cast<float>(gpu::kBodyLake), static_cast<float>(lake.level()), static_cast<float>(lake_first[l]),
                            static_cast<float>(lake.waves().size()));
-        d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_mask));
+        d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_texel));
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), 0.0f, 0.0f);
         d.extra = glm::vec4(0.0f, static_cast<float>(b.first_patch), 0.0f, static_cast<float>(displacement(lake)));
         d.rivers = rivers;
@@ -185,17 +175,12 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
                            static_cast<float>(still_count));
         d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_texel));
         const std::uint32_t first_wave = static_cast<std::uint32_t>(out.river_waves.size());
-        double river_displacement = 0.0;
-        for (const auto& w : tidewater::detail::river_waves_at(preset.waves(), preset.local_time(time), river.mean_speed)) {
-            out.river_waves.push_back({glm::vec4(static_cast<float>(w.k_s), static_cast<float>(w.k_n), static_cast<float>(w.amplitude),
-                                                 static_cast<float>(w.steepness)),
-                                       glm::vec4(static_cast<float>(w.omega), static_cast<float>(w.offset), 0.0f, 0.0f)});
-            river_displacement += w.amplitude;
-        }
+        const auto river_waves = gpu_river_waves(preset, time, river.mean_speed);
+        out.river_waves.insert(out.river_waves.end(), river_waves.begin(), river_waves.end());
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), static_cast<float>(first_wave),
                             static_cast<float>(out.river_waves.size() - first_wave));
         d.extra = glm::vec4(into_ocean && ocean_shore ? 1.0f : 0.0f, static_cast<float>(b.first_patch), static_cast<float>(b.surface_rise),
-                            static_cast<float>(river_displacement + (still_count > 0 ? displacement(still) : 0.0)));
+                            static_cast<float>(displacement(preset) + (still_count > 0 ? displacement(still) : 0.0)));
         d.rivers = rivers;
         d.flow = gpu_flow_detail(preset.profile().flow, preset.local_time(time), b.corner);
         out.draws.push_back(d);

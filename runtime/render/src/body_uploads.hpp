@@ -1,9 +1,10 @@
 // Lakes and rivers on the GPU (private): their static fields, uploaded once per scene,
 // and the per-frame draws that evaluate them (shaders/water_draw.glsl).
 //   river fields  each river's query texels (kRiverQueryStride floats) and channel
-//                 (s, n, flow x, z) per texel, one after another;
+//                 (s, n, flow x, z) per texel, one river after another;
 //   body masks    each river's texel kinds, then each lake's extent (grown by a texel:
-//                 the terrain hides what lies above it);
+//                 the terrain hides what lies above it). Rivers come first, so a river's
+//                 texels have the same index in its fields and in the masks;
 //   patch list    the patches of each body's grid that hold its water.
 #pragma once
 
@@ -13,9 +14,11 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include "frame_constants.hpp"
 #include "gpu_memory.hpp"
 #include "host_device.h"
 #include "tidewater/render/device_context.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater::render::detail {
@@ -25,9 +28,8 @@ struct BodyLayout {
     glm::dvec2 corner{0.0};  ///< grid corner, world xz, m
     double texel = 1.0;      ///< m
     int nx = 0, nz = 0;
-    std::uint32_t first_texel = 0;  ///< river fields (rivers) or body masks (both)
-    std::uint32_t first_mask = 0;
-    double patch = 8.0;             ///< m
+    std::uint32_t first_texel = 0;  ///< in the body masks (and a river's in its fields)
+    double patch = 8.0;             ///< m, a whole number of texels
     std::uint32_t first_patch = 0, patch_count = 0;
     double surface_rise = 0.0;      ///< highest rest surface above the level, m
 };
@@ -40,6 +42,10 @@ struct BodyBuffers {
     static Result<BodyBuffers> create(const DeviceContext& ctx, const Scene& scene);
 };
 
+/// Appends a river's query texels and channel (s, n, flow x, z) per texel, as the
+/// shaders read them (river_water.glsl), to `texels` and `channel`.
+void append_river_fields(const tidewater::detail::RiverBake& river, std::vector<float>& texels, std::vector<glm::vec4>& channel);
+
 /// What one frame draws: the ocean (when the scene has one), each lake, each river.
 struct BodyDraws {
     std::vector<gpu::GpuBodyDraw> draws;
@@ -48,9 +54,8 @@ struct BodyDraws {
     std::vector<std::uint32_t> patch_counts;     ///< instances of each draw
 };
 
-/// `ocean_waves` and `ocean_patch` are the frame plan's (phases at the render origin).
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, glm::dvec2 origin,
-                          const std::vector<gpu::GpuWave>& ocean_waves, const glm::vec4& ocean_patch,
-                          std::uint32_t ocean_patches, bool ocean_shore);
+/// The ocean's waves and patch grid come from the frame's `plan`; `ocean_shore` says
+/// whether the frame's shore fields hold the ocean's model.
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, bool ocean_shore);
 
 }  // namespace tidewater::render::detail

@@ -8,6 +8,7 @@
 
 #include "phase_cells.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
 
 namespace tidewater::render::detail {
@@ -117,6 +118,15 @@ std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, gl
         out[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
         out[i].steep_omega.w = static_cast<float>(kTwoPi / ws[i].k);
     }
+    return out;
+}
+
+std::vector<gpu::GpuRiverWave> gpu_river_waves(const WaterBody& preset, double time, double mean_speed) {
+    std::vector<gpu::GpuRiverWave> out;
+    for (const auto& w : tidewater::detail::river_waves_at(preset.waves(), preset.local_time(time), mean_speed))
+        out.push_back({glm::vec4(static_cast<float>(w.k_s), static_cast<float>(w.k_n), static_cast<float>(w.amplitude),
+                                 static_cast<float>(w.steepness)),
+                       glm::vec4(static_cast<float>(w.omega), static_cast<float>(w.offset), 0.0f, 0.0f)});
     return out;
 }
 

@@ -24,6 +24,7 @@ struct FramePlan {
     glm::dvec2 origin{0.0};              ///< The render origin O, world xz, m.
     glm::vec4 terrain_mesh_offset{0.0f}; ///< Mesh origin relative to O.
     std::uint32_t patches_per_side = 0;
+    std::vector<std::uint32_t> water_draws;  ///< patch instances of each water draw (the ocean, lakes, rivers)
 };
 
 /// Reversed-Z, infinite-far perspective for Vulkan clip space (y down, z in [0, 1]).
@@ -34,6 +35,10 @@ Status validate_camera(const Camera& camera);
 /// A body's waves as the shaders read them, with their phases at world xz `origin`
 /// (the render origin) at clock time `time`, reduced in double.
 std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin);
+
+/// A river preset's waves at clock time `time` in the river's channel frame, riding its
+/// mean speed (m/s), as the shaders read them (river_water.glsl).
+std::vector<gpu::GpuRiverWave> gpu_river_waves(const WaterBody& preset, double time, double mean_speed);
 
 /// A body's flow-detail settings at clock time `local_time` for shaders whose positions
 /// are relative to world xz `zero` (the render origin, or a river grid's corner).

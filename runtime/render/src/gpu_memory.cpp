@@ -1,5 +1,8 @@
 #include "gpu_memory.hpp"
 
+#include <algorithm>
+#include <cstring>
+
 #include <fmt/format.h>
 #include <utility>
 
@@ -31,6 +34,13 @@ Result<VkDeviceMemory> allocate(const DeviceContext& ctx, VkMemoryRequirements r
 }
 
 }  // namespace
+
+Result<GpuBuffer> GpuBuffer::storage_with(const DeviceContext& ctx, const void* data, std::size_t bytes) {
+    auto made = create(ctx, std::max<std::size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!made) return made.error();
+    if (bytes > 0) std::memcpy(made->mapped(), data, bytes);
+    return made;
+}
 
 Result<GpuBuffer> GpuBuffer::create(const DeviceContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage) {
     GpuBuffer b;

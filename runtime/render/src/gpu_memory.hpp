@@ -19,6 +19,9 @@ class GpuBuffer {
 public:
     GpuBuffer() = default;
     static Result<GpuBuffer> create(const DeviceContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
+    /// A storage buffer holding a copy of `bytes` at `data` (at least 16 bytes, so that an
+    /// empty array still binds).
+    static Result<GpuBuffer> storage_with(const DeviceContext& ctx, const void* data, std::size_t bytes);
     GpuBuffer(GpuBuffer&& other) noexcept { *this = std::move(other); }
     GpuBuffer& operator=(GpuBuffer&& other) noexcept;
     ~GpuBuffer() { reset(); }

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
-#include <tuple>
 #include <vector>
 
 #include "embedded_shaders.hpp"
+#include "body_uploads.hpp"
 #include "frame_constants.hpp"
 #include "tidewater/detail/body_finder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
@@ -94,21 +94,15 @@ struct GpuQuery::Impl {
 
 Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river) {
     if (river_texels.handle() && river == uploaded_river) return false;
-    const std::size_t texels = river ? river->grid.size() : 0;
-    std::vector<float> query(std::max<std::size_t>(1, texels * gpu::kRiverQueryStride), 0.0f);
-    std::vector<glm::vec4> channel(std::max<std::size_t>(1, texels), glm::vec4(0.0f));
-    if (river) {
-        std::copy(river->query_texels.begin(), river->query_texels.end(), query.begin());
-        for (std::size_t t = 0; t < texels; ++t)
-            channel[t] = {river->channel_s[t], river->channel_n[t], river->flow_x[t], river->flow_z[t]};
-    }
-    for (auto [buffer, data, bytes] : {std::tuple{&river_texels, static_cast<const void*>(query.data()), query.size() * sizeof(float)},
-                                       std::tuple{&river_channel, static_cast<const void*>(channel.data()), channel.size() * sizeof(glm::vec4)}}) {
-        auto fresh = GpuBuffer::create(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        if (!fresh) return fresh.error();
-        std::memcpy(fresh->mapped(), data, bytes);
-        *buffer = std::move(fresh).value();
-    }
+    std::vector<float> texels;
+    std::vector<glm::vec4> channel;
+    if (river) detail::append_river_fields(*river, texels, channel);
+    auto fresh_texels = GpuBuffer::storage_with(ctx, texels.data(), texels.size() * sizeof(float));
+    if (!fresh_texels) return fresh_texels.error();
+    auto fresh_channel = GpuBuffer::storage_with(ctx, channel.data(), channel.size() * sizeof(glm::vec4));
+    if (!fresh_channel) return fresh_channel.error();
+    river_texels = std::move(fresh_texels).value();
+    river_channel = std::move(fresh_channel).value();
     uploaded_river = river;
     return true;
 }
@@ -196,16 +190,9 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     auto wave_data = detail::gpu_waves(still_set);
     if (!still_waves) wave_data.clear();
 
-    std::vector<gpu::GpuRiverWave> channel_waves;
-    double river_max_offset = 0.0;
-    if (river_mode) {
-        for (const auto& w : tidewater::detail::river_waves_at(river->body->waves(), river->body->local_time(time), river->river->mean_speed)) {
-            channel_waves.push_back({glm::vec4(static_cast<float>(w.k_s), static_cast<float>(w.k_n), static_cast<float>(w.amplitude),
-                                               static_cast<float>(w.steepness)),
-                                     glm::vec4(static_cast<float>(w.omega), static_cast<float>(w.offset), 0.0f, 0.0f)});
-            river_max_offset += w.steepness * w.amplitude;
-        }
-    }
+    const std::vector<gpu::GpuRiverWave> channel_waves =
+        river_mode ? detail::gpu_river_waves(*river->body, time, river->river->mean_speed) : std::vector<gpu::GpuRiverWave>{};
+    const double river_max_offset = river_mode ? river->body->waves().max_horizontal_displacement() : 0.0;
     bool rebind = false;
     for (auto [buffer, bytes] : {std::pair{&waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, wave_data.size())},
                                  std::pair{&phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
@@ -328,7 +315,6 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
         where[i] = finder.find(points[i]);
         groups[where[i].evaluation].push_back(i);
     }
-    const Terrain& terrain = scene.bake ? scene.bake->terrain : scene.terrain;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::vector<std::size_t>& members = groups[g];
         if (members.empty()) continue;
@@ -338,25 +324,14 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
         std::vector<glm::vec4> flow(members.size(), glm::vec4(0.0f));
         const td::EvaluationKey key = finder.evaluation_key(g);
         Status st;
-        double still_level = 0.0;
         switch (key.kind) {
             case td::EvaluationKind::land:
-                for (std::size_t k = 0; k < members.size(); ++k) {  // the terrain itself, as query_world
-                    results[k] = SurfacePoint{};
-                    results[k].height = terrain.height_at(group_points[k]);
-                    results[k].depth = 0.0;
-                }
+                for (std::size_t k = 0; k < members.size(); ++k) results[k] = td::land_surface(scene, group_points[k]);
                 break;
-            case td::EvaluationKind::ocean:
-                still_level = scene.water_level();
-                st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {});
+            case td::EvaluationKind::ocean: st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {}); break;
+            case td::EvaluationKind::lake:
+                st = impl_->solve(scene.lakes[static_cast<std::size_t>(key.lake)].body, nullptr, time, group_points, results, {});
                 break;
-            case td::EvaluationKind::lake: {
-                const WaterBody& lake = scene.lakes[static_cast<std::size_t>(key.lake)].body;
-                still_level = lake.level();
-                st = impl_->solve(lake, nullptr, time, group_points, results, {});
-                break;
-            }
             case td::EvaluationKind::river: {
                 const td::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];
                 RiverDispatch river{&baked, &scene.rivers[static_cast<std::size_t>(key.river)].body, key.plume};
@@ -367,11 +342,7 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
         if (!st) return st;
         for (std::size_t k = 0; k < members.size(); ++k) {
             const std::size_t i = members[k];
-            out[i].surface = results[k];
-            if (key.kind == td::EvaluationKind::ocean || key.kind == td::EvaluationKind::lake)
-                td::settle_on_terrain(out[i].surface, where[i], still_level);
-            out[i].body = where[i].body;
-            out[i].flow = key.kind == td::EvaluationKind::river ? glm::dvec2(flow[k].x, flow[k].y) : glm::dvec2(0.0);
+            out[i] = td::world_point(scene, key, where[i], results[k], glm::dvec2(flow[k].x, flow[k].y));
             if (!detail.empty()) detail[i] = glm::dvec2(flow[k].z, flow[k].w);
         }
     }

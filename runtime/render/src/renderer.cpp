@@ -69,7 +69,6 @@ struct Renderer::Impl {
     detail::ShoreBuffers shore;
     detail::BodyBuffers bodies;  // lakes and rivers (placeholders without)
     Scene scene;                 // as set; its ocean is replaced by set_water
-    std::vector<std::uint32_t> draw_patches;  // instances of each water draw of the last planned frame
     std::uint64_t last_patches = 0;
 
     Impl() = default;
@@ -199,14 +198,13 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
         plan.frame.shore_rect = glm::vec4(static_cast<float>(rel.x), static_cast<float>(rel.y), static_cast<float>(model->texel()),
                                           static_cast<float>(model->resolution()));
     }
-    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan.origin, plan.waves, plan.frame.water_patch,
-                                                            plan.patches_per_side * plan.patches_per_side, shore.model() != nullptr);
+    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore.model() != nullptr);
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
     if (!draws.river_waves.empty())
         std::memcpy(slot->river_waves.mapped(), draws.river_waves.data(), sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
-    draw_patches = draws.patch_counts;
+    plan.water_draws = draws.patch_counts;
     write_descriptors(*slot, scene_copy);
     return {};
 }
@@ -235,14 +233,13 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.water_wire : pipelines.water).get());
     // One draw per body: the ocean, each lake, each river (water_draw.glsl).
     std::uint64_t patches = 0;
-    for (std::uint32_t i = 0; i < draw_patches.size(); ++i) {
-        if (draw_patches[i] == 0) continue;
+    for (std::uint32_t i = 0; i < plan.water_draws.size(); ++i) {
+        if (plan.water_draws[i] == 0) continue;
         vkCmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, detail::kDrawIndexOffset, sizeof(i), &i);
-        vkCmdDraw(cmd, 4, draw_patches[i], 0, 0);
-        patches += draw_patches[i];
+        vkCmdDraw(cmd, 4, plan.water_draws[i], 0, 0);
+        patches += plan.water_draws[i];
     }
     last_patches = patches;
-    (void)plan;
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

@@ -35,9 +35,8 @@ Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const std::shared_pt
     GpuBuffer fresh[2];
     const std::vector<glm::vec4>* data[2] = {&packed.per_wave, &packed.shared};
     for (int i = 0; i < 2; ++i) {
-        auto made = GpuBuffer::create(ctx, data[i]->size() * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        auto made = GpuBuffer::storage_with(ctx, data[i]->data(), data[i]->size() * sizeof(glm::vec4));
         if (!made) return made.error();
-        std::memcpy(made->mapped(), data[i]->data(), data[i]->size() * sizeof(glm::vec4));
         fresh[i] = std::move(made).value();
     }
     per_wave_ = std::move(fresh[0]);

@@ -65,10 +65,29 @@ EvaluationKey BodyFinder::evaluation_key(std::size_t evaluation) const {
     return key;
 }
 
-void settle_on_terrain(SurfacePoint& point, const PointBody& at, double level) {
-    if (std::isfinite(point.depth) || std::isnan(at.ground)) return;
-    point.depth = level - at.ground;
-    point.wet = surface_wet(point.height, level, point.depth);
+SurfacePoint land_surface(const Scene& scene, glm::dvec2 p) {
+    const Terrain& terrain = scene.bake ? scene.bake->terrain : scene.terrain;
+    SurfacePoint o;
+    o.height = terrain.height_at(p);
+    o.depth = 0.0;
+    o.wet = false;
+    return o;
+}
+
+WorldPoint world_point(const Scene& scene, const EvaluationKey& key, const PointBody& at, const SurfacePoint& surface,
+                       glm::dvec2 flow) {
+    WorldPoint out;
+    out.surface = surface;
+    out.body = at.body;
+    out.flow = flow;
+    const bool still = key.kind == EvaluationKind::ocean || key.kind == EvaluationKind::lake;
+    if (still && !std::isfinite(surface.depth) && !std::isnan(at.ground)) {
+        const double level = key.kind == EvaluationKind::ocean ? scene.water_level()
+                                                               : scene.lakes[static_cast<std::size_t>(key.lake)].body.level();
+        out.surface.depth = level - at.ground;
+        out.surface.wet = surface_wet(out.surface.height, level, out.surface.depth);
+    }
+    return out;
 }
 
 const WaterBody& still_body(const Scene& scene, const RiverBake& river) {

@@ -52,34 +52,22 @@ WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) 
     if (has_bodies && (bodies == nullptr || !scene.baked())) return WorldPoint{};
     const detail::BodyFinder finder(scene, bodies);
     const detail::PointBody at = finder.find(point);
-    WorldPoint out;
-    out.body = at.body;
-    out.flow = at.flow;
     const detail::EvaluationKey key = finder.evaluation_key(at.evaluation);
+    SurfacePoint surface;
     switch (key.kind) {
-        case detail::EvaluationKind::land:
-            out.surface.height = (bodies != nullptr ? bodies->terrain : scene.terrain).height_at(point);
-            out.surface.depth = 0.0;
-            out.surface.wet = false;
+        case detail::EvaluationKind::land: surface = detail::land_surface(scene, point); break;
+        case detail::EvaluationKind::ocean: surface = reference::query_point(scene.ocean, time, point); break;
+        case detail::EvaluationKind::lake:
+            surface = reference::query_point(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, point);
             break;
-        case detail::EvaluationKind::ocean:
-            out.surface = reference::query_point(scene.ocean, time, point);
-            detail::settle_on_terrain(out.surface, at, scene.water_level());
-            break;
-        case detail::EvaluationKind::lake: {
-            const WaterBody& lake = scene.lakes[static_cast<std::size_t>(key.lake)].body;
-            out.surface = reference::query_point(lake, time, point);
-            detail::settle_on_terrain(out.surface, at, lake.level());
-            break;
-        }
         case detail::EvaluationKind::river: {
             detail::PreparedWaves<double> river_waves, still_waves;
             const auto in = detail::prepare_river_input<double>(scene, *bodies, key, time, river_waves, still_waves);
-            detail::solve_river_batch<double>(in, &point, 1, &out.surface);
+            detail::solve_river_batch<double>(in, &point, 1, &surface);
             break;
         }
     }
-    return out;
+    return detail::world_point(scene, key, at, surface, at.flow);
 }
 
 void fixed_point_heights(const WaveSet& set, double local_time, std::span<const glm::dvec2> points,

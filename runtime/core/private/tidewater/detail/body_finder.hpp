@@ -56,9 +56,14 @@ private:
     const WaterBodiesBake* bodies_;
 };
 
-/// Still water evaluated without a shore model knows no bottom: its depth and wetness come
-/// from the terrain under the point instead (level - ground).
-void settle_on_terrain(SurfacePoint& point, const PointBody& at, double level);
+/// Land in a scene without an ocean (EvaluationKind::land): the (carved) terrain itself, dry.
+SurfacePoint land_surface(const Scene& scene, glm::dvec2 p);
+
+/// A point's answer from its evaluation `key`: the surface (still water without a shore
+/// model knows no bottom, so its depth and wetness come from the terrain under the point),
+/// the point's body and the current `flow` (m/s) there.
+WorldPoint world_point(const Scene& scene, const EvaluationKey& key, const PointBody& at, const SurfacePoint& surface,
+                       glm::dvec2 flow);
 
 /// The still body a river's plume runs into (a lake or the ocean).
 const WaterBody& still_body(const Scene& scene, const RiverBake& river);
