@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/terrain.hpp"
 
 namespace tidewater {
 namespace {
@@ -45,15 +47,16 @@ void section_at(const RiverBake& r, double along, glm::dvec2& p, glm::dvec2& t, 
     width = r.width[k];
 }
 
-/// Flux of the baked discharge field h u through the cross-section at `along`, m^3/s.
-double discharge_through(const RiverBake& r, double along) {
+/// Flux of the baked discharge field h u through the cross-section at `along`, m^3/s;
+/// `side` +1 or -1 counts only the left or the right half (0: all of it).
+double discharge_through(const RiverBake& r, double along, int side = 0) {
     glm::dvec2 p, t;
     double width = 0.0;
     section_at(r, along, p, t, width);
     const glm::dvec2 n{-t.y, t.x};
     const double reach = 0.5 * width + 4.0 * r.grid.texel, step = r.grid.texel / 16.0;
     double q = 0.0;
-    for (double s = -reach; s <= reach; s += step) {
+    for (double s = side > 0 ? 0.0 : -reach; s <= (side < 0 ? 0.0 : reach); s += step) {
         const glm::dvec2 x = p + s * n;
         q += (r.grid.sample(r.discharge_x, x) * t.x + r.grid.sample(r.discharge_z, x) * t.y) * step;
     }
@@ -163,6 +166,81 @@ TEST(RiverBake, DischargesAddAtAConfluence) {
     for (double f : {0.3, 0.6}) EXPECT_NEAR(discharge_through(tributary, f * tributary.along.back()), 9.0, 0.09);
     // The tributary meets the main river's surface at the junction.
     EXPECT_NEAR(tributary.surface.back(), main.grid.sample(main.surface_height, tributary.centreline.back()), 0.02);
+}
+
+/// A plane falling 1 m in 100 m to the sea at x = 500 with a round knoll 5 m high
+/// (Gaussian, sigma 10 m) at (0, knoll_z): a 2 km heightmap at 2 m pixels.
+Terrain plane_with_knoll(double knoll_z) {
+    auto image = std::make_shared<Gray16Image>();
+    const int size = 1001;
+    image->width = image->height = size;
+    image->pixels.resize(static_cast<std::size_t>(size) * size);
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            const double x = (i - 500) * 2.0, z = (j - 500) * 2.0;
+            const double r2 = x * x + (z - knoll_z) * (z - knoll_z);
+            const double h = 5.0 - 0.01 * x + 5.0 * std::exp(-r2 / (2.0 * 10.0 * 10.0));
+            image->pixels[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(i)] =
+                static_cast<std::uint16_t>(std::lround((h + 10.0) / 40.0 * 65535.0));
+        }
+    HeightmapTerrain map;
+    map.file = "knoll";
+    map.size = {2000.0, 2000.0};
+    map.min_height = -10.0;
+    map.max_height = 30.0;
+    map.image = std::move(image);
+    return Terrain(map);
+}
+
+/// Circulation of the current round a circle, and the same integral of its speed, m^2/s.
+std::pair<double, double> circulation(const RiverBake& r, glm::dvec2 centre, double radius) {
+    double gamma = 0.0, speed = 0.0;
+    const int steps = 720;
+    for (int k = 0; k < steps; ++k) {
+        const double a = 2.0 * 3.141592653589793 * k / steps, dl = 2.0 * 3.141592653589793 * radius / steps;
+        const glm::dvec2 p = centre + radius * glm::dvec2(std::cos(a), std::sin(a));
+        const glm::dvec2 u{r.grid.sample(r.flow_x, p), r.grid.sample(r.flow_z, p)};
+        gamma += (-u.x * std::sin(a) + u.y * std::cos(a)) * dl;
+        speed += std::hypot(u.x, u.y) * dl;
+    }
+    return {gamma, speed};
+}
+
+TEST(RiverBake, TheCarveGoesRoundAKnollAndTheRiverSplitsAroundIt) {
+    for (const double knoll_z : {0.0, 4.0}) {
+        Scene scene = parse_or_die(R"({
+          "version": 1, "name": "knoll", "water_level": 0.0,
+          "terrain": { "plane": { "height": 5.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
+          "rivers": [ { "name": "split", "path": [[-900, 0], [700, 0]], "width": 60, "discharge": 40.0 } ]
+        })");
+        scene.terrain = plane_with_knoll(knoll_z);
+        detail::BodiesBakeOptions options;
+        options.texels_across = 16.0;
+        auto bake = detail::bake_water_bodies(scene, options);
+        ASSERT_TRUE(bake) << bake.error().message;
+        const RiverBake& r = bake->rivers[0];
+        ASSERT_EQ(r.islands, 1u) << "knoll at z = " << knoll_z;
+        // The knoll stays land (the carve went round it); the water beside it is carved.
+        EXPECT_GT(bake->terrain.height_at({0.0, knoll_z}), r.grid.sample(r.surface_height, {0.0, knoll_z}) + 3.0);
+        // The same discharge above, across and below the island (the river runs 900 m to it).
+        for (double along : {500.0, 900.0, 1200.0}) EXPECT_NEAR(discharge_through(r, along), 40.0, 0.4) << along;
+        // Across the island the flow splits between its two sides by their width.
+        const double left = discharge_through(r, 900.0, 1), right = discharge_through(r, 900.0, -1);
+        EXPECT_NEAR(left + right, 40.0, 0.4);
+        if (knoll_z == 0.0) {
+            EXPECT_NEAR(left / 40.0, 0.5, 0.03) << "a centred knoll halves the flow";
+        } else {
+            EXPECT_LT(left, 0.8 * right) << "the narrow side (left, z > 4) carries less";
+            EXPECT_GT(left, 0.1 * 40.0) << "but still some";
+        }
+        // No net circulation round the island, against the speed integrated round the loop
+        // (a circle in open water between the island and both banks: the centred knoll's).
+        {
+            const auto [gamma, speed] = circulation(r, {0.0, knoll_z}, knoll_z == 0.0 ? 24.0 : 22.0);
+            std::printf("knoll: circulation %.3f m^2/s of a speed integral %.1f m^2/s\n", gamma, speed);
+        EXPECT_LT(std::abs(gamma), 0.05 * speed) << "circulation " << gamma << " m^2/s, speed integral " << speed;
+        }
+    }
 }
 
 }  // namespace

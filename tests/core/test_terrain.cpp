@@ -81,6 +81,18 @@ TEST(Terrain, BadHeightmapsNameTheFile) {
     fs::remove_all(dir);
 }
 
+// A knoll adds height (1 - (r/R)^2)^2 to the island and nothing beyond its radius.
+TEST(Terrain, AKnollRisesFromTheIslandAndEndsAtItsRadius) {
+    IslandTerrain plain;
+    IslandTerrain knolled = plain;
+    knolled.knolls.push_back({{100.0, -50.0}, 12.0, 4.0});
+    const Terrain a(plain), b(knolled);
+    EXPECT_NEAR(b.height_at({100.0, -50.0}) - a.height_at({100.0, -50.0}), 4.0, 1e-9);
+    EXPECT_NEAR(b.height_at({106.0, -50.0}) - a.height_at({106.0, -50.0}), 4.0 * 0.75 * 0.75, 1e-9);  // r/R = 1/2
+    EXPECT_EQ(b.height_at({112.5, -50.0}), a.height_at({112.5, -50.0}));
+    EXPECT_FALSE(a == b);
+}
+
 // The island: land in the middle, the seabed far out, both gentle beaches and
 // steep cliffs at the waterline, and an enclosed lagoon below the water level.
 TEST(Terrain, ProceduralIslandHasBeachesCliffsAndLagoon) {

@@ -13,7 +13,9 @@
 #include "render_job.hpp"
 #endif
 #include "scene_option.hpp"
+#include "tidewater/body_summary.hpp"
 #include "tidewater/query.hpp"
+#include "tidewater/world_query.hpp"
 #include "tidewater/version.hpp"
 #include "verbs.hpp"
 
@@ -62,22 +64,22 @@ int run_demo(const DemoArgs& a) {
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
             pts.push_back(centre + glm::dvec2(a.extent * (i / double(n - 1) - 0.5), a.extent * (j / double(n - 1) - 0.5)));
-    std::vector<SurfacePoint> surf(pts.size());
+    std::vector<WorldPoint> surf(pts.size());
     const std::filesystem::path csv_path = std::filesystem::path(a.out_dir) / "surface.csv";
     AtomicFile csv(csv_path);
     if (!csv.status()) return fail(verb, csv.status().error().message);
-    csv.stream() << "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,wet,foam\n";
+    csv.stream() << "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,wet,foam,body,flow_x,flow_z\n";
     double min_h = 1e300, max_h = -1e300, min_jac = 1e300;
     QueryOptions opt;
     opt.threads = 0;
     for (double t : {0.0, 2.0, 4.0, 6.0}) {
-        if (auto st = query_surface(ocean, t, pts, surf, opt); !st) return fail(verb, st.error().message);
+        if (auto st = query_world(*scene, t, pts, surf, opt); !st) return fail(verb, st.error().message);
         for (std::size_t k = 0; k < pts.size(); ++k) {
-            const SurfacePoint& s = surf[k];
-            csv.stream() << fmt::format("{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},{:.6f},{:.3f},{},{:.3f}\n", t,
-                                        pts[k].x, pts[k].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
-                                        s.velocity.y, s.velocity.z, s.jacobian, s.depth,
-                                        s.wet ? 1 : 0, s.foam);
+            const SurfacePoint& s = surf[k].surface;
+            csv.stream() << fmt::format("{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},{:.6f},{:.3f},{},{:.3f},{},{:.5f},{:.5f}\n",
+                                        t, pts[k].x, pts[k].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
+                                        s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.wet ? 1 : 0, s.foam,
+                                        body_name(*scene, surf[k].body), surf[k].flow.x, surf[k].flow.y);
             min_h = std::min(min_h, s.height);
             max_h = std::max(max_h, s.height);
             min_jac = std::min(min_jac, s.jacobian);
@@ -85,6 +87,13 @@ int run_demo(const DemoArgs& a) {
     }
     if (auto st = csv.commit(); !st) return fail(verb, st.error().message);
 
+    const BodySummary bodies = summarize_bodies(*scene);
+    nlohmann::json lakes = nlohmann::json::array(), rivers = nlohmann::json::array();
+    for (const LakeSummary& l : bodies.lakes) lakes.push_back({{"name", l.name}, {"level_m", l.level}, {"area_m2", l.area}});
+    for (const RiverSummary& r : bodies.rivers)
+        rivers.push_back({{"name", r.name}, {"ends_in", r.ends_in}, {"receiver", r.receiver}, {"length_m", r.length},
+                          {"discharge_m3_s", r.discharge}, {"mean_speed_m_s", r.mean_speed}, {"source_level_m", r.source_level},
+                          {"mouth_level_m", r.mouth_level}, {"islands", r.islands}});
     nlohmann::json summary = {
         {"tidewater_version", TIDEWATER_VERSION_STRING},
         {"scene", scene->name},
@@ -101,6 +110,8 @@ int run_demo(const DemoArgs& a) {
         {"surface_height_range_m", {min_h, max_h}},
         {"min_jacobian", min_jac},
         {"query_kernel", query_kernel_name()},
+        {"lakes", lakes},
+        {"rivers", rivers},
         {"warnings", scene->warnings}};
     const std::filesystem::path summary_path = std::filesystem::path(a.out_dir) / "summary.json";
     AtomicFile sum_file(summary_path);
@@ -112,6 +123,12 @@ int run_demo(const DemoArgs& a) {
                 waves.significant_wave_height(), mean_period, waves.fold_measure());
     std::printf("  terrain: %s; surface height %.2f .. %.2f m over the grid; min Jacobian %.3f\n",
                 scene->terrain.kind_name(), min_h, max_h, min_jac);
+    for (const LakeSummary& l : bodies.lakes)
+        std::printf("  lake \"%s\": level %.1f m, %.0f m^2\n", l.name.c_str(), l.level, l.area);
+    for (const RiverSummary& r : bodies.rivers)
+        std::printf("  river \"%s\": %.0f m from %.1f m to %s%s%s at %.1f m, %.1f m^3/s at a mean %.2f m/s, %d island%s\n",
+                    r.name.c_str(), r.length, r.source_level, r.ends_in.c_str(), r.receiver.empty() ? "" : " ",
+                    r.receiver.c_str(), r.mouth_level, r.discharge, r.mean_speed, r.islands, r.islands == 1 ? "" : "s");
     for (const std::string& w : scene->warnings) std::printf("  warning: %s\n", w.c_str());
     std::printf("  wrote %s\n  wrote %s\n", summary_path.string().c_str(), csv_path.string().c_str());
 #if defined(TIDEWATER_HAVE_RENDER)

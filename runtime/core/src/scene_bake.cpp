@@ -160,9 +160,6 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
 
         auto baked = std::make_shared<Scene>(scene);
-        if (has_bodies)
-            baked->warnings.push_back(fmt::format("scene \"{}\": its lakes and rivers are baked and queried (query_world), and "
-                                                  "their channels drawn, but their water is not drawn yet", scene.name));
         for (std::size_t l = 0; l < bake->lake_shores.size(); ++l) {
             const auto& model = bake->lake_shores[l];
             auto lake = scene.lakes[l].body.with_shore(model && !model->trivial() ? model : nullptr);

@@ -195,8 +195,28 @@ Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::pat
     return Terrain(t);
 }
 
+Status read_knolls(const ObjectReader& r, std::vector<Knoll>& out) {
+    if (!r.has("knolls")) return {};
+    const nlohmann::json& list = r.at("knolls");
+    if (!list.is_array()) return r.error("knolls", fmt::format("expected an array of objects, found {}", detail::json_type_name(list)));
+    if (list.size() > 256) return r.error("knolls", fmt::format("{} knolls: at most 256", list.size()));
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        auto k = ObjectReader::open(list[i], r.source(), r.child_path("knolls") + "/" + std::to_string(i));
+        if (!k) return k.error();
+        if (auto st = k->allow_only({"at", "radius", "height"}); !st) return st;
+        Knoll knoll;
+        if (auto st = read_pair(*k, "at", knoll.at, true, 1e7); !st) return st;
+        if (auto st = k->number("radius", knoll.radius, true); !st) return st;
+        if (auto st = check_range(*k, "radius", knoll.radius, 1.0, 10000.0, " m"); !st) return st;
+        if (auto st = k->number("height", knoll.height, true); !st) return st;
+        if (auto st = check_range(*k, "height", knoll.height, 0.1, 2000.0, " m"); !st) return st;
+        out.push_back(knoll);
+    }
+    return {};
+}
+
 Result<Terrain> read_island(const ObjectReader& r) {
-    if (auto st = r.allow_only({"seed", "radius", "height", "seabed", "center"}); !st) return st.error();
+    if (auto st = r.allow_only({"seed", "radius", "height", "seabed", "center", "knolls"}); !st) return st.error();
     IslandTerrain t;
     std::int64_t seed = t.seed;
     if (auto st = r.integer("seed", seed, 0, 0xffffffffLL); !st) return st.error();
@@ -208,6 +228,7 @@ Result<Terrain> read_island(const ObjectReader& r) {
     if (auto st = r.number("seabed", t.seabed); !st) return st.error();
     if (auto st = check_range(r, "seabed", t.seabed, -10000.0, -1.0, " m"); !st) return st.error();
     if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
+    if (auto st = read_knolls(r, t.knolls); !st) return st.error();
     return Terrain(t);
 }
 

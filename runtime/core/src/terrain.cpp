@@ -78,6 +78,11 @@ double sample_island(const IslandTerrain& t, glm::dvec2 p) {
         const double blend = w * w * (3.0 - 2.0 * w);
         h = h * (1.0 - blend) + (-8.0 + 2.0 * ql) * blend;
     }
+    for (const Knoll& k : t.knolls) {
+        const glm::dvec2 dk = p - k.at;
+        const double q = (dk.x * dk.x + dk.y * dk.y) / (k.radius * k.radius);
+        if (q < 1.0) h += k.height * (1.0 - q) * (1.0 - q);
+    }
     return h;
 }
 

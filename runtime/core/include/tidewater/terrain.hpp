@@ -45,14 +45,24 @@ struct HeightmapTerrain {
     bool operator==(const HeightmapTerrain&) const = default;  ///< The same pixels object, not equal pixels.
 };
 
+/// A rounded mound added to a procedural island where a designer wants one: a rock in a
+/// river, a skerry, a hillock. Its profile is height * (1 - (r/radius)^2)^2.
+struct Knoll {
+    glm::dvec2 at{0.0};   ///< m
+    double radius = 10.0; ///< m, where it meets the ground
+    double height = 3.0;  ///< m above the ground at its centre
+    bool operator==(const Knoll&) const = default;
+};
+
 /// A procedural island: beaches of a gentle slope, cliffs along part of the
-/// coast, inland hills and an enclosed lagoon, all from `seed`.
+/// coast, inland hills and an enclosed lagoon, all from `seed`, and any knolls added.
 struct IslandTerrain {
     std::uint32_t seed = 7;
     double radius = 600.0;    ///< m, mean distance from the centre to the coast (water level 0)
     double height = 80.0;     ///< m, typical inland height
     double seabed = -40.0;    ///< m, depth far offshore (< 0)
     glm::dvec2 center{0.0};   ///< m
+    std::vector<Knoll> knolls;
     bool operator==(const IslandTerrain&) const = default;
 };
 

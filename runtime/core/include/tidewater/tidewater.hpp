@@ -1,6 +1,7 @@
 // Umbrella header for Tidewater's CPU model (Tidewater::core).
 #pragma once
 
+#include "tidewater/body_summary.hpp"
 #include "tidewater/clock.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/floating_body.hpp"

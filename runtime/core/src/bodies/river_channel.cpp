@@ -112,6 +112,45 @@ int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vec
     return islands;
 }
 
+/// Knolls a carve leaves standing: 4-connected groups of at least kIslandMinimumTexels
+/// `standing` texels that touch neither a bank, a `clear` texel's edge nor the grid's edge.
+std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint8_t>& standing, const std::vector<std::uint8_t>& clear) {
+    std::vector<std::uint8_t> keep(g.size(), 0), visited(g.size(), 0);
+    std::vector<std::pair<int, int>> stack, members;
+    for (int j0 = 0; j0 < g.nz; ++j0)
+        for (int i0 = 0; i0 < g.nx; ++i0) {
+            if (!standing[g.index(i0, j0)] || visited[g.index(i0, j0)]) continue;
+            bool enclosed = true;
+            members.clear();
+            stack.assign(1, {i0, j0});
+            visited[g.index(i0, j0)] = 1;
+            while (!stack.empty()) {
+                const auto [i, j] = stack.back();
+                stack.pop_back();
+                members.push_back({i, j});
+                for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+                    const int a = i + di, b = j + dj;
+                    if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) {
+                        enclosed = false;
+                        continue;
+                    }
+                    const std::size_t n = g.index(a, b);
+                    if (standing[n]) {
+                        if (!visited[n]) {
+                            visited[n] = 1;
+                            stack.push_back({a, b});
+                        }
+                    } else if (!clear[n]) {
+                        enclosed = false;
+                    }
+                }
+            }
+            if (!enclosed || static_cast<int>(members.size()) < kIslandMinimumTexels) continue;
+            for (const auto& [i, j] : members) keep[g.index(i, j)] = 1;
+        }
+    return keep;
+}
+
 }  // namespace
 
 double bank_psi(const ChannelInputs& in, double own_discharge, double along, int side) {
@@ -179,21 +218,37 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     cut->nz = g.nz;
     cut->depth.assign(g.size(), 0.0f);
     bool any_cut = false;
+    // The still surface and the ground at every texel, and the knolls the carve keeps.
+    std::vector<double> surface(g.size()), ground_at(g.size());
+    std::vector<std::uint8_t> standing(g.size(), 0), clear(g.size(), 0);
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t t = g.index(i, j);
+            const double s = frame.along[t], n = frame.across[t];
+            const bool plume = s > mouth;
+            surface[t] = plume ? river.surface.back() : surface_at(s);
+            ground_at[t] = in.terrain->height_at(g.center(i, j));
+            // Clear of the banks by a texel: a knoll must be ringed by these.
+            const bool inside = frame.beyond[t] == 0 && !plume && std::abs(n) < 0.5 * at_along(along, width, s) - g.texel;
+            clear[t] = inside ? 1 : 0;
+            standing[t] = in.carve && inside && ground_at[t] > surface[t] + kIslandFreeboard ? 1 : 0;
+        }
+    const std::vector<std::uint8_t> knoll = knolls(g, standing, clear);
     for (int j = 0; j < g.nz; ++j)
         for (int i = 0; i < g.nx; ++i) {
             const std::size_t t = g.index(i, j);
             const glm::dvec2 p = g.center(i, j);
             const double s = frame.along[t], n = frame.across[t];
             const bool plume = s > mouth;
-            const double eta = plume ? river.surface.back() : surface_at(s);
-            const double ground = in.terrain->height_at(p);
+            const double eta = surface[t];
+            const double ground = ground_at[t];
             if (in.in_receiver) still[t] = in.in_receiver(p, ground);
             river.surface_height[t] = static_cast<float>(eta);
             river.depth[t] = static_cast<float>(eta - ground);
             if (frame.beyond[t] != 0) continue;  // the cut at the ends: open
             const double half = 0.5 * at_along(along, width, s);
             double bed = ground;
-            if (in.carve) {
+            if (in.carve && !knoll[t]) {
                 // The channel runs on into the still water and shoals out through the plume,
                 // so the river does not pour off a step into shallows.
                 const double fade = plume ? 1.0 - smoothstep(mouth, mouth + in.plume_length, s) : 1.0;
