@@ -366,6 +366,13 @@ JSON
       check "the interactive viewer starts and keeps running (stopped after 6 s)" test "$rc" -eq 124
       xvfb-run -a "$TW" inspect --view --play 12 --times 0:5:0.5 --resolution 48x48 --size 320x200 --quiet > play.txt
       check "playback runs past the last time step and reports its rate" grep -q "played 12 steps of a 48x48 grid in .* steps/s" play.txt
+      # The current with glyphs and a drift track drawn on it (the README's drift picture).
+      "$TW" drift --start 20,-340 --duration 60 --out track.csv > /dev/null
+      xvfb-run -a "$TW" inspect --extent=-60:180,-620:-300 --resolution 60x80 --time 1 --field flow --glyphs --track track.csv \
+        --screenshot flow.png --size 320x200 > /dev/null
+      check "flow picture with glyphs and a track written" test -s flow.png
+      expect_error "missing track file" "no/such/track.csv" xvfb-run -a "$TW" inspect --time 0 --field flow --track no/such/track.csv --screenshot t.png
+      check "no picture without its track" test ! -e t.png
     fi
     expect_error "unknown field" "--field \"vorticity\" is unknown" "$TW" inspect --time 0 --field vorticity --export e1
     expect_error "empty time range" "--times" "$TW" inspect --times 5:1:1 --export e2

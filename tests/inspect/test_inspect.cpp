@@ -19,6 +19,7 @@
 #include "../baked_scene.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/query.hpp"
+#include "tidewater/world_query.hpp"
 #include "vtk_output.hpp"
 #include "vtk_viewer.hpp"
 
@@ -65,13 +66,12 @@ TEST(Inspect, ExportReadsBackWithTheQueriesValues) {
         for (vtkIdType k = 0; k < sg->GetNumberOfPoints(); k += 7) {
             double p[3];
             sg->GetPoint(k, p);
-            const std::vector<glm::dvec2> where{{p[0], p[2]}};
-            std::vector<SurfacePoint> out(1);
-            ASSERT_TRUE(query_surface(scene->ocean, times[step], where, out).ok());
+            const glm::dvec2 where{p[0], p[2]};
+            const WorldPoint out = query_world_point(*scene, times[step], where);
             auto* height = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("height"));
             auto* velocity = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("velocity"));
-            worst = std::max({worst, std::abs(height->GetValue(k) - out[0].height), std::abs(p[1] - out[0].height),
-                              std::abs(velocity->GetComponent(k, 1) - out[0].velocity.y)});
+            worst = std::max({worst, std::abs(height->GetValue(k) - out.surface.height), std::abs(p[1] - out.surface.height),
+                              std::abs(velocity->GetComponent(k, 1) - out.surface.velocity.y)});
         }
         EXPECT_LT(worst, 1e-5) << "step " << step;
     }
@@ -104,6 +104,67 @@ double coverage(const detail::Rgba8Image& img, int x0, int x1) {
             ++total;
         }
     return static_cast<double>(differ) / static_cast<double>(total);
+}
+
+// The default scene's brook and rill: the export's body ids name them through body_names,
+// its flow is the world query's current, and a flow picture with glyphs and a drift
+// track differs from the same picture without them.
+TEST(Inspect, ExportsTheCurrentAndTheBodyAndShowsFlowGlyphs) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    SampleGrid grid;
+    grid.min = {-60.0, -620.0};
+    grid.max = {180.0, -300.0};
+    grid.nx = 49, grid.nz = 65;
+    auto sample = sample_field(*scene, grid, 2.0);
+    ASSERT_TRUE(sample.ok()) << sample.error().message;
+    ASSERT_EQ(sample->body_names.size(), 2u + scene->lakes.size() + scene->rivers.size());
+    std::size_t in_rivers = 0;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < grid.points(); ++k) {
+        const auto id = static_cast<std::size_t>(sample->body[k]);
+        ASSERT_LT(id, sample->body_names.size());
+        const glm::dvec2 where{sample->surface[k].x, sample->surface[k].z};
+        const WorldPoint w = query_world_point(*scene, 2.0, where);
+        EXPECT_EQ(sample->body_names[id], body_name(*scene, w.body)) << "at " << where.x << ", " << where.y;
+        worst = std::max({worst, std::abs(sample->flow[k].x - w.flow.x), std::abs(sample->flow[k].z - w.flow.y)});
+        if (w.body.kind == BodyKind::river) {
+            ++in_rivers;
+            EXPECT_GT(std::hypot(sample->flow[k].x, sample->flow[k].z), 0.0) << "a river point without a current";
+        }
+    }
+    EXPECT_GT(in_rivers, 50u) << "the extent holds the brook and the rill";
+    EXPECT_LT(worst, 1e-12);
+
+    const fs::path dir = temp_dir("bodies");
+    ASSERT_TRUE(export_series(dir, *scene, grid, {2.0}, 0).ok());
+    vtkNew<vtkXMLStructuredGridReader> reader;
+    reader->SetFileName((dir / "surface_0000.vts").c_str());
+    reader->Update();
+    auto* names = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("body_names"));
+    ASSERT_NE(names, nullptr);
+    ASSERT_EQ(names->GetNumberOfValues(), static_cast<vtkIdType>(sample->body_names.size()));
+    EXPECT_EQ(names->GetValue(1), "ocean");
+    EXPECT_EQ(names->GetValue(static_cast<vtkIdType>(2 + scene->lakes.size())), scene->rivers[0].name);
+    fs::remove_all(dir);
+
+    std::vector<detail::Rgba8Image> pictures;
+    for (const bool decorated : {false, true}) {
+        const fs::path png = temp_dir(decorated ? "flow_glyphs.png" : "flow.png");
+        ScreenshotOptions o;
+        o.field = "flow";
+        o.width = 480, o.height = 320;
+        o.glyphs = decorated;
+        if (decorated) o.track = {{20.0, -340.0}, {25.0, -420.0}, {45.0, -500.0}};
+        ASSERT_TRUE(screenshot(*scene, grid, 2.0, o, png).ok());
+        auto img = detail::read_png_rgba8(png);
+        ASSERT_TRUE(img.ok()) << img.error().message;
+        pictures.push_back(std::move(img).value());
+        fs::remove(png);
+    }
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k) differ += pictures[0].pixels[k] != pictures[1].pixels[k];
+    EXPECT_GT(differ, 500u) << "glyphs and the track are drawn";
 }
 
 TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "data_options.hpp"
+#include "points_csv.hpp"
 #include "scene_option.hpp"
 #include "time_range.hpp"
 #include "verbs.hpp"
@@ -25,11 +26,11 @@ namespace tidewater::cli {
 namespace {
 
 struct InspectArgs : DataOptions {
-    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset;
+    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset, track;
     std::optional<double> time;
     unsigned threads = 0;
     std::size_t play = 0;
-    bool quiet = false, view = false;
+    bool quiet = false, view = false, glyphs = false;
 };
 
 #if defined(TIDEWATER_HAVE_INSPECT)
@@ -183,6 +184,12 @@ int run_inspect(const InspectArgs& a) {
         inspect::ScreenshotOptions o;
         o.field = a.field;
         o.width = size->first, o.height = size->second;
+        o.glyphs = a.glyphs;
+        if (!a.track.empty()) {
+            auto track = read_points_csv(a.track);
+            if (!track) return fail(verb, "--track: " + track.error().message);
+            o.track = std::move(track).value();
+        }
         if (auto st = inspect::screenshot(*scene, grid, times.front(), o, a.screenshot); !st) return fail(verb, st.error().message);
         std::printf("rendered %s at t = %g s to %s\n", a.field.c_str(), times.front(), a.screenshot.c_str());
     }
@@ -201,11 +208,13 @@ Verb add_inspect_verb(CLI::App& app) {
     cmd->add_option("--time", a->time, "Clock time, s");
     cmd->add_option("--times", a->times, "Time range t0:t1:dt, s (export: one file per time)");
     cmd->add_option("--field", a->field, "Field to colour: height, displacement, normal, velocity, jacobian, foam, depth, "
-                                         "shore_distance, wet")
+                                         "shore_distance, wet, flow, body")
         ->capture_default_str();
     cmd->add_option("--export", a->export_dir, "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
     cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");
     cmd->add_option("--size", a->size, "Screenshot size WxH")->capture_default_str();
+    cmd->add_flag("--glyphs", a->glyphs, "With --screenshot: arrows of the current (--field flow) or else of the velocity");
+    cmd->add_option("--track", a->track, "With --screenshot: a CSV with columns x and z (a drift track) drawn on the water");
     cmd->add_option("--probe", a->probe, "x,z: a point whose height over --times is charted with its spectrum (--plot)");
     cmd->add_option("--plot", a->plot, "Write the probe chart (height against time and its spectrum) to this PNG");
     cmd->add_option("--threads", a->threads, "Query threads (0 = all)");

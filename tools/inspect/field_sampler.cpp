@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "tidewater/query.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater::inspect {
 
@@ -32,6 +33,8 @@ const std::vector<FieldInfo>& field_infos() {
         {"depth", 1, "m", "still-water depth at the point: level - terrain (inf without a shore model)"},
         {"shore_distance", 1, "m", "signed distance to the shoreline (+ over water; inf without a shore model)"},
         {"wet", 1, "1", "1 where the surface stands above the terrain"},
+        {"flow", 3, "m/s", "depth-averaged current alone (x, 0, z): rivers and their plumes, 0 elsewhere"},
+        {"body", 1, "1", "water body id: 0 land, 1 ocean, then the lakes and the rivers in the scene's order (names in body_names)"},
     };
     return infos;
 }
@@ -53,6 +56,8 @@ double FieldSample::value(const std::string& field, std::size_t k, int c) const 
     if (field == "depth") return depth[k];
     if (field == "shore_distance") return shore_distance[k];
     if (field == "wet") return wet[k];
+    if (field == "flow") return pick(flow[k]);
+    if (field == "body") return body[k];
     return std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -64,21 +69,28 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     for (int j = 0; j < grid.nz; ++j)
         for (int i = 0; i < grid.nx; ++i)
             where[grid.index(i, j)] = grid.point(i, j);
-    std::vector<SurfacePoint> out(n);
+    std::vector<WorldPoint> out(n);
     QueryOptions options;
     options.threads = threads;
-    if (auto st = query_surface(scene.ocean, time, where, out, options); !st) return st.error();
+    if (auto st = query_world(scene, time, where, out, options); !st) return st.error();
     FieldSample s;
     s.grid = grid;
     s.time = time;
-    s.has_shore = scene.ocean.shore() != nullptr;
+    s.has_shore = scene.ocean.shore() != nullptr || !scene.lakes.empty() || !scene.rivers.empty();
+    s.body_names = body_names(scene);
     s.surface.resize(n), s.height.resize(n), s.jacobian.resize(n), s.foam.resize(n), s.depth.resize(n), s.shore_distance.resize(n);
-    s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n);
+    s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n), s.flow.resize(n), s.body.resize(n);
+    const double lakes = static_cast<double>(scene.lakes.size());
     for (std::size_t k = 0; k < n; ++k) {
-        const SurfacePoint& p = out[k];
+        const SurfacePoint& p = out[k].surface;
+        // The body's rest level: the displacement is measured from it.
+        const double level = out[k].body.kind == BodyKind::lake ? scene.lakes[static_cast<std::size_t>(out[k].body.index)].body.level()
+                                                                  : scene.water_level();
         s.surface[k] = {where[k].x, p.height, where[k].y};
         s.height[k] = p.height;
-        s.displacement[k] = {p.displacement.x, p.height - scene.water_level(), p.displacement.y};
+        // A river's rest surface falls: the terrain (carved) plus its still water column.
+        const double rest = out[k].body.kind == BodyKind::river ? scene.terrain.height_at(where[k]) + p.depth : level;
+        s.displacement[k] = {p.displacement.x, p.height - rest, p.displacement.y};
         s.normal[k] = p.normal;
         s.velocity[k] = p.velocity;
         s.jacobian[k] = p.jacobian;
@@ -86,8 +98,21 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
         s.depth[k] = p.depth;
         s.shore_distance[k] = p.shore_distance;
         s.wet[k] = p.wet ? 1.0 : 0.0;
+        s.flow[k] = {out[k].flow.x, 0.0, out[k].flow.y};
+        const BodyRef b = out[k].body;
+        s.body[k] = b.kind == BodyKind::none    ? 0.0
+                    : b.kind == BodyKind::ocean ? 1.0
+                    : b.kind == BodyKind::lake  ? 2.0 + b.index
+                                                : 2.0 + lakes + b.index;
     }
     return s;
+}
+
+std::vector<std::string> body_names(const Scene& scene) {
+    std::vector<std::string> names = {"", "ocean"};
+    for (const SceneLake& l : scene.lakes) names.push_back(l.name);
+    for (const SceneRiver& r : scene.rivers) names.push_back(r.name);
+    return names;
 }
 
 std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid) {

@@ -48,6 +48,10 @@ struct FieldSample {
     std::vector<glm::dvec3> surface;  ///< Displaced surface positions (x, y, z), m, one per grid point.
     std::vector<double> height, jacobian, foam, depth, shore_distance, wet;
     std::vector<glm::dvec3> displacement, normal, velocity;
+    std::vector<glm::dvec3> flow;  ///< The current alone (x, 0, z), m/s.
+    std::vector<double> body;      ///< Body id (see body_names), one per grid point.
+    /// Names of the body ids: 0 "" (land), 1 "ocean", then the lakes and the rivers in the scene's order.
+    std::vector<std::string> body_names;
     bool has_shore = false;  ///< depth, shore_distance and wet are meaningful (the scene has terrain).
 
     /// The values of a scalar field (components 1) or a component of a vector field.
@@ -55,8 +59,12 @@ struct FieldSample {
 };
 
 /// Samples `scene` at `time`: the surface point above each grid position (Eulerian
-/// queries, as `tidewater query`) plus its particle data.
+/// queries of the whole world, as `tidewater query`: the ocean, lakes and rivers) plus
+/// its particle data, its body and its current.
 Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, double time, unsigned threads = 0);
+
+/// The body ids of `scene` (FieldSample::body_names).
+std::vector<std::string> body_names(const Scene& scene);
 
 /// Terrain heights over the grid (the second surface), m.
 std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid);

@@ -34,7 +34,11 @@ vtkNew<vtkStructuredGrid> make_grid(const SampleGrid& grid, const std::vector<gl
     return sg;
 }
 
-void add_units(vtkStructuredGrid* sg, double time) {
+void add_units(vtkStructuredGrid* sg, double time, const std::vector<std::string>& bodies) {
+    vtkNew<vtkStringArray> names;
+    names->SetName("body_names");  // body id k is names[k]
+    for (const std::string& b : bodies) names->InsertNextValue(b);
+    sg->GetFieldData()->AddArray(names);
     vtkNew<vtkStringArray> units;
     units->SetName("units");
     for (const FieldInfo& f : field_infos()) units->InsertNextValue(fmt::format("{}: {} ({})", f.name, f.unit, f.meaning));
@@ -93,7 +97,7 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
                 for (int c = 0; c < f.components; ++c) out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] = sample->value(f.name, k, c);
             sg->GetPointData()->AddArray(a);
         }
-        add_units(sg, times[step]);
+        add_units(sg, times[step], sample->body_names);
         const std::string name = fmt::format("surface_{:04}.vts", step);
         if (auto st = write(sg, temp / name); !st) return st;
         stats.write_seconds += seconds_since(t0);

@@ -29,6 +29,8 @@ Status export_series(const std::filesystem::path& dir, const Scene& scene, const
 struct ScreenshotOptions {
     std::string field = "height";
     int width = 1280, height = 720;
+    bool glyphs = false;            ///< Arrows of the current (field "flow") or else the velocity.
+    std::vector<glm::dvec2> track;  ///< A path (x, z) drawn on the water, such as a drift track, m.
 };
 
 /// The viewer's picture of `field` at `time`, offscreen, to a PNG (written whole or not

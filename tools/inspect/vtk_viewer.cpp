@@ -11,7 +11,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkGlyph3D.h>
 #include <vtkLookupTable.h>
-#include <vtkMaskPoints.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -24,6 +23,7 @@
 #include <vtkSliderRepresentation2D.h>
 #include <vtkSliderWidget.h>
 #include <vtkPolyData.h>
+#include <vtkPolyLine.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -33,6 +33,7 @@
 #include <fmt/format.h>
 
 #include "probe.hpp"
+#include "tidewater/world_query.hpp"
 #include "vtk_chart.hpp"
 #include "vtk_output.hpp"
 #include "vtk_png.hpp"
@@ -91,7 +92,44 @@ struct Viewer::Impl {
     vtkNew<vtkDoubleArray> scalars, vectors;
     vtkNew<vtkLookupTable> lut;
     vtkNew<vtkPolyDataMapper> surface_mapper;
-    vtkNew<vtkActor> surface_actor, land_actor, shore_actor, glyph_actor;
+    vtkNew<vtkActor> surface_actor, land_actor, shore_actor, glyph_actor, track_actor;
+    vtkSmartPointer<vtkGlyph3D> glyphs;
+    vtkSmartPointer<vtkPolyData> glyph_points;
+
+    /// Up to kGlyphs arrows on the points that move, evenly through them, the 95th
+    /// percentile speed 3% of the view across (a few fast texels do not shrink
+    /// every other arrow to nothing).
+    void place_glyphs() {
+        constexpr std::size_t kGlyphs = 400;
+        std::vector<std::size_t> moving;
+        std::vector<double> speeds;
+        for (std::size_t k = 0; k < grid.points(); ++k) {
+            double v[3];
+            vectors->GetTuple(static_cast<vtkIdType>(k), v);
+            const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if (speed > 1e-6) moving.push_back(k), speeds.push_back(speed);
+        }
+        vtkNew<vtkPoints> at;
+        vtkNew<vtkDoubleArray> arrows;
+        arrows->SetNumberOfComponents(3);
+        const std::size_t stride = std::max<std::size_t>(1, (moving.size() + kGlyphs - 1) / kGlyphs);
+        for (std::size_t m = 0; m < moving.size(); m += stride) {
+            const auto id = static_cast<vtkIdType>(moving[m]);
+            at->InsertNextPoint(surface->GetPoints()->GetPoint(id));
+            arrows->InsertNextTuple(vectors->GetTuple(id));
+        }
+        glyph_points->SetPoints(at);
+        glyph_points->GetPointData()->SetVectors(arrows);
+        glyph_points->Modified();
+        double typical = 1.0;
+        if (!speeds.empty()) {
+            const auto p95 = speeds.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(speeds.size() - 1));
+            std::nth_element(speeds.begin(), p95, speeds.end());
+            typical = *p95;
+        }
+        const double span = std::max(grid.max.x - grid.min.x, grid.max.y - grid.min.y);
+        glyphs->SetScaleFactor(0.03 * span / typical);
+    }
     vtkNew<vtkScalarBarActor> legend;
     vtkNew<vtkTextActor> caption;
     vtkNew<vtkRenderer> renderer;
@@ -122,12 +160,15 @@ struct Viewer::Impl {
             }
             scalars->SetValue(static_cast<vtkIdType>(k), v);
             if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-            vectors->SetTuple3(static_cast<vtkIdType>(k), sample.velocity[k].x, sample.velocity[k].y, sample.velocity[k].z);
+            // Glyphs: the current under the flow field, else the particle velocity.
+            const glm::dvec3& arrow = std::string(info().name) == "flow" ? sample.flow[k] : sample.velocity[k];
+            vectors->SetTuple3(static_cast<vtkIdType>(k), arrow.x, arrow.y, arrow.z);
         }
         if (!(hi > lo)) lo = std::isfinite(lo) ? lo - 0.5 : 0.0, hi = lo + 1.0;
         points->Modified();
         scalars->Modified();
         vectors->Modified();
+        if (glyphs) place_glyphs();
         lut->SetTableRange(lo, hi);
         surface_mapper->SetScalarRange(lo, hi);
         legend->SetTitle(fmt::format("{} ({})", info().name, info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit).c_str());
@@ -217,17 +258,15 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     m->shore_actor->SetMapper(shore_mapper);
     m->shore_actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
     m->shore_actor->GetProperty()->SetLineWidth(2.0);
-    // Velocity glyphs on about 400 points, an arrow of 1 m/s a twentieth of the view across.
-    vtkNew<vtkMaskPoints> mask;
-    mask->SetInputData(m->surface);
-    mask->SetOnRatio(std::max<int>(1, static_cast<int>(n / 400)));
+    // Glyphs on up to 400 of the moving points (update() picks them and scales the arrows).
+    m->glyph_points = vtkSmartPointer<vtkPolyData>::New();
     vtkNew<vtkArrowSource> arrow;
     vtkNew<vtkGlyph3D> glyphs;
-    glyphs->SetInputConnection(mask->GetOutputPort());
+    glyphs->SetInputData(m->glyph_points);
     glyphs->SetSourceConnection(arrow->GetOutputPort());
     glyphs->SetVectorModeToUseVector();
     glyphs->SetScaleModeToScaleByVector();
-    glyphs->SetScaleFactor(0.05 * std::max(grid.max.x - grid.min.x, grid.max.y - grid.min.y));
+    m->glyphs = glyphs;
     vtkNew<vtkPolyDataMapper> glyph_mapper;
     glyph_mapper->SetInputConnection(glyphs->GetOutputPort());
     glyph_mapper->ScalarVisibilityOff();
@@ -247,7 +286,11 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     m->caption->SetDisplayPosition(10, 10);
 
     m->renderer->SetBackground(0.92, 0.94, 0.97);
-    for (vtkActor* a : {m->land_actor.Get(), m->surface_actor.Get(), m->shore_actor.Get(), m->glyph_actor.Get()}) m->renderer->AddActor(a);
+    m->track_actor->GetProperty()->SetColor(0.85, 0.1, 0.1);
+    m->track_actor->GetProperty()->SetLineWidth(3.0);
+    m->track_actor->SetVisibility(false);
+    for (vtkActor* a : {m->land_actor.Get(), m->surface_actor.Get(), m->shore_actor.Get(), m->glyph_actor.Get(), m->track_actor.Get()})
+        m->renderer->AddActor(a);
     m->renderer->AddActor2D(m->legend);
     m->renderer->AddActor2D(m->caption);
     vtkCamera* camera = m->renderer->GetActiveCamera();
@@ -278,6 +321,29 @@ void Viewer::next_field() {
 }
 
 void Viewer::set_glyphs(bool on) { impl_->glyph_actor->SetVisibility(on); }
+
+void Viewer::set_track(const std::vector<glm::dvec2>& path) {
+    Impl& m = *impl_;
+    // Drawn a little above the surface at the shown time, so the water does not hide it.
+    constexpr double kLift = 0.5;  // m
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkPolyLine> line;
+    line->GetPointIds()->SetNumberOfIds(static_cast<vtkIdType>(path.size()));
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        const WorldPoint w = query_world_point(*m.scene, m.sample.time, path[k]);
+        points->InsertNextPoint(path[k].x, w.surface.height + kLift, path[k].y);
+        line->GetPointIds()->SetId(static_cast<vtkIdType>(k), static_cast<vtkIdType>(k));
+    }
+    vtkNew<vtkCellArray> cells;
+    cells->InsertNextCell(line);
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetLines(cells);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(poly);
+    m.track_actor->SetMapper(mapper);
+    m.track_actor->SetVisibility(path.size() >= 2);
+}
 
 Result<double> Viewer::probe(glm::dvec2 at, const std::filesystem::path& png) {
     auto series = inspect::probe(*impl_->scene, at, impl_->times);
@@ -373,6 +439,8 @@ void Viewer::run() {
 Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const ScreenshotOptions& o, const std::filesystem::path& png) {
     auto viewer = Viewer::create(scene, grid, {time}, o.field, o.width, o.height, true);
     if (!viewer) return viewer.error();
+    (*viewer)->set_glyphs(o.glyphs);
+    if (!o.track.empty()) (*viewer)->set_track(o.track);
     return (*viewer)->save(png);
 }
 

@@ -3,7 +3,7 @@
 // field selector and a click-to-probe chart.
 //
 // Keys (besides VTK's usual mouse camera): space play/pause, f next field,
-// g velocity glyphs on/off, p probe the point under the mouse (shows its chart in a
+// g glyphs on/off (the current under the flow field, else the velocity), p probe the point under the mouse (shows its chart in a
 // window, writes it to probe_X_Z.png and prints the dominant period), r reset the
 // camera, q quit.
 // Threading: one viewer per thread; VTK windows need a display (xvfb-run without one).
@@ -27,7 +27,9 @@ public:
 
     Status set_time_index(std::size_t index);  ///< Resamples the water at times[index].
     void next_field();                          ///< Colours by the next field (f).
-    void set_glyphs(bool on);                   ///< Velocity arrows (g).
+    void set_glyphs(bool on);                   ///< Arrows (g): the current when the field is flow, else the velocity.
+    /// A path (x, z) drawn as a line on the water at the shown time, such as a drift track.
+    void set_track(const std::vector<glm::dvec2>& path);
     /// Charts the height at (x, z) over the viewer's times to `png`; returns the dominant period.
     Result<double> probe(glm::dvec2 at, const std::filesystem::path& png);
     Status save(const std::filesystem::path& png);  ///< The current view, as drawn.
