@@ -240,6 +240,8 @@ JSON
     check "sidecar lists the waves" grep -q '"omega_rad_s"' baked/shore.json
     check "per-wave fields" bash -c "test -s baked/wave_00_phase_residual.png && test -s baked/wave_00_amplitude_factor.png && test -s baked/wave_00_wavevector_x.png && test -s baked/wave_00_wavevector_z.png"
     check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
+    check "the lakes and rivers are saved beside the shore" bash -c "test -s baked/bodies.json && test -s baked/river_00_psi.png && test -s baked/lake_00/shore.json"
+    check "bake prints the bodies" grep -q 'river "brook": .* m to ocean' log.txt
 
     # A scene that loads the bake queries like one that bakes its own (within the 16-bit encoding).
     sed 's|"ocean": "ocean_rolling",|"ocean": "ocean_rolling", "shore": {"bake": "baked"},|' "$EXAMPLES/scenes/default.json" > loads_bake.json
@@ -264,7 +266,7 @@ JSON
 
     # A bake that does not fit the scene is refused, naming the file and field.
     sed 's|"water_level": 0.0|"water_level": 0.5|' loads_bake.json > other_level.json
-    expect_error "bake at another water level" "shore.json: /water_level_m" "$TW" query --scene other_level.json --points points.csv --time 0
+    expect_error "bake at another water level" ".json: /water_level_m" "$TW" query --scene other_level.json --points points.csv --time 0
     sed 's|"ocean_rolling"|"lake_rippled"|' loads_bake.json > other_waves.json
     expect_error "bake for other waves" "re-run tidewater bake" "$TW" query --scene other_waves.json --points points.csv --time 0
     sed 's|"seabed": -40|"seabed": -42|' loads_bake.json > other_terrain.json

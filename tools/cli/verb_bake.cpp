@@ -1,12 +1,13 @@
 // tidewater bake: a scene's bake (bake_scene: one shoreline bake, the shore model
-// sampling it) saved as 16-bit PNGs with a JSON sidecar, whole or not at all. A scene
-// loads it with "shore": {"bake": "folder"}.
+// sampling it, the lakes and rivers and the lakes' shore models) saved as 16-bit PNGs
+// with JSON sidecars, whole or not at all. A scene loads it with "shore": {"bake": "folder"}.
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
 #include <string_view>
 
 #include "scene_option.hpp"
+#include "tidewater/body_summary.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "verbs.hpp"
@@ -47,7 +48,10 @@ int run_bake(const BakeArgs& a) {
     if (a.out.empty()) return fail(verb, "give --out DIR");
     auto scene = parse_scene_option(a.scene);
     if (!scene) return fail(verb, scene.error().message);
-    if (!scene->shore.enabled) return fail(verb, fmt::format("scene \"{}\" has its shore disabled: there is nothing to bake", scene->name));
+    const bool bodies = !scene->lakes.empty() || !scene->rivers.empty();
+    const bool ocean_shore = scene->shore.enabled && scene->has_ocean;
+    if (!ocean_shore && !bodies)
+        return fail(verb, fmt::format("scene \"{}\" has its shore disabled and no lakes or rivers: there is nothing to bake", scene->name));
     // This verb makes the scene's bake: a saved one it names is not loaded but redone.
     scene->shore.bake_folder.clear();
     if (a.model_resolution != 0) scene->shore.resolution = a.model_resolution;
@@ -62,12 +66,21 @@ int run_bake(const BakeArgs& a) {
     auto baked = bake_scene(*scene, options);
     if (!baked) return fail(verb, baked.error().message);
     if (auto st = save_scene_bake(a.out, **baked); !st) return fail(verb, st.error().message);
-    const ShoreWaves& model = *(*baked)->bake->ocean_shore;
-    const ShoreField& field = *(*baked)->bake->shoreline;
-    std::printf("baked \"%s\" in %.2f s: shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu "
-                "shoreline segments, %zu land polygons, %zu enclosed waters -> %s/\n",
-                (*baked)->name.c_str(), (*baked)->bake->seconds, model.resolution(), model.resolution(), model.texel(), model.wave_count(),
-                field.resolution, field.resolution, field.texel, field.segment_count, field.polygons, field.holes, a.out.c_str());
+    std::printf("baked \"%s\" in %.2f s -> %s/\n", (*baked)->name.c_str(), (*baked)->bake->seconds, a.out.c_str());
+    if (ocean_shore) {
+        const ShoreWaves& model = *(*baked)->bake->ocean_shore;
+        const ShoreField& field = *(*baked)->bake->shoreline;
+        std::printf("  ocean: shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu shoreline "
+                    "segments, %zu land polygons, %zu enclosed waters\n",
+                    model.resolution(), model.resolution(), model.texel(), model.wave_count(), field.resolution, field.resolution, field.texel,
+                    field.segment_count, field.polygons, field.holes);
+    }
+    const BodySummary summary = summarize_bodies(**baked);
+    for (const LakeSummary& l : summary.lakes) std::printf("  lake \"%s\": level %.2f m, %.0f m^2\n", l.name.c_str(), l.level, l.area);
+    for (const RiverSummary& r : summary.rivers)
+        std::printf("  river \"%s\": %.0f m to %s%s%s, %.2f m^3/s, grid %dx%d at %.2f m, %d island%s\n", r.name.c_str(), r.length,
+                    r.ends_in.c_str(), r.receiver.empty() ? "" : " ", r.receiver.c_str(), r.discharge, r.grid_nx, r.grid_nz, r.texel,
+                    r.islands, r.islands == 1 ? "" : "s");
     return 0;
 }
 

@@ -48,12 +48,12 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
     if (!is16 || channels != 1) {
         std::fclose(f);
         return Error{ErrorCode::schema_error,
-                     fmt::format("{}: heightmaps must be 16-bit greyscale PNG (found {} channel(s), {}-bit)", name,
+                     fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name,
                                  channels, is16 ? 16 : 8)};
     }
-    if (w < 2 || h < 2 || static_cast<long long>(w) * h > (1LL << 28)) {
+    if (w < 1 || h < 1 || static_cast<long long>(w) * h > (1LL << 28)) {
         std::fclose(f);
-        return Error{ErrorCode::schema_error, fmt::format("{}: {}x{} pixels is out of range (2x2 to 2^28 pixels)", name, w, h)};
+        return Error{ErrorCode::schema_error, fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
     }
     stbi_us* data = stbi_load_from_file_16(f, &w, &h, &channels, 1);
     std::fclose(f);

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <mutex>
 
+#include "tidewater/detail/atomic_folder.hpp"
+#include "tidewater/detail/bodies_bake_folder.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -46,13 +48,9 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
     std::vector<std::shared_ptr<const ShoreWaves>> models;
     const std::size_t count = bodies.lakes.size();
     for (std::size_t l = 0; l < count; ++l) {
-        const detail::FieldGrid& g = bodies.lakes[l].grid;
-        SquareRegion region;
-        region.center = g.corner + 0.5 * g.texel * glm::dvec2(g.nx, g.nz);
-        region.half_size = 0.5 * g.texel * std::max(g.nx, g.nz) * 1.1 + 2.0 * g.texel;
         ShoreWaveOptions model_options;
         model_options.resolution = scene.shore.resolution;
-        model_options.region = region;
+        model_options.region = detail::lake_basin_region(bodies.lakes[l]);
         model_options.breaking_index = scene.shore.breaking_index;
         model_options.threads = options.threads;
         model_options.cancel = options.cancel;
@@ -104,17 +102,32 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         const double total = (has_bodies ? 1.0 : 0.0) + (lake_shores ? 1.0 : 0.0) + (shore ? 3.0 : 0.0);
         const double bodies_end = total > 0.0 && has_bodies ? 1.0 / total : 0.0;
         const double bodies_share = total > 0.0 && lake_shores ? bodies_end + 1.0 / total : bodies_end;
-        if (has_bodies) {
-            detail::BodiesBakeOptions bodies_options;
-            bodies_options.lake_resolution = scene.shore.resolution;
-            bodies_options.cancel = options.cancel;
-            bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
+        detail::BodiesBakeOptions bodies_options;
+        bodies_options.lake_resolution = scene.shore.resolution;
+        bodies_options.cancel = options.cancel;
+        bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
+        const bool load_bodies = has_bodies && !scene.shore.bake_folder.empty();
+        if (load_bodies) {
+            // The saved bake holds the lakes and rivers (and their lakes' shores) too.
+            progress.report("loading", 0.0, bodies_share, 0.0);
+            auto loaded = load_bodies_bake(scene.shore.bake_folder, scene, bodies_options, lake_shores);
+            if (!loaded) return in_shore(scene, loaded.error());
+            terrain = loaded->bodies.terrain;
+            bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(loaded->bodies));
+            if (lake_shores) bake->lake_shores = std::move(loaded->lake_shores);
+            bake->loaded = true;
+            progress.report("loading", 0.0, bodies_share, 1.0);
+        } else if (has_bodies) {
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
             if (!bodies) return bodies.error();
             terrain = bodies->terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
+        } else if (!scene.shore.bake_folder.empty() && std::filesystem::exists(scene.shore.bake_folder / kBodiesSidecar)) {
+            return in_shore(scene, Error{ErrorCode::invalid_argument,
+                                         fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
+                                                     (scene.shore.bake_folder / kBodiesSidecar).string())});
         }
-        if (lake_shores) {
+        if (lake_shores && !load_bodies) {
             auto models = bake_lake_shores(scene, *bake->bodies, options, [&](double f) {
                 progress.report("lake shores", bodies_end, bodies_share, f);
             });
@@ -208,18 +221,31 @@ bool Scene::baked() const {
 }
 
 Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
-    if (!baked.bake || !baked.bake->ocean_shore)
+    const bool ocean = baked.bake && baked.bake->ocean_shore;
+    const bool bodies = baked.bake && baked.bake->bodies;
+    if (!ocean && !bodies)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("scene \"{}\" has no shore bake to save: {}", baked.name,
-                                 baked.shore.enabled ? "pass it through bake_scene first" : "its shore is disabled")};
-    ShoreBakeContents contents;
-    contents.model = baked.bake->ocean_shore.get();
-    contents.waves = &baked.ocean.waves();
-    contents.water_level = baked.water_level();
-    contents.breaking_index = baked.shore.breaking_index;
-    contents.scene_name = baked.name;
-    contents.distance_field = baked.bake->shoreline.get();
-    return save_shore_bake(dir, contents);
+                     fmt::format("scene \"{}\" has no bake to save: {}", baked.name,
+                                 !baked.bake ? "pass it through bake_scene first"
+                                             : "its shore is disabled and it has no lakes or rivers")};
+    if (!baked.baked())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("scene \"{}\" was edited after its bake: pass it through bake_scene again", baked.name)};
+    return detail::write_folder_atomically(dir, [&](const std::filesystem::path& temp) -> Status {
+        if (ocean) {
+            ShoreBakeContents contents;
+            contents.model = baked.bake->ocean_shore.get();
+            contents.waves = &baked.ocean.waves();
+            contents.water_level = baked.water_level();
+            contents.breaking_index = baked.shore.breaking_index;
+            contents.scene_name = baked.name;
+            contents.distance_field = baked.bake->shoreline.get();
+            if (auto st = write_shore_bake_into(temp, contents); !st) return st;
+        }
+        if (bodies)
+            if (auto st = write_bodies_bake_into(temp, baked); !st) return st;
+        return {};
+    });
 }
 
 }  // namespace tidewater

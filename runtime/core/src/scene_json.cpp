@@ -190,6 +190,8 @@ Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::pat
         e.message = fmt::format("{}: {}", r.context("file"), e.message);
         return e;
     }
+    if (image->width < 2 || image->height < 2)
+        return r.error("file", fmt::format("{}: {}x{} pixels: a heightmap needs at least 2x2", path.string(), image->width, image->height));
     t.file = path.string();
     t.image = std::make_shared<const Gray16Image>(std::move(image).value());
     return Terrain(t);

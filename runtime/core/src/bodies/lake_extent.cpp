@@ -13,6 +13,14 @@ std::vector<float> sample_terrain(const Terrain& terrain, const FieldGrid& grid)
     return h;
 }
 
+SquareRegion lake_basin_region(const LakeBake& lake) {
+    const FieldGrid& g = lake.grid;
+    SquareRegion region;
+    region.center = g.corner + 0.5 * g.texel * glm::dvec2(g.nx, g.nz);
+    region.half_size = 0.5 * g.texel * std::max(g.nx, g.nz) * 1.1 + 2.0 * g.texel;
+    return region;
+}
+
 bool LakeBake::holds(glm::dvec2 p, double terrain_height) const {
     if (!(terrain_height < level)) return false;
     const double u = (p.x - grid.corner.x) / grid.texel, v = (p.y - grid.corner.y) / grid.texel;

@@ -162,6 +162,20 @@ double bank_psi(const ChannelInputs& in, double own_discharge, double along, int
     return psi;
 }
 
+void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight) {
+    const std::size_t n = river.grid.size();
+    river.query_texels.assign(n * gpu::kRiverQueryStride, 0.0f);
+    for (std::size_t t = 0; t < n; ++t) {
+        float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
+        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
+        q[gpu::kRiverQueryDepth] = river.depth[t];
+        q[gpu::kRiverQueryTangentX] = river.tangent_x[t];
+        q[gpu::kRiverQueryTangentZ] = river.tangent_z[t];
+        q[gpu::kRiverQueryWaveWeight] = river_weight[t];
+        q[gpu::kRiverQueryStillWeight] = still_weight[t];
+    }
+}
+
 Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     const double mouth = river.along.back();
     const double mouth_width = river.width.back();
@@ -371,20 +385,11 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
         }
     std::vector<float> river_weight, still_weight;
     blend_with_still_water(g, still, std::max(mouth_width, 2.0 * g.texel), river.texel, river_weight, still_weight);
-    river.query_texels.assign(g.size() * gpu::kRiverQueryStride, 0.0f);
-    for (std::size_t t = 0; t < g.size(); ++t) {
-        float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
-        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
-        q[gpu::kRiverQueryDepth] = river.depth[t];
-        q[gpu::kRiverQueryTangentX] = frame.tx[t];
-        q[gpu::kRiverQueryTangentZ] = frame.tz[t];
-        q[gpu::kRiverQueryWaveWeight] = river_weight[t];
-        q[gpu::kRiverQueryStillWeight] = still_weight[t];
-    }
     river.channel_s = frame.along;
     river.channel_n = frame.across;
     river.tangent_x = frame.tx;
     river.tangent_z = frame.tz;
+    pack_query_texels(river, river_weight, still_weight);
     // Mean speed: discharge over the mean section (wet area / length).
     const double mean_area = area_sum * g.texel * g.texel / std::max(mouth, g.texel);
     river.mean_speed = mean_area > 0.0 ? river.discharge / mean_area : 0.0;

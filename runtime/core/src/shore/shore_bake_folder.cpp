@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "bake/field_png.hpp"
 #include "json_reader.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/constants.hpp"
@@ -19,47 +20,9 @@ namespace fs = std::filesystem;
 using detail::ObjectReader;
 
 constexpr const char* kSidecar = "shore.json";
-constexpr const char* kEncoding = "16-bit grey PNG, value = (pixel - zero_pixel) * step; image row j is texel row j (+z), "
-                                  "samples at texel centres";
 
-/// 16-bit encoding of a field: value = (pixel - zero) * step. 0 is exact whenever the
-/// range holds it, and every value in [lo, hi] is within step / 2.
-struct Encoding {
-    double step = 1.0;
-    std::int64_t zero = 0;
-
-    static Encoding covering(double lo, double hi) {
-        Encoding e;
-        e.step = hi > lo ? (hi - lo) / 65534.0 : std::max(std::abs(lo), 1.0) / 65534.0;
-        e.zero = std::llround(-lo / e.step);
-        return e;
-    }
-    std::uint16_t encode(double v) const {
-        return static_cast<std::uint16_t>(std::clamp<std::int64_t>(std::llround(v / step) + zero, 0, 65535));
-    }
-    double decode(std::uint16_t p) const { return static_cast<double>(static_cast<std::int64_t>(p) - zero) * step; }
-};
-
-/// Writes one field as a PNG; returns its sidecar entry.
-Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name, const std::vector<float>& values, int n,
-                                   const char* unit) {
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    const Encoding e = Encoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo), values.empty() ? 0.0 : static_cast<double>(*hi));
-    Gray16Image img;
-    img.width = img.height = n;
-    img.pixels.resize(values.size());
-    for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
-    const std::string file = name + ".png";
-    if (auto st = detail::write_png_gray16(dir / file, img); !st) return st.error();
-    return nlohmann::json{{"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
-}
-
-Status write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text << "\n";
-    out.close();
-    if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", path.string())};
-    return {};
+Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name, const std::vector<float>& values, int n, const char* unit) {
+    return detail::write_field_png(dir, name, values, n, n, unit);
 }
 
 /// Fills `temp` with the bake.
@@ -93,7 +56,7 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
         model["waves"].push_back(entry);
     }
     nlohmann::json sidecar = {{"version", kShoreBakeFormatVersion}, {"scene", c.scene_name}, {"water_level_m", c.water_level},
-                              {"encoding", kEncoding}, {"model", model}};
+                              {"encoding", detail::kFieldEncoding}, {"model", model}};
     if (const ShoreField* d = c.distance_field) {
         nlohmann::json dist = {{"resolution", d->resolution}, {"texel_m", d->texel}, {"corner_m", {d->corner.x, d->corner.y}},
                                {"size_m", d->texel * d->resolution},
@@ -115,57 +78,35 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
             for (const auto& p : l.points) pts.push_back({p.x, p.y});
             lines.push_back({{"closed", l.closed}, {"points", pts}});
         }
-        if (auto st = write_text(temp / "shorelines.json", lines.dump()); !st) return st;
+        if (auto st = detail::write_text_file(temp / "shorelines.json", lines.dump()); !st) return st;
         sidecar["distance_field"] = dist;
     }
-    return write_text(temp / kSidecar, sidecar.dump(2));
+    return detail::write_text_file(temp / kSidecar, sidecar.dump(2));
 }
 
-/// Reads a field's PNG and decodes it, checking its size.
 Result<std::vector<float>> read_field(const fs::path& dir, const ObjectReader& fields, std::string_view name, int n) {
-    if (!fields.has(name)) return fields.error(name, "is missing");
-    auto r = ObjectReader::open(fields.at(name), fields.source(), fields.child_path(name));
-    if (!r) return r.error();
-    std::string file;
-    if (auto st = r->string("file", file, true); !st) return st.error();
-    if (file.empty() || file.find('/') != std::string::npos || file.find('\\') != std::string::npos)
-        return r->error("file", "must be a file name inside the bake folder");
-    double step = 0.0, zero = 0.0;
-    if (auto st = r->number("step", step, true); !st) return st.error();
-    if (auto st = r->number("zero_pixel", zero, true); !st) return st.error();
-    if (!(step > 0.0) || !std::isfinite(step)) return r->error("step", "must be a finite number > 0");
-    if (zero != std::floor(zero) || std::abs(zero) > 1e15) return r->error("zero_pixel", "must be an integer");
-    auto img = detail::read_png_gray16(dir / file);
-    if (!img) return img.error();
-    if (img->width != n || img->height != n)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: the image is {}x{}, the bake's resolution is {}x{}", (dir / file).string(), img->width, img->height, n, n)};
-    Encoding e;
-    e.step = step;
-    e.zero = static_cast<std::int64_t>(zero);
-    std::vector<float> values(img->pixels.size());
-    for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<float>(e.decode(img->pixels[k]));
-    return values;
+    return detail::read_field_png(dir, fields, name, n, n);
 }
-
-/// The step of a field (for tolerances), read after read_field succeeded.
-double field_step(const ObjectReader& fields, std::string_view name) { return fields.at(name).at("step").get<double>(); }
 
 bool close(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
 
 }  // namespace
 
-Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
+Status write_shore_bake_into(const fs::path& dir, const ShoreBakeContents& contents) {
     if (!contents.model || !contents.waves)
         return Error{ErrorCode::invalid_argument, "save_shore_bake: the model and its waves are required"};
     if (contents.model->wave_count() != contents.waves->size())
         return Error{ErrorCode::invalid_argument, fmt::format("save_shore_bake: the model has {} waves, the wave set {}",
                                                               contents.model->wave_count(), contents.waves->size())};
-    return detail::write_folder_atomically(dir, [&](const fs::path& temp) { return write_bake(temp, contents); });
+    return write_bake(dir, contents);
+}
+
+Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
+    return detail::write_folder_atomically(dir, [&](const fs::path& temp) { return write_shore_bake_into(temp, contents); });
 }
 
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,
-                                                          const Terrain& terrain) {
+                                                          const Terrain& terrain, const SquareRegion* region) {
     const fs::path sidecar_path = dir / kSidecar;
     auto text = detail::read_text_file(sidecar_path.string());
     if (!text) return text.error();
@@ -195,9 +136,9 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         !model->at("corner_m")[0].is_number() || !model->at("corner_m")[1].is_number())
         return model->error("corner_m", "expected [x, z] in metres");
     f.corner = {model->at("corner_m")[0].get<double>(), model->at("corner_m")[1].get<double>()};
-    // The grid covers the terrain's extent, as bake_scene's own bake would.
-    const double half = terrain.extent_half_size();
-    const glm::dvec2 corner = terrain.extent_center() - glm::dvec2(half);
+    // The grid covers the terrain's extent (or the region), as bake_scene's own bake would.
+    const double half = region ? region->half_size : terrain.extent_half_size();
+    const glm::dvec2 corner = (region ? region->center : terrain.extent_center()) - glm::dvec2(half);
     if (!close(f.texel * static_cast<double>(n), 2.0 * half) || !close(f.corner.x, corner.x) || !close(f.corner.y, corner.y))
         return model->error("corner_m", fmt::format("the bake covers {} m from ({}, {}), the terrain {} m from ({}, {}): "
                                                     "it was made for another terrain; re-run tidewater bake",
@@ -249,7 +190,7 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         *target = std::move(values).value();
     }
     // The terrain must be the one baked over: its depth at every texel, within the encoding.
-    const double tolerance = 0.51 * field_step(*fields, "depth") + 1e-3;
+    const double tolerance = 0.51 * detail::field_png_step(*fields, "depth") + 1e-3;
     for (int j = 0; j < f.resolution; ++j)
         for (int i = 0; i < f.resolution; ++i) {
             const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);

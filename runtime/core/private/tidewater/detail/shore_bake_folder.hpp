@@ -34,11 +34,17 @@ struct ShoreBakeContents {
 /// replaces `dir` when complete. An existing `dir` is replaced only on success.
 Status save_shore_bake(const std::filesystem::path& dir, const ShoreBakeContents& contents);
 
+/// The same files written straight into an existing folder `dir` (for a bake that holds
+/// several models, itself written atomically).
+Status write_shore_bake_into(const std::filesystem::path& dir, const ShoreBakeContents& contents);
+
 /// Loads the model saved in `dir` for `waves` over `terrain` at `water_level`. Fails,
 /// naming the file and field, on a missing or corrupt file, and when the bake was made
 /// for other waves, another water level or another terrain (its depth field is checked
-/// against `terrain` at every texel).
+/// against `terrain` at every texel). The model covers the terrain's extent, or `region`
+/// where given (a lake's basin).
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const std::filesystem::path& dir, const WaveSet& waves,
-                                                          double water_level, const Terrain& terrain);
+                                                          double water_level, const Terrain& terrain,
+                                                          const SquareRegion* region = nullptr);
 
 }  // namespace tidewater

@@ -15,6 +15,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
 
@@ -63,6 +64,9 @@ struct LakeBake {
     /// Whether p lies in the lake: below its level in or next to one of its texels.
     bool holds(glm::dvec2 p, double terrain_height) const;
 };
+
+/// The square a lake's shore model covers: its extent with a margin of beach.
+SquareRegion lake_basin_region(const LakeBake& lake);
 
 struct RiverBake {
     std::string name;
