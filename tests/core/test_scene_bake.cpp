@@ -2,6 +2,7 @@
 // once, with progress and cancellation, into an immutable scene that threads share;
 // a saved bake loads without the work.
 #include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -11,6 +12,7 @@
 #include "test_helpers.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 
 namespace tidewater {
 namespace {
@@ -276,6 +278,77 @@ TEST(SceneBake, RefusesABadDistanceResolution) {
         ASSERT_FALSE(r.ok()) << resolution;
         EXPECT_NE(r.error().message.find(words), std::string::npos) << r.error().message;
     }
+}
+
+/// Every baked field of two rivers, bit for bit.
+void expect_same_river(const detail::RiverBake& a, const detail::RiverBake& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.texel, b.texel) << a.name;
+    EXPECT_EQ(a.surface, b.surface) << a.name;
+    EXPECT_EQ(a.psi, b.psi) << a.name;
+    EXPECT_EQ(a.flow_x, b.flow_x) << a.name;
+    EXPECT_EQ(a.flow_z, b.flow_z) << a.name;
+    EXPECT_EQ(a.query_texels, b.query_texels) << a.name;
+    ASSERT_EQ(a.cut != nullptr, b.cut != nullptr) << a.name;
+    if (a.cut) {
+        EXPECT_EQ(a.cut->depth, b.cut->depth) << a.name;
+    }
+}
+
+// An editor's re-bake from its last good scene: what the edit leaves alone is reused, and
+// the result is the full bake's.
+TEST(SceneBake, ReBakingAfterAnEditReusesWhatItLeavesAloneAndMatchesAFullBake) {
+    auto parsed = default_scene();
+    ASSERT_TRUE(parsed.ok());
+    parsed->shore.resolution = 96;
+    auto first = bake_scene(*parsed);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+
+    // A new preset for the tarn: its shore model is re-baked, the rivers and the ocean's are not.
+    Scene ripples = *parsed;
+    auto calm = load_preset("pool_calm");
+    ASSERT_TRUE(calm.ok());
+    auto lake = WaterBody::create(*calm, ripples.lakes[0].body.level(), "tarn");
+    ASSERT_TRUE(lake.ok());
+    ripples.lakes[0].body = std::move(lake).value();
+    SceneBakeOptions options;
+    options.previous = *first;
+    auto quick = bake_scene(ripples, options);
+    ASSERT_TRUE(quick.ok()) << quick.error().message;
+    EXPECT_EQ((*quick)->bake->reused.rivers, 2u);
+    EXPECT_EQ((*quick)->bake->reused.lake_shores, 0u);
+    EXPECT_TRUE((*quick)->bake->reused.ocean_shore);
+    EXPECT_EQ((*quick)->bake->ocean_shore, (*first)->bake->ocean_shore);
+    EXPECT_TRUE((*quick)->baked());
+
+    // Another sea: the ocean's shore model is re-baked, the rivers and the tarn's are not.
+    Scene sea = *parsed;
+    auto swell = WaterBody::create(*calm, sea.water_level(), "ocean");
+    ASSERT_TRUE(swell.ok());
+    sea.ocean = std::move(swell).value();
+    auto resea = bake_scene(sea, options);
+    ASSERT_TRUE(resea.ok()) << resea.error().message;
+    EXPECT_EQ((*resea)->bake->reused.rivers, 2u);
+    EXPECT_EQ((*resea)->bake->reused.lake_shores, 1u);
+    EXPECT_FALSE((*resea)->bake->reused.ocean_shore);
+    EXPECT_TRUE((*resea)->baked());
+
+    // The rill widened: it and the brook it joins are re-baked (the brook's inflow and the
+    // rill's banks change); the brook reaches into the tarn's basin and the sea, so both
+    // shore models are re-baked too. The result is the full bake's.
+    Scene wider = *parsed;
+    for (double& w : wider.rivers[1].width) w += 2.0;
+    auto edited = bake_scene(wider, options);
+    ASSERT_TRUE(edited.ok()) << edited.error().message;
+    EXPECT_EQ((*edited)->bake->reused.rivers, 0u);
+    EXPECT_FALSE((*edited)->bake->reused.ocean_shore);
+    auto full = bake_scene(wider);
+    ASSERT_TRUE(full.ok());
+    for (std::size_t r = 0; r < wider.rivers.size(); ++r)
+        expect_same_river((*edited)->bake->bodies->rivers[r], (*full)->bake->bodies->rivers[r]);
+    EXPECT_EQ((*edited)->bake->lake_shores[0]->phase_residual(0), (*full)->bake->lake_shores[0]->phase_residual(0));
+    EXPECT_EQ((*edited)->bake->ocean_shore->depth(), (*full)->bake->ocean_shore->depth());
+
 }
 
 }  // namespace

@@ -42,12 +42,43 @@ Error in_shore(const Scene& scene, Error e) {
 
 /// Each lake's own shore model over its basin (the square round its extent, with a
 /// margin of beach), at the scene's shore resolution.
+bool same_waves(const WaveSet& a, const WaveSet& b) { return std::ranges::equal(a.waves(), b.waves()); }
+
+/// The previous bake's model of lake l when nothing it depends on changed: the lake's
+/// extent and level, its waves, the shore settings and the cuts under its basin.
+std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const detail::WaterBodiesBake& bodies, std::size_t l,
+                                                       const Scene* previous) {
+    if (!previous || !previous->bake || !previous->bake->bodies || l >= previous->bake->lake_shores.size() ||
+        l >= previous->lakes.size())
+        return nullptr;
+    const SceneBake& old = *previous->bake;
+    const detail::LakeBake &now = bodies.lakes[l], &then = old.bodies->lakes[l];
+    if (!old.lake_shores[l] || old.shore.resolution != scene.shore.resolution || old.shore.breaking_index != scene.shore.breaking_index ||
+        now.level != then.level || now.inside != then.inside || !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
+        !same_waves(scene.lakes[l].body.waves(), previous->lakes[l].body.waves()))
+        return nullptr;
+    const SquareRegion region = detail::lake_basin_region(now);
+    detail::FieldGrid basin;
+    basin.corner = region.center - glm::dvec2(region.half_size);
+    basin.texel = 2.0 * region.half_size;
+    basin.nx = basin.nz = 1;
+    if (detail::cuts_under(bodies.terrain.cuts(), basin) != detail::cuts_under(old.bodies->terrain.cuts(), basin)) return nullptr;
+    return old.lake_shores[l];
+}
+
 Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Scene& scene, const detail::WaterBodiesBake& bodies,
                                                                        const SceneBakeOptions& options,
-                                                                       const std::function<void(double)>& progress) {
+                                                                       const std::function<void(double)>& progress,
+                                                                       std::size_t& reused) {
     std::vector<std::shared_ptr<const ShoreWaves>> models;
     const std::size_t count = bodies.lakes.size();
     for (std::size_t l = 0; l < count; ++l) {
+        if (auto same = unchanged_lake_shore(scene, bodies, l, options.previous.get())) {
+            models.push_back(std::move(same));
+            ++reused;
+            progress(static_cast<double>(l + 1) / static_cast<double>(count));
+            continue;
+        }
         ShoreWaveOptions model_options;
         model_options.resolution = scene.shore.resolution;
         model_options.region = detail::lake_basin_region(bodies.lakes[l]);
@@ -64,6 +95,16 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
         models.push_back(std::move(model).value());
     }
     return models;
+}
+
+/// Whether the previous bake's ocean shore model is this scene's: the same carved
+/// terrain (shape and cut objects), waves, level, shore settings and distance field.
+bool unchanged_ocean_shore(const Scene& scene, const Terrain& terrain, int distance_resolution, const Scene* previous) {
+    if (!previous || !previous->bake || !previous->bake->ocean_shore || !previous->bake->shoreline || previous->bake->loaded) return false;
+    const SceneBake& old = *previous->bake;
+    return old.terrain == terrain && old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
+           old.shore.breaking_index == scene.shore.breaking_index && old.distance_resolution == distance_resolution &&
+           same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
 /// The lakes and rivers as baked, where what shapes their water is concerned.
@@ -118,8 +159,11 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             bake->loaded = true;
             progress.report("loading", 0.0, bodies_share, 1.0);
         } else if (has_bodies) {
+            const Scene* previous = options.previous.get();
+            if (previous && previous->bake && previous->bake->bodies) bodies_options.previous = previous->bake->bodies.get();
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
             if (!bodies) return bodies.error();
+            bake->reused.rivers = bodies->reused_rivers;
             terrain = bodies->terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
         } else if (!scene.shore.bake_folder.empty() && std::filesystem::exists(scene.shore.bake_folder / kBodiesSidecar)) {
@@ -128,9 +172,9 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
                                                      (scene.shore.bake_folder / kBodiesSidecar).string())});
         }
         if (lake_shores && !load_bodies) {
-            auto models = bake_lake_shores(scene, *bake->bodies, options, [&](double f) {
-                progress.report("lake shores", bodies_end, bodies_share, f);
-            });
+            auto models = bake_lake_shores(
+                scene, *bake->bodies, options, [&](double f) { progress.report("lake shores", bodies_end, bodies_share, f); },
+                bake->reused.lake_shores);
             if (!models) return models.error();
             bake->lake_shores = std::move(models).value();
         }
@@ -141,10 +185,17 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             bake->ocean_shore = std::move(loaded).value();
             bake->loaded = true;
             progress.report("loading", bodies_share, 1.0, 1.0);
+        } else if (const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
+                   shore && unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
+            // Nothing the ocean's shore depends on changed: the edit was inland.
+            bake->ocean_shore = options.previous->bake->ocean_shore;
+            bake->shoreline = options.previous->bake->shoreline;
+            bake->distance_resolution = distance_resolution;
+            bake->reused.ocean_shore = true;
+            progress.report("shore waves", bodies_share, 1.0, 1.0);
         } else if (shore) {
             // One shoreline bake serves the distance field and the shore model, which
             // samples it: it may be finer than the model's grid, never coarser.
-            const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
             if (distance_resolution < scene.shore.resolution)
                 return in_shore(scene, Error{ErrorCode::invalid_argument,
                                              fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
@@ -169,6 +220,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             if (!model) return in_shore(scene, model.error());
             bake->ocean_shore = std::move(model).value();
             bake->shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
+            bake->distance_resolution = distance_resolution;
         }
         if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
 

@@ -52,6 +52,12 @@ struct SceneBake {
     std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
     bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
     double seconds = 0.0;  ///< Wall-clock time of the bake or load.
+    /// What was taken unchanged from SceneBakeOptions::previous.
+    struct Reused {
+        std::size_t rivers = 0, lake_shores = 0;
+        bool ocean_shore = false;
+    } reused;
+    int distance_resolution = 0;  ///< texels per side of the shoreline's distance field (0: none baked)
     /// What it was made from, so that Scene::baked() can tell an edited copy: the terrain
     /// with the rivers' channels cut into it (the baked scene's terrain too).
     Terrain terrain;
@@ -73,6 +79,12 @@ struct SceneBakeOptions {
     /// Request a stop from any thread: bake_scene returns ErrorCode::cancelled soon after
     /// (within one wave or one tile row of the work) and keeps nothing.
     std::stop_token cancel;
+    /// The baked scene this one was edited from (an editor's last good scene), or null.
+    /// What the edit leaves unchanged is taken from it instead of baked again: rivers with
+    /// the same inputs over the same terrain, lakes' shore models whose basin, waves and
+    /// shore settings are the same, and the ocean's shore model when the carved terrain,
+    /// its waves, level and shore settings are. The result is the same as a full bake.
+    std::shared_ptr<const Scene> previous;
 };
 
 /// Bakes `scene` (or loads its saved bake) into a new scene whose ocean feels its shore.

@@ -39,6 +39,7 @@ struct Wave {
 
     double period() const;      ///< s
     double phase_speed() const; ///< m/s
+    bool operator==(const Wave&) const = default;
 };
 
 /// A validated set of at most kMaxWaves waves that satisfies the fold-free rule.

@@ -34,4 +34,17 @@ RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
     return out;
 }
 
+bool cut_touches(const TerrainCut& cut, const FieldGrid& grid) {
+    const glm::dvec2 lo = cut.corner - glm::dvec2(cut.texel), hi = cut.corner + cut.texel * glm::dvec2(cut.nx + 1, cut.nz + 1);
+    const glm::dvec2 glo = grid.corner, ghi = grid.corner + grid.texel * glm::dvec2(grid.nx, grid.nz);
+    return lo.x < ghi.x && glo.x < hi.x && lo.y < ghi.y && glo.y < hi.y;
+}
+
+std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const FieldGrid& grid) {
+    std::vector<std::shared_ptr<const TerrainCut>> out;
+    for (const auto& c : cuts)
+        if (c && cut_touches(*c, grid)) out.push_back(c);
+    return out;
+}
+
 }  // namespace tidewater::detail

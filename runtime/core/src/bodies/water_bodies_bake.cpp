@@ -173,11 +173,35 @@ Result<std::vector<std::size_t>> bake_order(const Scene& scene, const std::vecto
 
 Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options) {
     WaterBodiesBake out;
+    out.lake_resolution = options.lake_resolution;
+    out.texels_across = options.texels_across;
     // Always from the shape alone: a baked scene's terrain already carries its cuts.
     const Terrain uncut = scene.terrain.with_cuts({});
-    auto lakes = find_lakes(scene, uncut, options);
-    if (!lakes) return lakes.error();
-    out.lakes = std::move(lakes).value();
+    // The previous bake is only of use over the same shape, lakes and grids.
+    const WaterBodiesBake* previous = options.previous;
+    if (previous && (!(previous->terrain.shape() == uncut.shape()) || previous->lake_resolution != options.lake_resolution ||
+                     previous->texels_across != options.texels_across || previous->lakes.size() != scene.lakes.size()))
+        previous = nullptr;
+    for (std::size_t l = 0; previous && l < scene.lakes.size(); ++l)
+        if (previous->lakes[l].name != scene.lakes[l].name || previous->lakes[l].level != scene.lakes[l].body.level() ||
+            !previous->lakes[l].grid.contains(scene.lakes[l].at))
+            previous = nullptr;
+    if (previous) {
+        // Lakes depend on the shape, their level and their point alone.
+        for (std::size_t l = 0; previous && l < scene.lakes.size(); ++l) {
+            int i = 0, j = 0;
+            const LakeBake& old = previous->lakes[l];
+            old.grid.texel_of(scene.lakes[l].at, i, j);
+            if (!old.inside[old.grid.index(i, j)]) previous = nullptr;
+        }
+    }
+    if (previous) {
+        out.lakes = previous->lakes;
+    } else {
+        auto lakes = find_lakes(scene, uncut, options);
+        if (!lakes) return lakes.error();
+        out.lakes = std::move(lakes).value();
+    }
     const std::size_t count = scene.rivers.size();
     std::vector<CentrelineSamples> raw(count);
     for (std::size_t r = 0; r < count; ++r) {
@@ -252,6 +276,39 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             case RiverEnd::domain_edge: break;
         }
         bake.mouth_level = profile.mouth_level;
+        const bool still_mouth = plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean;
+        RiverBakeKey key;
+        key.path = river.path;
+        key.width = river.width;
+        key.discharge = river.discharge;
+        key.manning = river.manning;
+        key.texel = in.texel;
+        key.carve = river.carve;
+        key.samples = plan.samples.points.size();
+        key.end = plan.end;
+        key.receiver = plan.receiver;
+        key.joins_at = plan.joins_at;
+        key.total = plan.total;
+        key.mouth_level = profile.mouth_level;
+        key.psi_left = in.psi_left;
+        key.plume_length = still_mouth ? kPlumeWidths * plan.samples.width.back() : 0.0;
+        key.side = plan.side;
+        for (const Inflow& f : in.inflows) key.inflows.push_back({f.along, f.width, f.discharge, static_cast<double>(f.side)});
+        // Unchanged, over the same terrain under its grid: the previous bake is this one.
+        if (previous && r < previous->rivers.size()) {
+            const RiverBake& old = previous->rivers[r];
+            // NaN mouth levels (domain edge) compare unequal: compare the rest then.
+            RiverBakeKey a = old.key, b = key;
+            if (std::isnan(a.mouth_level) && std::isnan(b.mouth_level)) a.mouth_level = b.mouth_level = 0.0;
+            if (old.name == river.name && a == b && old.baked_over == cuts_under(cuts, old.grid)) {
+                bake = old;
+                ++out.reused_rivers;
+                in.terrain = nullptr;
+                if (bake.cut) cuts.push_back(bake.cut);
+                if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));
+                continue;
+            }
+        }
         profile.discharge.resize(plan.samples.along.size());
         for (std::size_t k = 0; k < profile.discharge.size(); ++k) {
             double q = river.discharge;
@@ -261,8 +318,8 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         in.centre_depth = bake_profile(plan.samples, profile, bake);
         // A river off the domain's edge meets no level: its surface there is its reference.
         if (std::isnan(bake.mouth_level)) bake.mouth_level = bake.surface.back();
-        if (plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean) {
-            in.plume_length = kPlumeWidths * plan.samples.width.back();
+        if (still_mouth) {
+            in.plume_length = key.plume_length;
             if (plan.end == RiverEnd::lake) {
                 const LakeBake* lake = &out.lakes[static_cast<std::size_t>(plan.receiver)];
                 in.in_receiver = [lake](glm::dvec2 p, double ground) { return lake->holds(p, ground); };
@@ -272,6 +329,8 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             }
         }
         if (auto st = bake_channel(in, bake); !st) return named(river_path(scene, r), st.error());
+        bake.key = std::move(key);
+        bake.baked_over = cuts_under(cuts, bake.grid);
         in.terrain = nullptr;  // `terrain` ends with this iteration
         if (bake.cut) cuts.push_back(bake.cut);
         if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));

@@ -6,6 +6,7 @@
 // Threading: immutable once baked, safe to share.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -68,6 +69,23 @@ struct LakeBake {
 /// The square a lake's shore model covers: its extent with a margin of beach.
 SquareRegion lake_basin_region(const LakeBake& lake);
 
+/// Everything a river's bake depends on besides the terrain under its grid: the same key
+/// over the same terrain gives the same bake, so an edit re-bakes only the rivers it
+/// changes (BodiesBakeOptions::previous).
+struct RiverBakeKey {
+    std::vector<glm::dvec2> path;
+    std::vector<double> width;
+    double discharge = 0.0, manning = 0.0, texel = 0.0;
+    bool carve = true;
+    std::size_t samples = 0;       ///< centreline samples to its mouth
+    RiverEnd end = RiverEnd::domain_edge;
+    int receiver = -1;
+    double joins_at = 0.0, total = 0.0, mouth_level = 0.0, psi_left = 0.0, plume_length = 0.0;
+    int side = 0;
+    std::vector<std::array<double, 4>> inflows;  ///< along, width, discharge, side of each tributary
+    bool operator==(const RiverBakeKey&) const = default;
+};
+
 struct RiverBake {
     std::string name;
     double discharge = 0.0;       ///< Q through every cross-section below all tributaries, m^3/s
@@ -101,6 +119,9 @@ struct RiverBake {
     std::vector<float> query_texels;
     std::shared_ptr<const TerrainCut> cut;        ///< the carved channel (null: not carved)
     std::size_t islands = 0;                      ///< dry islands inside the channel
+    RiverBakeKey key;                             ///< what it was baked from
+    /// The other rivers' cuts under its grid when it was baked (the terrain it saw).
+    std::vector<std::shared_ptr<const TerrainCut>> baked_over;
 };
 
 /// A river's fields at a world point (bilinear, clamped to its grid).
@@ -128,6 +149,9 @@ struct WaterBodiesBake {
     std::vector<LakeBake> lakes;    ///< in the scene's order
     std::vector<RiverBake> rivers;  ///< in the scene's order
     Terrain terrain;                ///< the scene's terrain with every river's cut
+    int lake_resolution = 0;        ///< as baked
+    double texels_across = 0.0;     ///< as baked
+    std::size_t reused_rivers = 0;  ///< rivers taken from BodiesBakeOptions::previous unchanged
 };
 
 struct BodiesBakeOptions {
@@ -135,7 +159,16 @@ struct BodiesBakeOptions {
     double texels_across = 8.0;           ///< a river grid's texels across its narrowest width
     std::function<void(double)> progress; ///< 0..1
     std::stop_token cancel;
+    /// The bake of the scene this one was edited from, over the same terrain shape and
+    /// lakes (null: none). Rivers whose key and the cuts under their grid are unchanged
+    /// are taken from it; the result is the same as baking everything.
+    const WaterBodiesBake* previous = nullptr;
 };
+
+/// Whether a cut reaches into a grid (its zero ring of half a texel included).
+bool cut_touches(const TerrainCut& cut, const FieldGrid& grid);
+/// The cuts among `cuts` that reach into `grid`.
+std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const FieldGrid& grid);
 
 /// Finds the lakes' extents and bakes the rivers of `scene` over its terrain's shape (any
 /// cuts it carries are replaced by the rivers'). Errors name the scene and the body's
