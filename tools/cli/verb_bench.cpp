@@ -1,9 +1,11 @@
 // tidewater bench: query throughput and accuracy against the reference loop, as JSON.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "atomic_file.hpp"
 #include "bake_bench.hpp"
+#include "bodies_bench.hpp"
 #if defined(TIDEWATER_HAVE_CALIBRATION)
 #include "fit_bench.hpp"
 #endif
@@ -18,6 +20,7 @@ namespace {
 struct BenchArgs {
     BenchConfig config;
     bool bake = false;
+    bool bodies = false;
     std::string fit_refdata;
     std::string out;
     std::string markdown;
@@ -49,6 +52,13 @@ int run_bench(const BenchArgs& a) {
 #else
         return fail(verb, "--fit needs the calibration library: install libceres-dev and libnetcdf-dev and configure again");
 #endif
+    } else if (a.bodies) {
+        BodiesBenchConfig bodies_config;
+        bodies_config.repeats = std::max(1, a.config.repeats);
+        auto report = run_bodies_bench(bodies_config, progress);
+        if (!report) return fail(verb, report.error().message);
+        json = report->dump(2) + "\n";
+        table = bodies_bench_markdown(*report);
     } else if (a.bake) {
         BakeBenchConfig bake_config;
         bake_config.threads = a.config.threads;
@@ -97,6 +107,7 @@ Verb add_bench_verb(CLI::App& app) {
     cmd->add_option("--threads", args->config.threads, "Thread count of the 'all threads' runs (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines on standard error");
     cmd->add_flag("--bake", args->bake, "Benchmark the shore bake instead of the queries");
+    cmd->add_flag("--bodies", args->bodies, "Benchmark the lakes-and-rivers bake (4 km terrain at 1024^2 and 2048^2, re-bake of one reach)");
     cmd->add_option("--fit", args->fit_refdata, "Benchmark phase-resolved fits on the reference data in this folder (../shared/refdata)");
     return {cmd, [args] {
                 for (int w : args->config.wave_counts) {

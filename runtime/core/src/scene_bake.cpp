@@ -159,6 +159,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             bake->loaded = true;
             progress.report("loading", 0.0, bodies_share, 1.0);
         } else if (has_bodies) {
+            progress.report("water bodies", 0.0, bodies_end, 0.0);
             const Scene* previous = options.previous.get();
             if (previous && previous->bake && previous->bake->bodies) bodies_options.previous = previous->bake->bodies.get();
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
@@ -172,6 +173,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
                                                      (scene.shore.bake_folder / kBodiesSidecar).string())});
         }
         if (lake_shores && !load_bodies) {
+            progress.report("lake shores", bodies_end, bodies_share, 0.0);
             auto models = bake_lake_shores(
                 scene, *bake->bodies, options, [&](double f) { progress.report("lake shores", bodies_end, bodies_share, f); },
                 bake->reused.lake_shores);
@@ -207,8 +209,10 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             shoreline_options.threads = options.threads;
             shoreline_options.cancel = options.cancel;
             shoreline_options.progress = [&](double f) { progress.report("shoreline", bodies_share, shoreline_share, f); };
+            progress.report("shoreline", bodies_share, shoreline_share, 0.0);
             auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
             if (!shoreline) return in_shore(scene, shoreline.error());
+            progress.report("shore waves", shoreline_share, 1.0, 0.0);
 
             ShoreWaveOptions model_options;
             model_options.resolution = scene.shore.resolution;
