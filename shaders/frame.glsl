@@ -41,16 +41,17 @@ vec3 heat_color(float t) {
     return clamp(vec3(1.5 * t, 1.5 * t * (1.0 - t) * 2.0, 1.5 * (1.0 - t)), 0.0, 1.0);
 }
 
-// Ripple slope (d/dx, d/dz) at xz relative to O; the origin enters reduced modulo the noise period.
-vec2 ripple_slope(vec2 xz) {
+// Ripple slope (d/dx, d/dz) at xz relative to O of a body's ripples (GpuBodyDraw's
+// ripple and ripple_offset); the origin enters reduced modulo the noise period.
+vec2 ripple_slope(vec2 xz, vec4 ripple, vec4 offset) {
     vec2 slope = vec2(0.0);
-    float amp = frame.ripple.x;
+    float amp = ripple.x;
     if (amp <= 0.0) return slope;
-    uint seed = uint(frame.ripple.w);
-    int octaves = int(frame.ripple.z);
+    uint seed = uint(ripple.w);
+    int octaves = int(ripple.z);
     for (int i = 1; i <= octaves; ++i) {
-        float scale = float(i) * frame.ripple.y;
-        vec3 n = gradient_noise((xz + frame.origin_mod.zw) * scale + frame.ripple_drift.xy, seed + uint(i));
+        float scale = float(i) * ripple.y;
+        vec3 n = gradient_noise((xz + offset.zw) * scale + offset.xy, seed + uint(i));
         slope += (amp / float(i)) * scale * n.yz;
     }
     return slope;

@@ -12,6 +12,7 @@
 namespace tidewater::gpu {
 using vec2 = glm::vec2;
 using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 using uint = std::uint32_t;
 #define TW_CONST inline constexpr
@@ -125,11 +126,9 @@ struct GpuFrame {
     vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
     vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
     vec4 viewport;           // xy: size (px); zw: 1 / size
-    vec4 ripple;             // x: amplitude (m); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
-    vec4 ripple_drift;       // xy: drift (lattice units, reduced mod 256); z: has scene copy (0/1); w: max |eta| (m)
+    vec4 options;            // x: has scene copy (0/1); yzw: unused
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
-    vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: O mod 256 ripple wavelengths
-    vec4 shore_rect;         // xy: shore grid corner relative to O (m); z: texel (m); w: resolution (0 = no shore)
+    vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: unused
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -153,10 +152,16 @@ struct GpuBodyDraw {
     vec4 body;        // x: kind (kBodyOcean, kBodyLake, kBodyRiver); y: rest level (m; a river's mouth level); z: first wave; w: wave count (a river's still water)
     vec4 grid;        // xy: the river's or lake's grid corner relative to O (m); z: texel (m); w: its first texel in the river fields or body masks
     vec4 river;       // x, y: grid texels along x and z; z: first river wave; w: river wave count
-    vec4 extra;       // x: 1 where the still water reads the frame's shore fields; y: first patch in the patch list;
+    vec4 extra;       // x: unused; y: first patch in the patch list;
                       // z: highest rest surface above the level (m); w: largest wave displacement (m)
     vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own)
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
+    // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
+    vec4 shore;       // xy: its grid corner relative to O (m); z: texel (m); w: resolution (0 = none)
+    uvec4 shore_base; // x: its first element in shore_waves[], y: in shore_shared[]
+    // The ocean's or a lake's ripples (tidewater::RippleField):
+    vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
+    vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)
 };
 
 struct GpuQueryParams {
@@ -188,8 +193,8 @@ static_assert(sizeof(GpuRiverWave) == 32);
 static_assert(sizeof(GpuQueryResult) == 80);
 static_assert(sizeof(GpuQueryParams) == 112);
 static_assert(sizeof(GpuFlowDetail) == 64);
-static_assert(sizeof(GpuBodyDraw) == 6 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 10 * 16);
+static_assert(sizeof(GpuBodyDraw) == 10 * 16 + 64);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 8 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

@@ -3,9 +3,16 @@
 // declares the buffers `shore_waves` ([wave * texels + texel]: residual phase,
 // amplitude factor, wavevector x, z) and `shore_shared` ([texel]: depth,
 // breaking, steepness scale, shore distance), and defines SHORE_RESOLUTION and
-// SHORE_TEXEL.
+// SHORE_TEXEL; it may define SHORE_WAVE_BASE and SHORE_SHARED_BASE, where the model
+// starts in those buffers when they hold several (default 0).
 #ifndef TIDEWATER_SHORE_FIELDS_GLSL
 #define TIDEWATER_SHORE_FIELDS_GLSL
+#ifndef SHORE_WAVE_BASE
+#define SHORE_WAVE_BASE 0u
+#endif
+#ifndef SHORE_SHARED_BASE
+#define SHORE_SHARED_BASE 0u
+#endif
 
 struct ShoreTap {
     uint k00, k10, k01, k11;
@@ -26,12 +33,15 @@ ShoreTap shore_tap(vec2 rel) {
     t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
     return t;
 }
-vec4 tap_waves(ShoreTap t, uint base) {
+vec4 tap_waves(ShoreTap t, uint wave_offset) {
+    uint base = SHORE_WAVE_BASE + wave_offset;
     return t.w.x * shore_waves[base + t.k00] + t.w.y * shore_waves[base + t.k10] + t.w.z * shore_waves[base + t.k01] +
            t.w.w * shore_waves[base + t.k11];
 }
 vec4 tap_shared(ShoreTap t) {
-    return t.w.x * shore_shared[t.k00] + t.w.y * shore_shared[t.k10] + t.w.z * shore_shared[t.k01] + t.w.w * shore_shared[t.k11];
+    uint base = SHORE_SHARED_BASE;
+    return t.w.x * shore_shared[base + t.k00] + t.w.y * shore_shared[base + t.k10] + t.w.z * shore_shared[base + t.k01] +
+           t.w.w * shore_shared[base + t.k11];
 }
 
 #endif

@@ -31,7 +31,7 @@ vec3 world_from_depth(vec2 uv, float depth) {
 }
 
 // Normal detail: the slope of the waves faded out of the geometry, then ripples (the
-// ocean's) or a river's flow-mapped detail carried by its current.
+// ocean's or a lake's) or a river's flow-mapped detail carried by its current.
 vec3 detail_normal(GpuBodyDraw d) {
     SurfaceSums faded = surface_zero();
     bool river = uint(d.body.x) == kBodyRiver;
@@ -44,7 +44,7 @@ vec3 detail_normal(GpuBodyDraw d) {
         add_wave(faded, kvec, missing * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
     vec2 slope = faded.slope;
-    if (uint(d.body.x) == kBodyOcean) slope += ripple_slope(rest_xz);
+    if (!river) slope += ripple_slope(rest_xz, d.ripple, d.ripple_offset);
     if (river && d.flow.params.z > 0.0) slope += flow_detail_slope(rest_xz - d.grid.xy, current, d.flow);
     vec3 n = normalize(geo_normal);
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
@@ -61,7 +61,7 @@ void main() {
     vec3 n = detail_normal(d);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
-    bool has_scene = frame.ripple_drift.z > 0.5;
+    bool has_scene = frame.options.x > 0.5;
 
     // Water column along the view ray, and what lies behind it.
     float column_depth = max(rest_level - terrain_height_at(world_pos.xz), 0.0);
@@ -126,7 +126,7 @@ void main() {
     float foam = max(crest_foam(jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
     // A fast current churns white water.
     foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
-    if (frame.shore_rect.w > 0.0 && d.extra.x > 0.5) {
+    if (d.shore.w > 0.0) {
         float d = shore_info.x;
         float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);
         foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));

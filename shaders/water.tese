@@ -9,8 +9,10 @@
 #include "water_lod.glsl"
 #include "water_draw.glsl"
 uint g_wave_first = 0u, g_wave_count = 0u;
-#define SHORE_RESOLUTION uint(frame.shore_rect.w)
-#define SHORE_TEXEL frame.shore_rect.z
+#define SHORE_RESOLUTION uint(g_draw.shore.w)
+#define SHORE_TEXEL g_draw.shore.z
+#define SHORE_WAVE_BASE g_draw.shore_base.x
+#define SHORE_SHARED_BASE g_draw.shore_base.y
 #define WAVE_FIRST g_wave_first
 #define WAVE_COUNT g_wave_count
 #define WAVE_BASE_PHASE(i) waves[WAVE_FIRST + (i)].steep_omega.z
@@ -37,7 +39,7 @@ void main() {
     vec2 uv = gl_TessCoord.xy;
     rest_xz = mix(mix(control_xz[0], control_xz[1], uv.x), mix(control_xz[2], control_xz[3], uv.x), uv.y);
     spacing = vertex_spacing(camera_distance(rest_xz, g_draw.body.y));
-    bool shore = g_draw.extra.x > 0.5 && frame.shore_rect.w > 0.0;
+    bool shore = g_draw.shore.w > 0.0;
     SurfaceSums s;
     rest_level = g_draw.body.y;
     current = vec2(0.0);
@@ -46,11 +48,11 @@ void main() {
         RiverTap tap = river_tap(rel);
         vec4 channel = river_channel_at(tap);
         s = river_water_at(rel, vec2(0.0), channel.xy, spacing);
-        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing), g_river_still_weight);
+        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, spacing), g_river_still_weight);
         rest_level += river_field(tap, kRiverQuerySurface);
         current = channel.zw;
     } else {
-        s = water_at(rest_xz, rest_xz - frame.shore_rect.xy, shore, spacing);
+        s = water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, spacing);
     }
     shore_info = vec2(g_shore_fields.w, g_shore_fields.y);
     eta = s.eta - (rest_level - g_draw.body.y);

@@ -481,6 +481,52 @@ TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
     }
     EXPECT_GT(water, 40);
     EXPECT_GT(land, 12);
+
+    // The lake draws with its own shore model: in the shore view its water shows the
+    // distance to its beach (about 245 m at the centre, under 30 m near the rim), not the
+    // open water's "no shore" everywhere.
+    frame.view = render::DebugView::shore;
+    const auto shore_img = render(*scene, frame, 480, 270);
+    const auto centre = test::project(frame.camera, 480, 270, {0.0, 30.0, 0.0});
+    ASSERT_TRUE(centre);
+    const Rgb middle = test::block(shore_img, centre->x, centre->y, 1);
+    int rim_pixels = 0;
+    for (int a = 0; a < 24; ++a) {
+        const glm::dvec2 p = glm::dvec2(std::cos(a * kPi / 12.0), std::sin(a * kPi / 12.0)) * 225.0;
+        const auto q = test::project(frame.camera, 480, 270, {p.x, 30.0, p.y});
+        if (!q) continue;
+        const Rgb rim = test::block(shore_img, q->x, q->y, 1);
+        const double diff = std::max({std::abs(rim.r - middle.r), std::abs(rim.g - middle.g), std::abs(rim.b - middle.b)});
+        EXPECT_GT(diff, 0.25) << "rim at angle " << a << " looks like the middle: " << rim.r << " " << rim.g << " " << rim.b;
+        ++rim_pixels;
+    }
+    EXPECT_GT(rim_pixels, 12);
+
+    // And with its preset's ripples: the same lake without them shades differently.
+    frame.view = render::DebugView::normals;
+    const auto rippled = render(*scene, frame, 480, 270);
+    Scene calm = *scene;
+    WaterProfile profile = calm.lakes[0].body.profile();
+    ASSERT_GT(profile.ripples.amplitude, 0.0) << "the default lake preset has ripples";
+    profile.ripples.amplitude = 0.0;
+    auto still = WaterBody::create(profile, calm.lakes[0].body.level(), "bowl");
+    ASSERT_TRUE(still);
+    auto shored = still->with_shore(calm.lakes[0].body.shore());  // the same waves: the same shore model
+    ASSERT_TRUE(shored);
+    calm.lakes[0].body = std::move(shored).value();
+    ASSERT_TRUE(calm.baked());
+    const auto smooth = render(calm, frame, 480, 270);
+    int differ = 0, lake_pixels = 0;
+    for (int a = 0; a < 24; ++a)
+        for (double r : {40.0, 120.0, 180.0}) {
+            const glm::dvec2 p = glm::dvec2(std::cos(a * kPi / 12.0), std::sin(a * kPi / 12.0)) * r;
+            const auto q = test::project(frame.camera, 480, 270, {p.x, 30.0, p.y});
+            if (!q) continue;
+            const Rgb x = test::pixel(rippled, q->x, q->y), y = test::pixel(smooth, q->x, q->y);
+            differ += std::max({std::abs(x.r - y.r), std::abs(x.g - y.g), std::abs(x.b - y.b)}) > 0.01 ? 1 : 0;
+            ++lake_pixels;
+        }
+    EXPECT_GT(differ, lake_pixels / 2) << differ << " of " << lake_pixels << " lake pixels change with the ripples";
 }
 
 }  // namespace

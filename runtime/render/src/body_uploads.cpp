@@ -116,9 +116,16 @@ Result<BodyBuffers> BodyBuffers::create(const DeviceContext& ctx, const Scene& s
     return b;
 }
 
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, bool ocean_shore) {
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, const ShoreBuffers& shores) {
     BodyDraws out;
     const glm::dvec2 origin = plan.origin;
+    // A draw's still water reads shore model `slot` of `shores` (0: the ocean's, 1 + l: lake l's).
+    auto use_shore = [&](gpu::GpuBodyDraw& d, std::size_t slot) {
+        const ShorePlacement p = shores.placement(slot);
+        if (!p.model) return;
+        d.shore = glm::vec4(rel(p.model->corner(), origin), static_cast<float>(p.model->texel()), static_cast<float>(p.model->resolution()));
+        d.shore_base = glm::uvec4(p.per_wave, p.shared, 0u, 0u);
+    };
     const float first_river = (scene.has_ocean ? 1.0f : 0.0f) + static_cast<float>(scene.lakes.size());
     const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), 0.0f, 0.0f);
     // Each still body's waves: where they start in the frame's wave buffer.
@@ -138,8 +145,10 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         const glm::vec4& grid = plan.frame.water_patch;  // size, per side, corner
         d.patch_grid = glm::vec4(grid.z, grid.w, grid.x, grid.y);
         d.body = glm::vec4(static_cast<float>(gpu::kBodyOcean), static_cast<float>(scene.water_level()), 0.0f, static_cast<float>(ocean_count));
-        d.extra = glm::vec4(ocean_shore ? 1.0f : 0.0f, 0.0f, 0.0f, static_cast<float>(displacement(scene.ocean)));
+        d.extra = glm::vec4(0.0f, 0.0f, 0.0f, static_cast<float>(displacement(scene.ocean)));
         d.rivers = rivers;
+        use_shore(d, 0);
+        gpu_ripples(scene.ocean, time, origin, d.ripple, d.ripple_offset);
         out.draws.push_back(d);
         out.patch_counts.push_back(plan.patches_per_side * plan.patches_per_side);
     }
@@ -155,6 +164,8 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), 0.0f, 0.0f);
         d.extra = glm::vec4(0.0f, static_cast<float>(b.first_patch), 0.0f, static_cast<float>(displacement(lake)));
         d.rivers = rivers;
+        use_shore(d, 1 + l);
+        gpu_ripples(lake, time, origin, d.ripple, d.ripple_offset);
         out.draws.push_back(d);
         out.patch_counts.push_back(b.patch_count);
     }
@@ -179,9 +190,11 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         out.river_waves.insert(out.river_waves.end(), river_waves.begin(), river_waves.end());
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), static_cast<float>(first_wave),
                             static_cast<float>(out.river_waves.size() - first_wave));
-        d.extra = glm::vec4(into_ocean && ocean_shore ? 1.0f : 0.0f, static_cast<float>(b.first_patch), static_cast<float>(b.surface_rise),
+        d.extra = glm::vec4(0.0f, static_cast<float>(b.first_patch), static_cast<float>(b.surface_rise),
                             static_cast<float>(displacement(preset) + (still_count > 0 ? displacement(still) : 0.0)));
         d.rivers = rivers;
+        if (into_ocean) use_shore(d, 0);
+        if (into_lake) use_shore(d, 1 + static_cast<std::size_t>(river.receiver));
         d.flow = gpu_flow_detail(preset.profile().flow, preset.local_time(time), b.corner);
         out.draws.push_back(d);
         out.patch_counts.push_back(b.patch_count);

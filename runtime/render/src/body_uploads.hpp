@@ -16,6 +16,7 @@
 
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
+#include "scene_uploads.hpp"
 #include "host_device.h"
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/detail/water_bodies.hpp"
@@ -56,6 +57,6 @@ struct BodyDraws {
 
 /// The ocean's waves and patch grid come from the frame's `plan`; `ocean_shore` says
 /// whether the frame's shore fields hold the ocean's model.
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, bool ocean_shore);
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, const ShoreBuffers& shores);
 
 }  // namespace tidewater::render::detail

@@ -81,18 +81,9 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
 
-    const RippleSpec& rs = water.ripples().spec();
-    const double drift = std::fmod(local_time * rs.speed / rs.wavelength, 256.0);
-    const double rad = rs.direction_deg * kPi / 180.0;
-    f.ripple = glm::vec4(static_cast<float>(water.ripples().enabled() ? rs.amplitude : 0.0),
-                         static_cast<float>(1.0 / rs.wavelength), static_cast<float>(rs.octaves), static_cast<float>(rs.seed));
-    f.ripple_drift = glm::vec4(static_cast<float>(drift * std::cos(rad)), static_cast<float>(drift * std::sin(rad)),
-                               has_scene_copy ? 1.0f : 0.0f,
-                               static_cast<float>(std::max(water.waves().max_elevation(), water.waves().max_horizontal_displacement())));
-    const double ripple_period = 256.0 * rs.wavelength;
+    f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
-                             static_cast<float>(positive_mod(plan.origin.x, ripple_period)),
-                             static_cast<float>(positive_mod(plan.origin.y, ripple_period)));
+                             0.0f, 0.0f);
 
     // The water patch grid: world-aligned, following the camera in whole patches.
     const double patch = std::max(32.0, 2.0 * water_half_size / 160.0);
@@ -128,6 +119,17 @@ std::vector<gpu::GpuRiverWave> gpu_river_waves(const WaterBody& preset, double t
                                  static_cast<float>(w.steepness)),
                        glm::vec4(static_cast<float>(w.omega), static_cast<float>(w.offset), 0.0f, 0.0f)});
     return out;
+}
+
+void gpu_ripples(const WaterBody& body, double time, glm::dvec2 origin, glm::vec4& ripple, glm::vec4& offset) {
+    const RippleSpec& rs = body.ripples().spec();
+    const double drift = std::fmod(body.local_time(time) * rs.speed / rs.wavelength, 256.0);
+    const double rad = rs.direction_deg * kPi / 180.0;
+    ripple = glm::vec4(static_cast<float>(body.ripples().enabled() ? rs.amplitude : 0.0), static_cast<float>(1.0 / rs.wavelength),
+                       static_cast<float>(rs.octaves), static_cast<float>(rs.seed));
+    const double period = 256.0 * rs.wavelength;
+    offset = glm::vec4(static_cast<float>(drift * std::cos(rad)), static_cast<float>(drift * std::sin(rad)),
+                       static_cast<float>(positive_mod(origin.x, period)), static_cast<float>(positive_mod(origin.y, period)));
 }
 
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero) {

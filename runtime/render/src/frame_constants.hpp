@@ -41,6 +41,10 @@ std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, gl
 std::vector<gpu::GpuRiverWave> gpu_river_waves(const WaterBody& preset, double time, double mean_speed);
 
 /// A body's flow-detail settings at clock time `local_time` for shaders whose positions
+/// A body's ripples for one frame (GpuBodyDraw::ripple and ripple_offset), its drift at
+/// `time` and the origin reduced modulo the noise period.
+void gpu_ripples(const WaterBody& body, double time, glm::dvec2 origin, glm::vec4& ripple, glm::vec4& offset);
+
 /// are relative to world xz `zero` (the render origin, or a river grid's corner).
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero);
 

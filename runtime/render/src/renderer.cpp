@@ -84,7 +84,8 @@ struct Renderer::Impl {
     }
     Status create_slots();
     Status size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves);
-    Status use_shore(const std::shared_ptr<const ShoreWaves>& model);
+    /// Uploads the ocean's shore model (slot 0; null without an ocean) and each lake's after it.
+    Status use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes);
     void write_descriptors(Slot& slot, bool with_scene_copy);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot, detail::FramePlan& plan);
     void draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent, DebugView view);
@@ -133,10 +134,12 @@ Status Renderer::Impl::size_slots(std::size_t draws, std::size_t waves, std::siz
     return {};
 }
 
-Status Renderer::Impl::use_shore(const std::shared_ptr<const ShoreWaves>& model) {
-    if (shore.holds(model)) return {};
+Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes) {
+    detail::ShoreBuffers::Models models{ocean ? ocean->shore() : nullptr};
+    for (const SceneLake& lake : lakes) models.push_back(lake.body.shore());
+    if (shore.holds(models)) return {};
     vkDeviceWaitIdle(ctx().device);  // frames in flight may read the old fields
-    auto uploaded = shore.upload(ctx(), model);
+    auto uploaded = shore.upload(ctx(), models);
     if (!uploaded) return uploaded.error();
     return {};
 }
@@ -193,12 +196,7 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     slot = &slots[frame.frame_index % slots.size()];
     slot->recorded_frame = frame.frame_index;
     plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy);
-    if (const ShoreWaves* model = shore.model()) {
-        const glm::dvec2 rel = model->corner() - plan.origin;
-        plan.frame.shore_rect = glm::vec4(static_cast<float>(rel.x), static_cast<float>(rel.y), static_cast<float>(model->texel()),
-                                          static_cast<float>(model->resolution()));
-    }
-    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore.model() != nullptr);
+    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
@@ -306,7 +304,7 @@ Status Renderer::set_scene(const Scene& scene) {
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
     if (auto st = m.size_slots(1 + scene.lakes.size() + scene.rivers.size(), waves, river_waves); !st) return st;
-    if (auto st = m.use_shore(scene.has_ocean ? scene.ocean.shore() : nullptr); !st) return st;
+    if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes); !st) return st;
     m.terrain = std::move(terrain).value();
     m.bodies = std::move(bodies).value();
     m.scene = scene;
@@ -328,7 +326,7 @@ Status Renderer::set_water(const WaterBody& water) {
     if (!impl_->terrain) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
     // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
-    if (auto st = impl_->use_shore(water.shore()); !st) return st;
+    if (auto st = impl_->use_shores(&water, impl_->scene.lakes); !st) return st;
     if (water.waves().size() > impl_->scene.ocean.waves().size()) {
         // The frame's wave buffers hold the ocean's waves first: make room.
         std::size_t waves = water.waves().size();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fmt/format.h>
+#include <limits>
 
 #include "terrain_mesh.hpp"
 #include "vk_util.hpp"
@@ -13,25 +15,43 @@ constexpr std::uint32_t kTerrainCells = 384;
 constexpr std::uint32_t kHeightTextureSize = 1024;
 }  // namespace
 
-PackedShore pack_shore(const ShoreWaves* shore) {
+PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements) {
     PackedShore p;
-    if (!shore) return p;
-    const std::size_t texels = static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
-    p.per_wave.assign(std::max<std::size_t>(1, texels * shore->wave_count()), glm::vec4(0.0f));
-    for (std::size_t w = 0; w < shore->wave_count(); ++w)
+    placements.assign(models.size(), ShorePlacement{});
+    bool any = false;
+    for (std::size_t m = 0; m < models.size(); ++m) {
+        const ShoreWaves* shore = models[m];
+        if (!shore) continue;
+        if (!any) p.per_wave.clear(), p.shared.clear(), any = true;
+        const std::size_t texels = static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
+        placements[m] = {shore, static_cast<std::uint32_t>(p.per_wave.size()), static_cast<std::uint32_t>(p.shared.size())};
+        for (std::size_t w = 0; w < shore->wave_count(); ++w)
+            for (std::size_t k = 0; k < texels; ++k)
+                p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k], shore->wavevector_x(w)[k],
+                                      shore->wavevector_z(w)[k]});
         for (std::size_t k = 0; k < texels; ++k)
-            p.per_wave[w * texels + k] = {shore->phase_residual(w)[k], shore->amplitude_factor(w)[k], shore->wavevector_x(w)[k],
-                                          shore->wavevector_z(w)[k]};
-    p.shared.resize(texels);
-    for (std::size_t k = 0; k < texels; ++k)
-        p.shared[k] = {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]};
+            p.shared.push_back({shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
+    }
+    if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // a model without waves
     return p;
 }
 
-Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
-    if (holds(shore)) return false;
-    const ShoreWaves* model = wanted(shore);
-    const PackedShore packed = pack_shore(model);
+bool ShoreBuffers::holds(const Models& models) const {
+    if (!per_wave_.handle() || models.size() != placements_.size()) return false;
+    for (std::size_t m = 0; m < models.size(); ++m)
+        if (wanted(models[m]) != placements_[m].model) return false;
+    return true;
+}
+
+Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const Models& models) {
+    if (holds(models)) return false;
+    std::vector<const ShoreWaves*> wanted_models;
+    for (const auto& m : models) wanted_models.push_back(wanted(m));
+    std::vector<ShorePlacement> placements;
+    const PackedShore packed = pack_shores(wanted_models, placements);
+    // The offsets are 32-bit element indices in the shaders.
+    if (packed.per_wave.size() > std::numeric_limits<std::uint32_t>::max())
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
     GpuBuffer fresh[2];
     const std::vector<glm::vec4>* data[2] = {&packed.per_wave, &packed.shared};
     for (int i = 0; i < 2; ++i) {
@@ -41,8 +61,10 @@ Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const std::shared_pt
     }
     per_wave_ = std::move(fresh[0]);
     shared_ = std::move(fresh[1]);
-    uploaded_ = model;
-    alive_ = model ? shore : nullptr;
+    placements_ = std::move(placements);
+    alive_.clear();
+    for (std::size_t m = 0; m < models.size(); ++m)
+        if (placements_[m].model) alive_.push_back(models[m]);
     return true;
 }
 

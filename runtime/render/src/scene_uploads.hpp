@@ -20,26 +20,40 @@ namespace tidewater::render::detail {
 
 /// The shore fields packed for the shaders: one vec4 per wave and texel (phase residual,
 /// amplitude factor, wavevector x, z) and one per texel (depth, breaking, steepness
-/// scale, shore distance); one zero placeholder each without a shore.
+/// scale, shore distance), model after model; one zero placeholder each without any.
 struct PackedShore {
     std::vector<glm::vec4> per_wave{glm::vec4(0.0f)};
     std::vector<glm::vec4> shared{glm::vec4(0.0f)};
 };
 
-PackedShore pack_shore(const ShoreWaves* shore);
+/// Where one model's fields start in the packed buffers (vec4 elements); model null: none.
+struct ShorePlacement {
+    const ShoreWaves* model = nullptr;
+    std::uint32_t per_wave = 0, shared = 0;
+};
 
-/// The shore fields of one model on the GPU, or placeholders, so that their bindings are
-/// always valid. Keeps the model alive while it is the one uploaded.
+/// Packs `models` (null or all-deep ones get no fields) one after the other and says
+/// where each starts.
+PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements);
+
+/// The shore fields of a list of models on the GPU (the ocean's and each lake's for the
+/// renderer, one for a GPU query), or placeholders, so that their bindings are always
+/// valid. Keeps the models alive while they are the ones uploaded.
 class ShoreBuffers {
 public:
-    /// True when `shore` is what the buffers hold already (no upload needed).
-    bool holds(const std::shared_ptr<const ShoreWaves>& shore) const { return per_wave_.handle() && wanted(shore) == uploaded_; }
-    /// Uploads `shore` (null or all-deep: placeholders) unless it is already there.
+    using Models = std::vector<std::shared_ptr<const ShoreWaves>>;
+    /// True when `models` are what the buffers hold already (no upload needed).
+    bool holds(const Models& models) const;
+    /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
     /// Returns true when the buffers were replaced and descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
-    Result<bool> upload(const DeviceContext& ctx, const std::shared_ptr<const ShoreWaves>& shore);
+    Result<bool> upload(const DeviceContext& ctx, const Models& models);
+    Result<bool> upload(const DeviceContext& ctx, const std::shared_ptr<const ShoreWaves>& shore) { return upload(ctx, Models{shore}); }
 
-    const ShoreWaves* model() const { return uploaded_; }  ///< Null: placeholders.
+    /// The first model uploaded (null: none).
+    const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }
+    /// Where models[i] of the last upload starts (model null: it has no fields).
+    ShorePlacement placement(std::size_t i) const { return i < placements_.size() ? placements_[i] : ShorePlacement{}; }
     VkBuffer per_wave() const { return per_wave_.handle(); }
     VkBuffer shared() const { return shared_.handle(); }
 
@@ -49,8 +63,8 @@ private:
     }
 
     GpuBuffer per_wave_, shared_;
-    const ShoreWaves* uploaded_ = nullptr;
-    std::shared_ptr<const ShoreWaves> alive_;
+    std::vector<ShorePlacement> placements_;
+    Models alive_;
 };
 
 /// Uploads `bytes` of pixels into `image` and leaves it SHADER_READ_ONLY_OPTIMAL.
