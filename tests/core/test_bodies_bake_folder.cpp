@@ -5,7 +5,6 @@
 // with the file and field.
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "../baked_scene.hpp"
 #include "test_helpers.hpp"
@@ -18,20 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::RiverBake;
-
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("tidewater_bodies_test_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
 
 /// Flux of the discharge field across the section at centreline sample k, m^3/s.
 double discharge_through(const RiverBake& r, std::size_t k) {
@@ -47,38 +32,43 @@ double discharge_through(const RiverBake& r, std::size_t k) {
     return q;
 }
 
-/// The default scene with its shore model at a small resolution (a quick bake).
-Scene small_default() {
-    auto scene = default_scene();
-    EXPECT_TRUE(scene.ok());
-    Scene s = std::move(scene).value();
-    s.shore.resolution = 96;
-    return s;
-}
-
 std::string refusal(const Scene& scene) {
     auto loaded = bake_scene(scene);
     return loaded ? std::string("(loaded)") : loaded.error().message;
 }
 
-TEST(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDischarge) {
-    TempDir dir;
-    const Scene parsed = small_default();
-    auto baked = bake_scene(parsed);
-    ASSERT_TRUE(baked.ok()) << baked.error().message;
-    const fs::path folder = dir.path / "bake";
-    ASSERT_TRUE(save_scene_bake(folder, **baked).ok());
+/// The default scene with its shore model at a small resolution (a quick bake), baked
+/// and saved to a temporary folder; `named` is the parsed scene naming that bake.
+class BodiesBakeFolder : public ::testing::Test {
+protected:
+    void SetUp() override {
+        auto scene = default_scene();
+        ASSERT_TRUE(scene.ok());
+        parsed = std::move(scene).value();
+        parsed.shore.resolution = 96;
+        auto made = bake_scene(parsed);
+        ASSERT_TRUE(made.ok()) << made.error().message;
+        baked = std::move(made).value();
+        folder = dir.path / "bake";
+        ASSERT_TRUE(save_scene_bake(folder, *baked).ok());
+        named = parsed;
+        named.shore.bake_folder = folder;
+    }
+    test::TempDir dir{"tidewater_bodies_test_"};
+    Scene parsed, named;
+    std::shared_ptr<const Scene> baked;
+    fs::path folder;
+};
+
+TEST_F(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDischarge) {
     EXPECT_TRUE(fs::exists(folder / "shore.json"));
     EXPECT_TRUE(fs::exists(folder / "bodies.json"));
     EXPECT_TRUE(fs::exists(folder / "lake_00" / "shore.json"));
-
-    Scene named = parsed;
-    named.shore.bake_folder = folder;
     auto loaded = bake_scene(named);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE((*loaded)->bake->loaded);
     EXPECT_TRUE((*loaded)->baked());
-    const auto& before = *(*baked)->bake->bodies;
+    const auto& before = *baked->bake->bodies;
     const auto& after = *(*loaded)->bake->bodies;
     ASSERT_EQ(after.rivers.size(), before.rivers.size());
     ASSERT_EQ(after.lakes.size(), before.lakes.size());
@@ -112,23 +102,14 @@ TEST(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDisch
     double worst = 0.0;
     for (const glm::dvec2 p : {glm::dvec2(20.0, -360.0), glm::dvec2(40.0, -470.0), glm::dvec2(120.0, -460.0), glm::dvec2(60.0, -240.0),
                                glm::dvec2(44.0, -530.0), glm::dvec2(300.0, -700.0)}) {
-        const WorldPoint a = query_world_point(**baked, 4.0, p), b = query_world_point(**loaded, 4.0, p);
+        const WorldPoint a = query_world_point(*baked, 4.0, p), b = query_world_point(**loaded, 4.0, p);
         EXPECT_EQ(a.body, b.body) << p.x << ", " << p.y;
         worst = std::max({worst, std::abs(a.surface.height - b.surface.height), std::abs(a.flow.x - b.flow.x), std::abs(a.flow.y - b.flow.y)});
     }
     EXPECT_LT(worst, 2e-3);
 }
 
-TEST(BodiesBakeFolder, ABakeThatNoLongerFitsIsRefusedWithTheFileAndField) {
-    TempDir dir;
-    const Scene parsed = small_default();
-    auto baked = bake_scene(parsed);
-    ASSERT_TRUE(baked.ok()) << baked.error().message;
-    const fs::path folder = dir.path / "bake";
-    ASSERT_TRUE(save_scene_bake(folder, **baked).ok());
-    Scene named = parsed;
-    named.shore.bake_folder = folder;
-
+TEST_F(BodiesBakeFolder, ABakeThatNoLongerFitsIsRefusedWithTheFileAndField) {
     Scene more_water = named;
     more_water.rivers[0].discharge *= 2.0;
     EXPECT_NE(refusal(more_water).find("bodies.json: /rivers/0/discharge_m3_s"), std::string::npos) << refusal(more_water);

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
 #include <glm/geometric.hpp>
 #include <random>
 #include <vector>
@@ -11,6 +14,22 @@
 #include "tidewater/tidewater.hpp"
 
 namespace tidewater::test {
+
+/// A fresh folder under the system's temporary directory named after the running test,
+/// removed afterwards.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& prefix = "tidewater_test_") {
+        path = std::filesystem::temp_directory_path() /
+               (prefix + std::to_string(::getpid()) + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
+};
 
 inline WaterBody make_body(std::vector<WaveSpec> waves, double level = 0.0, double time_offset = 0.0) {
     WaterProfile p;

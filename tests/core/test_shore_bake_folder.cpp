@@ -14,20 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder under the system's temporary directory, removed afterwards.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("tidewater_bake_test_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
+using test::TempDir;
 
 constexpr const char* kIslandScene = R"({"version": 1, "water_level": 0,
     "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},

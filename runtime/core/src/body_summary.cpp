@@ -5,20 +5,6 @@
 
 namespace tidewater {
 
-namespace {
-
-const char* end_name(detail::RiverEnd end) {
-    switch (end) {
-        case detail::RiverEnd::ocean: return "ocean";
-        case detail::RiverEnd::lake: return "lake";
-        case detail::RiverEnd::river: return "river";
-        case detail::RiverEnd::domain_edge: break;
-    }
-    return "domain edge";
-}
-
-}  // namespace
-
 BodySummary summarize_bodies(const Scene& scene) {
     BodySummary out;
     if (!scene.bake || !scene.bake->bodies) return out;
@@ -30,7 +16,7 @@ BodySummary summarize_bodies(const Scene& scene) {
         RiverSummary r;
         r.name = river.name;
         const detail::RiverEnd end = river.end;
-        r.ends_in = end_name(end);
+        r.ends_in = detail::river_end_name(end);
         if (river.receiver >= 0) {
             const auto at = static_cast<std::size_t>(river.receiver);
             if (end == detail::RiverEnd::lake && at < bodies.lakes.size()) r.receiver = bodies.lakes[at].name;

@@ -21,7 +21,7 @@ struct LakeSummary {
 
 struct RiverSummary {
     std::string name;
-    /// Where it ends: "ocean", "lake", "river" (a confluence) or "domain edge".
+    /// Where it ends: "ocean", "lake", "river" (a confluence) or "domain_edge".
     std::string ends_in;
     std::string receiver;       ///< the lake's or river's name it runs into ("" for the ocean or the edge)
     double length = 0.0;        ///< along its centreline to the mouth, m

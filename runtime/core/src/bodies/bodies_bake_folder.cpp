@@ -3,7 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "bake/field_png.hpp"
+#include "bake/bake_files.hpp"
 #include "bodies/river_channel.hpp"
 #include "host_device.h"
 #include "json_reader.hpp"
@@ -21,16 +21,6 @@ using detail::LakeBake;
 using detail::ObjectReader;
 using detail::RiverBake;
 using nlohmann::json;
-
-const char* end_name(detail::RiverEnd end) {
-    switch (end) {
-        case detail::RiverEnd::ocean: return "ocean";
-        case detail::RiverEnd::lake: return "lake";
-        case detail::RiverEnd::river: return "river";
-        case detail::RiverEnd::domain_edge: break;
-    }
-    return "domain_edge";
-}
 
 std::string lake_folder(std::size_t l) { return fmt::format("lake_{:02}", l); }
 
@@ -186,11 +176,10 @@ Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const S
     if (auto st = r.string("end", end, true); !st) return st.error();
     std::int64_t receiver = -1, islands = 0;
     if (auto st = r.integer("receiver", receiver, -1, 1 << 20, true); !st) return st.error();
-    if (end == "ocean") out.end = detail::RiverEnd::ocean;
-    else if (end == "lake") out.end = detail::RiverEnd::lake;
-    else if (end == "river") out.end = detail::RiverEnd::river;
-    else if (end == "domain_edge") out.end = detail::RiverEnd::domain_edge;
-    else return r.error("end", fmt::format("\"{}\" is not one of ocean, lake, river, domain_edge", end));
+    bool known = false;
+    for (const auto kind : {detail::RiverEnd::ocean, detail::RiverEnd::lake, detail::RiverEnd::river, detail::RiverEnd::domain_edge})
+        if (end == detail::river_end_name(kind)) out.end = kind, known = true;
+    if (!known) return r.error("end", fmt::format("\"{}\" is not one of ocean, lake, river, domain_edge", end));
     const bool needs_receiver = out.end == detail::RiverEnd::lake || out.end == detail::RiverEnd::river;
     const std::size_t bound = out.end == detail::RiverEnd::lake ? lakes : rivers;
     if (needs_receiver != (receiver >= 0) || (needs_receiver && static_cast<std::size_t>(receiver) >= bound))
@@ -319,7 +308,7 @@ Status write_bodies_bake_into(const fs::path& dir, const Scene& baked) {
         const SceneRiver& spec = baked.rivers[r];
         json entry = {{"name", river.name}, {"path_m", points_json(spec.path)}, {"width_m", spec.width},
                       {"discharge_m3_s", spec.discharge}, {"manning", spec.manning}, {"carve", spec.carve},
-                      {"end", end_name(river.end)}, {"receiver", river.receiver}, {"islands", river.islands},
+                      {"end", detail::river_end_name(river.end)}, {"receiver", river.receiver}, {"islands", river.islands},
                       {"baked_discharge_m3_s", river.discharge}, {"own_discharge_m3_s", river.own_discharge},
                       {"mouth_level_m", river.mouth_level}, {"mean_speed_m_s", river.mean_speed},
                       {"centreline_m", points_json(river.centreline)}, {"along_m", river.along}, {"section_width_m", river.width},
@@ -357,16 +346,11 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
         return Error{ErrorCode::invalid_argument, fmt::format("{}: missing: the bake in {} holds no lakes or rivers, the scene has them; "
                                                               "re-run tidewater bake",
                                                               sidecar_path.string(), dir.string())};
-    auto text = detail::read_text_file(sidecar_path.string());
-    if (!text) return text.error();
-    auto doc = detail::parse_json_text(*text, sidecar_path.string());
+    auto doc = detail::read_sidecar(sidecar_path, kBodiesBakeFormatVersion);
     if (!doc) return doc.error();
     auto root = ObjectReader::open(*doc, sidecar_path.string(), "");
     if (!root) return root.error();
-    std::int64_t version = 0, lake_resolution = 0;
-    if (auto st = root->integer("version", version, 1, 1000, true); !st) return st.error();
-    if (version != kBodiesBakeFormatVersion)
-        return root->error("version", fmt::format("{} is not supported (this build reads version {})", version, kBodiesBakeFormatVersion));
+    std::int64_t lake_resolution = 0;
     double level = 0.0, texels_across = 0.0;
     if (auto st = root->number("water_level_m", level, true); !st) return st.error();
     if (!same(level, scene.water_level()))

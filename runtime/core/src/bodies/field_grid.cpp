@@ -47,4 +47,14 @@ std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std:
     return out;
 }
 
+const char* river_end_name(RiverEnd end) {
+    switch (end) {
+        case RiverEnd::ocean: return "ocean";
+        case RiverEnd::lake: return "lake";
+        case RiverEnd::river: return "river";
+        case RiverEnd::domain_edge: break;
+    }
+    return "domain_edge";
+}
+
 }  // namespace tidewater::detail

@@ -67,59 +67,16 @@ ChannelFrame nearest_on_line(const FieldGrid& g, const std::vector<glm::dvec2>& 
     return f;
 }
 
-/// Texels of land inside the channel: islands where no bank or end touches them.
-int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vector<std::uint8_t>& dry_inside,
-                 std::vector<int>& island_of) {
-    island_of.assign(g.size(), -1);
+/// Calls visit(members, enclosed) for each 4-connected group of texels where in(t)
+/// holds; `enclosed` says whether every texel next to the group is `ring(t)` and none
+/// lies on the grid's edge.
+template <typename In, typename Ring, typename Visit>
+void for_each_group(const FieldGrid& g, In in, Ring ring, Visit visit) {
     std::vector<std::uint8_t> visited(g.size(), 0);
-    int islands = 0;
     std::vector<std::pair<int, int>> stack, members;
     for (int j0 = 0; j0 < g.nz; ++j0)
         for (int i0 = 0; i0 < g.nx; ++i0) {
-            if (!dry_inside[g.index(i0, j0)] || visited[g.index(i0, j0)]) continue;
-            bool touches_land = false;
-            members.clear();
-            stack.assign(1, {i0, j0});
-            visited[g.index(i0, j0)] = 1;
-            while (!stack.empty()) {
-                const auto [i, j] = stack.back();
-                stack.pop_back();
-                members.push_back({i, j});
-                for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-                    const int a = i + di, b = j + dj;
-                    if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) {
-                        touches_land = true;
-                        continue;
-                    }
-                    const std::size_t n = g.index(a, b);
-                    if (dry_inside[n]) {
-                        if (!visited[n]) {
-                            visited[n] = 1;
-                            stack.push_back({a, b});
-                        }
-                    } else if (cell[n] != FlowCell::wet) {
-                        touches_land = true;
-                    }
-                }
-            }
-            for (const auto& [i, j] : members) {
-                if (touches_land) continue;  // part of a bank: it keeps its bank value
-                cell[g.index(i, j)] = FlowCell::island;
-                island_of[g.index(i, j)] = islands;
-            }
-            if (!touches_land) ++islands;
-        }
-    return islands;
-}
-
-/// Knolls a carve leaves standing: 4-connected groups of at least kIslandMinimumTexels
-/// `standing` texels that touch neither a bank, a `clear` texel's edge nor the grid's edge.
-std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint8_t>& standing, const std::vector<std::uint8_t>& clear) {
-    std::vector<std::uint8_t> keep(g.size(), 0), visited(g.size(), 0);
-    std::vector<std::pair<int, int>> stack, members;
-    for (int j0 = 0; j0 < g.nz; ++j0)
-        for (int i0 = 0; i0 < g.nx; ++i0) {
-            if (!standing[g.index(i0, j0)] || visited[g.index(i0, j0)]) continue;
+            if (!in(g.index(i0, j0)) || visited[g.index(i0, j0)]) continue;
             bool enclosed = true;
             members.clear();
             stack.assign(1, {i0, j0});
@@ -135,19 +92,49 @@ std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint
                         continue;
                     }
                     const std::size_t n = g.index(a, b);
-                    if (standing[n]) {
+                    if (in(n)) {
                         if (!visited[n]) {
                             visited[n] = 1;
                             stack.push_back({a, b});
                         }
-                    } else if (!clear[n]) {
+                    } else if (!ring(n)) {
                         enclosed = false;
                     }
                 }
             }
-            if (!enclosed || static_cast<int>(members.size()) < kIslandMinimumTexels) continue;
-            for (const auto& [i, j] : members) keep[g.index(i, j)] = 1;
+            visit(members, enclosed);
         }
+}
+
+/// Texels of land inside the channel: islands where water rings them (no bank or end
+/// touches them).
+int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vector<std::uint8_t>& dry_inside,
+                 std::vector<int>& island_of) {
+    island_of.assign(g.size(), -1);
+    int islands = 0;
+    for_each_group(
+        g, [&](std::size_t t) { return dry_inside[t] != 0; }, [&](std::size_t t) { return cell[t] == FlowCell::wet; },
+        [&](const std::vector<std::pair<int, int>>& members, bool enclosed) {
+            if (!enclosed) return;  // part of a bank: it keeps its bank value
+            for (const auto& [i, j] : members) {
+                cell[g.index(i, j)] = FlowCell::island;
+                island_of[g.index(i, j)] = islands;
+            }
+            ++islands;
+        });
+    return islands;
+}
+
+/// Knolls a carve leaves standing: groups of at least kIslandMinimumTexels `standing`
+/// texels ringed by `clear` ones (clear of the banks) and off the grid's edge.
+std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint8_t>& standing, const std::vector<std::uint8_t>& clear) {
+    std::vector<std::uint8_t> keep(g.size(), 0);
+    for_each_group(
+        g, [&](std::size_t t) { return standing[t] != 0; }, [&](std::size_t t) { return clear[t] != 0; },
+        [&](const std::vector<std::pair<int, int>>& members, bool enclosed) {
+            if (!enclosed || static_cast<int>(members.size()) < kIslandMinimumTexels) return;
+            for (const auto& [i, j] : members) keep[g.index(i, j)] = 1;
+        });
     return keep;
 }
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "bake/field_png.hpp"
+#include "bake/bake_files.hpp"
 #include "json_reader.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/constants.hpp"
@@ -108,16 +108,10 @@ Status save_shore_bake(const fs::path& dir, const ShoreBakeContents& contents) {
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,
                                                           const Terrain& terrain, const SquareRegion* region) {
     const fs::path sidecar_path = dir / kSidecar;
-    auto text = detail::read_text_file(sidecar_path.string());
-    if (!text) return text.error();
-    auto doc = detail::parse_json_text(*text, sidecar_path.string());
+    auto doc = detail::read_sidecar(sidecar_path, kShoreBakeFormatVersion);
     if (!doc) return doc.error();
     auto root = ObjectReader::open(*doc, sidecar_path.string(), "");
     if (!root) return root.error();
-    std::int64_t version = 0;
-    if (auto st = root->integer("version", version, 1, 1000, true); !st) return st.error();
-    if (version != kShoreBakeFormatVersion)
-        return root->error("version", fmt::format("{} is not supported (this build reads version {})", version, kShoreBakeFormatVersion));
     double level = 0.0;
     if (auto st = root->number("water_level_m", level, true); !st) return st.error();
     if (!close(level, water_level))

@@ -1,6 +1,6 @@
 // Saved lakes and rivers (internal): beside a scene's shore bake in the folder
 // `tidewater bake` writes, a sidecar `bodies.json` with what they were baked from and
-// their centreline profiles, 16-bit PNG fields per lake and river (bake/field_png.hpp),
+// their centreline profiles, 16-bit PNG fields per lake and river (bake/bake_files.hpp),
 // and each lake's shore model in `lake_NN/` (a shore bake over its basin). The format is
 // in docs/scene-format.md.
 //

@@ -42,6 +42,8 @@ struct FieldGrid {
 
 /// What a river runs into.
 enum class RiverEnd { domain_edge, ocean, lake, river };
+/// "domain_edge", "ocean", "lake" or "river" (summaries, saved bakes).
+const char* river_end_name(RiverEnd end);
 
 /// Which body a river texel's water belongs to.
 enum class RiverTexel : std::uint8_t {

@@ -1,4 +1,4 @@
-#include "bake/field_png.hpp"
+#include "bake/bake_files.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +77,19 @@ Result<std::vector<float>> read_field_png(const fs::path& dir, const ObjectReade
 }
 
 double field_png_step(const ObjectReader& fields, std::string_view name) { return fields.at(name).at("step").get<double>(); }
+
+Result<nlohmann::json> read_sidecar(const fs::path& path, int version) {
+    auto text = read_text_file(path.string());
+    if (!text) return text.error();
+    auto doc = parse_json_text(*text, path.string());
+    if (!doc) return doc.error();
+    auto root = ObjectReader::open(*doc, path.string(), "");
+    if (!root) return root.error();
+    std::int64_t found = 0;
+    if (auto st = root->integer("version", found, 1, 1000, true); !st) return st.error();
+    if (found != version) return root->error("version", fmt::format("{} is not supported (this build reads version {})", found, version));
+    return doc;
+}
 
 Status write_text_file(const fs::path& path, const std::string& text) {
     std::ofstream out(path);

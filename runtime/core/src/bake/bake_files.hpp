@@ -1,7 +1,7 @@
-// Baked fields as 16-bit grey PNGs with their encoding in a JSON sidecar entry (private):
-// value = (pixel - zero_pixel) * step, so 0 is exact whenever the range holds it and
-// every value is within step / 2 of the bake. Image row j is texel row j (+z).
-// Shared by the saved shore bakes and the saved lakes and rivers.
+// The files of a saved bake (private), shared by the saved shore bakes and the saved
+// lakes and rivers: JSON sidecars, and fields as 16-bit grey PNGs with their encoding in
+// a sidecar entry: value = (pixel - zero_pixel) * step, so 0 is exact whenever the range
+// holds it and every value is within step / 2 of the bake. Image row j is texel row j (+z).
 #pragma once
 
 #include <cstdint>
@@ -31,6 +31,10 @@ Result<std::vector<float>> read_field_png(const std::filesystem::path& dir, cons
 
 /// The step of a field read by read_field_png (for tolerances).
 double field_png_step(const ObjectReader& fields, std::string_view name);
+
+/// Reads and parses a sidecar and checks its "version" is `version`. Readers opened on
+/// the result must not outlive it. Errors name the file (and the field).
+Result<nlohmann::json> read_sidecar(const std::filesystem::path& path, int version);
 
 /// Writes text to a file, failing with the path when it cannot.
 Status write_text_file(const std::filesystem::path& path, const std::string& text);
