@@ -41,6 +41,20 @@ vec3 heat_color(float t) {
     return clamp(vec3(1.5 * t, 1.5 * t * (1.0 - t) * 2.0, 1.5 * (1.0 - t)), 0.0, 1.0);
 }
 
+// The shading works in display-referred sRGB values. A target that wants linear colour
+// (an sRGB-encoding or float format, frame.options.y) gets them decoded, so that it shows
+// the same picture, and what is sampled back from its copy is encoded again.
+vec3 srgb_to_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+vec3 linear_to_srgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+vec4 target_color(vec3 c) { return vec4(frame.options.y > 0.5 ? srgb_to_linear(c) : c, 1.0); }
+vec3 from_scene_copy(vec3 sampled) { return frame.options.y > 0.5 ? linear_to_srgb(sampled) : sampled; }
+
 // Ripple slope (d/dx, d/dz) at xz relative to O of a body's ripples (GpuBodyDraw's
 // ripple and ripple_offset); the origin enters reduced modulo the noise period.
 vec2 ripple_slope(vec2 xz, vec4 ripple, vec4 offset) {

@@ -7,5 +7,5 @@ layout(location = 0) out vec4 out_color;
 void main() {
     vec4 far_point = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
     vec3 dir = normalize(far_point.xyz / far_point.w - frame.camera.xyz);
-    out_color = vec4(sky_color(dir), 1.0);
+    out_color = target_color(sky_color(dir));
 }

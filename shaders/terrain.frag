@@ -56,5 +56,5 @@ void main() {
     if (view == kViewWireframe) color = vec3(0.1, 0.25, 0.08);
     vec3 ray = world_pos - frame.camera.xyz;
     if (view == kViewShaded) color = apply_fog(color, length(ray), normalize(ray));
-    out_color = vec4(color, 1.0);
+    out_color = target_color(color);
 }

@@ -76,7 +76,7 @@ void main() {
             floor_pos = world_from_depth(ruv, textureLod(scene_depth, ruv, 0.0).r);
         }
         thickness = max(length(floor_pos - world_pos), 0.0);
-        behind = textureLod(scene_color, ruv, 0.0).rgb;
+        behind = from_scene_copy(textureLod(scene_color, ruv, 0.0).rgb);
     }
     vec3 transmittance = exp(-kAbsorption * thickness);
     vec3 refracted = behind * transmittance * kShallowTint / max(kShallowTint.g, 1e-3) + kDeepColor * (1.0 - transmittance);
@@ -102,7 +102,7 @@ void main() {
                 vec3 hit = world_from_depth(suv, scene_z);
                 if (length(hit - p) < step_len * 2.0) {
                     float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
-                    reflected = mix(reflected, textureLod(scene_color, suv, 0.0).rgb, edge);
+                    reflected = mix(reflected, from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
                 }
                 break;
             }
@@ -146,5 +146,5 @@ void main() {
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);
     if (view == kViewFlow) color = uint(d.body.x) == kBodyRiver ? heat_color(length(current) / 3.0) : vec3(0.05, 0.08, 0.2);
-    out_color = vec4(color, 1.0);
+    out_color = target_color(color);
 }

@@ -1,5 +1,7 @@
 // Embedding: a host with its own instance, device, command buffer and render
 // target draws something of its own, and Tidewater records into the same pass.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -33,7 +35,16 @@ public:
     } color, depth;
     VkBuffer readback = VK_NULL_HANDLE;
     VkDeviceMemory readback_memory = VK_NULL_HANDLE;
+    VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM, depth_format = VK_FORMAT_D32_SFLOAT;
     static constexpr std::uint32_t kWidth = 256, kHeight = 144;
+
+    bool has_stencil() const { return depth_format == VK_FORMAT_D32_SFLOAT_S8_UINT; }
+    VkImageAspectFlags depth_aspects() const {
+        return has_stencil() ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
+    }
+    VkImageLayout depth_layout() const {
+        return has_stencil() ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    }
 
     static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
@@ -76,7 +87,9 @@ public:
         return img;
     }
 
-    void create() {
+    void create(VkFormat color_fmt = VK_FORMAT_R8G8B8A8_UNORM, VkFormat depth_fmt = VK_FORMAT_D32_SFLOAT) {
+        color_format = color_fmt;
+        depth_format = depth_fmt;
         const char* layer = "VK_LAYER_KHRONOS_validation";
         const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -119,10 +132,10 @@ public:
         VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pi.queueFamilyIndex = family;
         vkCreateCommandPool(device, &pi, nullptr, &pool);
-        color = make_image(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-        depth = make_image(VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+        color = make_image(color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+        depth = make_image(depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, depth_aspects());
         VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-        bi.size = kWidth * kHeight * 4;
+        bi.size = kWidth * kHeight * 8;  // up to 8-byte texels (R16G16B16A16_SFLOAT)
         bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         vkCreateBuffer(device, &bi, nullptr, &readback);
         VkMemoryRequirements req;
@@ -180,7 +193,7 @@ void begin_attachments(TestHost& host, VkCommandBuffer cmd) {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     vkBeginCommandBuffer(cmd, &bi);
     barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-    barrier(cmd, host.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    barrier(cmd, host.depth.image, host.depth_aspects(), VK_IMAGE_LAYOUT_UNDEFINED, host.depth_layout());
 }
 
 /// A fresh primary command buffer, begun, with the host's images moved to attachment layouts.
@@ -206,8 +219,8 @@ bool submit_and_wait(TestHost& host, VkCommandBuffer cmd) {
 render::RendererInitInfo renderer_info(const TestHost& host) {
     render::RendererInitInfo init;
     init.device = host.context();
-    init.color_format = VK_FORMAT_R8G8B8A8_UNORM;
-    init.depth_format = VK_FORMAT_D32_SFLOAT;
+    init.color_format = host.color_format;
+    init.depth_format = host.depth_format;
     init.frames_in_flight = 1;
     return init;
 }
@@ -352,6 +365,140 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
         vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
         renderer->reset();
     }
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
+}
+
+/// IEEE half to float (the float target's texels).
+float half_to_float(std::uint16_t h) {
+    const int exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
+    if (exponent == 0) return sign * std::ldexp(static_cast<float>(mantissa), -24);
+    if (exponent == 31) return mantissa ? NAN : sign * INFINITY;
+    return sign * std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
+}
+
+/// A linear value as an 8-bit sRGB code (what an sRGB target stores for it).
+std::uint8_t srgb_code(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(e * 255.0f));
+}
+
+/// Records one frame of `scene` with record_frame into the host's targets and reads the
+/// colour back as display RGBA8, whatever the target's format.
+render::RgbaImage draw_and_read(TestHost& host, render::Renderer& renderer, const Scene& scene) {
+    render::RgbaImage img;
+    VkCommandBuffer cmd = begin_commands(host);
+    render::FrameTargets targets;
+    targets.color_image = host.color.image;
+    targets.color_view = host.color.view;
+    targets.depth_image = host.depth.image;
+    targets.depth_view = host.depth.view;
+    targets.extent = {TestHost::kWidth, TestHost::kHeight};
+    render::FrameInfo frame;
+    frame.camera.position = scene.camera->position;
+    frame.camera.target = scene.camera->target;
+    frame.camera.fov_y_deg = scene.camera->fov_y_deg;
+    frame.time = 2.0;
+    EXPECT_TRUE(renderer.resize(targets.extent).ok());
+    auto recorded = renderer.record_frame(cmd, frame, targets);
+    EXPECT_TRUE(recorded.ok()) << recorded.error().message;
+    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
+    vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
+    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+    vkEndCommandBuffer(cmd);
+    EXPECT_TRUE(submit_and_wait(host, cmd));
+    vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
+
+    img.width = TestHost::kWidth;
+    img.height = TestHost::kHeight;
+    img.pixels.resize(TestHost::kWidth * TestHost::kHeight * 4);
+    void* mapped = nullptr;
+    vkMapMemory(host.device, host.readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
+    const bool bgra = host.color_format == VK_FORMAT_B8G8R8A8_UNORM || host.color_format == VK_FORMAT_B8G8R8A8_SRGB;
+    for (std::size_t k = 0; k < TestHost::kWidth * TestHost::kHeight; ++k) {
+        std::uint8_t* out = &img.pixels[k * 4];
+        if (host.color_format == VK_FORMAT_R16G16B16A16_SFLOAT) {
+            const auto* h = static_cast<const std::uint16_t*>(mapped) + k * 4;
+            for (int c = 0; c < 3; ++c) out[c] = srgb_code(half_to_float(h[c]));
+            out[3] = 255;
+        } else {
+            const auto* p = static_cast<const std::uint8_t*>(mapped) + k * 4;
+            out[0] = p[bgra ? 2 : 0], out[1] = p[1], out[2] = p[bgra ? 0 : 2], out[3] = p[3];
+        }
+    }
+    vkUnmapMemory(host.device, host.readback_memory);
+    return img;
+}
+
+/// Mean |a - b| per channel, 0..1.
+double mean_difference(const render::RgbaImage& a, const render::RgbaImage& b) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < a.pixels.size(); ++k)
+        if (k % 4 != 3) sum += std::abs(static_cast<double>(a.pixels[k]) - static_cast<double>(b.pixels[k])) / 255.0;
+    return sum / (0.75 * static_cast<double>(a.pixels.size()));
+}
+
+// Every format of the table draws the same picture under validation: UNORM targets
+// hold the display values, sRGB ones encode the linear values the shaders write for
+// them, the float target holds linear values; the depth formats' aspects and layouts
+// (D32S8's stencil included) are right.
+TEST(Embedding, EveryTargetFormatInTheTableDrawsTheSamePicture) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok());
+    render::RgbaImage reference;
+    const std::pair<VkFormat, VkFormat> formats[] = {
+        {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT},      {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_D32_SFLOAT},
+        {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_D32_SFLOAT},       {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT},
+        {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT}, {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D16_UNORM},
+        {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT_S8_UINT}};
+    for (const auto& [color, depth] : formats) {
+        TestHost host;
+        host.create(color, depth);
+        ASSERT_NE(host.device, VK_NULL_HANDLE);
+        {
+            auto renderer = render::Renderer::create(renderer_info(host));
+            ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+            ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
+            const render::RgbaImage img = draw_and_read(host, **renderer, *scene);
+            if (reference.pixels.empty()) {
+                reference = img;
+            } else {
+                const double diff = mean_difference(img, reference);
+                std::printf("colour %d, depth %d: mean difference %.5f\n", static_cast<int>(color), static_cast<int>(depth), diff);
+                EXPECT_LT(diff, 0.01) << "colour format " << color << ", depth format " << depth;
+            }
+        }
+        host.destroy();
+        for (const auto& m : host.messages) ADD_FAILURE() << "colour " << color << ", depth " << depth << ": " << m;
+    }
+}
+
+TEST(Embedding, FormatsOutsideTheTableAreRefusedByName) {
+    TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    render::RendererInitInfo init = renderer_info(host);
+    init.color_format = VK_FORMAT_R8G8B8A8_SNORM;
+    auto colour = render::Renderer::create(init);
+    ASSERT_FALSE(colour.ok());
+    EXPECT_EQ(colour.error().code, ErrorCode::unsupported);
+    EXPECT_NE(colour.error().message.find("colour format VK_FORMAT_R8G8B8A8_SNORM is not supported"), std::string::npos)
+        << colour.error().message;
+    EXPECT_NE(colour.error().message.find("VK_FORMAT_R16G16B16A16_SFLOAT"), std::string::npos) << "lists the accepted formats";
+    init = renderer_info(host);
+    init.depth_format = VK_FORMAT_D24_UNORM_S8_UINT;
+    auto depth = render::Renderer::create(init);
+    ASSERT_FALSE(depth.ok());
+    EXPECT_NE(depth.error().message.find("depth format VK_FORMAT_D24_UNORM_S8_UINT is not supported"), std::string::npos)
+        << depth.error().message;
     host.destroy();
     for (const auto& m : host.messages) ADD_FAILURE() << m;
 }

@@ -50,7 +50,7 @@ Status validate_camera(const Camera& c) {
 }
 
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
-                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy) {
+                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output) {
     FramePlan plan;
     const Camera& cam = info.camera;
     // The render origin: the camera snapped to the phase-cell grid, in double.
@@ -81,7 +81,7 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
 
-    f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, linear_output ? 1.0f : 0.0f, 0.0f, 0.0f);
     f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
                              0.0f, 0.0f);
 

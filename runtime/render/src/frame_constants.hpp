@@ -49,6 +49,6 @@ void gpu_ripples(const WaterBody& body, double time, glm::dvec2 origin, glm::vec
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero);
 
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
-                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy);
+                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output);
 
 }  // namespace tidewater::render::detail

@@ -14,6 +14,7 @@
 #include "frame_timer.hpp"
 #include "render_pipelines.hpp"
 #include "scene_copies.hpp"
+#include "target_formats.hpp"
 #include "scene_uploads.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -49,6 +50,8 @@ std::span<const DebugView> all_debug_views() { return kViews; }
 // in-flight slots and the public calls that tie them together.
 struct Renderer::Impl {
     RendererInitInfo info;
+    const detail::ColorTarget* color_target = nullptr;  // entries of the format table
+    const detail::DepthTarget* depth_target = nullptr;
     const DeviceContext& ctx() const { return info.device; }
 
     detail::FramePipelines pipelines;
@@ -195,7 +198,8 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     slot = &slots[frame.frame_index % slots.size()];
     slot->recorded_frame = frame.frame_index;
-    plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy);
+    plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
+                              color_target->linear_output);
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
@@ -251,6 +255,14 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
     if (info.samples != VK_SAMPLE_COUNT_1_BIT)
         return Error{ErrorCode::unsupported, fmt::format("renderer: sample count {} is not supported yet (use 1)", static_cast<int>(info.samples))};
+    const detail::ColorTarget* color_target = detail::find_color_target(info.color_format);
+    if (!color_target)
+        return Error{ErrorCode::unsupported, fmt::format("renderer: colour format {} is not supported (accepted {})",
+                                                         detail::format_name(info.color_format), detail::accepted_formats())};
+    const detail::DepthTarget* depth_target = detail::find_depth_target(info.depth_format);
+    if (!depth_target)
+        return Error{ErrorCode::unsupported, fmt::format("renderer: depth format {} is not supported (accepted {})",
+                                                         detail::format_name(info.depth_format), detail::accepted_formats())};
     VkPhysicalDeviceFeatures features;
     vkGetPhysicalDeviceFeatures(c.physical_device, &features);
     if (!features.tessellationShader) return Error{ErrorCode::unsupported, "renderer: the device has no tessellationShader feature"};
@@ -258,7 +270,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         VkFormatProperties p;
         vkGetPhysicalDeviceFormatProperties(c.physical_device, f, &p);
         if ((p.optimalTilingFeatures & need) != need)
-            return Error{ErrorCode::unsupported, fmt::format("renderer: {} format {} lacks the needed features on this device", what, static_cast<int>(f))};
+            return Error{ErrorCode::unsupported, fmt::format("renderer: {} format {} lacks the needed features on this device", what, detail::format_name(f))};
         return {};
     };
     if (auto st = check_format(info.color_format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
@@ -283,7 +295,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     auto timer = detail::FrameTimer::create(c, info.frames_in_flight);
     if (!timer) return timer.error();
     impl->timer = std::move(timer).value();
-    auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), info.color_format, info.depth_format);
+    impl->color_target = color_target;
+    impl->depth_target = depth_target;
+    auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target);
     if (!copies) return copies.error();
     impl->copies = std::move(copies).value();
     return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
@@ -354,7 +368,7 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     const auto slot_index = static_cast<std::uint32_t>(slot - m.slots.data());
     m.timer.begin(cmd, slot_index);
 
-    detail::FramePasses passes(t);
+    detail::FramePasses passes(t, m.depth_target->attachment_layout);
     vkCmdBeginRendering(cmd, &passes.rendering);
     m.draw_opaque(cmd, *slot, plan, t.extent, frame.view);
     vkCmdEndRendering(cmd);

@@ -14,18 +14,20 @@ constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_
 constexpr VkPipelineStageFlags kDepthStage = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 }  // namespace
 
-Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool pool, VkFormat color_format, VkFormat depth_format) {
+Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool pool, const ColorTarget& color_target,
+                                        const DepthTarget& depth_target) {
     SceneCopies c;
-    c.color_format_ = color_format;
-    c.depth_format_ = depth_format;
-    auto color = GpuImage::create(ctx, {1, 1}, color_format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
+    c.color_target_ = &color_target;
+    c.depth_target_ = &depth_target;
+    auto color = GpuImage::create(ctx, {1, 1}, color_target.format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
-    auto depth = GpuImage::create(ctx, {1, 1}, depth_format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    auto depth = GpuImage::create(ctx, {1, 1}, depth_target.format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (!depth) return depth.error();
-    const std::uint32_t black = 0;
-    const float far_depth = 0.0f;
-    if (auto st = upload_image(ctx, pool, *color, &black, 4, VK_IMAGE_ASPECT_COLOR_BIT); !st) return st.error();
-    if (auto st = upload_image(ctx, pool, *depth, &far_depth, 4, VK_IMAGE_ASPECT_DEPTH_BIT); !st) return st.error();
+    // Black, and reversed-Z's far plane (0 in every depth format).
+    const std::uint64_t zero = 0;
+    if (auto st = upload_image(ctx, pool, *color, &zero, color_target.texel_bytes, VK_IMAGE_ASPECT_COLOR_BIT); !st) return st.error();
+    if (auto st = upload_image(ctx, pool, *depth, &zero, depth_target.texel_bytes, VK_IMAGE_ASPECT_DEPTH_BIT, depth_target.aspects); !st)
+        return st.error();
     c.placeholder_color_ = std::move(color).value();
     c.placeholder_depth_ = std::move(depth).value();
     return c;
@@ -39,15 +41,15 @@ Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExten
     color_.reset();
     depth_.reset();
     extent_ = {};
-    auto color = GpuImage::create(ctx, extent, color_format_, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
+    auto color = GpuImage::create(ctx, extent, color_target_->format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
-    auto depth = GpuImage::create(ctx, extent, depth_format_, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    auto depth = GpuImage::create(ctx, extent, depth_target_->format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (!depth) return depth.error();
     // Give the new images a defined layout before any frame samples them.
     Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
         transition(cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-        transition(cmd, depth->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        transition(cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     });
     if (!st) return st;
@@ -60,16 +62,19 @@ Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExten
 void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const {
     transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    transition(cmd, t.depth_image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-               kDepthStage, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    const DepthTarget& d = *depth_target_;
+    transition(cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStage,
+               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    // Only the depth aspect is copied (and sampled); barriers cover every aspect.
     const struct {
         VkImage source;
         const GpuImage& copy;
-        VkImageAspectFlags aspect;
-    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT}, {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT}};
+        VkImageAspectFlags aspect, barrier_aspects;
+    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
+                  {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects}};
     for (const auto& p : pairs) {
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
-        transition(cmd, p.copy.handle(), p.aspect, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_WRITE_BIT);
         VkImageCopy region{};
@@ -78,26 +83,26 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
         region.extent = {t.extent.width, t.extent.height, 1};
         vkCmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                        &region);
-        transition(cmd, p.copy.handle(), p.aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                    VK_ACCESS_SHADER_READ_BIT);
     }
     transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kColorStage,
                VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    transition(cmd, t.depth_image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+    transition(cmd, t.depth_image, d.aspects, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.attachment_layout,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kDepthStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
-FramePasses::FramePasses(const FrameTargets& t) {
+FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout) {
     color.imageView = t.color_view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = t.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     depth = color;
     depth.imageView = t.depth_view;
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.imageLayout = depth_layout;
     depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far
     rendering.renderArea = {{0, 0}, t.extent};
     rendering.layerCount = 1;

@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include "gpu_memory.hpp"
+#include "target_formats.hpp"
 #include "tidewater/render/renderer.hpp"
 
 namespace tidewater::render::detail {
@@ -13,7 +14,7 @@ namespace tidewater::render::detail {
 class SceneCopies {
 public:
     /// 1x1 placeholders (bound by record_in_pass, which has no copy) and no copies yet.
-    static Result<SceneCopies> create(const DeviceContext& ctx, VkCommandPool pool, VkFormat color_format, VkFormat depth_format);
+    static Result<SceneCopies> create(const DeviceContext& ctx, VkCommandPool pool, const ColorTarget& color, const DepthTarget& depth);
 
     /// (Re)makes the copies at `extent`: waits for the device, then gives them a layout.
     Status resize(const DeviceContext& ctx, VkCommandPool pool, VkExtent2D extent);
@@ -27,7 +28,8 @@ public:
     VkImageView depth_view(bool copied) const { return (copied ? depth_ : placeholder_depth_).view(); }
 
 private:
-    VkFormat color_format_ = VK_FORMAT_UNDEFINED, depth_format_ = VK_FORMAT_UNDEFINED;
+    const ColorTarget* color_target_ = nullptr;
+    const DepthTarget* depth_target_ = nullptr;
     GpuImage placeholder_color_, placeholder_depth_;
     GpuImage color_, depth_;
     VkExtent2D extent_{};
@@ -39,8 +41,9 @@ struct FramePasses {
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
 
-    /// The opaque pass: clears (reversed-Z far is 0) when the targets ask for it.
-    explicit FramePasses(const FrameTargets& targets);
+    /// The opaque pass: clears (reversed-Z far is 0) when the targets ask for it; the depth
+    /// image is in `depth_layout` (its format's attachment layout).
+    FramePasses(const FrameTargets& targets, VkImageLayout depth_layout);
     FramePasses(const FramePasses&) = delete;  // `rendering` points into this object
     FramePasses& operator=(const FramePasses&) = delete;
     /// The water pass after the copy: loads what the opaque pass drew.

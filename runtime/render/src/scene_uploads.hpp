@@ -67,9 +67,10 @@ private:
     Models alive_;
 };
 
-/// Uploads `bytes` of pixels into `image` and leaves it SHADER_READ_ONLY_OPTIMAL.
+/// Uploads `bytes` of pixels into `image`'s `aspect` and leaves it SHADER_READ_ONLY_OPTIMAL;
+/// the layout transitions cover `barrier_aspects` (0: `aspect`; a depth-stencil image: both).
 Status upload_image(const DeviceContext& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
-                    VkImageAspectFlags aspect);
+                    VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects = 0);
 
 /// The terrain on the GPU: its mesh and the height texture the water reads for depth.
 struct TerrainUpload {
