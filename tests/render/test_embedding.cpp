@@ -172,6 +172,9 @@ public:
         c.device = device;
         c.queue_family = family;
         c.queue = queue;
+        c.enabled_features.tessellationShader = VK_TRUE;  // as given to vkCreateDevice
+        c.enabled_features.fillModeNonSolid = VK_TRUE;
+        c.dynamic_rendering = true;
         return c;
     }
 };
@@ -479,6 +482,35 @@ TEST(Embedding, EveryTargetFormatInTheTableDrawsTheSamePicture) {
         host.destroy();
         for (const auto& m : host.messages) ADD_FAILURE() << "colour " << color << ", depth " << depth << ": " << m;
     }
+}
+
+// The features the host enabled, as DeviceContext says: each missing one is named.
+TEST(Embedding, MissingDeviceFeaturesAreNamed) {
+    TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    const std::pair<const char*, void (*)(render::RendererInitInfo&)> cases[] = {
+        {"tessellationShader", [](render::RendererInitInfo& i) { i.device.enabled_features.tessellationShader = VK_FALSE; }},
+        {"fillModeNonSolid", [](render::RendererInitInfo& i) { i.device.enabled_features.fillModeNonSolid = VK_FALSE; }},
+        {"dynamicRendering", [](render::RendererInitInfo& i) { i.device.dynamic_rendering = false; }},
+    };
+    for (const auto& [feature, drop] : cases) {
+        render::RendererInitInfo init = renderer_info(host);
+        drop(init);
+        auto r = render::Renderer::create(init);
+        ASSERT_FALSE(r.ok()) << feature;
+        EXPECT_EQ(r.error().code, ErrorCode::unsupported);
+        EXPECT_NE(r.error().message.find(feature), std::string::npos) << r.error().message;
+    }
+    // Without fillModeNonSolid the host may leave the wireframe view out.
+    render::RendererInitInfo init = renderer_info(host);
+    init.device.enabled_features.fillModeNonSolid = VK_FALSE;
+    init.wireframe = false;
+    auto r = render::Renderer::create(init);
+    EXPECT_TRUE(r.ok()) << r.error().message;
+    r = Error{};
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
 }
 
 TEST(Embedding, FormatsOutsideTheTableAreRefusedByName) {

@@ -31,6 +31,7 @@ protected:
         init.device = context();
         init.color_format = render::OffscreenTarget::kColorFormat;
         init.depth_format = render::OffscreenTarget::kDepthFormat;
+        init.wireframe = init.device.enabled_features.fillModeNonSolid;
         auto r = render::Renderer::create(init);
         ASSERT_TRUE(r.ok()) << r.error().message;
         renderer_ = std::move(r).value();

@@ -37,6 +37,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     init.device = (*device)->context();
     init.color_format = render::OffscreenTarget::kColorFormat;
     init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.wireframe = init.device.enabled_features.fillModeNonSolid;  // the wireframe view where the device has it
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     if (auto st = (*renderer)->set_scene(scene); !st) return st.error();

@@ -263,9 +263,16 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     if (!depth_target)
         return Error{ErrorCode::unsupported, fmt::format("renderer: depth format {} is not supported (accepted {})",
                                                          detail::format_name(info.depth_format), detail::accepted_formats())};
-    VkPhysicalDeviceFeatures features;
-    vkGetPhysicalDeviceFeatures(c.physical_device, &features);
-    if (!features.tessellationShader) return Error{ErrorCode::unsupported, "renderer: the device has no tessellationShader feature"};
+    // The features the host says it enabled (DeviceContext), not merely what the device has.
+    auto missing = [](const char* feature, const char* why) {
+        return Error{ErrorCode::unsupported, fmt::format("renderer: the device feature {} is not enabled ({}): enable it in "
+                                                         "vkCreateDevice and say so in DeviceContext",
+                                                         feature, why)};
+    };
+    if (!c.dynamic_rendering) return missing("dynamicRendering (VkPhysicalDeviceVulkan13Features)", "every pass uses it");
+    if (!c.enabled_features.tessellationShader) return missing("tessellationShader", "the water's level of detail");
+    if (info.wireframe && !c.enabled_features.fillModeNonSolid)
+        return missing("fillModeNonSolid", "the wireframe view; or set RendererInitInfo::wireframe = false");
     auto check_format = [&](VkFormat f, VkFormatFeatureFlags need, const char* what) -> Status {
         VkFormatProperties p;
         vkGetPhysicalDeviceFormatProperties(c.physical_device, f, &p);
@@ -281,8 +288,6 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         return st.error();
     auto impl = std::make_unique<Impl>();
     impl->info = info;
-    impl->info.wireframe = info.wireframe && features.fillModeNonSolid;
-    if (info.wireframe && !features.fillModeNonSolid) impl->log("tidewater: no fillModeNonSolid: the wireframe view is off");
     auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, impl->info.wireframe);
     if (!pipelines) return pipelines.error();
     impl->pipelines = std::move(pipelines).value();

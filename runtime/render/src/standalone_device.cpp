@@ -168,6 +168,8 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     dev.pQueueCreateInfos = &queue;
     dev.pEnabledFeatures = &enabled;
     TW_VK_TRY(vkCreateDevice(chosen->device, &dev, nullptr, &self->context_.device));
+    self->context_.enabled_features = enabled;
+    self->context_.dynamic_rendering = true;
     vkGetDeviceQueue(self->context_.device, chosen->queue_family, 0, &self->context_.queue);
     return self;
 }

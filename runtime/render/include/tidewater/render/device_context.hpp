@@ -3,8 +3,11 @@
 // Lifetime: the host creates and destroys every handle here and must keep
 // them alive until the Tidewater objects built on them are destroyed.
 // Tidewater never destroys, resets or presents on them.
-// Threading: Tidewater submits to `queue` only inside its explicit upload and
-// query calls; the host must not use the queue from another thread during those.
+// Threading: Tidewater submits to `queue` and waits for the device only inside its
+// explicit upload, resize and query calls (Renderer::set_scene, set_water, resize,
+// GpuQuery's queries) and when destroyed; record_frame and record_in_pass only record
+// into the host's command buffer and never wait. The host must not use the queue from
+// another thread during those calls.
 #pragma once
 
 #include <cstdint>
@@ -15,12 +18,20 @@ namespace tidewater::render {
 struct DeviceContext {
     VkInstance instance = VK_NULL_HANDLE;
     VkPhysicalDevice physical_device = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;  ///< Created with Vulkan 1.3 dynamicRendering enabled.
+    VkDevice device = VK_NULL_HANDLE;  ///< Vulkan 1.3, with the features below enabled.
     std::uint32_t queue_family = 0;    ///< Must support graphics and compute.
     VkQueue queue = VK_NULL_HANDLE;
     std::uint32_t api_version = VK_API_VERSION_1_3;
     VkPipelineCache pipeline_cache = VK_NULL_HANDLE;  ///< Optional; used, never destroyed.
     const VkAllocationCallbacks* allocator = nullptr; ///< Optional; must outlive Tidewater's objects.
+    /// The core features the host enabled on `device` (what it gave vkCreateDevice in
+    /// pEnabledFeatures or VkPhysicalDeviceFeatures2). The renderer needs
+    /// tessellationShader, and fillModeNonSolid for its wireframe view
+    /// (RendererInitInfo::wireframe); a missing one is an error naming it.
+    VkPhysicalDeviceFeatures enabled_features{};
+    /// Whether the host enabled VkPhysicalDeviceVulkan13Features::dynamicRendering (the
+    /// renderer records with vkCmdBeginRendering).
+    bool dynamic_rendering = false;
 };
 
 }  // namespace tidewater::render
