@@ -338,6 +338,47 @@ TEST(VulkanErrors, KeepTheVkResult) {
     EXPECT_EQ(Error{}.vk_result, 0);
 }
 
+// A preset change never drops the surf: a body without a shore model is refused over a
+// scene whose ocean feels its shore, with the recipe; re-baking from the current scene
+// (only the shore model is baked again) keeps the breaking waves on the beach.
+TEST_F(RenderTest, APresetChangeKeepsTheSurfOrIsRefused) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene);
+    auto current = std::make_shared<const Scene>(*scene);
+    ASSERT_TRUE(renderer_->set_scene(*current).ok());
+    auto preset = load_preset("lake_rippled");
+    ASSERT_TRUE(preset);
+    auto bare = WaterBody::create(*preset, current->water_level(), "swap");
+    ASSERT_TRUE(bare);
+    auto refused = renderer_->set_water(*bare);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("bake_scene"), std::string::npos) << refused.error().message;
+    EXPECT_NE(refused.error().message.find("SceneBakeOptions::previous"), std::string::npos) << refused.error().message;
+
+    Scene edited = *current;
+    edited.ocean = *bare;
+    SceneBakeOptions options;
+    options.previous = current;
+    auto rebaked = bake_scene(edited, options);
+    ASSERT_TRUE(rebaked) << rebaked.error().message;
+    EXPECT_EQ((*rebaked)->bake->reused.rivers, current->rivers.size()) << "only the ocean's shore is baked again";
+    ASSERT_TRUE((*rebaked)->ocean.shore()) << "the new water feels the shore";
+    ASSERT_TRUE(renderer_->set_scene(**rebaked).ok());
+    // Its water draws with the new model: the breaking view shows surf somewhere.
+    render::FrameInfo frame;
+    frame.camera.position = {900.0, 300.0, 500.0};
+    frame.camera.target = {120.0, 0.0, 20.0};
+    frame.view = render::DebugView::shore;
+    const auto img = render(**rebaked, frame, 320, 180);
+    int near_shore = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const Rgb c = test::pixel(img, x, y);
+            near_shore += c.b > 0.8 && c.r < 0.3 ? 1 : 0;  // heat_color near 0: within metres of the shore
+        }
+    EXPECT_GT(near_shore, 50) << "the shore view shows the distance to the coast";
+}
+
 TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {
     render::RendererInitInfo init;
     init.device = context();

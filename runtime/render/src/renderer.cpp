@@ -344,6 +344,20 @@ Status Renderer::resize(VkExtent2D extent) {
 Status Renderer::set_water(const WaterBody& water) {
     if (!impl_->terrain) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
+    const Scene& scene = impl_->scene;
+    if (scene.has_ocean && water.level() != scene.water_level())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: set_water: the body's level {} m is not the scene's water level {} m: change the level "
+                                 "in the scene and bake it (bake_scene), then set_scene",
+                                 water.level(), scene.water_level())};
+    // The surf is never dropped silently: a body without a shore model over a scene whose
+    // ocean feels its shore is refused, with the recipe.
+    if (impl_->shore.placement(0).model && !water.shore())
+        return Error{ErrorCode::invalid_argument,
+                     "renderer: set_water: the new water has no shore model, and the scene's ocean feels its shore: the surf "
+                     "would be lost. Put the water in a copy of the scene (scene.ocean = water), bake it with bake_scene "
+                     "(SceneBakeOptions::previous = the current scene re-bakes only the shore) and call set_scene; or give a "
+                     "body whose with_shore() model was baked for these waves"};
     // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
     if (auto st = impl_->use_shores(&water, impl_->scene.lakes); !st) return st;
     if (water.waves().size() > impl_->scene.ocean.waves().size()) {

@@ -110,7 +110,11 @@ public:
     /// The scene must be baked (bake_scene) unless its shore is disabled; an unbaked one
     /// is refused rather than drawn as open sea.
     Status set_scene(const Scene& scene);
-    /// Swaps only the water (a preset change); the terrain stays.
+    /// Swaps only the ocean's water (a preset change); the terrain, lakes and rivers stay.
+    /// Waits for the device when a new shore model is uploaded. A body without a shore
+    /// model over a scene whose ocean feels its shore is refused (the surf is never
+    /// dropped silently): re-bake the scene with the new water instead
+    /// (docs/embedding.md, "Preset swap"), or pass a body carrying a model baked for it.
     Status set_water(const WaterBody& water);
     /// Sizes the refraction copies for the host's targets (waits for the device when the
     /// size changes). Call it before the first record_frame and whenever the targets
