@@ -20,18 +20,42 @@ if(CCACHE)
 endif()
 
 if(MODE STREQUAL "find_package")
-  run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
-  if(NOT EXISTS ${WORK_DIR}/prefix/lib/cmake/Tidewater/TidewaterConfig.cmake
-     AND NOT EXISTS ${WORK_DIR}/prefix/lib/x86_64-linux-gnu/cmake/Tidewater/TidewaterConfig.cmake)
+  # Install, then move the prefix: the package must work wherever it lands.
+  run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/staging)
+  file(RENAME ${WORK_DIR}/staging ${WORK_DIR}/prefix)
+  set(config_dir ${WORK_DIR}/prefix/lib/cmake/Tidewater)
+  if(NOT EXISTS ${config_dir}/TidewaterConfig.cmake)
     message(FATAL_ERROR "TidewaterConfig.cmake was not installed")
   endif()
+  # No path of the build machine in the exported files.
+  file(GLOB exported ${config_dir}/*.cmake)
+  foreach(f ${exported})
+    file(READ ${f} text)
+    foreach(path ${SOURCE_DIR} ${BUILD_DIR} ${WORK_DIR}/staging /usr/lib /usr/include)
+      string(FIND "${text}" "${path}" at)
+      if(NOT at EQUAL -1)
+        message(FATAL_ERROR "${f} names ${path}, a path of the build machine")
+      endif()
+    endforeach()
+  endforeach()
+  foreach(f include/tidewater/scene_bake.hpp include/tidewater/render/renderer.hpp share/tidewater/presets/ocean_rolling.json
+            share/tidewater/scenes/default.json ${config_dir}/TidewaterRenderTargets.cmake)
+    if(NOT EXISTS ${WORK_DIR}/prefix/${f} AND NOT EXISTS ${f})
+      message(FATAL_ERROR "${f} was not installed")
+    endif()
+  endforeach()
   # Installed headers hold what hosts call; the internal ones stay in the source tree.
   if(EXISTS ${WORK_DIR}/prefix/include/tidewater/detail)
     message(FATAL_ERROR "internal headers (tidewater/detail) were installed")
   endif()
-  if(NOT EXISTS ${WORK_DIR}/prefix/include/tidewater/scene_bake.hpp)
-    message(FATAL_ERROR "the public header tidewater/scene_bake.hpp was not installed")
+  # Tidewater::core alone on a machine without Vulkan: find_package must not need it.
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build_core -G ${GENERATOR}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=TRUE ${launcher})
+  if(NOT last_output MATCHES "consumer: Tidewater::render not used")
+    message(FATAL_ERROR "without Vulkan the consumer should build with Tidewater::core alone:\n${last_output}")
   endif()
+  run(${CMAKE_COMMAND} --build ${WORK_DIR}/build_core)
+  run(${WORK_DIR}/build_core/consumer)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build -G ${GENERATOR}
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix ${launcher})
 elseif(MODE STREQUAL "add_subdirectory")

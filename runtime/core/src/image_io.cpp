@@ -1,4 +1,4 @@
-// PNG I/O: stb (Debian's libstb ships the compiled implementations) reads
+// PNG I/O: stb (compiled in stb_implementation.cpp from Debian's libstb-dev headers) reads
 // and writes 8-bit; libpng's simplified API writes 16-bit greyscale.
 #include "tidewater/detail/image_io.hpp"
 
