@@ -1,6 +1,7 @@
 # Builds examples/consumer against Tidewater in one of two ways and runs it.
 #   MODE=find_package      install the build tree to a prefix, then find_package(Tidewater)
 #   MODE=add_subdirectory  add Tidewater's source tree with add_subdirectory
+#   MODE=embed_minimal     install, move the prefix, build and run examples/embed_minimal
 # Inputs: MODE SOURCE_DIR BUILD_DIR WORK_DIR GENERATOR
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -58,6 +59,19 @@ if(MODE STREQUAL "find_package")
   run(${WORK_DIR}/build_core/consumer)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build -G ${GENERATOR}
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix ${launcher})
+elseif(MODE STREQUAL "embed_minimal")
+  # The smallest complete renderer host, against the installed package at a moved prefix.
+  run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/staging)
+  file(RENAME ${WORK_DIR}/staging ${WORK_DIR}/prefix)
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_minimal -B ${WORK_DIR}/build -G ${GENERATOR}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix ${launcher})
+  run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+  run(${WORK_DIR}/build/embed_minimal_headless --frames 4 --out ${WORK_DIR}/frame.png)
+  if(NOT last_output MATCHES "query matches the drawn frame" OR NOT EXISTS ${WORK_DIR}/frame.png)
+    message(FATAL_ERROR "embed_minimal_headless did not draw and match:\n${last_output}")
+  endif()
+  message(STATUS "embed_minimal:\n${last_output}")
+  return()
 elseif(MODE STREQUAL "add_subdirectory")
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/build -G ${GENERATOR}
       -DCMAKE_BUILD_TYPE=Release -DTIDEWATER_SOURCE_DIR=${SOURCE_DIR} ${launcher})
