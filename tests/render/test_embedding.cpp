@@ -228,6 +228,60 @@ render::RendererInitInfo renderer_info(const TestHost& host) {
     return init;
 }
 
+/// IEEE half to float (the float target's texels).
+float half_to_float(std::uint16_t h) {
+    const int exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
+    if (exponent == 0) return sign * std::ldexp(static_cast<float>(mantissa), -24);
+    if (exponent == 31) return mantissa ? NAN : sign * INFINITY;
+    return sign * std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
+}
+
+/// A linear value as an 8-bit sRGB code (what an sRGB target stores for it).
+std::uint8_t srgb_code(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(e * 255.0f));
+}
+
+/// Ends `cmd` after copying the host's colour image out, submits, waits, frees it and
+/// returns the picture as display RGBA8, whatever the target's format.
+render::RgbaImage finish_and_read(TestHost& host, VkCommandBuffer cmd) {
+    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
+    vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
+    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+    vkEndCommandBuffer(cmd);
+    EXPECT_TRUE(submit_and_wait(host, cmd));
+    vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
+
+    render::RgbaImage img;
+    img.width = TestHost::kWidth;
+    img.height = TestHost::kHeight;
+    img.pixels.resize(TestHost::kWidth * TestHost::kHeight * 4);
+    void* mapped = nullptr;
+    vkMapMemory(host.device, host.readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
+    const bool bgra = host.color_format == VK_FORMAT_B8G8R8A8_UNORM || host.color_format == VK_FORMAT_B8G8R8A8_SRGB;
+    for (std::size_t k = 0; k < TestHost::kWidth * TestHost::kHeight; ++k) {
+        std::uint8_t* out = &img.pixels[k * 4];
+        if (host.color_format == VK_FORMAT_R16G16B16A16_SFLOAT) {
+            const auto* h = static_cast<const std::uint16_t*>(mapped) + k * 4;
+            for (int c = 0; c < 3; ++c) out[c] = srgb_code(half_to_float(h[c]));
+            out[3] = 255;
+        } else {
+            const auto* p = static_cast<const std::uint8_t*>(mapped) + k * 4;
+            out[0] = p[bgra ? 2 : 0], out[1] = p[1], out[2] = p[bgra ? 0 : 2], out[3] = p[3];
+        }
+    }
+    vkUnmapMemory(host.device, host.readback_memory);
+    return img;
+}
+
 TEST(Embedding, RecordsIntoTheHostsOwnPass) {
     TestHost host;
     host.create();
@@ -274,27 +328,7 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         frame.time = 2.0;
         ASSERT_TRUE((*renderer)->record_in_pass(cmd, frame, {TestHost::kWidth, TestHost::kHeight}).ok());
         vkCmdEndRendering(cmd);
-        barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
-        vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
-        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
-        vkEndCommandBuffer(cmd);
-        ASSERT_TRUE(submit_and_wait(host, cmd));
-
-        render::RgbaImage img;
-        img.width = TestHost::kWidth;
-        img.height = TestHost::kHeight;
-        img.pixels.resize(TestHost::kWidth * TestHost::kHeight * 4);
-        void* mapped = nullptr;
-        vkMapMemory(host.device, host.readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
-        std::memcpy(img.pixels.data(), mapped, img.pixels.size());
-        vkUnmapMemory(host.device, host.readback_memory);
-        vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
+        const render::RgbaImage img = finish_and_read(host, cmd);
 
         const test::Rgb panel = test::pixel(img, 20, 20);
         EXPECT_GT(panel.r, 0.99);
@@ -372,26 +406,9 @@ TEST(Embedding, FramesNeedAResizeAndScenesABake) {
     for (const auto& m : host.messages) ADD_FAILURE() << m;
 }
 
-/// IEEE half to float (the float target's texels).
-float half_to_float(std::uint16_t h) {
-    const int exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
-    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
-    if (exponent == 0) return sign * std::ldexp(static_cast<float>(mantissa), -24);
-    if (exponent == 31) return mantissa ? NAN : sign * INFINITY;
-    return sign * std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
-}
-
-/// A linear value as an 8-bit sRGB code (what an sRGB target stores for it).
-std::uint8_t srgb_code(float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return static_cast<std::uint8_t>(std::lround(e * 255.0f));
-}
-
 /// Records one frame of `scene` with record_frame into the host's targets and reads the
 /// colour back as display RGBA8, whatever the target's format.
 render::RgbaImage draw_and_read(TestHost& host, render::Renderer& renderer, const Scene& scene) {
-    render::RgbaImage img;
     VkCommandBuffer cmd = begin_commands(host);
     render::FrameTargets targets;
     targets.color_image = host.color.image;
@@ -407,38 +424,7 @@ render::RgbaImage draw_and_read(TestHost& host, render::Renderer& renderer, cons
     EXPECT_TRUE(renderer.resize(targets.extent).ok());
     auto recorded = renderer.record_frame(cmd, frame, targets);
     EXPECT_TRUE(recorded.ok()) << recorded.error().message;
-    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
-    vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
-    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
-    vkEndCommandBuffer(cmd);
-    EXPECT_TRUE(submit_and_wait(host, cmd));
-    vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
-
-    img.width = TestHost::kWidth;
-    img.height = TestHost::kHeight;
-    img.pixels.resize(TestHost::kWidth * TestHost::kHeight * 4);
-    void* mapped = nullptr;
-    vkMapMemory(host.device, host.readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
-    const bool bgra = host.color_format == VK_FORMAT_B8G8R8A8_UNORM || host.color_format == VK_FORMAT_B8G8R8A8_SRGB;
-    for (std::size_t k = 0; k < TestHost::kWidth * TestHost::kHeight; ++k) {
-        std::uint8_t* out = &img.pixels[k * 4];
-        if (host.color_format == VK_FORMAT_R16G16B16A16_SFLOAT) {
-            const auto* h = static_cast<const std::uint16_t*>(mapped) + k * 4;
-            for (int c = 0; c < 3; ++c) out[c] = srgb_code(half_to_float(h[c]));
-            out[3] = 255;
-        } else {
-            const auto* p = static_cast<const std::uint8_t*>(mapped) + k * 4;
-            out[0] = p[bgra ? 2 : 0], out[1] = p[1], out[2] = p[bgra ? 0 : 2], out[3] = p[3];
-        }
-    }
-    vkUnmapMemory(host.device, host.readback_memory);
-    return img;
+    return finish_and_read(host, cmd);
 }
 
 /// Mean |a - b| per channel, 0..1.
