@@ -499,6 +499,70 @@ TEST(Embedding, MissingDeviceFeaturesAreNamed) {
     for (const auto& m : host.messages) ADD_FAILURE() << m;
 }
 
+// A volk-style host hands in its own loader: every Vulkan function Tidewater calls comes
+// from it. The hook here counts the lookups and wraps vkCmdDrawIndexed (the terrain
+// draw) to count the calls that reach it.
+PFN_vkCmdDrawIndexed g_real_draw_indexed = nullptr;
+int g_hooked_draws = 0, g_device_lookups = 0, g_instance_lookups = 0;
+bool g_hide_queue_submit = false;
+
+VKAPI_ATTR void VKAPI_CALL counting_draw_indexed(VkCommandBuffer cmd, std::uint32_t indices, std::uint32_t instances, std::uint32_t first,
+                                                 std::int32_t offset, std::uint32_t first_instance) {
+    ++g_hooked_draws;
+    g_real_draw_indexed(cmd, indices, instances, first, offset, first_instance);
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL host_device_proc(VkDevice device, const char* name) {
+    ++g_device_lookups;
+    if (g_hide_queue_submit && std::strcmp(name, "vkQueueSubmit") == 0) return nullptr;
+    PFN_vkVoidFunction real = vkGetDeviceProcAddr(device, name);
+    if (std::strcmp(name, "vkCmdDrawIndexed") == 0) {
+        g_real_draw_indexed = reinterpret_cast<PFN_vkCmdDrawIndexed>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(&counting_draw_indexed);
+    }
+    return real;
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL host_instance_proc(VkInstance instance, const char* name) {
+    ++g_instance_lookups;
+    return vkGetInstanceProcAddr(instance, name);
+}
+
+TEST(Embedding, AHostsOwnLoaderServesEveryVulkanCall) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok());
+    TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    {
+        render::RendererInitInfo init = renderer_info(host);
+        init.device.get_instance_proc_addr = &host_instance_proc;
+        init.device.get_device_proc_addr = &host_device_proc;
+        g_hide_queue_submit = true;  // a loader without a function Tidewater needs: named
+        auto refused = render::Renderer::create(init);
+        g_hide_queue_submit = false;
+        ASSERT_FALSE(refused.ok());
+        EXPECT_NE(refused.error().message.find("vkQueueSubmit"), std::string::npos) << refused.error().message;
+
+        g_hooked_draws = g_device_lookups = g_instance_lookups = 0;
+        auto renderer = render::Renderer::create(init);
+        ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+        EXPECT_GT(g_device_lookups, 50);
+        EXPECT_GT(g_instance_lookups, 5);
+        ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
+        const render::RgbaImage img = draw_and_read(host, **renderer, *scene);
+        EXPECT_GE(g_hooked_draws, 1) << "the terrain draw went through the host's loader";
+        EXPECT_GT(test::block(img, 200, 3, 2).b, 0.3) << "and the frame was drawn";
+        // Half a hook is refused.
+        init.device.get_device_proc_addr = nullptr;
+        auto half = render::Renderer::create(init);
+        ASSERT_FALSE(half.ok());
+        EXPECT_NE(half.error().message.find("get_device_proc_addr"), std::string::npos) << half.error().message;
+    }
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
+}
+
 TEST(Embedding, FormatsOutsideTheTableAreRefusedByName) {
     TestHost host;
     host.create();

@@ -6,6 +6,8 @@
 #include <optional>
 #include <vulkan/vulkan.h>
 
+#include "vk_dispatch.hpp"
+
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/result.hpp"
 

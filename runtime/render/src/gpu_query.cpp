@@ -34,6 +34,7 @@ struct RiverDispatch {
 }  // namespace
 
 struct GpuQuery::Impl {
+    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
     DeviceContext ctx;
     detail::OwnedSetLayout set_layout;
     detail::OwnedPipelineLayout pipeline_layout;
@@ -108,13 +109,21 @@ Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river
 }
 
 GpuQuery::GpuQuery(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-GpuQuery::~GpuQuery() = default;
+GpuQuery::~GpuQuery() {
+    if (!impl_) return;
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
+    impl_.reset();
+}
 
 Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context) {
     if (!context.device || !context.queue || !context.physical_device) {
         return Error{ErrorCode::invalid_argument, "GpuQuery: the DeviceContext has no device, physical device or queue"};
     }
+    auto functions = detail::load_functions(context);
+    if (!functions) return functions.error();
+    const detail::ScopedDispatch dispatch_guard(functions->get());
     auto impl = std::make_unique<Impl>();
+    impl->fn = std::move(functions).value();
     impl->ctx = context;
     const DeviceContext& ctx = impl->ctx;
 
@@ -284,6 +293,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
 
 Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                                std::span<SurfacePoint> out) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (points.size() != out.size()) {
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
     }
@@ -296,6 +306,7 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
 
 Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                              std::span<glm::dvec2> detail) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (points.size() != out.size() || (!detail.empty() && detail.size() != points.size()))
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();

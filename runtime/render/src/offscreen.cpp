@@ -12,6 +12,7 @@ using detail::GpuBuffer;
 using detail::GpuImage;
 
 struct OffscreenTarget::Impl {
+    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
     DeviceContext ctx;
     GpuImage color, depth;
     GpuBuffer readback;
@@ -29,14 +30,22 @@ struct OffscreenTarget::Impl {
 };
 
 OffscreenTarget::OffscreenTarget(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-OffscreenTarget::~OffscreenTarget() = default;
+OffscreenTarget::~OffscreenTarget() {
+    if (!impl_) return;
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
+    impl_.reset();
+}
 
 Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceContext& context, std::uint32_t width,
                                                                  std::uint32_t height) {
     if (width < 16 || height < 16 || width > 8192 || height > 8192) {
         return Error{ErrorCode::invalid_argument, fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
     }
+    auto functions = detail::load_functions(context);
+    if (!functions) return functions.error();
+    const detail::ScopedDispatch dispatch_guard(functions->get());
     auto impl = std::make_unique<Impl>();
+    impl->fn = std::move(functions).value();
     impl->ctx = context;
     auto color = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
@@ -57,6 +66,7 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
 }
 
 Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& frame) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     const VkExtent2D extent = m.color.extent();
     // The renderer's own copies follow the target's size (a no-op when it already does).

@@ -49,6 +49,7 @@ std::span<const DebugView> all_debug_views() { return kViews; }
 // frame (scene_copies) and its timestamps (frame_timer). This file holds the
 // in-flight slots and the public calls that tie them together.
 struct Renderer::Impl {
+    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
     RendererInitInfo info;
     const detail::ColorTarget* color_target = nullptr;  // entries of the format table
     const detail::DepthTarget* depth_target = nullptr;
@@ -245,7 +246,11 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    if (!impl_) return;
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
+    impl_.reset();
+}
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info) {
     const DeviceContext& c = info.device;
@@ -255,6 +260,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
     if (info.samples != VK_SAMPLE_COUNT_1_BIT)
         return Error{ErrorCode::unsupported, fmt::format("renderer: sample count {} is not supported yet (use 1)", static_cast<int>(info.samples))};
+    auto functions = detail::load_functions(c);
+    if (!functions) return functions.error();
+    const detail::ScopedDispatch dispatch_guard(functions->get());
     const detail::ColorTarget* color_target = detail::find_color_target(info.color_format);
     if (!color_target)
         return Error{ErrorCode::unsupported, fmt::format("renderer: colour format {} is not supported (accepted {})",
@@ -287,6 +295,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     if (auto st = check_format(VK_FORMAT_R32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT, "height texture (R32_SFLOAT)"); !st)
         return st.error();
     auto impl = std::make_unique<Impl>();
+    impl->fn = std::move(functions).value();
     impl->info = info;
     auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, impl->info.wireframe);
     if (!pipelines) return pipelines.error();
@@ -309,6 +318,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
 }
 
 Status Renderer::set_scene(const Scene& scene) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     if (!scene.baked())
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
@@ -333,6 +343,7 @@ Status Renderer::set_scene(const Scene& scene) {
 }
 
 Status Renderer::resize(VkExtent2D extent) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     const VkExtent2D before = m.copies.extent();
     if (auto st = m.copies.resize(m.ctx(), m.upload_pool.get(), extent); !st) return st;
@@ -342,6 +353,7 @@ Status Renderer::resize(VkExtent2D extent) {
 }
 
 Status Renderer::set_water(const WaterBody& water) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (!impl_->terrain) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
     const Scene& scene = impl_->scene;
@@ -372,6 +384,7 @@ Status Renderer::set_water(const WaterBody& water) {
 }
 
 Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& t) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     if (!cmd || !t.color_image || !t.color_view || !t.depth_image || !t.depth_view)
         return Error{ErrorCode::invalid_argument, "renderer: record_frame needs a command buffer and the colour and depth images and views"};
@@ -405,6 +418,7 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
 }
 
 Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_in_pass needs a command buffer"};
     Impl::Slot* slot = nullptr;
@@ -416,6 +430,7 @@ Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkE
 }
 
 Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     const std::size_t s = frame_index % m.slots.size();
     if (m.timer.available() && m.slots[s].recorded_frame != frame_index)

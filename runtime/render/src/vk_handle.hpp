@@ -6,9 +6,13 @@
 #include <utility>
 #include <vulkan/vulkan.h>
 
+#include "vk_dispatch.hpp"
+
 namespace tidewater::render::detail {
 
-template <typename Handle, void (*Destroy)(VkDevice, Handle, const VkAllocationCallbacks*)>
+/// `Destroy` names the table's destroy function (VulkanFunctions::DestroyPipeline, ...),
+/// looked up when the handle is destroyed.
+template <typename Handle, auto Destroy>
 class VkOwned {
 public:
     VkOwned() = default;
@@ -29,7 +33,7 @@ public:
     ~VkOwned() { reset(); }
 
     void reset() {
-        if (handle_ != VK_NULL_HANDLE) Destroy(device_, handle_, allocator_);
+        if (handle_ != VK_NULL_HANDLE) (dispatch().*Destroy)(device_, handle_, allocator_);
         handle_ = VK_NULL_HANDLE;
     }
     Handle get() const { return handle_; }
@@ -41,13 +45,13 @@ private:
     Handle handle_ = VK_NULL_HANDLE;
 };
 
-using OwnedPipeline = VkOwned<VkPipeline, vkDestroyPipeline>;
-using OwnedPipelineLayout = VkOwned<VkPipelineLayout, vkDestroyPipelineLayout>;
-using OwnedSetLayout = VkOwned<VkDescriptorSetLayout, vkDestroyDescriptorSetLayout>;
-using OwnedDescriptorPool = VkOwned<VkDescriptorPool, vkDestroyDescriptorPool>;
-using OwnedSampler = VkOwned<VkSampler, vkDestroySampler>;
-using OwnedCommandPool = VkOwned<VkCommandPool, vkDestroyCommandPool>;
-using OwnedQueryPool = VkOwned<VkQueryPool, vkDestroyQueryPool>;
+using OwnedPipeline = VkOwned<VkPipeline, &VulkanFunctions::DestroyPipeline>;
+using OwnedPipelineLayout = VkOwned<VkPipelineLayout, &VulkanFunctions::DestroyPipelineLayout>;
+using OwnedSetLayout = VkOwned<VkDescriptorSetLayout, &VulkanFunctions::DestroyDescriptorSetLayout>;
+using OwnedDescriptorPool = VkOwned<VkDescriptorPool, &VulkanFunctions::DestroyDescriptorPool>;
+using OwnedSampler = VkOwned<VkSampler, &VulkanFunctions::DestroySampler>;
+using OwnedCommandPool = VkOwned<VkCommandPool, &VulkanFunctions::DestroyCommandPool>;
+using OwnedQueryPool = VkOwned<VkQueryPool, &VulkanFunctions::DestroyQueryPool>;
 
 /// Runs `create(&handle)` (a vkCreate* call) and wraps the handle on success.
 template <typename Owned, typename Create>

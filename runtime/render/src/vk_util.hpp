@@ -4,6 +4,8 @@
 #include <string>
 #include <vulkan/vulkan.h>
 
+#include "vk_dispatch.hpp"
+
 #include "tidewater/result.hpp"
 
 namespace tidewater::render::detail {

@@ -32,6 +32,12 @@ struct DeviceContext {
     /// Whether the host enabled VkPhysicalDeviceVulkan13Features::dynamicRendering (the
     /// renderer records with vkCmdBeginRendering).
     bool dynamic_rendering = false;
+    /// Optional loader hook for engines with their own Vulkan loader (volk-style): give
+    /// both and every Vulkan function Tidewater calls on this context is loaded through
+    /// them (instance-level ones with `instance`, the rest with `device`). Null (the
+    /// default): the system loader's exported functions.
+    PFN_vkGetInstanceProcAddr get_instance_proc_addr = nullptr;
+    PFN_vkGetDeviceProcAddr get_device_proc_addr = nullptr;
 };
 
 }  // namespace tidewater::render
