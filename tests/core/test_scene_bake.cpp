@@ -333,6 +333,21 @@ TEST(SceneBake, ReBakingAfterAnEditReusesWhatItLeavesAloneAndMatchesAFullBake) {
     EXPECT_FALSE((*resea)->bake->reused.ocean_shore);
     EXPECT_TRUE((*resea)->baked());
 
+    // A terrain edit away from the rivers (a hill raised in the sea): they are reused,
+    // and equal what a full bake of the edited scene gives.
+    Scene hill = *parsed;
+    auto island = std::get<IslandTerrain>(hill.terrain.shape());
+    island.knolls.push_back({{640.0, 330.0}, 120.0, 30.0});
+    hill.terrain = Terrain(island);
+    auto hilled = bake_scene(hill, options);
+    ASSERT_TRUE(hilled.ok()) << hilled.error().message;
+    EXPECT_EQ((*hilled)->bake->reused.rivers, 2u);
+    EXPECT_FALSE((*hilled)->bake->reused.ocean_shore);
+    auto hill_full = bake_scene(hill);
+    ASSERT_TRUE(hill_full.ok());
+    for (std::size_t r = 0; r < hill.rivers.size(); ++r)
+        expect_same_river((*hilled)->bake->bodies->rivers[r], (*hill_full)->bake->bodies->rivers[r]);
+
     // The rill widened: it and the brook it joins are re-baked (the brook's inflow and the
     // rill's banks change); the brook reaches into the tarn's basin and the sea, so both
     // shore models are re-baked too. The result is the full bake's.

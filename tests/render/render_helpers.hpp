@@ -1,6 +1,8 @@
 // Rendering helpers for tests: render a scene offscreen and look at pixels.
 #pragma once
 
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +25,14 @@ inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
 }
 
 /// Mean colour of a (2r+1)^2 block around (x, y).
+/// Mean |a - b| over the colour channels of two pictures of one size, 0..1.
+inline double mean_difference(const render::RgbaImage& a, const render::RgbaImage& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); i += 4)
+        for (std::size_t k = 0; k < 3; ++k) sum += std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k]));
+    return sum / static_cast<double>(a.pixels.size() / 4 * 3) / 255.0;
+}
+
 inline Rgb block(const render::RgbaImage& img, int x, int y, int r = 3) {
     Rgb sum;
     int n = 0;

@@ -427,13 +427,6 @@ render::RgbaImage draw_and_read(TestHost& host, render::Renderer& renderer, cons
     return finish_and_read(host, cmd);
 }
 
-/// Mean |a - b| per channel, 0..1.
-double mean_difference(const render::RgbaImage& a, const render::RgbaImage& b) {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < a.pixels.size(); ++k)
-        if (k % 4 != 3) sum += std::abs(static_cast<double>(a.pixels[k]) - static_cast<double>(b.pixels[k])) / 255.0;
-    return sum / (0.75 * static_cast<double>(a.pixels.size()));
-}
 
 // Every format of the table draws the same picture under validation: UNORM targets
 // hold the display values, sRGB ones encode the linear values the shaders write for
@@ -460,7 +453,7 @@ TEST(Embedding, EveryTargetFormatInTheTableDrawsTheSamePicture) {
             if (reference.pixels.empty()) {
                 reference = img;
             } else {
-                const double diff = mean_difference(img, reference);
+                const double diff = test::mean_difference(img, reference);
                 std::printf("colour %d, depth %d: mean difference %.5f\n", static_cast<int>(color), static_cast<int>(depth), diff);
                 EXPECT_LT(diff, 0.01) << "colour format " << color << ", depth format " << depth;
             }

@@ -1,6 +1,8 @@
 // Rendering on lavapipe under the validation layer: semantic image checks that
 // do not depend on stored references, reference-image comparisons, bad input.
 #include <algorithm>
+#include <atomic>
+#include <future>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -312,15 +314,9 @@ TEST_F(RenderTest, SmallCameraMovesDoNotPop) {
         frame.time = 5.0;
         return render(*scene, frame);
     };
-    auto mean_difference = [](const render::RgbaImage& a, const render::RgbaImage& b) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < a.pixels.size(); i += 4)
-            for (int k = 0; k < 3; ++k) sum += std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k]));
-        return sum / (a.pixels.size() / 4 * 3) / 255.0;
-    };
     const auto inside_a = frame_at(60.00), inside_b = frame_at(60.04);   // within one origin cell
     const auto cross_a = frame_at(127.98), cross_b = frame_at(128.02);   // across the boundary at 128 m
-    const double within = mean_difference(inside_a, inside_b), across = mean_difference(cross_a, cross_b);
+    const double within = test::mean_difference(inside_a, inside_b), across = test::mean_difference(cross_a, cross_b);
     std::printf("mean change for a 4 cm move: %.4f within a cell, %.4f across a cell boundary\n", within, across);
     EXPECT_LT(within, 0.02);
     EXPECT_LT(across, 0.02);
@@ -377,6 +373,45 @@ TEST_F(RenderTest, APresetChangeKeepsTheSurfOrIsRefused) {
             near_shore += c.b > 0.8 && c.r < 0.3 ? 1 : 0;  // heat_color near 0: within metres of the shore
         }
     EXPECT_GT(near_shore, 50) << "the shore view shows the distance to the coast";
+}
+
+// An editor's terrain edit: a worker thread re-bakes while the last good scene keeps
+// drawing, and the new one is swapped in between frames.
+TEST_F(RenderTest, AReBakeOnAWorkerThreadIsSwappedInBetweenFrames) {
+    auto first = test::baked(default_scene());
+    ASSERT_TRUE(first);
+    auto current = std::make_shared<const Scene>(*first);
+    ASSERT_TRUE(renderer_->set_scene(*current).ok());
+    // The edit: a knoll 30 m high raised in the open sea in front of the camera.
+    Scene edited = *current;
+    auto island = std::get<IslandTerrain>(edited.terrain.shape());
+    island.knolls.push_back({{640.0, 330.0}, 120.0, 30.0});
+    edited.terrain = Terrain(island);
+    render::FrameInfo frame;
+    frame.camera.position = {900.0, 300.0, 500.0};
+    frame.camera.target = {120.0, 0.0, 20.0};
+    const auto before = render(*current, frame);
+    SceneBakeOptions options;
+    options.previous = current;
+    std::atomic<bool> finished{false};
+    auto job = std::async(std::launch::async, [&] {
+        auto baked = bake_scene(edited, options);
+        finished = true;
+        return baked;
+    });
+    int frames_while_baking = 0;
+    while (!finished) {  // the last good scene keeps drawing
+        auto img = target_->render(*renderer_, frame);
+        ASSERT_TRUE(img.ok()) << img.error().message;
+        ++frames_while_baking;
+    }
+    auto rebaked = job.get();
+    ASSERT_TRUE(rebaked) << rebaked.error().message;
+    EXPECT_EQ((*rebaked)->bake->reused.rivers, current->rivers.size()) << "the brook and rill are not in the edit";
+    ASSERT_TRUE(renderer_->set_scene(**rebaked).ok());  // between frames
+    const auto after = render(**rebaked, frame);
+    std::printf("%d frame(s) drawn while the worker re-baked in %.2f s\n", frames_while_baking, (*rebaked)->bake->seconds);
+    EXPECT_GT(test::mean_difference(before, after), 0.01) << "the new knoll is drawn";
 }
 
 TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {

@@ -177,31 +177,21 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
     out.texels_across = options.texels_across;
     // Always from the shape alone: a baked scene's terrain already carries its cuts.
     const Terrain uncut = scene.terrain.with_cuts({});
-    // The previous bake is only of use over the same shape, lakes and grids.
+    // Lakes are found again (a pass over the lake grid); the previous bake's rivers are
+    // reused only over the same grids, where the ground under them is unchanged.
     const WaterBodiesBake* previous = options.previous;
-    if (previous && (!(previous->terrain.shape() == uncut.shape()) || previous->lake_resolution != options.lake_resolution ||
-                     previous->texels_across != options.texels_across || previous->lakes.size() != scene.lakes.size()))
+    if (previous && (previous->lake_resolution != options.lake_resolution || previous->texels_across != options.texels_across))
         previous = nullptr;
-    for (std::size_t l = 0; previous && l < scene.lakes.size(); ++l)
-        if (previous->lakes[l].name != scene.lakes[l].name || previous->lakes[l].level != scene.lakes[l].body.level() ||
-            !previous->lakes[l].grid.contains(scene.lakes[l].at))
-            previous = nullptr;
-    if (previous) {
-        // Lakes depend on the shape, their level and their point alone.
-        for (std::size_t l = 0; previous && l < scene.lakes.size(); ++l) {
-            int i = 0, j = 0;
-            const LakeBake& old = previous->lakes[l];
-            old.grid.texel_of(scene.lakes[l].at, i, j);
-            if (!old.inside[old.grid.index(i, j)]) previous = nullptr;
-        }
-    }
-    if (previous) {
-        out.lakes = previous->lakes;
-    } else {
-        auto lakes = find_lakes(scene, uncut, options);
-        if (!lakes) return lakes.error();
-        out.lakes = std::move(lakes).value();
-    }
+    const Terrain previous_shape = previous ? previous->terrain.with_cuts({}) : Terrain();
+    auto same_ground = [&](const FieldGrid& g) {
+        for (int j = 0; j < g.nz; ++j)
+            for (int i = 0; i < g.nx; ++i)
+                if (uncut.shape_height_at(g.center(i, j)) != previous_shape.shape_height_at(g.center(i, j))) return false;
+        return true;
+    };
+    auto lakes = find_lakes(scene, uncut, options);
+    if (!lakes) return lakes.error();
+    out.lakes = std::move(lakes).value();
     const std::size_t count = scene.rivers.size();
     std::vector<CentrelineSamples> raw(count);
     for (std::size_t r = 0; r < count; ++r) {
@@ -300,7 +290,15 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
             // NaN mouth levels (domain edge) compare unequal: compare the rest then.
             RiverBakeKey a = old.key, b = key;
             if (std::isnan(a.mouth_level) && std::isnan(b.mouth_level)) a.mouth_level = b.mouth_level = 0.0;
-            if (old.name == river.name && a == b && old.baked_over == cuts_under(cuts, old.grid)) {
+            // A river into a lake sees the lake's extent (its plume): that must be the same too.
+            const bool same_receiver = plan.end != RiverEnd::lake ||
+                                       (static_cast<std::size_t>(plan.receiver) < previous->lakes.size() &&
+                                        previous->lakes[static_cast<std::size_t>(plan.receiver)].inside ==
+                                            out.lakes[static_cast<std::size_t>(plan.receiver)].inside &&
+                                        previous->lakes[static_cast<std::size_t>(plan.receiver)].grid.corner ==
+                                            out.lakes[static_cast<std::size_t>(plan.receiver)].grid.corner);
+            if (old.name == river.name && a == b && same_receiver && old.baked_over == cuts_under(cuts, old.grid) &&
+                same_ground(old.grid)) {
                 bake = old;
                 ++out.reused_rivers;
                 in.terrain = nullptr;

@@ -161,9 +161,9 @@ struct BodiesBakeOptions {
     double texels_across = 8.0;           ///< a river grid's texels across its narrowest width
     std::function<void(double)> progress; ///< 0..1
     std::stop_token cancel;
-    /// The bake of the scene this one was edited from, over the same terrain shape and
-    /// lakes (null: none). Rivers whose key and the cuts under their grid are unchanged
-    /// are taken from it; the result is the same as baking everything.
+    /// The bake of the scene this one was edited from (null: none). Rivers whose key, the
+    /// cuts under their grid and the terrain's shape there are unchanged are taken from
+    /// it; the result is the same as baking everything.
     const WaterBodiesBake* previous = nullptr;
 };
 
