@@ -1,0 +1,420 @@
+// tidewater-editor: a level-editor host of Tidewater on GLFW and Dear ImGui. The editor
+// owns the instance, device and swapchain; Tidewater records each frame into the
+// swapchain image, and ImGui draws its panels over it.
+//
+//   tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png]
+//                    [--probe X,Y] [--no-validation]
+//
+// Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
+// background), shore (breaking index, re-baked with progress), time (pause, scale,
+// scrub), view (debug views, GPU pass timings) and the probe under the cursor.
+// Viewport: right drag orbits, middle drag pans, the wheel zooms.
+// Scripted mode (--frames) draws N frames, writes the last one with its panels to
+// --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
+// validation message).
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <future>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include <tidewater/render/renderer.hpp>
+#include <tidewater/tidewater.hpp>
+
+#include "editor_window.hpp"
+#include "orbit_camera.hpp"
+#include "surface_probe.hpp"
+
+namespace tidewater::editor {
+
+namespace {
+
+struct Options {
+    std::string scene, screenshot;
+    int width = 1280, height = 720;
+    long frames = -1;
+    std::optional<glm::dvec2> probe;
+    bool validation = true;
+};
+
+std::optional<Options> parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+        const char* v = nullptr;
+        if (a == "--scene" && (v = next())) o.scene = v;
+        else if (a == "--screenshot" && (v = next())) o.screenshot = v;
+        else if (a == "--frames" && (v = next())) o.frames = std::atol(v);
+        else if (a == "--size" && (v = next())) {
+            if (std::sscanf(v, "%dx%d", &o.width, &o.height) != 2 || o.width < 320 || o.height < 240) return std::nullopt;
+        } else if (a == "--probe" && (v = next())) {
+            double x = 0, y = 0;
+            if (std::sscanf(v, "%lf,%lf", &x, &y) != 2) return std::nullopt;
+            o.probe = glm::dvec2(x, y);
+        } else if (a == "--no-validation") o.validation = false;
+        else return std::nullopt;
+    }
+    return o;
+}
+
+/// A bake running on a worker thread while the last good scene keeps drawing.
+struct BackgroundBake {
+    std::future<Result<std::shared_ptr<const Scene>>> job;
+    std::atomic<double> fraction{0.0};
+    std::mutex lock;
+    std::string stage;
+
+    bool running() const { return job.valid(); }
+    void start(Scene edited, std::shared_ptr<const Scene> previous) {
+        fraction = 0.0;
+        job = std::async(std::launch::async, [this, edited = std::move(edited), previous = std::move(previous)] {
+            SceneBakeOptions o;
+            o.previous = previous;
+            o.progress = [this](std::string_view s, double f) {
+                fraction = f;
+                const std::lock_guard<std::mutex> g(lock);
+                stage = std::string(s);
+            };
+            return bake_scene(edited, o);
+        });
+    }
+    /// The result once it is ready (the job is then over).
+    std::optional<Result<std::shared_ptr<const Scene>>> ready() {
+        if (!job.valid() || job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+        return job.get();
+    }
+};
+
+class Editor {
+public:
+    int run(const Options& options);
+
+private:
+    Status start(const Options& options);
+    Status load(const std::string& path);
+    void panels();
+    void viewport_input();
+    void swap_in(Result<std::shared_ptr<const Scene>> baked);
+
+    EditorWindow window_;
+    std::unique_ptr<render::Renderer> renderer_;
+    VkDescriptorPool imgui_pool_ = VK_NULL_HANDLE;
+    std::shared_ptr<const Scene> scene_;
+    std::string scene_path_, message_;
+    char path_field_[512] = {};
+    OrbitCamera camera_;
+    Clock clock_;
+    float time_scale_ = 1.0f;
+    int view_ = 0, preset_ = 0;
+    float breaking_index_ = 0.78f;
+    BackgroundBake bake_;
+    std::optional<ProbeHit> probe_;
+    render::PassTimings timings_{};
+    double last_drag_x_ = 0.0, last_drag_y_ = 0.0;
+};
+
+Status Editor::load(const std::string& path) {
+    auto parsed = path.empty() ? default_scene() : load_scene(path);
+    if (!parsed) return parsed.error();
+    auto baked = bake_scene(*parsed);
+    if (!baked) return baked.error();
+    scene_ = std::move(baked).value();
+    scene_path_ = path;
+    std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
+    breaking_index_ = static_cast<float>(scene_->shore.breaking_index);
+    const auto presets = bundled_preset_names();
+    const auto at = std::find(presets.begin(), presets.end(), scene_->ocean.profile().name);
+    preset_ = at == presets.end() ? 0 : static_cast<int>(at - presets.begin());
+    if (scene_->camera) camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
+    if (renderer_)
+        if (auto st = renderer_->set_scene(*scene_); !st) return st;
+    return {};
+}
+
+void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
+    if (!baked) {
+        message_ = baked.error().message;
+        return;
+    }
+    // Between frames: the renderer waits for the frames in flight and uploads.
+    if (auto st = renderer_->set_scene(**baked); !st) {
+        message_ = st.error().message;
+        return;
+    }
+    scene_ = std::move(baked).value();
+    message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
+                           scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);
+}
+
+Status Editor::start(const Options& options) {
+    if (auto st = window_.create(options.width, options.height, options.validation); !st) return st;
+    render::RendererInitInfo init;
+    init.device = window_.context();
+    init.color_format = window_.color_format();
+    init.depth_format = EditorWindow::kDepthFormat;
+    init.frames_in_flight = EditorWindow::kFramesInFlight;
+    init.wireframe = init.device.enabled_features.fillModeNonSolid;
+    auto renderer = render::Renderer::create(init);
+    if (!renderer) return renderer.error();
+    renderer_ = std::move(renderer).value();
+    if (auto st = load(options.scene); !st) return st;
+    if (auto st = renderer_->resize(window_.extent()); !st) return st;
+
+    // Dear ImGui over the same device, in the editor's own render pass.
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForVulkan(window_.window(), true);
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
+    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+    pool.maxSets = 16;
+    pool.poolSizeCount = 1;
+    pool.pPoolSizes = sizes;
+    const render::DeviceContext ctx = window_.context();
+    if (vkCreateDescriptorPool(ctx.device, &pool, nullptr, &imgui_pool_) != VK_SUCCESS)
+        return Error{ErrorCode::device_error, "editor: cannot create ImGui's descriptor pool"};
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = ctx.instance;
+    info.PhysicalDevice = ctx.physical_device;
+    info.Device = ctx.device;
+    info.QueueFamily = ctx.queue_family;
+    info.Queue = ctx.queue;
+    info.DescriptorPool = imgui_pool_;
+    info.MinImageCount = 2;
+    info.ImageCount = std::max(2u, window_.image_count());
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    if (!ImGui_ImplVulkan_Init(&info, window_.ui_pass())) return Error{ErrorCode::device_error, "editor: ImGui's Vulkan backend failed"};
+    // The font texture, uploaded once through a one-off command buffer.
+    VkCommandPool upload_pool = VK_NULL_HANDLE;
+    VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cp.queueFamilyIndex = ctx.queue_family;
+    vkCreateCommandPool(ctx.device, &cp, nullptr, &upload_pool);
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = upload_pool;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    vkAllocateCommandBuffers(ctx.device, &ai, &cmd);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &begin);
+    ImGui_ImplVulkan_CreateFontsTexture(cmd);
+    vkEndCommandBuffer(cmd);
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    vkQueueSubmit(ctx.queue, 1, &submit, VK_NULL_HANDLE);
+    vkQueueWaitIdle(ctx.queue);
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+    vkDestroyCommandPool(ctx.device, upload_pool, nullptr);
+    return {};
+}
+
+void Editor::panels() {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Tidewater");
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("%s: %zu lake(s), %zu river(s)", scene_->name.c_str(), scene_->lakes.size(), scene_->rivers.size());
+        ImGui::InputText("file", path_field_, sizeof path_field_);
+        if (ImGui::Button("Open")) {
+            auto st = load(path_field_);
+            message_ = st ? fmt::format("opened {}", path_field_) : st.error().message;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Save bake") && !bake_.running()) {
+            const std::string dir = std::string(path_field_).empty() ? "tidewater-bake" : std::string(path_field_) + ".bake";
+            auto st = save_scene_bake(dir, *scene_);
+            message_ = st ? fmt::format("saved the bake to {}/", dir) : st.error().message;
+        }
+    }
+    if (ImGui::CollapsingHeader("Water", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const auto names = bundled_preset_names();
+        std::vector<const char*> items;
+        for (const auto& n : names) items.push_back(n.c_str());
+        if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running()) {
+            auto profile = load_preset(names[static_cast<std::size_t>(preset_)]);
+            auto body = profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
+            if (!body) {
+                message_ = body.error().message;
+            } else {
+                // A preset change keeps the surf: the shore model is baked again in the background.
+                Scene edited = *scene_;
+                edited.ocean = std::move(body).value();
+                bake_.start(std::move(edited), scene_);
+            }
+        }
+        ImGui::Text("%zu waves, Hs %.2f m", scene_->ocean.waves().size(), scene_->ocean.waves().significant_wave_height());
+    }
+    if (ImGui::CollapsingHeader("Shore", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::SliderFloat("breaking index", &breaking_index_, 0.3f, 1.2f, "%.2f");
+        if (ImGui::Button("Re-bake shore") && !bake_.running()) {
+            Scene edited = *scene_;
+            edited.shore.bake_folder.clear();
+            edited.shore.breaking_index = breaking_index_;
+            bake_.start(std::move(edited), scene_);
+        }
+        if (bake_.running()) {
+            std::string stage;
+            {
+                const std::lock_guard<std::mutex> g(bake_.lock);
+                stage = bake_.stage;
+            }
+            ImGui::ProgressBar(static_cast<float>(bake_.fraction.load()), ImVec2(-1, 0), stage.c_str());
+        }
+    }
+    if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
+        bool paused = clock_.paused();
+        if (ImGui::Checkbox("pause", &paused)) paused ? clock_.pause() : clock_.resume();
+        if (ImGui::SliderFloat("scale", &time_scale_, 0.0f, 4.0f, "%.2f")) clock_.set_scale(time_scale_);
+        float t = static_cast<float>(clock_.now());
+        if (ImGui::SliderFloat("time (s)", &t, 0.0f, std::max(600.0f, t))) clock_.set_time(t);
+    }
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const auto views = render::all_debug_views();
+        std::vector<std::string> names;
+        for (const auto v : views) names.emplace_back(render::to_string(v));
+        std::vector<const char*> items;
+        for (const auto& n : names) items.push_back(n.c_str());
+        ImGui::Combo("debug view", &view_, items.data(), static_cast<int>(items.size()));
+        ImGui::Text("GPU: terrain %.2f ms, copy %.2f ms, water %.2f ms", timings_.sky_and_terrain_ms, timings_.scene_copy_ms,
+                    timings_.water_ms);
+    }
+    if (ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (probe_) {
+            const SurfacePoint& s = probe_->water.surface;
+            ImGui::Text("at (%.1f, %.1f): %s", probe_->point.x, probe_->point.z,
+                        probe_->on_land ? "land" : std::string(body_name(*scene_, probe_->water.body)).c_str());
+            ImGui::Text("height %.3f m, depth %.2f m, foam %.2f", s.height, s.depth, s.foam);
+            ImGui::Text("velocity (%.2f, %.2f, %.2f) m/s", s.velocity.x, s.velocity.y, s.velocity.z);
+        } else {
+            ImGui::TextUnformatted("move the cursor over the water");
+        }
+    }
+    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::End();
+}
+
+void Editor::viewport_input() {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window_.window(), &x, &y);
+    const double dx = x - last_drag_x_, dy = y - last_drag_y_;
+    last_drag_x_ = x;
+    last_drag_y_ = y;
+    if (glfwGetMouseButton(window_.window(), GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) camera_.orbit(dx, dy);
+    if (glfwGetMouseButton(window_.window(), GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS) camera_.pan(dx, dy);
+    if (io.MouseWheel != 0.0f) camera_.zoom(io.MouseWheel);
+    const VkExtent2D e = window_.extent();
+    probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(x, y, e.width, e.height));
+}
+
+int Editor::run(const Options& options) {
+    if (auto st = start(options); !st) {
+        std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+        return 1;
+    }
+    bool ok = true;
+    auto last = std::chrono::steady_clock::now();
+    for (long i = 0; !glfwWindowShouldClose(window_.window()) && (options.frames < 0 || i < options.frames); ++i) {
+        glfwPollEvents();
+        if (auto done = bake_.ready()) swap_in(std::move(*done));
+        const auto now = std::chrono::steady_clock::now();
+        clock_.advance(options.frames < 0 ? std::chrono::duration<double>(now - last).count() : 1.0 / 60.0);
+        last = now;
+        EditorWindow::Frame frame;
+        auto begun = window_.begin_frame(frame, [&](VkExtent2D extent) { return renderer_->resize(extent); });
+        if (!begun) {
+            std::fprintf(stderr, "tidewater-editor: %s\n", begun.error().message.c_str());
+            ok = false;
+            break;
+        }
+        if (!*begun) continue;  // the swapchain was rebuilt
+        // The slot's previous frame has finished (begin_frame waited for it): its GPU times.
+        if (frame.index >= EditorWindow::kFramesInFlight)
+            if (auto t = renderer_->timings(frame.index - EditorWindow::kFramesInFlight); t) timings_ = *t;
+        ImGui_ImplVulkan_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        viewport_input();
+        if (options.probe) {
+            const VkExtent2D e = window_.extent();
+            probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(options.probe->x, options.probe->y, e.width, e.height));
+        }
+        panels();
+        ImGui::Render();
+        render::FrameInfo info;
+        info.camera = camera_.camera();
+        info.time = clock_.now();
+        info.frame_index = frame.index;
+        info.view = render::all_debug_views()[static_cast<std::size_t>(view_)];
+        const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view, window_.extent()};
+        if (auto st = renderer_->record_frame(frame.cmd, info, targets); !st) {
+            std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+            ok = false;
+        }
+        VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        rp.renderPass = window_.ui_pass();
+        rp.framebuffer = frame.framebuffer;
+        rp.renderArea = {{0, 0}, window_.extent()};
+        vkCmdBeginRenderPass(frame.cmd, &rp, VK_SUBPASS_CONTENTS_INLINE);
+        ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.cmd);
+        vkCmdEndRenderPass(frame.cmd);
+        const bool last_frame = options.frames > 0 && i + 1 == options.frames;
+        if (auto st = window_.end_frame(frame, last_frame ? options.screenshot : std::string()); !st) {
+            std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+            ok = false;
+        }
+        if (last_frame && !options.screenshot.empty()) std::printf("wrote %s\n", options.screenshot.c_str());
+    }
+    if (options.probe && probe_) {
+        const SurfacePoint direct = query_world_point(*scene_, clock_.now(), {probe_->point.x, probe_->point.z}).surface;
+        std::printf("probe: (%.3f, %.3f) height %.6f m, query_surface %.6f m, body \"%s\"%s\n", probe_->point.x, probe_->point.z,
+                    probe_->point.y, direct.height, std::string(body_name(*scene_, probe_->water.body)).c_str(),
+                    probe_->on_land ? " (land)" : "");
+        std::printf("gpu: terrain %.3f ms, copy %.3f ms, water %.3f ms, total %.3f ms\n", timings_.sky_and_terrain_ms,
+                    timings_.scene_copy_ms, timings_.water_ms, timings_.total_ms);
+    }
+    if (bake_.running()) bake_.job.wait();
+    vkDeviceWaitIdle(window_.context().device);
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    vkDestroyDescriptorPool(window_.context().device, imgui_pool_, nullptr);
+    renderer_.reset();
+    const int messages = window_.validation_messages();
+    window_.destroy();
+    if (messages > 0) {
+        std::fprintf(stderr, "tidewater-editor: %d validation message(s)\n", messages);
+        ok = false;
+    }
+    return ok ? 0 : 1;
+}
+
+}  // namespace
+
+}  // namespace tidewater::editor
+
+int main(int argc, char** argv) {
+    const auto options = tidewater::editor::parse(argc, argv);
+    if (!options) {
+        std::fprintf(stderr, "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] [--no-validation]\n");
+        return 2;
+    }
+    tidewater::editor::Editor editor;
+    return editor.run(*options);
+}

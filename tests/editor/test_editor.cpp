@@ -1,0 +1,85 @@
+// tidewater-editor in scripted mode, under xvfb-run on lavapipe with the validation layer
+// on: it starts, draws frames whose screenshot shows water, terrain and its panels, its
+// probe lands on the CPU query surface, and a bad scene is reported.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "tidewater/detail/image_io.hpp"
+
+namespace tidewater {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct EditorRun {
+    int status = -1;
+    std::string output;  // stdout and stderr
+};
+
+/// Runs the editor under xvfb-run with `args`.
+EditorRun run_editor(const std::string& args) {
+    const fs::path log = fs::temp_directory_path() / ("tidewater_editor_" + std::to_string(::getpid()) + ".log");
+    const std::string command = std::string("xvfb-run -a -s '-screen 0 1400x900x24' ") + TIDEWATER_EDITOR_PATH + " " + args + " > " +
+                                log.string() + " 2>&1";
+    EditorRun r;
+    const int raw = std::system(command.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    r.output = text.str();
+    fs::remove(log);
+    return r;
+}
+
+TEST(Editor, DrawsWaterTerrainAndItsPanelsUnderValidation) {
+    const fs::path shot = fs::temp_directory_path() / ("tidewater_editor_" + std::to_string(::getpid()) + ".png");
+    const EditorRun r = run_editor("--frames 6 --size 1024x640 --screenshot " + shot.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    auto img = detail::read_png_rgba8(shot);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    EXPECT_EQ(img->width, 1024);
+    EXPECT_EQ(img->height, 640);
+    int water = 0, land = 0, title = 0;
+    for (std::size_t k = 0; k < img->pixels.size(); k += 4) {
+        const int r8 = img->pixels[k], g8 = img->pixels[k + 1], b8 = img->pixels[k + 2];
+        water += b8 > r8 + 20 && b8 >= g8 ? 1 : 0;
+        land += g8 > r8 + 10 && g8 > b8 + 10 ? 1 : 0;
+        // Dear ImGui's dark style: the focused title bar is (0.16, 0.29, 0.48).
+        title += std::abs(r8 - 41) < 10 && std::abs(g8 - 74) < 10 && std::abs(b8 - 122) < 10 ? 1 : 0;
+    }
+    const int pixels = img->width * img->height;
+    EXPECT_GT(water, pixels / 20) << "water";
+    EXPECT_GT(land, pixels / 20) << "terrain";
+    EXPECT_GT(title, 2000) << "the panel's title bar";
+    fs::remove(shot);
+}
+
+TEST(Editor, TheProbeLandsOnTheQuerySurface) {
+    const EditorRun r = run_editor("--frames 3 --size 1024x640 --probe 900,560");
+    ASSERT_EQ(r.status, 0) << r.output;
+    double x = 0, z = 0, height = 0, query = 0;
+    const auto at = r.output.find("probe: (");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    ASSERT_EQ(std::sscanf(r.output.c_str() + at, "probe: (%lf, %lf) height %lf m, query_surface %lf m", &x, &z, &height, &query), 4)
+        << r.output;
+    EXPECT_NEAR(height, query, 1e-3) << "the ray meets the drawn surface where query_surface puts it";
+    EXPECT_NE(r.output.find("body \"ocean\""), std::string::npos) << r.output;
+}
+
+TEST(Editor, ABadSceneIsReportedWithItsFile) {
+    const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("/no/such/scene.json"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace tidewater
