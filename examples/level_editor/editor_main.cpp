@@ -3,12 +3,13 @@
 // swapchain image, and ImGui draws its panels over it.
 //
 //   tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png]
-//                    [--probe X,Y] [--no-validation]
+//                    [--probe X,Y] [--script FILE] [--resize-at N] [--no-validation]
 //
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
 // background), shore (breaking index, re-baked with progress), time (pause, scale,
 // scrub), view (debug views, GPU pass timings) and the probe under the cursor.
-// Viewport: right drag orbits, middle drag pans, the wheel zooms.
+// Viewport: right drag orbits, middle drag pans, the wheel zooms; a left click on the
+// water drops a marker that bobs and tilts with hull_attitude.
 // Scripted mode (--frames) draws N frames, writes the last one with its panels to
 // --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
 // validation message).
@@ -22,6 +23,7 @@
 #include <future>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <imgui.h>
@@ -40,9 +42,9 @@ namespace tidewater::editor {
 namespace {
 
 struct Options {
-    std::string scene, screenshot;
+    std::string scene, screenshot, script;
     int width = 1280, height = 720;
-    long frames = -1;
+    long frames = -1, resize_at = -1;
     std::optional<glm::dvec2> probe;
     bool validation = true;
 };
@@ -56,6 +58,8 @@ std::optional<Options> parse(int argc, char** argv) {
         if (a == "--scene" && (v = next())) o.scene = v;
         else if (a == "--screenshot" && (v = next())) o.screenshot = v;
         else if (a == "--frames" && (v = next())) o.frames = std::atol(v);
+        else if (a == "--resize-at" && (v = next())) o.resize_at = std::atol(v);
+        else if (a == "--script" && (v = next())) o.script = v;
         else if (a == "--size" && (v = next())) {
             if (std::sscanf(v, "%dx%d", &o.width, &o.height) != 2 || o.width < 320 || o.height < 240) return std::nullopt;
         } else if (a == "--probe" && (v = next())) {
@@ -106,6 +110,9 @@ private:
     void panels();
     void viewport_input();
     void swap_in(Result<std::shared_ptr<const Scene>> baked);
+    Status run_script(const std::string& path);
+    void choose_preset(const std::string& name);
+    void draw_markers();
 
     EditorWindow window_;
     std::unique_ptr<render::Renderer> renderer_;
@@ -120,8 +127,10 @@ private:
     float breaking_index_ = 0.78f;
     BackgroundBake bake_;
     std::optional<ProbeHit> probe_;
+    std::vector<FloatingBody> markers_;  // dropped with a left click; they ride the water
     render::PassTimings timings_{};
     double last_drag_x_ = 0.0, last_drag_y_ = 0.0;
+    std::optional<glm::dvec2> script_probe_;
 };
 
 Status Editor::load(const std::string& path) {
@@ -155,6 +164,95 @@ void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
     scene_ = std::move(baked).value();
     message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
                            scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);
+}
+
+void Editor::choose_preset(const std::string& name) {
+    auto profile = load_preset(name);
+    auto body = profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
+    if (!body) {
+        message_ = body.error().message;
+        return;
+    }
+    // A preset change keeps the surf: the shore model is baked again in the background.
+    Scene edited = *scene_;
+    edited.ocean = std::move(body).value();
+    bake_.start(std::move(edited), scene_);
+}
+
+// A script for CI and pictures, one command a line:
+//   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
+Status Editor::run_script(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open the script", path)};
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        std::istringstream words(line);
+        std::string command;
+        if (!(words >> command) || command[0] == '#') continue;
+        auto bad = [&] { return Error{ErrorCode::parse_error, fmt::format("{}:{}: cannot read \"{}\"", path, number, line)}; };
+        if (command == "camera") {
+            glm::dvec3 p, t;
+            double fov = camera_.fov_y_deg;
+            if (!(words >> p.x >> p.y >> p.z >> t.x >> t.y >> t.z)) return bad();
+            words >> fov;
+            camera_ = OrbitCamera::looking(p, t, fov);
+        } else if (command == "view") {
+            std::string name;
+            words >> name;
+            const auto view = render::parse_debug_view(name);
+            if (!view) return bad();
+            const auto all = render::all_debug_views();
+            view_ = static_cast<int>(std::find(all.begin(), all.end(), *view) - all.begin());
+        } else if (command == "preset") {
+            std::string name;
+            words >> name;
+            const auto names = bundled_preset_names();
+            const auto at = std::find(names.begin(), names.end(), name);
+            if (at == names.end()) return bad();
+            preset_ = static_cast<int>(at - names.begin());
+            choose_preset(name);
+        } else if (command == "probe") {
+            glm::dvec2 px;
+            if (!(words >> px.x >> px.y)) return bad();
+            script_probe_ = px;
+        } else if (command == "time") {
+            double t = 0.0;
+            if (!(words >> t)) return bad();
+            clock_.set_time(t);
+        } else {
+            return bad();
+        }
+    }
+    return {};
+}
+
+void Editor::draw_markers() {
+    // Each marker bobs and tilts with hull_attitude, drawn as a cross over the frame.
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const VkExtent2D e = window_.extent();
+    const render::Camera cam = camera_.camera();
+    const glm::dvec3 forward = glm::normalize(cam.target - cam.position);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double tan_half = std::tan(0.5 * cam.fov_y_deg * 3.141592653589793 / 180.0);
+    auto project = [&](glm::dvec3 p) -> std::optional<ImVec2> {
+        const glm::dvec3 d = p - cam.position;
+        const double depth = glm::dot(d, forward);
+        if (depth <= 0.1) return std::nullopt;
+        const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height), y = glm::dot(d, up) / (depth * tan_half);
+        return ImVec2(static_cast<float>((x + 1.0) * 0.5 * e.width), static_cast<float>((1.0 - y) * 0.5 * e.height));
+    };
+    for (const FloatingBody& m : markers_) {
+        auto attitude = hull_attitude(*scene_, m, clock_.now());
+        if (!attitude) continue;
+        const glm::dvec3 centre{m.position.x, attitude->heave, m.position.y};
+        // The mast tilts with pitch and roll.
+        const glm::dvec3 mast = centre + 4.0 * glm::normalize(glm::dvec3(std::sin(attitude->pitch), 1.0, std::sin(attitude->roll)));
+        const auto a = project(centre), b = project(mast);
+        if (!a || !b) continue;
+        draw->AddCircleFilled(*a, 5.0f, IM_COL32(255, 140, 0, 255));
+        draw->AddLine(*a, *b, IM_COL32(255, 140, 0, 255), 2.0f);
+    }
 }
 
 Status Editor::start(const Options& options) {
@@ -245,18 +343,8 @@ void Editor::panels() {
         const auto names = bundled_preset_names();
         std::vector<const char*> items;
         for (const auto& n : names) items.push_back(n.c_str());
-        if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running()) {
-            auto profile = load_preset(names[static_cast<std::size_t>(preset_)]);
-            auto body = profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
-            if (!body) {
-                message_ = body.error().message;
-            } else {
-                // A preset change keeps the surf: the shore model is baked again in the background.
-                Scene edited = *scene_;
-                edited.ocean = std::move(body).value();
-                bake_.start(std::move(edited), scene_);
-            }
-        }
+        if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running())
+            choose_preset(names[static_cast<std::size_t>(preset_)]);
         ImGui::Text("%zu waves, Hs %.2f m", scene_->ocean.waves().size(), scene_->ocean.waves().significant_wave_height());
     }
     if (ImGui::CollapsingHeader("Shore", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -321,6 +409,11 @@ void Editor::viewport_input() {
     if (io.MouseWheel != 0.0f) camera_.zoom(io.MouseWheel);
     const VkExtent2D e = window_.extent();
     probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(x, y, e.width, e.height));
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && probe_ && !probe_->on_land) {
+        FloatingBody marker = FloatingBody::four_point(6.0, 2.5);
+        marker.position = {probe_->point.x, probe_->point.z};
+        markers_.push_back(marker);
+    }
 }
 
 int Editor::run(const Options& options) {
@@ -328,11 +421,23 @@ int Editor::run(const Options& options) {
         std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
         return 1;
     }
+    if (!options.script.empty())
+        if (auto st = run_script(options.script); !st) {
+            std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+            return 1;
+        }
+    if (options.probe) script_probe_ = options.probe;
     bool ok = true;
     auto last = std::chrono::steady_clock::now();
+    double frame_seconds = 0.0;
+    long timed_frames = 0;
     for (long i = 0; !glfwWindowShouldClose(window_.window()) && (options.frames < 0 || i < options.frames); ++i) {
         glfwPollEvents();
+        if (i == options.resize_at) glfwSetWindowSize(window_.window(), options.width * 3 / 4, options.height * 3 / 4);
+        // In scripted mode a re-bake completes before the frames go on (the picture is of it).
+        if (options.frames >= 0 && bake_.running()) bake_.job.wait();
         if (auto done = bake_.ready()) swap_in(std::move(*done));
+        const auto frame_start = std::chrono::steady_clock::now();
         const auto now = std::chrono::steady_clock::now();
         clock_.advance(options.frames < 0 ? std::chrono::duration<double>(now - last).count() : 1.0 / 60.0);
         last = now;
@@ -351,11 +456,12 @@ int Editor::run(const Options& options) {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         viewport_input();
-        if (options.probe) {
+        if (script_probe_) {
             const VkExtent2D e = window_.extent();
-            probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(options.probe->x, options.probe->y, e.width, e.height));
+            probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(script_probe_->x, script_probe_->y, e.width, e.height));
         }
         panels();
+        draw_markers();
         ImGui::Render();
         render::FrameInfo info;
         info.camera = camera_.camera();
@@ -380,8 +486,16 @@ int Editor::run(const Options& options) {
             ok = false;
         }
         if (last_frame && !options.screenshot.empty()) std::printf("wrote %s\n", options.screenshot.c_str());
+        if (i >= 2 && !last_frame) {  // past the first frames' pipeline warm-up
+            frame_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count();
+            ++timed_frames;
+        }
     }
-    if (options.probe && probe_) {
+    if (timed_frames > 0) std::printf("frame time: %.1f ms mean over %ld frames\n", 1000.0 * frame_seconds / static_cast<double>(timed_frames), timed_frames);
+    std::printf("window %ux%u, ocean \"%s\" with%s a shore model\n", window_.extent().width, window_.extent().height,
+                scene_->ocean.profile().name.c_str(), scene_->ocean.shore() ? "" : "out");
+    if (!message_.empty()) std::printf("%s\n", message_.c_str());
+    if (script_probe_ && probe_) {
         const SurfacePoint direct = query_world_point(*scene_, clock_.now(), {probe_->point.x, probe_->point.z}).surface;
         std::printf("probe: (%.3f, %.3f) height %.6f m, query_surface %.6f m, body \"%s\"%s\n", probe_->point.x, probe_->point.z,
                     probe_->point.y, direct.height, std::string(body_name(*scene_, probe_->water.body)).c_str(),
@@ -412,7 +526,8 @@ int Editor::run(const Options& options) {
 int main(int argc, char** argv) {
     const auto options = tidewater::editor::parse(argc, argv);
     if (!options) {
-        std::fprintf(stderr, "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] [--no-validation]\n");
+        std::fprintf(stderr, "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
+                             "[--script FILE] [--resize-at N] [--no-validation]\n");
         return 2;
     }
     tidewater::editor::Editor editor;

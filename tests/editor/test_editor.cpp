@@ -75,6 +75,28 @@ TEST(Editor, TheProbeLandsOnTheQuerySurface) {
     EXPECT_NE(r.output.find("body \"ocean\""), std::string::npos) << r.output;
 }
 
+// A script changes the ocean's preset (re-baked in the background: the shore model is
+// kept) and the window is resized mid-run (the swapchain and the renderer follow).
+TEST(Editor, APresetChangeKeepsTheSurfAndResizingWorks) {
+    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "# a preset change from a script\ncamera 900 300 500 120 0 20\npreset pool_calm\n";
+    const EditorRun r = run_editor("--frames 8 --size 1024x640 --resize-at 3 --script " + script.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("window 768x480"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ocean \"pool_calm\" with a shore model"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("2 river(s) and 1 lake shore(s) reused"), std::string::npos) << r.output;
+}
+
+TEST(Editor, ABadScriptLineIsReportedWithItsLine) {
+    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_bad_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "view shaded\nfly to the moon\n";
+    const EditorRun r = run_editor("--frames 2 --script " + script.string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(script.string() + ":2"), std::string::npos) << r.output;
+    fs::remove(script);
+}
+
 TEST(Editor, ABadSceneIsReportedWithItsFile) {
     const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
     EXPECT_NE(r.status, 0);
