@@ -15,7 +15,7 @@ PACKAGES=(
   cmake ninja-build g++ pkg-config ccache git libtbb-dev
   libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
   libgtest-dev libbenchmark-dev libstb-dev libpng-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools glslang-dev
 )
 
 log() { printf '==> %s\n' "$*"; }

@@ -3,13 +3,17 @@
 // swapchain image, and ImGui draws its panels over it.
 //
 //   tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png]
-//                    [--probe X,Y] [--script FILE] [--resize-at N] [--no-validation]
+//                    [--probe X,Y] [--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]
 //
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
 // background), shore (breaking index, re-baked with progress), time (pause, scale,
 // scrub), view (debug views, GPU pass timings) and the probe under the cursor.
 // Viewport: right drag orbits, middle drag pans, the wheel zooms; a left click on the
 // water drops a marker that bobs and tilts with hull_attitude.
+// Hot reload (--shader-dir DIR, a copy of shaders/): a saved shader is compiled with
+// the glslang library and swapped in without a device-wide wait; a failed compile shows
+// its error (FILE:LINE) and the last good pipelines keep drawing. Each reload prints
+// "shader reload: ok (N ms)" or "shader reload: FILE:LINE: message" on stderr.
 // Scripted mode (--frames) draws N frames, writes the last one with its panels to
 // --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
 // validation message).
@@ -19,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <filesystem>
 #include <fstream>
 #include <future>
 #include <mutex>
@@ -35,6 +40,7 @@
 
 #include "editor_window.hpp"
 #include "orbit_camera.hpp"
+#include "shader_reload.hpp"
 #include "surface_probe.hpp"
 
 namespace tidewater::editor {
@@ -42,7 +48,7 @@ namespace tidewater::editor {
 namespace {
 
 struct Options {
-    std::string scene, screenshot, script;
+    std::string scene, screenshot, script, shader_dir;
     int width = 1280, height = 720;
     long frames = -1, resize_at = -1;
     std::optional<glm::dvec2> probe;
@@ -60,6 +66,7 @@ std::optional<Options> parse(int argc, char** argv) {
         else if (a == "--frames" && (v = next())) o.frames = std::atol(v);
         else if (a == "--resize-at" && (v = next())) o.resize_at = std::atol(v);
         else if (a == "--script" && (v = next())) o.script = v;
+        else if (a == "--shader-dir" && (v = next())) o.shader_dir = v;
         else if (a == "--size" && (v = next())) {
             if (std::sscanf(v, "%dx%d", &o.width, &o.height) != 2 || o.width < 320 || o.height < 240) return std::nullopt;
         } else if (a == "--probe" && (v = next())) {
@@ -131,6 +138,17 @@ private:
     render::PassTimings timings_{};
     double last_drag_x_ = 0.0, last_drag_y_ = 0.0;
     std::optional<glm::dvec2> script_probe_;
+    std::unique_ptr<ShaderReload> shaders_;
+    std::string shader_dir_;
+    std::string shader_line_;
+    /// Script steps run at a given frame: "at N replace FILE|OLD|NEW", "at N screenshot PATH".
+    struct Step {
+        long frame = 0;
+        std::string kind, argument;
+    };
+    std::vector<Step> steps_;
+    bool force_reload_ = false;
+    Status run_step(const Step& step, std::string& screenshot);
 };
 
 Status Editor::load(const std::string& path) {
@@ -181,6 +199,8 @@ void Editor::choose_preset(const std::string& name) {
 
 // A script for CI and pictures, one command a line:
 //   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
+//   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
+//   at N screenshot PATH        (the frame N, panels included)
 Status Editor::run_script(const std::string& path) {
     std::ifstream in(path);
     if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open the script", path)};
@@ -215,6 +235,12 @@ Status Editor::run_script(const std::string& path) {
             glm::dvec2 px;
             if (!(words >> px.x >> px.y)) return bad();
             script_probe_ = px;
+        } else if (command == "at") {
+            Step step;
+            if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot")) return bad();
+            std::getline(words >> std::ws, step.argument);
+            if (step.argument.empty()) return bad();
+            steps_.push_back(step);
         } else if (command == "time") {
             double t = 0.0;
             if (!(words >> t)) return bad();
@@ -223,6 +249,30 @@ Status Editor::run_script(const std::string& path) {
             return bad();
         }
     }
+    return {};
+}
+
+Status Editor::run_step(const Step& step, std::string& screenshot) {
+    if (step.kind == "screenshot") {
+        screenshot = step.argument;
+        return {};
+    }
+    // replace FILE|OLD|NEW in the watched shader folder, as an engineer's save would.
+    if (!shaders_) return Error{ErrorCode::invalid_argument, "editor: a replace step needs --shader-dir"};
+    const auto bar = step.argument.find('|'), bar2 = step.argument.find('|', bar == std::string::npos ? 0 : bar + 1);
+    if (bar == std::string::npos || bar2 == std::string::npos)
+        return Error{ErrorCode::parse_error, fmt::format("editor: replace needs FILE|OLD|NEW, got \"{}\"", step.argument)};
+    const std::filesystem::path file = std::filesystem::path(shader_dir_) / step.argument.substr(0, bar);
+    const std::string old_text = step.argument.substr(bar + 1, bar2 - bar - 1), new_text = step.argument.substr(bar2 + 1);
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string source = text.str();
+    const auto at = source.find(old_text);
+    if (!in || at == std::string::npos) return Error{ErrorCode::not_found, fmt::format("editor: {}: \"{}\" not found", file.string(), old_text)};
+    source.replace(at, old_text.size(), new_text);
+    std::ofstream(file, std::ios::trunc) << source;
+    force_reload_ = true;
     return {};
 }
 
@@ -268,6 +318,13 @@ Status Editor::start(const Options& options) {
     renderer_ = std::move(renderer).value();
     if (auto st = load(options.scene); !st) return st;
     if (auto st = renderer_->resize(window_.extent()); !st) return st;
+    if (!options.shader_dir.empty()) {
+        if (!std::filesystem::is_directory(options.shader_dir))
+            return Error{ErrorCode::io_error, fmt::format("editor: --shader-dir {}: not a folder", options.shader_dir)};
+        shader_dir_ = options.shader_dir;
+        shaders_ = std::make_unique<ShaderReload>(options.shader_dir);
+        shaders_->changed();  // the first look records the files
+    }
 
     // Dear ImGui over the same device, in the editor's own render pass.
     IMGUI_CHECKVERSION();
@@ -392,6 +449,10 @@ void Editor::panels() {
             ImGui::TextUnformatted("move the cursor over the water");
         }
     }
+    if (shaders_ && ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (shaders_->error().empty()) ImGui::TextWrapped("%s", shader_line_.empty() ? "watching for changes" : shader_line_.c_str());
+        else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", shaders_->error().c_str());
+    }
     if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::End();
 }
@@ -438,6 +499,19 @@ int Editor::run(const Options& options) {
         if (options.frames >= 0 && bake_.running()) bake_.job.wait();
         if (auto done = bake_.ready()) swap_in(std::move(*done));
         const auto frame_start = std::chrono::steady_clock::now();
+        std::string step_screenshot;
+        for (const Step& step : steps_)
+            if (step.frame == i)
+                if (auto st = run_step(step, step_screenshot); !st) {
+                    std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+                    ok = false;
+                }
+        if (shaders_ && (shaders_->changed() || force_reload_)) {
+            // A saved shader: compiled and swapped in before this frame records.
+            force_reload_ = false;
+            shader_line_ = shaders_->reload(*renderer_);
+            std::fprintf(stderr, "%s\n", shader_line_.c_str());
+        }
         const auto now = std::chrono::steady_clock::now();
         clock_.advance(options.frames < 0 ? std::chrono::duration<double>(now - last).count() : 1.0 / 60.0);
         last = now;
@@ -481,11 +555,12 @@ int Editor::run(const Options& options) {
         ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), frame.cmd);
         vkCmdEndRenderPass(frame.cmd);
         const bool last_frame = options.frames > 0 && i + 1 == options.frames;
-        if (auto st = window_.end_frame(frame, last_frame ? options.screenshot : std::string()); !st) {
+        if (last_frame && !options.screenshot.empty()) step_screenshot = options.screenshot;
+        if (auto st = window_.end_frame(frame, step_screenshot); !st) {
             std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
             ok = false;
         }
-        if (last_frame && !options.screenshot.empty()) std::printf("wrote %s\n", options.screenshot.c_str());
+        if (!step_screenshot.empty()) std::printf("wrote %s\n", step_screenshot.c_str());
         if (i >= 2 && !last_frame) {  // past the first frames' pipeline warm-up
             frame_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_start).count();
             ++timed_frames;
@@ -527,7 +602,7 @@ int main(int argc, char** argv) {
     const auto options = tidewater::editor::parse(argc, argv);
     if (!options) {
         std::fprintf(stderr, "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
-                             "[--script FILE] [--resize-at N] [--no-validation]\n");
+                             "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]\n");
         return 2;
     }
     tidewater::editor::Editor editor;

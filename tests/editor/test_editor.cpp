@@ -97,6 +97,46 @@ TEST(Editor, ABadScriptLineIsReportedWithItsLine) {
     fs::remove(script);
 }
 
+/// Mean |a - b| over the colour channels, 0..1.
+double mean_difference(const detail::Rgba8Image& a, const detail::Rgba8Image& b) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < a.pixels.size(); ++k)
+        if (k % 4 != 3) sum += std::abs(static_cast<int>(a.pixels[k]) - static_cast<int>(b.pixels[k])) / 255.0;
+    return sum / (0.75 * static_cast<double>(a.pixels.size()));
+}
+
+// Hot reload: a shader broken on disk is reported (FILE:LINE) and the picture does not
+// change; mending it with a visible change (red water) changes the picture.
+TEST(Editor, HotReloadReportsABrokenShaderAndSwapsInAMendedOne) {
+    const std::string tag = std::to_string(::getpid());
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_editor_shaders_" + tag);
+    fs::remove_all(dir);
+    fs::copy(TIDEWATER_SHADER_SOURCE_DIR, dir);
+    const fs::path shots[3] = {fs::temp_directory_path() / ("tidewater_hr0_" + tag + ".png"),
+                               fs::temp_directory_path() / ("tidewater_hr1_" + tag + ".png"),
+                               fs::temp_directory_path() / ("tidewater_hr2_" + tag + ".png")};
+    const fs::path script = fs::temp_directory_path() / ("tidewater_hr_" + tag + ".script");
+    std::ofstream(script) << "camera 900 300 500 120 0 20\n"
+                          << "at 1 screenshot " << shots[0].string() << "\n"
+                          << "at 2 replace water.frag|out_color = target_color(color);|out_color = target_color(color)\n"
+                          << "at 3 screenshot " << shots[1].string() << "\n"
+                          << "at 4 replace water.frag|out_color = target_color(color)|out_color = vec4(1.0, 0.0, 0.0, 1.0);\n"
+                          << "at 6 screenshot " << shots[2].string() << "\n";
+    const EditorRun r = run_editor("--frames 8 --size 800x480 --shader-dir " + dir.string() + " --script " + script.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("shader reload: water.frag:"), std::string::npos) << "the broken file and line: " << r.output;
+    EXPECT_NE(r.output.find("shader reload: ok ("), std::string::npos) << r.output;
+    auto before = detail::read_png_rgba8(shots[0]), broken = detail::read_png_rgba8(shots[1]), mended = detail::read_png_rgba8(shots[2]);
+    ASSERT_TRUE(before.ok() && broken.ok() && mended.ok()) << r.output;
+    const double kept = mean_difference(*before, *broken), changed = mean_difference(*broken, *mended);
+    std::printf("mean change: %.4f across the failed reload, %.4f across the mended one\n", kept, changed);
+    EXPECT_LT(kept, 0.02) << "the last good pipelines keep drawing";
+    EXPECT_GT(changed, 0.05) << "the mended shader is on screen";
+    for (const auto& shot : shots) fs::remove(shot);
+    fs::remove(script);
+    fs::remove_all(dir);
+}
+
 TEST(Editor, ABadSceneIsReportedWithItsFile) {
     const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
     EXPECT_NE(r.status, 0);

@@ -414,6 +414,21 @@ TEST_F(RenderTest, AReBakeOnAWorkerThreadIsSwappedInBetweenFrames) {
     EXPECT_GT(test::mean_difference(before, after), 0.01) << "the new knoll is drawn";
 }
 
+// Hot reload refuses what is not SPIR-V, naming the shader, and the frame still draws.
+TEST_F(RenderTest, ReloadingShadersRefusesWhatIsNotSpirv) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene);
+    render::FrameInfo frame;
+    frame.camera.position = {900.0, 300.0, 500.0};
+    frame.camera.target = {120.0, 0.0, 20.0};
+    const auto before = render(*scene, frame);
+    auto refused = renderer_->reload_shaders({{"water.frag", {1u, 2u, 3u}}});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("water.frag is not SPIR-V"), std::string::npos) << refused.error().message;
+    const auto after = render(*scene, frame);
+    EXPECT_LT(test::mean_difference(before, after), 1e-9) << "the built-in pipelines keep drawing";
+}
+
 TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {
     render::RendererInitInfo init;
     init.device = context();

@@ -10,8 +10,9 @@ namespace tidewater::render::detail {
 
 namespace {
 
-Result<VkShaderModule> make_module(const DeviceContext& ctx, std::string_view name) {
-    const auto spirv = embedded_spirv(name);
+Result<VkShaderModule> make_module(const DeviceContext& ctx, std::string_view name, const ShaderLookup& shaders) {
+    std::span<const std::uint32_t> spirv = shaders ? shaders(name) : std::span<const std::uint32_t>();
+    if (spirv.empty()) spirv = embedded_spirv(name);
     if (spirv.empty()) return Error{ErrorCode::not_found, fmt::format("shader {} is not embedded in this build", name)};
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = spirv.size_bytes();
@@ -40,7 +41,7 @@ Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc&
         for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, ctx.allocator);
     };
     for (const Stage& s : wanted) {
-        auto module = make_module(ctx, s.name);
+        auto module = make_module(ctx, s.name, d.shaders);
         if (!module) {
             destroy_modules();
             return module.error();
@@ -172,10 +173,20 @@ Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat
     FramePipelines p;
     if (auto st = create_layouts(ctx, p); !st) return st.error();
     if (auto st = create_samplers(ctx, p); !st) return st.error();
+    auto draws = p.make_draws(ctx, color_format, depth_format, wireframe, nullptr);
+    if (!draws) return draws.error();
+    p.draws = std::move(draws).value();
+    return p;
+}
+
+Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe,
+                                                 const ShaderLookup& shaders) const {
+    DrawPipelines p;
     PipelineDesc base;
-    base.layout = p.layout.get();
+    base.layout = layout.get();
     base.color_format = color_format;
     base.depth_format = depth_format;
+    base.shaders = shaders;
     auto make = [&](OwnedPipeline& out, const PipelineDesc& d) -> Status {
         auto made = create_pipeline(ctx, d);
         if (!made) return made.error();

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string_view>
 #include <vulkan/vulkan.h>
 
@@ -13,6 +15,9 @@
 
 namespace tidewater::render::detail {
 
+/// SPIR-V of a shader by source name ("water.frag"); empty: the embedded one.
+using ShaderLookup = std::function<std::span<const std::uint32_t>(std::string_view name)>;
+
 struct PipelineDesc {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkFormat color_format = VK_FORMAT_UNDEFINED;
@@ -21,6 +26,7 @@ struct PipelineDesc {
     bool terrain_vertices = false;   // position + normal, 24-byte stride
     bool depth_write = true;
     VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
+    ShaderLookup shaders;  ///< overrides of the embedded SPIR-V (hot reload); null: none
 };
 
 Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& desc);
@@ -33,13 +39,21 @@ constexpr std::uint32_t kDrawIndexOffset = 16;
 
 /// Everything a frame's draws bind, made once per renderer. Wireframe pipelines exist
 /// only when asked for (they need fillModeNonSolid).
+/// The graphics pipelines of a frame, over the frame's layouts.
+struct DrawPipelines {
+    OwnedPipeline sky, terrain, terrain_wire, water, water_wire;
+};
+
 struct FramePipelines {
     OwnedSetLayout set_layout;
     OwnedPipelineLayout layout;
-    OwnedPipeline sky, terrain, terrain_wire, water, water_wire;
+    DrawPipelines draws;
     OwnedSampler linear, nearest;
 
     static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe);
+    /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.
+    Result<DrawPipelines> make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe,
+                                     const ShaderLookup& shaders) const;
 };
 
 }  // namespace tidewater::render::detail

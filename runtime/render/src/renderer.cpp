@@ -51,6 +51,14 @@ std::span<const DebugView> all_debug_views() { return kViews; }
 struct Renderer::Impl {
     std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
     RendererInitInfo info;
+    /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
+    /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
+    struct Retired {
+        detail::DrawPipelines draws;
+        std::uint64_t until = 0;
+    };
+    std::vector<Retired> retired;
+    std::uint64_t next_frame = 0;  // one past the last frame index recorded
     const detail::ColorTarget* color_target = nullptr;  // entries of the format table
     const detail::DepthTarget* depth_target = nullptr;
     const DeviceContext& ctx() const { return info.device; }
@@ -195,9 +203,12 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     if (auto st = detail::validate_camera(frame.camera); !st) return st;
     if (!std::isfinite(frame.time) || std::abs(frame.time) > 1e9)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: time {} is out of range (finite, |t| <= 1e9 s)", frame.time)};
-    if (frame.view == DebugView::wireframe && !pipelines.water_wire)
+    if (frame.view == DebugView::wireframe && !pipelines.draws.water_wire)
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     slot = &slots[frame.frame_index % slots.size()];
+    // Frames up to frame_index - frames_in_flight have finished: their pipelines may go.
+    std::erase_if(retired, [&](const Retired& r) { return r.until + slots.size() <= frame.frame_index; });
+    next_frame = std::max(next_frame, frame.frame_index + 1);
     slot->recorded_frame = frame.frame_index;
     plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                               color_target->linear_output);
@@ -218,14 +229,14 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const de
     const VkPipelineLayout layout = pipelines.layout.get();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, 16, &plan.terrain_mesh_offset);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.terrain_wire : pipelines.terrain).get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
     const VkDeviceSize offset = 0;
     const VkBuffer vb = terrain->vertices.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
     vkCmdBindIndexBuffer(cmd, terrain->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, terrain->index_count, 1, 0, 0, 0);
     // The sky last: it only fills pixels nothing else covered (depth still at the far plane).
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky.get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.sky.get());
     vkCmdDraw(cmd, 3, 1, 0, 0);
 }
 
@@ -233,7 +244,7 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
                                 DebugView view) {
     detail::set_viewport(cmd, extent);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.water_wire : pipelines.water).get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
     // One draw per body: the ocean, each lake, each river (water_draw.glsl).
     std::uint64_t patches = 0;
     for (std::uint32_t i = 0; i < plan.water_draws.size(); ++i) {
@@ -426,6 +437,24 @@ Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkE
     if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
     m.draw_opaque(cmd, *slot, plan, extent, frame.view);
     m.draw_water(cmd, *slot, plan, extent, frame.view);
+    return {};
+}
+
+Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
+    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
+    Impl& m = *impl_;
+    for (const auto& [name, words] : spirv)
+        if (words.empty() || words[0] != 0x07230203u)
+            return Error{ErrorCode::invalid_argument, fmt::format("renderer: reload_shaders: {} is not SPIR-V", name)};
+    const detail::ShaderLookup lookup = [&spirv](std::string_view name) -> std::span<const std::uint32_t> {
+        const auto it = spirv.find(name);
+        return it == spirv.end() ? std::span<const std::uint32_t>() : std::span<const std::uint32_t>(it->second);
+    };
+    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.wireframe, lookup);
+    if (!draws) return draws.error();  // the current pipelines keep drawing
+    // No device-wide wait: the old pipelines live until the frames in flight are done.
+    m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});
+    m.pipelines.draws = std::move(draws).value();
     return {};
 }
 

@@ -24,11 +24,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <vulkan/vulkan.h>
@@ -123,6 +125,17 @@ public:
 
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
     Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
+
+    /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag",
+    /// "water.vert", "water.tesc", "water.tese", "water.frag"); a name left out keeps the
+    /// built-in shader.
+    using ShaderSpirv = std::map<std::string, std::vector<std::uint32_t>, std::less<>>;
+    /// Hot reload: rebuilds the draw pipelines from `spirv`. On failure the current
+    /// pipelines keep drawing and the error names the shader. On success the next
+    /// recorded frame uses the new ones; the old ones are destroyed once no frame in
+    /// flight can use them (no device-wide wait). The interface (bindings, push
+    /// constants, vertex inputs) must stay the built-in shaders'.
+    Status reload_shaders(const ShaderSpirv& spirv);
 
     /// Pass timings of the frame recorded with `frame_index`, once the host knows it has finished.
     Result<PassTimings> timings(std::uint64_t frame_index);
