@@ -42,6 +42,7 @@
 #include "orbit_camera.hpp"
 #include "shader_reload.hpp"
 #include "surface_probe.hpp"
+#include "terrain_brush.hpp"
 
 namespace tidewater::editor {
 
@@ -148,6 +149,11 @@ private:
     };
     std::vector<Step> steps_;
     bool force_reload_ = false;
+    bool brushing_ = false;           // the Terrain panel's brush is on (left drag paints)
+    float brush_radius_ = 60.0f, brush_height_ = 2.0f;
+    std::optional<Terrain> stroke_;   // the terrain under the current stroke
+    std::optional<std::pair<glm::dvec2, double>> scripted_brush_;  // where, and the ground there before
+    void paint(glm::dvec2 at, double height);
     Status run_step(const Step& step, std::string& screenshot);
 };
 
@@ -199,6 +205,7 @@ void Editor::choose_preset(const std::string& name) {
 
 // A script for CI and pictures, one command a line:
 //   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
+//   brush X Z RADIUS HEIGHT     (a stroke of the terrain brush, re-baked in the background)
 //   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
 //   at N screenshot PATH        (the frame N, panels included)
 Status Editor::run_script(const std::string& path) {
@@ -235,6 +242,17 @@ Status Editor::run_script(const std::string& path) {
             glm::dvec2 px;
             if (!(words >> px.x >> px.y)) return bad();
             script_probe_ = px;
+        } else if (command == "brush") {
+            glm::dvec2 at;
+            double radius = 0.0, height = 0.0;
+            if (!(words >> at.x >> at.y >> radius >> height) || !(radius > 0.0)) return bad();
+            brush_radius_ = static_cast<float>(radius);
+            scripted_brush_ = std::make_pair(at, scene_->terrain.height_at(at));
+            paint(at, height);
+            Scene edited = *scene_;
+            edited.terrain = *stroke_;
+            stroke_.reset();
+            bake_.start(std::move(edited), scene_);
         } else if (command == "at") {
             Step step;
             if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot")) return bad();
@@ -274,6 +292,12 @@ Status Editor::run_step(const Step& step, std::string& screenshot) {
     std::ofstream(file, std::ios::trunc) << source;
     force_reload_ = true;
     return {};
+}
+
+void Editor::paint(glm::dvec2 at, double height) {
+    // A stroke paints on its own copy; it is baked when the stroke ends.
+    if (!stroke_) stroke_ = scene_->terrain.with_cuts({});
+    stroke_ = brush_terrain(*stroke_, at, brush_radius_, height);
 }
 
 void Editor::draw_markers() {
@@ -421,6 +445,12 @@ void Editor::panels() {
             ImGui::ProgressBar(static_cast<float>(bake_.fraction.load()), ImVec2(-1, 0), stage.c_str());
         }
     }
+    if (ImGui::CollapsingHeader("Terrain")) {
+        ImGui::Checkbox("brush (left drag: raise, with shift: lower)", &brushing_);
+        ImGui::SliderFloat("radius (m)", &brush_radius_, 5.0f, 400.0f, "%.0f");
+        ImGui::SliderFloat("height per frame (m)", &brush_height_, 0.1f, 10.0f, "%.1f");
+        if (stroke_) ImGui::TextUnformatted("painting: baked when the stroke ends");
+    }
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
         bool paused = clock_.paused();
         if (ImGui::Checkbox("pause", &paused)) paused ? clock_.pause() : clock_.resume();
@@ -470,6 +500,19 @@ void Editor::viewport_input() {
     if (io.MouseWheel != 0.0f) camera_.zoom(io.MouseWheel);
     const VkExtent2D e = window_.extent();
     probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(x, y, e.width, e.height));
+    if (brushing_) {
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && probe_) {
+            const bool lower = ImGui::GetIO().KeyShift;
+            paint({probe_->point.x, probe_->point.z}, (lower ? -1.0 : 1.0) * static_cast<double>(brush_height_));
+        } else if (stroke_ && !bake_.running()) {
+            // The stroke ended: the edited terrain is baked on a worker thread.
+            Scene edited = *scene_;
+            edited.terrain = *stroke_;
+            stroke_.reset();
+            bake_.start(std::move(edited), scene_);
+        }
+        return;
+    }
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && probe_ && !probe_->on_land) {
         FloatingBody marker = FloatingBody::four_point(6.0, 2.5);
         marker.position = {probe_->point.x, probe_->point.z};
@@ -567,6 +610,9 @@ int Editor::run(const Options& options) {
         }
     }
     if (timed_frames > 0) std::printf("frame time: %.1f ms mean over %ld frames\n", 1000.0 * frame_seconds / static_cast<double>(timed_frames), timed_frames);
+    if (scripted_brush_)
+        std::printf("terrain at the brush (%.1f, %.1f): %.3f m, was %.3f m\n", scripted_brush_->first.x, scripted_brush_->first.y,
+                    scene_->terrain.height_at(scripted_brush_->first), scripted_brush_->second);
     std::printf("window %ux%u, ocean \"%s\" with%s a shore model\n", window_.extent().width, window_.extent().height,
                 scene_->ocean.profile().name.c_str(), scene_->ocean.shore() ? "" : "out");
     if (!message_.empty()) std::printf("%s\n", message_.c_str());
@@ -575,6 +621,7 @@ int Editor::run(const Options& options) {
         std::printf("probe: (%.3f, %.3f) height %.6f m, query_surface %.6f m, body \"%s\"%s\n", probe_->point.x, probe_->point.z,
                     probe_->point.y, direct.height, std::string(body_name(*scene_, probe_->water.body)).c_str(),
                     probe_->on_land ? " (land)" : "");
+        std::printf("terrain at the probe: %.3f m\n", scene_->terrain.height_at({probe_->point.x, probe_->point.z}));
         std::printf("gpu: terrain %.3f ms, copy %.3f ms, water %.3f ms, total %.3f ms\n", timings_.sky_and_terrain_ms,
                     timings_.scene_copy_ms, timings_.water_ms, timings_.total_ms);
     }

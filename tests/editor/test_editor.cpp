@@ -137,6 +137,21 @@ TEST(Editor, HotReloadReportsABrokenShaderAndSwapsInAMendedOne) {
     fs::remove_all(dir);
 }
 
+// A brush stroke raises the ground and is re-baked in the background.
+TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
+    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_brush_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "brush 640 330 120 30\n";
+    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    double after = 0.0, before = 0.0;
+    const auto at = r.output.find("terrain at the brush (640.0, 330.0): ");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    ASSERT_EQ(std::sscanf(r.output.c_str() + at, "terrain at the brush (640.0, 330.0): %lf m, was %lf m", &after, &before), 2) << r.output;
+    EXPECT_NEAR(after - before, 30.0, 0.5) << "raised by the stroke's 30 m at its centre (16-bit heightmap)";
+    EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
+}
+
 TEST(Editor, ABadSceneIsReportedWithItsFile) {
     const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
     EXPECT_NE(r.status, 0);
