@@ -6,8 +6,9 @@
 //                    [--probe X,Y] [--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]
 //
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
-// background), shore (breaking index, re-baked with progress), time (pause, scale,
-// scrub), view (debug views, GPU pass timings) and the probe under the cursor.
+// background), shore (breaking index, re-baked with progress), terrain (a brush), rivers
+// and lakes (discharge, width, level; path points dragged in the viewport), time
+// (pause, scale, scrub), view (debug views, GPU pass timings) and the probe.
 // Viewport: right drag orbits, middle drag pans, the wheel zooms; a left click on the
 // water drops a marker that bobs and tilts with hull_attitude.
 // Hot reload (--shader-dir DIR, a copy of shaders/): a saved shader is compiled with
@@ -154,6 +155,12 @@ private:
     std::optional<Terrain> stroke_;   // the terrain under the current stroke
     std::optional<std::pair<glm::dvec2, double>> scripted_brush_;  // where, and the ground there before
     void paint(glm::dvec2 at, double height);
+    bool editing_rivers_ = false;          // the Rivers panel's point editing is on
+    std::optional<std::pair<std::size_t, std::size_t>> dragged_;  // river, path point
+    std::optional<Scene> body_edit_;       // rivers and lakes being edited, baked on release
+    void bodies_panel();
+    void drag_points();
+    std::optional<ImVec2> project(glm::dvec3 p) const;
     Status run_step(const Step& step, std::string& screenshot);
 };
 
@@ -206,6 +213,7 @@ void Editor::choose_preset(const std::string& name) {
 // A script for CI and pictures, one command a line:
 //   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
 //   brush X Z RADIUS HEIGHT     (a stroke of the terrain brush, re-baked in the background)
+//   river NAME discharge Q      (as the Rivers panel's slider, re-baked in the background)
 //   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
 //   at N screenshot PATH        (the frame N, panels included)
 Status Editor::run_script(const std::string& path) {
@@ -252,6 +260,15 @@ Status Editor::run_script(const std::string& path) {
             Scene edited = *scene_;
             edited.terrain = *stroke_;
             stroke_.reset();
+            bake_.start(std::move(edited), scene_);
+        } else if (command == "river") {
+            std::string name, field;
+            double value = 0.0;
+            if (!(words >> name >> field >> value) || field != "discharge" || !(value > 0.0)) return bad();
+            Scene edited = *scene_;
+            const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(), [&](const SceneRiver& r) { return r.name == name; });
+            if (it == edited.rivers.end()) return bad();
+            it->discharge = value;
             bake_.start(std::move(edited), scene_);
         } else if (command == "at") {
             Step step;
@@ -300,22 +317,89 @@ void Editor::paint(glm::dvec2 at, double height) {
     stroke_ = brush_terrain(*stroke_, at, brush_radius_, height);
 }
 
-void Editor::draw_markers() {
-    // Each marker bobs and tilts with hull_attitude, drawn as a cross over the frame.
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
+std::optional<ImVec2> Editor::project(glm::dvec3 p) const {
     const VkExtent2D e = window_.extent();
     const render::Camera cam = camera_.camera();
     const glm::dvec3 forward = glm::normalize(cam.target - cam.position);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
     const glm::dvec3 up = glm::cross(right, forward);
     const double tan_half = std::tan(0.5 * cam.fov_y_deg * 3.141592653589793 / 180.0);
-    auto project = [&](glm::dvec3 p) -> std::optional<ImVec2> {
-        const glm::dvec3 d = p - cam.position;
-        const double depth = glm::dot(d, forward);
-        if (depth <= 0.1) return std::nullopt;
-        const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height), y = glm::dot(d, up) / (depth * tan_half);
-        return ImVec2(static_cast<float>((x + 1.0) * 0.5 * e.width), static_cast<float>((1.0 - y) * 0.5 * e.height));
-    };
+    const glm::dvec3 d = p - cam.position;
+    const double depth = glm::dot(d, forward);
+    if (depth <= 0.1) return std::nullopt;
+    const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height), y = glm::dot(d, up) / (depth * tan_half);
+    return ImVec2(static_cast<float>((x + 1.0) * 0.5 * e.width), static_cast<float>((1.0 - y) * 0.5 * e.height));
+}
+
+void Editor::bodies_panel() {
+    if (scene_->rivers.empty() && scene_->lakes.empty()) return;
+    if (!ImGui::CollapsingHeader("Rivers and lakes")) return;
+    ImGui::Checkbox("drag river points (left drag)", &editing_rivers_);
+    bool changed = false;
+    Scene edited = body_edit_ ? *body_edit_ : *scene_;
+    for (std::size_t r = 0; r < edited.rivers.size(); ++r) {
+        SceneRiver& river = edited.rivers[r];
+        ImGui::PushID(static_cast<int>(r));
+        float q = static_cast<float>(river.discharge), w = static_cast<float>(river.width.front());
+        ImGui::Text("river \"%s\"", river.name.c_str());
+        if (ImGui::SliderFloat("discharge (m3/s)", &q, 0.1f, 500.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+            river.discharge = q;
+            changed = true;
+        }
+        if (ImGui::SliderFloat("source width (m)", &w, 2.0f, 200.0f, "%.1f")) {
+            river.width.front() = w;
+            changed = true;
+        }
+        ImGui::PopID();
+    }
+    for (std::size_t l = 0; l < edited.lakes.size(); ++l) {
+        ImGui::PushID(1000 + static_cast<int>(l));
+        float level = static_cast<float>(edited.lakes[l].body.level());
+        if (ImGui::SliderFloat(fmt::format("lake \"{}\" level (m)", edited.lakes[l].name).c_str(), &level, -50.0f, 500.0f, "%.2f")) {
+            auto body = WaterBody::create(edited.lakes[l].body.profile(), level, edited.lakes[l].name);
+            if (body) {
+                edited.lakes[l].body = std::move(body).value();
+                changed = true;
+            }
+        }
+        ImGui::PopID();
+    }
+    if (changed) body_edit_ = std::move(edited);
+    if (body_edit_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !bake_.running()) {
+        // Released: bake the edited rivers and lakes (the rest is reused).
+        bake_.start(std::move(*body_edit_), scene_);
+        body_edit_.reset();
+    }
+}
+
+void Editor::drag_points() {
+    // The rivers' path points, drawn over the frame; with editing on, a left drag moves one.
+    const Scene& shown = body_edit_ ? *body_edit_ : *scene_;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    std::optional<std::pair<std::size_t, std::size_t>> nearest;
+    float best = 12.0f;
+    for (std::size_t r = 0; r < shown.rivers.size(); ++r)
+        for (std::size_t k = 0; k < shown.rivers[r].path.size(); ++k) {
+            const glm::dvec2 p = shown.rivers[r].path[k];
+            const auto q = project({p.x, shown.terrain.height_at(p) + 1.0, p.y});
+            if (!q) continue;
+            draw->AddCircle(*q, 5.0f, IM_COL32(80, 220, 255, 255), 12, 2.0f);
+            const float d = std::hypot(q->x - mouse.x, q->y - mouse.y);
+            if (d < best) best = d, nearest = std::make_pair(r, k);
+        }
+    if (!editing_rivers_ || ImGui::GetIO().WantCaptureMouse) return;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragged_ = nearest;
+    if (dragged_ && ImGui::IsMouseDown(ImGuiMouseButton_Left) && probe_) {
+        if (!body_edit_) body_edit_ = *scene_;
+        body_edit_->rivers[dragged_->first].path[dragged_->second] = {probe_->point.x, probe_->point.z};
+    }
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragged_.reset();
+}
+
+void Editor::draw_markers() {
+    // Each marker bobs and tilts with hull_attitude, drawn as a cross over the frame.
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
     for (const FloatingBody& m : markers_) {
         auto attitude = hull_attitude(*scene_, m, clock_.now());
         if (!attitude) continue;
@@ -451,6 +535,7 @@ void Editor::panels() {
         ImGui::SliderFloat("height per frame (m)", &brush_height_, 0.1f, 10.0f, "%.1f");
         if (stroke_) ImGui::TextUnformatted("painting: baked when the stroke ends");
     }
+    bodies_panel();
     if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
         bool paused = clock_.paused();
         if (ImGui::Checkbox("pause", &paused)) paused ? clock_.pause() : clock_.resume();
@@ -513,7 +598,7 @@ void Editor::viewport_input() {
         }
         return;
     }
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && probe_ && !probe_->on_land) {
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && probe_ && !probe_->on_land && !editing_rivers_) {
         FloatingBody marker = FloatingBody::four_point(6.0, 2.5);
         marker.position = {probe_->point.x, probe_->point.z};
         markers_.push_back(marker);
@@ -578,6 +663,7 @@ int Editor::run(const Options& options) {
             probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(script_probe_->x, script_probe_->y, e.width, e.height));
         }
         panels();
+        drag_points();
         draw_markers();
         ImGui::Render();
         render::FrameInfo info;

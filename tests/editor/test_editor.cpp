@@ -152,6 +152,16 @@ TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
 }
 
+// A river's discharge from the Rivers panel (scripted) is re-baked in the background.
+TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
+    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_river_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "river brook discharge 20\n";
+    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
+}
+
 TEST(Editor, ABadSceneIsReportedWithItsFile) {
     const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
     EXPECT_NE(r.status, 0);
