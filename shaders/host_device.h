@@ -150,7 +150,8 @@ struct GpuFlowDetail {
 struct GpuBodyDraw {
     vec4 patch_grid;  // xy: patch grid corner relative to O (m); z: patch size (m); w: patches per row, 0: patches from the patch list
     vec4 body;        // x: kind (kBodyOcean, kBodyLake, kBodyRiver); y: rest level (m; a river's mouth level); z: first wave; w: wave count (a river's still water)
-    vec4 grid;        // xy: the river's or lake's grid corner relative to O (m); z: texel (m); w: its first texel in the river fields or body masks
+    vec4 grid;        // xy: the river's or lake's grid corner relative to O (m); z: texel (m); w: its first texel in the river fields or body masks.
+                      // An ocean ring: xy the corner and z the side of the square it leaves to the draw inside (m)
     vec4 river;       // x, y: grid texels along x and z; z: first river wave; w: river wave count
     vec4 extra;       // x: unused; y: first patch in the patch list;
                       // z: highest rest surface above the level (m); w: largest wave displacement (m)

@@ -34,10 +34,19 @@ bool outside_frustum() {
     return any(all_out_a) || all_out_b.x;
 }
 
+// An ocean ring's patch that lies wholly in the square the draw inside covers.
+bool in_ring_hole() {
+    GpuBodyDraw d = draws[draw_push.draw_index];
+    if (uint(d.body.x) != kBodyOcean || d.grid.z <= 0.0) return false;
+    vec2 lo = min(min(patch_xz[0], patch_xz[1]), min(patch_xz[2], patch_xz[3]));
+    vec2 hi = max(max(patch_xz[0], patch_xz[1]), max(patch_xz[2], patch_xz[3]));
+    return all(greaterThanEqual(lo, d.grid.xy)) && all(lessThanEqual(hi, d.grid.xy + d.grid.z));
+}
+
 void main() {
     control_xz[gl_InvocationID] = patch_xz[gl_InvocationID];
     if (gl_InvocationID == 0) {
-        if (outside_frustum()) {
+        if (in_ring_hole() || outside_frustum()) {
             gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelOuter[3] = 0.0;
             gl_TessLevelInner[0] = gl_TessLevelInner[1] = 0.0;
             return;

@@ -100,7 +100,9 @@ TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
     ASSERT_LT(hill.y, frame.camera.position.y);
     auto p = test::project(frame.camera, 320, 180, hill);
     ASSERT_TRUE(p.has_value()) << "hill " << hill.x << "," << hill.y << "," << hill.z;
-    EXPECT_TRUE(is_land(test::block(img, p->x, p->y, 1))) << "island at " << p->x << "," << p->y;
+    // Two rows under the summit: its own pixel is on the skyline, where the sea that now
+    // reaches the horizon shows behind it.
+    EXPECT_TRUE(is_land(test::block(img, p->x, p->y + 2, 1))) << "island at " << p->x << "," << p->y + 2;
     // Water: points on a ring 1.1 km from the centre (beyond any coast) that are in view
     // with a clear line of sight over the terrain.
     int water_points = 0;
@@ -412,6 +414,30 @@ TEST_F(RenderTest, AReBakeOnAWorkerThreadIsSwappedInBetweenFrames) {
     const auto after = render(**rebaked, frame);
     std::printf("%d frame(s) drawn while the worker re-baked in %.2f s\n", frames_while_baking, (*rebaked)->bake->seconds);
     EXPECT_GT(test::mean_difference(before, after), 0.01) << "the new knoll is drawn";
+}
+
+// Water to the horizon: from 400 m up, looking 7.6 degrees down at 640 x 360 with a 50
+// degree field of view, the water's far edge is within 3 rows of the analytic horizon
+// (row 180 - 180 tan 7.6 / tan 25 = 128.5), in every column.
+TEST_F(RenderTest, TheOpenSeaReachesTheHorizon) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene);
+    render::FrameInfo frame;
+    frame.camera.position = {2000.0, 400.0, 0.0};
+    frame.camera.target = {2500.0, 400.0 - 500.0 * std::tan(7.6 * kPi / 180.0), 0.0};
+    frame.camera.fov_y_deg = 50.0;
+    frame.view = render::DebugView::normals;  // water (0.5 + 0.5 n) against the sky's blue
+    const auto img = render(*scene, frame, 640, 360);
+    const double horizon = 180.0 - 180.0 * std::tan(7.6 * kPi / 180.0) / std::tan(25.0 * kPi / 180.0);
+    for (int x = 16; x < 640; x += 48) {
+        int top = -1;
+        for (int y = 0; y < 360 && top < 0; ++y) {
+            const Rgb c = test::pixel(img, x, y);
+            if (c.g > 0.8 && c.g > c.b + 0.15) top = y;  // an upward normal: water
+        }
+        ASSERT_GE(top, 0) << "no water in column " << x;
+        EXPECT_NEAR(top, horizon, 3.0) << "column " << x;
+    }
 }
 
 // Hot reload refuses what is not SPIR-V, naming the shader, and the frame still draws.

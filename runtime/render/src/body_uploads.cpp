@@ -126,7 +126,8 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.shore = glm::vec4(rel(p.model->corner(), origin), static_cast<float>(p.model->texel()), static_cast<float>(p.model->resolution()));
         d.shore_base = glm::uvec4(p.per_wave, p.shared, 0u, 0u);
     };
-    const float first_river = (scene.has_ocean ? 1.0f : 0.0f) + static_cast<float>(scene.lakes.size());
+    const std::size_t ocean_draws = scene.has_ocean ? 1 + plan.ocean_rings.size() : 0;
+    const float first_river = static_cast<float>(ocean_draws + scene.lakes.size());
     const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), 0.0f, 0.0f);
     // Each still body's waves: where they start in the frame's wave buffer.
     std::vector<std::uint32_t> lake_first(scene.lakes.size(), 0);
@@ -151,6 +152,17 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         gpu_ripples(scene.ocean, time, origin, d.ripple, d.ripple_offset);
         out.draws.push_back(d);
         out.patch_counts.push_back(plan.patches_per_side * plan.patches_per_side);
+        // The rings beyond, each skipping the square the one inside covers (grid: that
+        // square's corner and side).
+        glm::vec4 inner = d.patch_grid;
+        for (const glm::vec4& ring : plan.ocean_rings) {
+            gpu::GpuBodyDraw r = d;
+            r.patch_grid = ring;
+            r.grid = glm::vec4(inner.x, inner.y, inner.z * inner.w, 0.0f);
+            out.draws.push_back(r);
+            out.patch_counts.push_back(static_cast<std::uint32_t>(ring.w * ring.w));
+            inner = ring;
+        }
     }
     for (std::size_t l = 0; l < scene.lakes.size() && l < bodies.lakes.size(); ++l) {
         const BodyLayout& b = bodies.lakes[l];

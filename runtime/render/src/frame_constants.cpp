@@ -93,6 +93,17 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.water_patch = glm::vec4(static_cast<float>(patch), static_cast<float>(plan.patches_per_side),
                               static_cast<float>(corner.x - plan.origin.x), static_cast<float>(corner.y - plan.origin.y));
 
+    // Rings of coarser patches out to the horizon, each snapped to its own patch size.
+    // From 400 m up the last ring's edge lies 0.03 degrees under the horizon.
+    double half = 0.5 * patch * plan.patches_per_side;
+    for (int k = 0; k < kOceanRings; ++k) {
+        half *= 2.0;
+        const double size = 2.0 * half / kOceanRingPatches;
+        const glm::dvec2 ring{std::floor((cam.position.x - half) / size) * size, std::floor((cam.position.z - half) / size) * size};
+        plan.ocean_rings.push_back(glm::vec4(static_cast<float>(ring.x - plan.origin.x), static_cast<float>(ring.y - plan.origin.y),
+                                             static_cast<float>(size), static_cast<float>(kOceanRingPatches)));
+    }
+
     plan.waves = waves_at_origin(water, info.time, plan.origin);
     plan.terrain_mesh_offset = glm::vec4(static_cast<float>(terrain.mesh_origin.x - plan.origin.x), 0.0f,
                                          static_cast<float>(terrain.mesh_origin.y - plan.origin.y), 0.0f);

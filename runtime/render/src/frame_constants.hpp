@@ -24,8 +24,16 @@ struct FramePlan {
     glm::dvec2 origin{0.0};              ///< The render origin O, world xz, m.
     glm::vec4 terrain_mesh_offset{0.0f}; ///< Mesh origin relative to O.
     std::uint32_t patches_per_side = 0;
-    std::vector<std::uint32_t> water_draws;  ///< patch instances of each water draw (the ocean, lakes, rivers)
+    /// The open sea beyond the patch grid, out to the horizon: squares of coarser patches
+    /// round it, each with a hole where the one inside draws. x, y: corner relative to O
+    /// (m); z: patch size (m); w: patches per side.
+    std::vector<glm::vec4> ocean_rings;
+    std::vector<std::uint32_t> water_draws;  ///< patch instances of each water draw (the ocean, its rings, lakes, rivers)
 };
+
+/// Patches per side of each ring round the ocean's patch grid, and how many rings.
+inline constexpr std::uint32_t kOceanRingPatches = 32;
+inline constexpr int kOceanRings = 8;  ///< each doubles the reach: 3 km x 2^8 = 768 km
 
 /// Reversed-Z, infinite-far perspective for Vulkan clip space (y down, z in [0, 1]).
 glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_plane);

@@ -343,7 +343,7 @@ Status Renderer::set_scene(const Scene& scene) {
     if (!terrain) return terrain.error();
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
-    if (auto st = m.size_slots(1 + scene.lakes.size() + scene.rivers.size(), waves, river_waves); !st) return st;
+    if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves); !st) return st;
     if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes); !st) return st;
     m.terrain = std::move(terrain).value();
     m.bodies = std::move(bodies).value();
@@ -388,7 +388,7 @@ Status Renderer::set_water(const WaterBody& water) {
         std::size_t waves = water.waves().size();
         for (const SceneLake& lake : impl_->scene.lakes) waves += lake.body.waves().size();
         vkDeviceWaitIdle(impl_->ctx().device);
-        if (auto st = impl_->size_slots(1 + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1); !st) return st;
+        if (auto st = impl_->size_slots(1 + detail::kOceanRings + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1); !st) return st;
     }
     impl_->scene.ocean = water;
     return {};
