@@ -30,9 +30,19 @@ vec3 world_from_depth(vec2 uv, float depth) {
     return p.xyz / p.w;
 }
 
+// The surface a pixel covers: its footprint on the water, stretched along the view at
+// grazing angles (m). Detail shorter than a few footprints cannot be drawn: it goes into
+// the slope variance instead (LEAN-style), which widens the sun's glitter and leaves
+// the averaged reflection, as the supersampled picture shows, instead of aliasing.
+float pixel_footprint(vec3 v) { return vertex_spacing(length(frame.camera.xyz - world_pos)) / 3.0 / max(v.y, 0.05); }
+// How much of a detail of wavelength `lambda` a pixel resolves: all from 4 footprints up,
+// none under 2.
+float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
+
 // Normal detail: the slope of the waves faded out of the geometry, then ripples (the
-// ocean's or a lake's) or a river's flow-mapped detail carried by its current.
-vec3 detail_normal(GpuBodyDraw d) {
+// ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
+// pixel cannot resolve adds to `variance` (slope variance, per axis).
+vec3 detail_normal(GpuBodyDraw d, float footprint, inout float variance) {
     SurfaceSums faded = surface_zero();
     bool river = uint(d.body.x) == kBodyRiver;
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
@@ -40,11 +50,22 @@ vec3 detail_normal(GpuBodyDraw d) {
         GpuWave w = waves[i];
         float missing = 1.0 - wave_lod_fade(w.steep_omega.w, spacing);
         if (missing <= 0.0) continue;
+        float drawn = resolved(w.steep_omega.w, footprint);
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
-        add_wave(faded, kvec, missing * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
+        float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
+        variance += missing * (1.0 - drawn) * 0.5 * slope_amplitude * slope_amplitude;
+        add_wave(faded, kvec, missing * drawn * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
     vec2 slope = faded.slope;
-    if (!river) slope += ripple_slope(rest_xz, d.ripple, d.ripple_offset);
+    if (!river && d.ripple.x > 0.0) {
+        // Ripple octaves: as slope where resolved, as variance where not.
+        for (int o = 1; o <= int(d.ripple.z); ++o) {
+            float drawn = resolved(1.0 / (float(o) * d.ripple.y), footprint);
+            float octave_slope = d.ripple.x * d.ripple.y;  // (amplitude / o) * (o / wavelength)
+            variance += (1.0 - drawn) * 0.5 * octave_slope * octave_slope;
+        }
+        slope += resolved(1.0 / d.ripple.y, footprint) * ripple_slope(rest_xz, d.ripple, d.ripple_offset);
+    }
     if (river && d.flow.params.z > 0.0) slope += flow_detail_slope(rest_xz - d.grid.xy, current, d.flow);
     vec3 n = normalize(geo_normal);
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
@@ -58,7 +79,9 @@ void main() {
     vec3 to_camera = frame.camera.xyz - world_pos;
     float distance = length(to_camera);
     vec3 v = to_camera / distance;
-    vec3 n = detail_normal(d);
+    float footprint = pixel_footprint(v);
+    float variance = 0.0;
+    vec3 n = detail_normal(d, footprint, variance);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
@@ -85,6 +108,7 @@ void main() {
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
     vec3 reflected = sky_color(r);
+    bool reflects_scene = false;  // the screen-space march hit the terrain
     if (has_scene) {
         vec3 p = world_pos;
         float step_len = max(distance * 0.02, 0.5);
@@ -103,6 +127,7 @@ void main() {
                 if (length(hit - p) < step_len * 2.0) {
                     float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
                     reflected = mix(reflected, from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
+                    reflects_scene = edge > 0.0;
                 }
                 break;
             }
@@ -111,8 +136,28 @@ void main() {
 
     float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
     vec3 color = mix(refracted, reflected, fresnel);
+    if (variance > 1e-5 && !reflects_scene) {
+        // The sky's reflection averaged over the unresolved slopes (four normals one
+        // standard deviation off the mean): Fresnel is far from linear at grazing angles.
+        float sigma = sqrt(variance);
+        vec3 sky_sum = vec3(0.0);
+        float fresnel_sum = 0.0;
+        for (int s = 0; s < 4; ++s) {
+            vec2 off = sigma * vec2(s == 0 ? 1.0 : s == 1 ? -1.0 : 0.0, s == 2 ? 1.0 : s == 3 ? -1.0 : 0.0);
+            vec3 ns = normalize(n + vec3(-off.x, 0.0, -off.y));
+            float fs = 0.02 + 0.98 * pow(1.0 - max(dot(ns, v), 0.0), 5.0);
+            vec3 rs = reflect(-v, ns);
+            rs.y = abs(rs.y);
+            sky_sum += fs * sky_color(rs);
+            fresnel_sum += fs;
+        }
+        color = refracted * (1.0 - 0.25 * fresnel_sum) + 0.25 * sky_sum;
+    }
     vec3 h = normalize(frame.sun.xyz + v);
-    color += frame.sun.w * pow(max(dot(n, h), 0.0), 400.0) * vec3(2.4, 2.25, 2.0);
+    // Blinn-Phong sun glint widened by the unresolved slope variance; its energy is kept,
+    // so a rough far field shows a broad, dimmer glitter path instead of sparkle.
+    float shininess = 1.0 / (1.0 / 400.0 + variance);
+    color += frame.sun.w * (shininess / 400.0) * pow(max(dot(n, h), 0.0), shininess) * vec3(2.4, 2.25, 2.0);
 
     // Subsurface light through thin crests facing away from the sun.
     float crest = clamp(eta / max_eta, 0.0, 1.0);
@@ -132,7 +177,8 @@ void main() {
         foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
     }
     if (foam > 0.0) {
-        float grain = 0.55 + 0.45 * gradient_noise((rest_xz + frame.origin_mod.xy) * 0.75, 31u).x;
+        // The foam's grain (1.3 m) fades to its mean where a pixel cannot resolve it.
+        float grain = 0.55 + 0.45 * resolved(1.33, footprint) * gradient_noise((rest_xz + frame.origin_mod.xy) * 0.75, 31u).x;
         color = mix(color, vec3(0.92, 0.95, 0.96), clamp(foam * grain * 1.4, 0.0, 1.0));
     }
     color = apply_fog(color, distance, -v);
