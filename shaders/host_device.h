@@ -59,10 +59,10 @@ TW_CONST float kFlowNoisePeriod = 256.0f;
 TW_CONST float kFlowOffsetScale = 0.25f;
 TW_CONST uint kFlowStaggerSeed = 101u;
 
-// Crest foam from the horizontal map folding: 0 above a Jacobian of kFoamJacobianStart,
-// 1 at kFoamJacobianStart - kFoamJacobianWidth, smoothstep between.
-TW_CONST float kFoamJacobianStart = 0.75f;
-TW_CONST float kFoamJacobianWidth = 0.4f;
+// Crest foam from the horizontal map compressing (tidewater::crest_foam): a smoothstep
+// from 0 to 1 across the body's whitecap Jacobian J* (tidewater/whitecaps.hpp), over a
+// width of kFoamRampFraction * (1 - J*), so foam >= 1/2 exactly where J < J*.
+TW_CONST float kFoamRampFraction = 0.5f;
 
 // One Gerstner wave. Phases are not stored: the host reduces them in double
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
@@ -153,7 +153,7 @@ struct GpuBodyDraw {
     vec4 grid;        // xy: the river's or lake's grid corner relative to O (m); z: texel (m); w: its first texel in the river fields or body masks.
                       // An ocean ring: xy the corner and z the side of the square it leaves to the draw inside (m)
     vec4 river;       // x, y: grid texels along x and z; z: first river wave; w: river wave count
-    vec4 extra;       // x: unused; y: first patch in the patch list;
+    vec4 extra;       // x: whitecap Jacobian J* (crest_foam); y: first patch in the patch list;
                       // z: highest rest surface above the level (m); w: largest wave displacement (m)
     vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own)
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)

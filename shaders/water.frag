@@ -39,10 +39,54 @@ float pixel_footprint(vec3 v) { return vertex_spacing(length(frame.camera.xyz - 
 // none under 2.
 float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
 
+// The crest foam a pixel covers on average when waves it cannot resolve spread the
+// Jacobian by `sigma`: the curve of crest_foam (tidewater::crest_foam) widened about the
+// same midpoint J*, as a ramp convolved with that spread. sigma = 0 gives crest_foam.
+float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
+    float half_width = 0.5 * kFoamRampFraction * max(1.0 - whitecap_jacobian, 0.0);
+    float widened = sqrt(half_width * half_width + 3.5 * sigma * sigma);
+    if (widened <= 0.0) return j < whitecap_jacobian ? 1.0 : 0.0;
+    return smoothstep(whitecap_jacobian + widened, whitecap_jacobian - widened, j);
+}
+
+// Foam lace: 0 on the borders of 2.5 m cells (where bubbles gather between the holes
+// that open in decaying foam), rising to 1 at their centres (F2 - F1 of a cellular noise).
+float foam_lace(vec2 p) {
+    vec2 cell = floor(p), f = p - cell;
+    float f1 = 8.0, f2 = 8.0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            uint h = tw_hash(int(cell.x) + i, int(cell.y) + j, 53u);
+            vec2 site = vec2(i, j) + vec2(float(h & 0xffffu), float(h >> 16)) / 65535.0;
+            float dist = length(site - f);
+            if (dist < f1) { f2 = f1; f1 = dist; } else if (dist < f2) f2 = dist;
+        }
+    return clamp((f2 - f1) * 1.6, 0.0, 1.0);
+}
+
+// How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
+// solid; thinner foam opens into lace (foam_lace, broken up by a finer gradient noise)
+// that rides the water (rest coordinates move with the particles). Where the pixel
+// cannot resolve the lace its edge widens to the whole range and the cover tends to
+// `foam` itself, the area average: no sparkle far away.
+float foam_cover(float foam, vec2 xz, float footprint) {
+    float broad = resolved(8.0, footprint), coarse = resolved(2.5, footprint), fine = resolved(0.7, footprint);
+    // Warped so that the cells vary in size and shape; patches 8 m across stay solid or open.
+    vec2 p = xz * 0.4;
+    vec2 warp = vec2(gradient_noise(p * 0.5, 41u).x, gradient_noise(p * 0.5, 43u).x);
+    float n = 0.5 + broad * 0.3 * gradient_noise(xz * 0.12, 47u).x +
+              coarse * (0.6 * (foam_lace(p + 0.7 * warp) - 0.5) + 0.2 * fine * gradient_noise(xz * 1.4, 37u).x);
+    float edge = mix(0.5, 0.1, coarse);
+    // Thin lace lets some of the water through.
+    return smoothstep(0.0, 1.0, (foam - n) / (2.0 * edge) + 0.5) * mix(0.75, 1.0, foam);
+}
+
 // Normal detail: the slope of the waves faded out of the geometry, then ripples (the
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis).
-vec3 detail_normal(GpuBodyDraw d, float footprint, inout float variance) {
+// pixel cannot resolve adds to `variance` (slope variance, per axis). The faded waves
+// change the Jacobian too (to first order, by minus the trace of their m): the resolved
+// ones by `jacobian.x`, the unresolved ones with variance `jacobian.y`.
+vec3 detail_normal(GpuBodyDraw d, float footprint, inout float variance, inout vec2 jacobian) {
     SurfaceSums faded = surface_zero();
     bool river = uint(d.body.x) == kBodyRiver;
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
@@ -54,9 +98,12 @@ vec3 detail_normal(GpuBodyDraw d, float footprint, inout float variance) {
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
         float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
         variance += missing * (1.0 - drawn) * 0.5 * slope_amplitude * slope_amplitude;
+        float compression = w.steep_omega.x * slope_amplitude;  // Q k A
+        jacobian.y += missing * (1.0 - drawn) * 0.5 * compression * compression;
         add_wave(faded, kvec, missing * drawn * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
     vec2 slope = faded.slope;
+    jacobian.x -= faded.m.x + faded.m.z;
     if (!river && d.ripple.x > 0.0) {
         // Ripple octaves: as slope where resolved, as variance where not.
         for (int o = 1; o <= int(d.ripple.z); ++o) {
@@ -81,7 +128,8 @@ void main() {
     vec3 v = to_camera / distance;
     float footprint = pixel_footprint(v);
     float variance = 0.0;
-    vec3 n = detail_normal(d, footprint, variance);
+    vec2 jacobian_detail = vec2(0.0);
+    vec3 n = detail_normal(d, footprint, variance, jacobian_detail);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
@@ -164,11 +212,12 @@ void main() {
     float sss = pow(max(dot(v, -normalize(frame.sun.xyz + n * 0.5)), 0.0), 4.0) * crest;
     color += sss * vec3(0.06, 0.45, 0.38) * frame.sun.w;
 
-    // Foam where the surface compresses toward folding (Jacobian -> 0), where waves break,
-    // and in bands along the coast that run up the beach with the swash.
-    // Breaking foam rides the crests (and lingers thinly in the troughs).
+    // Foam: whitecaps where the crests compress past the body's whitecap Jacobian (set by
+    // the wind, Monahan's coverage), where waves break, and in bands along the coast that
+    // run up the beach with the swash. Breaking foam rides the crests (and lingers thinly
+    // in the troughs).
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
-    float foam = max(crest_foam(jacobian), shore_info.y * (0.25 + 0.75 * crest_band));
+    float foam = max(crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, sqrt(jacobian_detail.y)), shore_info.y * (0.25 + 0.75 * crest_band));
     // A fast current churns white water.
     foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
     if (d.shore.w > 0.0) {
@@ -177,9 +226,8 @@ void main() {
         foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
     }
     if (foam > 0.0) {
-        // The foam's grain (1.3 m) fades to its mean where a pixel cannot resolve it.
-        float grain = 0.55 + 0.45 * resolved(1.33, footprint) * gradient_noise((rest_xz + frame.origin_mod.xy) * 0.75, 31u).x;
-        color = mix(color, vec3(0.92, 0.95, 0.96), clamp(foam * grain * 1.4, 0.0, 1.0));
+        float cover = foam_cover(foam, rest_xz + frame.origin_mod.xy, footprint);
+        color = mix(color, vec3(0.92, 0.95, 0.96), cover);
     }
     color = apply_fog(color, distance, -v);
 

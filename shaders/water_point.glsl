@@ -54,9 +54,11 @@ vec3 surface_normal(SurfaceSums s) {
     return normalize(cross(vec3(j.y, s.slope.y, j.z), vec3(j.x, s.slope.x, j.y)));
 }
 
-// Foam from crests folding (tidewater::crest_foam).
-float crest_foam(float jacobian) {
-    return smoothstep(kFoamJacobianStart, kFoamJacobianStart - kFoamJacobianWidth, jacobian);
+// Foam from crests compressing across the body's whitecap Jacobian (tidewater::crest_foam).
+float crest_foam(float jacobian, float whitecap_jacobian) {
+    float half_width = 0.5 * kFoamRampFraction * max(1.0 - whitecap_jacobian, 0.0);
+    if (half_width <= 0.0) return jacobian < whitecap_jacobian ? 1.0 : 0.0;
+    return smoothstep(whitecap_jacobian + half_width, whitecap_jacobian - half_width, jacobian);
 }
 
 // Render LOD, seed 000's "fewer waves far away": a wave keeps full amplitude while its

@@ -236,6 +236,33 @@ TEST_F(RenderTest, FoamOnSteepCrestsOnly) {
     EXPECT_LT(white_fraction(calm), 0.001);
 }
 
+// Open-sea whitecaps cover Monahan's share: looking straight down from 300 m on
+// ocean_rolling (12 m/s: W = 1.84%), the white pixels over four instants and places
+// cover within a factor of 2 of W; the sun is low behind, so no glint is counted.
+TEST_F(RenderTest, OpenSeaWhitecapsCoverMonahansShare) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "ocean": "ocean_rolling"})");
+    const double expected = monahan_whitecap_fraction(scene.ocean.profile().spectrum->wind_speed);
+    std::size_t white = 0, total = 0;
+    for (int k = 0; k < 4; ++k) {
+        render::FrameInfo frame;
+        frame.camera.position = {400.0 * k, 300.0, -250.0 * k};
+        frame.camera.target = frame.camera.position + glm::dvec3(0.0, -300.0, 5.0);  // 1 degree off the vertical
+        frame.camera.fov_y_deg = 60.0;
+        frame.sun_direction = glm::normalize(glm::dvec3(0.0, 0.35, -1.0));
+        frame.time = 4.0 + 7.3 * k;
+        const auto img = render(scene, frame, 640, 360);
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x, ++total) {
+                const Rgb c = test::pixel(img, x, y);
+                white += c.r > 0.6 && c.g > 0.6 && c.b > 0.6;
+            }
+    }
+    const double coverage = static_cast<double>(white) / static_cast<double>(total);
+    std::printf("open-sea whitecap coverage %.4f against Monahan's %.4f (ratio %.2f)\n", coverage, expected, coverage / expected);
+    EXPECT_GT(coverage, 0.5 * expected);
+    EXPECT_LT(coverage, 2.0 * expected);
+}
+
 // Stored references for the default scene and a few views: mean difference under 2%
 // and 99% of pixels within 10% (lavapipe rounding differs between LLVM builds).
 // TIDEWATER_UPDATE_REFERENCES=1 rewrites them.
@@ -474,10 +501,10 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
 // The far field does not sparkle: in the 30 rows under the horizon, a 640 x 360 frame of
 // the open sea against the same frame rendered at 4x and box-filtered (mean per
 // channel), and two frames 1/60 s apart against the supersampled pair. From 400 m the
-// difference is within 0.02 (0.0076; 0.026 unfiltered); from 12 m it is 0.037 (0.063
-// unfiltered), short of 0.02: there the 4x frame's finer tessellation keeps waves in its
-// geometry that the 1x frame can only shade, so the bound guards what the filtering
-// reached. From both heights the frame-to-frame change is at most twice the
+// difference is within 0.02 (0.0073; 0.026 unfiltered); from 12 m it is 0.043 (0.063
+// unfiltered; 0.037 of it without the whitecaps), short of 0.02: there the 4x frame's
+// finer tessellation keeps waves in its geometry that the 1x frame can only shade, so
+// the bound guards what the filtering reached. From both heights the frame-to-frame change is at most twice the
 // supersampled pair's (it was three times from 12 m unfiltered).
 TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
     auto scene = test::baked(default_scene());

@@ -47,7 +47,7 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
                   double* heights, const QueryOptions& options) {
     try {
         const detail::PreparedWaves<float> waves =
-            detail::prepare_waves<float>(body.waves(), body.local_time(time), body.level());
+            detail::prepare_body_waves<float>(body, time);
         detail::KernelInput in;
         in.waves = &waves;
         if (const auto& shore = body.shore(); shore && !shore->trivial()) in.shore = shore.get();

@@ -1,6 +1,7 @@
 #include "tidewater/water_body.hpp"
 
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/whitecaps.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -27,6 +28,9 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     body.waves_ = std::move(waves).value();
     body.ripples_ = RippleField(profile.ripples);
     body.level_ = level;
+    body.whitecap_jacobian_ = profile.spectrum
+                                  ? tidewater::whitecap_jacobian(body.waves_, monahan_whitecap_fraction(profile.spectrum->wind_speed))
+                                  : kDefaultWhitecapJacobian;
     return body;
 }
 

@@ -271,6 +271,8 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     if (!st) return st;
 
     const double level = river_mode ? river->river->mouth_level : still.level();
+    // As the CPU: the still body's whitecaps where its waves join, else the river's.
+    const double whitecap = river_mode && !river->still ? river->body->whitecap_jacobian() : still.whitecap_jacobian();
     const auto* r = static_cast<const gpu::GpuQueryResult*>(results.mapped());
     for (std::size_t i = 0; i < query_points.size(); ++i) {
         SurfacePoint& o = out[i];
@@ -285,7 +287,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         o.shore_distance = model ? static_cast<double>(r[i].shore.y) : kDeepWater;
         const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
         o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
-        o.foam = std::max(model ? static_cast<double>(r[i].shore.z) : 0.0, crest_foam(o.jacobian));  // as detail::surface_foam
+        o.foam = std::max(model ? static_cast<double>(r[i].shore.z) : 0.0, crest_foam(o.jacobian, whitecap));  // as detail::surface_foam
         if (!flow.empty()) flow[i] = r[i].flow;
     }
     return {};

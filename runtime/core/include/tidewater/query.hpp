@@ -41,7 +41,7 @@ struct SurfacePoint {
     double shore_distance = kDeepWater;
     /// The surface stands above the terrain at the query point: height > level - depth.
     bool wet = true;
-    /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian)). The water shader
+    /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian, the body's J*)). The water shader
     /// adds visual detail on top (foam riding the crests, swash bands along the coast).
     double foam = 0.0;
     int iterations = 0;              ///< Newton evaluations used.
@@ -70,9 +70,11 @@ Status query_heights(const WaterBody& body, double time, std::span<const glm::dv
 /// Single-point convenience wrapper of query_surface.
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
 
-/// Foam from crests folding: 0 above a Jacobian of 0.75, 1 at 0.35, smoothstep between
-/// (the water shader uses the same curve).
-double crest_foam(double jacobian);
+/// Foam from crests compressing: a smoothstep from 0 to 1 across the body's whitecap
+/// Jacobian J* (WaterBody::whitecap_jacobian, tidewater/whitecaps.hpp) over a width of
+/// (1 - J*) / 2, so that foam >= 1/2 exactly where J < J* (the water shader uses the
+/// same curve).
+double crest_foam(double jacobian, double whitecap_jacobian);
 
 /// Name of the SIMD kernel queries use on this machine ("avx2+fma", "sse2", ...).
 const char* query_kernel_name();

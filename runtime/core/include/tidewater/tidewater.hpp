@@ -16,6 +16,7 @@
 #include "tidewater/terrain.hpp"
 #include "tidewater/version.hpp"
 #include "tidewater/water_body.hpp"
+#include "tidewater/whitecaps.hpp"
 #include "tidewater/waves.hpp"
 #include "tidewater/world_query.hpp"
 #include "tidewater/drift.hpp"

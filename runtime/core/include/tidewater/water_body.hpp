@@ -14,6 +14,7 @@
 #include "tidewater/ripples.hpp"
 #include "tidewater/spectrum.hpp"
 #include "tidewater/waves.hpp"
+#include "tidewater/whitecaps.hpp"
 
 namespace tidewater {
 
@@ -44,6 +45,10 @@ public:
     const WaveSet& waves() const { return waves_; }
     const RippleField& ripples() const { return ripples_; }
     double level() const { return level_; }  ///< Rest water level (world y), m.
+    /// The Jacobian below which crests turn to whitecaps (tidewater/whitecaps.hpp): from
+    /// the spectrum's wind by Monahan's coverage when the waves come from a spectrum,
+    /// kDefaultWhitecapJacobian when they were authored one by one.
+    double whitecap_jacobian() const { return whitecap_jacobian_; }
     double time_offset() const { return profile_.time_offset; }
     /// The time the waves see for a given clock time.
     double local_time(double clock_time) const { return clock_time + profile_.time_offset; }
@@ -59,6 +64,7 @@ private:
     WaveSet waves_;
     RippleField ripples_;
     double level_ = 0.0;
+    double whitecap_jacobian_ = kDefaultWhitecapJacobian;
     std::shared_ptr<const ShoreWaves> shore_;
 };
 

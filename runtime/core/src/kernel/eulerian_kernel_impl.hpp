@@ -128,7 +128,7 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, con
             o.depth = shore ? depth[l] : kDeepWater;
             o.shore_distance = shore ? distance[l] : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
-            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l]);
+            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], in.waves->whitecap_jacobian);
         }
     }
 }

@@ -40,8 +40,8 @@ using RiverSolveFn = void (*)(const RiverInput<float>& in, const glm::dvec2* poi
 using SolveFn = void (*)(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full,
                          double* heights);
 
-/// The foam a query reports: max(breaking, crest_foam(jacobian)).
-double surface_foam(double breaking, double jacobian);
+/// The foam a query reports: max(breaking, crest_foam(jacobian, whitecap_jacobian)).
+double surface_foam(double breaking, double jacobian, double whitecap_jacobian);
 
 namespace kernel_sse2 {
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights);

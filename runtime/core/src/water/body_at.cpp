@@ -101,12 +101,13 @@ RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake
     const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
     const RiverBake& baked = bodies.rivers[static_cast<std::size_t>(key.river)];
     river_waves = prepare_river_waves<Scalar>(river.body.waves(), river.body.local_time(time), baked.mouth_level, baked.mean_speed);
+    river_waves.whitecap_jacobian = river.body.whitecap_jacobian();
     RiverInput<Scalar> in;
     in.river = &baked;
     in.river_waves = &river_waves;
     if (key.plume) {
         const WaterBody& still = still_body(scene, baked);
-        still_waves = prepare_waves<Scalar>(still.waves(), still.local_time(time), still.level());
+        still_waves = prepare_body_waves<Scalar>(still, time);
         in.still_waves = &still_waves;
         if (const auto& shore = still.shore(); shore && !shore->trivial()) in.still_shore = shore.get();
     }

@@ -6,12 +6,15 @@
 
 namespace tidewater {
 
-double crest_foam(double jacobian) {
-    const double start = static_cast<double>(gpu::kFoamJacobianStart), width = static_cast<double>(gpu::kFoamJacobianWidth);
-    const double t = std::clamp((start - jacobian) / width, 0.0, 1.0);
+double crest_foam(double jacobian, double whitecap_jacobian) {
+    const double half_width = 0.5 * static_cast<double>(gpu::kFoamRampFraction) * std::max(1.0 - whitecap_jacobian, 0.0);
+    if (!(half_width > 0.0)) return jacobian < whitecap_jacobian ? 1.0 : 0.0;
+    const double t = std::clamp((whitecap_jacobian + half_width - jacobian) / (2.0 * half_width), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
 }
 
-double detail::surface_foam(double breaking, double jacobian) { return std::max(breaking, crest_foam(jacobian)); }
+double detail::surface_foam(double breaking, double jacobian, double whitecap_jacobian) {
+    return std::max(breaking, crest_foam(jacobian, whitecap_jacobian));
+}
 
 }  // namespace tidewater

@@ -54,6 +54,16 @@ template PreparedWaves<float> prepare_waves<float>(const WaveSet&, double, doubl
 template PreparedWaves<double> prepare_waves<double>(const WaveSet&, double, double);
 
 template <typename Scalar>
+PreparedWaves<Scalar> prepare_body_waves(const WaterBody& body, double time) {
+    PreparedWaves<Scalar> p = prepare_waves<Scalar>(body.waves(), body.local_time(time), body.level());
+    p.whitecap_jacobian = body.whitecap_jacobian();
+    return p;
+}
+
+template PreparedWaves<float> prepare_body_waves<float>(const WaterBody&, double);
+template PreparedWaves<double> prepare_body_waves<double>(const WaterBody&, double);
+
+template <typename Scalar>
 PreparedWaves<Scalar> prepare_river_waves(const WaveSet& set, double local_time, double level, double mean_speed) {
     PreparedWaves<Scalar> p = prepare_waves<Scalar>(set, local_time, level);
     for (std::size_t i = 0; i < p.count; ++i) p.offset[i] = wrap_angle(p.offset[i] - p.kx[i] * mean_speed * local_time);

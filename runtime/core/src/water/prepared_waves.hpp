@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "tidewater/detail/water_point.hpp"
+#include "tidewater/water_body.hpp"
 #include "tidewater/waves.hpp"
+#include "tidewater/whitecaps.hpp"
 
 namespace tidewater::detail {
 
@@ -24,10 +26,15 @@ struct PreparedWaves {
     double tolerance = 0.0;   ///< newton_tolerance(max_offset), m
     double radius = 0.0;      ///< newton_radius(max_offset), m
     double level = 0.0;       ///< rest water level added to heights, m
+    double whitecap_jacobian = kDefaultWhitecapJacobian;  ///< the body's J*, where its crest foam turns on
 };
 
 template <typename Scalar>
 PreparedWaves<Scalar> prepare_waves(const WaveSet& set, double local_time, double level);
+
+/// A body's waves at clock time `time`: its local time, level and whitecap Jacobian.
+template <typename Scalar>
+PreparedWaves<Scalar> prepare_body_waves(const WaterBody& body, double time);
 
 /// A river's waves: wavevectors in its channel frame (k_s along downstream, k_n across,
 /// left > 0) and phases that ride its mean speed U: offset = phase - (omega + k_s U) t,

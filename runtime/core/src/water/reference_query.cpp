@@ -16,7 +16,7 @@
 namespace tidewater::reference {
 
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
-    const auto waves = detail::prepare_waves<double>(body.waves(), body.local_time(time), body.level());
+    const auto waves = detail::prepare_body_waves<double>(body, time);
     std::array<double, kMaxWaves> base{};
     detail::base_phases(waves, point.x, point.y, base.data(), 1);
     SurfacePoint o;
@@ -42,7 +42,7 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     o.jacobian = p.jacobian;
     o.iterations = static_cast<int>(r.iterations);
     o.converged = r.converged != 0.0;
-    o.foam = detail::surface_foam(breaking, p.jacobian);
+    o.foam = detail::surface_foam(breaking, p.jacobian, waves.whitecap_jacobian);
     return o;
 }
 
