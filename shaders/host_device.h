@@ -126,7 +126,8 @@ struct GpuFrame {
     vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
     vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
     vec4 viewport;           // xy: size (px); zw: 1 / size
-    vec4 options;            // x: has scene copy (0/1); y: the target wants linear colour (sRGB or float formats, 0/1); zw: unused
+    vec4 options;            // x: has scene copy (0/1); y: the target wants linear colour (sRGB or float formats, 0/1);
+                             // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
     vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: unused
 };

@@ -1,6 +1,9 @@
 #version 450
-// Terrain shading: sand, grass and rock by height and slope, wet sand at the
-// waterline, animated Voronoi caustics on submerged ground.
+// Terrain shading: materials by height, slope and wetness (sand, wet sand where the
+// swash runs, grass, rock on steep ground), detail normals and albedo variation that
+// fade out where a pixel cannot resolve them, animated Voronoi caustics on submerged
+// ground, and the same fog as the water. Lighting is a plain Lambert sun plus sky
+// ambient: a host with its own lighting replaces this shader (docs/embedding.md).
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
@@ -23,38 +26,90 @@ float voronoi(vec2 p, float t) {
     return best;
 }
 
+// How much of a detail of size `lambda` (m) a pixel of footprint `footprint` resolves:
+// all from 4 footprints up, none under 2 (as the water's filtering).
+float terrain_resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
+
+// Three octaves of gradient noise (40 m, 9 m, 2 m), each faded to its mean where
+// unresolved: x the value (about -1..1), yz its slope per metre (for detail normals).
+vec3 ground_detail(vec2 xz, float footprint) {
+    vec3 sum = vec3(0.0);
+    float size = 40.0, weight = 0.55;
+    for (int o = 0; o < 3; ++o) {
+        vec3 n = gradient_noise(xz / size, 71u + uint(o));
+        sum += terrain_resolved(size, footprint) * weight * vec3(n.x, n.yz / size);
+        size *= 0.22;
+        weight *= 0.45;
+    }
+    return sum;
+}
+
 void main() {
-    vec3 n = normalize(normal);
+    vec3 geo_n = normalize(normal);
     float h = world_pos.y;
     float level = frame.params.x;
-    float slope = 1.0 - n.y;
     uint view = uint(frame.params.w);
+    vec3 to_camera = frame.camera.xyz - world_pos;
+    float distance = length(to_camera);
+    vec3 v = to_camera / distance;
+    // The pixel's footprint on the ground, stretched at grazing angles.
+    // (A pixel spans distance / (3 * tessellation scale) metres, see GpuFrame.params.)
+    float footprint = distance / (3.0 * frame.params.z) / max(abs(dot(v, geo_n)), 0.1);
+    vec2 xz = world_pos.xz + frame.origin_mod.xy;
+    vec3 detail = ground_detail(xz, footprint);
+    float slope = 1.0 - geo_n.y;
 
-    vec3 sand = vec3(0.80, 0.72, 0.52);
-    vec3 wet = vec3(0.48, 0.42, 0.31);
-    vec3 grass = vec3(0.28, 0.46, 0.18);
-    vec3 rock = vec3(0.45, 0.43, 0.41);
-    vec3 base = mix(sand, grass, smoothstep(level + 2.0, level + 6.0, h));
-    base = mix(base, rock, smoothstep(0.25, 0.45, slope));
-    base = mix(base, wet, smoothstep(level + 1.2, level + 0.2, h) * (1.0 - smoothstep(0.35, 0.5, slope)));
+    // Materials. Boundaries wander with the broad noise so no contour line shows.
+    vec3 sand = vec3(0.80, 0.72, 0.52) * (1.0 + 0.12 * detail.x);
+    vec3 wet_sand = vec3(0.56, 0.49, 0.36);
+    vec3 grass = mix(vec3(0.26, 0.44, 0.16), vec3(0.42, 0.47, 0.22), 0.5 + 0.5 * detail.x);  // lush to dry
+    vec3 rock = vec3(0.44, 0.42, 0.40) * (1.0 + 0.25 * detail.x);
+    float rise = h - level;
+    vec3 base = mix(sand, grass, smoothstep(2.0, 6.0, rise + 2.5 * detail.x));
+    // Rock where the ground is steep: cliffs, with horizontal strata.
+    float rockiness = smoothstep(0.2, 0.34, slope + 0.08 * detail.x);
+    float strata = 0.85 + 0.15 * sin(h * 2.1 + 3.0 * detail.x) * terrain_resolved(3.0, footprint);
+    base = mix(base, rock * strata, rockiness);
 
+    // Wet sand: soaked up to the swash's run-up R, drying over the next R/2, and a wet
+    // film under the swash, whose top moves with the waves' period (the phase wanders
+    // along the coast).
+    float runup = frame.options.z;
+    float swash_phase = frame.options.w * frame.camera.w - 6.2831 * gradient_noise(xz / 60.0, 79u).x;
+    float swash_top = runup * (0.55 + 0.45 * sin(swash_phase));
+    float soaked = runup > 0.0 ? smoothstep(1.5 * runup, runup, rise) : 0.0;
+    float film = runup > 0.0 ? smoothstep(swash_top + 0.1 * runup, swash_top - 0.1 * runup, rise) : 0.0;
+    float wetness = max(0.7 * soaked, film) * (1.0 - rockiness) * smoothstep(-1.5, -0.5, rise);
+    base = mix(base, wet_sand, wetness);
+
+    // Detail normals: the noise's slope tilts the mesh normal (faded where unresolved).
+    vec3 n = normalize(geo_n - vec3(detail.y, 0.0, detail.z) * mix(1.0, 2.5, rockiness));
     float diffuse = max(dot(n, frame.sun.xyz), 0.0);
-    vec3 color = base * (0.35 + 0.75 * diffuse);
+    float sky_light = 0.5 + 0.5 * n.y;
+    vec3 color = base * (0.22 + 0.18 * sky_light + 0.75 * diffuse);
+    // A wet film reflects the sky and the sun.
+    if (film > 0.0) {
+        vec3 r = reflect(-v, n);
+        r.y = abs(r.y);
+        float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
+        color = mix(color, sky_color(r), film * fresnel * 0.8);
+    }
     float depth = level - h;
     if (depth > 0.0) {
         // Caustics fade with depth; refraction and absorption are applied by the water pass.
         float t = frame.camera.w;
-        vec2 q = (world_pos.xz + frame.origin_mod.xy) * 0.375;  // period 256 / 0.375 divides 2048 m
+        vec2 q = xz * 0.375;  // period 256 / 0.375 divides 2048 m
         float c = voronoi(q, t) * voronoi(q + 7.3, t * 1.3);
-        // Troughs bare the sand just below the mean level: no caustics in the top half metre.
-        float caustic = pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6 * exp(-depth * 0.18) * diffuse * smoothstep(0.5, 2.0, depth);
+        // Troughs bare the sand just below the mean level: no caustics in the top half
+        // metre. Unresolved caustics fade to their mean.
+        float pattern = mix(0.1, pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6, terrain_resolved(2.7, footprint));
+        float caustic = pattern * exp(-depth * 0.18) * diffuse * smoothstep(0.5, 2.0, depth);
         color += caustic * vec3(0.9, 1.0, 0.95);
     }
     if (view == kViewHeight) color = heat_color((h - level + 40.0) / 80.0);
     if (view == kViewDepth) color = depth > 0.0 ? heat_color(depth / 40.0) : vec3(0.2);
-    if (view == kViewNormals) color = n * 0.5 + 0.5;
+    if (view == kViewNormals) color = geo_n * 0.5 + 0.5;
     if (view == kViewWireframe) color = vec3(0.1, 0.25, 0.08);
-    vec3 ray = world_pos - frame.camera.xyz;
-    if (view == kViewShaded) color = apply_fog(color, length(ray), normalize(ray));
+    if (view == kViewShaded) color = apply_fog(color, distance, -v);
     out_color = target_color(color);
 }

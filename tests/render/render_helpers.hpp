@@ -24,7 +24,6 @@ inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
     return {img.pixels[i] / 255.0, img.pixels[i + 1] / 255.0, img.pixels[i + 2] / 255.0};
 }
 
-/// Mean colour of a (2r+1)^2 block around (x, y).
 /// Mean |a - b| over the colour channels of two pictures of one size, 0..1.
 inline double mean_difference(const render::RgbaImage& a, const render::RgbaImage& b) {
     double sum = 0.0;
@@ -33,6 +32,7 @@ inline double mean_difference(const render::RgbaImage& a, const render::RgbaImag
     return sum / static_cast<double>(a.pixels.size() / 4 * 3) / 255.0;
 }
 
+/// Mean colour of a (2r+1)^2 block around (x, y).
 inline Rgb block(const render::RgbaImage& img, int x, int y, int r = 3) {
     Rgb sum;
     int n = 0;

@@ -236,6 +236,45 @@ TEST_F(RenderTest, FoamOnSteepCrestsOnly) {
     EXPECT_LT(white_fraction(calm), 0.001);
 }
 
+// The terrain reads as land: rock where the ground is steep, green grass on gentle
+// slopes above the beach, and sand the swash has wet darker than the dry sand above it,
+// the wet band's edge moving with the waves.
+TEST_F(RenderTest, TerrainMaterialsFollowSlopeHeightAndWetness) {
+    auto look_at = [&](const Scene& scene, glm::dvec3 at, double time) {
+        render::FrameInfo frame;
+        frame.camera.position = at + glm::dvec3(-30.0, 25.0, 0.5);
+        frame.camera.target = at;
+        frame.camera.fov_y_deg = 20.0;
+        frame.sun_direction = {-0.4, 0.8, 0.3};
+        frame.time = time;
+        return render(scene, frame);
+    };
+    auto saturation = [](Rgb c) { return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}); };
+    auto luminance = [](Rgb c) { return 0.3 * c.r + 0.6 * c.g + 0.1 * c.b; };
+    const std::string ocean = R"("ocean": {"waves": [{"direction": 0, "wavelength": 60, "amplitude": 0.2, "steepness": 0.5}]}, "shore": {"enabled": false})";
+    // Gentle (slope 0.05) and steep (45 degrees) ground 20 m above the sea.
+    const Scene gentle = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [0.05, 0]}}, )" + ocean + "}");
+    const Scene steep = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [1.0, 0]}}, )" + ocean + "}");
+    const Rgb grass = test::block(look_at(gentle, {0.0, 20.0, 0.0}, 0.0), 160, 90, 20);
+    const Rgb rock = test::block(look_at(steep, {0.0, 20.0, 0.0}, 0.0), 160, 90, 20);
+    EXPECT_GT(grass.g, grass.r + 0.05) << "grass is green";
+    EXPECT_LT(saturation(rock), 0.5 * saturation(grass)) << "cliffs are grey rock";
+    // A beach rising 2 cm per metre from the sea at x = 0 under a 0.1 m swell 150 m long:
+    // the swash runs up R2% = 0.043 sqrt(Hs L0) = 0.28 m (Hs = 0.28 m), above the 0.1 m
+    // crests; the sand is soaked up to R and 3 m up it is dry.
+    const Scene beach = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 0, "slope": [0.02, 0]}},
+        "ocean": {"waves": [{"direction": 0, "wavelength": 150, "amplitude": 0.1, "steepness": 0.5}]}, "shore": {"enabled": false}})");
+    const Rgb wet = test::block(look_at(beach, {10.0, 0.2, 0.0}, 0.0), 160, 90, 10);
+    const Rgb dry = test::block(look_at(beach, {150.0, 3.0, 0.0}, 0.0), 160, 90, 10);
+    EXPECT_GT(dry.r, dry.b + 0.1) << "dry sand is sand-coloured";
+    EXPECT_LT(luminance(wet), 0.85 * luminance(dry)) << "wet sand is darker";
+    // The wet film's top moves with the waves' period (9.8 s: half of it apart).
+    const double moved = test::mean_difference(look_at(beach, {8.0, 0.16, 0.0}, 0.0), look_at(beach, {8.0, 0.16, 0.0}, 4.9));
+    EXPECT_GT(moved, 0.005) << "the swash line moves";
+    std::printf("grass saturation %.3f, rock %.3f; wet sand luminance %.3f of dry; swash frames differ by %.4f\n", saturation(grass),
+                saturation(rock), luminance(wet) / luminance(dry), moved);
+}
+
 // Open-sea whitecaps cover Monahan's share: looking straight down from 300 m on
 // ocean_rolling (12 m/s: W = 1.84%), the white pixels over four instants and places
 // cover within a factor of 2 of W; the sun is low behind, so no glint is counted.

@@ -49,6 +49,18 @@ Status validate_camera(const Camera& c) {
     return {};
 }
 
+SwashBand swash_band(const WaveSet& waves) {
+    SwashBand band;
+    const Wave* peak = nullptr;
+    for (const Wave& w : waves.waves())
+        if (!peak || w.amplitude > peak->amplitude) peak = &w;
+    if (!peak || !(peak->k > 0.0)) return band;
+    // Stockdon et al. (2006), dissipative beaches: R2% = 0.043 sqrt(H0 L0).
+    band.runup = 0.043 * std::sqrt(waves.significant_wave_height() * 2.0 * kPi / peak->k);
+    band.omega = peak->omega;
+    return band;
+}
+
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
                      const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output) {
     FramePlan plan;
@@ -81,7 +93,9 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
 
-    f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, linear_output ? 1.0f : 0.0f, 0.0f, 0.0f);
+    const SwashBand swash = swash_band(water.waves());
+    f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, linear_output ? 1.0f : 0.0f, static_cast<float>(swash.runup),
+                          static_cast<float>(swash.omega));
     f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
                              0.0f, 0.0f);
 

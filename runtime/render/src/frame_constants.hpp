@@ -48,13 +48,23 @@ std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, gl
 /// mean speed (m/s), as the shaders read them (river_water.glsl).
 std::vector<gpu::GpuRiverWave> gpu_river_waves(const WaterBody& preset, double time, double mean_speed);
 
-/// A body's flow-detail settings at clock time `local_time` for shaders whose positions
 /// A body's ripples for one frame (GpuBodyDraw::ripple and ripple_offset), its drift at
 /// `time` and the origin reduced modulo the noise period.
 void gpu_ripples(const WaterBody& body, double time, glm::dvec2 origin, glm::vec4& ripple, glm::vec4& offset);
 
+/// A body's flow-detail settings at clock time `local_time` for shaders whose positions
 /// are relative to world xz `zero` (the render origin, or a river grid's corner).
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero);
+
+/// How far the swash runs up a beach and how fast, for the terrain's wet sand: the run-up
+/// exceeded by 2% of the waves on a dissipative beach, R2% = 0.043 sqrt(Hs L0) (Stockdon
+/// et al. 2006; L0 the deep-water wavelength of the most energetic wave), and that
+/// wave's angular frequency. No waves: no swash.
+struct SwashBand {
+    double runup = 0.0;  ///< m above the level
+    double omega = 0.0;  ///< rad/s
+};
+SwashBand swash_band(const WaveSet& waves);
 
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
                      const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output);
