@@ -18,13 +18,41 @@ float terrain_height_at(vec2 xz) {
     return textureLod(terrain_height, uv, 0.0).r;
 }
 
-// Sky radiance toward direction d (y up): a zenith-to-horizon gradient plus the sun.
+vec3 srgb_to_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+vec3 linear_to_srgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+// The Perez function of the Preetham sky for one of Y, x, y (sky_model.hpp).
+float perez(vec4 abcd, float e, float cos_theta, float gamma) {
+    float cos_gamma = cos(gamma);
+    return (1.0 + abcd.x * exp(abcd.y / max(cos_theta, 0.01))) * (1.0 + abcd.z * exp(abcd.w * gamma) + e * cos_gamma * cos_gamma);
+}
+
+// Sky colour toward direction d (y up), display-referred: the Preetham sky's luminance
+// (relative to the zenith's) and chromaticity in linear sRGB, white-balanced, exposed
+// with a soft shoulder that keeps the hue, saturated as a camera renders daylight
+// (frame_constants.cpp), sRGB-encoded; plus the sun's disc and glow. Below the horizon
+// it darkens toward the ground's haze.
 vec3 sky_color(vec3 d) {
-    float up = clamp(d.y, -0.2, 1.0);
-    vec3 zenith = vec3(0.16, 0.36, 0.72);
-    vec3 horizon = vec3(0.72, 0.82, 0.92);
-    vec3 sky = mix(horizon, zenith, pow(max(up, 0.0), 0.45));
-    if (up < 0.0) sky = mix(horizon, vec3(0.35, 0.42, 0.5), -up * 5.0);
+    vec3 up_dir = normalize(vec3(d.x, max(d.y, 0.0), d.z));
+    vec3 sun = normalize(vec3(frame.sun.x, max(frame.sun.y, 0.0), frame.sun.z));
+    float gamma = acos(clamp(dot(up_dir, sun), -1.0, 1.0));
+    float Y = frame.sky_zenith.x * perez(frame.sky_Y, frame.sky_e.x, up_dir.y, gamma);
+    float x = frame.sky_zenith.y * perez(frame.sky_x, frame.sky_e.y, up_dir.y, gamma);
+    float y = max(frame.sky_zenith.z * perez(frame.sky_y, frame.sky_e.z, up_dir.y, gamma), 1e-4);
+    vec3 XYZ = vec3(x * Y / y, Y, (1.0 - x - y) * Y / y);
+    vec3 rgb = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) * XYZ, vec3(0.0));
+    rgb *= frame.sky_balance.xyz;
+    float luminance = max(dot(rgb, vec3(0.2126, 0.7152, 0.0722)), 1e-6);
+    float shown = 1.0 - exp(-frame.sky_e.w * luminance);
+    rgb *= shown / luminance;
+    vec3 sky = linear_to_srgb(max(mix(vec3(shown), rgb, frame.sky_zenith.w), vec3(0.0)));
+    if (d.y < 0.0) sky = mix(sky, vec3(0.35, 0.42, 0.5), clamp(-d.y * 5.0, 0.0, 1.0));
     float s = max(dot(d, frame.sun.xyz), 0.0);
     sky += frame.sun.w * (pow(s, 900.0) * vec3(8.0, 7.0, 5.5) + pow(s, 12.0) * vec3(0.25, 0.2, 0.12));
     return sky;
@@ -44,14 +72,6 @@ vec3 heat_color(float t) {
 // The shading works in display-referred sRGB values. A target that wants linear colour
 // (an sRGB-encoding or float format, frame.options.y) gets them decoded, so that it shows
 // the same picture, and what is sampled back from its copy is encoded again.
-vec3 srgb_to_linear(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
-vec3 linear_to_srgb(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
 vec4 target_color(vec3 c) { return vec4(frame.options.y > 0.5 ? srgb_to_linear(c) : c, 1.0); }
 vec3 from_scene_copy(vec3 sampled) { return frame.options.y > 0.5 ? linear_to_srgb(sampled) : sampled; }
 

@@ -130,6 +130,15 @@ struct GpuFrame {
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
     vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: unused
+    // The Preetham sky (runtime/render/src/sky_model.hpp): A, B, C, D of the Perez
+    // function for luminance Y and chromaticity x, y; their E; the zenith values over
+    // F(0, theta_s) with Y divided by the zenith luminance (the exposure's reference).
+    vec4 sky_Y;
+    vec4 sky_x;
+    vec4 sky_y;
+    vec4 sky_e;              // xyz: E for Y, x, y; w: exposure (per zenith luminance)
+    vec4 sky_zenith;         // xyz: zenith Y (relative, 1) / F(0, theta_s), x / F, y / F; w: saturation of the display look
+    vec4 sky_balance;        // xyz: white-balance gains on linear sRGB; w: unused
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -196,7 +205,7 @@ static_assert(sizeof(GpuQueryResult) == 80);
 static_assert(sizeof(GpuQueryParams) == 112);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 10 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 8 * 16);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 14 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

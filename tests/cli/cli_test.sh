@@ -219,6 +219,8 @@ JSON
     expect_error "bad view" "--view" "$TW" render --view xray --out o.png
     expect_error "time out of range" "--time" "$TW" render --time 1e12 --out o.png
     expect_error "no output given" "--out" "$TW" render
+    expect_error "turbidity out of range" "--turbidity" "$TW" render --turbidity 20 --out o.png
+    expect_error "sun of zero length" "--sun" "$TW" render --sun 0 0 0 --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
     expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png

@@ -29,6 +29,8 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     render::FrameInfo frame;
     frame.camera = job.camera.value_or(default_camera(scene));
     frame.view = job.view;
+    if (job.sun_direction) frame.sun_direction = *job.sun_direction;
+    frame.sky_turbidity = job.sky_turbidity;
     render::StandaloneOptions options;
     options.validation = job.validate;
     auto device = render::StandaloneDevice::create(options);

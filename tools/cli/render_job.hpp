@@ -22,6 +22,8 @@ struct RenderJob {
     std::string single_output;   ///< PNG path when frames == 1; else frame_NNNN.png in output_dir.
     std::string output_dir;
     bool validate = false;
+    std::optional<glm::dvec3> sun_direction;  ///< Toward the sun; default FrameInfo's.
+    double sky_turbidity = 2.5;               ///< Preetham sky, in [1.7, 10].
 };
 
 struct RenderResult {

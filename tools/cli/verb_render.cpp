@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -30,6 +31,8 @@ struct RenderArgs {
     std::string stats;
     std::vector<double> camera, target;
     double fov = 0.0;
+    std::vector<double> sun;
+    double turbidity = 2.5;
     bool validate = false;
 };
 
@@ -71,6 +74,14 @@ int run_render(const RenderArgs& a) {
     job.validate = a.validate;
     job.single_output = a.frames == 1 ? a.out : std::string();
     job.output_dir = a.out_dir;
+    if (!a.sun.empty()) {
+        const glm::dvec3 sun{a.sun[0], a.sun[1], a.sun[2]};
+        if (!std::isfinite(sun.x) || !std::isfinite(sun.y) || !std::isfinite(sun.z) || glm::length(sun) < 1e-9)
+            return fail(verb, "--sun: the direction must be finite and non-zero");
+        job.sun_direction = sun;
+    }
+    if (!(a.turbidity >= 1.7 && a.turbidity <= 10.0)) return fail(verb, fmt::format("--turbidity: {} is out of range (1.7 to 10)", a.turbidity));
+    job.sky_turbidity = a.turbidity;
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -112,6 +123,8 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--camera", args->camera, "Camera position x y z, m")->expected(3);
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);
     cmd->add_option("--fov", args->fov, "Vertical field of view, degrees");
+    cmd->add_option("--sun", args->sun, "Direction toward the sun x y z (y up)")->expected(3);
+    cmd->add_option("--turbidity", args->turbidity, "Air turbidity of the Preetham sky: 2 very clear, 3 clear, 6 hazy (1.7 to 10)")->capture_default_str();
     cmd->add_flag("--validate", args->validate, "Enable the Khronos validation layer; any message fails the run");
     return {cmd, [args] { return run_render(*args); }};
 }

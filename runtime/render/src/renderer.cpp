@@ -203,6 +203,11 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     if (auto st = detail::validate_camera(frame.camera); !st) return st;
     if (!std::isfinite(frame.time) || std::abs(frame.time) > 1e9)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: time {} is out of range (finite, |t| <= 1e9 s)", frame.time)};
+    if (!std::isfinite(frame.sun_direction.x) || !std::isfinite(frame.sun_direction.y) || !std::isfinite(frame.sun_direction.z) ||
+        glm::length(frame.sun_direction) < 1e-9)
+        return Error{ErrorCode::invalid_argument, "renderer: sun_direction must be finite and non-zero"};
+    if (!(frame.sky_turbidity >= 1.7 && frame.sky_turbidity <= 10.0))
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
     if (frame.view == DebugView::wireframe && !pipelines.draws.water_wire)
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     slot = &slots[frame.frame_index % slots.size()];

@@ -83,6 +83,8 @@ struct FrameInfo {
     std::uint64_t frame_index = 0;     ///< Host frame counter; selects the in-flight slot.
     DebugView view = DebugView::shaded;
     glm::dvec3 sun_direction{0.35, 0.55, -0.75};  ///< Toward the sun; normalised by the renderer.
+    /// The air's turbidity for the Preetham sky, in [1.7, 10]: 2 very clear, 3 clear, 6 hazy.
+    double sky_turbidity = 2.5;
 };
 
 /// GPU time per pass of one frame, from timestamp queries (ms).
