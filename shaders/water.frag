@@ -171,8 +171,23 @@ void main() {
             float scene_z = textureLod(scene_depth, suv, 0.0).r;
             // Reversed Z: larger is nearer. A hit when the scene is in front of the ray point.
             if (scene_z > ndc.z && scene_z > 0.0) {
+                // Bisect back along the last step to where the ray meets the scene, and
+                // accept only a meeting within a few percent of its range: long steps
+                // otherwise pass far behind hills and take their colour.
+                vec3 lo = p - r * (step_len / 1.25), hi = p;
+                for (int b = 0; b < 5; ++b) {
+                    vec3 mid = 0.5 * (lo + hi);
+                    vec4 mc = frame.view_proj * vec4(mid, 1.0);
+                    vec3 mn = mc.xyz / mc.w;
+                    float mz = textureLod(scene_depth, mn.xy * 0.5 + 0.5, 0.0).r;
+                    if (mz > mn.z) hi = mid; else lo = mid;
+                }
+                vec4 hc = frame.view_proj * vec4(hi, 1.0);
+                suv = clamp(hc.xy / hc.w * 0.5 + 0.5, vec2(0.0), vec2(1.0));
+                p = hi;
+                scene_z = textureLod(scene_depth, suv, 0.0).r;
                 vec3 hit = world_from_depth(suv, scene_z);
-                if (length(hit - p) < step_len * 2.0) {
+                if (length(hit - p) < 0.03 * length(p - frame.camera.xyz) + 1.0) {
                     float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
                     reflected = mix(reflected, from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
                     reflects_scene = edge > 0.0;
