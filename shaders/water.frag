@@ -64,6 +64,25 @@ float foam_lace(vec2 p) {
     return clamp((f2 - f1) * 1.6, 0.0, 1.0);
 }
 
+// The mean normal of the facets a pixel sees. Unresolved slopes (variance sigma^2 per
+// axis) seen at a grazing angle show more of the facets that face the viewer: weighting
+// each slope s along the view's azimuth by its projected area (t + s)+, t = the view's
+// elevation tangent, the mean visible slope is sigma Phi(u) / (u Phi(u) + phi(u)),
+// u = t / sigma: 1.25 sigma at grazing, sigma^2 / t from above (Gaussian slopes, no
+// masking between facets). The geometry shows this where waves are drawn; the filtered
+// far field must too, or it looks too reflective.
+vec3 visible_mean_normal(vec3 n, vec3 v, float variance) {
+    float horizontal = length(v.xz);
+    if (variance <= 0.0 || horizontal < 1e-4) return n;
+    float sigma = sqrt(variance);
+    float u = v.y / horizontal / sigma;
+    float phi = 0.3989423 * exp(-0.5 * u * u);
+    float cdf = 0.5 * (1.0 + tanh(0.7978846 * (u + 0.044715 * u * u * u)));  // Phi(u), within 3e-4
+    float tilt = sigma * cdf / max(u * cdf + phi, 1e-6);
+    vec2 toward = v.xz / horizontal;
+    return normalize(n + vec3(toward.x, 0.0, toward.y) * tilt);
+}
+
 // How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
 // solid; thinner foam opens into lace (foam_lace, broken up by a finer gradient noise)
 // that rides the water (rest coordinates move with the particles). Where the pixel
@@ -130,6 +149,7 @@ void main() {
     float variance = 0.0;
     vec2 jacobian_detail = vec2(0.0);
     vec3 n = detail_normal(d, footprint, variance, jacobian_detail);
+    n = visible_mean_normal(n, v, variance);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
