@@ -204,6 +204,9 @@ JSON
       check "stats has $key" grep -q "$key" stats.json
     done
     check "prints the file" grep -q "still.png" log.txt
+    "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
+    check "multisampled still under validation" test $? -eq 0
+    check "multisampled PNG written" test -s still4.png
     ;;
   render_sequence)
     "$TW" render --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
@@ -221,6 +224,7 @@ JSON
     expect_error "no output given" "--out" "$TW" render
     expect_error "turbidity out of range" "--turbidity" "$TW" render --turbidity 20 --out o.png
     expect_error "sun of zero length" "--sun" "$TW" render --sun 0 0 0 --out o.png
+    expect_error "odd sample count" "--samples" "$TW" render --samples 3 --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
     expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png

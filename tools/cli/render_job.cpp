@@ -40,10 +40,11 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     init.color_format = render::OffscreenTarget::kColorFormat;
     init.depth_format = render::OffscreenTarget::kDepthFormat;
     init.wireframe = init.device.enabled_features.fillModeNonSolid;  // the wireframe view where the device has it
+    init.samples = job.samples;
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     if (auto st = (*renderer)->set_scene(scene); !st) return st.error();
-    auto target = render::OffscreenTarget::create((*device)->context(), job.extent.width, job.extent.height);
+    auto target = render::OffscreenTarget::create((*device)->context(), job.extent.width, job.extent.height, job.samples);
     if (!target) return target.error();
     if (!job.output_dir.empty()) {
         std::error_code ec;

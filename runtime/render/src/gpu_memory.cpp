@@ -86,7 +86,7 @@ void GpuBuffer::reset() {
 }
 
 Result<GpuImage> GpuImage::create(const DeviceContext& ctx, VkExtent2D extent, VkFormat format,
-                                  VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+                                  VkImageUsageFlags usage, VkImageAspectFlags aspect, VkSampleCountFlagBits samples) {
     VkImageFormatProperties fp;
     if (vkGetPhysicalDeviceImageFormatProperties(ctx.physical_device, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
                                                  usage, 0, &fp) != VK_SUCCESS) {
@@ -105,7 +105,7 @@ Result<GpuImage> GpuImage::create(const DeviceContext& ctx, VkExtent2D extent, V
     info.extent = {extent.width, extent.height, 1};
     info.mipLevels = 1;
     info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;

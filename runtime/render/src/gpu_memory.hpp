@@ -49,7 +49,8 @@ class GpuImage {
 public:
     GpuImage() = default;
     static Result<GpuImage> create(const DeviceContext& ctx, VkExtent2D extent, VkFormat format,
-                                   VkImageUsageFlags usage, VkImageAspectFlags aspect);
+                                   VkImageUsageFlags usage, VkImageAspectFlags aspect,
+                                   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
     GpuImage& operator=(GpuImage&& other) noexcept;
     ~GpuImage() { reset(); }

@@ -15,6 +15,7 @@ struct OffscreenTarget::Impl {
     std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
     DeviceContext ctx;
     GpuImage color, depth;
+    GpuImage resolved;  // multisampled targets: the picture, resolved by the water pass
     GpuBuffer readback;
     VkCommandPool pool = VK_NULL_HANDLE;
     std::uint64_t frame_counter = 0;
@@ -24,6 +25,7 @@ struct OffscreenTarget::Impl {
         vkDeviceWaitIdle(ctx.device);
         color.reset();
         depth.reset();
+        resolved.reset();
         readback.reset();
         if (pool) vkDestroyCommandPool(ctx.device, pool, ctx.allocator);
     }
@@ -37,7 +39,7 @@ OffscreenTarget::~OffscreenTarget() {
 }
 
 Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceContext& context, std::uint32_t width,
-                                                                 std::uint32_t height) {
+                                                                 std::uint32_t height, VkSampleCountFlagBits samples) {
     if (width < 16 || height < 16 || width > 8192 || height > 8192) {
         return Error{ErrorCode::invalid_argument, fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
     }
@@ -48,11 +50,18 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
     impl->fn = std::move(functions).value();
     impl->ctx = context;
     auto color = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
-                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, samples);
     if (!color) return color.error();
     impl->color = std::move(color).value();
+    if (samples != VK_SAMPLE_COUNT_1_BIT) {
+        auto resolved = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
+                                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+        if (!resolved) return resolved.error();
+        impl->resolved = std::move(resolved).value();
+    }
     auto depth = GpuImage::create(impl->ctx, {width, height}, kDepthFormat,
-                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                                  samples);
     if (!depth) return depth.error();
     impl->depth = std::move(depth).value();
     auto readback = GpuBuffer::create(impl->ctx, VkDeviceSize{width} * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -80,20 +89,30 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+        const bool multisampled = m.resolved.handle() != VK_NULL_HANDLE;
+        if (multisampled)
+            detail::transition(cmd, m.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                               VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
         FrameTargets targets;
         targets.color_image = m.color.handle();
         targets.color_view = m.color.view();
         targets.depth_image = m.depth.handle();
         targets.depth_view = m.depth.view();
         targets.extent = extent;
+        if (multisampled) {
+            targets.resolve_image = m.resolved.handle();
+            targets.resolve_view = m.resolved.view();
+        }
         recorded = renderer.record_frame(cmd, frame, targets);
-        detail::transition(cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        const VkImage picture = multisampled ? m.resolved.handle() : m.color.handle();
+        detail::transition(cmd, picture, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};
-        vkCmdCopyImageToBuffer(cmd, m.color.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m.readback.handle(), 1, &region);
+        vkCmdCopyImageToBuffer(cmd, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m.readback.handle(), 1, &region);
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

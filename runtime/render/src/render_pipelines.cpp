@@ -78,7 +78,7 @@ Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc&
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    multisample.rasterizationSamples = d.samples;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = d.depth_write ? VK_TRUE : VK_FALSE;
@@ -169,23 +169,25 @@ Status create_samplers(const DeviceContext& ctx, FramePipelines& p) {
 
 }  // namespace
 
-Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe) {
+Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+                                              VkSampleCountFlagBits samples, bool wireframe) {
     FramePipelines p;
     if (auto st = create_layouts(ctx, p); !st) return st.error();
     if (auto st = create_samplers(ctx, p); !st) return st.error();
-    auto draws = p.make_draws(ctx, color_format, depth_format, wireframe, nullptr);
+    auto draws = p.make_draws(ctx, color_format, depth_format, samples, wireframe, nullptr);
     if (!draws) return draws.error();
     p.draws = std::move(draws).value();
     return p;
 }
 
-Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe,
-                                                 const ShaderLookup& shaders) const {
+Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+                                                 VkSampleCountFlagBits samples, bool wireframe, const ShaderLookup& shaders) const {
     DrawPipelines p;
     PipelineDesc base;
     base.layout = layout.get();
     base.color_format = color_format;
     base.depth_format = depth_format;
+    base.samples = samples;
     base.shaders = shaders;
     auto make = [&](OwnedPipeline& out, const PipelineDesc& d) -> Status {
         auto made = create_pipeline(ctx, d);

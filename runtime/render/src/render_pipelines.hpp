@@ -22,6 +22,7 @@ struct PipelineDesc {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the targets' (multisampling)
     std::string_view vertex, tess_control, tess_eval, fragment;  // embedded shader names; tess ones optional
     bool terrain_vertices = false;   // position + normal, 24-byte stride
     bool depth_write = true;
@@ -50,10 +51,11 @@ struct FramePipelines {
     DrawPipelines draws;
     OwnedSampler linear, nearest;
 
-    static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe);
+    static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+                                         VkSampleCountFlagBits samples, bool wireframe);
     /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.
-    Result<DrawPipelines> make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format, bool wireframe,
-                                     const ShaderLookup& shaders) const;
+    Result<DrawPipelines> make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+                                     VkSampleCountFlagBits samples, bool wireframe, const ShaderLookup& shaders) const;
 };
 
 }  // namespace tidewater::render::detail

@@ -268,14 +268,32 @@ Renderer::~Renderer() {
     impl_.reset();
 }
 
+namespace {
+
+/// Multisampled targets: a count the device renders colour and depth at, and a depth
+/// format without stencil (the depth resolve writes only the depth aspect).
+Status check_samples(const DeviceContext& c, VkSampleCountFlagBits samples, const detail::DepthTarget& depth) {
+    if (samples == VK_SAMPLE_COUNT_1_BIT) return {};
+    if (samples != VK_SAMPLE_COUNT_2_BIT && samples != VK_SAMPLE_COUNT_4_BIT && samples != VK_SAMPLE_COUNT_8_BIT)
+        return Error{ErrorCode::invalid_argument, fmt::format("renderer: sample count {} is not 1, 2, 4 or 8", static_cast<int>(samples))};
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(c.physical_device, &p);
+    const VkSampleCountFlags both = p.limits.framebufferColorSampleCounts & p.limits.framebufferDepthSampleCounts;
+    if ((both & static_cast<VkSampleCountFlags>(samples)) == 0)
+        return Error{ErrorCode::unsupported, fmt::format("renderer: this device cannot render colour and depth at {} samples", static_cast<int>(samples))};
+    if (depth.aspects != VK_IMAGE_ASPECT_DEPTH_BIT)
+        return Error{ErrorCode::unsupported, fmt::format("renderer: multisampling needs a depth format without stencil (D32 or D16), not {}", depth.name)};
+    return {};
+}
+
+}  // namespace
+
 Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info) {
     const DeviceContext& c = info.device;
     if (!c.instance || !c.physical_device || !c.device || !c.queue)
         return Error{ErrorCode::invalid_argument, "renderer: RendererInitInfo.device needs instance, physical device, device and queue"};
     if (info.frames_in_flight < 1 || info.frames_in_flight > 4)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
-    if (info.samples != VK_SAMPLE_COUNT_1_BIT)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: sample count {} is not supported yet (use 1)", static_cast<int>(info.samples))};
     auto functions = detail::load_functions(c);
     if (!functions) return functions.error();
     const detail::ScopedDispatch dispatch_guard(functions->get());
@@ -310,10 +328,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
                                                       VK_FORMAT_FEATURE_TRANSFER_DST_BIT, "depth"); !st) return st.error();
     if (auto st = check_format(VK_FORMAT_R32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT, "height texture (R32_SFLOAT)"); !st)
         return st.error();
+    if (auto st = check_samples(c, info.samples, *depth_target); !st) return st.error();
     auto impl = std::make_unique<Impl>();
     impl->fn = std::move(functions).value();
     impl->info = info;
-    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, impl->info.wireframe);
+    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples, impl->info.wireframe);
     if (!pipelines) return pipelines.error();
     impl->pipelines = std::move(pipelines).value();
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -327,7 +346,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     impl->timer = std::move(timer).value();
     impl->color_target = color_target;
     impl->depth_target = depth_target;
-    auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target);
+    auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target, info.samples);
     if (!copies) return copies.error();
     impl->copies = std::move(copies).value();
     return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
@@ -416,16 +435,19 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     const auto slot_index = static_cast<std::uint32_t>(slot - m.slots.data());
     m.timer.begin(cmd, slot_index);
 
-    detail::FramePasses passes(t, m.depth_target->attachment_layout);
+    const bool msaa = m.copies.multisampled();
+    detail::FramePasses passes(t, m.depth_target->attachment_layout, msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
+    if (msaa) m.copies.depth_to_resolve(cmd);
     vkCmdBeginRendering(cmd, &passes.rendering);
     m.draw_opaque(cmd, *slot, plan, t.extent, frame.view);
     vkCmdEndRendering(cmd);
+    if (msaa) m.copies.depth_resolved(cmd);
     m.timer.mark(cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
 
     m.copies.record_copy(cmd, t);  // the opaque scene, for refraction and reflection
     m.timer.mark(cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
 
-    passes.load_for_water();
+    passes.load_for_water(t);
     vkCmdBeginRendering(cmd, &passes.rendering);
     m.draw_water(cmd, *slot, plan, t.extent, frame.view);
     vkCmdEndRendering(cmd);
@@ -455,7 +477,7 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
         const auto it = spirv.find(name);
         return it == spirv.end() ? std::span<const std::uint32_t>() : std::span<const std::uint32_t>(it->second);
     };
-    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.wireframe, lookup);
+    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples, m.info.wireframe, lookup);
     if (!draws) return draws.error();  // the current pipelines keep drawing
     // No device-wide wait: the old pipelines live until the frames in flight are done.
     m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});

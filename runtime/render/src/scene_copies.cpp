@@ -15,8 +15,9 @@ constexpr VkPipelineStageFlags kDepthStage = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TE
 }  // namespace
 
 Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool pool, const ColorTarget& color_target,
-                                        const DepthTarget& depth_target) {
+                                        const DepthTarget& depth_target, VkSampleCountFlagBits samples) {
     SceneCopies c;
+    c.samples_ = samples;
     c.color_target_ = &color_target;
     c.depth_target_ = &depth_target;
     auto color = GpuImage::create(ctx, {1, 1}, color_target.format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
@@ -43,7 +44,10 @@ Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExten
     extent_ = {};
     auto color = GpuImage::create(ctx, extent, color_target_->format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
-    auto depth = GpuImage::create(ctx, extent, depth_target_->format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    // Multisampled targets resolve their depth into the copy as an attachment.
+    const VkImageUsageFlags depth_usage =
+        kCopyUsage | (multisampled() ? static_cast<VkImageUsageFlags>(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) : VkImageUsageFlags{0});
+    auto depth = GpuImage::create(ctx, extent, depth_target_->format, depth_usage, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (!depth) return depth.error();
     // Give the new images a defined layout before any frame samples them.
     Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
@@ -65,7 +69,8 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
     const DepthTarget& d = *depth_target_;
     transition(cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    // Only the depth aspect is copied (and sampled); barriers cover every aspect.
+    // Only the depth aspect is copied (and sampled); barriers cover every aspect. With
+    // multisampling the colour is resolved and the depth was resolved by the pass.
     const struct {
         VkImage source;
         const GpuImage& copy;
@@ -73,16 +78,26 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
     } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
                   {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects}};
     for (const auto& p : pairs) {
+        if (multisampled() && &p.copy == &depth_) continue;
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
         transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_WRITE_BIT);
-        VkImageCopy region{};
-        region.srcSubresource = {p.aspect, 0, 0, 1};
-        region.dstSubresource = {p.aspect, 0, 0, 1};
-        region.extent = {t.extent.width, t.extent.height, 1};
-        vkCmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                       &region);
+        if (multisampled()) {
+            VkImageResolve region{};
+            region.srcSubresource = {p.aspect, 0, 0, 1};
+            region.dstSubresource = {p.aspect, 0, 0, 1};
+            region.extent = {t.extent.width, t.extent.height, 1};
+            vkCmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                              &region);
+        } else {
+            VkImageCopy region{};
+            region.srcSubresource = {p.aspect, 0, 0, 1};
+            region.dstSubresource = {p.aspect, 0, 0, 1};
+            region.extent = {t.extent.width, t.extent.height, 1};
+            vkCmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
+        }
         transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                    VK_ACCESS_SHADER_READ_BIT);
@@ -95,7 +110,22 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
-FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout) {
+void SceneCopies::depth_to_resolve(VkCommandBuffer cmd) const {
+    const DepthTarget& d = *depth_target_;
+    transition(cmd, depth_.handle(), d.aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, d.attachment_layout,
+               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, kDepthStage | kColorStage,
+               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
+void SceneCopies::depth_resolved(VkCommandBuffer cmd) const {
+    const DepthTarget& d = *depth_target_;
+    // Depth resolves run at the end of the pass, in the colour-output stage.
+    transition(cmd, depth_.handle(), d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStage | kColorStage,
+               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+               VK_ACCESS_SHADER_READ_BIT);
+}
+
+FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout, VkImageView depth_resolve) {
     color.imageView = t.color_view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = t.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
@@ -104,6 +134,11 @@ FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout) {
     depth.imageView = t.depth_view;
     depth.imageLayout = depth_layout;
     depth.clearValue.depthStencil = {0.0f, 0};  // reversed-Z: far
+    if (depth_resolve) {
+        depth.resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;  // every Vulkan 1.2 device has it
+        depth.resolveImageView = depth_resolve;
+        depth.resolveImageLayout = depth_layout;
+    }
     rendering.renderArea = {{0, 0}, t.extent};
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = 1;
@@ -111,9 +146,16 @@ FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout) {
     rendering.pDepthAttachment = &depth;
 }
 
-void FramePasses::load_for_water() {
+void FramePasses::load_for_water(const FrameTargets& t) {
     color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.resolveMode = VK_RESOLVE_MODE_NONE;
+    depth.resolveImageView = VK_NULL_HANDLE;
+    if (t.resolve_view) {
+        color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        color.resolveImageView = t.resolve_view;
+        color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
 }
 
 }  // namespace tidewater::render::detail

@@ -46,6 +46,7 @@
     X(CmdEndRendering) \
     X(CmdPipelineBarrier) \
     X(CmdPushConstants) \
+    X(CmdResolveImage) \
     X(CmdResetQueryPool) \
     X(CmdSetScissor) \
     X(CmdSetViewport) \
@@ -136,6 +137,7 @@ private:
 #define vkCmdCopyBufferToImage (::tidewater::render::detail::dispatch().CmdCopyBufferToImage)
 #define vkCmdCopyImage (::tidewater::render::detail::dispatch().CmdCopyImage)
 #define vkCmdCopyImageToBuffer (::tidewater::render::detail::dispatch().CmdCopyImageToBuffer)
+#define vkCmdResolveImage (::tidewater::render::detail::dispatch().CmdResolveImage)
 #define vkCmdDispatch (::tidewater::render::detail::dispatch().CmdDispatch)
 #define vkCmdDraw (::tidewater::render::detail::dispatch().CmdDraw)
 #define vkCmdDrawIndexed (::tidewater::render::detail::dispatch().CmdDrawIndexed)

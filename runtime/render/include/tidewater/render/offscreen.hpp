@@ -20,9 +20,11 @@ struct RgbaImage {
 
 class OffscreenTarget {
 public:
-    /// Width and height in [16, 8192].
+    /// Width and height in [16, 8192]; `samples` as the renderer's RendererInitInfo::samples
+    /// (multisampled targets are resolved into the picture).
     static Result<std::unique_ptr<OffscreenTarget>> create(const DeviceContext& context, std::uint32_t width,
-                                                           std::uint32_t height);
+                                                           std::uint32_t height,
+                                                           VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     ~OffscreenTarget();
     OffscreenTarget(const OffscreenTarget&) = delete;
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;

@@ -59,7 +59,9 @@ struct RendererInitInfo {
     DeviceContext device;                          ///< Copied. Needs tessellationShader enabled.
     VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  ///< The host's colour attachment format.
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      ///< The host's depth attachment format.
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Only 1 is supported so far.
+    /// The targets' sample count: 1, or 2, 4 or 8 for multisampled targets (antialiased
+    /// wave edges), with a depth format without stencil.
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t frames_in_flight = 2;            ///< 1 to 4.
     bool wireframe = true;                         ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;   ///< Copied; default: silent.
@@ -75,6 +77,10 @@ struct FrameTargets {
     VkImageView depth_view = VK_NULL_HANDLE;
     VkExtent2D extent{};
     bool clear = true;  ///< Clear colour and depth first (false: draw over the host's content).
+    /// Multisampled targets: a single-sample colour image (COLOR_ATTACHMENT_OPTIMAL, the
+    /// colour format) the water pass resolves the frame into; null: the host resolves.
+    VkImage resolve_image = VK_NULL_HANDLE;
+    VkImageView resolve_view = VK_NULL_HANDLE;
 };
 
 struct FrameInfo {
