@@ -173,6 +173,7 @@ struct GpuBodyDraw {
     // The ocean's or a lake's ripples (tidewater::RippleField):
     vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
     vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)
+    vec4 lod;           // x: the mean square slope of its waves (WaveSet::mean_square_slope; a river's: its own and its still water's)
 };
 
 struct GpuQueryParams {
@@ -204,7 +205,7 @@ static_assert(sizeof(GpuRiverWave) == 32);
 static_assert(sizeof(GpuQueryResult) == 80);
 static_assert(sizeof(GpuQueryParams) == 112);
 static_assert(sizeof(GpuFlowDetail) == 64);
-static_assert(sizeof(GpuBodyDraw) == 10 * 16 + 64);
+static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
 static_assert(sizeof(GpuFrame) == 2 * 64 + 14 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -48,12 +48,12 @@ bool river_mode() { return params.river_nx > 0u; }
 // The still water's sums at rest offset e (its shore fields when it has them).
 SurfaceSums still_water_at(vec2 e) {
     vec2 at = cell_origin[g_point.cell] + g_point.local + e;
-    return water_at(g_point.local + e, at - params.shore_offset, params.shore_resolution > 0u, 0.0);
+    return water_at(g_point.local + e, at - params.shore_offset, params.shore_resolution > 0u, no_wave_lod());
 }
 
 SurfaceSums water_at_offset(vec2 e) {
     if (!river_mode()) return still_water_at(e);
-    SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, g_channel.xy, 0.0);
+    SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, g_channel.xy, no_wave_lod());
     if (params.still > 0.5) add_scaled(s, still_water_at(e), g_river_still_weight);
     return s;
 }

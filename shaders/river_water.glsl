@@ -60,8 +60,9 @@ float g_river_depth = 0.0;
 
 // The river's sums at rest position `rel` (m, from the river grid's corner), with rest
 // offset `e` from the point whose channel coordinates are `sn` (the point the phases
-// are formed at). `fade_spacing` > 0 fades short waves for render LOD (queries pass 0).
-SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, float fade_spacing) {
+// are formed at). `lod` fades the waves the mesh and pixel cannot resolve (render LOD;
+// queries pass no_wave_lod()).
+SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, WaveLod lod) {
     RiverTap t = river_tap(rel);
     uint base = RIVER_FIRST_TEXEL * kRiverQueryStride;
     float surface = river_field(t, kRiverQuerySurface);
@@ -86,7 +87,7 @@ SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, float fade_spacing) {
         vec2 kvec = w.k_amp.x * tangent + w.k_amp.y * left;
         float theta = fma(kvec.x, e.x, fma(kvec.y, e.y, river_wave_phase(w, sn)));
         float a = w.k_amp.z * ramp;
-        if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);
+        if (a > 0.0) a *= wave_lod_weight(kvec, lod);
         add_wave(s, kvec, a, w.k_amp.w, w.omega_phase.x, theta);
     }
     s.eta += surface;

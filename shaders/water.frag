@@ -15,7 +15,6 @@ layout(location = 1) in vec3 geo_normal;
 layout(location = 2) in vec2 rest_xz;
 layout(location = 3) in float jacobian;
 layout(location = 4) in float eta;
-layout(location = 5) in float spacing;
 layout(location = 6) in vec2 shore_info;
 layout(location = 7) in float rest_level;
 layout(location = 8) in vec2 current;
@@ -30,11 +29,9 @@ vec3 world_from_depth(vec2 uv, float depth) {
     return p.xyz / p.w;
 }
 
-// The surface a pixel covers: its footprint on the water, stretched along the view at
-// grazing angles (m). Detail shorter than a few footprints cannot be drawn: it goes into
-// the slope variance instead (LEAN-style), which widens the sun's glitter and leaves
-// the averaged reflection, as the supersampled picture shows, instead of aliasing.
-float pixel_footprint(vec3 v) { return vertex_spacing(length(frame.camera.xyz - world_pos)) / 3.0 / max(v.y, 0.05); }
+// Detail shorter than a few footprints (wave_lod_at) cannot be drawn: it goes into the
+// slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
+// averaged reflection, as the supersampled picture shows, instead of aliasing.
 // How much of a detail of wavelength `lambda` a pixel resolves: all from 4 footprints up,
 // none under 2.
 float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
@@ -64,23 +61,51 @@ float foam_lace(vec2 p) {
     return clamp((f2 - f1) * 1.6, 0.0, 1.0);
 }
 
-// The mean normal of the facets a pixel sees. Unresolved slopes (variance sigma^2 per
-// axis) seen at a grazing angle show more of the facets that face the viewer: weighting
-// each slope s along the view's azimuth by its projected area (t + s)+, t = the view's
-// elevation tangent, the mean visible slope is sigma Phi(u) / (u Phi(u) + phi(u)),
-// u = t / sigma: 1.25 sigma at grazing, sigma^2 / t from above (Gaussian slopes, no
-// masking between facets). The geometry shows this where waves are drawn; the filtered
-// far field must too, or it looks too reflective.
-vec3 visible_mean_normal(vec3 n, vec3 v, float variance) {
-    float horizontal = length(v.xz);
-    if (variance <= 0.0 || horizontal < 1e-4) return n;
+// The facets a pixel sees when its waves are not all resolved: slopes of variance
+// sigma^2 per axis about the resolved normal n, each weighted by the area it shows the
+// viewer. At grazing angles the facets facing the viewer dominate (Bruneton, Neyret
+// and Holzschuch 2010): the geometry shows this where it draws the waves, and the
+// filtered far field must too. Quadrature: two slopes along the view's azimuth with the
+// visible slopes' mean and deviation (visible_slopes), each +-sigma across it.
+struct VisibleFacets {
+    vec3 normal;    // their mean normal
+    float fresnel;  // their mean Fresnel reflectance
+    vec3 sky;       // their mean Fresnel-weighted reflection of the sky
+};
+
+float schlick_fresnel(vec3 n, vec3 v) { return 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0); }
+
+VisibleFacets visible_facets(vec3 n, vec3 v, float variance) {
+    VisibleFacets f;
+    float cos_view = clamp(dot(n, v), 1e-4, 1.0);
+    vec3 flat_view = v - n * cos_view;  // v in the resolved facet's plane
+    float in_plane = length(flat_view);
+    if (variance <= 0.0 || in_plane < 1e-4) {
+        f.normal = n;
+        f.fresnel = schlick_fresnel(n, v);
+        vec3 r = reflect(-v, n);
+        r.y = abs(r.y);
+        f.sky = f.fresnel * sky_color(r);
+        return f;
+    }
+    vec3 along = flat_view / in_plane, across = normalize(cross(n, along));
     float sigma = sqrt(variance);
-    float u = v.y / horizontal / sigma;
-    float phi = 0.3989423 * exp(-0.5 * u * u);
-    float cdf = 0.5 * (1.0 + tanh(0.7978846 * (u + 0.044715 * u * u * u)));  // Phi(u), within 3e-4
-    float tilt = sigma * cdf / max(u * cdf + phi, 1e-6);
-    vec2 toward = v.xz / horizontal;
-    return normalize(n + vec3(toward.x, 0.0, toward.y) * tilt);
+    vec2 slopes = visible_slopes(cos_view / in_plane, sigma);
+    f.normal = vec3(0.0);
+    f.fresnel = 0.0;
+    f.sky = vec3(0.0);
+    for (int i = -1; i <= 1; i += 2)
+        for (int j = -1; j <= 1; j += 2) {
+            vec3 m = normalize(n + along * (slopes.x + float(i) * slopes.y) + across * (sigma * float(j)));
+            float fresnel = schlick_fresnel(m, v);
+            vec3 r = reflect(-v, m);
+            r.y = abs(r.y);  // reflected down into the next wave: its mirror image
+            f.normal += 0.25 * m;
+            f.fresnel += 0.25 * fresnel;
+            f.sky += 0.25 * fresnel * sky_color(r);
+        }
+    f.normal = normalize(f.normal);
+    return f;
 }
 
 // How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
@@ -100,26 +125,30 @@ float foam_cover(float foam, vec2 xz, float footprint) {
     return smoothstep(0.0, 1.0, (foam - n) / (2.0 * edge) + 0.5) * mix(0.75, 1.0, foam);
 }
 
-// Normal detail: the slope of the waves faded out of the geometry, then ripples (the
+// Normal detail: every wave as much as the pixel resolves it, less what the geometry
+// already draws (waves faded out of the mesh add slope; waves the mesh draws but the
+// pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis). The faded waves
-// change the Jacobian too (to first order, by minus the trace of their m): the resolved
-// ones by `jacobian.x`, the unresolved ones with variance `jacobian.y`.
-vec3 detail_normal(GpuBodyDraw d, float footprint, inout float variance, inout vec2 jacobian) {
+// pixel cannot resolve adds to `variance` (slope variance, per axis). The same share
+// changes the Jacobian (to first order, by minus the trace of their m): by
+// `jacobian.x`, with the unresolved part's variance in `jacobian.y`.
+vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout vec2 jacobian) {
     SurfaceSums faded = surface_zero();
     bool river = uint(d.body.x) == kBodyRiver;
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
     for (uint i = first; i < first + count; ++i) {
         GpuWave w = waves[i];
-        float missing = 1.0 - wave_lod_fade(w.steep_omega.w, spacing);
-        if (missing <= 0.0) continue;
-        float drawn = resolved(w.steep_omega.w, footprint);
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
+        float drawn = wave_lod_weight(kvec, lod);
+        float kept = pixel_keeps(kvec, lod);
         float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
-        variance += missing * (1.0 - drawn) * 0.5 * slope_amplitude * slope_amplitude;
         float compression = w.steep_omega.x * slope_amplitude;  // Q k A
-        jacobian.y += missing * (1.0 - drawn) * 0.5 * compression * compression;
-        add_wave(faded, kvec, missing * drawn * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
+        float lost = 1.0 - kept * kept;
+        variance += lost * 0.5 * slope_amplitude * slope_amplitude;
+        jacobian.y += lost * 0.5 * compression * compression;
+        float change = kept - drawn;
+        if (abs(change) < 1e-3) continue;
+        add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
     }
     vec2 slope = faded.slope;
     jacobian.x -= faded.m.x + faded.m.z;
@@ -145,12 +174,14 @@ void main() {
     vec3 to_camera = frame.camera.xyz - world_pos;
     float distance = length(to_camera);
     vec3 v = to_camera / distance;
-    float footprint = pixel_footprint(v);
+    WaveLod lod = wave_lod_at(rest_xz, d.body.y, d.lod.x);
+    float footprint = lod.along;  // the footprint's longer side
     float variance = 0.0;
     vec2 jacobian_detail = vec2(0.0);
-    vec3 n = detail_normal(d, footprint, variance, jacobian_detail);
-    n = visible_mean_normal(n, v, variance);
+    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
+    VisibleFacets facets = visible_facets(n, v, variance);
+    n = facets.normal;
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
 
@@ -217,25 +248,10 @@ void main() {
         }
     }
 
-    float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
-    vec3 color = mix(refracted, reflected, fresnel);
-    if (variance > 1e-5 && !reflects_scene) {
-        // The sky's reflection averaged over the unresolved slopes (four normals one
-        // standard deviation off the mean): Fresnel is far from linear at grazing angles.
-        float sigma = sqrt(variance);
-        vec3 sky_sum = vec3(0.0);
-        float fresnel_sum = 0.0;
-        for (int s = 0; s < 4; ++s) {
-            vec2 off = sigma * vec2(s == 0 ? 1.0 : s == 1 ? -1.0 : 0.0, s == 2 ? 1.0 : s == 3 ? -1.0 : 0.0);
-            vec3 ns = normalize(n + vec3(-off.x, 0.0, -off.y));
-            float fs = 0.02 + 0.98 * pow(1.0 - max(dot(ns, v), 0.0), 5.0);
-            vec3 rs = reflect(-v, ns);
-            rs.y = abs(rs.y);
-            sky_sum += fs * sky_color(rs);
-            fresnel_sum += fs;
-        }
-        color = refracted * (1.0 - 0.25 * fresnel_sum) + 0.25 * sky_sum;
-    }
+    // The sky's reflection over the visible facets; the terrain's (screen-space) from the
+    // mean facet.
+    vec3 color = refracted * (1.0 - facets.fresnel) + facets.sky;
+    if (reflects_scene) color = mix(refracted, reflected, schlick_fresnel(n, v));
     vec3 h = normalize(frame.sun.xyz + v);
     // Blinn-Phong sun glint widened by the unresolved slope variance; its energy is kept,
     // so a rough far field shows a broad, dimmer glitter path instead of sparkle.

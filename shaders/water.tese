@@ -27,7 +27,6 @@ layout(location = 1) out vec3 geo_normal;
 layout(location = 2) out vec2 rest_xz;
 layout(location = 3) out float jacobian;
 layout(location = 4) out float eta;
-layout(location = 5) out float spacing;
 layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: breaking 0..1
 layout(location = 7) out float rest_level; // the still surface here, world y (m)
 layout(location = 8) out vec2 current;     // a river's current (m/s)
@@ -38,7 +37,7 @@ void main() {
     g_wave_count = uint(g_draw.body.w);
     vec2 uv = gl_TessCoord.xy;
     rest_xz = mix(mix(control_xz[0], control_xz[1], uv.x), mix(control_xz[2], control_xz[3], uv.x), uv.y);
-    spacing = vertex_spacing(camera_distance(rest_xz, g_draw.body.y));
+    WaveLod lod = wave_lod_at(rest_xz, g_draw.body.y, g_draw.lod.x);
     bool shore = g_draw.shore.w > 0.0;
     SurfaceSums s;
     rest_level = g_draw.body.y;
@@ -47,12 +46,12 @@ void main() {
         vec2 rel = rest_xz - g_draw.grid.xy;
         RiverTap tap = river_tap(rel);
         vec4 channel = river_channel_at(tap);
-        s = river_water_at(rel, vec2(0.0), channel.xy, spacing);
-        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, spacing), g_river_still_weight);
+        s = river_water_at(rel, vec2(0.0), channel.xy, lod);
+        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod), g_river_still_weight);
         rest_level += river_field(tap, kRiverQuerySurface);
         current = channel.zw;
     } else {
-        s = water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, spacing);
+        s = water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod);
     }
     shore_info = vec2(g_shore_fields.w, g_shore_fields.y);
     eta = s.eta - (rest_level - g_draw.body.y);

@@ -17,9 +17,9 @@ const vec4 kOpenWaterShore = vec4(1e9, 0.0, 1.0, 1e9);
 vec4 g_shore_fields = kOpenWaterShore;
 
 // The sums at a rest position `rel` (m, from the phase origin) that lies at `shore_rel`
-// from the shore grid's corner. `fade_spacing` > 0 fades waves shorter than a few
-// vertex spacings (render LOD; queries pass 0).
-SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
+// from the shore grid's corner. `lod` fades the waves the mesh and pixel there cannot
+// resolve (render LOD; queries pass no_wave_lod()).
+SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
     SurfaceSums s = surface_zero();
     ShoreTap tap;
     uint texels = SHORE_RESOLUTION * SHORE_RESOLUTION;
@@ -43,7 +43,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, float fade_spacing) {
             a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);
             q *= g_shore_fields.z;
         }
-        if (fade_spacing > 0.0 && a > 0.0) a *= wave_lod_fade(6.2831853 / length(kvec), fade_spacing);
+        if (a > 0.0) a *= wave_lod_weight(kvec, lod);
         add_wave(s, kvec, a, q, w.steep_omega.y, theta);
     }
     return s;

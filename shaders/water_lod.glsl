@@ -3,6 +3,7 @@
 // cracks) and waves fade smoothly (no seams, no popping).
 #ifndef TIDEWATER_WATER_LOD_GLSL
 #define TIDEWATER_WATER_LOD_GLSL
+#include "water_point.glsl"
 
 // Distance from the camera to a point of water at rest height `level`.
 float camera_distance(vec2 xz, float level) {
@@ -11,5 +12,40 @@ float camera_distance(vec2 xz, float level) {
 // Target vertex spacing (m) at a distance: grows linearly with distance.
 float vertex_spacing(float distance) {
     return max(distance, 1.0) / frame.params.z;
+}
+
+// The slopes toward the viewer of the facets a ray meets at elevation tangent t, for
+// Gaussian slopes of deviation sigma per axis weighted by the area they show the viewer,
+// (t + s)+: their mean sigma Phi(u) / Z and deviation sigma sqrt((u Phi(u) + 2 phi(u)) / Z
+// - (Phi(u) / Z)^2), Z = u Phi(u) + phi(u), u = t / sigma. At grazing the mean is 1.25
+// sigma and the deviation 0.65 sigma; from above, sigma^2 / t and sigma.
+vec2 visible_slopes(float t, float sigma) {
+    if (sigma <= 0.0) return vec2(0.0);
+    float u = t / sigma;
+    float phi = 0.3989423 * exp(-0.5 * u * u);
+    float cdf = 0.5 * (1.0 + tanh(0.7978846 * (u + 0.044715 * u * u * u)));  // Phi(u), within 3e-4
+    float z = max(u * cdf + phi, 1e-6);
+    float mean = cdf / z;
+    return sigma * vec2(mean, sqrt(max((u * cdf + 2.0 * phi) / z - mean * mean, 0.0)));
+}
+
+// The render LOD of water at rest position `xz` and rest height `level` (WaveLod), for a
+// body whose waves have mean square slope `mean_square_slope` (both axes). A pixel is
+// one pixel wide across the view; along it, its footprint is stretched by the angle at
+// which it meets the facets it sees: the view's elevation tangent (from the camera's
+// height over the rest plane, not the waves', so that it does not change from crest to
+// trough) plus the mean slope those facets turn toward the viewer.
+WaveLod wave_lod_at(vec2 xz, float level, float mean_square_slope) {
+    vec3 to_camera = frame.camera.xyz - vec3(xz.x, level, xz.y);
+    float distance = max(length(to_camera), 1.0);
+    float horizontal = max(length(to_camera.xz), 1e-4);
+    float elevation = max(to_camera.y, 0.0) / horizontal;
+    WaveLod lod;
+    lod.spacing = vertex_spacing(distance);
+    lod.toward = to_camera.xz / horizontal;
+    lod.across = lod.spacing / 3.0;  // vertices are 3 pixels apart
+    float meets = elevation + visible_slopes(elevation, sqrt(0.5 * mean_square_slope)).x;
+    lod.along = lod.across * min(sqrt(1.0 + 1.0 / max(meets * meets, 1e-4)), 100.0);
+    return lod;
 }
 #endif

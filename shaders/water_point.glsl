@@ -67,6 +67,37 @@ float wave_lod_fade(float wavelength, float spacing) {
     return smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
 }
 
+// Render LOD at a point of water: the vertex spacing (m; 0 for no LOD, as queries) and
+// the footprint of a pixel there on the rest plane: one pixel across the view (m), and
+// along it (m), stretched by the angle at which the view meets the water (wave_lod_at);
+// `toward` is the horizontal direction to the camera.
+struct WaveLod {
+    float spacing;
+    vec2 toward;
+    float along;
+    float across;
+};
+
+WaveLod no_wave_lod() { return WaveLod(0.0, vec2(1.0, 0.0), 0.0, 0.0); }
+
+// The share of a wave that survives a pixel's average over its footprint: the box
+// filter's sinc(x / 2) in its Gaussian fit exp(-x^2 / 24) (no negative lobes), x the
+// phase the wave turns through from one pixel to the next along and across the view.
+// Anisotropic: at grazing angles waves running toward the camera fade first.
+float pixel_keeps(vec2 kvec, WaveLod lod) {
+    float along = dot(kvec, lod.toward) * lod.along;
+    float across = dot(kvec, vec2(-lod.toward.y, lod.toward.x)) * lod.across;
+    return exp(-(along * along + across * across) / 24.0);
+}
+
+// The share of a wave the mesh draws: what the vertices resolve (wave_lod_fade) and the
+// pixel resolves (pixel_keeps); the rest goes into the shading's slope variance, so that
+// geometry hands over to the filtered normal distribution without aliasing.
+float wave_lod_weight(vec2 kvec, WaveLod lod) {
+    if (lod.spacing <= 0.0) return 1.0;
+    return wave_lod_fade(6.2831853 / length(kvec), lod.spacing) * pixel_keeps(kvec, lod);
+}
+
 float newton_tolerance(float max_offset) {
     return max(kNewtonToleranceFloor, kNewtonToleranceScale * max_offset);
 }

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "test_helpers.hpp"
+#include "tidewater/gerstner.hpp"
 
 namespace tidewater {
 namespace {
@@ -87,6 +88,19 @@ TEST(WaveSet, SummaryMeasures) {
     EXPECT_NEAR(set->max_elevation(), 0.7, 1e-15);
     EXPECT_NEAR(set->max_horizontal_displacement(), 0.15 + 0.1, 1e-15);
     EXPECT_NEAR(set->significant_wave_height(), 4.0 * std::sqrt(0.5 * (0.09 + 0.16)), 1e-12);
+    // The mean square slope is what the surface shows: |d eta / d x0|^2 averaged over a
+    // 40 m square (whole wavelengths of both waves) is the sum of (kA)^2 / 2, within 1%.
+    double sum = 0.0;
+    int n = 0;
+    for (double z = 0.05; z < 40.0; z += 0.1)
+        for (double x = 0.05; x < 40.0; x += 0.1) {
+            const glm::dvec2 slope = evaluate_lagrangian(*set, {x, z}, 3.0).slope;
+            sum += slope.x * slope.x + slope.y * slope.y;
+            ++n;
+        }
+    const double k1 = kTwoPi / 10.0, k2 = kTwoPi / 20.0;
+    EXPECT_NEAR(set->mean_square_slope(), 0.5 * (k1 * k1 * 0.09 + k2 * k2 * 0.16), 1e-12);
+    EXPECT_NEAR(sum / n, set->mean_square_slope(), 0.01 * set->mean_square_slope());
 }
 
 }  // namespace

@@ -643,12 +643,13 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
 // The far field does not sparkle: in the 30 rows under the horizon, a 640 x 360 frame of
 // the open sea against the same frame rendered at 4x and box-filtered (mean per
 // channel), and two frames 1/60 s apart against the supersampled pair. From 400 m the
-// difference is within 0.02 (0.0041; 0.026 unfiltered); from 12 m it is 0.037 (0.063
-// unfiltered), short of 0.02: there each row's mean agrees within 0.02 from the seventh
-// row down, and what differs is the edges of the waves the geometry draws (crest lines
-// a pixel wide), which shading cannot filter; the bound guards what the filtering
-// reached. From both heights the frame-to-frame change is at most twice the
-// supersampled pair's (it was three times from 12 m unfiltered).
+// difference is within 0.02 (0.0022; 0.026 unfiltered). From 12 m it is 0.028 (0.063
+// unfiltered), short of 0.02: the rows from 150 m to 7 km out, where a pixel spans up to
+// 100 m along the view, keep what the filtered model cannot reproduce of the 4x frame's
+// waves (crests hiding troughs, foam on the crests it sees: without foam the band is
+// 0.021); the bound guards what the filtering reached. From both heights the
+// frame-to-frame change is at most twice the supersampled pair's (it was three times
+// from 12 m unfiltered).
 TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
@@ -670,7 +671,7 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
         const double flicker = band_difference(small, small_next, horizon + 1, horizon + 31);
         const double truth_flicker = band_difference(truth, truth_next, horizon + 1, horizon + 31);
         std::printf("from %.0f m: far band 1x vs 4x %.4f; frame to frame %.4f (supersampled %.4f)\n", height, alias, flicker, truth_flicker);
-        EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.04) << "from " << height << " m";
+        EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.03) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
     }
 }

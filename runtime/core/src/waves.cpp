@@ -111,4 +111,10 @@ double WaveSet::significant_wave_height() const {
     return 4.0 * std::sqrt(m0);
 }
 
+double WaveSet::mean_square_slope() const {
+    double sum = 0.0;
+    for (const Wave& w : waves_) sum += 0.5 * (w.k * w.amplitude) * (w.k * w.amplitude);
+    return sum;
+}
+
 }  // namespace tidewater

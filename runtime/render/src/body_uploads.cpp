@@ -147,6 +147,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.patch_grid = glm::vec4(grid.z, grid.w, grid.x, grid.y);
         d.body = glm::vec4(static_cast<float>(gpu::kBodyOcean), static_cast<float>(scene.water_level()), 0.0f, static_cast<float>(ocean_count));
         d.extra = glm::vec4(static_cast<float>(scene.ocean.whitecap_jacobian()), 0.0f, 0.0f, static_cast<float>(displacement(scene.ocean)));
+        d.lod.x = static_cast<float>(scene.ocean.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 0);
         gpu_ripples(scene.ocean, time, origin, d.ripple, d.ripple_offset);
@@ -175,6 +176,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_texel));
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), 0.0f, 0.0f);
         d.extra = glm::vec4(static_cast<float>(lake.whitecap_jacobian()), static_cast<float>(b.first_patch), 0.0f, static_cast<float>(displacement(lake)));
+        d.lod.x = static_cast<float>(lake.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 1 + l);
         gpu_ripples(lake, time, origin, d.ripple, d.ripple_offset);
@@ -204,6 +206,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
                             static_cast<float>(out.river_waves.size() - first_wave));
         d.extra = glm::vec4(static_cast<float>(preset.whitecap_jacobian()), static_cast<float>(b.first_patch), static_cast<float>(b.surface_rise),
                             static_cast<float>(displacement(preset) + (still_count > 0 ? displacement(still) : 0.0)));
+        d.lod.x = static_cast<float>(preset.waves().mean_square_slope() + (still_count > 0 ? still.waves().mean_square_slope() : 0.0));
         d.rivers = rivers;
         if (into_ocean) use_shore(d, 0);
         if (into_lake) use_shore(d, 1 + static_cast<std::size_t>(river.receiver));

@@ -67,6 +67,9 @@ public:
     double max_elevation() const;
     /// 4*sqrt(sum(A^2)/2): significant wave height of the set, m.
     double significant_wave_height() const;
+    /// sum((k*A)^2)/2: the mean square slope of the linear surface, both axes together
+    /// (Cox and Munk's total slope variance).
+    double mean_square_slope() const;
 
 private:
     std::vector<Wave> waves_;
