@@ -64,6 +64,22 @@ TW_CONST uint kFlowStaggerSeed = 101u;
 // width of kFoamRampFraction * (1 - J*), so foam >= 1/2 exactly where J < J*.
 TW_CONST float kFoamRampFraction = 0.5f;
 
+// Wakes (tidewater/wakes.hpp, shaders/wake_point.glsl). A wake wave's Q k A is held to
+// at most kWakeFoldLimit so that a wake never folds the surface on its own; turbulence
+// foam decays over kWakeFoamLifetime seconds and spreads as kWakeFoamSpread sqrt(age)
+// metres beyond half the source's size. A frame holds at most kMaxWakePoints points.
+TW_CONST float kWakeFoldLimit = 0.5f;
+TW_CONST float kWakeFoamLifetime = 30.0f;  // s
+TW_CONST float kWakeFoamSpread = 0.6f;     // m / sqrt(s)
+TW_CONST uint kMaxWakePoints = 4096u;
+
+// One disturbance of a wake as the GPU reads it (8 floats). Chains are stored oldest
+// first; `linked` says the next point continues the chain (a segment joins them).
+struct GpuWakePoint {
+    vec4 position_age;  // xy: world xz relative to the render origin (m), z: age (s), w: strength (m^4/s^2; a lone point's impulse, m^4/s)
+    vec4 shape;         // x: source size (m), y: steepness Q, z: turbulence (0..1, when made), w: linked (1) or last of its chain (0)
+};
+
 // One Gerstner wave. Phases are not stored: the host reduces them in double
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
 struct GpuWave {
@@ -200,6 +216,7 @@ struct GpuShoreTexel {
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuWave) == 32);
+static_assert(sizeof(GpuWakePoint) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuRiverWave) == 32);
 static_assert(sizeof(GpuQueryResult) == 80);

@@ -9,6 +9,7 @@
 #include "kernel/kernel_select.hpp"
 #include "parallel.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/wakes.hpp"
 #include "water/shore_order.hpp"
 
 namespace tidewater {
@@ -50,6 +51,12 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
             detail::prepare_body_waves<float>(body, time);
         detail::KernelInput in;
         in.waves = &waves;
+        detail::PreparedWakes<float> wakes;
+        if (options.wakes != nullptr) {
+            if (auto st = options.wakes->validate("query: wakes"); !st) return st;
+            wakes = detail::prepare_wakes<float>(*options.wakes, time, options.exclude_emitter);
+            in.wakes = &wakes;
+        }
         if (const auto& shore = body.shore(); shore && !shore->trivial()) in.shore = shore.get();
         const SolveFn solve = detail::query_kernel().solve;
         if (in.shore != nullptr && points.size() >= detail::kShoreOrderMinPoints && points.size() <= UINT32_MAX) {

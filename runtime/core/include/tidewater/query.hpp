@@ -44,6 +44,8 @@ struct SurfacePoint {
     /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian, the body's J*)). The water shader
     /// adds visual detail on top (foam riding the crests, swash bands along the coast).
     double foam = 0.0;
+    /// The wakes' share of the height, m (QueryOptions::wakes; the scene's boats in query_world).
+    double wake = 0.0;
     int iterations = 0;              ///< Newton evaluations used.
     bool converged = true;
 };
@@ -53,9 +55,16 @@ namespace detail {
 inline bool surface_wet(double height, double level, double depth) { return height > level - depth; }
 }  // namespace detail
 
+struct Wakes;
+
 struct QueryOptions {
     /// Worker threads; 0 uses every hardware thread. Small batches run on the caller's thread.
     unsigned threads = 1;
+    /// Wakes on the water (tidewater/wakes.hpp): their waves join the body's in the one
+    /// evaluation and their turbulence adds foam. Only read; must outlive the call.
+    const Wakes* wakes = nullptr;
+    /// Leave this emitter's wakes out (a boat riding its own wake); -1: none.
+    int exclude_emitter = -1;
 };
 
 /// Full surface state at each point (x, z) at clock time `time` (the body's

@@ -74,6 +74,7 @@ struct NumberOps<TIDEWATER_KERNEL_NS::FloatBatch> {
         c = sc.second;
     }
     static T sqrt(const T& x) { return xsimd::sqrt(x); }
+    static T exp(const T& x) { return xsimd::exp(x); }
     static T round(const T& x) { return xsimd::nearbyint(x); }
     /// The hardware estimate and one Newton step: about 2e-7 relative, without the
     /// latency of a square root and a division.
@@ -105,9 +106,22 @@ namespace tidewater::detail::TIDEWATER_KERNEL_NS {
 using Ops = NumberOps<FloatBatch>;
 inline constexpr std::size_t kLanes = Ops::kLanes;
 
+/// What the wakes left at the finished lanes: their share of the height and their foam.
+struct WakeLanes {
+    double eta[kLanes] = {}, foam[kLanes] = {};
+};
+
+template <typename Water>
+WakeLanes wake_lanes(const Water& water, const PreparedWakes<float>& wakes) {
+    WakeLanes out;
+    store_lanes(water.eta, out.eta);
+    store_lanes(wakes_foam(wakes, water.rest_x, water.rest_z), out.foam);
+    return out;
+}
+
 template <bool kFull>
 void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, const ShoreWater<FloatBatch>* shore,
-                   std::size_t used, SurfacePoint* full, double* heights) {
+                   std::size_t used, SurfacePoint* full, double* heights, const WakeLanes* wakes) {
     if constexpr (!kFull) {
         double eta[kLanes];
         store_lanes(point_state(r).eta, eta);
@@ -129,6 +143,10 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, con
             o.shore_distance = shore ? distance[l] : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
             o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], in.waves->whitecap_jacobian);
+            if (wakes) {
+                o.wake = wakes->eta[l];
+                o.foam = o.foam > wakes->foam[l] ? o.foam : wakes->foam[l];
+            }
         }
     }
 }
@@ -149,14 +167,35 @@ void solve_points(const KernelInput& in, const glm::dvec2* points, std::size_t n
         }
         SurfacePoint* out_full = full ? full + start : nullptr;
         double* out_heights = heights ? heights + start : nullptr;
-        if (in.shore) {
+        if (in.wakes && !in.wakes->empty()) {
+            // The wakes join whichever water this is, at the same rest positions.
+            alignas(64) float wx[kLanes], wz[kLanes];
+            for (std::size_t l = 0; l < kLanes; ++l) {
+                wx[l] = static_cast<float>(px[l] - in.wakes->origin.x);
+                wz[l] = static_cast<float>(pz[l] - in.wakes->origin.y);
+            }
+            const double radius = w.radius + in.wakes->displacement_bound;
+            if (in.shore) {
+                ShoreWater<FloatBatch> shore(w, *in.shore, px, pz, base);
+                WakeWater<ShoreWater<FloatBatch>, FloatBatch, float> water(shore, *in.wakes, Ops::load(wx), Ops::load(wz));
+                const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, radius);
+                const WakeLanes lanes = wake_lanes(water, *in.wakes);
+                write_results<kFull>(in, r, &shore, used, out_full, out_heights, &lanes);
+            } else {
+                OpenSeaWater<FloatBatch> open(w, base);
+                WakeWater<OpenSeaWater<FloatBatch>, FloatBatch, float> water(open, *in.wakes, Ops::load(wx), Ops::load(wz));
+                const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, radius);
+                const WakeLanes lanes = wake_lanes(water, *in.wakes);
+                write_results<kFull>(in, r, nullptr, used, out_full, out_heights, &lanes);
+            }
+        } else if (in.shore) {
             ShoreWater<FloatBatch> water(w, *in.shore, px, pz, base);
             const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, w.radius);
-            write_results<kFull>(in, r, &water, used, out_full, out_heights);
+            write_results<kFull>(in, r, &water, used, out_full, out_heights, nullptr);
         } else {
             OpenSeaWater<FloatBatch> water(w, base);
             const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, w.radius);
-            write_results<kFull>(in, r, nullptr, used, out_full, out_heights);
+            write_results<kFull>(in, r, nullptr, used, out_full, out_heights, nullptr);
         }
     }
 }

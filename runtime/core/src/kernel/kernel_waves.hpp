@@ -8,6 +8,7 @@
 #include "tidewater/query.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "water/prepared_waves.hpp"
+#include "water/wake_water.hpp"
 
 namespace tidewater::detail {
 
@@ -16,6 +17,7 @@ namespace tidewater::detail {
 struct KernelInput {
     const PreparedWaves<float>* waves = nullptr;
     const ShoreWaves* shore = nullptr;
+    const PreparedWakes<float>* wakes = nullptr;  ///< null or empty: none
 };
 
 struct RiverBake;

@@ -45,6 +45,10 @@ struct NumberOps {
         using std::sqrt;
         return sqrt(x);
     }
+    static T exp(const T& x) {
+        using std::exp;
+        return exp(x);
+    }
     /// The nearest integer (ties to even).
     static T round(const T& x) {
         using std::nearbyint;

@@ -1,0 +1,129 @@
+// Wakes at one instant laid out for evaluation, and the water with them (private).
+// The formula is detail/wake_point.hpp; this walks the chains and lone points.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "tidewater/detail/wake_point.hpp"
+#include "tidewater/wakes.hpp"
+
+namespace tidewater::detail {
+
+/// `Scalar` is float for the SIMD kernel and double for one-off evaluations. Positions
+/// are relative to `origin` (near the wakes), ages are reduced in double: float keeps
+/// sub-millimetre positions and micro-radian phases over kilometres of wake.
+template <typename Scalar>
+struct PreparedWakes {
+    glm::dvec2 origin{0.0};
+    /// Points in chain order, oldest first. linked[i]: point i + 1 continues i's chain.
+    std::vector<Scalar> x, z, age, strength, size, steepness, turbulence;
+    std::vector<unsigned char> linked;
+    /// How far the wakes can move a particle sideways (an estimate, m): widens the
+    /// Eulerian solve's search radius.
+    double displacement_bound = 0.0;
+    bool empty() const { return x.empty(); }
+};
+
+/// The share of its strength (and turbulence) a point keeps at `age`: all until the last
+/// fifth of `max_age`, then a smoothstep to none.
+double wake_age_fade(double age, double max_age);
+
+/// The wakes at clock time `time`, leaving out emitter `exclude` (-1: none). Points not
+/// yet made are left out; chains keep their order.
+template <typename Scalar>
+PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude = -1);
+
+/// Adds every chain segment and lone point of `w` at rest position (x, z) (relative to
+/// w.origin) to `s`.
+template <bool kVelocity, typename T, typename Scalar>
+void add_wakes(SurfaceSums<T>& s, const PreparedWakes<Scalar>& w, const T& x, const T& z) {
+    const std::size_t n = w.x.size();
+    WakeWave<T> last{};
+    for (std::size_t i = 0; i < n; ++i) {
+        const WakeWave<T> here = wake_wave(x - T(w.x[i]), z - T(w.z[i]), T(w.age[i]), T(w.size[i]));
+        const bool after = i > 0 && w.linked[i - 1];   // i closes a segment from i - 1
+        const bool before = w.linked[i] != 0;           // i opens a segment to i + 1
+        if (after) {
+            add_wake_segment<kVelocity>(s, last, here, T(w.strength[i - 1]), T(w.strength[i]), T(w.steepness[i - 1]),
+                                        T(w.steepness[i]), T(w.age[i - 1] - w.age[i]));
+        } else if (!before) {
+            add_wake_point<kVelocity>(s, here, T(w.strength[i]), T(w.steepness[i]));
+        }
+        last = here;
+    }
+}
+
+/// The foam the wakes' turbulence leaves at (x, z): the most of any segment's (its
+/// turbulence, age and size interpolated at the nearest point) or lone point's.
+template <typename T, typename Scalar>
+T wakes_foam(const PreparedWakes<Scalar>& w, const T& x, const T& z) {
+    using Ops = NumberOps<T>;
+    T foam(0.0);
+    const std::size_t n = w.x.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (w.turbulence[i] <= Scalar(0) && (i + 1 >= n || !w.linked[i] || w.turbulence[i + 1] <= Scalar(0))) continue;
+        const bool before = w.linked[i] != 0 && i + 1 < n;
+        const Scalar bx = before ? w.x[i + 1] - w.x[i] : Scalar(0), bz = before ? w.z[i + 1] - w.z[i] : Scalar(0);
+        const Scalar len2 = bx * bx + bz * bz;
+        const T px = x - T(w.x[i]), pz = z - T(w.z[i]);
+        T f(0.0);
+        if (len2 > Scalar(0)) {
+            T t = (px * T(bx) + pz * T(bz)) * T(Scalar(1) / len2);
+            t = Ops::select(t < T(0.0), T(0.0), Ops::select(t > T(1.0), T(1.0), t));
+            const T dx = px - t * T(bx), dz = pz - t * T(bz);
+            const T d = Ops::sqrt(dx * dx + dz * dz);
+            const T age = T(w.age[i]) + t * T(w.age[i + 1] - w.age[i]);
+            const T size = T(w.size[i]) + t * T(w.size[i + 1] - w.size[i]);
+            const T turbulence = T(w.turbulence[i]) + t * T(w.turbulence[i + 1] - w.turbulence[i]);
+            f = wake_foam(d, age, size, turbulence);
+        } else if (!(i > 0 && w.linked[i - 1])) {
+            f = wake_foam(Ops::sqrt(px * px + pz * pz), T(w.age[i]), T(w.size[i]), T(w.turbulence[i]));
+        }
+        foam = Ops::select(f > foam, f, foam);
+    }
+    return foam;
+}
+
+/// Some water (an OpenSeaWater, a ShoreWater) with the wakes added at the same rest
+/// position: a provider for solve_rest_offset. (x, z): the query points relative to the
+/// wakes' origin. It keeps, for the lanes that finish, the wakes' share of the height and
+/// the rest position (for their foam).
+template <typename Inner, typename T, typename Scalar>
+class WakeWater {
+public:
+    using Ops = NumberOps<T>;
+    WakeWater(Inner& inner, const PreparedWakes<Scalar>& wakes, const T& x, const T& z) : inner_(inner), wakes_(wakes), x_(x), z_(z) {}
+
+    template <bool kVelocity>
+    SurfaceSums<T> evaluate(const T& ex, const T& ez) {
+        SurfaceSums<T> s = inner_.template evaluate<kVelocity>(ex, ez);
+        SurfaceSums<T> wake;
+        add_wakes<kVelocity>(wake, wakes_, x_ + ex, z_ + ez);
+        add_scaled(s, wake, T(1.0));
+        last_eta_ = wake.eta;
+        last_ex_ = ex;
+        last_ez_ = ez;
+        return s;
+    }
+
+    void record(typename Ops::Mask m) {
+        inner_.record(m);
+        eta = Ops::select(m, last_eta_, eta);
+        rest_x = Ops::select(m, x_ + last_ex_, rest_x);
+        rest_z = Ops::select(m, z_ + last_ez_, rest_z);
+    }
+
+    T eta = T(0.0);                   ///< the wakes' share of the height at the finish, m
+    T rest_x = T(0.0), rest_z = T(0.0);  ///< the rest position there, relative to the origin
+
+private:
+    Inner& inner_;
+    const PreparedWakes<Scalar>& wakes_;
+    T x_, z_;
+    T last_eta_ = T(0.0), last_ex_ = T(0.0), last_ez_ = T(0.0);
+};
+
+}  // namespace tidewater::detail
