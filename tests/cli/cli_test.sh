@@ -60,10 +60,10 @@ case "$CASE" in
   query_columns)
     "$TW" query --time 2.5 --points points.csv > out.csv
     check "exit 0" test $? -eq 0
-    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z"
+    check "header" test "$(head -1 out.csv)" = "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake"
     check "one row per point" test "$(wc -l < out.csv)" -eq 4
     check "rows echo the points" bash -c "sed -n 3p out.csv | grep -q '^12.5,-3,'"
-    check "seventeen columns" bash -c "awk -F, 'NR>1 && NF!=17 {bad=1} END {exit bad}' out.csv"
+    check "eighteen columns" bash -c "awk -F, 'NR>1 && NF!=18 {bad=1} END {exit bad}' out.csv"
     check "bodies: none on the island's middle, the ocean offshore; no current in the ocean" bash -c "sed -n 2p out.csv | awk -F, '{exit !(\$15 == \"\")}' && sed -n 4p out.csv | awk -F, '{exit !(\$15 == \"ocean\" && \$16 == 0 && \$17 == 0)}'"
     check "the island's middle is dry land, far offshore is wet" bash -c "sed -n 2p out.csv | awk -F, '{exit !(\$13 == 0 && \$11 < 0)}' && sed -n 4p out.csv | awk -F, '{exit !(\$13 == 1)}'"
     check "unit normals" bash -c "awk -F, 'NR>1 { n=\$4*\$4+\$5*\$5+\$6*\$6; if (n<0.999999 || n>1.000001) bad=1 } END {exit bad}' out.csv"
@@ -97,7 +97,7 @@ JSON
   query_times)
     "$TW" query --times 0:1:0.25 --points points.csv --out long.csv
     check "exit 0" test $? -eq 0
-    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z"
+    check "leading t column" test "$(head -1 long.csv)" = "t,x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake"
     check "5 times x 3 points" test "$(wc -l < long.csv)" -eq 16
     check "last time is 1" bash -c "tail -1 long.csv | grep -q '^1,'"
     # The row for t = 0.5 equals a single-time query at 0.5.

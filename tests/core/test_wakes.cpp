@@ -3,8 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "host_device.h"
 #include "test_helpers.hpp"
+#include "tidewater/scene.hpp"
+#include "tidewater/scene_bake.hpp"
 #include "tidewater/wakes.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater {
 namespace {
@@ -203,6 +207,231 @@ TEST(Wakes, CuspAndTransverseWavesDecayAsKelvinsIntegral) {
     EXPECT_NEAR(off_exponent, integral_off_exponent, 0.05);
     EXPECT_NEAR(cusp_exponent, -1.0 / 3.0, 0.05);
     EXPECT_NEAR(off_exponent, -0.5, 0.05);
+}
+
+/// Heights of `wakes` on calm water at `time`.
+std::vector<double> wake_heights(const Wakes& wakes, double time, const std::vector<glm::dvec2>& points) {
+    std::vector<double> h(points.size());
+    QueryOptions options;
+    options.wakes = &wakes;
+    options.threads = 0;
+    EXPECT_TRUE(query_heights(test::make_body({}), time, points, h, options).ok());
+    return h;
+}
+
+double largest(const std::vector<double>& v) {
+    double m = 0.0;
+    for (double x : v) m = std::max(m, std::abs(x));
+    return m;
+}
+
+/// A grid behind a boat that sailed +x to `head`: 4 to 24 hull lengths back, out to 12 beside.
+std::vector<glm::dvec2> grid_behind(glm::dvec2 head, double length) {
+    std::vector<glm::dvec2> points;
+    for (double x = 4.0; x <= 24.0; x += 0.37) // 0.37 hull lengths: not a multiple of the spacing
+        for (double z = -12.0; z <= 12.0; z += 0.37) points.push_back(head + length * glm::dvec2(-x, z));
+    return points;
+}
+
+// No scallops: the chains' points (every L / 16) give the wake of a continuous track. The
+// same boat with points four times as dense differs by under 5% of the wake's height.
+TEST(Wakes, PointSpacingLeavesNoScallops) {
+    SceneBoat boat;
+    boat.path = {{0.0, 0.0}, {5000.0, 0.0}};
+    boat.speed = 5.0;
+    boat.hull = {20.0, 6.0, 1.5};
+    const double time = 120.0;
+    Wakes wakes;
+    scripted_boat_wake(boat, 0, time, wakes);
+    // Four times as dense: every segment split in four, strength and emission time linear.
+    Wakes dense = wakes;
+    for (WakeChain& c : dense.chains) {
+        std::vector<DisturbancePoint> points;
+        for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+            for (int j = 0; j < 4; ++j) {
+                DisturbancePoint p = c.points[i];
+                const double f = j / 4.0;
+                p.position = glm::mix(c.points[i].position, c.points[i + 1].position, f);
+                p.emitted = glm::mix(c.points[i].emitted, c.points[i + 1].emitted, f);
+                points.push_back(p);
+            }
+        points.push_back(c.points.back());
+        c.points = points;
+    }
+    std::erase_if(dense.chains, [](const WakeChain& c) { return c.points.front().strength == 0.0; });
+    std::erase_if(wakes.chains, [](const WakeChain& c) { return c.points.front().strength == 0.0; });
+    const auto grid = grid_behind({boat.speed * time, 0.0}, boat.hull.length);
+    const std::vector<double> a = wake_heights(wakes, time, grid), b = wake_heights(dense, time, grid);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+    std::printf("wake height %.3f m; points every L/16 against L/64: %.4f m apart at most (%.2f%%)\n", largest(b), worst,
+                100.0 * worst / largest(b));
+    EXPECT_GT(largest(b), 0.05);
+    EXPECT_LT(worst, 0.05 * largest(b));
+}
+
+// The same wake whatever the frame rate: a host feeding the boat's poses at 30, 60 or 144
+// frames a second (BoatWakeEmitter) lays the same points as the scripted boat, and the
+// surfaces agree within 1 mm.
+TEST(Wakes, FrameRateDoesNotChangeTheWake) {
+    SceneBoat boat;
+    boat.path = {{0.0, 0.0}, {300.0, 0.0}, {600.0, 200.0}};
+    boat.speed = 5.0;
+    boat.hull = {20.0, 6.0, 1.5};
+    const double time = 100.0;
+    Wakes scripted;
+    scripted_boat_wake(boat, 3, time, scripted);
+    const auto grid = grid_behind({450.0, 100.0}, 10.0);
+    const std::vector<double> reference = wake_heights(scripted, time, grid);
+    ASSERT_GT(largest(reference), 0.05) << "the grid is in the wake";
+    for (const double rate : {30.0, 60.0, 144.0}) {
+        BoatWakeEmitter emitter(boat.hull, 3);
+        const int frames = static_cast<int>(std::round(time * rate));
+        for (int f = 0; f <= frames; ++f) {
+            const double t = f / rate;
+            glm::dvec2 at;
+            double heading = 0.0;
+            boat.pose_at(t, at, heading);
+            ASSERT_TRUE(emitter.advance(at, heading, t).ok());
+        }
+        Wakes fed;
+        emitter.append_to(fed, time);
+        const std::vector<double> h = wake_heights(fed, time, grid);
+        double worst = 0.0;
+        for (std::size_t i = 0; i < h.size(); ++i) worst = std::max(worst, std::abs(h[i] - reference[i]));
+        std::printf("%.0f frames/s: %zu points against %zu scripted; surfaces %.5f m apart at most\n", rate, fed.point_count(),
+                    scripted.point_count(), worst);
+        EXPECT_LT(worst, 1e-3) << rate << " frames/s";
+    }
+}
+
+// Points appearing at the bow and expiring at the tail change the surface by under 1 mm:
+// just before and just after a point is laid, and just before and after the oldest point
+// ages out, the wake differs by less than 1 mm (the waves themselves move 10 us apart).
+TEST(Wakes, PointsAppearAndExpireWithoutAJump) {
+    SceneBoat boat;
+    boat.path = {{0.0, 0.0}, {5000.0, 0.0}};
+    boat.speed = 5.0;
+    boat.hull = {20.0, 6.0, 1.5};
+    const BoatWakeShape shape = boat_wake_shape(boat.hull);
+    const double laid = 100.0 * shape.bow_spacing / boat.speed;  // the 100th bow point
+    const double eps = 1e-5;
+    auto jump = [&](double t, const std::vector<glm::dvec2>& points) {
+        Wakes before, after;
+        scripted_boat_wake(boat, 0, t - eps, before);
+        scripted_boat_wake(boat, 0, t + eps, after);
+        const std::vector<double> a = wake_heights(before, t - eps, points), b = wake_heights(after, t + eps, points);
+        double worst = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+        // Whether a bow point was laid or dropped in between.
+        const WakeChain &b0 = before.chains.front(), &a0 = after.chains.front();
+        const bool laid_or_dropped = b0.points.front().emitted != a0.points.front().emitted ||
+                                     b0.points[b0.points.size() - 2].emitted != a0.points[a0.points.size() - 2].emitted;
+        return std::pair{worst, laid_or_dropped};
+    };
+    std::vector<glm::dvec2> near_bow;
+    for (double x = -30.0; x <= 30.0; x += 1.3)
+        for (double z = -30.0; z <= 30.0; z += 1.3) near_bow.push_back(glm::dvec2(boat.speed * laid, 0.0) + glm::dvec2(x, z));
+    const auto [appear, changed] = jump(laid, near_bow);
+    // The oldest bow point (laid at time 0) ages out at the chains' max age.
+    const double expiry = 360.0;
+    std::vector<glm::dvec2> near_tail;
+    for (double x = -60.0; x <= 60.0; x += 2.1)
+        for (double z = -60.0; z <= 60.0; z += 2.1) near_tail.push_back(glm::dvec2(x, z));
+    const auto [expire, dropped] = jump(expiry, near_tail);
+    std::printf("a point laid: the wake moves %.6f m; a point expiring: %.6f m\n", appear, expire);
+    EXPECT_TRUE(changed);
+    EXPECT_TRUE(dropped);
+    EXPECT_LT(appear, 1e-3);
+    EXPECT_LT(expire, 1e-3);
+}
+
+std::string scene_with_boats(const std::string& boats) {
+    return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm", "boats": )" + boats + "}";
+}
+
+// A scene's boats: query_world adds their wakes (the wake column is their share of the
+// height), and a boat can leave its own wake out (emitter = its index).
+TEST(Wakes, SceneBoatsJoinTheWorldQueries) {
+    auto scene = parse_scene(scene_with_boats(R"([{"name": "tug", "path": [[0, 0], [2000, 0]], "speed": 5.0, "length": 20.0,
+                                                    "beam": 6.0, "draft": 1.5, "start": 0.0}])"),
+                             "s.json");
+    ASSERT_TRUE(scene) << scene.error().message;
+    ASSERT_EQ(scene->boats.size(), 1u);
+    auto baked = bake_scene(*scene);
+    ASSERT_TRUE(baked) << baked.error().message;
+    const double time = 60.0;  // the tug is at x = 300
+    std::vector<glm::dvec2> points;
+    for (double x = 100.0; x <= 280.0; x += 7.0)
+        for (double z = -60.0; z <= 60.0; z += 7.0) points.push_back({x, z});
+    std::vector<WorldPoint> with(points.size()), without(points.size());
+    ASSERT_TRUE(query_world(**baked, time, points, with).ok());
+    QueryOptions own;
+    own.exclude_emitter = 0;
+    ASSERT_TRUE(query_world(**baked, time, points, without, own).ok());
+    double biggest = 0.0, mismatch = 0.0, rest = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        biggest = std::max(biggest, std::abs(with[i].surface.wake));
+        mismatch = std::max(mismatch, std::abs(with[i].surface.height - without[i].surface.height - with[i].surface.wake));
+        rest = std::max(rest, std::abs(without[i].surface.wake));
+    }
+    std::printf("the tug's wake: up to %.3f m; the heights with and without it differ by the wake column within %.4f m\n", biggest,
+                mismatch);
+    EXPECT_GT(biggest, 0.1);
+    EXPECT_EQ(rest, 0.0);
+    // The pool's ripples are small: the height with the wake is the height without it plus
+    // the wake (the solved points differ by the wake's sideways displacement).
+    EXPECT_LT(mismatch, 0.02);
+}
+
+// Bad boats and wakes are refused with the file and JSON path (or the field).
+TEST(Wakes, BadBoatsAndWakesAreRefusedByName) {
+    const std::string good = R"("name": "tug", "path": [[0, 0], [500, 0]], "length": 20, "beam": 6, "draft": 1.5)";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"[{" + good + R"(, "speed": -5}])", "s.json: /boats/0/speed"},
+        {R"([{"name": "tug", "path": [[0, 0], [500, 0]], "speed": 5, "length": -20, "beam": 6, "draft": 1.5}])", "s.json: /boats/0/length"},
+        {R"([{"name": "tug", "path": [[0, 0]], "speed": 5, "length": 20, "beam": 6, "draft": 1.5}])", "s.json: /boats/0/path"},
+        {"[{" + good + R"(, "speed": "nan"}])", "s.json: /boats/0/speed"},
+        {"[{" + good + R"(, "speed": 5, "hull": 3}])", "hull"},
+        {R"([{"name": "skiff", "path": [[0, 0], [500, 0]], "speed": 20, "length": 3, "beam": 1.5, "draft": 0.3}])",
+         "s.json: /boats/0"},
+    };
+    for (const auto& [boats, expected] : cases) {
+        auto scene = parse_scene(scene_with_boats(boats), "s.json");
+        ASSERT_FALSE(scene) << boats;
+        EXPECT_NE(scene.error().message.find(expected), std::string::npos) << scene.error().message;
+    }
+    Wakes wakes;
+    wakes.chains.push_back({});
+    wakes.chains[0].points.resize(2);
+    wakes.chains[0].points[1].emitted = 1.0;
+    wakes.chains[0].points[1].source_size = std::nan("");
+    const Status nan_size = wakes.validate("w");
+    ASSERT_FALSE(nan_size.ok());
+    EXPECT_NE(nan_size.error().message.find("w: chains[0].points[1]: source_size"), std::string::npos) << nan_size.error().message;
+    wakes.chains[0].points[1].source_size = 1.0;
+    wakes.chains[0].points[1].emitted = 0.0;
+    const Status order = wakes.validate("w");
+    ASSERT_FALSE(order.ok());
+    EXPECT_NE(order.error().message.find("not after"), std::string::npos) << order.error().message;
+    wakes.chains[0].points[1].emitted = 1.0;
+    wakes.chains[0].points.resize(gpu::kMaxWakePoints + 1);
+    for (std::size_t i = 0; i < wakes.chains[0].points.size(); ++i) wakes.chains[0].points[i].emitted = double(i);
+    const Status many = wakes.validate("w");
+    ASSERT_FALSE(many.ok());
+    EXPECT_NE(many.error().message.find("4097 disturbance points"), std::string::npos) << many.error().message;
+    // A query with bad wakes is refused the same way.
+    std::vector<glm::dvec2> p{{0.0, 0.0}};
+    std::vector<double> h(1);
+    QueryOptions options;
+    options.wakes = &wakes;
+    const Status refused = query_heights(test::make_body({}), 1.0, p, h, options);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("query: wakes"), std::string::npos) << refused.error().message;
+    BoatWakeEmitter emitter(BoatHull{}, 1);
+    ASSERT_TRUE(emitter.advance({0.0, 0.0}, 0.0, 1.0).ok());
+    EXPECT_FALSE(emitter.advance({1.0, 0.0}, 0.0, 1.0).ok()) << "time must increase";
+    EXPECT_FALSE(emitter.advance({std::nan(""), 0.0}, 0.0, 2.0).ok());
 }
 
 }  // namespace

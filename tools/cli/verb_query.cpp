@@ -37,10 +37,10 @@ void write_rows(std::string& buffer, const Sink& sink, const Scene& scene, const
     for (std::size_t i = 0; i < points.size(); ++i) {
         const SurfacePoint& s = results[i].surface;
         if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
-        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g},{},{:.6g},{:.6g}\n",
+        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g},{},{:.6g},{:.6g},{:.6g}\n",
                        points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
                        s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.shore_distance, s.wet ? 1 : 0, s.foam,
-                       body_name(scene, results[i].body), results[i].flow.x, results[i].flow.y);
+                       body_name(scene, results[i].body), results[i].flow.x, results[i].flow.y, s.wake);
         if (buffer.size() > (1u << 20)) {
             sink(buffer);
             buffer.clear();
@@ -77,12 +77,15 @@ int run_query(const QueryArgs& a) {
     std::string buffer;
     buffer.reserve(1u << 21);
     buffer += a.time ? "" : "t,";
-    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z\n";
+    buffer += "x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake\n";
 
     const bool has_bodies = !scene->lakes.empty() || !scene->rivers.empty();
     // Both backends answer the whole scene with query_world's contract.
     std::optional<QueryBackend> gpu;
     if (a.backend == "gpu") {
+        if (!scene->boats.empty())
+            return fail(verb, fmt::format("the scene has {} boat(s) and the gpu backend does not evaluate wakes yet: use --backend cpu",
+                                          scene->boats.size()));
         auto backend = make_gpu_query_backend();
         if (!backend) return fail(verb, backend.error().message);
         gpu = std::move(backend).value();
@@ -130,11 +133,11 @@ Verb add_query_verb(CLI::App& app) {
     cmd->add_option("--backend", args->backend, "cpu, or gpu (a Vulkan compute shader; same columns)")
         ->check(CLI::IsMember({"cpu", "gpu"}))
         ->capture_default_str();
-    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z\n"
+    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake\n"
                 "(SI units; height is world y; velocity is the current plus the waves' orbital velocity; depth is the still\n"
                 "water column at the point (< 0 on land); shore_distance (> 0 over water) comes from the shore model, inf\n"
                 "without one; wet = 1 where the surface is above the terrain; foam 0..1; body is the water body's name, empty\n"
-                "on land; flow_x, flow_z are the current alone, m/s).");
+                "on land; flow_x, flow_z are the current alone, m/s; wake is the boats' wakes' share of the height, m).");
     return {cmd, [args] { return run_query(*args); }};
 }
 

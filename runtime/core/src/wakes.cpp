@@ -100,6 +100,13 @@ BoatWakeShape boat_wake_shape(const BoatHull& hull) {
     return s;
 }
 
+std::size_t boat_wake_points(const BoatHull& hull, double speed) {
+    const BoatWakeShape s = boat_wake_shape(hull);
+    const double bow = std::ceil(speed * kBoatBowMaxAge / s.bow_spacing) + 2.0;
+    const double stern = std::ceil(speed * kBoatSternMaxAge / s.stern_spacing) + 2.0;
+    return static_cast<std::size_t>(2.0 * bow + stern);
+}
+
 namespace {
 
 DisturbancePoint bow_point(const BoatWakeShape& s, glm::dvec2 at, double time) {
@@ -125,9 +132,8 @@ DisturbancePoint stern_point(const BoatWakeShape& s, const BoatHull& hull, glm::
     return p;
 }
 
-/// Chains of a boat: port bow, starboard bow, stern; how long each lives.
-constexpr double kBowMaxAge = 360.0;
-constexpr double kSternMaxAge = 90.0;
+constexpr double kBowMaxAge = kBoatBowMaxAge;
+constexpr double kSternMaxAge = kBoatSternMaxAge;
 
 void drop_aged(WakeChain& chain, double time) {
     const auto first = std::find_if(chain.points.begin(), chain.points.end(),

@@ -7,6 +7,7 @@
 #include "kernel/kernel_select.hpp"
 #include "parallel.hpp"
 #include "tidewater/scene_bake.hpp"
+#include "tidewater/wakes.hpp"
 #include "water/body_at.hpp"
 #include "water/prepared_waves.hpp"
 
@@ -41,7 +42,15 @@ Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies
 }
 
 Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
-                 const QueryOptions& options) {
+                 const QueryOptions& caller_options) {
+    // The scene's boats (emitter i for boat i) join the caller's wakes on the still water.
+    QueryOptions options = caller_options;
+    Wakes wakes;
+    if (!scene.boats.empty()) {
+        if (caller_options.wakes != nullptr) wakes = *caller_options.wakes;
+        for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, wakes);
+        options.wakes = &wakes;
+    }
     const detail::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
     const detail::BodyFinder finder(scene, bodies);
     std::vector<detail::PointBody> where(points.size());

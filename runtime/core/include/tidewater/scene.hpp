@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tidewater/terrain.hpp"
+#include "tidewater/wakes.hpp"
 #include "tidewater/water_body.hpp"
 
 namespace tidewater {
@@ -74,6 +75,8 @@ struct Scene {
     bool has_ocean = true;
     std::vector<SceneLake> lakes;
     std::vector<SceneRiver> rivers;
+    /// Scripted boats (tidewater/wakes.hpp): query_world and the renderer add their wakes.
+    std::vector<SceneBoat> boats;
     std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
     /// What bake_scene made (null as parsed). Copies share it; it is never modified.

@@ -91,7 +91,12 @@ struct BoatWakeShape {
     glm::dvec2 port_bow{0.0}, starboard_bow{0.0}, stern{0.0};  ///< body frame (forward, starboard), m
 };
 inline constexpr double kBoatBlockCoefficient = 0.5;
+/// How long a boat's bow points (its waves) and stern points (its churned foam) live, s.
+inline constexpr double kBoatBowMaxAge = 360.0;
+inline constexpr double kBoatSternMaxAge = 90.0;
 BoatWakeShape boat_wake_shape(const BoatHull& hull);
+/// The most disturbance points a boat at `speed` (m/s) holds in its wake.
+std::size_t boat_wake_points(const BoatHull& hull, double speed);
 
 /// A boat whose poses the host feeds, frame by frame: it lays its chains' points at
 /// fixed distances along the track it sails (positions and times interpolated between

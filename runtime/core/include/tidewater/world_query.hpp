@@ -9,6 +9,8 @@
 //   waves fading out and its current fading to nothing.
 // - Lake: the lake's waves at its level, feeling its own shores.
 // - Ocean: exactly what query_surface gives for the scene's ocean.
+// Wakes ride the ocean and the lakes: the scene's boats (Scene::boats; boat i is emitter
+// i for QueryOptions::exclude_emitter) and any QueryOptions::wakes. Rivers carry none.
 // On land (no body) the result is the ocean's where the scene has one (as for
 // query_surface, wet = false); in an inland scene it is the terrain: height = terrain
 // height, depth 0, no waves, wet = false.

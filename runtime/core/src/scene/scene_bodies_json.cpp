@@ -28,29 +28,6 @@ Result<WaterBody> read_body(const ObjectReader& r, const char* default_preset, d
     return WaterBody::create(*profile, level, r.context("preset"), &warnings);
 }
 
-/// Points (x, z) at `key`: at least two, finite, consecutive points apart.
-Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path) {
-    if (!r.has("path")) return r.error("path", "required [[x, z], ...] is missing");
-    const json& list = r.at("path");
-    if (!list.is_array()) return r.error("path", fmt::format("expected [[x, z], ...], found {}", json_type_name(list)));
-    if (list.size() < 2 || list.size() > kMaxPathPoints)
-        return r.error("path", fmt::format("{} points given (allowed: 2 to {})", list.size(), kMaxPathPoints));
-    path.clear();
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const json& v = list[i];
-        const std::string at = fmt::format("path/{}", i);
-        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
-            return r.error(at, "expected [x, z], two numbers");
-        const glm::dvec2 p{v[0].get<double>(), v[1].get<double>()};
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate)
-            return r.error(at, fmt::format("[{}, {}] is out of range (allowed: |value| <= 1e7 m)", p.x, p.y));
-        if (!path.empty() && std::hypot(p.x - path.back().x, p.y - path.back().y) < 1e-3)
-            return r.error(at, "repeats the point before it (points must be at least 1 mm apart)");
-        path.push_back(p);
-    }
-    return {};
-}
-
 double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 /// Whether segments ab and cd share a point.
@@ -159,6 +136,29 @@ Status read_list(const ObjectReader& scene, const char* key, const std::filesyst
 }
 
 }  // namespace
+
+/// Points (x, z) at `key`: at least two, finite, consecutive points apart.
+Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path) {
+    if (!r.has("path")) return r.error("path", "required [[x, z], ...] is missing");
+    const json& list = r.at("path");
+    if (!list.is_array()) return r.error("path", fmt::format("expected [[x, z], ...], found {}", json_type_name(list)));
+    if (list.size() < 2 || list.size() > kMaxPathPoints)
+        return r.error("path", fmt::format("{} points given (allowed: 2 to {})", list.size(), kMaxPathPoints));
+    path.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const json& v = list[i];
+        const std::string at = fmt::format("path/{}", i);
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+            return r.error(at, "expected [x, z], two numbers");
+        const glm::dvec2 p{v[0].get<double>(), v[1].get<double>()};
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate)
+            return r.error(at, fmt::format("[{}, {}] is out of range (allowed: |value| <= 1e7 m)", p.x, p.y));
+        if (!path.empty() && std::hypot(p.x - path.back().x, p.y - path.back().y) < 1e-3)
+            return r.error(at, "repeats the point before it (points must be at least 1 mm apart)");
+        path.push_back(p);
+    }
+    return {};
+}
 
 Status read_lakes(const ObjectReader& scene, const std::filesystem::path& base_dir, std::vector<SceneLake>& lakes,
                   std::vector<std::string>& warnings) {

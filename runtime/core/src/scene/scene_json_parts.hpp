@@ -30,6 +30,11 @@ Status read_lakes(const ObjectReader& scene, const std::filesystem::path& base_d
                   std::vector<std::string>& warnings);
 Status read_rivers(const ObjectReader& scene, const std::filesystem::path& base_dir, std::vector<SceneRiver>& rivers,
                    std::vector<std::string>& warnings);
+/// The scene's "boats" (absent: none): scripted boats whose wakes the queries and the
+/// renderer add; their wakes together must fit kMaxWakePoints.
+Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats);
+/// Points (x, z) at "path": at least two, finite, consecutive points apart.
+Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path);
 /// Every body name once, none called "ocean" but the ocean.
 Status check_body_names(const ObjectReader& scene, const Scene& parsed);
 
