@@ -138,6 +138,58 @@ void BM_RiverWorld(benchmark::State& state) {
     state.SetLabel(mouth ? "mouth" : "channel");
 }
 
+/// Height queries on the open sea (ocean_rolling) with a boat's wake of N disturbance
+/// points (0, 1024, 4096): 4096 points scattered over the wake.
+void BM_WakeQueries(benchmark::State& state) {
+    const WaterBody sea = make_sea(24);
+    const auto points = static_cast<std::size_t>(state.range(0));
+    // Two bow chains of N/2 points each, as a tug lays them (every 1.25 m) on a straight track.
+    Wakes wakes;
+    for (int side = 0; side < 2 && points > 0; ++side) {
+        WakeChain chain;
+        for (std::size_t i = 0; i < points / 2; ++i) {
+            DisturbancePoint p;
+            p.position = {1.25 * static_cast<double>(i), side ? 1.5 : -1.5};
+            p.emitted = kTime - 0.25 * static_cast<double>(points / 2 - i);
+            p.strength = 117.0;
+            p.source_size = 10.0;
+            p.steepness = 0.6;
+            chain.points.push_back(p);
+        }
+        wakes.chains.push_back(chain);
+    }
+    std::mt19937_64 rng(5);
+    std::vector<glm::dvec2> pts(kPoints);
+    for (auto& p : pts) p = {static_cast<double>(rng() % 1000000) * 1.3e-3, static_cast<double>(rng() % 1000000) * 4e-4 - 200.0};
+    std::vector<double> h(pts.size());
+    QueryOptions options;
+    options.wakes = points > 0 ? &wakes : nullptr;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(query_heights(sea, kTime, pts, h, options).ok());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+}
+
+/// One buoyancy step of 100 barrels (64 triangles each) on ocean_rolling, one core.
+void BM_BuoyancyStep(benchmark::State& state) {
+    const WaterBody sea = make_sea(24);
+    BuoyancyWorld world;
+    for (int i = 0; i < 100; ++i) {
+        RigidBodyState s;
+        s.position = {7.0 * (i % 10), -0.2, 7.0 * (i / 10)};
+        RigidBodyProps barrel = RigidBodyProps::barrel(0.4, 1.0, 250.0);
+        barrel.hull = HullMesh::cylinder(0.4, 1.0, 16);  // 64 triangles
+        (void)world.add(barrel, s);
+    }
+    world.set_time(kTime);
+    for (auto _ : state) benchmark::DoNotOptimize(world.step({nullptr, &sea, nullptr}).ok());
+    state.SetItemsProcessed(state.iterations() * 100);
+    state.SetLabel("100 bodies x 64 triangles");
+}
+
+BENCHMARK(BM_WakeQueries)->Arg(0)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuoyancyStep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShoreHarbour)->Arg(0)->Arg(1);
 BENCHMARK(BM_RiverWorld)->Arg(0)->Arg(1);
 BENCHMARK(BM_NewtonHeights)->Arg(8)->Arg(32)->Arg(64);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "tidewater/body_summary.hpp"
+#include "tidewater/buoyancy.hpp"
 #include "tidewater/clock.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/floating_body.hpp"
@@ -17,6 +18,7 @@
 #include "tidewater/version.hpp"
 #include "tidewater/water_body.hpp"
 #include "tidewater/whitecaps.hpp"
+#include "tidewater/wakes.hpp"
 #include "tidewater/waves.hpp"
 #include "tidewater/world_query.hpp"
 #include "tidewater/drift.hpp"
