@@ -120,7 +120,7 @@ DisturbancePoint bow_point(const BoatWakeShape& s, glm::dvec2 at, double time) {
     return p;
 }
 
-DisturbancePoint stern_point(const BoatWakeShape& s, const BoatHull& hull, glm::dvec2 at, double time) {
+DisturbancePoint stern_point(const BoatHull& hull, glm::dvec2 at, double time) {
     DisturbancePoint p;
     p.position = at;
     p.strength = 0.0;  // the churn makes foam, not waves
@@ -128,7 +128,6 @@ DisturbancePoint stern_point(const BoatWakeShape& s, const BoatHull& hull, glm::
     p.emitted = time;
     p.steepness = 0.0;
     p.turbulence = 1.0;
-    (void)s;
     return p;
 }
 
@@ -141,19 +140,15 @@ void drop_aged(WakeChain& chain, double time) {
     chain.points.erase(chain.points.begin(), first);
 }
 
-}  // namespace
-
-/// The boat's three chains as it lays them: port bow, starboard bow, stern.
-struct BoatChains {
-    WakeChain chain[3];
-    explicit BoatChains(int emitter) {
-        for (WakeChain& c : chain) {
-            c.emitter = emitter;
-            c.max_age = kBowMaxAge;
-        }
-        chain[2].max_age = kSternMaxAge;
+/// A boat's three chains, empty: port bow, starboard bow, stern.
+void start_chains(WakeChain (&chains)[3], int emitter) {
+    for (WakeChain& c : chains) {
+        c.points.clear();
+        c.emitter = emitter;
+        c.max_age = kBowMaxAge;
     }
-};
+    chains[2].max_age = kSternMaxAge;
+}
 
 /// Lays the bow points (port and starboard) or the stern point of a boat whose centre is
 /// at `centre` with `heading` at clock time `time`.
@@ -166,28 +161,23 @@ void lay_points(const BoatWakeShape& s, const BoatHull& hull, glm::dvec2 centre,
         push(chains[0], bow_point(s, centre + rotate(s.port_bow, heading), time));
         push(chains[1], bow_point(s, centre + rotate(s.starboard_bow, heading), time));
     } else {
-        push(chains[2], stern_point(s, hull, centre + rotate(s.stern, heading), time));
+        push(chains[2], stern_point(hull, centre + rotate(s.stern, heading), time));
     }
 }
 
+}  // namespace
+
 BoatWakeEmitter::BoatWakeEmitter(const BoatHull& hull, int emitter) : hull_(hull), shape_(boat_wake_shape(hull)), emitter_(emitter) {
-    BoatChains c(emitter);
-    port_ = c.chain[0];
-    starboard_ = c.chain[1];
-    stern_ = c.chain[2];
+    start_chains(chains_, emitter);
 }
 
 void BoatWakeEmitter::lay(double& next, double spacing, const Pose& a, const Pose& b, bool bow) {
-    WakeChain chains[3] = {port_, starboard_, stern_};
     for (; next <= b.track; next += spacing) {
         const double f = b.track > a.track ? (next - a.track) / (b.track - a.track) : 1.0;
         const glm::dvec2 centre = a.position + (b.position - a.position) * f;
         const double heading = a.heading + std::remainder(b.heading - a.heading, kTwoPi) * f;  // the short way round
-        lay_points(shape_, hull_, centre, heading, a.time + (b.time - a.time) * f, bow, chains);
+        lay_points(shape_, hull_, centre, heading, a.time + (b.time - a.time) * f, bow, chains_);
     }
-    port_ = std::move(chains[0]);
-    starboard_ = std::move(chains[1]);
-    stern_ = std::move(chains[2]);
 }
 
 Status BoatWakeEmitter::advance(glm::dvec2 position, double heading, double time) {
@@ -205,12 +195,12 @@ Status BoatWakeEmitter::advance(glm::dvec2 position, double heading, double time
     lay(next_stern_, shape_.stern_spacing, last_, now, false);
     last_ = now;
     // Points that aged out are dropped as the boat goes (the chains stay short).
-    for (WakeChain* c : {&port_, &starboard_, &stern_}) drop_aged(*c, time);
+    for (WakeChain& c : chains_) drop_aged(c, time);
     return {};
 }
 
 void BoatWakeEmitter::append_to(Wakes& wakes, double time) const {
-    WakeChain chains[3] = {port_, starboard_, stern_};
+    WakeChain chains[3] = {chains_[0], chains_[1], chains_[2]};
     // Each chain ends at the boat as it is now, so its last segment grows smoothly until
     // the next point is laid where the head has come to.
     if (started_) {
@@ -226,7 +216,8 @@ void BoatWakeEmitter::append_to(Wakes& wakes, double time) const {
 void scripted_boat_wake(const SceneBoat& boat, int emitter, double time, Wakes& wakes) {
     if (boat.path.size() < 2 || !(boat.speed > 0.0) || time <= boat.start) return;
     const BoatWakeShape shape = boat_wake_shape(boat.hull);
-    BoatChains c(emitter);
+    WakeChain chains[3];
+    start_chains(chains, emitter);
     const double total = boat.path_length();
     const double travelled = std::min((time - boat.start) * boat.speed, total);
     const double arrival = boat.start + total / boat.speed;
@@ -240,16 +231,16 @@ void scripted_boat_wake(const SceneBoat& boat, int emitter, double time, Wakes& 
             glm::dvec2 centre;
             double heading = 0.0;
             boat.pose_at(emitted, centre, heading);
-            lay_points(shape, boat.hull, centre, heading, emitted, !stern, c.chain);
+            lay_points(shape, boat.hull, centre, heading, emitted, !stern, chains);
         }
         if (time < arrival) {  // the head: the boat now (a boat that has arrived makes no more wake)
             glm::dvec2 centre;
             double heading = 0.0;
             boat.pose_at(time, centre, heading);
-            lay_points(shape, boat.hull, centre, heading, time, !stern, c.chain);
+            lay_points(shape, boat.hull, centre, heading, time, !stern, chains);
         }
     }
-    for (WakeChain& chain : c.chain) {
+    for (WakeChain& chain : chains) {
         drop_aged(chain, time);
         if (chain.points.size() >= 2) wakes.chains.push_back(std::move(chain));
     }

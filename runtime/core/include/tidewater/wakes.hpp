@@ -129,7 +129,7 @@ private:
     bool started_ = false;
     Pose last_{};
     double next_bow_ = 0.0, next_stern_ = 0.0;  ///< track distance of the next points
-    WakeChain port_, starboard_, stern_;
+    WakeChain chains_[3];  ///< port bow, starboard bow, stern
 };
 
 /// A boat that sails a path at constant speed (Scene::boats, "boats" in scene JSON).
