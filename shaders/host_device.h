@@ -69,6 +69,7 @@ TW_CONST float kFoamRampFraction = 0.5f;
 // foam decays over kWakeFoamLifetime seconds and spreads as kWakeFoamSpread sqrt(age)
 // metres beyond half the source's size. A frame holds at most kMaxWakePoints points.
 TW_CONST float kWakeFoldLimit = 0.5f;
+TW_CONST float kWakeGravity = 9.81f;       // m/s^2, tidewater::kGravity
 TW_CONST float kWakeFoamLifetime = 30.0f;  // s
 TW_CONST float kWakeFoamSpread = 0.6f;     // m / sqrt(s)
 TW_CONST uint kMaxWakePoints = 4096u;
@@ -123,6 +124,7 @@ TW_CONST uint kViewWireframe = 6u;
 TW_CONST uint kViewShore = 7u;
 TW_CONST uint kViewBreaking = 8u;
 TW_CONST uint kViewFlow = 9u;
+TW_CONST uint kViewWake = 10u;
 
 // What a water draw covers (GpuBodyDraw.body.x).
 TW_CONST uint kBodyOcean = 0u;
@@ -155,6 +157,7 @@ struct GpuFrame {
     vec4 sky_e;              // xyz: E for Y, x, y; w: exposure (per zenith luminance)
     vec4 sky_zenith;         // xyz: zenith Y (relative, 1) / F(0, theta_s), x / F, y / F; w: saturation of the display look
     vec4 sky_balance;        // xyz: white-balance gains on linear sRGB; w: unused
+    vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; zw: unused
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -223,7 +226,7 @@ static_assert(sizeof(GpuQueryResult) == 80);
 static_assert(sizeof(GpuQueryParams) == 112);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 14 * 16);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 15 * 16);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

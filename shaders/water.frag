@@ -10,11 +10,15 @@
 #include "water_draw.glsl"
 #include "body_masks.glsl"
 #include "flow_detail.glsl"
+#define WAKE_COUNT uint(frame.wakes.x)
+#define WAKE_TURBULENT uint(frame.wakes.y)
+#include "wake_point.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 geo_normal;
 layout(location = 2) in vec2 rest_xz;
 layout(location = 3) in float jacobian;
 layout(location = 4) in float eta;
+layout(location = 5) in float wake_eta;
 layout(location = 6) in vec2 shore_info;
 layout(location = 7) in float rest_level;
 layout(location = 8) in vec2 current;
@@ -269,6 +273,8 @@ void main() {
     // in the troughs).
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     float foam = max(crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, sqrt(jacobian_detail.y)), shore_info.y * (0.25 + 0.75 * crest_band));
+    // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
+    if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u) foam = max(foam, wakes_foam_at(rest_xz));
     // A fast current churns white water.
     foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
     if (d.shore.w > 0.0) {
@@ -290,6 +296,7 @@ void main() {
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);
+    if (view == kViewWake) color = heat_color(0.5 + 0.5 * clamp(wake_eta, -1.0, 1.0));
     if (view == kViewFlow) color = uint(d.body.x) == kBodyRiver ? heat_color(length(current) / 3.0) : vec3(0.05, 0.08, 0.2);
     out_color = target_color(color);
 }

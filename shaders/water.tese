@@ -20,6 +20,9 @@ uint g_wave_first = 0u, g_wave_count = 0u;
 #include "water_point.glsl"
 #include "water_body.glsl"
 #include "river_water.glsl"
+#define WAKE_COUNT uint(frame.wakes.x)
+#define WAKE_TURBULENT uint(frame.wakes.y)
+#include "wake_point.glsl"
 layout(quads, fractional_odd_spacing, ccw) in;
 layout(location = 0) in vec2 control_xz[];
 layout(location = 0) out vec3 world_pos;
@@ -27,6 +30,7 @@ layout(location = 1) out vec3 geo_normal;
 layout(location = 2) out vec2 rest_xz;
 layout(location = 3) out float jacobian;
 layout(location = 4) out float eta;
+layout(location = 5) out float wake_eta;    // the wakes' share of eta (m)
 layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: breaking 0..1
 layout(location = 7) out float rest_level; // the still surface here, world y (m)
 layout(location = 8) out vec2 current;     // a river's current (m/s)
@@ -52,6 +56,13 @@ void main() {
         current = channel.zw;
     } else {
         s = water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod);
+    }
+    // Wakes ride the ocean and the lakes (rivers carry none), as in the CPU queries.
+    wake_eta = 0.0;
+    if (uint(g_draw.body.x) != kBodyRiver && WAKE_COUNT > 0u) {
+        SurfaceSums wake = wakes_at(rest_xz);
+        add_scaled(s, wake, 1.0);
+        wake_eta = wake.eta;
     }
     shore_info = vec2(g_shore_fields.w, g_shore_fields.y);
     eta = s.eta - (rest_level - g_draw.body.y);

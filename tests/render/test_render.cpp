@@ -9,6 +9,8 @@
 #include <fstream>
 #include <optional>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
 #include "../baked_scene.hpp"
@@ -674,6 +676,75 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
         EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.03) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
     }
+}
+
+// Boat wakes are drawn where the CPU puts them: a tug at 5 m/s on a calm pool seen from
+// 300 m up (1 degree off the vertical), the wake view (the wakes' share of the height).
+// Inside Kelvin's wedge behind the boat most pixels show the wake; ahead of the boat and
+// outside 25 degrees of its track (beyond 40 m of the bow) almost none do; under the image centre the drawn wake
+// is the CPU query's wake column within 2 cm (8-bit colour, rest against fixed point).
+// The shaded view shows the stern's churned foam behind the boat.
+TEST_F(RenderTest, BoatWakesAreDrawnInKelvinsWedge) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
+        "boats": [{"name": "tug", "path": [[-400, 0], [400, 0]], "speed": 5.0, "length": 20.0, "beam": 6.0, "draft": 1.5}]})");
+    render::FrameInfo frame;
+    frame.time = 100.0;  // the tug's bow shoulders are at x = 105
+    const glm::dvec3 centre{-60.0, 0.0, 20.0};
+    frame.camera.position = centre + glm::dvec3(0.0, 300.0, 0.0);
+    frame.camera.target = frame.camera.position + glm::dvec3(0.0, -300.0, 5.0);
+    frame.camera.fov_y_deg = 60.0;
+    frame.view = render::DebugView::wake;
+    const auto img = render(scene, frame, 320, 320);
+    // Image axes from above: find the world point under each pixel on the plane y = 0.
+    const glm::dmat4 view = glm::lookAt(frame.camera.position, frame.camera.target, glm::dvec3(0.0, 1.0, 0.0));
+    const glm::dmat4 proj = glm::perspective(frame.camera.fov_y_deg * kPi / 180.0, 1.0, 0.3, 1000.0);
+    const glm::dmat4 inv = glm::inverse(proj * view);
+    auto ground = [&](int x, int y) {
+        const glm::dvec2 ndc{(x + 0.5) / 160.0 - 1.0, 1.0 - (y + 0.5) / 160.0};
+        glm::dvec4 a = inv * glm::dvec4(ndc, -1.0, 1.0), b = inv * glm::dvec4(ndc, 1.0, 1.0);
+        const glm::dvec3 p = glm::dvec3(a) / a.w, q = glm::dvec3(b) / b.w;
+        return p + (q - p) * (p.y / (p.y - q.y));
+    };
+    auto wake_of = [](Rgb c) { return 2.0 * (c.r < 0.99 ? c.r / 1.5 : 1.0 - c.b / 1.5) - 1.0; };  // heat_color inverted
+    int inside = 0, inside_drawn = 0, outside = 0, outside_drawn = 0;
+    const glm::dvec2 apex{105.0, 0.0};
+    for (int y = 0; y < 320; y += 4)
+        for (int x = 0; x < 320; x += 4) {
+            const glm::dvec3 w = ground(x, y);
+            const glm::dvec2 rel = glm::dvec2(w.x, w.z) - apex;
+            const double behind = -rel.x, angle = std::atan2(std::abs(rel.y), behind) * 180.0 / kPi;
+            const bool drawn = std::abs(wake_of(test::pixel(img, x, y))) > 0.02;
+            if (behind > 20.0 && angle < 15.0) {
+                ++inside;
+                inside_drawn += drawn;
+            } else if (glm::length(rel) > 40.0 && (behind < -10.0 || angle > 25.0)) {  // beyond the bow's near field
+                ++outside;
+                outside_drawn += drawn;
+            }
+        }
+    const glm::dvec3 under = ground(160, 160);
+    const WorldPoint cpu = query_world_point(scene, frame.time, {under.x, under.z});
+    const double gpu = 0.25 * (wake_of(test::pixel(img, 159, 159)) + wake_of(test::pixel(img, 160, 159)) + wake_of(test::pixel(img, 159, 160)) +
+                               wake_of(test::pixel(img, 160, 160)));
+    std::printf("wake drawn on %d of %d pixels inside the wedge, %d of %d outside; under the centre %.4f m drawn, %.4f m queried\n",
+                inside_drawn, inside, outside_drawn, outside, gpu, cpu.surface.wake);
+    EXPECT_GT(inside_drawn, inside / 2);
+    EXPECT_LT(outside_drawn, outside / 50 + 1);
+    EXPECT_GT(std::abs(cpu.surface.wake), 0.03) << "the centre is on a wave of the wake";
+    EXPECT_NEAR(gpu, cpu.surface.wake, 0.02);
+    frame.view = render::DebugView::shaded;
+    frame.camera.position = {200.0, 60.0, 120.0};
+    frame.camera.target = {20.0, 0.0, 0.0};
+    const auto shaded = render(scene, frame, 320, 180);
+    const auto calm = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm"})"),
+                             frame, 320, 180);
+    int white = 0;
+    auto is_white = [](Rgb c) { return c.r > 0.75 && c.g > 0.75 && c.b > 0.75; };
+    for (int y = 0; y < 180; ++y)
+        for (int x = 0; x < 320; ++x) white += is_white(test::pixel(shaded, x, y)) && !is_white(test::pixel(calm, x, y));
+    std::printf("shaded: %d white pixels of churned foam; %.4f from the calm pool\n", white, test::mean_difference(shaded, calm));
+    EXPECT_GT(white, 20);  // the calm pool has none
+    EXPECT_GT(test::mean_difference(shaded, calm), 0.002);
 }
 
 // Multisampled targets (RendererInitInfo::samples = 4) draw the same picture with its

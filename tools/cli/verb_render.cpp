@@ -56,7 +56,7 @@ int run_render(const RenderArgs& a) {
     if (!extent) return fail(verb, extent.error().message);
     if (auto st = check_time(a.time, "--time"); !st) return fail(verb, st.error().message);
     const auto view = render::parse_debug_view(a.view);
-    if (!view) return fail(verb, fmt::format("--view: \"{}\" is not a view (shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking)", a.view));
+    if (!view) return fail(verb, fmt::format("--view: \"{}\" is not a view (shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake)", a.view));
     if (a.frames < 1 || a.frames > 100000) return fail(verb, "--frames: must be in 1..100000");
     if (!(a.fps > 0.0 && a.fps <= 1000.0)) return fail(verb, "--fps: must be in (0, 1000]");
     if (a.frames == 1 && a.out.empty() && a.out_dir.empty()) return fail(verb, "give --out FILE.png (or --frames N --out-dir D)");
@@ -121,7 +121,7 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of a sequence")->capture_default_str();
     cmd->add_option("--out-dir", args->out_dir, "Folder for frame_NNNN.png");
-    cmd->add_option("--view", args->view, "shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking or flow")->capture_default_str();
+    cmd->add_option("--view", args->view, "shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow or wake")->capture_default_str();
     cmd->add_option("--stats", args->stats, "Write per-pass GPU times, the device and counts as JSON");
     cmd->add_option("--camera", args->camera, "Camera position x y z, m")->expected(3);
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);

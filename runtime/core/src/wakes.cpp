@@ -116,7 +116,7 @@ DisturbancePoint bow_point(const BoatWakeShape& s, glm::dvec2 at, double time) {
     p.source_size = s.bow_size;
     p.emitted = time;
     p.steepness = 0.6;
-    p.turbulence = 0.15;
+    p.turbulence = 0.0;  // foam at the bow comes from its waves folding (the Jacobian)
     return p;
 }
 

@@ -135,7 +135,8 @@ Status create_layouts(const DeviceContext& ctx, FramePipelines& p) {
         {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // river channel and current
         {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // body masks
         {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // river waves
-        {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};        // patch list
+        {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // patch list
+        {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};        // wake points
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = kFrameBindings;
     set_info.pBindings = bindings;

@@ -33,7 +33,7 @@ struct PipelineDesc {
 Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& desc);
 
 /// Bindings of the frame's descriptor set: see shaders/frame.glsl.
-constexpr std::uint32_t kFrameBindings = 13;
+constexpr std::uint32_t kFrameBindings = 14;
 /// The push constants every graphics stage sees: the terrain mesh origin, the water draw.
 constexpr std::uint32_t kPushConstantBytes = 32;
 constexpr std::uint32_t kDrawIndexOffset = 16;

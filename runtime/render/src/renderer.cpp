@@ -18,6 +18,7 @@
 #include "scene_uploads.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "wake_uploads.hpp"
 #include "vk_util.hpp"
 
 namespace tidewater::render {
@@ -26,11 +27,12 @@ using detail::GpuBuffer;
 
 namespace {
 
-constexpr std::array<DebugView, 10> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
+constexpr std::array<DebugView, 11> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
                                               DebugView::jacobian, DebugView::depth, DebugView::lod,
-                                              DebugView::wireframe, DebugView::shore, DebugView::breaking, DebugView::flow};
-constexpr std::array<std::string_view, 10> kViewNames = {"shaded", "height", "normals", "jacobian", "depth",
-                                                         "lod", "wireframe", "shore", "breaking", "flow"};
+                                              DebugView::wireframe, DebugView::shore, DebugView::breaking, DebugView::flow,
+                                              DebugView::wake};
+constexpr std::array<std::string_view, 11> kViewNames = {"shaded", "height", "normals", "jacobian", "depth", "lod",
+                                                         "wireframe", "shore", "breaking", "flow", "wake"};
 
 }  // namespace
 
@@ -71,7 +73,7 @@ struct Renderer::Impl {
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
-        GpuBuffer frame, waves, draws, river_waves;
+        GpuBuffer frame, waves, draws, river_waves, wake_points;
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
@@ -107,7 +109,7 @@ struct Renderer::Impl {
 Status Renderer::Impl::create_slots() {
     const std::uint32_t n = info.frames_in_flight;
     VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 9 * n},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10 * n},
                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * n}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = n;
@@ -122,6 +124,9 @@ Status Renderer::Impl::create_slots() {
         auto frame = GpuBuffer::create(ctx(), sizeof(gpu::GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         if (!frame) return frame.error();
         s.frame = std::move(frame).value();
+        auto wake_points = GpuBuffer::create(ctx(), sizeof(gpu::GpuWakePoint) * gpu::kMaxWakePoints, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!wake_points) return wake_points.error();
+        s.wake_points = std::move(wake_points).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         alloc.descriptorPool = descriptor_pool.get();
         alloc.descriptorSetCount = 1;
@@ -164,12 +169,13 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     VkDescriptorImageInfo depth{pipelines.nearest.get(), copies.depth_view(with_scene_copy), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo shore_wave_info{shore.per_wave(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo shore_shared_info{shore.shared(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo body_infos[6] = {{slot.draws.handle(), 0, VK_WHOLE_SIZE},
+    const VkDescriptorBufferInfo body_infos[7] = {{slot.draws.handle(), 0, VK_WHOLE_SIZE},
                                                   {bodies.river_texels.handle(), 0, VK_WHOLE_SIZE},
                                                   {bodies.river_channel.handle(), 0, VK_WHOLE_SIZE},
                                                   {bodies.masks.handle(), 0, VK_WHOLE_SIZE},
                                                   {slot.river_waves.handle(), 0, VK_WHOLE_SIZE},
-                                                  {bodies.patches.handle(), 0, VK_WHOLE_SIZE}};
+                                                  {bodies.patches.handle(), 0, VK_WHOLE_SIZE},
+                                                  {slot.wake_points.handle(), 0, VK_WHOLE_SIZE}};
     VkWriteDescriptorSet w[detail::kFrameBindings];
     for (std::uint32_t i = 0; i < detail::kFrameBindings; ++i) {
         w[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -218,6 +224,11 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                               color_target->linear_output);
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
+    auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
+    if (!wakes) return wakes.error();
+    plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent), 0.0f, 0.0f);
+    if (!wakes->points.empty())
+        std::memcpy(slot->wake_points.mapped(), wakes->points.data(), sizeof(gpu::GpuWakePoint) * wakes->points.size());
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());

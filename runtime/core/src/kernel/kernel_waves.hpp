@@ -8,7 +8,7 @@
 #include "tidewater/query.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "water/prepared_waves.hpp"
-#include "water/wake_water.hpp"
+#include "tidewater/detail/wake_water.hpp"
 
 namespace tidewater::detail {
 

@@ -1,11 +1,14 @@
-#include "water/wake_water.hpp"
+#include "tidewater/detail/wake_water.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "host_device.h"
 #include "tidewater/constants.hpp"
 
 namespace tidewater::detail {
+
+static_assert(gpu::kWakeGravity == static_cast<float>(kGravity), "the shaders' gravity is the model's");
 
 double wake_age_fade(double age, double max_age) {
     const double start = 0.8 * max_age;

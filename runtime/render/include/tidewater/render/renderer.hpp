@@ -40,10 +40,11 @@
 
 namespace tidewater::render {
 
-enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow };
+enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake };
 
 /// "shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe", "shore" (signed shore
-/// distance), "breaking" (where waves break), "flow" (a river's current speed).
+/// distance), "breaking" (where waves break), "flow" (a river's current speed), "wake" (the
+/// wakes' share of the height: red up, blue down).
 std::string_view to_string(DebugView view);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::span<const DebugView> all_debug_views();
@@ -91,6 +92,9 @@ struct FrameInfo {
     glm::dvec3 sun_direction{0.35, 0.55, -0.75};  ///< Toward the sun; normalised by the renderer.
     /// The air's turbidity for the Preetham sky, in [1.7, 10]: 2 very clear, 3 clear, 6 hazy.
     double sky_turbidity = 2.5;
+    /// The host's wakes (BoatWakeEmitter, splashes), drawn with the scene's boats' on the
+    /// ocean and lakes; null: only the scene's. Read during record_frame only.
+    const Wakes* wakes = nullptr;
 };
 
 /// GPU time per pass of one frame, from timestamp queries (ms).

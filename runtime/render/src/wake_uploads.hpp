@@ -1,0 +1,25 @@
+// A frame's wakes as the shaders read them (private): the host's and the scene's boats'.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "host_device.h"
+#include "tidewater/result.hpp"
+#include "tidewater/scene.hpp"
+#include "tidewater/wakes.hpp"
+
+namespace tidewater::render::detail {
+
+struct WakeUpload {
+    std::vector<gpu::GpuWakePoint> points;  ///< chains with turbulence first, positions relative to O
+    std::uint32_t turbulent = 0;            ///< how many of the first points belong to them
+};
+
+/// The wakes of `scene`'s boats and the host's (null: none) at clock time `time`, prepared
+/// as the CPU queries prepare them (detail::prepare_wakes) and placed relative to the
+/// render origin. Fails, naming the field, on bad host wakes or more than kMaxWakePoints.
+Result<WakeUpload> pack_wakes(const Scene& scene, const Wakes* host, double time, glm::dvec2 origin);
+
+}  // namespace tidewater::render::detail
