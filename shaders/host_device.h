@@ -111,6 +111,7 @@ struct GpuQueryResult {
     vec4 shore;          // x: depth (m), y: shore distance (m), both at the query point; z: breaking at the rest position;
                          // w: river mode: the still river surface at the point, m above the mouth level
     vec4 flow;           // xy: the river current at the query point (m/s, 0 outside rivers); zw: its flow-detail slope
+    vec4 wake;           // x: the wakes' share of eta (m), y: their foam, at the rest position; zw: unused
 };
 
 // Debug views (GpuFrame.params.w).
@@ -207,6 +208,10 @@ struct GpuQueryParams {
     float river_texel;      // m
     float still;            // 1: the still water's waves join the river's (mouth, plume); 0: not
     GpuFlowDetail flow;     // the river preset's flow detail (strength 0: none)
+    uint wake_count;        // wake points (still water only; 0: none)
+    uint wake_turbulent;    // how many of the first carry turbulence
+    float wake_radius;      // how far the wakes can move a particle sideways, m (widens the solve's radius)
+    float wake_pad;
 };
 
 // The shore fields (tidewater::ShoreWaves), as storage buffers read with the
@@ -222,8 +227,8 @@ static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuWakePoint) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuRiverWave) == 32);
-static_assert(sizeof(GpuQueryResult) == 80);
-static_assert(sizeof(GpuQueryParams) == 112);
+static_assert(sizeof(GpuQueryResult) == 96);
+static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
 static_assert(sizeof(GpuFrame) == 2 * 64 + 15 * 16);

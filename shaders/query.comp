@@ -21,6 +21,8 @@ layout(std430, set = 0, binding = 6) readonly buffer CellOrigins { vec2 cell_ori
 layout(std430, set = 0, binding = 7) readonly buffer RiverTexels { float river_texels[]; };
 layout(std430, set = 0, binding = 8) readonly buffer RiverChannel { vec4 river_channel[]; };   // s, n (m), flow x, z (m/s)
 layout(std430, set = 0, binding = 9) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
+// Wakes on still water, relative to the cell origins' zero (the chains in order).
+layout(std430, set = 0, binding = 10) readonly buffer WakePoints { GpuWakePoint wake_points[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
 #define SHORE_RESOLUTION params.shore_resolution
@@ -33,6 +35,8 @@ layout(push_constant) uniform Push { GpuQueryParams params; };
 #define RIVER_FIRST_TEXEL 0u
 #define RIVER_FIRST_WAVE 0u
 #define RIVER_WAVE_COUNT params.river_wave_count
+#define WAKE_COUNT params.wake_count
+#define WAKE_TURBULENT params.wake_turbulent
 #define TW_WATER_NEWTON
 GpuQueryPoint g_point;
 vec4 g_channel;  // the query point's channel coordinates and current (river mode)
@@ -42,6 +46,7 @@ vec4 g_channel;  // the query point's channel coordinates and current (river mod
 #include "water_body.glsl"
 #include "river_water.glsl"
 #include "flow_detail.glsl"
+#include "wake_point.glsl"
 
 bool river_mode() { return params.river_nx > 0u; }
 
@@ -52,7 +57,12 @@ SurfaceSums still_water_at(vec2 e) {
 }
 
 SurfaceSums water_at_offset(vec2 e) {
-    if (!river_mode()) return still_water_at(e);
+    if (!river_mode()) {
+        // Wakes ride still water (not rivers or their plumes), as on the CPU.
+        SurfaceSums s = still_water_at(e);
+        if (params.wake_count > 0u) add_scaled(s, wakes_at(cell_origin[g_point.cell] + g_point.local + e), 1.0);
+        return s;
+    }
     SurfaceSums s = river_water_at(cell_origin[g_point.cell] + g_point.local + e, e, g_channel.xy, no_wave_lod());
     if (params.still > 0.5) add_scaled(s, still_water_at(e), g_river_still_weight);
     return s;
@@ -67,7 +77,7 @@ void main() {
     vec4 at_point = params.shore_resolution > 0u ? tap_shared(shore_tap(at - params.shore_offset)) : kOpenWaterShore;
     RiverTap at_tap = river_tap(at);  // river mode only
     g_channel = river_mode() ? river_channel_at(at_tap) : vec4(0.0);
-    NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset));
+    NewtonResult n = solve_rest_offset(newton_tolerance(params.max_offset), newton_radius(params.max_offset) + params.wake_radius);
     GpuQueryResult r;
     // First-order carry to the final step, as on the CPU.
     r.height_normal = vec4(n.sums.eta + dot(n.sums.slope, n.step_e), surface_normal(n.sums));
@@ -79,5 +89,10 @@ void main() {
     r.shore = vec4(depth, at_point.w, g_shore_fields.y, still_surface);
     vec2 detail = params.flow.params.z > 0.0 && river_mode() ? flow_detail_slope(at, g_channel.zw, params.flow) : vec2(0.0);
     r.flow = vec4(g_channel.zw, detail);
+    r.wake = vec4(0.0);
+    if (!river_mode() && params.wake_count > 0u) {
+        vec2 rest = at + n.e;
+        r.wake = vec4(wakes_at(rest).eta, wakes_foam_at(rest), 0.0, 0.0);
+    }
     results[id] = r;
 }

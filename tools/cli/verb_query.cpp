@@ -83,9 +83,6 @@ int run_query(const QueryArgs& a) {
     // Both backends answer the whole scene with query_world's contract.
     std::optional<QueryBackend> gpu;
     if (a.backend == "gpu") {
-        if (!scene->boats.empty())
-            return fail(verb, fmt::format("the scene has {} boat(s) and the gpu backend does not evaluate wakes yet: use --backend cpu",
-                                          scene->boats.size()));
         auto backend = make_gpu_query_backend();
         if (!backend) return fail(verb, backend.error().message);
         gpu = std::move(backend).value();

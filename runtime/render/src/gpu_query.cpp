@@ -17,13 +17,14 @@
 #include "scene_uploads.hpp"
 #include "vk_handle.hpp"
 #include "vk_util.hpp"
+#include "wake_uploads.hpp"
 
 namespace tidewater::render {
 
 using detail::GpuBuffer;
 
 namespace {
-constexpr std::uint32_t kBindings = 10;  // see shaders/query.comp
+constexpr std::uint32_t kBindings = 11;  // see shaders/query.comp
 
 /// A river evaluation: the river, its preset, and whether still water joins it.
 struct RiverDispatch {
@@ -44,6 +45,7 @@ struct GpuQuery::Impl {
     detail::OwnedCommandPool commands;
     GpuBuffer waves, phases, points, results, cell_origins;
     GpuBuffer river_texels, river_channel, river_waves;  // placeholders outside river mode
+    GpuBuffer wake_points;
     const tidewater::detail::RiverBake* uploaded_river = nullptr;
     detail::ShoreBuffers shore;  // the same upload the renderer uses
 
@@ -70,7 +72,8 @@ struct GpuQuery::Impl {
             {points.handle(), 0, VK_WHOLE_SIZE},    {results.handle(), 0, VK_WHOLE_SIZE},
             {shore.per_wave(), 0, VK_WHOLE_SIZE},   {shore.shared(), 0, VK_WHOLE_SIZE},
             {cell_origins.handle(), 0, VK_WHOLE_SIZE}, {river_texels.handle(), 0, VK_WHOLE_SIZE},
-            {river_channel.handle(), 0, VK_WHOLE_SIZE}, {river_waves.handle(), 0, VK_WHOLE_SIZE}};
+            {river_channel.handle(), 0, VK_WHOLE_SIZE}, {river_waves.handle(), 0, VK_WHOLE_SIZE},
+            {wake_points.handle(), 0, VK_WHOLE_SIZE}};
         VkWriteDescriptorSet writes[kBindings];
         for (std::uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -88,9 +91,10 @@ struct GpuQuery::Impl {
 
     /// Solves `points` against `still` (its waves and shore) or, with `river`, the river's
     /// water with `still` fading in at its mouth. `flow`, when not empty, receives the
-    /// current (xy) and flow-detail slope (zw) at each point.
+    /// current (xy) and flow-detail slope (zw) at each point. `wakes` (null: none) ride
+    /// still water only.
     Status solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
-                 std::span<SurfacePoint> out, std::span<glm::vec4> flow);
+                 std::span<SurfacePoint> out, std::span<glm::vec4> flow, const Wakes* wakes = nullptr);
 };
 
 Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river) {
@@ -190,7 +194,7 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
 }
 
 Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
-                             std::span<SurfacePoint> out, std::span<glm::vec4> flow) {
+                             std::span<SurfacePoint> out, std::span<glm::vec4> flow, const Wakes* wakes) {
     const WaveSet& still_set = still.waves();
     const bool river_mode = river != nullptr;
     // The still water's waves: none in a river's own channel away from its mouth.
@@ -230,12 +234,24 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     auto grown_origins = ensure(cell_origins, sizeof(glm::vec2) * origins.size());
     if (!grown_origins) return grown_origins.error();
     rebind = rebind || *grown_origins;
+    // The wakes, relative to the cell origins' zero (still water only).
+    detail::WakeUpload wake_upload;
+    if (wakes != nullptr && !river_mode) {
+        auto packed = detail::pack_wakes(*wakes, time, zero);
+        if (!packed) return packed.error();
+        wake_upload = std::move(packed).value();
+    }
+    auto grown_wakes = ensure(wake_points, sizeof(gpu::GpuWakePoint) * std::max<std::size_t>(1, wake_upload.points.size()));
+    if (!grown_wakes) return grown_wakes.error();
+    rebind = rebind || *grown_wakes;
     if (rebind) bind_buffers();
     std::memcpy(cell_origins.mapped(), origins.data(), sizeof(glm::vec2) * origins.size());
     if (!wave_data.empty()) std::memcpy(waves.mapped(), wave_data.data(), sizeof(gpu::GpuWave) * wave_data.size());
     if (!channel_waves.empty()) std::memcpy(river_waves.mapped(), channel_waves.data(), sizeof(gpu::GpuRiverWave) * channel_waves.size());
     std::memcpy(phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
     std::memcpy(points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * query_points.size());
+    if (!wake_upload.points.empty())
+        std::memcpy(wake_points.mapped(), wake_upload.points.data(), sizeof(gpu::GpuWakePoint) * wake_upload.points.size());
 
     // The shader derives the tolerance and step bound from sum(Q A) as the CPU does.
     gpu::GpuQueryParams params{};
@@ -256,6 +272,9 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         params.still = river->still ? 1.0f : 0.0f;
         params.flow = detail::gpu_flow_detail(river->body->profile().flow, river->body->local_time(time), zero);
     }
+    params.wake_count = static_cast<std::uint32_t>(wake_upload.points.size());
+    params.wake_turbulent = wake_upload.turbulent;
+    params.wake_radius = static_cast<float>(wake_upload.displacement_bound);
 
     Status st = detail::submit_and_wait(ctx, commands.get(), [&](VkCommandBuffer cmd) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.get());
@@ -288,13 +307,15 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
         o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
         o.foam = std::max(model ? static_cast<double>(r[i].shore.z) : 0.0, crest_foam(o.jacobian, whitecap));  // as detail::surface_foam
+        o.wake = static_cast<double>(r[i].wake.x);
+        o.foam = std::max(o.foam, static_cast<double>(r[i].wake.y));
         if (!flow.empty()) flow[i] = r[i].flow;
     }
     return {};
 }
 
 Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
-                               std::span<SurfacePoint> out) {
+                               std::span<SurfacePoint> out, const Wakes* wakes) {
     const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (points.size() != out.size()) {
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
@@ -303,7 +324,7 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
     if (points.size() > (1u << 26)) {
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
     }
-    return impl_->solve(body, nullptr, time, points, out, {});
+    return impl_->solve(body, nullptr, time, points, out, {}, wakes);
 }
 
 Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
@@ -322,6 +343,10 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
     namespace td = tidewater::detail;
     const td::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
     const td::BodyFinder finder(scene, bodies);
+    // The scene's boats (boat i is emitter i) ride the ocean and the lakes.
+    Wakes boats;
+    for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, boats);
+    const Wakes* wakes = scene.boats.empty() ? nullptr : &boats;
     std::vector<td::PointBody> where(points.size());
     std::vector<std::vector<std::size_t>> groups(finder.evaluation_count());
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -341,9 +366,9 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
             case td::EvaluationKind::land:
                 for (std::size_t k = 0; k < members.size(); ++k) results[k] = td::land_surface(scene, group_points[k]);
                 break;
-            case td::EvaluationKind::ocean: st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {}); break;
+            case td::EvaluationKind::ocean: st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {}, wakes); break;
             case td::EvaluationKind::lake:
-                st = impl_->solve(scene.lakes[static_cast<std::size_t>(key.lake)].body, nullptr, time, group_points, results, {});
+                st = impl_->solve(scene.lakes[static_cast<std::size_t>(key.lake)].body, nullptr, time, group_points, results, {}, wakes);
                 break;
             case td::EvaluationKind::river: {
                 const td::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];

@@ -7,33 +7,42 @@
 namespace tidewater::render::detail {
 
 Result<WakeUpload> pack_wakes(const Scene& scene, const Wakes* host, double time, glm::dvec2 origin) {
-    WakeUpload out;
-    if (scene.boats.empty() && (host == nullptr || host->point_count() == 0)) return out;
+    if (scene.boats.empty() && (host == nullptr || host->point_count() == 0)) return WakeUpload{};
     Wakes wakes;
     if (host != nullptr) {
         if (auto st = host->validate("renderer: FrameInfo::wakes"); !st) return st.error();
         wakes = *host;
     }
     for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, wakes);
-    if (auto st = wakes.validate("renderer: wakes"); !st) return st.error();
-    // Chains that churn foam first: the fragment shader walks only those for it.
-    auto churns = [](const WakeChain& c) {
-        return std::any_of(c.points.begin(), c.points.end(), [](const DisturbancePoint& p) { return p.turbulence > 0.0; });
-    };
-    std::stable_partition(wakes.chains.begin(), wakes.chains.end(), churns);
-    Wakes turbulent_only;
-    for (const WakeChain& c : wakes.chains)
-        if (churns(c)) turbulent_only.chains.push_back(c);
-    const auto prepared = tidewater::detail::prepare_wakes<double>(wakes, time);
-    out.turbulent = static_cast<std::uint32_t>(tidewater::detail::prepare_wakes<double>(turbulent_only, time).x.size());
-    const glm::dvec2 shift = prepared.origin - origin;
-    out.points.resize(prepared.x.size());
-    for (std::size_t i = 0; i < prepared.x.size(); ++i) {
-        gpu::GpuWakePoint& p = out.points[i];
-        p.position_age = glm::vec4(static_cast<float>(prepared.x[i] + shift.x), static_cast<float>(prepared.z[i] + shift.y),
-                                   static_cast<float>(prepared.age[i]), static_cast<float>(prepared.strength[i]));
-        p.shape = glm::vec4(static_cast<float>(prepared.size[i]), static_cast<float>(prepared.steepness[i]),
-                            static_cast<float>(prepared.turbulence[i]), prepared.linked[i] ? 1.0f : 0.0f);
+    return pack_wakes(wakes, time, origin);
+}
+
+Result<WakeUpload> pack_wakes(const Wakes& given, double time, glm::dvec2 origin) {
+    WakeUpload out;
+    if (auto st = given.validate("wakes"); !st) return st.error();
+    // What churns foam first (chains and splashes): the fragment shader walks only those for it.
+    Wakes churning, calm;
+    churning.splash_max_age = calm.splash_max_age = given.splash_max_age;
+    auto churns = [](const DisturbancePoint& p) { return p.turbulence > 0.0; };
+    for (const WakeChain& c : given.chains) (std::any_of(c.points.begin(), c.points.end(), churns) ? churning : calm).chains.push_back(c);
+    for (std::size_t i = 0; i < given.splashes.size(); ++i) {
+        Wakes& to = churns(given.splashes[i]) ? churning : calm;
+        to.splashes.push_back(given.splashes[i]);
+        to.splash_emitters.push_back(given.splash_emitters.empty() ? 0 : given.splash_emitters[i]);
+    }
+    for (const Wakes* part : {&churning, &calm}) {
+        const auto prepared = tidewater::detail::prepare_wakes<double>(*part, time);
+        const glm::dvec2 shift = prepared.origin - origin;
+        for (std::size_t i = 0; i < prepared.x.size(); ++i) {
+            gpu::GpuWakePoint p;
+            p.position_age = glm::vec4(static_cast<float>(prepared.x[i] + shift.x), static_cast<float>(prepared.z[i] + shift.y),
+                                       static_cast<float>(prepared.age[i]), static_cast<float>(prepared.strength[i]));
+            p.shape = glm::vec4(static_cast<float>(prepared.size[i]), static_cast<float>(prepared.steepness[i]),
+                                static_cast<float>(prepared.turbulence[i]), prepared.linked[i] ? 1.0f : 0.0f);
+            out.points.push_back(p);
+        }
+        if (part == &churning) out.turbulent = static_cast<std::uint32_t>(out.points.size());
+        out.displacement_bound += prepared.displacement_bound;
     }
     return out;
 }

@@ -15,11 +15,14 @@ namespace tidewater::render::detail {
 struct WakeUpload {
     std::vector<gpu::GpuWakePoint> points;  ///< chains with turbulence first, positions relative to O
     std::uint32_t turbulent = 0;            ///< how many of the first points belong to them
+    double displacement_bound = 0.0;        ///< as detail::PreparedWakes
 };
 
 /// The wakes of `scene`'s boats and the host's (null: none) at clock time `time`, prepared
 /// as the CPU queries prepare them (detail::prepare_wakes) and placed relative to the
 /// render origin. Fails, naming the field, on bad host wakes or more than kMaxWakePoints.
 Result<WakeUpload> pack_wakes(const Scene& scene, const Wakes* host, double time, glm::dvec2 origin);
+/// `wakes` alone (validated), placed relative to `origin`.
+Result<WakeUpload> pack_wakes(const Wakes& wakes, double time, glm::dvec2 origin);
 
 }  // namespace tidewater::render::detail

@@ -27,13 +27,15 @@ public:
     GpuQuery(const GpuQuery&) = delete;
     GpuQuery& operator=(const GpuQuery&) = delete;
 
-    /// Same contract as tidewater::query_surface.
+    /// Same contract as tidewater::query_surface, with `wakes` (null: none) as
+    /// QueryOptions::wakes.
     Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
-                         std::span<SurfacePoint> out);
+                         std::span<SurfacePoint> out, const Wakes* wakes = nullptr);
 
     /// Same contract as tidewater::query_world: points are sorted into bodies on the
     /// host as the CPU does, then each body's water (a river's falling surface, waves and
-    /// current included) is solved by the shader. `detail`, when given (the same size
+    /// current included) is solved by the shader; the scene's boats' wakes ride the ocean
+    /// and lakes. `detail`, when given (the same size
     /// as `points`), receives the river flow-detail slope at each point (0 elsewhere).
     Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                        std::span<glm::dvec2> detail = {});
