@@ -118,6 +118,13 @@ JSON
     "$TW" query --scene river.json --backend gpu --time 3 --points river_points.csv --out gpu_river.csv
     check "gpu river exit 0" test $? -eq 0
     check "the same bodies and currents within 1 mm/s, heights within 1 mm" bash -c "paste -d, cpu_river.csv gpu_river.csv | awk -F, 'NR>1 { h=NF/2; if (\$15 != \$(15+h)) bad=1; d=\$3-\$(3+h); if (d<0) d=-d; if (d>1e-3) bad=1; for (i=16;i<=17;i++) { e=\$i-\$(i+h); if (e<0) e=-e; if (e>1e-3) bad=1 } } END {exit bad}'"
+    # The tug's wake (examples/scenes/tug.json): both backends carry it, within 1 mm.
+    printf 'x,z\n-200,-840\n-250,-860\n-300,-820\n-400,-880\n0,-700\n' > wake_points.csv
+    "$TW" query --scene "$EXAMPLES/scenes/tug.json" --time 0 --points wake_points.csv --out cpu_wake.csv
+    "$TW" query --scene "$EXAMPLES/scenes/tug.json" --backend gpu --time 0 --points wake_points.csv --out gpu_wake.csv
+    check "gpu wake exit 0" test $? -eq 0
+    check "a wake behind the tug" bash -c "awk -F, 'NR>1 && NR<5 { w=\$18; if (w<0) w=-w; if (w>0.01) seen=1 } END {exit !seen}' cpu_wake.csv"
+    check "heights and wakes within 1 mm" bash -c "paste -d, cpu_wake.csv gpu_wake.csv | awk -F, 'NR>1 { h=NF/2; for (i=3;i<=18;i+=15) { d=\$i-\$(i+h); if (d<0) d=-d; if (d>1e-3) bad=1 } } END {exit bad}'"
     ;;
   query_out_matches_stdout)
     "$TW" query --scene "$EXAMPLES/scenes/default.json" --time 7 --points points.csv --out a.csv --threads 2
