@@ -106,6 +106,30 @@ double coverage(const detail::Rgba8Image& img, int x0, int x1) {
     return static_cast<double>(differ) / static_cast<double>(total);
 }
 
+// A boat's wake: the sampled wake field is the world query's wake column, and it is there
+// behind the tug of examples/scenes/tug.json.
+TEST(Inspect, ExportsTheBoatsWakes) {
+    auto parsed = load_scene(std::filesystem::path(TIDEWATER_EXAMPLES_DIR) / "scenes" / "tug.json");
+    ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+    auto scene = test::baked(std::move(parsed));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    SampleGrid grid;
+    grid.min = {-500.0, -950.0};
+    grid.max = {-120.0, -700.0};
+    grid.nx = 39, grid.nz = 26;
+    auto sample = sample_field(*scene, grid, 0.0);
+    ASSERT_TRUE(sample.ok()) << sample.error().message;
+    double worst = 0.0, biggest = 0.0;
+    for (std::size_t k = 0; k < grid.points(); ++k) {
+        const glm::dvec2 where{sample->surface[k].x, sample->surface[k].z};
+        worst = std::max(worst, std::abs(sample->value("wake", k) - query_world_point(*scene, 0.0, where).surface.wake));
+        biggest = std::max(biggest, std::abs(sample->wake[k]));
+    }
+    std::printf("sampled wake up to %.3f m; against the world query %.2g m\n", biggest, worst);
+    EXPECT_GT(biggest, 0.1);
+    EXPECT_LT(worst, 1e-6);  // the same evaluation (float lanes batched differently)
+}
+
 // The default scene's brook and rill: the export's body ids name them through body_names,
 // its flow is the world query's current, and a flow picture with glyphs and a drift
 // track differs from the same picture without them.

@@ -208,7 +208,7 @@ Verb add_inspect_verb(CLI::App& app) {
     cmd->add_option("--time", a->time, "Clock time, s");
     cmd->add_option("--times", a->times, "Time range t0:t1:dt, s (export: one file per time)");
     cmd->add_option("--field", a->field, "Field to colour: height, displacement, normal, velocity, jacobian, foam, depth, "
-                                         "shore_distance, wet, flow, body")
+                                         "shore_distance, wet, flow, body, wake")
         ->capture_default_str();
     cmd->add_option("--export", a->export_dir, "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
     cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");

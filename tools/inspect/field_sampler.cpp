@@ -35,6 +35,7 @@ const std::vector<FieldInfo>& field_infos() {
         {"wet", 1, "1", "1 where the surface stands above the terrain"},
         {"flow", 3, "m/s", "depth-averaged current alone (x, 0, z): rivers and their plumes, 0 elsewhere"},
         {"body", 1, "1", "water body id: 0 land, 1 ocean, then the lakes and the rivers in the scene's order (names in body_names)"},
+        {"wake", 1, "m", "the boats' wakes' share of the height (the scene's boats)"},
     };
     return infos;
 }
@@ -58,6 +59,7 @@ double FieldSample::value(const std::string& field, std::size_t k, int c) const 
     if (field == "wet") return wet[k];
     if (field == "flow") return pick(flow[k]);
     if (field == "body") return body[k];
+    if (field == "wake") return wake[k];
     return std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -80,6 +82,7 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     s.body_names = body_names(scene);
     s.surface.resize(n), s.height.resize(n), s.jacobian.resize(n), s.foam.resize(n), s.depth.resize(n), s.shore_distance.resize(n);
     s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n), s.flow.resize(n), s.body.resize(n);
+    s.wake.resize(n);
     const double lakes = static_cast<double>(scene.lakes.size());
     for (std::size_t k = 0; k < n; ++k) {
         const SurfacePoint& p = out[k].surface;
@@ -95,6 +98,7 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
         s.velocity[k] = p.velocity;
         s.jacobian[k] = p.jacobian;
         s.foam[k] = p.foam;
+        s.wake[k] = p.wake;
         s.depth[k] = p.depth;
         s.shore_distance[k] = p.shore_distance;
         s.wet[k] = p.wet ? 1.0 : 0.0;

@@ -50,6 +50,7 @@ struct FieldSample {
     std::vector<glm::dvec3> displacement, normal, velocity;
     std::vector<glm::dvec3> flow;  ///< The current alone (x, 0, z), m/s.
     std::vector<double> body;      ///< Body id (see body_names), one per grid point.
+    std::vector<double> wake;      ///< The wakes' share of the height, m.
     /// Names of the body ids: 0 "" (land), 1 "ocean", then the lakes and the rivers in the scene's order.
     std::vector<std::string> body_names;
     bool has_shore = false;  ///< depth, shore_distance and wet are meaningful (the scene has terrain).
