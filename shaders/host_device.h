@@ -73,6 +73,7 @@ TW_CONST float kWakeGravity = 9.81f;       // m/s^2, tidewater::kGravity
 TW_CONST float kWakeFoamLifetime = 30.0f;  // s
 TW_CONST float kWakeFoamSpread = 0.6f;     // m / sqrt(s)
 TW_CONST uint kMaxWakePoints = 4096u;
+TW_CONST uint kMaxWakeBoxes = 8u;  // where the wakes reach (tidewater::detail::wake_reach), per chain; more are merged
 
 // One disturbance of a wake as the GPU reads it (8 floats). Chains are stored oldest
 // first; `linked` says the next point continues the chain (a segment joins them).
@@ -158,7 +159,8 @@ struct GpuFrame {
     vec4 sky_e;              // xyz: E for Y, x, y; w: exposure (per zenith luminance)
     vec4 sky_zenith;         // xyz: zenith Y (relative, 1) / F(0, theta_s), x / F, y / F; w: saturation of the display look
     vec4 sky_balance;        // xyz: white-balance gains on linear sRGB; w: unused
-    vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; zw: unused
+    vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
+    vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -231,7 +233,7 @@ static_assert(sizeof(GpuQueryResult) == 96);
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 15 * 16);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 15 * 16 + 16 * kMaxWakeBoxes);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

@@ -274,7 +274,7 @@ void main() {
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     float foam = max(crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, sqrt(jacobian_detail.y)), shore_info.y * (0.25 + 0.75 * crest_band));
     // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
-    if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u) foam = max(foam, wakes_foam_at(rest_xz));
+    if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
     // A fast current churns white water.
     foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
     if (d.shore.w > 0.0) {

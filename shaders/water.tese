@@ -59,7 +59,7 @@ void main() {
     }
     // Wakes ride the ocean and the lakes (rivers carry none), as in the CPU queries.
     wake_eta = 0.0;
-    if (uint(g_draw.body.x) != kBodyRiver && WAKE_COUNT > 0u) {
+    if (uint(g_draw.body.x) != kBodyRiver && WAKE_COUNT > 0u && wakes_reach(rest_xz)) {
         SurfaceSums wake = wakes_at(rest_xz);
         add_scaled(s, wake, 1.0);
         wake_eta = wake.eta;

@@ -23,4 +23,15 @@ GpuBodyDraw g_draw;
 #define RIVER_FIRST_WAVE uint(g_draw.river.z)
 #define RIVER_WAVE_COUNT uint(g_draw.river.w)
 
+
+// Whether rest position xz (relative to O) lies where the frame's wakes can be felt
+// (GpuFrame.wake_boxes): elsewhere their contributions cancel and are not summed. A
+// function of the position alone, so neighbouring patches agree on shared vertices.
+bool wakes_reach(vec2 xz) {
+    for (uint b = 0u; b < uint(frame.wakes.z); ++b) {
+        vec4 box = frame.wake_boxes[b];
+        if (all(greaterThanEqual(xz, box.xy)) && all(lessThanEqual(xz, box.zw))) return true;
+    }
+    return false;
+}
 #endif

@@ -5,6 +5,7 @@
 
 #include "host_device.h"
 #include "test_helpers.hpp"
+#include "tidewater/detail/wake_water.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/wakes.hpp"
@@ -344,6 +345,52 @@ TEST(Wakes, PointsAppearAndExpireWithoutAJump) {
     EXPECT_TRUE(dropped);
     EXPECT_LT(appear, 1e-3);
     EXPECT_LT(expire, 1e-3);
+}
+
+// Where a chain's waves can be felt (detail::wake_reach, the boxes the renderer culls
+// by): just outside each box of a tug's wake, on a course with a turn, the full sum is
+// under 1 mm; inside, the wake is there.
+TEST(Wakes, OutsideTheirReachTheChainsCancel) {
+    SceneBoat boat;
+    boat.path = {{0.0, 0.0}, {600.0, 0.0}, {900.0, 300.0}};
+    boat.speed = 5.0;
+    boat.hull = {20.0, 6.0, 1.5};
+    const double time = 200.0;
+    Wakes wakes;
+    scripted_boat_wake(boat, 0, time, wakes);
+    std::erase_if(wakes.chains, [](const WakeChain& c) { return c.points.front().strength == 0.0; });
+    const auto prepared = detail::prepare_wakes<double>(wakes, time);
+    ASSERT_EQ(prepared.boxes.size(), 2u);
+    std::vector<glm::dvec2> ring;
+    for (const glm::dvec4& b : prepared.boxes) {
+        const glm::dvec2 lo = prepared.origin + glm::dvec2(b.x, b.y) - 5.0, hi = prepared.origin + glm::dvec2(b.z, b.w) + 5.0;
+        for (double f = 0.0; f <= 1.0; f += 0.01) {
+            ring.push_back({glm::mix(lo.x, hi.x, f), lo.y});
+            ring.push_back({glm::mix(lo.x, hi.x, f), hi.y});
+            ring.push_back({lo.x, glm::mix(lo.y, hi.y, f)});
+            ring.push_back({hi.x, glm::mix(lo.y, hi.y, f)});
+        }
+    }
+    // Points outside one box may lie in the other's: keep those outside both.
+    std::erase_if(ring, [&](glm::dvec2 p) {
+        for (const glm::dvec4& b : prepared.boxes) {
+            const glm::dvec2 r = p - prepared.origin;
+            if (r.x >= b.x && r.x <= b.z && r.y >= b.y && r.y <= b.w) return true;
+        }
+        return false;
+    });
+    ASSERT_GT(ring.size(), 100u);
+    const std::vector<double> outside = wake_heights(wakes, time, ring);
+    std::vector<glm::dvec2> track;
+    for (double x = 100.0; x <= 500.0; x += 3.0) track.push_back({x, 20.0});
+    const std::vector<double> inside = wake_heights(wakes, time, track);
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < outside.size(); ++i)
+        if (std::abs(outside[i]) > std::abs(outside[worst])) worst = i;
+    std::printf("beyond the wakes' reach: %.6f m at most over %zu points (at %.0f, %.0f); in the wake %.3f m\n", largest(outside),
+                ring.size(), ring[worst].x, ring[worst].y, largest(inside));
+    EXPECT_LT(largest(outside), 1e-3);
+    EXPECT_GT(largest(inside), 0.03);
 }
 
 std::string scene_with_boats(const std::string& boats) {

@@ -226,7 +226,9 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
     if (!wakes) return wakes.error();
-    plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent), 0.0f, 0.0f);
+    plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent),
+                                 static_cast<float>(wakes->boxes.size()), 0.0f);
+    for (std::size_t b = 0; b < wakes->boxes.size(); ++b) plan.frame.wake_boxes[b] = wakes->boxes[b];
     if (!wakes->points.empty())
         std::memcpy(slot->wake_points.mapped(), wakes->points.data(), sizeof(gpu::GpuWakePoint) * wakes->points.size());
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));

@@ -43,6 +43,16 @@ Result<WakeUpload> pack_wakes(const Wakes& given, double time, glm::dvec2 origin
         }
         if (part == &churning) out.turbulent = static_cast<std::uint32_t>(out.points.size());
         out.displacement_bound += prepared.displacement_bound;
+        for (const glm::dvec4& b : prepared.boxes) {
+            const glm::vec4 box(static_cast<float>(b.x + shift.x), static_cast<float>(b.y + shift.y), static_cast<float>(b.z + shift.x),
+                                static_cast<float>(b.w + shift.y));
+            if (out.boxes.size() < gpu::kMaxWakeBoxes) {
+                out.boxes.push_back(box);
+            } else {  // merged into the last: larger, never smaller
+                glm::vec4& last = out.boxes.back();
+                last = glm::vec4(std::min(last.x, box.x), std::min(last.y, box.y), std::max(last.z, box.z), std::max(last.w, box.w));
+            }
+        }
     }
     return out;
 }

@@ -16,6 +16,7 @@ struct WakeUpload {
     std::vector<gpu::GpuWakePoint> points;  ///< chains with turbulence first, positions relative to O
     std::uint32_t turbulent = 0;            ///< how many of the first points belong to them
     double displacement_bound = 0.0;        ///< as detail::PreparedWakes
+    std::vector<glm::vec4> boxes;           ///< where they reach, relative to O (at most kMaxWakeBoxes: the rest merged)
 };
 
 /// The wakes of `scene`'s boats and the host's (null: none) at clock time `time`, prepared

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include "tidewater/detail/wake_point.hpp"
 #include "tidewater/wakes.hpp"
@@ -24,8 +25,19 @@ struct PreparedWakes {
     /// How far the wakes can move a particle sideways (an estimate, m): widens the
     /// Eulerian solve's search radius.
     double displacement_bound = 0.0;
+    /// Where each chain's waves (and all the splashes') can be felt, relative to `origin`:
+    /// (min x, min z, max x, max z). Outside, a chain's contributions cancel (wake_reach).
+    std::vector<glm::dvec4> boxes;
     bool empty() const { return x.empty(); }
 };
+
+/// How far from a disturbance its chain's waves can be felt `age` seconds on (m): a
+/// straight chain's Kelvin waves travel at half its speed `speed` (m/s), but a turn sheds
+/// faster ones, so 0.9 of it, with two source sizes and 60 m to spare for the cusp's Airy
+/// tail and the near field (beyond it a tug's wake with a 45 degree turn is under 1 mm);
+/// a splash's waves (speed 0) at the group speed of the longest it makes with any height,
+/// 1/20 of its peak wavenumber.
+double wake_reach(double age, double speed, double size);
 
 /// The share of its strength (and turbulence) a point keeps at `age`: all until the last
 /// fifth of `max_age`, then a smoothstep to none.
