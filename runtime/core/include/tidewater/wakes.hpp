@@ -11,8 +11,9 @@
 // - BoatWakeEmitter: a boat whose poses the host feeds (a player's boat), or
 // - scripted_boat_wake: a scene's boat on its path (Scene::boats), the same wake at a
 //   clock time whatever the frame rate or the order of the queries.
-// Pass a Wakes to the queries through QueryOptions::wakes; query_world adds the scene's
-// scripted boats itself.
+// Pass a Wakes to the queries through QueryOptions::wakes (and to the renderer through
+// FrameInfo::wakes); query_world, the GPU queries and the renderer add the scene's
+// scripted boats themselves.
 //
 // Units: metres, seconds, radians; positions are world (x, z).
 // Threading: plain values; an emitter is used from one thread at a time, and a Wakes
