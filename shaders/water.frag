@@ -210,7 +210,7 @@ void main() {
     // Reflection: the sky, and the terrain by a short screen-space march.
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
-    vec3 reflected = sky_color(r);
+    vec3 reflected = vec3(0.0);  // the terrain's, where the screen-space march meets it
     bool reflects_scene = false;  // the screen-space march hit the terrain
     if (has_scene) {
         vec3 p = world_pos;
@@ -244,7 +244,7 @@ void main() {
                 vec3 hit = world_from_depth(suv, scene_z);
                 if (length(hit - p) < 0.03 * length(p - frame.camera.xyz) + 1.0) {
                     float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
-                    reflected = mix(reflected, from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
+                    reflected = mix(sky_color(r), from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
                     reflects_scene = edge > 0.0;
                 }
                 break;

@@ -27,9 +27,8 @@ Status check_point(const DisturbancePoint& p, const std::string& where) {
     return {};
 }
 
-/// Track position of the point `distance` m along a polyline, and the unit direction of
-/// the chord from `distance - half` to `distance + half` (a heading that turns smoothly
-/// round the path's corners).
+/// The point `distance` m along a polyline (straight on past its end; its first point
+/// before its start).
 glm::dvec2 along(const std::vector<glm::dvec2>& path, double distance) {
     double walked = 0.0;
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -244,6 +243,10 @@ void scripted_boat_wake(const SceneBoat& boat, int emitter, double time, Wakes& 
         drop_aged(chain, time);
         if (chain.points.size() >= 2) wakes.chains.push_back(std::move(chain));
     }
+}
+
+void scene_boat_wakes(const std::vector<SceneBoat>& boats, double time, Wakes& wakes) {
+    for (std::size_t b = 0; b < boats.size(); ++b) scripted_boat_wake(boats[b], static_cast<int>(b), time, wakes);
 }
 
 double SceneBoat::path_length() const {

@@ -48,7 +48,7 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
     Wakes wakes;
     if (!scene.boats.empty()) {
         if (caller_options.wakes != nullptr) wakes = *caller_options.wakes;
-        for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, wakes);
+        scene_boat_wakes(scene.boats, time, wakes);
         options.wakes = &wakes;
     }
     const detail::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;

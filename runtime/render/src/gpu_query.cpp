@@ -345,7 +345,7 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
     const td::BodyFinder finder(scene, bodies);
     // The scene's boats (boat i is emitter i) ride the ocean and the lakes.
     Wakes boats;
-    for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, boats);
+    scene_boat_wakes(scene.boats, time, boats);
     const Wakes* wakes = scene.boats.empty() ? nullptr : &boats;
     std::vector<td::PointBody> where(points.size());
     std::vector<std::vector<std::size_t>> groups(finder.evaluation_count());

@@ -13,7 +13,7 @@ Result<WakeUpload> pack_wakes(const Scene& scene, const Wakes* host, double time
         if (auto st = host->validate("renderer: FrameInfo::wakes"); !st) return st.error();
         wakes = *host;
     }
-    for (std::size_t b = 0; b < scene.boats.size(); ++b) scripted_boat_wake(scene.boats[b], static_cast<int>(b), time, wakes);
+    scene_boat_wakes(scene.boats, time, wakes);
     return pack_wakes(wakes, time, origin);
 }
 

@@ -150,4 +150,8 @@ struct SceneBoat {
 /// path and the time.
 void scripted_boat_wake(const SceneBoat& boat, int emitter, double time, Wakes& wakes);
 
+/// The wakes of a scene's boats (Scene::boats) at clock time `time`, appended to `wakes`:
+/// boat i is emitter i. What the queries and the renderer add for a scene.
+void scene_boat_wakes(const std::vector<SceneBoat>& boats, double time, Wakes& wakes);
+
 }  // namespace tidewater
