@@ -74,6 +74,20 @@ TW_CONST float kWakeFoamLifetime = 30.0f;  // s
 TW_CONST float kWakeFoamSpread = 0.6f;     // m / sqrt(s)
 TW_CONST uint kMaxWakePoints = 4096u;
 TW_CONST uint kMaxWakeBoxes = 8u;  // where the wakes reach (tidewater::detail::wake_reach), per chain; more are merged
+// How far a chain's waves are felt (tidewater::detail::wake_reach): kWakeReachSpeedShare
+// of the emitter's speed times the age, plus kWakeReachSizes source sizes and
+// kWakeReachMargin metres; a splash's at the group speed of its longest waves, those at
+// kWakeSplashLongest of its peak wavenumber.
+TW_CONST float kWakeReachSpeedShare = 1.25f;
+TW_CONST float kWakeReachSizes = 2.0f;
+TW_CONST float kWakeReachMargin = 60.0f;  // m
+TW_CONST float kWakeSplashLongest = 0.05f;
+TW_CONST float kWakeReachFullShare = 0.8f;  // within this share of the reach a segment counts fully, fading to none at it
+// The walk skips kWakeBlockPoints consecutive points at once where a disc holding all
+// their reach discs says none is felt. The wake buffer holds kMaxWakeBlocks such discs
+// (vec4: centre xz relative to the render origin, squared radius, unused), then the points.
+TW_CONST uint kWakeBlockPoints = 32u;
+TW_CONST uint kMaxWakeBlocks = kMaxWakePoints / kWakeBlockPoints;
 
 // One disturbance of a wake as the GPU reads it (8 floats). Chains are stored oldest
 // first; `linked` says the next point continues the chain (a segment joins them).

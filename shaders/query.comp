@@ -22,7 +22,7 @@ layout(std430, set = 0, binding = 7) readonly buffer RiverTexels { float river_t
 layout(std430, set = 0, binding = 8) readonly buffer RiverChannel { vec4 river_channel[]; };   // s, n (m), flow x, z (m/s)
 layout(std430, set = 0, binding = 9) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
 // Wakes on still water, relative to the cell origins' zero (the chains in order).
-layout(std430, set = 0, binding = 10) readonly buffer WakePoints { GpuWakePoint wake_points[]; };
+layout(std430, set = 0, binding = 10) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
 #define SHORE_RESOLUTION params.shore_resolution

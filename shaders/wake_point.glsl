@@ -2,7 +2,7 @@
 // runtime/core/private/tidewater/detail/wake_point.hpp (the formula) and of add_wakes /
 // wakes_foam in runtime/core/src/water/wake_water.hpp (the walk along the chains).
 // Constants come from host_device.h. The includer declares wake_points[] (GpuWakePoint,
-// positions relative to the render origin O) and defines WAKE_COUNT (points) and
+// positions relative to the render origin O), wake_blocks[] (their block discs) and defines WAKE_COUNT (points) and
 // WAKE_TURBULENT (how many of the first points belong to chains that carry turbulence).
 #ifndef TIDEWATER_WAKE_POINT_GLSL
 #define TIDEWATER_WAKE_POINT_GLSL
@@ -63,22 +63,70 @@ float wake_foam(float d, float age, float size, float turbulence) {
     return turbulence * exp(-tau / kWakeFoamLifetime - x * x);
 }
 
-// Every chain segment and lone point at rest position xz (relative to O).
+// How far from a disturbance made `age` s ago by an emitter at `speed` m/s (0: a
+// splash) its waves can be felt, m (tidewater::detail::wake_reach).
+float wake_reach(float age, float speed, float size) {
+    float margin = kWakeReachSizes * size + kWakeReachMargin;
+    if (speed > 0.0) return kWakeReachSpeedShare * speed * age + margin;
+    float k_min = kWakeSplashLongest * 1.7320508 * 3.1415927 / size;
+    return 0.5 * sqrt(kWakeGravity / k_min) * age + margin;
+}
+
+// How much of the segment from point a (the older) to b, or of lone point a = b, is
+// summed at xz: all within kWakeReachFullShare of its reach, none beyond, a smoothstep
+// in the squared distance between (tidewater::detail::wake_reach_disc, wake_reach_share).
+float wake_reach_share(vec2 xz, GpuWakePoint a, GpuWakePoint b) {
+    vec2 seg = b.position_age.xy - a.position_age.xy;
+    float len = length(seg);
+    float duration = a.position_age.z - b.position_age.z;
+    float speed = duration > 0.0 ? len / duration : 0.0;
+    float radius = wake_reach(max(a.position_age.z, b.position_age.z), speed, max(a.shape.x, b.shape.x)) + 0.5 * len;
+    vec2 r = xz - 0.5 * (a.position_age.xy + b.position_age.xy);
+    float r2 = radius * radius;
+    float x = clamp((r2 - dot(r, r)) / (r2 * (1.0 - kWakeReachFullShare * kWakeReachFullShare)), 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+WakeWave wake_wave_of(vec2 xz, GpuWakePoint p) { return wake_wave(xz - p.position_age.xy, p.position_age.z, p.shape.x); }
+
+// Every chain segment and lone point at rest position xz (relative to O); those that
+// cannot be felt there are skipped (tidewater::detail::add_wakes).
 SurfaceSums wakes_at(vec2 xz) {
     SurfaceSums s = surface_zero();
     WakeWave last;
-    for (uint i = 0u; i < WAKE_COUNT; ++i) {
+    bool last_made = false;
+    for (uint begin = 0u; begin < WAKE_COUNT; begin += kWakeBlockPoints) {
+      vec4 disc = wake_blocks[begin / kWakeBlockPoints];
+      vec2 off = xz - disc.xy;
+      if (dot(off, off) > disc.z) {  // none of this block is felt here
+          last_made = false;
+          continue;
+      }
+      for (uint i = begin; i < min(WAKE_COUNT, begin + kWakeBlockPoints); ++i) {
         GpuWakePoint p = wake_points[i];
-        WakeWave here = wake_wave(xz - p.position_age.xy, p.position_age.z, p.shape.x);
         bool after = i > 0u && wake_points[i - 1u].shape.w > 0.5;
         bool before = p.shape.w > 0.5;
+        if (!after && before) {  // a chain's first point: no term of its own
+            last_made = false;
+            continue;
+        }
+        GpuWakePoint o = wake_points[after ? i - 1u : i];
+        float share = wake_reach_share(xz, o, p);
+        if (share <= 0.0) {
+            last_made = false;
+            continue;
+        }
+        WakeWave here = wake_wave_of(xz, p);
         if (after) {
-            GpuWakePoint o = wake_points[i - 1u];
-            add_wake_segment(s, last, here, o.position_age.w, p.position_age.w, o.shape.y, p.shape.y, o.position_age.z - p.position_age.z);
-        } else if (!before) {
-            add_wake_wave(s, here, p.position_age.w, p.shape.y);
+            if (!last_made) last = wake_wave_of(xz, o);
+            add_wake_segment(s, last, here, share * o.position_age.w, share * p.position_age.w, o.shape.y, p.shape.y,
+                             o.position_age.z - p.position_age.z);
+        } else {
+            add_wake_wave(s, here, share * p.position_age.w, p.shape.y);
         }
         last = here;
+        last_made = true;
+      }
     }
     return s;
 }

@@ -10,7 +10,7 @@ layout(std430, set = 0, binding = 9) readonly buffer RiverChannel { vec4 river_c
 layout(std430, set = 0, binding = 10) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks
 layout(std430, set = 0, binding = 11) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
 layout(std430, set = 0, binding = 12) readonly buffer PatchList { uint patch_list[]; };       // x | z << 16
-layout(std430, set = 0, binding = 13) readonly buffer WakePoints { GpuWakePoint wake_points[]; };  // chains in order, relative to O
+layout(std430, set = 0, binding = 13) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };  // chains in order, relative to O
 layout(push_constant) uniform DrawPush { layout(offset = 16) uint draw_index; } draw_push;
 
 // The draw whose river fields river_water.glsl reads (set before evaluating).

@@ -91,7 +91,7 @@ BoatWakeShape boat_wake_shape(const BoatHull& hull) {
     // bow chains share the hull's mean draft.
     const double head = kBoatBlockCoefficient * hull.draft;
     s.bow_strength = 0.5 * kGravity * head * s.bow_size * s.bow_size / kPi;
-    s.bow_spacing = hull.length / 16.0;
+    s.bow_spacing = hull.length / 8.0;
     s.stern_spacing = 0.5 * hull.beam;
     s.port_bow = {0.25 * hull.length, -0.25 * hull.beam};
     s.starboard_bow = {0.25 * hull.length, 0.25 * hull.beam};

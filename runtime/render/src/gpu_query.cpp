@@ -241,7 +241,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         if (!packed) return packed.error();
         wake_upload = std::move(packed).value();
     }
-    auto grown_wakes = ensure(wake_points, sizeof(gpu::GpuWakePoint) * std::max<std::size_t>(1, wake_upload.points.size()));
+    auto grown_wakes = ensure(wake_points, detail::wake_buffer_bytes(std::max<std::size_t>(1, wake_upload.points.size())));
     if (!grown_wakes) return grown_wakes.error();
     rebind = rebind || *grown_wakes;
     if (rebind) bind_buffers();
@@ -250,8 +250,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     if (!channel_waves.empty()) std::memcpy(river_waves.mapped(), channel_waves.data(), sizeof(gpu::GpuRiverWave) * channel_waves.size());
     std::memcpy(phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
     std::memcpy(points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * query_points.size());
-    if (!wake_upload.points.empty())
-        std::memcpy(wake_points.mapped(), wake_upload.points.data(), sizeof(gpu::GpuWakePoint) * wake_upload.points.size());
+    detail::write_wake_buffer(wake_upload, wake_points.mapped());
 
     // The shader derives the tolerance and step bound from sum(Q A) as the CPU does.
     gpu::GpuQueryParams params{};

@@ -124,7 +124,7 @@ Status Renderer::Impl::create_slots() {
         auto frame = GpuBuffer::create(ctx(), sizeof(gpu::GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         if (!frame) return frame.error();
         s.frame = std::move(frame).value();
-        auto wake_points = GpuBuffer::create(ctx(), sizeof(gpu::GpuWakePoint) * gpu::kMaxWakePoints, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        auto wake_points = GpuBuffer::create(ctx(), detail::wake_buffer_bytes(gpu::kMaxWakePoints), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         if (!wake_points) return wake_points.error();
         s.wake_points = std::move(wake_points).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -229,8 +229,7 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent),
                                  static_cast<float>(wakes->boxes.size()), 0.0f);
     for (std::size_t b = 0; b < wakes->boxes.size(); ++b) plan.frame.wake_boxes[b] = wakes->boxes[b];
-    if (!wakes->points.empty())
-        std::memcpy(slot->wake_points.mapped(), wakes->points.data(), sizeof(gpu::GpuWakePoint) * wakes->points.size());
+    detail::write_wake_buffer(*wakes, slot->wake_points.mapped());
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());

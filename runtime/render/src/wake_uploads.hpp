@@ -17,7 +17,14 @@ struct WakeUpload {
     std::uint32_t turbulent = 0;            ///< how many of the first points belong to them
     double displacement_bound = 0.0;        ///< as detail::PreparedWakes
     std::vector<glm::vec4> boxes;           ///< where they reach, relative to O (at most kMaxWakeBoxes: the rest merged)
+    std::vector<glm::vec4> blocks;          ///< per kWakeBlockPoints points: centre xz (relative to O), squared radius, 0
 };
+
+/// Bytes of a wake buffer for `points` points: kMaxWakeBlocks block discs, then the points.
+std::size_t wake_buffer_bytes(std::size_t points);
+/// Writes `upload`'s block discs and points into a mapped wake buffer of at least
+/// wake_buffer_bytes(upload.points.size()) bytes.
+void write_wake_buffer(const WakeUpload& upload, void* mapped);
 
 /// The wakes of `scene`'s boats and the host's (null: none) at clock time `time`, prepared
 /// as the CPU queries prepare them (detail::prepare_wakes) and placed relative to the

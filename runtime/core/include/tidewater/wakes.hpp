@@ -82,8 +82,9 @@ struct BoatHull {
 /// bow shoulders, a quarter length forward and a quarter beam out) each pressing with a
 /// Gaussian patch of width L / 2 whose head is the hull's mean draft (block coefficient
 /// kBoatBlockCoefficient times the draft), and a stern chain that only churns foam.
-/// Points are laid every L / 16 of track (a quarter of the shortest wave the patch
-/// makes, so fronts neither scallop nor alias); the stern's every B / 2.
+/// Points are laid every L / 8 of track (half the shortest wave the patch makes, L / 4
+/// where its filter is e^-4; each segment is integrated with its phase step, so fronts
+/// neither scallop nor alias); the stern's every B / 2.
 struct BoatWakeShape {
     double bow_size = 0.0;      ///< source size of the bow chains, m
     double bow_strength = 0.0;  ///< each bow chain's strength, m^4/s^2

@@ -21,10 +21,17 @@ double wake_age_fade(double age, double max_age) {
 }
 
 double wake_reach(double age, double speed, double size) {
-    const double margin = 2.0 * size + 60.0;
-    if (speed > 0.0) return 0.9 * speed * age + margin;
-    const double k_min = 0.05 * std::sqrt(3.0) * kPi / size;
+    const double margin = double(gpu::kWakeReachSizes) * size + double(gpu::kWakeReachMargin);
+    if (speed > 0.0) return double(gpu::kWakeReachSpeedShare) * speed * age + margin;
+    const double k_min = double(gpu::kWakeSplashLongest) * std::sqrt(3.0) * kPi / size;
     return 0.5 * std::sqrt(kGravity / k_min) * age + margin;
+}
+
+glm::dvec3 wake_reach_disc(glm::dvec2 a, double age_a, double size_a, glm::dvec2 b, double age_b, double size_b) {
+    const double length = glm::length(b - a), duration = age_a - age_b;
+    const double speed = duration > 0.0 ? length / duration : 0.0;
+    const double radius = wake_reach(std::max(age_a, age_b), speed, std::max(size_a, size_b)) + 0.5 * length;
+    return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), radius * radius};
 }
 
 namespace {
@@ -56,6 +63,12 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
         w.turbulence.push_back(static_cast<Scalar>(turbulence));
         w.linked.push_back(linked ? 1 : 0);
     };
+    // The disc where the segment from point `i` to the next (or lone point `i`) is felt.
+    auto push_disc = [&](glm::dvec3 disc) {
+        w.reach_x.push_back(static_cast<Scalar>(disc.x - w.origin.x));
+        w.reach_z.push_back(static_cast<Scalar>(disc.y - w.origin.y));
+        w.reach2.push_back(static_cast<Scalar>(disc.z));
+    };
     for (const WakeChain& chain : wakes.chains) {
         if (chain.emitter == exclude && exclude >= 0) continue;
         std::vector<const DisturbancePoint*> alive;
@@ -70,6 +83,12 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
             const DisturbancePoint& p = *alive[i];
             const double fade = wake_age_fade(time - p.emitted, chain.max_age);
             push(p, p.strength * fade, p.turbulence * fade, i + 1 < alive.size());
+            if (i + 1 < alive.size()) {
+                const DisturbancePoint& q = *alive[i + 1];
+                push_disc(wake_reach_disc(p.position, time - p.emitted, p.source_size, q.position, time - q.emitted, q.source_size));
+            } else {
+                push_disc({p.position, 0.0});  // a chain's last point opens no segment
+            }
             head = std::max(head, std::abs(p.strength) * kPi / (kGravity * p.source_size * p.source_size) * p.steepness);
             const double reach = wake_reach(time - p.emitted, speed, p.source_size);
             const glm::dvec2 at = p.position - w.origin;
@@ -87,6 +106,8 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
         if ((emitter == exclude && exclude >= 0) || p.emitted > time || time - p.emitted >= wakes.splash_max_age) continue;
         const double fade = wake_age_fade(time - p.emitted, wakes.splash_max_age);
         push(p, p.strength * fade, p.turbulence * fade, false);
+        const double age = time - p.emitted;
+        push_disc(wake_reach_disc(p.position, age, p.source_size, p.position, age, p.source_size));
         w.displacement_bound += std::abs(p.strength) * unit_peak(p.source_size) * p.steepness;
         const double reach = wake_reach(time - p.emitted, 0.0, p.source_size);
         const glm::dvec2 at = p.position - w.origin;
@@ -94,9 +115,40 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
                                 std::max(splash_box.z, at.x + reach), std::max(splash_box.w, at.y + reach));
     }
     if (splash_box.x <= splash_box.z) w.boxes.push_back(splash_box);
+    w.blocks = wake_block_discs(w.reach_x, w.reach_z, w.reach2, w.linked);
     return w;
 }
 
+template <typename Scalar>
+std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z, const std::vector<Scalar>& r2,
+                                         const std::vector<unsigned char>& linked) {
+    std::vector<glm::dvec3> blocks;
+    const std::size_t n = x.size();
+    for (std::size_t begin = 0; begin < n; begin += gpu::kWakeBlockPoints) {
+        const std::size_t end = std::min(n, begin + gpu::kWakeBlockPoints);
+        std::vector<std::size_t> terms;  // the reach discs of the terms points begin..end add
+        for (std::size_t i = begin; i < end; ++i) {
+            const bool after = i > 0 && linked[i - 1], before = linked[i] != 0;
+            if (after || !before) terms.push_back(after ? i - 1 : i);
+        }
+        glm::dvec2 lo(1e300), hi(-1e300);
+        for (std::size_t t : terms) {
+            lo = glm::min(lo, glm::dvec2(x[t], z[t]));
+            hi = glm::max(hi, glm::dvec2(x[t], z[t]));
+        }
+        const glm::dvec2 centre = terms.empty() ? glm::dvec2(0.0) : 0.5 * (lo + hi);
+        double radius = -1.0;  // no terms: felt nowhere
+        for (std::size_t t : terms)
+            radius = std::max(radius, glm::length(glm::dvec2(x[t], z[t]) - centre) + std::sqrt(double(r2[t])) + 1.0);
+        blocks.push_back({centre.x, centre.y, radius < 0.0 ? -1.0 : radius * radius});
+    }
+    return blocks;
+}
+
+template std::vector<glm::dvec3> wake_block_discs<float>(const std::vector<float>&, const std::vector<float>&, const std::vector<float>&,
+                                                        const std::vector<unsigned char>&);
+template std::vector<glm::dvec3> wake_block_discs<double>(const std::vector<double>&, const std::vector<double>&, const std::vector<double>&,
+                                                         const std::vector<unsigned char>&);
 template PreparedWakes<float> prepare_wakes<float>(const Wakes&, double, int);
 template PreparedWakes<double> prepare_wakes<double>(const Wakes&, double, int);
 

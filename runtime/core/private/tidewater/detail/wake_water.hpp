@@ -2,10 +2,12 @@
 // The formula is detail/wake_point.hpp; this walks the chains and lone points.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "tidewater/detail/wake_point.hpp"
@@ -22,6 +24,13 @@ struct PreparedWakes {
     /// Points in chain order, oldest first. linked[i]: point i + 1 continues i's chain.
     std::vector<Scalar> x, z, age, strength, size, steepness, turbulence;
     std::vector<unsigned char> linked;
+    /// Where point i's waves can be felt: with the next point's, if linked, else its own
+    /// (centre relative to `origin`, squared radius; wake_reach_disc). Farther away the
+    /// walk skips them (their contributions cancel along the chain) unless `cull` is off.
+    std::vector<Scalar> reach_x, reach_z, reach2;
+    /// Discs holding the reach of points b * kWakeBlockPoints onward (wake_block_discs).
+    std::vector<glm::dvec3> blocks;
+    bool cull = true;
     /// How far the wakes can move a particle sideways (an estimate, m): widens the
     /// Eulerian solve's search radius.
     double displacement_bound = 0.0;
@@ -32,12 +41,20 @@ struct PreparedWakes {
 };
 
 /// How far from a disturbance its chain's waves can be felt `age` seconds on (m): a
-/// straight chain's Kelvin waves travel at half its speed `speed` (m/s), but a turn sheds
-/// faster ones, so 0.9 of it, with two source sizes and 60 m to spare for the cusp's Airy
-/// tail and the near field (beyond it a tug's wake with a 45 degree turn is under 1 mm);
+/// straight chain's Kelvin waves travel at half its speed `speed` (m/s), but a turn and
+/// the chain's start shed faster ones, so 1.25 times it (kWakeReachSpeedShare), with two
+/// source sizes and 60 m to spare for the cusp's Airy tail and the near field (summing
+/// only segments within reach changes a tug's wake with a 45 degree turn by under 1 mm);
 /// a splash's waves (speed 0) at the group speed of the longest it makes with any height,
 /// 1/20 of its peak wavenumber.
 double wake_reach(double age, double speed, double size);
+
+/// The disc (centre x, z, squared radius) where a chain's segment from disturbance a
+/// (the older) to b can be felt: wake_reach of its older end at the segment's own speed
+/// (its length over the ages' difference; 0 for a lone point, a = b), round its middle,
+/// widened by half its length. A test of position alone, so that the renderer's patches
+/// agree on shared vertices.
+glm::dvec3 wake_reach_disc(glm::dvec2 a, double age_a, double size_a, glm::dvec2 b, double age_b, double size_b);
 
 /// The share of its strength (and turbulence) a point keeps at `age`: all until the last
 /// fifth of `max_age`, then a smoothstep to none.
@@ -48,23 +65,72 @@ double wake_age_fade(double age, double max_age);
 template <typename Scalar>
 PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude = -1);
 
+/// For each run of kWakeBlockPoints consecutive points (b * kWakeBlockPoints onward), a
+/// disc (centre x, z, squared radius) holding the reach discs of the terms their walk
+/// adds (a segment's, from the point before, or a lone point's), widened by 1 m: where
+/// it is not felt, the whole run is skipped. (x, z, r2, linked) as PreparedWakes' reach
+/// discs; relative to whatever origin they are.
+template <typename Scalar>
+std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z, const std::vector<Scalar>& r2,
+                                         const std::vector<unsigned char>& linked);
+
+/// How much of a segment's (or lone point's) waves is summed at squared distance `d2`
+/// from the middle of its reach disc of squared radius `r2`: all within
+/// kWakeReachFullShare of the radius, none beyond it, a smoothstep in d^2 between, so
+/// that the sum has no edge and grows smoothly as the disc does (shaders: wake_felt).
+template <typename T>
+T wake_reach_share(const T& d2, const T& r2) {
+    using Ops = NumberOps<T>;
+    const double full = static_cast<double>(gpu::kWakeReachFullShare);
+    T x = (r2 - d2) / (r2 * constant<T>(1.0 - full * full));
+    x = Ops::select(x < T(0.0), T(0.0), Ops::select(x > T(1.0), T(1.0), x));
+    return x * x * (T(3.0) - T(2.0) * x);
+}
+
 /// Adds every chain segment and lone point of `w` at rest position (x, z) (relative to
 /// w.origin) to `s`.
 template <bool kVelocity, typename T, typename Scalar>
 void add_wakes(SurfaceSums<T>& s, const PreparedWakes<Scalar>& w, const T& x, const T& z) {
+    using Ops = NumberOps<T>;
     const std::size_t n = w.x.size();
+    auto wave = [&](std::size_t i) { return wake_wave(x - T(w.x[i]), z - T(w.z[i]), T(w.age[i]), T(w.size[i])); };
     WakeWave<T> last{};
-    for (std::size_t i = 0; i < n; ++i) {
-        const WakeWave<T> here = wake_wave(x - T(w.x[i]), z - T(w.z[i]), T(w.age[i]), T(w.size[i]));
-        const bool after = i > 0 && w.linked[i - 1];   // i closes a segment from i - 1
-        const bool before = w.linked[i] != 0;           // i opens a segment to i + 1
+    bool last_made = false;  // `last` holds point i - 1's wave
+    for (std::size_t begin = 0, block = 0; begin < n; begin += gpu::kWakeBlockPoints, ++block) {
+      const std::size_t end = std::min(n, begin + gpu::kWakeBlockPoints);
+      if (w.cull) {
+          const glm::dvec3& disc = w.blocks[block];
+          const T bx = x - T(Scalar(disc.x)), bz = z - T(Scalar(disc.y));
+          if (!Ops::any(bx * bx + bz * bz <= T(Scalar(disc.z)))) {
+              last_made = false;
+              continue;
+          }
+      }
+      for (std::size_t i = begin; i < end; ++i) {
+        const bool after = i > 0 && w.linked[i - 1];  // i closes a segment from i - 1
+        const bool before = w.linked[i] != 0;          // i opens a segment to i + 1
+        if (!after && before) {                        // a chain's first point: no term of its own
+            last_made = false;
+            continue;
+        }
+        const std::size_t disc = after ? i - 1 : i;
+        const T rx = x - T(w.reach_x[disc]), rz = z - T(w.reach_z[disc]);
+        const T share = w.cull ? wake_reach_share(rx * rx + rz * rz, T(w.reach2[disc])) : T(1.0);
+        if (!Ops::any(share > T(0.0))) {
+            last_made = false;
+            continue;
+        }
+        const WakeWave<T> here = wave(i);
         if (after) {
-            add_wake_segment<kVelocity>(s, last, here, T(w.strength[i - 1]), T(w.strength[i]), T(w.steepness[i - 1]),
-                                        T(w.steepness[i]), T(w.age[i - 1] - w.age[i]));
-        } else if (!before) {
-            add_wake_point<kVelocity>(s, here, T(w.strength[i]), T(w.steepness[i]));
+            if (!last_made) last = wave(i - 1);
+            add_wake_segment<kVelocity>(s, last, here, share * T(w.strength[i - 1]), share * T(w.strength[i]),
+                                        T(w.steepness[i - 1]), T(w.steepness[i]), T(w.age[i - 1] - w.age[i]));
+        } else {
+            add_wake_point<kVelocity>(s, here, share * T(w.strength[i]), T(w.steepness[i]));
         }
         last = here;
+        last_made = true;
+      }
     }
 }
 
