@@ -74,6 +74,60 @@ HullMesh HullMesh::cylinder(double radius, double height, int segments) {
     return m;
 }
 
+namespace {
+
+/// A convex prism over `outline` (x, z) from y0 to y1, appended to `m`, each face wound
+/// counter-clockwise seen from outside.
+void add_prism(HullMesh& m, const std::vector<glm::dvec2>& outline, double y0, double y1) {
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    const auto n = static_cast<std::uint32_t>(outline.size());
+    glm::dvec3 centre(0.0, 0.5 * (y0 + y1), 0.0);
+    for (const glm::dvec2& p : outline) {
+        m.vertices.push_back({p.x, y0, p.y});
+        m.vertices.push_back({p.x, y1, p.y});
+        centre += glm::dvec3(p.x, 0.0, p.y) / double(n);
+    }
+    std::vector<std::array<std::uint32_t, 3>> faces;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t j = (i + 1) % n;
+        faces.push_back({base + 2 * i, base + 2 * j, base + 2 * j + 1});  // side
+        faces.push_back({base + 2 * i, base + 2 * j + 1, base + 2 * i + 1});
+        if (i >= 1 && i + 1 < n) {
+            faces.push_back({base, base + 2 * i, base + 2 * j});              // bottom fan
+            faces.push_back({base + 1, base + 2 * i + 1, base + 2 * j + 1});  // top fan
+        }
+    }
+    for (auto f : faces) {  // a convex solid: each face's normal points away from its centre
+        const glm::dvec3 a = m.vertices[f[0]], b = m.vertices[f[1]], c = m.vertices[f[2]];
+        if (glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0 - centre) < 0.0) std::swap(f[1], f[2]);
+        m.triangles.push_back(f);
+    }
+}
+
+std::vector<glm::dvec2> boat_plan(double length, double beam) {
+    const double shoulder = 0.2 * length, half = 0.5 * beam;
+    std::vector<glm::dvec2> plan = {{-0.5 * length, -half}, {shoulder, -half}, {0.5 * length, 0.0}, {shoulder, half}, {-0.5 * length, half}};
+    // Put the plan's centroid (rectangle aft, triangle forward) on the origin.
+    const double rect = (shoulder + 0.5 * length) * beam, tri = 0.5 * (0.5 * length - shoulder) * beam;
+    const double cx = (rect * 0.5 * (shoulder - 0.5 * length) + tri * (shoulder + (0.5 * length - shoulder) / 3.0)) / (rect + tri);
+    for (glm::dvec2& p : plan) p.x -= cx;
+    return plan;
+}
+
+}  // namespace
+
+double HullMesh::boat_plan_area(double length, double beam) { return 0.85 * length * beam; }
+
+HullMesh HullMesh::boat(double length, double beam, double draft) {
+    HullMesh m;
+    add_prism(m, boat_plan(length, beam), -draft, draft);
+    const double house_x = -0.1 * length, house_l = 0.25 * length, house_b = 0.25 * beam;
+    add_prism(m, {{house_x - 0.5 * house_l, -house_b}, {house_x + 0.5 * house_l, -house_b}, {house_x + 0.5 * house_l, house_b},
+                  {house_x - 0.5 * house_l, house_b}},
+              draft, draft + std::max(1.0, 1.5 * draft));
+    return m;
+}
+
 double HullMesh::volume() const {
     double v = 0.0;
     for (const auto& t : triangles) v += glm::dot(vertices[t[0]], glm::cross(vertices[t[1]], vertices[t[2]])) / 6.0;

@@ -420,7 +420,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "lakes", "rivers", "boats", "camera", "shore"}); !st)
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "lakes", "rivers", "boats", "floats", "camera", "shore"}); !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
@@ -452,6 +452,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (auto st = detail::read_lakes(*r, base_dir, scene.lakes, scene.warnings); !st) return st.error();
     if (auto st = detail::read_rivers(*r, base_dir, scene.rivers, scene.warnings); !st) return st.error();
     if (auto st = detail::read_boats(*r, scene.boats); !st) return st.error();
+    if (auto st = detail::read_floats(*r, scene.floats); !st) return st.error();
     if (!scene.has_ocean && scene.lakes.empty() && scene.rivers.empty())
         return r->error("ocean", "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
     if (auto st = detail::check_body_names(*r, scene); !st) return st.error();

@@ -41,6 +41,13 @@ struct HullMesh {
     static HullMesh sphere(double radius, int rings = 32);
     /// An upright cylinder (a barrel) of `radius` and `height` round the origin.
     static HullMesh cylinder(double radius, double height, int segments = 24);
+    /// A workboat: a flat-bottomed hull `length` x `beam` whose sides run straight for
+    /// the aft 70% and meet at the bow, 2 `draft` deep (keel at y = -draft, deck at
+    /// +draft, its plan's centroid on the origin), with a deckhouse above it. Floats at
+    /// `draft` with mass kWaterDensity x boat_plan_area(length, beam) x draft.
+    static HullMesh boat(double length, double beam, double draft);
+    /// The plan area of boat()'s hull, m^2.
+    static double boat_plan_area(double length, double beam);
     double volume() const;   ///< m^3 (a closed, outward mesh)
     Status validate() const; ///< indices in range, finite vertices, a positive volume
 };
@@ -96,6 +103,7 @@ public:
     Status step(const FloatingWater& water);
 
     double time() const { return time_; }
+    const BuoyancyOptions& options() const { return options_; }
     void set_time(double t) { time_ = t; }
     const RigidBodyState& state(int body) const { return states_[static_cast<std::size_t>(body)]; }
     RigidBodyState& state(int body) { return states_[static_cast<std::size_t>(body)]; }

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
@@ -37,6 +38,18 @@ struct SceneShore {
     int resolution = 256;                ///< Texels per side of the shore model, 16 to 4096.
     double breaking_index = 0.78;        ///< Breaker height / depth (McCowan), 0.3 to 1.2.
     std::filesystem::path bake_folder;   ///< A saved bake for bake_scene to load (empty: bake).
+};
+
+/// Something the scene sets afloat (tidewater/scene_floaters.hpp): a barrel (an upright
+/// cylinder), a box or a sphere of uniform density, starting at rest on the water.
+struct SceneFloat {
+    enum class Shape { barrel, box, sphere };
+    std::string name;
+    Shape shape = Shape::barrel;
+    glm::dvec3 size{0.6, 0.9, 0.6};  ///< m: barrel: diameter, height, diameter; box: x, y, z; sphere: diameter
+    double mass = 100.0;             ///< kg (> 0, less than the water its hull displaces)
+    glm::dvec2 at{0.0};              ///< world (x, z) where it starts, m
+    glm::vec3 color{0.85, 0.35, 0.05};  ///< paint, linear RGB 0..1
 };
 
 /// A lake: the terrain below `level` connected to `at` (found by bake_scene), with its own
@@ -77,6 +90,8 @@ struct Scene {
     std::vector<SceneRiver> rivers;
     /// Scripted boats (tidewater/wakes.hpp): query_world and the renderer add their wakes.
     std::vector<SceneBoat> boats;
+    /// Barrels, boxes and buoys afloat (SceneFloaters rides them with the boats).
+    std::vector<SceneFloat> floats;
     std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
     /// What bake_scene made (null as parsed). Copies share it; it is never modified.

@@ -46,7 +46,7 @@ Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats) {
         if (points > gpu::kMaxWakePoints)
             return scene.error(fmt::format("boats/{}", i),
                                fmt::format("the boats' wakes would hold {} disturbance points, more than the {} a frame may hold "
-                                           "(a faster or shorter boat lays more: points are every length / 16 of track)",
+                                           "(a faster or shorter boat lays more: points are every length / 8 of track)",
                                            points, gpu::kMaxWakePoints));
         boats.push_back(std::move(boat).value());
     }

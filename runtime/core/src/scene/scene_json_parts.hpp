@@ -33,6 +33,8 @@ Status read_rivers(const ObjectReader& scene, const std::filesystem::path& base_
 /// The scene's "boats" (absent: none): scripted boats whose wakes the queries and the
 /// renderer add; their wakes together must fit kMaxWakePoints.
 Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats);
+/// "floats": barrels, boxes and spheres set afloat (scene_floats_json.cpp).
+Status read_floats(const ObjectReader& scene, std::vector<SceneFloat>& floats);
 /// Points (x, z) at "path": at least two, finite, consecutive points apart.
 Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path);
 /// Every body name once, none called "ocean" but the ocean.

@@ -1,0 +1,136 @@
+#include "tidewater/scene_floaters.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <span>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "tidewater/constants.hpp"
+#include "tidewater/world_query.hpp"
+
+namespace tidewater {
+
+namespace {
+
+RigidBodyProps float_props(const SceneFloat& f) {
+    switch (f.shape) {
+        case SceneFloat::Shape::box: return RigidBodyProps::solid_box(f.size, f.mass);
+        case SceneFloat::Shape::sphere: {
+            RigidBodyProps p;
+            p.mass = f.mass;
+            const double r = 0.5 * f.size.x;
+            p.inertia = glm::dvec3(0.4 * f.mass * r * r);
+            p.hull = HullMesh::sphere(r, 8);
+            return p;
+        }
+        case SceneFloat::Shape::barrel: break;
+    }
+    RigidBodyProps p = RigidBodyProps::barrel(0.5 * f.size.x, f.size.y, f.mass);
+    p.hull = HullMesh::cylinder(0.5 * f.size.x, f.size.y, 12);
+    return p;
+}
+
+/// Where the body frame's origin rests in calm water above the surface: the bottom sits
+/// the Archimedes draft under it (a sphere's centre at the surface, near enough).
+double rest_height(const SceneFloat& f) {
+    if (f.shape == SceneFloat::Shape::sphere) return 0.0;
+    const double plan = f.shape == SceneFloat::Shape::box ? f.size.x * f.size.z : 0.25 * kPi * f.size.x * f.size.x;
+    return 0.5 * f.size.y - f.mass / (kWaterDensity * plan);
+}
+
+/// The rotation that points the body's x axis along `heading` (radians from +x toward +z).
+glm::dquat yaw(double heading) { return glm::angleAxis(-heading, glm::dvec3(0.0, 1.0, 0.0)); }
+
+}  // namespace
+
+Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, double start, double step) {
+    if (!scene) return Error{ErrorCode::invalid_argument, "scene floaters: no scene"};
+    if (!(step > 0.0) || step > 0.5) return Error{ErrorCode::invalid_argument, fmt::format("scene floaters: step {} s must be in (0, 0.5]", step)};
+    if (!std::isfinite(start)) return Error{ErrorCode::invalid_argument, "scene floaters: the start time is not finite"};
+    SceneFloaters f(scene, step);
+    const double from = start - kSceneFloatSettle;
+    f.world_.set_time(from);
+    for (std::size_t i = 0; i < scene->boats.size(); ++i) {
+        const SceneBoat& b = scene->boats[i];
+        RigidBodyProps props;
+        props.mass = kWaterDensity * HullMesh::boat_plan_area(b.hull.length, b.hull.beam) * b.hull.draft;
+        const glm::dvec3 box(b.hull.length, 2.0 * b.hull.draft, b.hull.beam);
+        props.inertia = props.mass / 12.0 * glm::dvec3(box.y * box.y + box.z * box.z, box.x * box.x + box.z * box.z, box.x * box.x + box.y * box.y);
+        props.hull = HullMesh::boat(b.hull.length, b.hull.beam, b.hull.draft);
+        props.emitter = static_cast<int>(i);  // scene_boat_wakes: boat i is emitter i
+        RigidBodyState s;
+        glm::dvec2 at;
+        double heading = 0.0;
+        b.pose_at(from, at, heading);
+        // The water under it without its own wake (its buoyancy leaves that out too).
+        QueryOptions own;
+        own.exclude_emitter = static_cast<int>(i);
+        WorldPoint under;
+        if (auto st = query_world(*scene, from, std::span<const glm::dvec2>(&at, 1), std::span<WorldPoint>(&under, 1), own); !st)
+            return st.error();
+        s.position = {at.x, under.surface.height, at.y};
+        s.orientation = yaw(heading);
+        glm::dvec2 ahead;
+        double heading_ahead = 0.0;
+        b.pose_at(from + step, ahead, heading_ahead);
+        s.velocity = glm::dvec3(ahead.x - at.x, 0.0, ahead.y - at.y) / step;  // under way from the start
+        auto id = f.world_.add(props, s);
+        if (!id) return Error{id.error().code, fmt::format("boats/{} ({}): {}", i, b.name, id.error().message)};
+        f.bodies_.push_back({b.name, props.hull, glm::vec3(0.62f, 0.16f, 0.10f), true});
+    }
+    for (std::size_t i = 0; i < scene->floats.size(); ++i) {
+        const SceneFloat& sf = scene->floats[i];
+        const RigidBodyProps props = float_props(sf);
+        RigidBodyState s;
+        const WorldPoint under = query_world_point(*scene, from, sf.at);
+        if (under.body.kind == BodyKind::none)
+            return Error{ErrorCode::invalid_argument, fmt::format("floats/{} ({}): ({}, {}) is on land", i, sf.name, sf.at.x, sf.at.y)};
+        s.position = {sf.at.x, under.surface.height + rest_height(sf), sf.at.y};
+        auto id = f.world_.add(props, s);
+        if (!id) return Error{id.error().code, fmt::format("floats/{} ({}): {}", i, sf.name, id.error().message)};
+        f.bodies_.push_back({sf.name, props.hull, sf.color, false});
+    }
+    if (auto st = f.advance_to(start); !st) return st.error();
+    return f;
+}
+
+Status SceneFloaters::advance_to(double time) {
+    if (!std::isfinite(time)) return Error{ErrorCode::invalid_argument, "scene floaters: the time is not finite"};
+    const FloatingWater water{scene_.get(), nullptr, nullptr};
+    const double step = world_.options().step;
+    while (world_.time() + 0.5 * step <= time) {
+        if (auto st = world_.step(water); !st) return st;
+        hold_boats_to_their_paths();
+    }
+    return {};
+}
+
+void SceneFloaters::hold_boats_to_their_paths() {
+    const double t = world_.time(), dt = world_.options().step;
+    for (std::size_t i = 0; i < scene_->boats.size(); ++i) {
+        const SceneBoat& b = scene_->boats[i];
+        glm::dvec2 at, ahead;
+        double heading = 0.0, heading_ahead = 0.0;
+        b.pose_at(t, at, heading);
+        b.pose_at(t + dt, ahead, heading_ahead);
+        RigidBodyState& s = world_.state(static_cast<int>(i));
+        s.position.x = at.x;
+        s.position.z = at.y;
+        const glm::dvec2 v = (ahead - at) / dt;
+        s.velocity.x = v.x;
+        s.velocity.z = v.y;
+        // Turn the body about the vertical so its x axis points along the path, keeping its pitch and roll.
+        const glm::dvec3 forward = s.orientation * glm::dvec3(1.0, 0.0, 0.0);
+        const double current = std::atan2(forward.z, forward.x);
+        s.orientation = glm::normalize(yaw(std::remainder(heading - current, kTwoPi)) * s.orientation);
+        s.angular_velocity.y = -std::remainder(heading_ahead - heading, kTwoPi) / dt;
+    }
+}
+
+SceneFloaters::Pose SceneFloaters::pose(std::size_t body) const {
+    const RigidBodyState& s = world_.state(static_cast<int>(body));
+    return {s.position, s.orientation};
+}
+
+}  // namespace tidewater
