@@ -18,6 +18,7 @@
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/render/standalone.hpp"
+#include "tidewater/scene_floaters.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "sky_model.hpp"
 #include "vk_util.hpp"
@@ -676,6 +677,57 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
         EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.03) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
     }
+}
+
+// Floating bodies (FrameInfo::floats) are drawn where SceneFloaters puts them: from 80 m
+// straight above a tug on a calm pool, the pixels under its deck carry its red paint and
+// those 30 m beside it are water; a barrel drifting 40 m off shows its orange. Under the
+// validation layer. A body without a hull is refused, naming it.
+TEST_F(RenderTest, FloatingBodiesAreDrawnWhereTheyFloat) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
+        "boats": [{"name": "tug", "path": [[-400, 0], [400, 0]], "speed": 5.0, "length": 20.0, "beam": 6.0, "draft": 1.5}],
+        "floats": [{"name": "barrel", "at": [100, 40], "radius": 1.0, "height": 1.5, "mass": 1500, "color": [0.9, 0.45, 0.05]}]})");
+    auto floaters = SceneFloaters::create(std::make_shared<const Scene>(scene), 20.0);  // the tug's centre at x = -300
+    ASSERT_TRUE(floaters) << floaters.error().message;
+    std::vector<render::FloatDraw> draws;
+    for (std::size_t b = 0; b < floaters->bodies().size(); ++b)
+        draws.push_back({&floaters->bodies()[b].hull, floaters->pose(b).position, floaters->pose(b).orientation, floaters->bodies()[b].color});
+    render::FrameInfo frame;
+    frame.time = 20.0;
+    frame.floats = draws;
+    auto look_down_at = [&](glm::dvec3 at) {
+        frame.camera.position = at + glm::dvec3(0.0, 80.0, 0.0);
+        frame.camera.target = at + glm::dvec3(0.0, 0.0, 1.0);  // image up is +z, image right is -x
+        frame.camera.fov_y_deg = 60.0;
+    };
+    auto red = [](Rgb c) { return c.r > 1.8 * c.g && c.r > 1.8 * c.b; };
+    const glm::dvec3 tug = floaters->pose(0).position;
+    look_down_at(tug);
+    const auto img = render(scene, frame, 320, 320);
+    // 80 m up with a 60 degree field: 320 pixels span 92 m, 3.5 pixels a metre.
+    int painted = 0, beside = 0;
+    for (int dy = -4; dy <= 4; ++dy)
+        for (int dx = -4; dx <= 4; ++dx) {
+            painted += red(test::pixel(img, 160 + dx, 160 + dy));
+            beside += red(test::pixel(img, 160 + dx, 160 + 105 + dy)) + red(test::pixel(img, 160 + dx, 160 - 105 + dy));
+        }
+    const Rgb deck = test::pixel(img, 160, 160), water = test::pixel(img, 160, 265);
+    std::printf("tug at (%.1f, %.3f, %.1f): %d of 81 pixels under its deck red (%.2f %.2f %.2f), %d of 162 beside it (water %.2f %.2f %.2f)\n",
+                tug.x, tug.y, tug.z, painted, deck.r, deck.g, deck.b, beside, water.r, water.g, water.b);
+    EXPECT_GT(painted, 70);
+    EXPECT_EQ(beside, 0);
+    const glm::dvec3 barrel = floaters->pose(1).position;
+    look_down_at(barrel);
+    const auto barrel_img = render(scene, frame, 320, 320);
+    const Rgb top = test::pixel(barrel_img, 160, 160);
+    std::printf("barrel at (%.1f, %.3f, %.1f): %.2f %.2f %.2f\n", barrel.x, barrel.y, barrel.z, top.r, top.g, top.b);
+    EXPECT_GT(top.r, 1.5 * top.g);
+    EXPECT_GT(top.g, 2.0 * top.b);
+    render::FloatDraw missing;
+    frame.floats = std::span<const render::FloatDraw>(&missing, 1);
+    auto refused = target_->render(*renderer_, frame);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("FrameInfo::floats[0]"), std::string::npos) << refused.error().message;
 }
 
 // Boat wakes are drawn where the CPU puts them: a tug at 5 m/s on a calm pool seen from

@@ -7,6 +7,7 @@
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
+#include "tidewater/scene_floaters.hpp"
 
 namespace tidewater::cli {
 
@@ -51,12 +52,29 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
         std::filesystem::create_directories(job.output_dir, ec);
         if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", job.output_dir, ec.message())};
     }
+    // The scene's boats and floats riding the water, drawn at each frame's time.
+    std::optional<SceneFloaters> floaters;
+    if (!scene.boats.empty() || !scene.floats.empty()) {
+        auto made = SceneFloaters::create(std::make_shared<const Scene>(scene), job.start_time);
+        if (!made) return made.error();
+        floaters = std::move(made).value();
+    }
+    std::vector<render::FloatDraw> float_draws;
     RenderResult result;
     result.device = (*device)->device_name();
     nlohmann::json frames = nlohmann::json::array();
     for (int i = 0; i < job.frames; ++i) {
         frame.time = job.start_time + i / job.fps;
         frame.frame_index = static_cast<std::uint64_t>(i);
+        if (floaters) {
+            if (auto st = floaters->advance_to(frame.time); !st) return st.error();
+            float_draws.clear();
+            for (std::size_t b = 0; b < floaters->bodies().size(); ++b) {
+                const SceneFloaters::Pose pose = floaters->pose(b);
+                float_draws.push_back({&floaters->bodies()[b].hull, pose.position, pose.orientation, floaters->bodies()[b].color});
+            }
+            frame.floats = float_draws;
+        }
         auto image = (*target)->render(**renderer, frame);
         if (!image) return image.error();
         // Validation messages fail the job before anything is written for this frame.

@@ -206,6 +206,9 @@ Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFor
     terrain.fragment = "terrain.frag";
     terrain.terrain_vertices = true;
     if (auto st = make(p.terrain, terrain); !st) return st.error();
+    PipelineDesc floats = terrain;  // the terrain's vertices, one paint per body
+    floats.fragment = "float.frag";
+    if (auto st = make(p.floats, floats); !st) return st.error();
     PipelineDesc water = base;
     water.vertex = "water.vert";
     water.tess_control = "water.tesc";

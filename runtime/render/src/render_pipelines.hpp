@@ -42,7 +42,7 @@ constexpr std::uint32_t kDrawIndexOffset = 16;
 /// only when asked for (they need fillModeNonSolid).
 /// The graphics pipelines of a frame, over the frame's layouts.
 struct DrawPipelines {
-    OwnedPipeline sky, terrain, terrain_wire, water, water_wire;
+    OwnedPipeline sky, terrain, terrain_wire, floats, water, water_wire;
 };
 
 struct FramePipelines {

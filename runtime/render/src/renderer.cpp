@@ -18,6 +18,7 @@
 #include "scene_uploads.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "float_uploads.hpp"
 #include "wake_uploads.hpp"
 #include "vk_util.hpp"
 
@@ -73,7 +74,8 @@ struct Renderer::Impl {
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
-        GpuBuffer frame, waves, draws, river_waves, wake_points;
+        GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices;
+        std::vector<detail::FloatUpload::Draw> float_draws;  // this frame's, into float_vertices
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
@@ -127,6 +129,9 @@ Status Renderer::Impl::create_slots() {
         auto wake_points = GpuBuffer::create(ctx(), detail::wake_buffer_bytes(gpu::kMaxWakePoints), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         if (!wake_points) return wake_points.error();
         s.wake_points = std::move(wake_points).value();
+        auto float_vertices = GpuBuffer::create(ctx(), sizeof(detail::FloatVertex) * detail::kMaxFloatVertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        if (!float_vertices) return float_vertices.error();
+        s.float_vertices = std::move(float_vertices).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         alloc.descriptorPool = descriptor_pool.get();
         alloc.descriptorSetCount = 1;
@@ -230,6 +235,11 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
                                  static_cast<float>(wakes->boxes.size()), 0.0f);
     for (std::size_t b = 0; b < wakes->boxes.size(); ++b) plan.frame.wake_boxes[b] = wakes->boxes[b];
     detail::write_wake_buffer(*wakes, slot->wake_points.mapped());
+    auto floats = detail::pack_floats(frame.floats, plan.origin);
+    if (!floats) return floats.error();
+    if (!floats->vertices.empty())
+        std::memcpy(slot->float_vertices.mapped(), floats->vertices.data(), sizeof(detail::FloatVertex) * floats->vertices.size());
+    slot->float_draws = std::move(floats->draws);
     std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
@@ -252,6 +262,16 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const de
     vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
     vkCmdBindIndexBuffer(cmd, terrain->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, terrain->index_count, 1, 0, 0, 0);
+    if (!slot.float_draws.empty()) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.floats.get());
+        const VkBuffer fb = slot.float_vertices.handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &fb, &offset);
+        for (const detail::FloatUpload::Draw& d : slot.float_draws) {
+            const glm::vec4 push[2] = {glm::vec4(0.0f), glm::vec4(d.color, 1.0f)};  // positions are relative to O already
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), push);
+            vkCmdDraw(cmd, d.count, 1, d.first, 0);
+        }
+    }
     // The sky last: it only fills pixels nothing else covered (depth still at the far plane).
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.sky.get());
     vkCmdDraw(cmd, 3, 1, 0, 0);

@@ -32,11 +32,16 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <vulkan/vulkan.h>
 
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/scene.hpp"
+
+namespace tidewater {
+struct HullMesh;
+}
 
 namespace tidewater::render {
 
@@ -84,6 +89,16 @@ struct FrameTargets {
     VkImageView resolve_view = VK_NULL_HANDLE;
 };
 
+/// A floating body to draw (a boat, a barrel: SceneFloaters gives the scene's): its
+/// closed hull in its body frame, where it is, and its paint. Drawn opaque before the
+/// water, so the water refracts and fogs what is under it. Read during record_frame only.
+struct FloatDraw {
+    const HullMesh* hull = nullptr;              ///< body frame, m; at most 32768 triangles over all floats
+    glm::dvec3 position{0.0};                    ///< the body frame's origin, world, m
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  ///< body to world
+    glm::vec3 color{0.8f};                       ///< paint, linear RGB 0..1
+};
+
 struct FrameInfo {
     Camera camera;
     double time = 0.0;                 ///< Clock time, s; each water body adds its own offset.
@@ -95,6 +110,8 @@ struct FrameInfo {
     /// The host's wakes (BoatWakeEmitter, splashes), drawn with the scene's boats' on the
     /// ocean and lakes; null: only the scene's. Read during record_frame only.
     const Wakes* wakes = nullptr;
+    /// Boats, barrels and other floating bodies to draw; empty: none.
+    std::span<const FloatDraw> floats;
 };
 
 /// GPU time per pass of one frame, from timestamp queries (ms).

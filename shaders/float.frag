@@ -1,0 +1,29 @@
+#version 450
+// Floating bodies (boats, barrels): one paint per body, a plain Lambert sun plus sky
+// ambient (as the terrain) and the same fog as the water. Drawn with terrain.vert before
+// the water, so the water refracts and fogs their submerged parts.
+#extension GL_GOOGLE_include_directive : require
+#include "host_device.h"
+#include "frame.glsl"
+layout(location = 0) in vec3 world_pos;
+layout(location = 1) in vec3 normal;
+layout(push_constant) uniform Push { vec4 mesh_origin; vec4 paint; };  // paint: linear RGB
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    vec3 n = normalize(normal);
+    vec3 to_camera = frame.camera.xyz - world_pos;
+    float distance = length(to_camera);
+    vec3 v = to_camera / distance;
+    if (dot(n, v) < 0.0) n = -n;  // the inside of a hull seen through a gap
+    float diffuse = max(dot(n, frame.sun.xyz), 0.0);
+    float sky_light = 0.5 + 0.5 * n.y;
+    vec3 color = paint.rgb * (0.22 + 0.18 * sky_light + 0.75 * diffuse);
+    // A little sheen: painted hulls and barrels are glossy.
+    vec3 h = normalize(v + frame.sun.xyz);
+    color += 0.08 * pow(max(dot(n, h), 0.0), 40.0) * diffuse;
+    uint view = uint(frame.params.w);
+    if (view == kViewNormals) color = n * 0.5 + 0.5;
+    if (view == kViewShaded) color = apply_fog(color, distance, -v);
+    out_color = target_color(color);
+}
