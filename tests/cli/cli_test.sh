@@ -187,6 +187,11 @@ JSON
     check "summary written" grep -q '"significant_wave_height_m"' demo_out/summary.json
     check "surface CSV: header + 4 times x 64^2 points" test "$(wc -l < demo_out/surface.csv)" -eq $((1 + 4 * 64 * 64))
     check "prints where files are" grep -q "wrote .*surface.csv" log.txt
+    if grep -q "rendered on" log.txt; then
+      check "the default scene's boat is followed in boat.png" bash -c "test -s demo_out/boat.png && grep -q 'boat.png (the boat \"tug\")' log.txt"
+      check "the sequence has 24 frames" test "$(ls demo_out/sequence | wc -l)" -eq 24
+    fi
+    check "the boat and floats are summarised" bash -c "grep -q 'boat \"tug\"' log.txt && grep -q '6 floats' log.txt"
     expect_error "bad scene" "cannot open" "$TW" demo --scene nope.json --out-dir demo2
     check "no demo output after failure" test ! -e demo2/summary.json
     ;;

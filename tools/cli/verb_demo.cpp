@@ -125,6 +125,9 @@ int run_demo(const DemoArgs& a) {
                 scene->terrain.kind_name(), min_h, max_h, min_jac);
     for (const LakeSummary& l : bodies.lakes)
         std::printf("  lake \"%s\": level %.1f m, %.0f m^2\n", l.name.c_str(), l.level, l.area);
+    for (const SceneBoat& b : scene->boats)
+        std::printf("  boat \"%s\": %.0f m hull at %.1f m/s along %.0f m of path\n", b.name.c_str(), b.hull.length, b.speed, b.path_length());
+    if (!scene->floats.empty()) std::printf("  %zu floats (barrels, crates, buoys) afloat\n", scene->floats.size());
     for (const RiverSummary& r : bodies.rivers)
         std::printf("  river \"%s\": %.0f m from %.1f m to %s%s%s at %.1f m, %.1f m^3/s at a mean %.2f m/s, %d island%s\n",
                     r.name.c_str(), r.length, r.source_level, r.ends_in.c_str(), r.receiver.empty() ? "" : " ",
@@ -140,6 +143,23 @@ int run_demo(const DemoArgs& a) {
         still.single_output = (std::filesystem::path(a.out_dir) / "still.png").string();
         auto shot = run_render_job(*scene, still);
         if (!shot) return fail(verb, shot.error().message);
+        // The first boat, followed from astern and above, with what floats round it.
+        std::string boat_still;
+        if (!scene->boats.empty()) {
+            glm::dvec2 at;
+            double heading = 0.0;
+            scene->boats.front().pose_at(still.start_time, at, heading);
+            const glm::dvec2 forward{std::cos(heading), std::sin(heading)}, starboard{-forward.y, forward.x};
+            const glm::dvec2 eye = at - 45.0 * forward - 28.0 * starboard, look = at + 25.0 * forward;
+            RenderJob boat = still;
+            boat.camera = render::Camera{};
+            boat.camera->position = {eye.x, scene->water_level() + 14.0, eye.y};
+            boat.camera->target = {look.x, scene->water_level(), look.y};
+            boat.camera->fov_y_deg = 45.0;
+            boat.single_output = boat_still = (std::filesystem::path(a.out_dir) / "boat.png").string();
+            auto shot_boat = run_render_job(*scene, boat);
+            if (!shot_boat) return fail(verb, shot_boat.error().message);
+        }
         RenderJob sequence = still;
         sequence.extent = {640, 360};
         sequence.frames = 24;
@@ -148,8 +168,9 @@ int run_demo(const DemoArgs& a) {
         sequence.output_dir = (std::filesystem::path(a.out_dir) / "sequence").string();
         auto seq = run_render_job(*scene, sequence);
         if (!seq) return fail(verb, seq.error().message);
-        std::printf("  rendered on %s:\n  wrote %s\n  wrote %zu frames in %s/\n", shot->device.c_str(),
-                    shot->files.front().c_str(), seq->files.size(), sequence.output_dir.c_str());
+        std::printf("  rendered on %s:\n  wrote %s\n", shot->device.c_str(), shot->files.front().c_str());
+        if (!boat_still.empty()) std::printf("  wrote %s (the boat \"%s\")\n", boat_still.c_str(), scene->boats.front().name.c_str());
+        std::printf("  wrote %zu frames in %s/\n", seq->files.size(), sequence.output_dir.c_str());
     }
 #endif
     return 0;
