@@ -96,37 +96,37 @@ SurfaceSums wakes_at(vec2 xz) {
     WakeWave last;
     bool last_made = false;
     for (uint begin = 0u; begin < WAKE_COUNT; begin += kWakeBlockPoints) {
-      vec4 disc = wake_blocks[begin / kWakeBlockPoints];
-      vec2 off = xz - disc.xy;
-      if (dot(off, off) > disc.z) {  // none of this block is felt here
-          last_made = false;
-          continue;
-      }
-      for (uint i = begin; i < min(WAKE_COUNT, begin + kWakeBlockPoints); ++i) {
-        GpuWakePoint p = wake_points[i];
-        bool after = i > 0u && wake_points[i - 1u].shape.w > 0.5;
-        bool before = p.shape.w > 0.5;
-        if (!after && before) {  // a chain's first point: no term of its own
+        vec4 disc = wake_blocks[begin / kWakeBlockPoints];
+        vec2 off = xz - disc.xy;
+        if (dot(off, off) > disc.z) {  // none of this block is felt here
             last_made = false;
             continue;
         }
-        GpuWakePoint o = wake_points[after ? i - 1u : i];
-        float share = wake_reach_share(xz, o, p);
-        if (share <= 0.0) {
-            last_made = false;
-            continue;
+        for (uint i = begin; i < min(WAKE_COUNT, begin + kWakeBlockPoints); ++i) {
+            GpuWakePoint p = wake_points[i];
+            bool after = i > 0u && wake_points[i - 1u].shape.w > 0.5;
+            bool before = p.shape.w > 0.5;
+            if (!after && before) {  // a chain's first point: no term of its own
+                last_made = false;
+                continue;
+            }
+            GpuWakePoint o = wake_points[after ? i - 1u : i];
+            float share = wake_reach_share(xz, o, p);
+            if (share <= 0.0) {
+                last_made = false;
+                continue;
+            }
+            WakeWave here = wake_wave_of(xz, p);
+            if (after) {
+                if (!last_made) last = wake_wave_of(xz, o);
+                add_wake_segment(s, last, here, share * o.position_age.w, share * p.position_age.w, o.shape.y, p.shape.y,
+                                 o.position_age.z - p.position_age.z);
+            } else {
+                add_wake_wave(s, here, share * p.position_age.w, p.shape.y);
+            }
+            last = here;
+            last_made = true;
         }
-        WakeWave here = wake_wave_of(xz, p);
-        if (after) {
-            if (!last_made) last = wake_wave_of(xz, o);
-            add_wake_segment(s, last, here, share * o.position_age.w, share * p.position_age.w, o.shape.y, p.shape.y,
-                             o.position_age.z - p.position_age.z);
-        } else {
-            add_wake_wave(s, here, share * p.position_age.w, p.shape.y);
-        }
-        last = here;
-        last_made = true;
-      }
     }
     return s;
 }

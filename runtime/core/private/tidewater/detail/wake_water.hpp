@@ -77,7 +77,7 @@ std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std
 /// How much of a segment's (or lone point's) waves is summed at squared distance `d2`
 /// from the middle of its reach disc of squared radius `r2`: all within
 /// kWakeReachFullShare of the radius, none beyond it, a smoothstep in d^2 between, so
-/// that the sum has no edge and grows smoothly as the disc does (shaders: wake_felt).
+/// that the sum has no edge and grows smoothly as the disc does (shaders/wake_point.glsl: wake_reach_share).
 template <typename T>
 T wake_reach_share(const T& d2, const T& r2) {
     using Ops = NumberOps<T>;
@@ -97,40 +97,40 @@ void add_wakes(SurfaceSums<T>& s, const PreparedWakes<Scalar>& w, const T& x, co
     WakeWave<T> last{};
     bool last_made = false;  // `last` holds point i - 1's wave
     for (std::size_t begin = 0, block = 0; begin < n; begin += gpu::kWakeBlockPoints, ++block) {
-      const std::size_t end = std::min(n, begin + gpu::kWakeBlockPoints);
-      if (w.cull) {
-          const glm::dvec3& disc = w.blocks[block];
-          const T bx = x - T(Scalar(disc.x)), bz = z - T(Scalar(disc.y));
-          if (!Ops::any(bx * bx + bz * bz <= T(Scalar(disc.z)))) {
-              last_made = false;
-              continue;
-          }
-      }
-      for (std::size_t i = begin; i < end; ++i) {
-        const bool after = i > 0 && w.linked[i - 1];  // i closes a segment from i - 1
-        const bool before = w.linked[i] != 0;          // i opens a segment to i + 1
-        if (!after && before) {                        // a chain's first point: no term of its own
-            last_made = false;
-            continue;
+        const std::size_t end = std::min(n, begin + gpu::kWakeBlockPoints);
+        if (w.cull) {
+            const glm::dvec3& disc = w.blocks[block];
+            const T bx = x - T(Scalar(disc.x)), bz = z - T(Scalar(disc.y));
+            if (!Ops::any(bx * bx + bz * bz <= T(Scalar(disc.z)))) {  // none of this block is felt here
+                last_made = false;
+                continue;
+            }
         }
-        const std::size_t disc = after ? i - 1 : i;
-        const T rx = x - T(w.reach_x[disc]), rz = z - T(w.reach_z[disc]);
-        const T share = w.cull ? wake_reach_share(rx * rx + rz * rz, T(w.reach2[disc])) : T(1.0);
-        if (!Ops::any(share > T(0.0))) {
-            last_made = false;
-            continue;
+        for (std::size_t i = begin; i < end; ++i) {
+            const bool after = i > 0 && w.linked[i - 1];  // i closes a segment from i - 1
+            const bool before = w.linked[i] != 0;          // i opens a segment to i + 1
+            if (!after && before) {                        // a chain's first point: no term of its own
+                last_made = false;
+                continue;
+            }
+            const std::size_t disc = after ? i - 1 : i;
+            const T rx = x - T(w.reach_x[disc]), rz = z - T(w.reach_z[disc]);
+            const T share = w.cull ? wake_reach_share(rx * rx + rz * rz, T(w.reach2[disc])) : T(1.0);
+            if (!Ops::any(share > T(0.0))) {
+                last_made = false;
+                continue;
+            }
+            const WakeWave<T> here = wave(i);
+            if (after) {
+                if (!last_made) last = wave(i - 1);
+                add_wake_segment<kVelocity>(s, last, here, share * T(w.strength[i - 1]), share * T(w.strength[i]),
+                                            T(w.steepness[i - 1]), T(w.steepness[i]), T(w.age[i - 1] - w.age[i]));
+            } else {
+                add_wake_point<kVelocity>(s, here, share * T(w.strength[i]), T(w.steepness[i]));
+            }
+            last = here;
+            last_made = true;
         }
-        const WakeWave<T> here = wave(i);
-        if (after) {
-            if (!last_made) last = wave(i - 1);
-            add_wake_segment<kVelocity>(s, last, here, share * T(w.strength[i - 1]), share * T(w.strength[i]),
-                                        T(w.steepness[i - 1]), T(w.steepness[i]), T(w.age[i - 1] - w.age[i]));
-        } else {
-            add_wake_point<kVelocity>(s, here, share * T(w.strength[i]), T(w.steepness[i]));
-        }
-        last = here;
-        last_made = true;
-      }
     }
 }
 
