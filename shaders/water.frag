@@ -115,8 +115,9 @@ VisibleFacets visible_facets(vec3 n, vec3 v, float variance) {
 // How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
 // solid; thinner foam opens into lace (foam_lace, broken up by a finer gradient noise)
 // that rides the water (rest coordinates move with the particles). Where the pixel
-// cannot resolve the lace its edge widens to the whole range and the cover tends to
-// `foam` itself, the area average: no sparkle far away.
+// cannot resolve the lace its edge widens to the whole range and the cover becomes a
+// smooth function of `foam` alone (smoothstep(foam)): no sparkle far away, though thin
+// distant foam shows less than its area share.
 float foam_cover(float foam, vec2 xz, float footprint) {
     float broad = resolved(8.0, footprint), coarse = resolved(2.5, footprint), fine = resolved(0.7, footprint);
     // Warped so that the cells vary in size and shape; patches 8 m across stay solid or open.

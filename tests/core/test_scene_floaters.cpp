@@ -127,6 +127,18 @@ TEST(SceneFloaters, BadFloatsAreRefusedByName) {
     auto floaters = SceneFloaters::create(*b, 0.0);
     ASSERT_FALSE(floaters);
     EXPECT_NE(floaters.error().message.find("stranded"), std::string::npos) << floaters.error().message;
+    // So is a boat whose path crosses land (a bar across the pool at x = 100).
+    auto barred = parse_scene(R"({"version": 1, "water_level": 0, "ocean": "pool_calm",
+                                 "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -40}},
+                                 "boats": [{"name": "tug", "path": [[-900, 0], [900, 0]], "speed": 5.0, "length": 20.0,
+                                            "beam": 6.0, "draft": 1.5}]})",
+                              "barred.json");
+    ASSERT_TRUE(barred) << barred.error().message;
+    auto barred_baked = bake_scene(*barred);
+    ASSERT_TRUE(barred_baked) << barred_baked.error().message;
+    auto aground = SceneFloaters::create(*barred_baked, 0.0);
+    ASSERT_FALSE(aground);
+    EXPECT_NE(aground.error().message.find("boats/0 (tug): its path runs over land"), std::string::npos) << aground.error().message;
 }
 
 }  // namespace

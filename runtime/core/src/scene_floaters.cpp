@@ -53,6 +53,17 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
     f.world_.set_time(from);
     for (std::size_t i = 0; i < scene->boats.size(); ++i) {
         const SceneBoat& b = scene->boats[i];
+        // A boat over land would sink through it (there is no contact): refuse the path.
+        const double length = b.path_length(), spacing = 0.5 * b.hull.length;
+        for (double d = 0.0; d <= length + 0.5 * spacing; d += spacing) {
+            glm::dvec2 at;
+            double heading = 0.0;
+            b.pose_at(b.start + std::min(d, length) / b.speed, at, heading);
+            if (query_world_point(*scene, from, at).body.kind == BodyKind::none)
+                return Error{ErrorCode::invalid_argument,
+                             fmt::format("boats/{} ({}): its path runs over land at ({:.1f}, {:.1f}), {:.0f} m along it", i, b.name, at.x, at.y,
+                                         std::min(d, length))};
+        }
         RigidBodyProps props;
         props.mass = kWaterDensity * HullMesh::boat_plan_area(b.hull.length, b.hull.beam) * b.hull.draft;
         const glm::dvec3 box(b.hull.length, 2.0 * b.hull.draft, b.hull.beam);
