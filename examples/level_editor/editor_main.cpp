@@ -127,6 +127,10 @@ private:
     std::unique_ptr<render::Renderer> renderer_;
     VkDescriptorPool imgui_pool_ = VK_NULL_HANDLE;
     std::shared_ptr<const Scene> scene_;
+    std::optional<SceneFloaters> floaters_;      // the scene's boats and floats, riding the water
+    std::vector<render::FloatDraw> float_draws_;  // this frame's
+    void refloat();
+    void float_bodies(render::FrameInfo& info);
     std::string scene_path_, message_;
     char path_field_[512] = {};
     OrbitCamera camera_;
@@ -170,6 +174,8 @@ Status Editor::load(const std::string& path) {
     auto baked = bake_scene(*parsed);
     if (!baked) return baked.error();
     scene_ = std::move(baked).value();
+    floaters_.reset();
+    refloat();
     scene_path_ = path;
     std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
     breaking_index_ = static_cast<float>(scene_->shore.breaking_index);
@@ -193,8 +199,48 @@ void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
         return;
     }
     scene_ = std::move(baked).value();
+    refloat();
     message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
                            scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);
+}
+
+// The scene's boats and floats: carried on over an edited scene with the same ones, set
+// afloat again otherwise (a failure is shown, and they are not drawn).
+void Editor::refloat() {
+    if (scene_->boats.empty() && scene_->floats.empty()) {
+        floaters_.reset();
+        return;
+    }
+    if (floaters_ && floaters_->set_scene(scene_)) return;
+    auto made = SceneFloaters::create(scene_, clock_.now());
+    if (!made) {
+        message_ = made.error().message;
+        floaters_.reset();
+        return;
+    }
+    floaters_ = std::move(made).value();
+}
+
+// Advances the boats and floats to the clock (set afloat again when the clock went back
+// or jumped a minute ahead) and hands them to the frame.
+void Editor::float_bodies(render::FrameInfo& info) {
+    if (!floaters_) return;
+    const double now = clock_.now();
+    if (now < floaters_->time() - 1e-6 || now > floaters_->time() + 60.0) {
+        floaters_.reset();
+        refloat();
+        if (!floaters_) return;
+    }
+    if (auto st = floaters_->advance_to(now); !st) {
+        message_ = st.error().message;
+        floaters_.reset();
+        return;
+    }
+    float_draws_.clear();
+    for (std::size_t b = 0; b < floaters_->bodies().size(); ++b)
+        float_draws_.push_back({&floaters_->bodies()[b].hull, floaters_->pose(b).position, floaters_->pose(b).orientation,
+                                floaters_->bodies()[b].color});
+    info.floats = float_draws_;
 }
 
 void Editor::choose_preset(const std::string& name) {
@@ -671,6 +717,7 @@ int Editor::run(const Options& options) {
         info.time = clock_.now();
         info.frame_index = frame.index;
         info.view = render::all_debug_views()[static_cast<std::size_t>(view_)];
+        float_bodies(info);
         const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view, window_.extent()};
         if (auto st = renderer_->record_frame(frame.cmd, info, targets); !st) {
             std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());

@@ -97,6 +97,15 @@ TEST(SceneFloaters, TheMotionDoesNotDependOnHowOftenItIsAdvanced) {
         EXPECT_EQ(a->pose(i).position, b->pose(i).position) << i;
         EXPECT_EQ(a->pose(i).orientation, b->pose(i).orientation) << i;
     }
+    // An edited copy with the same bodies carries on (the editor's re-bakes); one with
+    // other bodies is refused.
+    const glm::dvec3 before = a->pose(1).position;
+    EXPECT_TRUE(a->set_scene(std::make_shared<const Scene>(*scene)).ok());
+    EXPECT_EQ(a->pose(1).position, before);
+    ASSERT_TRUE(a->advance_to(21.0).ok());
+    auto other = baked(pool(""));
+    ASSERT_TRUE(other);
+    EXPECT_FALSE(a->set_scene(other).ok());
 }
 
 TEST(SceneFloaters, BadFloatsAreRefusedByName) {

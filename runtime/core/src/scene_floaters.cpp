@@ -106,6 +106,16 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
     return f;
 }
 
+Status SceneFloaters::set_scene(std::shared_ptr<const Scene> scene) {
+    if (!scene) return Error{ErrorCode::invalid_argument, "scene floaters: no scene"};
+    if (scene->boats.size() != scene_->boats.size() || scene->floats.size() != scene_->floats.size())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("scene floaters: the scene has {} boats and {} floats, these {} and {}: create them again", scene->boats.size(),
+                                 scene->floats.size(), scene_->boats.size(), scene_->floats.size())};
+    scene_ = std::move(scene);
+    return {};
+}
+
 Status SceneFloaters::advance_to(double time) {
     if (!std::isfinite(time)) return Error{ErrorCode::invalid_argument, "scene floaters: the time is not finite"};
     const FloatingWater water{scene_.get(), nullptr, nullptr};

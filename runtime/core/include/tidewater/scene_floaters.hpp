@@ -45,6 +45,10 @@ public:
     /// shore model (query_world's rule). Fails on a bad step or a query that fails.
     static Result<SceneFloaters> create(std::shared_ptr<const Scene> scene, double start, double step = 1.0 / 30.0);
 
+    /// Carries on over an edited copy of the scene (a re-bake, a new preset) with the
+    /// same boats and floats, keeping every body's motion. Fails if they differ in number.
+    Status set_scene(std::shared_ptr<const Scene> scene);
+
     /// Advances to clock time `time` (>= time()) in whole steps.
     Status advance_to(double time);
     double time() const { return world_.time(); }

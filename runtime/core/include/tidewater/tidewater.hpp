@@ -13,6 +13,7 @@
 #include "tidewater/ripples.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
+#include "tidewater/scene_floaters.hpp"
 #include "tidewater/spectrum.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/version.hpp"
