@@ -64,10 +64,9 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
                              fmt::format("boats/{} ({}): its path runs over land at ({:.1f}, {:.1f}), {:.0f} m along it", i, b.name, at.x, at.y,
                                          std::min(d, length))};
         }
-        RigidBodyProps props;
-        props.mass = kWaterDensity * HullMesh::boat_plan_area(b.hull.length, b.hull.beam) * b.hull.draft;
-        const glm::dvec3 box(b.hull.length, 2.0 * b.hull.draft, b.hull.beam);
-        props.inertia = props.mass / 12.0 * glm::dvec3(box.y * box.y + box.z * box.z, box.x * box.x + box.z * box.z, box.x * box.x + box.y * box.y);
+        // Inertia as a solid box round the hull; the boat's own hull for the water.
+        const double mass = kWaterDensity * HullMesh::boat_plan_area(b.hull.length, b.hull.beam) * b.hull.draft;
+        RigidBodyProps props = RigidBodyProps::solid_box(glm::dvec3(b.hull.length, 2.0 * b.hull.draft, b.hull.beam), mass);
         props.hull = HullMesh::boat(b.hull.length, b.hull.beam, b.hull.draft);
         props.emitter = static_cast<int>(i);  // scene_boat_wakes: boat i is emitter i
         RigidBodyState s;
