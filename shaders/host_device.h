@@ -141,6 +141,7 @@ TW_CONST uint kViewShore = 7u;
 TW_CONST uint kViewBreaking = 8u;
 TW_CONST uint kViewFlow = 9u;
 TW_CONST uint kViewWake = 10u;
+TW_CONST uint kViewFoam = 11u;
 
 // What a water draw covers (GpuBodyDraw.body.x).
 TW_CONST uint kBodyOcean = 0u;

@@ -40,14 +40,34 @@ vec3 world_from_depth(vec2 uv, float depth) {
 // none under 2.
 float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
 
-// The crest foam a pixel covers on average when waves it cannot resolve spread the
-// Jacobian by `sigma`: the curve of crest_foam (tidewater::crest_foam) widened about the
-// same midpoint J*, as a ramp convolved with that spread. sigma = 0 gives crest_foam.
+// The crest foam a pixel covers on average when waves it cannot resolve spread its
+// Jacobian as a Gaussian of deviation `sigma` about `j`: the expectation of crest_foam
+// (tidewater::crest_foam, a smoothstep from J* + w down to J* - w) over that spread, in
+// closed form. Whitecaps are rare (a few percent of the sea), so most of a distant
+// pixel's foam comes from the Gaussian's tail past the ramp: a ramp merely widened by
+// sigma would cut that tail off and thin the far field's foam as pixels grow.
+// crest_foam = integral over x in [J* - w, J* + w] of its slope q(x) P(J < x), with
+// q dx = 6 t (1 - t) dt, t = alpha + beta u, u = (x - j) / sigma, and the integrals of
+// u^n Phi(u) known: G0 = u Phi + phi, G1 = ((u^2 - 1) Phi + u phi) / 2,
+// G2 = (u^3 Phi + (u^2 + 2) phi) / 3.
+vec3 phi_integrals(float u) {
+    float phi = 0.3989423 * exp(-0.5 * u * u), cdf = normal_cdf(u);
+    return vec3(u * cdf + phi, 0.5 * ((u * u - 1.0) * cdf + u * phi), (u * u * u * cdf + (u * u + 2.0) * phi) / 3.0);
+}
 float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
     float half_width = 0.5 * kFoamRampFraction * max(1.0 - whitecap_jacobian, 0.0);
-    float widened = sqrt(half_width * half_width + 3.5 * sigma * sigma);
-    if (widened <= 0.0) return j < whitecap_jacobian ? 1.0 : 0.0;
-    return smoothstep(whitecap_jacobian + widened, whitecap_jacobian - widened, j);
+    float width = 2.0 * half_width;
+    float beta = sigma / max(width, 1e-6);
+    // A spread small against the ramp changes it by under 1% (and the sums would cancel).
+    if (beta < 0.05) return width > 0.0 ? smoothstep(whitecap_jacobian + half_width, whitecap_jacobian - half_width, j)
+                                        : (j < whitecap_jacobian ? 1.0 : 0.0);
+    float alpha = (j - (whitecap_jacobian - half_width)) / width;
+    // Past 6 deviations Phi is 0 (nothing to add) or 1 (the ramp's own rise, in closed form).
+    float ua = clamp(-alpha / beta, -6.0, 6.0), ub = clamp((1.0 - alpha) / beta, -6.0, 6.0);
+    vec3 span = phi_integrals(ub) - phi_integrals(ua);
+    float sum = 6.0 * beta * (alpha * (1.0 - alpha) * span.x + beta * (1.0 - 2.0 * alpha) * span.y - beta * beta * span.z);
+    float t = clamp(alpha + 6.0 * beta, 0.0, 1.0);
+    return clamp(sum + (ub >= 6.0 ? 1.0 - t * t * (3.0 - 2.0 * t) : 0.0), 0.0, 1.0);
 }
 
 // Foam lace: 0 on the borders of 2.5 m cells (where bubbles gather between the holes
@@ -297,6 +317,7 @@ void main() {
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);
+    if (view == kViewFoam) color = vec3(clamp(foam, 0.0, 1.0));
     if (view == kViewWake) color = heat_color(0.5 + 0.5 * clamp(wake_eta, -1.0, 1.0));
     if (view == kViewFlow) color = uint(d.body.x) == kBodyRiver ? heat_color(length(current) / 3.0) : vec3(0.05, 0.08, 0.2);
     out_color = target_color(color);

@@ -14,6 +14,15 @@ float vertex_spacing(float distance) {
     return max(distance, 1.0) / frame.params.z;
 }
 
+// The standard normal distribution function Phi(u), within 2e-7 (Abramowitz and Stegun
+// 7.1.26), tails included.
+float normal_cdf(float u) {
+    float x = abs(u) * 0.7071068;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float tail = 0.5 * t * (0.2548296 + t * (-0.2844967 + t * (1.4214137 + t * (-1.4531520 + t * 1.0614054)))) * exp(-x * x);
+    return u < 0.0 ? tail : 1.0 - tail;
+}
+
 // The slopes toward the viewer of the facets a ray meets at elevation tangent t, for
 // Gaussian slopes of deviation sigma per axis weighted by the area they show the viewer,
 // (t + s)+: their mean sigma Phi(u) / Z and deviation sigma sqrt((u Phi(u) + 2 phi(u)) / Z
@@ -23,7 +32,7 @@ vec2 visible_slopes(float t, float sigma) {
     if (sigma <= 0.0) return vec2(0.0);
     float u = t / sigma;
     float phi = 0.3989423 * exp(-0.5 * u * u);
-    float cdf = 0.5 * (1.0 + tanh(0.7978846 * (u + 0.044715 * u * u * u)));  // Phi(u), within 3e-4
+    float cdf = normal_cdf(u);
     float z = max(u * cdf + phi, 1e-6);
     float mean = cdf / z;
     return sigma * vec2(mean, sqrt(max((u * cdf + 2.0 * phi) / z - mean * mean, 0.0)));

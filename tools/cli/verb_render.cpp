@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 
 #include "atomic_file.hpp"
 #include "scene_option.hpp"
@@ -50,13 +51,20 @@ Result<VkExtent2D> parse_size(const std::string& text) {
     return Error{ErrorCode::invalid_argument, fmt::format("--size: \"{}\" is not WxH with 16 <= W, H <= 8192", text)};
 }
 
+/// The debug views' names, "shaded, height, ...", from the renderer's own list.
+std::string view_names() {
+    std::string names;
+    for (const auto view : render::all_debug_views()) names += (names.empty() ? "" : ", ") + std::string(render::to_string(view));
+    return names;
+}
+
 int run_render(const RenderArgs& a) {
     constexpr const char* verb = "render";
     auto extent = parse_size(a.size);
     if (!extent) return fail(verb, extent.error().message);
     if (auto st = check_time(a.time, "--time"); !st) return fail(verb, st.error().message);
     const auto view = render::parse_debug_view(a.view);
-    if (!view) return fail(verb, fmt::format("--view: \"{}\" is not a view (shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake)", a.view));
+    if (!view) return fail(verb, fmt::format("--view: \"{}\" is not a view ({})", a.view, view_names()));
     if (a.frames < 1 || a.frames > 100000) return fail(verb, "--frames: must be in 1..100000");
     if (!(a.fps > 0.0 && a.fps <= 1000.0)) return fail(verb, "--fps: must be in (0, 1000]");
     if (a.frames == 1 && a.out.empty() && a.out_dir.empty()) return fail(verb, "give --out FILE.png (or --frames N --out-dir D)");
@@ -121,7 +129,7 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Number of frames")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of a sequence")->capture_default_str();
     cmd->add_option("--out-dir", args->out_dir, "Folder for frame_NNNN.png");
-    cmd->add_option("--view", args->view, "shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow or wake")->capture_default_str();
+    cmd->add_option("--view", args->view, view_names())->capture_default_str();
     cmd->add_option("--stats", args->stats, "Write per-pass GPU times, the device and counts as JSON");
     cmd->add_option("--camera", args->camera, "Camera position x y z, m")->expected(3);
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);

@@ -28,12 +28,12 @@ using detail::GpuBuffer;
 
 namespace {
 
-constexpr std::array<DebugView, 11> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
+constexpr std::array<DebugView, 12> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
                                               DebugView::jacobian, DebugView::depth, DebugView::lod,
                                               DebugView::wireframe, DebugView::shore, DebugView::breaking, DebugView::flow,
-                                              DebugView::wake};
-constexpr std::array<std::string_view, 11> kViewNames = {"shaded", "height", "normals", "jacobian", "depth", "lod",
-                                                         "wireframe", "shore", "breaking", "flow", "wake"};
+                                              DebugView::wake, DebugView::foam};
+constexpr std::array<std::string_view, 12> kViewNames = {"shaded", "height", "normals", "jacobian", "depth", "lod",
+                                                         "wireframe", "shore", "breaking", "flow", "wake", "foam"};
 
 }  // namespace
 

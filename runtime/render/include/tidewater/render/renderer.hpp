@@ -45,11 +45,12 @@ struct HullMesh;
 
 namespace tidewater::render {
 
-enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake };
+enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake, foam };
 
 /// "shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe", "shore" (signed shore
 /// distance), "breaking" (where waves break), "flow" (a river's current speed), "wake" (the
-/// wakes' share of the height: red up, blue down).
+/// wakes' share of the height: red up, blue down), "foam" (the foam amount a pixel covers
+/// on average, before its lace: 0 black to 1 white, linear).
 std::string_view to_string(DebugView view);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::span<const DebugView> all_debug_views();
