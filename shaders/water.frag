@@ -46,7 +46,8 @@ float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprin
 // closed form. Whitecaps are rare (a few percent of the sea), so most of a distant
 // pixel's foam comes from the Gaussian's tail past the ramp: a ramp merely widened by
 // sigma would cut that tail off and thin the far field's foam as pixels grow.
-// crest_foam = integral over x in [J* - w, J* + w] of its slope q(x) P(J < x), with
+// The expectation is the integral over x in [J* - w, J* + w] of the curve's fall
+// q(x) (it integrates to 1) times P(J < x), with
 // q dx = 6 t (1 - t) dt, t = alpha + beta u, u = (x - j) / sigma, and the integrals of
 // u^n Phi(u) known: G0 = u Phi + phi, G1 = ((u^2 - 1) Phi + u phi) / 2,
 // G2 = (u^3 Phi + (u^2 + 2) phi) / 3.
