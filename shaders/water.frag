@@ -60,8 +60,7 @@ float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
     float width = 2.0 * half_width;
     float beta = sigma / max(width, 1e-6);
     // A spread small against the ramp changes it by under 1% (and the sums would cancel).
-    if (beta < 0.05) return width > 0.0 ? smoothstep(whitecap_jacobian + half_width, whitecap_jacobian - half_width, j)
-                                        : (j < whitecap_jacobian ? 1.0 : 0.0);
+    if (beta < 0.05) return crest_foam(j, whitecap_jacobian);
     float alpha = (j - (whitecap_jacobian - half_width)) / width;
     // Past 6 deviations Phi is 0 (nothing to add) or 1 (the ramp's own rise, in closed form).
     float ua = clamp(-alpha / beta, -6.0, 6.0), ub = clamp((1.0 - alpha) / beta, -6.0, 6.0);

@@ -236,10 +236,7 @@ void Editor::float_bodies(render::FrameInfo& info) {
         floaters_.reset();
         return;
     }
-    float_draws_.clear();
-    for (std::size_t b = 0; b < floaters_->bodies().size(); ++b)
-        float_draws_.push_back({&floaters_->bodies()[b].hull, floaters_->pose(b).position, floaters_->pose(b).orientation,
-                                floaters_->bodies()[b].color});
+    float_draws_ = render::float_draws(*floaters_);
     info.floats = float_draws_;
 }
 

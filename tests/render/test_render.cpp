@@ -629,6 +629,20 @@ render::RgbaImage box_filter_4x(const render::RgbaImage& big) {
     return out;
 }
 
+/// The far-field checks' view of the open sea east of the island: from `height` m,
+/// 7.6 degrees down with a 50 degree field, at 5 s.
+render::FrameInfo far_field_frame(double height) {
+    render::FrameInfo frame;
+    frame.camera.position = {2500.0, height, 0.0};
+    frame.camera.target = frame.camera.position + glm::dvec3(500.0, -500.0 * std::tan(7.6 * kPi / 180.0), 0.0);
+    frame.camera.fov_y_deg = 50.0;
+    frame.time = 5.0;
+    return frame;
+}
+/// The first row under the horizon in far_field_frame at 640 x 360 (the horizon is at
+/// row 180 - 180 tan 7.6 / tan 25 = 128.5): the far band is the 30 rows from here.
+const int kFarBandTop = static_cast<int>(std::ceil(180.0 - 180.0 * std::tan(7.6 * kPi / 180.0) / std::tan(25.0 * kPi / 180.0))) + 1;
+
 /// Mean |a - b| per channel over rows [y0, y1), 0..1.
 double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, int y0, int y1) {
     double sum = 0.0;
@@ -657,22 +671,16 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
     for (const double height : {12.0, 400.0}) {
-        render::FrameInfo frame;
-        frame.camera.position = {2500.0, height, 0.0};
-        const double pitch = 7.6 * kPi / 180.0;
-        frame.camera.target = frame.camera.position + glm::dvec3(500.0, -500.0 * std::tan(pitch), 0.0);
-        frame.camera.fov_y_deg = 50.0;
-        frame.time = 5.0;
-        const int horizon = static_cast<int>(std::ceil(180.0 - 180.0 * std::tan(pitch) / std::tan(25.0 * kPi / 180.0)));
+        render::FrameInfo frame = far_field_frame(height);
         const auto small = render(*scene, frame, 640, 360);
         const auto truth = box_filter_4x(render(*scene, frame, 2560, 1440));
-        const double alias = band_difference(small, truth, horizon + 1, horizon + 31);
+        const double alias = band_difference(small, truth, kFarBandTop, kFarBandTop + 30);
 
         frame.time += 1.0 / 60.0;
         const auto small_next = render(*scene, frame, 640, 360);
         const auto truth_next = box_filter_4x(render(*scene, frame, 2560, 1440));
-        const double flicker = band_difference(small, small_next, horizon + 1, horizon + 31);
-        const double truth_flicker = band_difference(truth, truth_next, horizon + 1, horizon + 31);
+        const double flicker = band_difference(small, small_next, kFarBandTop, kFarBandTop + 30);
+        const double truth_flicker = band_difference(truth, truth_next, kFarBandTop, kFarBandTop + 30);
         std::printf("from %.0f m: far band 1x vs 4x %.4f; frame to frame %.4f (supersampled %.4f)\n", height, alias, flicker, truth_flicker);
         EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.03) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
@@ -688,17 +696,11 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
 TEST_F(RenderTest, FarFieldFoamDoesNotThinWithPixelSize) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
-    render::FrameInfo frame;
-    frame.camera.position = {2500.0, 12.0, 0.0};
-    const double pitch = 7.6 * kPi / 180.0;
-    frame.camera.target = frame.camera.position + glm::dvec3(500.0, -500.0 * std::tan(pitch), 0.0);
-    frame.camera.fov_y_deg = 50.0;
-    frame.time = 5.0;
+    render::FrameInfo frame = far_field_frame(12.0);
     frame.view = render::DebugView::foam;
-    const int horizon = static_cast<int>(std::ceil(180.0 - 180.0 * std::tan(pitch) / std::tan(25.0 * kPi / 180.0)));
     auto band_foam = [&](const render::RgbaImage& img) {
         double sum = 0.0;
-        for (int y = horizon + 1; y < horizon + 31; ++y)
+        for (int y = kFarBandTop; y < kFarBandTop + 30; ++y)
             for (int x = 0; x < img.width; ++x) sum += test::pixel(img, x, y).g;
         return sum / (30.0 * img.width);
     };
@@ -723,9 +725,7 @@ TEST_F(RenderTest, FloatingBodiesAreDrawnWhereTheyFloat) {
         "floats": [{"name": "barrel", "at": [100, 40], "radius": 1.0, "height": 1.5, "mass": 1500, "color": [0.9, 0.45, 0.05]}]})");
     auto floaters = SceneFloaters::create(std::make_shared<const Scene>(scene), 20.0);  // the tug's centre at x = -300
     ASSERT_TRUE(floaters) << floaters.error().message;
-    std::vector<render::FloatDraw> draws;
-    for (std::size_t b = 0; b < floaters->bodies().size(); ++b)
-        draws.push_back({&floaters->bodies()[b].hull, floaters->pose(b).position, floaters->pose(b).orientation, floaters->bodies()[b].color});
+    const std::vector<render::FloatDraw> draws = render::float_draws(*floaters);
     render::FrameInfo frame;
     frame.time = 20.0;
     frame.floats = draws;

@@ -68,11 +68,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
         frame.frame_index = static_cast<std::uint64_t>(i);
         if (floaters) {
             if (auto st = floaters->advance_to(frame.time); !st) return st.error();
-            float_draws.clear();
-            for (std::size_t b = 0; b < floaters->bodies().size(); ++b) {
-                const SceneFloaters::Pose pose = floaters->pose(b);
-                float_draws.push_back({&floaters->bodies()[b].hull, pose.position, pose.orientation, floaters->bodies()[b].color});
-            }
+            float_draws = render::float_draws(*floaters);
             frame.floats = float_draws;
         }
         auto image = (*target)->render(**renderer, frame);

@@ -7,6 +7,21 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "tidewater/buoyancy.hpp"
+#include "tidewater/scene_floaters.hpp"
+
+namespace tidewater::render {
+
+std::vector<FloatDraw> float_draws(const SceneFloaters& floaters) {
+    std::vector<FloatDraw> draws;
+    draws.reserve(floaters.bodies().size());
+    for (std::size_t b = 0; b < floaters.bodies().size(); ++b) {
+        const SceneFloaters::Pose pose = floaters.pose(b);
+        draws.push_back({&floaters.bodies()[b].hull, pose.position, pose.orientation, floaters.bodies()[b].color});
+    }
+    return draws;
+}
+
+}  // namespace tidewater::render
 
 namespace tidewater::render::detail {
 

@@ -41,6 +41,7 @@
 
 namespace tidewater {
 struct HullMesh;
+class SceneFloaters;
 }
 
 namespace tidewater::render {
@@ -99,6 +100,10 @@ struct FloatDraw {
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  ///< body to world
     glm::vec3 color{0.8f};                       ///< paint, linear RGB 0..1
 };
+
+/// The draws of `floaters`' bodies at their poses now (after advance_to). The hulls stay
+/// theirs: the draws are valid while `floaters` lives.
+std::vector<FloatDraw> float_draws(const SceneFloaters& floaters);
 
 struct FrameInfo {
     Camera camera;
