@@ -63,6 +63,13 @@ TW_CONST uint kFlowStaggerSeed = 101u;
 // from 0 to 1 across the body's whitecap Jacobian J* (tidewater/whitecaps.hpp), over a
 // width of kFoamRampFraction * (1 - J*), so foam >= 1/2 exactly where J < J*.
 TW_CONST float kFoamRampFraction = 0.5f;
+// Crest foam lingers and fades (tidewater::detail::remembered_foam): a particle adds the
+// crest foam its compression made l * kFoamLagStep seconds ago (l = 1..kFoamLags), faded
+// by exp(-l * kFoamLagStep / kFoamDecayTime). Lags of half a second keep the copies of a
+// whitecap that runs at up to ~8 m/s overlapping (whitecaps are ~5 m across).
+TW_CONST uint kFoamLags = 4u;          // the shaders carry them in a vec4
+TW_CONST float kFoamLagStep = 0.5f;    // s
+TW_CONST float kFoamDecayTime = 1.0f;  // s: e-folding time of whitecap foam
 
 // Wakes (tidewater/wakes.hpp, shaders/wake_point.glsl). A wake wave's Q k A is held to
 // at most kWakeFoldLimit so that a wake never folds the surface on its own; turbulence
@@ -127,6 +134,7 @@ struct GpuQueryResult {
                          // w: river mode: the still river surface at the point, m above the mouth level
     vec4 flow;           // xy: the river current at the query point (m/s, 0 outside rivers); zw: its flow-detail slope
     vec4 wake;           // x: the wakes' share of eta (m), y: their foam, at the rest position; zw: unused
+    vec4 lagged_jac;     // the Jacobian determinant of the waves at the rest position, l * kFoamLagStep s ago (l = 1..4)
 };
 
 // Debug views (GpuFrame.params.w).
@@ -244,7 +252,8 @@ static_assert(sizeof(GpuWave) == 32);
 static_assert(sizeof(GpuWakePoint) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuRiverWave) == 32);
-static_assert(sizeof(GpuQueryResult) == 96);
+static_assert(sizeof(GpuQueryResult) == 112);
+static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);

@@ -68,6 +68,18 @@ SurfaceSums water_at_offset(vec2 e) {
     return s;
 }
 
+// The waves' earlier compression at rest offset e (LaggedCompression): the still
+// water's, faded in as its waves are (a river's own waves ride its current and keep none).
+vec4 lagged_jacobian_at(vec2 e) {
+    g_track_lags = true;
+    water_at_offset(e);
+    g_track_lags = false;
+    LaggedCompression lagged = lagged_zero();
+    if (!river_mode()) lagged = g_lagged;
+    else if (params.still > 0.5) add_scaled(lagged, g_lagged, g_river_still_weight);
+    return lagged_jacobians(lagged);
+}
+
 void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= params.point_count) return;
@@ -94,5 +106,6 @@ void main() {
         vec2 rest = at + n.e;
         r.wake = vec4(wakes_at(rest).eta, wakes_foam_at(rest), 0.0, 0.0);
     }
+    r.lagged_jac = lagged_jacobian_at(n.e);
     results[id] = r;
 }

@@ -22,6 +22,7 @@ layout(location = 5) in float wake_eta;
 layout(location = 6) in vec2 shore_info;
 layout(location = 7) in float rest_level;
 layout(location = 8) in vec2 current;
+layout(location = 9) in vec4 lagged_jacobian;
 layout(location = 0) out vec4 out_color;
 
 const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
@@ -62,6 +63,7 @@ float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
     // A spread small against the ramp changes it by under 1% (and the sums would cancel).
     if (beta < 0.05) return crest_foam(j, whitecap_jacobian);
     float alpha = (j - (whitecap_jacobian - half_width)) / width;
+    if (alpha - 1.0 > 6.0 * beta) return 0.0;  // the whole spread lies above the ramp (most of the sea)
     // Past 6 deviations Phi is 0 (nothing to add) or 1 (the ramp's own rise, in closed form).
     float ua = clamp(-alpha / beta, -6.0, 6.0), ub = clamp((1.0 - alpha) / beta, -6.0, 6.0);
     vec3 span = phi_integrals(ub) - phi_integrals(ua);
@@ -156,9 +158,11 @@ float foam_cover(float foam, vec2 xz, float footprint) {
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
 // pixel cannot resolve adds to `variance` (slope variance, per axis). The same share
 // changes the Jacobian (to first order, by minus the trace of their m): by
-// `jacobian.x`, with the unresolved part's variance in `jacobian.y`.
-vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout vec2 jacobian) {
+// `jacobian.x`, with the unresolved part's variance in `jacobian.y`; the lagged Jacobians
+// (the foam particles remember) by `lagged`.
+vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout vec2 jacobian, inout vec4 lagged) {
     SurfaceSums faded = surface_zero();
+    LaggedCompression faded_lags = lagged_zero();
     bool river = uint(d.body.x) == kBodyRiver;
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
     for (uint i = first; i < first + count; ++i) {
@@ -173,10 +177,13 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         jacobian.y += lost * 0.5 * compression * compression;
         float change = kept - drawn;
         if (abs(change) < 1e-3) continue;
-        add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, dot(kvec, rest_xz) + w.steep_omega.z);
+        float theta = dot(kvec, rest_xz) + w.steep_omega.z;
+        add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
+        add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
     }
     vec2 slope = faded.slope;
     jacobian.x -= faded.m.x + faded.m.z;
+    lagged -= faded_lags.mxx + faded_lags.mzz;
     if (!river && d.ripple.x > 0.0) {
         // Ripple octaves: as slope where resolved, as variance where not.
         for (int o = 1; o <= int(d.ripple.z); ++o) {
@@ -203,7 +210,8 @@ void main() {
     float footprint = lod.along;  // the footprint's longer side
     float variance = 0.0;
     vec2 jacobian_detail = vec2(0.0);
-    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail);
+    vec4 lagged_detail = vec4(0.0);
+    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     VisibleFacets facets = visible_facets(n, v, variance);
     n = facets.normal;
@@ -293,7 +301,13 @@ void main() {
     // run up the beach with the swash. Breaking foam rides the crests (and lingers thinly
     // in the troughs).
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
-    float foam = max(crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, sqrt(jacobian_detail.y)), shore_info.y * (0.25 + 0.75 * crest_band));
+    // Fresh crest foam and what the particles' earlier crests left, fading
+    // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
+    float jacobian_spread = sqrt(jacobian_detail.y);
+    float crest_foam_here = crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, jacobian_spread);
+    for (int l = 0; l < 4; ++l)
+        crest_foam_here += crest_foam_filtered(lagged_jacobian[l] + lagged_detail[l], d.extra.x, jacobian_spread) * foam_memory_weight(l + 1);
+    float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
     // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
     if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
     // A fast current churns white water.

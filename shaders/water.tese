@@ -34,6 +34,7 @@ layout(location = 5) out float wake_eta;    // the wakes' share of eta (m)
 layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: breaking 0..1
 layout(location = 7) out float rest_level; // the still surface here, world y (m)
 layout(location = 8) out vec2 current;     // a river's current (m/s)
+layout(location = 9) out vec4 lagged_jacobian;  // the waves' Jacobian at the rest position 0.5, 1, 1.5, 2 s ago
 
 void main() {
     g_draw = draws[draw_push.draw_index];
@@ -46,17 +47,26 @@ void main() {
     SurfaceSums s;
     rest_level = g_draw.body.y;
     current = vec2(0.0);
+    // The foam particles remember comes from the still water's waves (a river's own ride
+    // its current and keep none; wakes make their own foam).
+    g_track_lags = true;
+    LaggedCompression lagged = lagged_zero();
     if (uint(g_draw.body.x) == kBodyRiver) {
         vec2 rel = rest_xz - g_draw.grid.xy;
         RiverTap tap = river_tap(rel);
         vec4 channel = river_channel_at(tap);
         s = river_water_at(rel, vec2(0.0), channel.xy, lod);
-        if (g_wave_count > 0u) add_scaled(s, water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod), g_river_still_weight);
+        if (g_wave_count > 0u) {
+            add_scaled(s, water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod), g_river_still_weight);
+            add_scaled(lagged, g_lagged, g_river_still_weight);
+        }
         rest_level += river_field(tap, kRiverQuerySurface);
         current = channel.zw;
     } else {
         s = water_at(rest_xz, rest_xz - g_draw.shore.xy, shore, lod);
+        lagged = g_lagged;
     }
+    lagged_jacobian = lagged_jacobians(lagged);
     // Wakes ride the ocean and the lakes (rivers carry none), as in the CPU queries.
     wake_eta = 0.0;
     if (uint(g_draw.body.x) != kBodyRiver && WAKE_COUNT > 0u && wakes_reach(rest_xz)) {

@@ -16,6 +16,11 @@ const vec4 kOpenWaterShore = vec4(1e9, 0.0, 1.0, 1e9);
 // steepness scale, shore distance (m).
 vec4 g_shore_fields = kOpenWaterShore;
 
+// With g_track_lags set, water_at also sums the waves' earlier compression at the
+// position into g_lagged (LaggedCompression; the foam particles remember).
+bool g_track_lags = false;
+LaggedCompression g_lagged;
+
 // The sums at a rest position `rel` (m, from the phase origin) that lies at `shore_rel`
 // from the shore grid's corner. `lod` fades the waves the mesh and pixel there cannot
 // resolve (render LOD; queries pass no_wave_lod()).
@@ -24,6 +29,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
     ShoreTap tap;
     uint texels = SHORE_RESOLUTION * SHORE_RESOLUTION;
     g_shore_fields = kOpenWaterShore;
+    g_lagged = lagged_zero();
     if (shore) {
         tap = shore_tap(shore_rel);
         g_shore_fields = tap_shared(tap);
@@ -45,6 +51,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         }
         if (a > 0.0) a *= wave_lod_weight(kvec, lod);
         add_wave(s, kvec, a, q, w.steep_omega.y, theta);
+        if (g_track_lags) add_wave_lags(g_lagged, kvec, a, q, w.steep_omega.y, theta);
     }
     return s;
 }

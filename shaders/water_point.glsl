@@ -40,6 +40,47 @@ void add_wave(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, flo
     s.velocity += vec3(qa * omega * d.x * sn, -a * omega * cs, qa * omega * d.y * sn);
 }
 
+// The compression a particle's crest had earlier (tidewater::detail::LaggedCompression):
+// the sums m at the kFoamLags lags tau_l = l * kFoamLagStep s ago (l = 1..4, one per
+// component), at the same rest position. Each wave's phase then was theta + omega tau:
+// (sin, cos) theta turns by omega kFoamLagStep per lag.
+struct LaggedCompression {
+    vec4 mxx, mxz, mzz;
+};
+
+LaggedCompression lagged_zero() { return LaggedCompression(vec4(0.0), vec4(0.0), vec4(0.0)); }
+
+void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, float omega, float theta) {
+    float k = length(kvec);
+    vec2 d = kvec / (k > 0.0 ? k : 1.0);
+    vec3 coeff = q * a * k * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
+    float sn = sin(theta), cs = cos(theta);
+    float step_sin = sin(omega * kFoamLagStep), step_cos = cos(omega * kFoamLagStep);
+    vec4 lagged_sin;
+    for (int l = 0; l < 4; ++l) {
+        float s = sn * step_cos + cs * step_sin;
+        cs = cs * step_cos - sn * step_sin;
+        sn = s;
+        lagged_sin[l] = s;
+    }
+    c.mxx += coeff.x * lagged_sin;
+    c.mxz += coeff.y * lagged_sin;
+    c.mzz += coeff.z * lagged_sin;
+}
+
+void add_scaled(inout LaggedCompression c, LaggedCompression b, float w) {
+    c.mxx += w * b.mxx;
+    c.mxz += w * b.mxz;
+    c.mzz += w * b.mzz;
+}
+
+// The Jacobian determinant at each lag.
+vec4 lagged_jacobians(LaggedCompression c) { return (1.0 - c.mxx) * (1.0 - c.mzz) - c.mxz * c.mxz; }
+
+// How much of its crest foam a particle keeps lag l (1..4) later
+// (tidewater::detail::foam_memory_weight): exp(-l kFoamLagStep / kFoamDecayTime).
+float foam_memory_weight(int lag) { return exp(-float(lag) * kFoamLagStep / kFoamDecayTime); }
+
 // Jacobian of the horizontal map [[jxx, jxz], [jxz, jzz]]: xyz = (jxx, jxz, jzz).
 vec3 surface_jacobian_matrix(SurfaceSums s) {
     return vec3(1.0 - s.m.x, -s.m.y, 1.0 - s.m.z);

@@ -175,7 +175,40 @@ TEST(ShoreQuery, BitIdenticalForAnyBatching) {
         ASSERT_TRUE(query_surface(island().ocean, 55.5, std::span(pts.data() + at, n), std::span(pieces.data() + at, n)).ok());
     }
     test::expect_bitwise_equal(whole, pieces);
-    for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0) << i;
+    for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0) << i << " " << heights[i] - whole[i].height << " " << whole[i].iterations;
+}
+
+// Near a shore a particle's foam also remembers its crests: the shore fields are fixed in
+// time, so its earlier compression is the Lagrangian shore evaluation at earlier times
+// (rest = point - displacement), and the foam is the larger of the breaking there and its
+// crest foam now plus 0.5-2 s ago, faded by exp(-age / 1 s).
+TEST(ShoreQuery, FoamRemembersTheParticlesCrestsNearTheShore) {
+    const WaterBody& body = island().ocean;
+    const auto pts = band(5.0, 200.0, 4000, 4);
+    std::vector<SurfacePoint> out(pts.size());
+    const double time = 55.5;
+    ASSERT_TRUE(query_surface(body, time, pts, out).ok());
+    double worst = 0.0;
+    std::size_t remembered = 0, checked = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        if (!out[i].converged || out[i].depth < 1.0) continue;
+        const glm::dvec2 rest = pts[i] - out[i].displacement;
+        LocalShore local;
+        double crest = 0.0;
+        for (int lag = 0; lag <= 4; ++lag) {
+            const double age = 0.5 * lag;
+            const double j = evaluate_lagrangian_shore(body.waves(), *body.shore(), rest, body.local_time(time) - age, &local).jacobian;
+            crest += crest_foam(j, body.whitecap_jacobian()) * std::exp(-age / 1.0);
+        }
+        const double expected = std::max(local.breaking, std::min(crest, 1.0));
+        worst = std::max(worst, std::abs(out[i].foam - expected));
+        remembered += out[i].foam > std::max(local.breaking, crest_foam(out[i].jacobian, body.whitecap_jacobian())) + 0.1 ? 1 : 0;
+        ++checked;
+    }
+    std::printf("shore foam against the particles' history: worst %.2e over %zu points, %zu with a trail\n", worst, checked, remembered);
+    EXPECT_GT(checked, pts.size() / 2);
+    EXPECT_LT(worst, 5e-3);
+    EXPECT_GT(remembered, 0u);
 }
 
 TEST(ShoreQuery, BitIdenticalForAnyThreadCount) {

@@ -1,6 +1,8 @@
 // Whitecap coverage: Monahan's W(U), and the crest foam the queries report covering that
 // share of the open sea.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "test_helpers.hpp"
 
@@ -69,6 +71,42 @@ TEST(Whitecaps, OpenSeaFoamCoversMonahansShare) {
         EXPECT_GT(body.whitecap_jacobian(), 0.0);
     }
     EXPECT_LT(body_from_preset("ocean_rolling", 8.0).whitecap_jacobian(), body_from_preset("ocean_rolling", 16.0).whitecap_jacobian());
+}
+
+// The foam a particle reports is its crest foam now plus what its compression 0.5, 1, 1.5
+// and 2 s ago left, faded by exp(-age / 1 s), capped at 1. The reference: the Lagrangian
+// evaluation of the same particle (rest = point - displacement) at those earlier times,
+// an evaluation of its own that shares none of the query's lag sums. Behind the crests
+// (foam well above the fresh crest foam) this is the trail the whitecaps leave.
+TEST(Whitecaps, AParticleKeepsTheFoamItsCrestMadeFadingOverTime) {
+    const WaterBody body = body_from_preset("ocean_rolling");
+    const double star = body.whitecap_jacobian();
+    double longest = 0.0;
+    for (const Wave& w : body.waves().waves()) longest = std::max(longest, 2.0 * kPi / w.k);
+    std::vector<glm::dvec2> points;
+    for (int i = 0; i < 160; ++i)
+        for (int j = 0; j < 160; ++j) points.emplace_back((i + 0.5) * 2.0 * longest / 160, (j + 0.5) * 2.0 * longest / 160);
+    const double time = 21.3;
+    std::vector<SurfacePoint> out(points.size());
+    ASSERT_TRUE(query_surface(body, time, points, out).ok());
+    double worst = 0.0;
+    std::size_t trailing = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec2 rest = points[i] - out[i].displacement;
+        double expected = 0.0;
+        for (int lag = 0; lag <= 4; ++lag) {
+            const double age = 0.5 * lag;
+            const double j = evaluate_lagrangian(body.waves(), rest, body.local_time(time) - age).jacobian;
+            expected += crest_foam(j, star) * std::exp(-age / 1.0);
+        }
+        expected = std::min(expected, 1.0);
+        worst = std::max(worst, std::abs(out[i].foam - expected));
+        trailing += out[i].foam > crest_foam(out[i].jacobian, star) + 0.1 ? 1 : 0;
+    }
+    std::printf("foam against the particle's own history: worst %.2e; %zu of %zu points carry a trail\n", worst, trailing,
+                points.size());
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_GT(trailing, points.size() / 200);  // the trails are there to compare (0.5% of the sea at least)
 }
 
 // Waves authored one by one carry no wind: the default J*. A set with no waves is flat.

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/surface_foam.hpp"
+#include "tidewater/query.hpp"
 #include "water/open_sea_water.hpp"
 
 namespace tidewater {
@@ -46,8 +48,13 @@ double whitecap_jacobian(const WaveSet& set, double fraction) {
         }
     }
     const double side = 4.0 * longest;
-    std::vector<std::pair<double, double>> samples;  // (J, its area weight J)
-    samples.reserve(static_cast<std::size_t>(kParticles) * kInstants);
+    struct Particle {
+        double jacobian;
+        std::array<double, detail::kFoamLags> lagged;  // its Jacobian earlier (the foam it remembers)
+        double area;  // a particle stands for the rest area it came from; drawn, it covers J times that
+    };
+    std::vector<Particle> particles;
+    particles.reserve(static_cast<std::size_t>(kParticles) * kInstants);
     std::array<double, kMaxWaves> base{};
     std::uint64_t counter = 0;
     for (int t = 0; t < kInstants; ++t) {
@@ -58,20 +65,45 @@ double whitecap_jacobian(const WaveSet& set, double fraction) {
             detail::base_phases(waves, x, z, base.data(), 1);
             const detail::OpenSeaWater<double> water(waves, base.data());
             const double j = detail::surface_frame(water.evaluate<false>(0.0, 0.0)).det;
-            // A particle stands for the rest area it came from; drawn, it covers J times that.
-            samples.emplace_back(j, std::max(j, 0.0));
+            particles.push_back({j, detail::lagged_jacobians(water.lagged(0.0, 0.0)), std::max(j, 0.0)});
         }
     }
-    std::sort(samples.begin(), samples.end());
     double total = 0.0;
-    for (const auto& s : samples) total += s.second;
+    for (const Particle& p : particles) total += p.area;
     if (!(total > 0.0)) return 1.0;
-    double below = 0.0;
-    for (const auto& s : samples) {
-        below += s.second;
-        if (below >= fraction * total) return s.first;
+    // Fresh foam alone (foam >= 1/2 exactly where J < J*) covers `fraction` from the
+    // fraction's quantile of J: remembered foam only adds, so the answer lies below it.
+    std::vector<std::pair<double, double>> by_jacobian;
+    by_jacobian.reserve(particles.size());
+    for (const Particle& p : particles) by_jacobian.emplace_back(p.jacobian, p.area);
+    std::sort(by_jacobian.begin(), by_jacobian.end());
+    double hi = by_jacobian.back().first, below = 0.0;
+    for (const auto& [j, area] : by_jacobian) {
+        below += area;
+        if (below >= fraction * total) {
+            hi = j;
+            break;
+        }
     }
-    return samples.back().first;
+    double lo = std::min(by_jacobian.front().first, hi);
+    // Foam grows with J*: only particles with some foam at J* = hi can reach 1/2 below it.
+    std::vector<const Particle*> candidates;
+    for (const Particle& p : particles) {
+        bool any = crest_foam(p.jacobian, hi) > 0.0;
+        for (double lagged : p.lagged) any = any || crest_foam(lagged, hi) > 0.0;
+        if (any) candidates.push_back(&p);
+    }
+    const auto coverage = [&](double jstar) {
+        double area = 0.0;
+        for (const Particle* p : candidates)
+            if (detail::surface_foam(0.0, p->jacobian, p->lagged, jstar) >= 0.5) area += p->area;
+        return area / total;
+    };
+    for (int it = 0; it < 48 && hi - lo > 1e-9; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (coverage(mid) >= fraction ? hi : lo) = mid;
+    }
+    return hi;
 }
 
 }  // namespace tidewater

@@ -1,6 +1,7 @@
 #include "tidewater/render/gpu_query.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <fmt/format.h>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/surface_foam.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
 #include "scene_uploads.hpp"
@@ -305,7 +307,8 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         o.shore_distance = model ? static_cast<double>(r[i].shore.y) : kDeepWater;
         const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
         o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
-        o.foam = std::max(model ? static_cast<double>(r[i].shore.z) : 0.0, crest_foam(o.jacobian, whitecap));  // as detail::surface_foam
+        const std::array<double, tidewater::detail::kFoamLags> lagged{r[i].lagged_jac.x, r[i].lagged_jac.y, r[i].lagged_jac.z, r[i].lagged_jac.w};
+        o.foam = tidewater::detail::surface_foam(model ? static_cast<double>(r[i].shore.z) : 0.0, o.jacobian, lagged, whitecap);
         o.wake = static_cast<double>(r[i].wake.x);
         o.foam = std::max(o.foam, static_cast<double>(r[i].wake.y));
         if (!flow.empty()) flow[i] = r[i].flow;

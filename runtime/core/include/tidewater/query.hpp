@@ -41,8 +41,11 @@ struct SurfacePoint {
     double shore_distance = kDeepWater;
     /// The surface stands above the terrain at the query point: height > level - depth.
     bool wet = true;
-    /// 0..1: the foam the physics makes, max(breaking, crest_foam(jacobian, the body's J*)). The water shader
-    /// adds visual detail on top (foam riding the crests, swash bands along the coast).
+    /// 0..1: the foam the physics makes: the larger of the breaking and the crest foam, which is
+    /// crest_foam(jacobian, the body's J*) plus what this particle's crests left over the last 2 s,
+    /// fading as exp(-age / 1 s), capped at 1 (whitecaps leave a fading trail; river waves, which ride
+    /// their current, leave none). The water shader adds visual detail on top (foam riding the crests,
+    /// swash bands along the coast).
     double foam = 0.0;
     /// The wakes' share of the height, m (QueryOptions::wakes; the scene's boats in query_world).
     double wake = 0.0;

@@ -4,8 +4,10 @@
 // Monahan and O'Muircheartaigh (1980): the whitecap coverage of the open sea is
 //   W(U) = 3.84e-6 * U^3.41        (U: wind speed at 10 m, m/s; W: area fraction)
 // about 1.8% at 12 m/s. A body's crest foam turns on where its horizontal map compresses
-// (Jacobian J < 1); the whitecap Jacobian J* is the level below which the share W of the
-// displaced (drawn) surface lies, so that foam >= 1/2 covers W of the open sea.
+// (Jacobian J < 1), and a particle keeps that foam for a while after its crest has passed
+// (SurfacePoint::foam). The whitecap Jacobian J* is set so that foam >= 1/2, the fresh and
+// the remembered together, covers the share W of the displaced (drawn) surface: Monahan's
+// W counts the fading foam patches as well as the breaking crests.
 // Threading: pure functions.
 #pragma once
 
@@ -17,8 +19,8 @@ namespace tidewater {
 /// fraction in [0, 1] (clamped at 1 for winds far beyond the fit's range).
 double monahan_whitecap_fraction(double wind_speed);
 
-/// The Jacobian J* below which `fraction` (in (0, 1)) of the open sea's displaced surface
-/// lies for this wave set, by area. Estimated from a fixed, seeded sample of 65 536
+/// The whitecap Jacobian J* at which foam >= 1/2 (fresh or remembered) covers `fraction`
+/// (in (0, 1)) of the open sea's displaced surface for this wave set, by area. Estimated from a fixed, seeded sample of 65 536
 /// surface particles over eight instants, so the same set always gets the same J*;
 /// a sampling error of about 0.005 in J* for the bundled presets. An empty set (flat
 /// water, J = 1 everywhere) gives 1.

@@ -119,17 +119,21 @@ WakeLanes wake_lanes(const Water& water, const PreparedWakes<float>& wakes) {
     return out;
 }
 
-template <bool kFull>
-void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, const ShoreWater<FloatBatch>* shore,
+/// Writes the first `used` lanes of a solve of `water`. Full results also carry the foam
+/// the particles remember, from the waves' earlier compression at their rest positions.
+template <bool kFull, typename Water>
+void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, Water& water, const ShoreWater<FloatBatch>* shore,
                    std::size_t used, SurfacePoint* full, double* heights, const WakeLanes* wakes) {
     if constexpr (!kFull) {
         double eta[kLanes];
         store_lanes(point_state(r).eta, eta);
         for (std::size_t l = 0; l < used; ++l) heights[l] = in.waves->level + eta[l];
+        (void)water;
         (void)shore;
         (void)full;
     } else {
         const PointLanes<FloatBatch> lanes(r);
+        const LagLanes<FloatBatch> lags(water.lagged(r.ex, r.ez));
         double depth[kLanes], breaking[kLanes], distance[kLanes];
         if (shore) {
             store_lanes(shore->depth_at_point, depth);
@@ -142,7 +146,7 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, con
             o.depth = shore ? depth[l] : kDeepWater;
             o.shore_distance = shore ? distance[l] : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
-            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], in.waves->whitecap_jacobian);
+            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), in.waves->whitecap_jacobian);
             if (wakes) {
                 o.wake = wakes->eta[l];
                 o.foam = o.foam > wakes->foam[l] ? o.foam : wakes->foam[l];
@@ -180,22 +184,22 @@ void solve_points(const KernelInput& in, const glm::dvec2* points, std::size_t n
                 WakeWater<ShoreWater<FloatBatch>, FloatBatch, float> water(shore, *in.wakes, Ops::load(wx), Ops::load(wz));
                 const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, radius);
                 const WakeLanes lanes = wake_lanes(water, *in.wakes);
-                write_results<kFull>(in, r, &shore, used, out_full, out_heights, &lanes);
+                write_results<kFull>(in, r, water, &shore, used, out_full, out_heights, &lanes);
             } else {
                 OpenSeaWater<FloatBatch> open(w, base);
                 WakeWater<OpenSeaWater<FloatBatch>, FloatBatch, float> water(open, *in.wakes, Ops::load(wx), Ops::load(wz));
                 const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, radius);
                 const WakeLanes lanes = wake_lanes(water, *in.wakes);
-                write_results<kFull>(in, r, nullptr, used, out_full, out_heights, &lanes);
+                write_results<kFull>(in, r, water, nullptr, used, out_full, out_heights, &lanes);
             }
         } else if (in.shore) {
             ShoreWater<FloatBatch> water(w, *in.shore, px, pz, base);
             const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, w.radius);
-            write_results<kFull>(in, r, &water, used, out_full, out_heights, nullptr);
+            write_results<kFull>(in, r, water, &water, used, out_full, out_heights, nullptr);
         } else {
             OpenSeaWater<FloatBatch> water(w, base);
             const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, w.radius);
-            write_results<kFull>(in, r, nullptr, used, out_full, out_heights, nullptr);
+            write_results<kFull>(in, r, water, nullptr, used, out_full, out_heights, nullptr);
         }
     }
 }

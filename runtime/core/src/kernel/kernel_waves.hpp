@@ -7,6 +7,7 @@
 
 #include "tidewater/query.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/surface_foam.hpp"
 #include "water/prepared_waves.hpp"
 #include "tidewater/detail/wake_water.hpp"
 
@@ -42,8 +43,6 @@ using RiverSolveFn = void (*)(const RiverInput<float>& in, const glm::dvec2* poi
 using SolveFn = void (*)(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full,
                          double* heights);
 
-/// The foam a query reports: max(breaking, crest_foam(jacobian, whitecap_jacobian)).
-double surface_foam(double breaking, double jacobian, double whitecap_jacobian);
 
 namespace kernel_sse2 {
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights);

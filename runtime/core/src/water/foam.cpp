@@ -1,7 +1,8 @@
 #include <algorithm>
+#include <cmath>
 
 #include "host_device.h"
-#include "kernel/kernel_waves.hpp"
+#include "tidewater/detail/surface_foam.hpp"
 #include "tidewater/query.hpp"
 
 namespace tidewater {
@@ -13,8 +14,20 @@ double crest_foam(double jacobian, double whitecap_jacobian) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-double detail::surface_foam(double breaking, double jacobian, double whitecap_jacobian) {
-    return std::max(breaking, crest_foam(jacobian, whitecap_jacobian));
+double detail::foam_memory_weight(std::size_t lag) {
+    return std::exp(-static_cast<double>(lag) * static_cast<double>(gpu::kFoamLagStep) / static_cast<double>(gpu::kFoamDecayTime));
+}
+
+double detail::remembered_foam(const std::array<double, kFoamLags>& lagged_jacobians, double whitecap_jacobian) {
+    double foam = 0.0;
+    for (std::size_t l = 0; l < kFoamLags; ++l) foam += crest_foam(lagged_jacobians[l], whitecap_jacobian) * foam_memory_weight(l + 1);
+    return foam;
+}
+
+double detail::surface_foam(double breaking, double jacobian, const std::array<double, kFoamLags>& lagged_jacobians,
+                            double whitecap_jacobian) {
+    const double crest = crest_foam(jacobian, whitecap_jacobian) + remembered_foam(lagged_jacobians, whitecap_jacobian);
+    return std::max(breaking, std::min(crest, 1.0));
 }
 
 }  // namespace tidewater

@@ -19,16 +19,31 @@ public:
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) const {
         SurfaceSums<T> s;
-        for (std::size_t i = 0; i < w_.count; ++i) {
-            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * Ops::kLanes)));
-            add_wave<kVelocity>(s, broadcast(w_.open_sea[i]), theta);
-        }
+        each_wave(ex, ez, [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
         return s;
+    }
+
+    /// The compression of the particles at rest offset e earlier (LaggedCompression).
+    LaggedCompression<T> lagged(const T& ex, const T& ez) const {
+        LaggedCompression<T> c;
+        each_wave(ex, ez, [&](std::size_t i, const WaveTerm<T>& term, const T& theta) {
+            add_wave_lags(c, term, theta, &w_.lag_sin[i * kFoamLags], &w_.lag_cos[i * kFoamLags]);
+        });
+        return c;
     }
 
     void record(typename Ops::Mask) {}
 
 private:
+    /// Calls add(i, wave i's term, its phase) for every wave at rest offset e.
+    template <typename Add>
+    void each_wave(const T& ex, const T& ez, Add&& add) const {
+        for (std::size_t i = 0; i < w_.count; ++i) {
+            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * Ops::kLanes)));
+            add(i, broadcast(w_.open_sea[i]), theta);
+        }
+    }
+
     static WaveTerm<T> broadcast(const WaveTerm<Scalar>& w) {
         return {T(w.a), T(w.ak_x), T(w.ak_z), T(w.qa_x), T(w.qa_z), T(w.qak_xx), T(w.qak_xz), T(w.qak_zz),
                 T(w.qaw_x), T(w.qaw_z), T(w.aw)};

@@ -2,6 +2,7 @@
 // (open water, shores, rivers) copies into SurfacePoints.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 #include "tidewater/query.hpp"
@@ -50,6 +51,24 @@ struct PointLanes {
         o.jacobian = jacobian[l];
         o.iterations = static_cast<int>(iterations[l]);
         o.converged = converged[l] != 0.0;
+    }
+};
+
+/// The lagged Jacobians of a batch (LaggedCompression), lane by lane in double.
+template <typename T>
+struct LagLanes {
+    static constexpr std::size_t kLanes = NumberOps<T>::kLanes;
+    double det[kFoamLags][kLanes];
+
+    explicit LagLanes(const LaggedCompression<T>& c) {
+        const auto dets = lagged_jacobians(c);
+        for (std::size_t g = 0; g < kFoamLags; ++g) store_lanes(dets[g], det[g]);
+    }
+
+    std::array<double, kFoamLags> lane(std::size_t l) const {
+        std::array<double, kFoamLags> out;
+        for (std::size_t g = 0; g < kFoamLags; ++g) out[g] = det[g][l];
+        return out;
     }
 };
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "host_device.h"
+
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
@@ -36,6 +38,11 @@ PreparedWaves<Scalar> prepare_waves(const WaveSet& set, double local_time, doubl
         p.amplitude.push_back(static_cast<Scalar>(w.amplitude));
         p.steepness.push_back(static_cast<Scalar>(w.steepness));
         p.omega.push_back(static_cast<Scalar>(w.omega));
+        for (std::size_t l = 1; l <= kFoamLags; ++l) {
+            const double lag_phase = w.omega * static_cast<double>(l) * static_cast<double>(gpu::kFoamLagStep);
+            p.lag_sin.push_back(static_cast<Scalar>(std::sin(lag_phase)));
+            p.lag_cos.push_back(static_cast<Scalar>(std::cos(lag_phase)));
+        }
         // The coefficients are formed in double and rounded once.
         const WaveTerm<double> t = wave_term<double>(kx, kz, w.amplitude, w.steepness, w.omega);
         p.open_sea.push_back({static_cast<Scalar>(t.a), static_cast<Scalar>(t.ak_x), static_cast<Scalar>(t.ak_z),

@@ -22,6 +22,8 @@ struct PreparedWaves {
     std::vector<Scalar> kx_s, kz_s;    ///< k D for the rest offset
     std::vector<WaveTerm<Scalar>> open_sea;  ///< each wave's coefficients in open water
     std::vector<Scalar> amplitude, steepness, omega;  ///< what a shore reshapes
+    /// sin and cos of omega tau_l for wave i's lag l at [i * kFoamLags + l] (add_wave_lags)
+    std::vector<Scalar> lag_sin, lag_cos;
     double max_offset = 0.0;  ///< sum(Q A): the rest position lies within this of the point, m
     double tolerance = 0.0;   ///< newton_tolerance(max_offset), m
     double radius = 0.0;      ///< newton_radius(max_offset), m

@@ -23,15 +23,18 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     detail::NewtonResult<double> r;
     const ShoreWaves* shore = body.shore() && !body.shore()->trivial() ? body.shore().get() : nullptr;
     double breaking = 0.0;
+    std::array<double, detail::kFoamLags> lagged{};
     if (shore) {
         detail::ShoreWater<double> water(waves, *shore, &point.x, &point.y, base.data());
         r = detail::solve_rest_offset<true, double>(water, waves.tolerance, waves.radius);
         o.depth = water.depth_at_point;
         o.shore_distance = water.shore_distance_at_point;
         breaking = water.breaking;
+        lagged = detail::lagged_jacobians(water.lagged(r.ex, r.ez));
     } else {
         detail::OpenSeaWater<double> water(waves, base.data());
         r = detail::solve_rest_offset<true, double>(water, waves.tolerance, waves.radius);
+        lagged = detail::lagged_jacobians(water.lagged(r.ex, r.ez));
     }
     const detail::PointState<double> p = detail::point_state(r);
     o.height = waves.level + p.eta;
@@ -42,7 +45,7 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     o.jacobian = p.jacobian;
     o.iterations = static_cast<int>(r.iterations);
     o.converged = r.converged != 0.0;
-    o.foam = detail::surface_foam(breaking, p.jacobian, waves.whitecap_jacobian);
+    o.foam = detail::surface_foam(breaking, p.jacobian, lagged, waves.whitecap_jacobian);
     return o;
 }
 

@@ -26,12 +26,13 @@ namespace tidewater::detail {
 
 namespace river_solve_impl {
 
-/// Writes the first `used` lanes of a solve: the surface, with the river's current at
-/// each point added to the orbital velocity.
-template <typename T>
-void write_points(const NewtonResult<T>& r, double level, double whitecap_jacobian, const RiverSample* at, const double* breaking,
-                  const double* shore_distance, std::size_t used, SurfacePoint* out) {
+/// Writes the first `used` lanes of a solve of `water`: the surface, with the river's
+/// current at each point added to the orbital velocity, and the foam its particles remember.
+template <typename T, typename Water>
+void write_points(const NewtonResult<T>& r, Water& water, double level, double whitecap_jacobian, const RiverSample* at,
+                  const double* breaking, const double* shore_distance, std::size_t used, SurfacePoint* out) {
     const PointLanes<T> lanes(r);
+    const LagLanes<T> lags(water.lagged(r.ex, r.ez));
     for (std::size_t l = 0; l < used; ++l) {
         SurfacePoint& o = out[l];
         lanes.fill(l, level, o);
@@ -39,7 +40,7 @@ void write_points(const NewtonResult<T>& r, double level, double whitecap_jacobi
         o.depth = at[l].depth;
         o.shore_distance = shore_distance ? shore_distance[l] : kDeepWater;
         o.wet = surface_wet(o.height, at[l].surface, at[l].depth);
-        o.foam = surface_foam(breaking ? breaking[l] : 0.0, lanes.jacobian[l], whitecap_jacobian);
+        o.foam = surface_foam(breaking ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), whitecap_jacobian);
     }
 }
 
@@ -69,7 +70,7 @@ void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, cons
     RiverWater<T> river(*in.river_waves, *in.river, px, pz, river_base);
     if (!plume) {
         const auto r = solve_rest_offset<true, T>(river, in.river_waves->tolerance, in.river_waves->radius);
-        river_solve_impl::write_points(r, in.river_waves->level, in.river_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
+        river_solve_impl::write_points(r, river, in.river_waves->level, in.river_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
         return;
     }
     const double max_offset = in.river_waves->max_offset + in.still_waves->max_offset;
@@ -81,12 +82,12 @@ void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, cons
         double breaking[kLanes], distance[kLanes];
         store_lanes(still.breaking, breaking);
         store_lanes(still.shore_distance_at_point, distance);
-        river_solve_impl::write_points(r, in.still_waves->level, in.still_waves->whitecap_jacobian, at, breaking, distance, used, out);
+        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, breaking, distance, used, out);
     } else {
         OpenSeaWater<T> still(*in.still_waves, still_base);
         PlumeWater<T, OpenSeaWater<T>> water(river, still);
         const auto r = solve_rest_offset<true, T>(water, tolerance, radius);
-        river_solve_impl::write_points(r, in.still_waves->level, in.still_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
+        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
     }
 }
 

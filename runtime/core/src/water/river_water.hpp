@@ -66,6 +66,16 @@ public:
         return SurfaceSums<T>(s);
     }
 
+    /// A river's waves ride its current, so its particles do not keep their rest
+    /// positions: they remember no compression (lagged Jacobians of 1, no foam).
+    LaggedCompression<T> lagged(const T&, const T&) const { return {}; }
+
+    /// The still water's weight at rest offset e (still_weight, sampled there).
+    const T& still_weight_at(const T& ex, const T& ez) {
+        sample(ex, ez);
+        return still_weight_;
+    }
+
     void record(Mask) {}
 
     /// The weight of the still water's waves at the last rest position, 0..1: 0 in the
@@ -135,6 +145,15 @@ public:
         SurfaceSums<T> s = river_.template evaluate<kVelocity>(ex, ez);
         add_scaled(s, still_.template evaluate<kVelocity>(ex, ez), river_.still_weight());
         return s;
+    }
+
+    /// The still water's earlier compression, faded in as at rest offset e (the river's
+    /// own waves remember none).
+    LaggedCompression<T> lagged(const T& ex, const T& ez) {
+        LaggedCompression<T> c;
+        const T weight = river_.still_weight_at(ex, ez);
+        add_scaled(c, still_.lagged(ex, ez), weight);
+        return c;
     }
 
     void record(Mask m) { still_.record(m); }

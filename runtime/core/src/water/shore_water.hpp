@@ -53,23 +53,21 @@ public:
 
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) {
-        locate(ex, ez);
-        const std::size_t nw = w_.count;
-        // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
-        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
-        const T steepness_scale = blend(4 * nw + 2);
         SurfaceSums<T> s;
-        for (std::size_t i = 0; i < nw; ++i) {
-            const T residual = blend(i), amplitude = blend(nw + i);
-            const T kx = blend(2 * nw + i), kz = blend(3 * nw + i);
-            // The phase follows the shore: open-sea phase at p, k0 D.e, and the marched residual.
-            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) + residual;
-            const T a = amplitude * ramp;
-            add_wave<kVelocity>(s, wave_term<T>(kx, kz, a, T(w_.steepness[i]) * steepness_scale, T(w_.omega[i])), theta);
-        }
+        each_wave(ex, ez, [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
         // A copy, not the named local: the sums stay in registers instead of the caller's
         // memory, which the row loads might alias.
         return SurfaceSums<T>(s);
+    }
+
+    /// The compression of the particles at rest offset e earlier (LaggedCompression): the
+    /// shore fields are fixed in time, so only the phases turn back.
+    LaggedCompression<T> lagged(const T& ex, const T& ez) {
+        LaggedCompression<T> c;
+        each_wave(ex, ez, [&](std::size_t i, const WaveTerm<T>& term, const T& theta) {
+            add_wave_lags(c, term, theta, &w_.lag_sin[i * kFoamLags], &w_.lag_cos[i * kFoamLags]);
+        });
+        return c;
     }
 
     /// Keeps the breaking sampled by the last evaluation for the lanes in `m`.
@@ -80,6 +78,25 @@ public:
     T depth_at_point = T(0.0), shore_distance_at_point = T(0.0);
 
 private:
+    /// Calls add(i, wave i's term, its phase) for every wave as the shore shapes it at
+    /// rest offset e.
+    template <typename Add>
+    void each_wave(const T& ex, const T& ez, Add&& add) {
+        locate(ex, ez);
+        const std::size_t nw = w_.count;
+        // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
+        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
+        const T steepness_scale = blend(4 * nw + 2);
+        for (std::size_t i = 0; i < nw; ++i) {
+            const T residual = blend(i), amplitude = blend(nw + i);
+            const T kx = blend(2 * nw + i), kz = blend(3 * nw + i);
+            // The phase follows the shore: open-sea phase at p, k0 D.e, and the marched residual.
+            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) + residual;
+            const T a = amplitude * ramp;
+            add(i, wave_term<T>(kx, kz, a, T(w_.steepness[i]) * steepness_scale, T(w_.omega[i])), theta);
+        }
+    }
+
     /// Finds each lane's place in its cell at rest offset e. Newton moves the rest position
     /// by far less than a texel, so a lane's cached cell nearly always still holds it: the
     /// place is then cell_u + e / texel in float, checked for all lanes in one SIMD pass.

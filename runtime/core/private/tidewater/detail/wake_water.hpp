@@ -187,6 +187,9 @@ public:
         return s;
     }
 
+    /// The waves' earlier compression (the wakes' own foam is their turbulence).
+    LaggedCompression<T> lagged(const T& ex, const T& ez) { return inner_.lagged(ex, ez); }
+
     void record(typename Ops::Mask m) {
         inner_.record(m);
         eta = Ops::select(m, last_eta_, eta);

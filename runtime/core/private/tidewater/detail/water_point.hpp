@@ -20,8 +20,11 @@
 // Units: metres, seconds, radians. Threading: pure functions.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+
+#include "host_device.h"
 
 namespace tidewater::detail {
 
@@ -160,6 +163,66 @@ void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& theta) {
     T sn, cs;
     NumberOps<T>::sin_cos(theta, sn, cs);
     add_wave<kVelocity>(s, w, sn, cs);
+}
+
+/// The compression a particle's crest had earlier: the sums m of the horizontal map's
+/// gradient kFoamLags times, tau_l = l * kFoamLagStep seconds ago (l = 1..kFoamLags), at
+/// the same rest position. Gerstner rest positions label water particles, and a shore or
+/// a body reshapes a wave's phase field but keeps its frequency, so tau ago each wave's
+/// phase was theta + omega tau: the lagged sums need no more sines than the wave's own.
+/// (Not for rivers, whose waves ride the
+/// current: their particles do not keep their rest positions.)
+inline constexpr std::size_t kFoamLags = gpu::kFoamLags;
+
+template <typename T>
+struct LaggedCompression {
+    std::array<T, kFoamLags> mxx, mxz, mzz;
+    LaggedCompression() {
+        mxx.fill(T(0.0));
+        mxz.fill(T(0.0));
+        mzz.fill(T(0.0));
+    }
+};
+
+/// Adds one wave at phase `theta` to the lagged sums; lag_sin[l] and lag_cos[l] are the
+/// sine and cosine of omega tau_l (l = 0 for the first lag), so that
+/// sin(theta + omega tau_l) = sin theta cos(omega tau_l) + cos theta sin(omega tau_l).
+/// (The GLSL twin turns (sin, cos) theta lag by lag instead: the same phases, without
+/// eight more sines per wave on the GPU.)
+template <typename T, typename Scalar>
+void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& theta, const Scalar* lag_sin,
+                   const Scalar* lag_cos) {
+    using Ops = NumberOps<T>;
+    T sin_theta, cos_theta;
+    Ops::sin_cos(theta, sin_theta, cos_theta);
+    for (std::size_t l = 0; l < kFoamLags; ++l) {
+        const T s = Ops::mul_add(sin_theta, T(lag_cos[l]), cos_theta * T(lag_sin[l]));
+        c.mxx[l] = Ops::mul_add(w.qak_xx, s, c.mxx[l]);
+        c.mxz[l] = Ops::mul_add(w.qak_xz, s, c.mxz[l]);
+        c.mzz[l] = Ops::mul_add(w.qak_zz, s, c.mzz[l]);
+    }
+}
+
+/// c += w * b (a second water's waves, scaled, as add_scaled).
+template <typename T>
+void add_scaled(LaggedCompression<T>& c, const LaggedCompression<T>& b, const T& w) {
+    using Ops = NumberOps<T>;
+    for (std::size_t l = 0; l < kFoamLags; ++l) {
+        c.mxx[l] = Ops::mul_add(w, b.mxx[l], c.mxx[l]);
+        c.mxz[l] = Ops::mul_add(w, b.mxz[l], c.mxz[l]);
+        c.mzz[l] = Ops::mul_add(w, b.mzz[l], c.mzz[l]);
+    }
+}
+
+/// The horizontal map's Jacobian determinant at each lag.
+template <typename T>
+std::array<T, kFoamLags> lagged_jacobians(const LaggedCompression<T>& c) {
+    std::array<T, kFoamLags> det;
+    for (std::size_t l = 0; l < kFoamLags; ++l) {
+        const T jxx = T(1.0) - c.mxx[l], jzz = T(1.0) - c.mzz[l];
+        det[l] = jxx * jzz - c.mxz[l] * c.mxz[l];
+    }
+    return det;
 }
 
 /// What follows from the sums: the horizontal map's Jacobian [[jxx, jxz], [jxz, jzz]]
