@@ -170,8 +170,8 @@ void add_wave(SurfaceSums<T>& s, const WaveTerm<T>& w, const T& theta) {
 /// the same rest position. Gerstner rest positions label water particles, and a shore or
 /// a body reshapes a wave's phase field but keeps its frequency, so tau ago each wave's
 /// phase was theta + omega tau: the lagged sums need no more sines than the wave's own.
-/// (Not for rivers, whose waves ride the
-/// current: their particles do not keep their rest positions.)
+/// (Not for rivers, whose waves ride the current: their particles do not keep their rest
+/// positions.) Whitecap foam lingers by these (tidewater/detail/surface_foam.hpp).
 inline constexpr std::size_t kFoamLags = gpu::kFoamLags;
 
 template <typename T>
