@@ -71,12 +71,14 @@ SurfaceSums water_at_offset(vec2 e) {
 // The waves' earlier compression at rest offset e (LaggedCompression): the still
 // water's, faded in as its waves are (a river's own waves ride its current and keep none).
 vec4 lagged_jacobian_at(vec2 e) {
+    if (river_mode() && params.still < 0.5) return vec4(1.0);
     g_track_lags = true;
-    water_at_offset(e);
+    still_water_at(e);
     g_track_lags = false;
+    if (!river_mode()) return lagged_jacobians(g_lagged);
     LaggedCompression lagged = lagged_zero();
-    if (!river_mode()) lagged = g_lagged;
-    else if (params.still > 0.5) add_scaled(lagged, g_lagged, g_river_still_weight);
+    vec2 rest = cell_origin[g_point.cell] + g_point.local + e;
+    add_scaled(lagged, g_lagged, river_field(river_tap(rest), kRiverQueryStillWeight));
     return lagged_jacobians(lagged);
 }
 

@@ -20,8 +20,9 @@ namespace tidewater {
 double monahan_whitecap_fraction(double wind_speed);
 
 /// The whitecap Jacobian J* at which foam >= 1/2 (fresh or remembered) covers `fraction`
-/// (in (0, 1)) of the open sea's displaced surface for this wave set, by area. Estimated from a fixed, seeded sample of 65 536
-/// surface particles over eight instants, so the same set always gets the same J*;
+/// (in (0, 1)) of the open sea's displaced surface for this wave set, by area. Estimated
+/// from a fixed, seeded sample of 65 536 surface particles over eight instants (J* by
+/// bisection on their foam), so the same set always gets the same J*;
 /// a sampling error of about 0.005 in J* for the bundled presets. An empty set (flat
 /// water, J = 1 everywhere) gives 1.
 double whitecap_jacobian(const WaveSet& set, double fraction);

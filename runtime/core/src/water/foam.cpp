@@ -19,8 +19,14 @@ double detail::foam_memory_weight(std::size_t lag) {
 }
 
 double detail::remembered_foam(const std::array<double, kFoamLags>& lagged_jacobians, double whitecap_jacobian) {
+    // Every full query reads these: formed once, not four exponentials a point.
+    static const std::array<double, kFoamLags> weights = [] {
+        std::array<double, kFoamLags> w{};
+        for (std::size_t l = 0; l < kFoamLags; ++l) w[l] = foam_memory_weight(l + 1);
+        return w;
+    }();
     double foam = 0.0;
-    for (std::size_t l = 0; l < kFoamLags; ++l) foam += crest_foam(lagged_jacobians[l], whitecap_jacobian) * foam_memory_weight(l + 1);
+    for (std::size_t l = 0; l < kFoamLags; ++l) foam += crest_foam(lagged_jacobians[l], whitecap_jacobian) * weights[l];
     return foam;
 }
 
