@@ -108,6 +108,7 @@ struct GpuWakePoint {
 struct GpuWave {
     vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
     vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame), w: wavelength (m)
+    vec4 lag_turn;       // x, y: sin and cos of omega kFoamLagStep (the lagged sums' turn per lag); zw: unused
 };
 
 // One river wave in the river's channel frame. Its phase at a point is
@@ -248,7 +249,7 @@ struct GpuShoreTexel {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(GpuWave) == 32);
+static_assert(sizeof(GpuWave) == 48);
 static_assert(sizeof(GpuWakePoint) == 32);
 static_assert(sizeof(GpuQueryPoint) == 16);
 static_assert(sizeof(GpuRiverWave) == 32);

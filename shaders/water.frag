@@ -179,7 +179,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         if (abs(change) < 1e-3) continue;
         float theta = dot(kvec, rest_xz) + w.steep_omega.z;
         add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
-        add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
+        add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
     }
     vec2 slope = faded.slope;
     jacobian.x -= faded.m.x + faded.m.z;

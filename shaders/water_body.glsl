@@ -51,7 +51,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         }
         if (a > 0.0) a *= wave_lod_weight(kvec, lod);
         add_wave(s, kvec, a, q, w.steep_omega.y, theta);
-        if (g_track_lags) add_wave_lags(g_lagged, kvec, a, q, w.steep_omega.y, theta);
+        if (g_track_lags) add_wave_lags(g_lagged, kvec, a, q, w.lag_turn.xy, theta);
     }
     return s;
 }

@@ -43,19 +43,20 @@ void add_wave(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, flo
 // The compression a particle's crest had earlier (tidewater::detail::LaggedCompression):
 // the sums m at the kFoamLags lags tau_l = l * kFoamLagStep s ago (l = 1..4, one per
 // component), at the same rest position. Each wave's phase then was theta + omega tau:
-// (sin, cos) theta turns by omega kFoamLagStep per lag.
+// (sin, cos) theta turns by omega kFoamLagStep per lag; `turn` holds that angle's sine and
+// cosine (GpuWave.lag_turn, formed once per wave on the host).
 struct LaggedCompression {
     vec4 mxx, mxz, mzz;
 };
 
 LaggedCompression lagged_zero() { return LaggedCompression(vec4(0.0), vec4(0.0), vec4(0.0)); }
 
-void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, float omega, float theta) {
+void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, vec2 turn, float theta) {
     float k = length(kvec);
     vec2 d = kvec / (k > 0.0 ? k : 1.0);
     vec3 coeff = q * a * k * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
     float sn = sin(theta), cs = cos(theta);
-    float step_sin = sin(omega * kFoamLagStep), step_cos = cos(omega * kFoamLagStep);
+    float step_sin = turn.x, step_cos = turn.y;
     vec4 lagged_sin;
     for (int l = 0; l < 4; ++l) {
         float s = sn * step_cos + cs * step_sin;

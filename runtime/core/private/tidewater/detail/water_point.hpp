@@ -187,8 +187,8 @@ struct LaggedCompression {
 /// Adds one wave at phase `theta` to the lagged sums; lag_sin[l] and lag_cos[l] are the
 /// sine and cosine of omega tau_l (l = 0 for the first lag), so that
 /// sin(theta + omega tau_l) = sin theta cos(omega tau_l) + cos theta sin(omega tau_l).
-/// (The GLSL twin turns (sin, cos) theta lag by lag instead: the same phases, without
-/// eight more sines per wave on the GPU.)
+/// (The GLSL twin turns (sin, cos) theta lag by lag by omega kFoamLagStep instead, from
+/// GpuWave.lag_turn: the same phases, with two values a wave on the GPU, not eight.)
 template <typename T, typename Scalar>
 void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& theta, const Scalar* lag_sin,
                    const Scalar* lag_cos) {
