@@ -4,10 +4,12 @@
 
 #include "tidewater/detail/water_point.hpp"
 #include "water/prepared_waves.hpp"
+#include "water/recorded_phases.hpp"
 
 namespace tidewater::detail {
 
-template <typename T>
+/// With kRecordPhases, full evaluations keep their sines in a RecordedPhases for `lagged`.
+template <typename T, bool kRecordPhases = false>
 class OpenSeaWater {
 public:
     using Ops = NumberOps<T>;
@@ -15,10 +17,22 @@ public:
 
     /// `base` holds each wave's phase at the query points, [wave * kLanes + lane].
     OpenSeaWater(const PreparedWaves<Scalar>& waves, const Scalar* base) : w_(waves), base_(base) {}
+    /// `phases` (kRecordPhases) outlives the water.
+    OpenSeaWater(const PreparedWaves<Scalar>& waves, const Scalar* base, RecordedPhases<T>& phases)
+        : w_(waves), base_(base), phases_(&phases) {}
 
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) const {
         SurfaceSums<T> s;
+        if constexpr (kVelocity && kRecordPhases) {
+            each_wave(ex, ez, [&](std::size_t i, const WaveTerm<T>& term, const T& theta) {
+                Ops::sin_cos(theta, phases_->sin_last[i], phases_->cos_last[i]);
+                add_wave<kVelocity>(s, term, phases_->sin_last[i], phases_->cos_last[i]);
+            });
+            phases_->ex_last = ex;
+            phases_->ez_last = ez;
+            return s;
+        }
         each_wave(ex, ez, [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
         return s;
     }
@@ -26,13 +40,23 @@ public:
     /// The compression of the particles at rest offset e earlier (LaggedCompression).
     LaggedCompression<T> lagged(const T& ex, const T& ez) const {
         LaggedCompression<T> c;
+        if constexpr (kRecordPhases) {
+            if (phases_->kept_at(ex, ez)) {  // as write_results asks: no second sine pass
+                for (std::size_t i = 0; i < w_.count; ++i)
+                    add_wave_lags(c, broadcast(w_.open_sea[i]), phases_->sin_kept[i], phases_->cos_kept[i],
+                                  &w_.lag_sin[i * kFoamLags], &w_.lag_cos[i * kFoamLags]);
+                return c;
+            }
+        }
         each_wave(ex, ez, [&](std::size_t i, const WaveTerm<T>& term, const T& theta) {
             add_wave_lags(c, term, theta, &w_.lag_sin[i * kFoamLags], &w_.lag_cos[i * kFoamLags]);
         });
         return c;
     }
 
-    void record(typename Ops::Mask) {}
+    void record(typename Ops::Mask m) {
+        if constexpr (kRecordPhases) phases_->keep(m, w_.count);
+    }
 
 private:
     /// Calls add(i, wave i's term, its phase) for every wave at rest offset e.
@@ -51,6 +75,7 @@ private:
 
     const PreparedWaves<Scalar>& w_;
     const Scalar* base_;
+    RecordedPhases<T>* phases_ = nullptr;
 };
 
 }  // namespace tidewater::detail

@@ -189,18 +189,25 @@ struct LaggedCompression {
 /// sin(theta + omega tau_l) = sin theta cos(omega tau_l) + cos theta sin(omega tau_l).
 /// (The GLSL twin turns (sin, cos) theta lag by lag by omega kFoamLagStep instead, from
 /// GpuWave.lag_turn: the same phases, with two values a wave on the GPU, not eight.)
+/// Here theta is given as its sine and cosine.
 template <typename T, typename Scalar>
-void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& theta, const Scalar* lag_sin,
+void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& sin_theta, const T& cos_theta, const Scalar* lag_sin,
                    const Scalar* lag_cos) {
     using Ops = NumberOps<T>;
-    T sin_theta, cos_theta;
-    Ops::sin_cos(theta, sin_theta, cos_theta);
     for (std::size_t l = 0; l < kFoamLags; ++l) {
         const T s = Ops::mul_add(sin_theta, T(lag_cos[l]), cos_theta * T(lag_sin[l]));
         c.mxx[l] = Ops::mul_add(w.qak_xx, s, c.mxx[l]);
         c.mxz[l] = Ops::mul_add(w.qak_xz, s, c.mxz[l]);
         c.mzz[l] = Ops::mul_add(w.qak_zz, s, c.mzz[l]);
     }
+}
+
+template <typename T, typename Scalar>
+void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& theta, const Scalar* lag_sin,
+                   const Scalar* lag_cos) {
+    T sin_theta, cos_theta;
+    NumberOps<T>::sin_cos(theta, sin_theta, cos_theta);
+    add_wave_lags(c, w, sin_theta, cos_theta, lag_sin, lag_cos);
 }
 
 /// c += w * b (a second water's waves, scaled, as add_scaled).
