@@ -72,6 +72,67 @@ float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
     return clamp(sum + (ub >= 6.0 ? 1.0 - t * t * (3.0 - 2.0 * t) : 0.0), 0.0, 1.0);
 }
 
+// The waves a pixel cannot resolve, as the foam needs them: the variance of their
+// compression (the trace of their m: J falls by it, to first order), their height
+// variance (m^2), slope variance per axis (waves only: ripples are too low to hide
+// anything), and the covariance of their height with their compression now and at each
+// lag of the foam's memory.
+struct HiddenWaves {
+    float compression_variance;
+    float height_variance;
+    float slope_variance;
+    float compression_covariance;
+    vec4 lagged_covariance;
+};
+HiddenWaves hidden_zero() { return HiddenWaves(0.0, 0.0, 0.0, 0.0, vec4(0.0)); }
+// A wave of amplitude a (m) that the pixel loses `lost` of its variance of: eta = a sin
+// theta, its compression Q k a sin theta and, l lags ago, Q k a sin(theta + l omega
+// kFoamLagStep) (turn: sine and cosine of omega kFoamLagStep).
+void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_amplitude, float compression, vec2 turn) {
+    h.compression_variance += lost * 0.5 * compression * compression;
+    h.height_variance += lost * 0.5 * a * a;
+    h.slope_variance += lost * 0.5 * slope_amplitude * slope_amplitude;
+    float covariance = lost * 0.5 * compression * a;
+    h.compression_covariance += covariance;
+    float sn = 0.0, cs = 1.0;
+    for (int l = 0; l < 4; ++l) {
+        float s = sn * turn.y + cs * turn.x;
+        cs = cs * turn.y - sn * turn.x;
+        sn = s;
+        h.lagged_covariance[l] += covariance * cs;
+    }
+}
+
+// At grazing angles the crests hide the troughs behind them. Smith's height-correlated
+// masking sees a point of height z (in deviations) with probability Phi(z)^Lambda,
+// Lambda = phi(u) / u - (1 - Phi(u)) for Gaussian slopes of deviation sigma toward a view
+// of elevation tangent t = u sigma: the heights seen are distributed as the largest of
+// 1 + Lambda normal samples. Their mean and variance (in deviations) from rational fits
+// in L = ln(1 + Lambda) (within 3e-4 and 0.025 of the exact integrals up to 300 samples).
+vec2 visible_heights(float t, float sigma) {
+    if (sigma <= 0.0) return vec2(0.0, 1.0);
+    float u = max(t / sigma, 1e-3);
+    float lambda = 0.3989423 * exp(-0.5 * u * u) / u - (1.0 - normal_cdf(u));
+    float L = log(clamp(1.0 + lambda, 1.0, 300.0));
+    float mean = L * (0.9055 + 0.01263 * L) / (1.0 + 0.1790 * L - 0.002568 * L * L);
+    float variance = 1.0 / (1.0 + 0.7105 * L + 0.05301 * L * L);
+    return vec2(mean, variance);
+}
+
+// Crest foam over the particles the viewer sees: the Jacobian j, less the unresolved
+// waves' share (crest_foam_filtered's spread), conditioned on the heights seen (`seen`,
+// from visible_heights): its mean falls by cov / sigma_h times their mean height, its
+// variance loses (cov / sigma_h)^2 times what the masking takes off theirs.
+float seen_crest_foam(float j, float covariance, HiddenWaves h, vec2 seen, float whitecap_jacobian) {
+    float spread2 = h.compression_variance;
+    if (h.height_variance > 0.0) {
+        float per_height = covariance / sqrt(h.height_variance);
+        j -= per_height * seen.x;
+        spread2 = max(spread2 - per_height * per_height * (1.0 - seen.y), 0.0);
+    }
+    return crest_foam_filtered(j, whitecap_jacobian, sqrt(spread2));
+}
+
 // Foam lace: 0 on the borders of 2.5 m cells (where bubbles gather between the holes
 // that open in decaying foam), rising to 1 at their centres (F2 - F1 of a cellular noise).
 float foam_lace(vec2 p) {
@@ -156,11 +217,11 @@ float foam_cover(float foam, vec2 xz, float footprint) {
 // already draws (waves faded out of the mesh add slope; waves the mesh draws but the
 // pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis). The same share
-// changes the Jacobian (to first order, by minus the trace of their m): by
-// `jacobian.x`, with the unresolved part's variance in `jacobian.y`; the lagged Jacobians
-// (the foam particles remember) by `lagged`.
-vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout vec2 jacobian, inout vec4 lagged) {
+// pixel cannot resolve adds to `variance` (slope variance, per axis) and to `hidden`.
+// The same share changes the Jacobian (to first order, by minus the trace of their m):
+// by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
+vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout float jacobian, inout vec4 lagged,
+                   inout HiddenWaves hidden) {
     SurfaceSums faded = surface_zero();
     LaggedCompression faded_lags = lagged_zero();
     bool river = uint(d.body.x) == kBodyRiver;
@@ -174,7 +235,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         float compression = w.steep_omega.x * slope_amplitude;  // Q k A
         float lost = 1.0 - kept * kept;
         variance += lost * 0.5 * slope_amplitude * slope_amplitude;
-        jacobian.y += lost * 0.5 * compression * compression;
+        add_hidden_wave(hidden, lost, w.dir_k_amp.w, slope_amplitude, compression, w.lag_turn.xy);
         float change = kept - drawn;
         if (abs(change) < 1e-3) continue;
         float theta = dot(kvec, rest_xz) + w.steep_omega.z;
@@ -182,7 +243,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
     }
     vec2 slope = faded.slope;
-    jacobian.x -= faded.m.x + faded.m.z;
+    jacobian -= faded.m.x + faded.m.z;
     lagged -= faded_lags.mxx + faded_lags.mzz;
     if (!river && d.ripple.x > 0.0) {
         // Ripple octaves: as slope where resolved, as variance where not.
@@ -209,10 +270,14 @@ void main() {
     WaveLod lod = wave_lod_at(rest_xz, d.body.y, d.lod.x);
     float footprint = lod.along;  // the footprint's longer side
     float variance = 0.0;
-    vec2 jacobian_detail = vec2(0.0);
+    float jacobian_detail = 0.0;
     vec4 lagged_detail = vec4(0.0);
-    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail);
+    HiddenWaves hidden = hidden_zero();
+    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
+    // The unresolved crests the viewer sees (before n turns to the visible facets' mean).
+    float cos_view = clamp(dot(n, v), 1e-4, 1.0);
+    vec2 seen = visible_heights(cos_view / max(sqrt(1.0 - cos_view * cos_view), 1e-4), sqrt(hidden.slope_variance));
     VisibleFacets facets = visible_facets(n, v, variance);
     n = facets.normal;
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
@@ -303,10 +368,10 @@ void main() {
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     // Fresh crest foam and what the particles' earlier crests left, fading
     // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
-    float jacobian_spread = sqrt(jacobian_detail.y);
-    float crest_foam_here = crest_foam_filtered(jacobian + jacobian_detail.x, d.extra.x, jacobian_spread);
+    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, hidden, seen, d.extra.x);
     for (int l = 0; l < 4; ++l)
-        crest_foam_here += crest_foam_filtered(lagged_jacobian[l] + lagged_detail[l], d.extra.x, jacobian_spread) * foam_memory_weight(l + 1);
+        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden, seen, d.extra.x) *
+                           foam_memory_weight(l + 1);
     float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
     // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
     if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
