@@ -43,7 +43,6 @@ using RiverSolveFn = void (*)(const RiverInput<float>& in, const glm::dvec2* poi
 using SolveFn = void (*)(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full,
                          double* heights);
 
-
 namespace kernel_sse2 {
 void solve(const KernelInput& in, const glm::dvec2* points, std::size_t n, SurfacePoint* full, double* heights);
 void solve_river(const RiverInput<float>& in, const glm::dvec2* points, std::size_t n, SurfacePoint* out);

@@ -11,8 +11,8 @@
 
 namespace tidewater::detail {
 
-/// One batch's phases. The water writes `last` at each evaluation and `record` keeps them
-/// for the lanes that finish, as Newton's result keeps their sums. Lives on the stack
+/// One batch's phases. The water writes `last` at each evaluation, and its `record` keeps
+/// them (`keep`) for the lanes that finish, as Newton's result keeps their sums. Lives on the stack
 /// beside the water it serves; not shared between threads.
 template <typename T>
 struct RecordedPhases {
