@@ -174,6 +174,8 @@ struct GpuFrame {
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
     vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: unused
+    vec4 water_density;      // x: water vertices and shading footprints per pixel side: 1, or sqrt(samples)
+                             // where the water shades every sample of a multisampled target; yzw: unused
     // The Preetham sky (runtime/render/src/sky_model.hpp): A, B, C, D of the Perez
     // function for luminance Y and chromaticity x, y; their E; the zenith values over
     // F(0, theta_s) with Y divided by the zenith luminance (the exposure's reference).
@@ -258,7 +260,7 @@ static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 15 * 16 + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 16 * 16 + 16 * kMaxWakeBoxes);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

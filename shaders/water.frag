@@ -13,16 +13,23 @@
 #define WAKE_COUNT uint(frame.wakes.x)
 #define WAKE_TURBULENT uint(frame.wakes.y)
 #include "wake_point.glsl"
-layout(location = 0) in vec3 world_pos;
-layout(location = 1) in vec3 geo_normal;
-layout(location = 2) in vec2 rest_xz;
-layout(location = 3) in float jacobian;
-layout(location = 4) in float eta;
-layout(location = 5) in float wake_eta;
-layout(location = 6) in vec2 shore_info;
-layout(location = 7) in float rest_level;
-layout(location = 8) in vec2 current;
-layout(location = 9) in vec4 lagged_jacobian;
+// Compiled twice: as is, and with TW_WATER_PER_SAMPLE for multisampled targets that shade
+// the water at every sample (its inputs interpolated there; RendererInitInfo::shade_water_per_sample).
+#ifdef TW_WATER_PER_SAMPLE
+#define WATER_IN sample in
+#else
+#define WATER_IN in
+#endif
+layout(location = 0) WATER_IN vec3 world_pos;
+layout(location = 1) WATER_IN vec3 geo_normal;
+layout(location = 2) WATER_IN vec2 rest_xz;
+layout(location = 3) WATER_IN float jacobian;
+layout(location = 4) WATER_IN float eta;
+layout(location = 5) WATER_IN float wake_eta;
+layout(location = 6) WATER_IN vec2 shore_info;
+layout(location = 7) WATER_IN float rest_level;
+layout(location = 8) WATER_IN vec2 current;
+layout(location = 9) WATER_IN vec4 lagged_jacobian;
 layout(location = 0) out vec4 out_color;
 
 const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first

@@ -9,9 +9,10 @@
 float camera_distance(vec2 xz, float level) {
     return length(vec3(xz.x, level, xz.y) - frame.camera.xyz);
 }
-// Target vertex spacing (m) at a distance: grows linearly with distance.
+// Target vertex spacing (m) at a distance: grows linearly with distance, and is finer
+// where the water shades every sample (the shading's footprint is a sample's).
 float vertex_spacing(float distance) {
-    return max(distance, 1.0) / frame.params.z;
+    return max(distance, 1.0) / (frame.params.z * frame.water_density.x);
 }
 
 // The standard normal distribution function Phi(u), within 2e-7 (Abramowitz and Stegun

@@ -219,6 +219,9 @@ JSON
     "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
     check "multisampled still under validation" test $? -eq 0
     check "multisampled PNG written" test -s still4.png
+    "$TW" render --size 96x54 --time 2 --samples 4 --water-per-sample --out still4s.png --validate > log4s.txt
+    check "water shaded per sample under validation" test $? -eq 0
+    check "per-sample PNG written" test -s still4s.png
     ;;
   render_sequence)
     "$TW" render --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
@@ -237,6 +240,7 @@ JSON
     expect_error "turbidity out of range" "--turbidity" "$TW" render --turbidity 20 --out o.png
     expect_error "sun of zero length" "--sun" "$TW" render --sun 0 0 0 --out o.png
     expect_error "odd sample count" "--samples" "$TW" render --samples 3 --out o.png
+    expect_error "per-sample water without samples" "--water-per-sample: needs --samples" "$TW" render --water-per-sample --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
     expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png

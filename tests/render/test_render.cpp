@@ -70,12 +70,14 @@ protected:
         EXPECT_TRUE(s.ok()) << s.error().message;
         return s.ok() ? std::move(s).value() : Scene{};
     }
-    /// A frame through a renderer and target of their own at `samples` per pixel.
+    /// A frame through a renderer and target of their own at `samples` per pixel, the
+    /// water shaded at every sample when `water_per_sample`.
     render::RgbaImage render_multisampled(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w, std::uint32_t h,
-                                          VkSampleCountFlagBits samples) {
+                                          VkSampleCountFlagBits samples, bool water_per_sample = false) {
         render::RendererInitInfo init;
         init.device = context();
         init.samples = samples;
+        init.shade_water_per_sample = water_per_sample;
         init.wireframe = false;
         auto r = render::Renderer::create(init);
         EXPECT_TRUE(r.ok()) << r.error().message;
@@ -659,17 +661,17 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
 
 // The far field does not sparkle: in the 30 rows under the horizon, a 640 x 360 frame of
 // the open sea against the same frame rendered at 4x and box-filtered (mean per
-// channel), and two frames 1/60 s apart against the supersampled pair. From 400 m the
-// difference is within 0.02 (0.0022; 0.026 unfiltered). From 12 m it is 0.038 (0.063
-// unfiltered), short of 0.02: the rows from 150 m to 7 km out, where a pixel spans up to
-// 100 m along the view, keep what the filtered model cannot reproduce of the 4x frame's
-// waves (crests hiding troughs, foam on the crests it sees: without foam the band is
-// 0.021; the 4x frame itself is 0.0098 from 8x there). Foam that lingers behind the
-// crests (SurfacePoint::foam) more than doubles the far band's foam and took the band
-// from 0.028 to 0.038; the bound guards what the filtering reached. (Foam over the
-// crests the viewer sees brings the band's foam amount to 0.89 of the 4x frame's but
-// leaves the band at 0.038: what is left is where, within the pixel, the foam lies.) From both heights the frame-to-frame change is at most twice the
-// supersampled pair's (it was three times from 12 m unfiltered).
+// channel), and two frames 1/60 s apart against the supersampled pair.
+// - From 400 m the difference is within 0.02 (0.0022; 0.026 unfiltered).
+// - From 12 m it is 0.038 (0.063 unfiltered), short of 0.02: the rows from 150 m to
+//   7 km out, where a pixel spans up to 100 m along the view, keep what the filtered
+//   model cannot place of the 4x frame's waves and foam (without foam the band is 0.021;
+//   the 4x frame itself is 0.0098 from 8x there). The bound guards what the filtering
+//   reached. The same frame at 4 samples with the water shaded at each
+//   (RendererInitInfo::shade_water_per_sample, its waves drawn and filtered for a
+//   sample's footprint) is within 0.02 (0.017; at 4 samples shaded once per pixel, 0.033).
+// - From both heights the frame-to-frame change is at most twice the supersampled
+//   pair's (it was three times from 12 m unfiltered).
 TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
@@ -687,6 +689,15 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
         std::printf("from %.0f m: far band 1x vs 4x %.4f; frame to frame %.4f (supersampled %.4f)\n", height, alias, flicker, truth_flicker);
         EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.04) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
+        if (height < 100.0) {
+            // The same frame at 4 samples, the water shaded at each (and drawn for a
+            // sample's footprint): what the filter cannot place, the samples resolve.
+            frame.time -= 1.0 / 60.0;
+            const auto per_sample = render_multisampled(*scene, frame, 640, 360, VK_SAMPLE_COUNT_4_BIT, true);
+            const double sampled = band_difference(per_sample, truth, kFarBandTop, kFarBandTop + 30);
+            std::printf("from %.0f m, the water shaded at each of 4 samples: far band %.4f from 4x\n", height, sampled);
+            EXPECT_LE(sampled, 0.02) << "from " << height << " m, the water shaded per sample";
+        }
     }
 }
 
@@ -882,6 +893,13 @@ TEST_F(RenderTest, MultisampledTargetsAntialiasTheEdges) {
     ASSERT_FALSE(stencil.ok());
     EXPECT_NE(stencil.error().message.find("without stencil"), std::string::npos) << stencil.error().message;
     init.depth_format = VK_FORMAT_D32_SFLOAT;
+    init.samples = VK_SAMPLE_COUNT_1_BIT;
+    init.shade_water_per_sample = true;
+    auto single_sampled = render::Renderer::create(init);
+    ASSERT_FALSE(single_sampled.ok());
+    EXPECT_NE(single_sampled.error().message.find("shade_water_per_sample needs a multisampled target"), std::string::npos)
+        << single_sampled.error().message;
+    init.shade_water_per_sample = false;
     init.samples = static_cast<VkSampleCountFlagBits>(3);
     auto odd = render::Renderer::create(init);
     ASSERT_FALSE(odd.ok());

@@ -25,6 +25,7 @@ struct RenderJob {
     std::optional<glm::dvec3> sun_direction;  ///< Toward the sun; default FrameInfo's.
     double sky_turbidity = 2.5;               ///< Preetham sky, in [1.7, 10].
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Multisampling (antialiased edges).
+    bool water_per_sample = false;  ///< RendererInitInfo::shade_water_per_sample (samples > 1).
 };
 
 struct RenderResult {

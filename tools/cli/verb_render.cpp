@@ -35,6 +35,7 @@ struct RenderArgs {
     std::vector<double> sun;
     double turbidity = 2.5;
     int samples = 1;
+    bool water_per_sample = false;
     bool validate = false;
 };
 
@@ -93,6 +94,8 @@ int run_render(const RenderArgs& a) {
     job.sky_turbidity = a.turbidity;
     if (a.samples != 1 && a.samples != 2 && a.samples != 4 && a.samples != 8) return fail(verb, fmt::format("--samples: {} is not 1, 2, 4 or 8", a.samples));
     job.samples = static_cast<VkSampleCountFlagBits>(a.samples);
+    if (a.water_per_sample && a.samples == 1) return fail(verb, "--water-per-sample: needs --samples 2, 4 or 8");
+    job.water_per_sample = a.water_per_sample;
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -136,6 +139,9 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--fov", args->fov, "Vertical field of view, degrees");
     cmd->add_option("--sun", args->sun, "Direction toward the sun x y z (y up)")->expected(3);
     cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")->capture_default_str();
+    cmd->add_flag("--water-per-sample", args->water_per_sample,
+                  "Shade the water at every sample, its waves drawn for a sample's footprint: a grazing far field converges "
+                  "to the supersampled picture (about --samples times the water's cost)");
     cmd->add_option("--turbidity", args->turbidity, "Air turbidity of the Preetham sky: 2 very clear, 3 clear, 6 hazy (1.7 to 10)")->capture_default_str();
     cmd->add_flag("--validate", args->validate, "Enable the Khronos validation layer; any message fails the run");
     return {cmd, [args] { return run_render(*args); }};

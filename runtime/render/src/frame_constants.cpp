@@ -63,7 +63,8 @@ SwashBand swash_band(const WaveSet& waves) {
 }
 
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
-                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output) {
+                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output,
+                     double water_density) {
     FramePlan plan;
     const Camera& cam = info.camera;
     // The render origin: the camera snapped to the phase-cell grid, in double.
@@ -99,6 +100,7 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
                           static_cast<float>(swash.omega));
     f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
                              0.0f, 0.0f);
+    f.water_density = glm::vec4(static_cast<float>(water_density), 0.0f, 0.0f, 0.0f);
     const PreethamSky sky = preetham_sky(sun, info.sky_turbidity);
     f.sky_Y = glm::vec4(sky.abcd[0]);
     f.sky_x = glm::vec4(sky.abcd[1]);

@@ -171,18 +171,19 @@ Status create_samplers(const DeviceContext& ctx, FramePipelines& p) {
 }  // namespace
 
 Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
-                                              VkSampleCountFlagBits samples, bool wireframe) {
+                                              VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe) {
     FramePipelines p;
     if (auto st = create_layouts(ctx, p); !st) return st.error();
     if (auto st = create_samplers(ctx, p); !st) return st.error();
-    auto draws = p.make_draws(ctx, color_format, depth_format, samples, wireframe, nullptr);
+    auto draws = p.make_draws(ctx, color_format, depth_format, samples, water_per_sample, wireframe, nullptr);
     if (!draws) return draws.error();
     p.draws = std::move(draws).value();
     return p;
 }
 
 Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
-                                                 VkSampleCountFlagBits samples, bool wireframe, const ShaderLookup& shaders) const {
+                                                 VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
+                                                 const ShaderLookup& shaders) const {
     DrawPipelines p;
     PipelineDesc base;
     base.layout = layout.get();
@@ -213,7 +214,7 @@ Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFor
     water.vertex = "water.vert";
     water.tess_control = "water.tesc";
     water.tess_eval = "water.tese";
-    water.fragment = "water.frag";
+    water.fragment = water_per_sample ? "water_per_sample.frag" : "water.frag";
     if (auto st = make(p.water, water); !st) return st.error();
     if (wireframe) {
         terrain.polygon_mode = water.polygon_mode = VK_POLYGON_MODE_LINE;

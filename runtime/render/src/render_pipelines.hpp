@@ -51,11 +51,14 @@ struct FramePipelines {
     DrawPipelines draws;
     OwnedSampler linear, nearest;
 
+    /// `water_per_sample`: the water's fragment shader is water_per_sample.frag (shaded at
+    /// every sample; RendererInitInfo::shade_water_per_sample).
     static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
-                                         VkSampleCountFlagBits samples, bool wireframe);
+                                         VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe);
     /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.
     Result<DrawPipelines> make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
-                                     VkSampleCountFlagBits samples, bool wireframe, const ShaderLookup& shaders) const;
+                                     VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
+                                     const ShaderLookup& shaders) const;
 };
 
 }  // namespace tidewater::render::detail

@@ -226,8 +226,9 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     std::erase_if(retired, [&](const Retired& r) { return r.until + slots.size() <= frame.frame_index; });
     next_frame = std::max(next_frame, frame.frame_index + 1);
     slot->recorded_frame = frame.frame_index;
+    const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
     plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
-                              color_target->linear_output);
+                              color_target->linear_output, water_density);
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
     if (!wakes) return wakes.error();
@@ -361,10 +362,16 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     if (auto st = check_format(VK_FORMAT_R32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT, "height texture (R32_SFLOAT)"); !st)
         return st.error();
     if (auto st = check_samples(c, info.samples, *depth_target); !st) return st.error();
+    if (info.shade_water_per_sample) {
+        if (info.samples == VK_SAMPLE_COUNT_1_BIT)
+            return Error{ErrorCode::invalid_argument, "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8)"};
+        if (!c.enabled_features.sampleRateShading) return missing("sampleRateShading", "shade_water_per_sample");
+    }
     auto impl = std::make_unique<Impl>();
     impl->fn = std::move(functions).value();
     impl->info = info;
-    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples, impl->info.wireframe);
+    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples, info.shade_water_per_sample,
+                                                    impl->info.wireframe);
     if (!pipelines) return pipelines.error();
     impl->pipelines = std::move(pipelines).value();
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -509,7 +516,8 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
         const auto it = spirv.find(name);
         return it == spirv.end() ? std::span<const std::uint32_t>() : std::span<const std::uint32_t>(it->second);
     };
-    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples, m.info.wireframe, lookup);
+    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples, m.info.shade_water_per_sample,
+                                        m.info.wireframe, lookup);
     if (!draws) return draws.error();  // the current pipelines keep drawing
     // No device-wide wait: the old pipelines live until the frames in flight are done.
     m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});

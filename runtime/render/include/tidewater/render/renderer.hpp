@@ -70,6 +70,12 @@ struct RendererInitInfo {
     /// The targets' sample count: 1, or 2, 4 or 8 for multisampled targets (antialiased
     /// wave edges), with a depth format without stencil.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    /// Multisampled targets only: shade the water at every sample, with its waves drawn
+    /// and filtered for a sample's footprint (sqrt(samples) per pixel side), so that a
+    /// grazing far field converges to the supersampled picture instead of its filtered
+    /// estimate. Costs about `samples` times the water's shading, and more vertices
+    /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled.
+    bool shade_water_per_sample = false;
     std::uint32_t frames_in_flight = 2;            ///< 1 to 4.
     bool wireframe = true;                         ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;   ///< Copied; default: silent.
@@ -162,8 +168,9 @@ public:
     Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
 
     /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag",
-    /// "water.vert", "water.tesc", "water.tese", "water.frag"); a name left out keeps the
-    /// built-in shader.
+    /// "water.vert", "water.tesc", "water.tese", "water.frag", and "water_per_sample.frag":
+    /// water.frag compiled with TW_WATER_PER_SAMPLE, drawn when shade_water_per_sample); a
+    /// name left out keeps the built-in shader.
     using ShaderSpirv = std::map<std::string, std::vector<std::uint32_t>, std::less<>>;
     /// Hot reload: rebuilds the draw pipelines from `spirv`. On failure the current
     /// pipelines keep drawing and the error names the shader. On success the next
