@@ -399,7 +399,7 @@ void main() {
     if (view == kViewNormals) color = n * 0.5 + 0.5;
     if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
     if (view == kViewDepth) color = heat_color(column_depth / 40.0);
-    if (view == kViewLod) color = heat_color(log2(max(distance, 1.0) / frame.params.z * 4.0) / 8.0);
+    if (view == kViewLod) color = heat_color(log2(vertex_spacing(distance) * 4.0) / 8.0);  // the vertex spacing (water_lod.glsl)
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);
