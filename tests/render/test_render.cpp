@@ -855,7 +855,8 @@ TEST_F(RenderTest, BoatWakesAreDrawnInKelvinsWedge) {
 // per channel) of the single-sample one, and where they differ is the edges: on pixels
 // whose single-sample neighbours differ by more than 0.1 the change is at least three
 // times what it is elsewhere. (The refraction copy is resolved and the depth copy taken
-// from sample 0.) An unsupported count or a depth format with stencil is refused by name.
+// from sample 0.) An unsupported count or a depth format with stencil is refused by name,
+// and so is the water shaded per sample on a single-sample target or without sampleRateShading.
 TEST_F(RenderTest, MultisampledTargetsAntialiasTheEdges) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
@@ -899,6 +900,12 @@ TEST_F(RenderTest, MultisampledTargetsAntialiasTheEdges) {
     ASSERT_FALSE(single_sampled.ok());
     EXPECT_NE(single_sampled.error().message.find("shade_water_per_sample needs a multisampled target"), std::string::npos)
         << single_sampled.error().message;
+    init.samples = VK_SAMPLE_COUNT_4_BIT;
+    init.device.enabled_features.sampleRateShading = VK_FALSE;  // what the host says it enabled
+    auto no_feature = render::Renderer::create(init);
+    ASSERT_FALSE(no_feature.ok());
+    EXPECT_NE(no_feature.error().message.find("sampleRateShading"), std::string::npos) << no_feature.error().message;
+    init.device = context();
     init.shade_water_per_sample = false;
     init.samples = static_cast<VkSampleCountFlagBits>(3);
     auto odd = render::Renderer::create(init);
