@@ -82,20 +82,23 @@ float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
 // The waves a pixel cannot resolve, as the foam needs them: the variance of their
 // compression (the trace of their m: J falls by it, to first order), their height
 // variance (m^2), slope variance per axis (waves only: ripples are too low to hide
-// anything), and the covariance of their height with their compression now and at each
-// lag of the foam's memory.
+// anything), the covariance of their height with their compression now and at each
+// lag of the foam's memory, and that of their slope away from the viewer with their
+// compression at each lag (now it is none: the crest is where the slope turns).
 struct HiddenWaves {
     float compression_variance;
     float height_variance;
     float slope_variance;
     float compression_covariance;
     vec4 lagged_covariance;
+    vec4 lagged_slope_covariance;
 };
-HiddenWaves hidden_zero() { return HiddenWaves(0.0, 0.0, 0.0, 0.0, vec4(0.0)); }
+HiddenWaves hidden_zero() { return HiddenWaves(0.0, 0.0, 0.0, 0.0, vec4(0.0), vec4(0.0)); }
 // A wave of amplitude a (m) that the pixel loses `lost` of its variance of: eta = a sin
-// theta, its compression Q k a sin theta and, l lags ago, Q k a sin(theta + l omega
-// kFoamLagStep) (turn: sine and cosine of omega kFoamLagStep).
-void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_amplitude, float compression, vec2 turn) {
+// theta, its slope away from the viewer a k_away cos theta (k_away: its wavevector along
+// the view, rad/m), its compression Q k a sin theta and, l lags ago, Q k a sin(theta +
+// l omega kFoamLagStep) (turn: sine and cosine of omega kFoamLagStep).
+void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_amplitude, float compression, float k_away, vec2 turn) {
     h.compression_variance += lost * 0.5 * compression * compression;
     h.height_variance += lost * 0.5 * a * a;
     h.slope_variance += lost * 0.5 * slope_amplitude * slope_amplitude;
@@ -107,6 +110,7 @@ void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_ampli
         cs = cs * turn.y - sn * turn.x;
         sn = s;
         h.lagged_covariance[l] += covariance * cs;
+        h.lagged_slope_covariance[l] += covariance * k_away * sn;
     }
 }
 
@@ -129,15 +133,22 @@ vec2 visible_heights(float t, float sigma) {
 // Crest foam over the particles the viewer sees: the Jacobian j, less the unresolved
 // waves' share (crest_foam_filtered's spread), conditioned on the heights seen (`seen`,
 // from visible_heights): its mean falls by cov / sigma_h times their mean height, its
-// variance loses (cov / sigma_h)^2 times what the masking takes off theirs.
-float seen_crest_foam(float j, float covariance, HiddenWaves h, vec2 seen, float whitecap_jacobian) {
+// variance loses (cov / sigma_h)^2 times what the masking takes off theirs. And on the
+// facets seen (`facing`: the visible facets' mean slope away from the viewer over the
+// slope variance, and the share of the variance their spread leaves out, over it; the
+// slope is independent of the height): the foam a crest left behind it lies on the face
+// it has passed, which faces the viewer where the waves run away from it.
+float seen_crest_foam(float j, float covariance, float slope_covariance, HiddenWaves h, vec2 seen, vec2 facing,
+                      float whitecap_jacobian) {
     float spread2 = h.compression_variance;
     if (h.height_variance > 0.0) {
         float per_height = covariance / sqrt(h.height_variance);
         j -= per_height * seen.x;
-        spread2 = max(spread2 - per_height * per_height * (1.0 - seen.y), 0.0);
+        spread2 -= per_height * per_height * (1.0 - seen.y);
     }
-    return crest_foam_filtered(j, whitecap_jacobian, sqrt(spread2));
+    j -= slope_covariance * facing.x;
+    spread2 -= slope_covariance * slope_covariance * facing.y;
+    return crest_foam_filtered(j, whitecap_jacobian, sqrt(max(spread2, 0.0)));
 }
 
 // Foam lace: 0 on the borders of 2.5 m cells (where bubbles gather between the holes
@@ -242,7 +253,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         float compression = w.steep_omega.x * slope_amplitude;  // Q k A
         float lost = 1.0 - kept * kept;
         variance += lost * 0.5 * slope_amplitude * slope_amplitude;
-        add_hidden_wave(hidden, lost, w.dir_k_amp.w, slope_amplitude, compression, w.lag_turn.xy);
+        add_hidden_wave(hidden, lost, w.dir_k_amp.w, slope_amplitude, compression, -dot(kvec, lod.toward), w.lag_turn.xy);
         float change = kept - drawn;
         if (abs(change) < 1e-3) continue;
         float theta = dot(kvec, rest_xz) + w.steep_omega.z;
@@ -284,7 +295,13 @@ void main() {
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     // The unresolved crests the viewer sees (before n turns to the visible facets' mean).
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
-    vec2 seen = visible_heights(cos_view / max(sqrt(1.0 - cos_view * cos_view), 1e-4), sqrt(hidden.slope_variance));
+    float view_tangent = cos_view / max(sqrt(1.0 - cos_view * cos_view), 1e-4);
+    vec2 seen = visible_heights(view_tangent, sqrt(hidden.slope_variance));
+    vec2 facing = vec2(0.0);
+    if (variance > 0.0) {
+        vec2 facets_seen = visible_slopes(view_tangent, sqrt(variance));
+        facing = vec2(facets_seen.x, 1.0 - facets_seen.y * facets_seen.y / variance) / variance;
+    }
     VisibleFacets facets = visible_facets(n, v, variance);
     n = facets.normal;
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
@@ -375,9 +392,10 @@ void main() {
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     // Fresh crest foam and what the particles' earlier crests left, fading
     // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
-    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, hidden, seen, d.extra.x);
+    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing, d.extra.x);
     for (int l = 0; l < 4; ++l)
-        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden, seen, d.extra.x) *
+        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
+                                           hidden, seen, facing, d.extra.x) *
                            foam_memory_weight(l + 1);
     float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
     // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).

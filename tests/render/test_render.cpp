@@ -662,14 +662,14 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
 // The far field does not sparkle: in the 30 rows under the horizon, a 640 x 360 frame of
 // the open sea against the same frame rendered at 4x and box-filtered (mean per
 // channel), and two frames 1/60 s apart against the supersampled pair.
-// - From 400 m the difference is within 0.02 (0.0022; 0.026 unfiltered).
-// - From 12 m it is 0.038 (0.063 unfiltered), short of 0.02: the rows from 150 m to
+// - From 400 m the difference is within 0.02 (0.0029; 0.026 unfiltered).
+// - From 12 m it is 0.0375 (0.063 unfiltered), short of 0.02: the rows from 150 m to
 //   7 km out, where a pixel spans up to 100 m along the view, keep what the filtered
 //   model cannot place of the 4x frame's waves and foam (without foam the band is 0.021;
 //   the 4x frame itself is 0.0098 from 8x there). The bound guards what the filtering
 //   reached. The same frame at 4 samples with the water shaded at each
 //   (RendererInitInfo::shade_water_per_sample, its waves drawn and filtered for a
-//   sample's footprint) is within 0.02 (0.017; at 4 samples shaded once per pixel, 0.033).
+//   sample's footprint) is within 0.02 (0.016; at 4 samples shaded once per pixel, 0.033).
 // - From both heights the frame-to-frame change is at most twice the supersampled
 //   pair's (it was three times from 12 m unfiltered).
 TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
@@ -706,10 +706,11 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
 // under the horizon against the same frame at 4x, box-filtered. A far pixel's foam is
 // the expected crest foam under the Jacobian's unresolved spread, tail included, for the
 // fresh foam and for each lag the particles remember, over the particles the viewer sees
-// (the crests hide the troughs at grazing angles): 0.89 of the 4x frame's (0.85 over
-// every particle alike; a ramp widened by that spread instead, 0.79, and the lingering
-// foam's lags combined by their largest instead of their sum, 0.73). A frame 1/60 s
-// later shows the same amount.
+// (the crests hide the troughs at grazing angles, and the faces the crests have passed,
+// where their foam lingers, face the viewer where the waves run away from it): 1.06 of
+// the 4x frame's (0.89 over the seen crests alone, 0.85 over every particle alike; a
+// ramp widened by that spread instead, 0.79, and the lingering foam's lags combined by
+// their largest instead of their sum, 0.73). A frame 1/60 s later shows the same amount.
 TEST_F(RenderTest, FarFieldFoamDoesNotThinWithPixelSize) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene);
