@@ -171,7 +171,7 @@ float foam_lace(vec2 p) {
 // viewer. At grazing angles the facets facing the viewer dominate (Bruneton, Neyret
 // and Holzschuch 2010): the geometry shows this where it draws the waves, and the
 // filtered far field must too. Quadrature: two slopes along the view's azimuth with the
-// visible slopes' mean and deviation (visible_slopes), each +-sigma across it.
+// visible slopes' mean and deviation (`slopes`, from visible_slopes), each +-sigma across it.
 struct VisibleFacets {
     vec3 normal;    // their mean normal
     float fresnel;  // their mean Fresnel reflectance
@@ -180,7 +180,7 @@ struct VisibleFacets {
 
 float schlick_fresnel(vec3 n, vec3 v) { return 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0); }
 
-VisibleFacets visible_facets(vec3 n, vec3 v, float variance) {
+VisibleFacets visible_facets(vec3 n, vec3 v, float variance, vec2 slopes) {
     VisibleFacets f;
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
     vec3 flat_view = v - n * cos_view;  // v in the resolved facet's plane
@@ -195,7 +195,6 @@ VisibleFacets visible_facets(vec3 n, vec3 v, float variance) {
     }
     vec3 along = flat_view / in_plane, across = normalize(cross(n, along));
     float sigma = sqrt(variance);
-    vec2 slopes = visible_slopes(cos_view / in_plane, sigma);
     f.normal = vec3(0.0);
     f.fresnel = 0.0;
     f.sky = vec3(0.0);
@@ -252,7 +251,6 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
         float compression = w.steep_omega.x * slope_amplitude;  // Q k A
         float lost = 1.0 - kept * kept;
-        variance += lost * 0.5 * slope_amplitude * slope_amplitude;
         add_hidden_wave(hidden, lost, w.dir_k_amp.w, slope_amplitude, compression, -dot(kvec, lod.toward), w.lag_turn.xy);
         float change = kept - drawn;
         if (abs(change) < 1e-3) continue;
@@ -260,6 +258,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
         add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
     }
+    variance += hidden.slope_variance;  // the waves' share
     vec2 slope = faded.slope;
     jacobian -= faded.m.x + faded.m.z;
     lagged -= faded_lags.mxx + faded_lags.mzz;
@@ -297,12 +296,12 @@ void main() {
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
     float view_tangent = cos_view / max(sqrt(1.0 - cos_view * cos_view), 1e-4);
     vec2 seen = visible_heights(view_tangent, sqrt(hidden.slope_variance));
+    // The facets seen: their slopes away from the viewer (mean, deviation), for the
+    // reflection and for the foam that lingers on the faces the crests have passed.
+    vec2 facet_slopes = visible_slopes(view_tangent, sqrt(variance));
     vec2 facing = vec2(0.0);
-    if (variance > 0.0) {
-        vec2 facets_seen = visible_slopes(view_tangent, sqrt(variance));
-        facing = vec2(facets_seen.x, 1.0 - facets_seen.y * facets_seen.y / variance) / variance;
-    }
-    VisibleFacets facets = visible_facets(n, v, variance);
+    if (variance > 0.0) facing = vec2(facet_slopes.x, 1.0 - facet_slopes.y * facet_slopes.y / variance) / variance;
+    VisibleFacets facets = visible_facets(n, v, variance, facet_slopes);
     n = facets.normal;
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
