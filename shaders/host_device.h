@@ -107,7 +107,7 @@ struct GpuWakePoint {
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
 struct GpuWave {
     vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
-    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame), w: wavelength (m)
+    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame); w: unused
     vec4 lag_turn;       // x, y: sin and cos of omega kFoamLagStep (the lagged sums' turn per lag); zw: unused
 };
 

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <future>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -659,6 +661,39 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
     return n > 0 ? sum / n : 0.0;
 }
 
+/// What one shading per pixel cannot know of a 4x frame `big` over rows [y0, y1) of its
+/// box-filtered image: which crest each of a pixel's four sub-rows meets. Taking those
+/// four as independent draws about what the pixel's statistics predict, the best such
+/// prediction misses the pixel's mean by sqrt(2 / pi) sqrt(s^2 / 4) on average (s^2 their
+/// sample variance). Returned as (all of the spread, the spread less a linear gradient
+/// down the pixel, which a prediction could know), mean per channel, 0..1.
+std::pair<double, double> subrow_spread_floor(const render::RgbaImage& big, int y0, int y1) {
+    const double kMeanAbsPerDeviation = std::sqrt(2.0 / kPi);
+    double plain = 0.0, detrended = 0.0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = 0; x < big.width / 4; ++x)
+            for (std::size_t c = 0; c < 3; ++c) {
+                double row[4] = {};
+                for (int j = 0; j < 4; ++j)
+                    for (int i = 0; i < 4; ++i)
+                        row[j] += big.pixels[(static_cast<std::size_t>(4 * y + j) * static_cast<std::size_t>(big.width) + static_cast<std::size_t>(4 * x + i)) * 4 + c] / (4.0 * 255.0);
+                const double mean = 0.25 * (row[0] + row[1] + row[2] + row[3]);
+                const double offsets[4] = {-1.5, -0.5, 0.5, 1.5};
+                double gradient = 0.0, spread = 0.0, residual = 0.0;
+                for (int j = 0; j < 4; ++j) gradient += row[j] * offsets[j] / 5.0;
+                for (int j = 0; j < 4; ++j) {
+                    spread += (row[j] - mean) * (row[j] - mean) / 3.0;
+                    const double r = row[j] - mean - gradient * offsets[j];
+                    residual += r * r / 2.0;
+                }
+                plain += kMeanAbsPerDeviation * std::sqrt(spread / 4.0);
+                detrended += kMeanAbsPerDeviation * std::sqrt(residual / 4.0);
+                ++n;
+            }
+    return {plain / n, detrended / n};
+}
+
 // The far field does not sparkle: in the 30 rows under the horizon, a 640 x 360 frame of
 // the open sea against the same frame rendered at 4x and box-filtered (mean per
 // channel), and two frames 1/60 s apart against the supersampled pair.
@@ -666,7 +701,9 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
 // - From 12 m it is 0.0375 (0.063 unfiltered), short of 0.02: the rows from 150 m to
 //   7 km out, where a pixel spans up to 100 m along the view, keep what the filtered
 //   model cannot place of the 4x frame's waves and foam (without foam the band is 0.021;
-//   the 4x frame itself is 0.0098 from 8x there). The bound guards what the filtering
+//   the 4x frame itself is 0.0098 from 8x there). What one shading per pixel cannot
+//   know, which crest each of the 4x pixel's sub-rows meets, is itself 0.015-0.023 there
+//   (subrow_spread_floor; from 400 m, 0.0024). The bound guards what the filtering
 //   reached. The same frame at 4 samples with the water shaded at each
 //   (RendererInitInfo::shade_water_per_sample, its waves drawn and filtered for a
 //   sample's footprint) is within 0.02 (0.016; at 4 samples shaded once per pixel, 0.033).
@@ -678,8 +715,12 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
     for (const double height : {12.0, 400.0}) {
         render::FrameInfo frame = far_field_frame(height);
         const auto small = render(*scene, frame, 640, 360);
-        const auto truth = box_filter_4x(render(*scene, frame, 2560, 1440));
+        const auto big = render(*scene, frame, 2560, 1440);
+        const auto truth = box_filter_4x(big);
         const double alias = band_difference(small, truth, kFarBandTop, kFarBandTop + 30);
+        const auto [spread_floor, detrended_floor] = subrow_spread_floor(big, kFarBandTop, kFarBandTop + 30);
+        std::printf("from %.0f m: what one shading per pixel cannot place of the 4x frame (its sub-rows' spread) %.4f, %.4f less a gradient\n",
+                    height, spread_floor, detrended_floor);
 
         frame.time += 1.0 / 60.0;
         const auto small_next = render(*scene, frame, 640, 360);

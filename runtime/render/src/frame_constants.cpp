@@ -143,7 +143,6 @@ std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, gl
     for (std::size_t i = 0; i < ws.size(); ++i) {
         const double phase = ws[i].k * (ws[i].dir_x * origin.x + ws[i].dir_z * origin.y) + offsets[i];
         out[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
-        out[i].steep_omega.w = static_cast<float>(kTwoPi / ws[i].k);
     }
     return out;
 }
