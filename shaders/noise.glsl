@@ -32,4 +32,9 @@ vec3 gradient_noise(vec2 p, uint seed) {
     return scale * vec3(mix(nx0, nx1, u.y), mix(gx0, gx1, u.y) + vec2(0.0, du.y * (nx1 - nx0)));
 }
 
+// How much of a detail of size `lambda` (m) a pixel of footprint `footprint` (m)
+// resolves: all from 4 footprints up, none under 2. Detail a pixel cannot resolve fades
+// to its mean (or, for the water's slopes, into their variance: water.frag).
+float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
+
 #endif

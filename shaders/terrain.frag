@@ -26,10 +26,6 @@ float voronoi(vec2 p, float t) {
     return best;
 }
 
-// How much of a detail of size `lambda` (m) a pixel of footprint `footprint` resolves:
-// all from 4 footprints up, none under 2 (as the water's filtering).
-float terrain_resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
-
 // Three octaves of gradient noise (40 m, 9 m, 2 m), each faded to its mean where
 // unresolved: x the value (about -1..1), yz its slope per metre (for detail normals).
 vec3 ground_detail(vec2 xz, float footprint) {
@@ -37,7 +33,7 @@ vec3 ground_detail(vec2 xz, float footprint) {
     float size = 40.0, weight = 0.55;
     for (int o = 0; o < 3; ++o) {
         vec3 n = gradient_noise(xz / size, 71u + uint(o));
-        sum += terrain_resolved(size, footprint) * weight * vec3(n.x, n.yz / size);
+        sum += resolved(size, footprint) * weight * vec3(n.x, n.yz / size);
         size *= 0.22;
         weight *= 0.45;
     }
@@ -68,7 +64,7 @@ void main() {
     vec3 base = mix(sand, grass, smoothstep(2.0, 6.0, rise + 2.5 * detail.x));
     // Rock where the ground is steep: cliffs, with horizontal strata.
     float rockiness = smoothstep(0.2, 0.34, slope + 0.08 * detail.x);
-    float strata = 0.85 + 0.15 * sin(h * 2.1 + 3.0 * detail.x) * terrain_resolved(3.0, footprint);
+    float strata = 0.85 + 0.15 * sin(h * 2.1 + 3.0 * detail.x) * resolved(3.0, footprint);
     base = mix(base, rock * strata, rockiness);
 
     // Wet sand: soaked up to the swash's run-up R, drying over the next R/2, and a wet
@@ -102,7 +98,7 @@ void main() {
         float c = voronoi(q, t) * voronoi(q + 7.3, t * 1.3);
         // Troughs bare the sand just below the mean level: no caustics in the top half
         // metre. Unresolved caustics fade to their mean.
-        float pattern = mix(0.1, pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6, terrain_resolved(2.7, footprint));
+        float pattern = mix(0.1, pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6, resolved(2.7, footprint));
         float caustic = pattern * exp(-depth * 0.18) * diffuse * smoothstep(0.5, 2.0, depth);
         color += caustic * vec3(0.9, 1.0, 0.95);
     }

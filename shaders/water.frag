@@ -1,7 +1,10 @@
 #version 450
 // Water shading (seed 004): depth colour and refraction from the copy of the
 // opaque scene, Schlick Fresnel, sky and sun, screen-space reflection of the
-// terrain, subsurface scattering at crests, foam where the Jacobian folds.
+// terrain, subsurface scattering at crests, foam where the Jacobian folds. What a
+// pixel cannot resolve is filtered: the waves' slopes into the facets it sees
+// (visible_facets.glsl), their compression into its foam (foam_filter.glsl), the
+// foam's lace by its footprint (foam_cover.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
@@ -13,6 +16,9 @@
 #define WAKE_COUNT uint(frame.wakes.x)
 #define WAKE_TURBULENT uint(frame.wakes.y)
 #include "wake_point.glsl"
+#include "foam_filter.glsl"
+#include "foam_cover.glsl"
+#include "visible_facets.glsl"
 // Compiled twice: as is, and with TW_WATER_PER_SAMPLE for multisampled targets that shade
 // the water at every sample (its inputs interpolated there; RendererInitInfo::shade_water_per_sample).
 #ifdef TW_WATER_PER_SAMPLE
@@ -44,192 +50,6 @@ vec3 world_from_depth(vec2 uv, float depth) {
 // Detail shorter than a few footprints (wave_lod_at) cannot be drawn: it goes into the
 // slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
 // averaged reflection, as the supersampled picture shows, instead of aliasing.
-// How much of a detail of wavelength `lambda` a pixel resolves: all from 4 footprints up,
-// none under 2.
-float resolved(float lambda, float footprint) { return smoothstep(2.0 * footprint, 4.0 * footprint, lambda); }
-
-// The crest foam a pixel covers on average when waves it cannot resolve spread its
-// Jacobian as a Gaussian of deviation `sigma` about `j`: the expectation of crest_foam
-// (tidewater::crest_foam, a smoothstep from J* + w down to J* - w) over that spread, in
-// closed form. Whitecaps are rare (a few percent of the sea), so most of a distant
-// pixel's foam comes from the Gaussian's tail past the ramp: a ramp merely widened by
-// sigma would cut that tail off and thin the far field's foam as pixels grow.
-// The expectation is the integral over x in [J* - w, J* + w] of the curve's fall
-// q(x) (it integrates to 1) times P(J < x), with
-// q dx = 6 t (1 - t) dt, t = alpha + beta u, u = (x - j) / sigma, and the integrals of
-// u^n Phi(u) known: G0 = u Phi + phi, G1 = ((u^2 - 1) Phi + u phi) / 2,
-// G2 = (u^3 Phi + (u^2 + 2) phi) / 3.
-vec3 phi_integrals(float u) {
-    float phi = 0.3989423 * exp(-0.5 * u * u), cdf = normal_cdf(u);
-    return vec3(u * cdf + phi, 0.5 * ((u * u - 1.0) * cdf + u * phi), (u * u * u * cdf + (u * u + 2.0) * phi) / 3.0);
-}
-float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
-    float half_width = 0.5 * kFoamRampFraction * max(1.0 - whitecap_jacobian, 0.0);
-    float width = 2.0 * half_width;
-    float beta = sigma / max(width, 1e-6);
-    // A spread small against the ramp changes it by under 1% (and the sums would cancel).
-    if (beta < 0.05) return crest_foam(j, whitecap_jacobian);
-    float alpha = (j - (whitecap_jacobian - half_width)) / width;
-    if (alpha - 1.0 > 6.0 * beta) return 0.0;  // the whole spread lies above the ramp (most of the sea)
-    // Past 6 deviations Phi is 0 (nothing to add) or 1 (the ramp's own rise, in closed form).
-    float ua = clamp(-alpha / beta, -6.0, 6.0), ub = clamp((1.0 - alpha) / beta, -6.0, 6.0);
-    vec3 span = phi_integrals(ub) - phi_integrals(ua);
-    float sum = 6.0 * beta * (alpha * (1.0 - alpha) * span.x + beta * (1.0 - 2.0 * alpha) * span.y - beta * beta * span.z);
-    float t = clamp(alpha + 6.0 * beta, 0.0, 1.0);
-    return clamp(sum + (ub >= 6.0 ? 1.0 - t * t * (3.0 - 2.0 * t) : 0.0), 0.0, 1.0);
-}
-
-// The waves a pixel cannot resolve, as the foam needs them: the variance of their
-// compression (the trace of their m: J falls by it, to first order), their height
-// variance (m^2), slope variance per axis (waves only: ripples are too low to hide
-// anything), the covariance of their height with their compression now and at each
-// lag of the foam's memory, and that of their slope away from the viewer with their
-// compression at each lag (now it is none: the crest is where the slope turns).
-struct HiddenWaves {
-    float compression_variance;
-    float height_variance;
-    float slope_variance;
-    float compression_covariance;
-    vec4 lagged_covariance;
-    vec4 lagged_slope_covariance;
-};
-HiddenWaves hidden_zero() { return HiddenWaves(0.0, 0.0, 0.0, 0.0, vec4(0.0), vec4(0.0)); }
-// A wave of amplitude a (m) that the pixel loses `lost` of its variance of: eta = a sin
-// theta, its slope away from the viewer a k_away cos theta (k_away: its wavevector along
-// the view, rad/m), its compression Q k a sin theta and, l lags ago, Q k a sin(theta +
-// l omega kFoamLagStep) (turn: sine and cosine of omega kFoamLagStep).
-void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_amplitude, float compression, float k_away, vec2 turn) {
-    h.compression_variance += lost * 0.5 * compression * compression;
-    h.height_variance += lost * 0.5 * a * a;
-    h.slope_variance += lost * 0.5 * slope_amplitude * slope_amplitude;
-    float covariance = lost * 0.5 * compression * a;
-    h.compression_covariance += covariance;
-    float sn = 0.0, cs = 1.0;
-    for (int l = 0; l < 4; ++l) {
-        float s = sn * turn.y + cs * turn.x;
-        cs = cs * turn.y - sn * turn.x;
-        sn = s;
-        h.lagged_covariance[l] += covariance * cs;
-        h.lagged_slope_covariance[l] += covariance * k_away * sn;
-    }
-}
-
-// At grazing angles the crests hide the troughs behind them. Smith's height-correlated
-// masking sees a point of height z (in deviations) with probability Phi(z)^Lambda,
-// Lambda = phi(u) / u - (1 - Phi(u)) for Gaussian slopes of deviation sigma toward a view
-// of elevation tangent t = u sigma: the heights seen are distributed as the largest of
-// 1 + Lambda normal samples. Their mean and variance (in deviations) from rational fits
-// in L = ln(1 + Lambda) (within 3e-4 and 0.025 of the exact integrals up to 300 samples).
-vec2 visible_heights(float t, float sigma) {
-    if (sigma <= 0.0) return vec2(0.0, 1.0);
-    float u = max(t / sigma, 1e-3);
-    float lambda = 0.3989423 * exp(-0.5 * u * u) / u - (1.0 - normal_cdf(u));
-    float L = log(clamp(1.0 + lambda, 1.0, 300.0));
-    float mean = L * (0.9055 + 0.01263 * L) / (1.0 + 0.1790 * L - 0.002568 * L * L);
-    float variance = 1.0 / (1.0 + 0.7105 * L + 0.05301 * L * L);
-    return vec2(mean, variance);
-}
-
-// Crest foam over the particles the viewer sees: the Jacobian j, less the unresolved
-// waves' share (crest_foam_filtered's spread), conditioned on the heights seen (`seen`,
-// from visible_heights): its mean falls by cov / sigma_h times their mean height, its
-// variance loses (cov / sigma_h)^2 times what the masking takes off theirs. And on the
-// facets seen (`facing`: the visible facets' mean slope away from the viewer over the
-// slope variance, and the share of the variance their spread leaves out, over it; the
-// slope is independent of the height): the foam a crest left behind it lies on the face
-// it has passed, which faces the viewer where the waves run away from it.
-float seen_crest_foam(float j, float covariance, float slope_covariance, HiddenWaves h, vec2 seen, vec2 facing,
-                      float whitecap_jacobian) {
-    float spread2 = h.compression_variance;
-    if (h.height_variance > 0.0) {
-        float per_height = covariance / sqrt(h.height_variance);
-        j -= per_height * seen.x;
-        spread2 -= per_height * per_height * (1.0 - seen.y);
-    }
-    j -= slope_covariance * facing.x;
-    spread2 -= slope_covariance * slope_covariance * facing.y;
-    return crest_foam_filtered(j, whitecap_jacobian, sqrt(max(spread2, 0.0)));
-}
-
-// Foam lace: 0 on the borders of 2.5 m cells (where bubbles gather between the holes
-// that open in decaying foam), rising to 1 at their centres (F2 - F1 of a cellular noise).
-float foam_lace(vec2 p) {
-    vec2 cell = floor(p), f = p - cell;
-    float f1 = 8.0, f2 = 8.0;
-    for (int j = -1; j <= 1; ++j)
-        for (int i = -1; i <= 1; ++i) {
-            uint h = tw_hash(int(cell.x) + i, int(cell.y) + j, 53u);
-            vec2 site = vec2(i, j) + vec2(float(h & 0xffffu), float(h >> 16)) / 65535.0;
-            float dist = length(site - f);
-            if (dist < f1) { f2 = f1; f1 = dist; } else if (dist < f2) f2 = dist;
-        }
-    return clamp((f2 - f1) * 1.6, 0.0, 1.0);
-}
-
-// The facets a pixel sees when its waves are not all resolved: slopes of variance
-// sigma^2 per axis about the resolved normal n, each weighted by the area it shows the
-// viewer. At grazing angles the facets facing the viewer dominate (Bruneton, Neyret
-// and Holzschuch 2010): the geometry shows this where it draws the waves, and the
-// filtered far field must too. Quadrature: two slopes along the view's azimuth with the
-// visible slopes' mean and deviation (`slopes`, from visible_slopes), each +-sigma across it.
-struct VisibleFacets {
-    vec3 normal;    // their mean normal
-    float fresnel;  // their mean Fresnel reflectance
-    vec3 sky;       // their mean Fresnel-weighted reflection of the sky
-};
-
-float schlick_fresnel(vec3 n, vec3 v) { return 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0); }
-
-VisibleFacets visible_facets(vec3 n, vec3 v, float variance, vec2 slopes) {
-    VisibleFacets f;
-    float cos_view = clamp(dot(n, v), 1e-4, 1.0);
-    vec3 flat_view = v - n * cos_view;  // v in the resolved facet's plane
-    float in_plane = length(flat_view);
-    if (variance <= 0.0 || in_plane < 1e-4) {
-        f.normal = n;
-        f.fresnel = schlick_fresnel(n, v);
-        vec3 r = reflect(-v, n);
-        r.y = abs(r.y);
-        f.sky = f.fresnel * sky_color(r);
-        return f;
-    }
-    vec3 along = flat_view / in_plane, across = normalize(cross(n, along));
-    float sigma = sqrt(variance);
-    f.normal = vec3(0.0);
-    f.fresnel = 0.0;
-    f.sky = vec3(0.0);
-    for (int i = -1; i <= 1; i += 2)
-        for (int j = -1; j <= 1; j += 2) {
-            vec3 m = normalize(n + along * (slopes.x + float(i) * slopes.y) + across * (sigma * float(j)));
-            float fresnel = schlick_fresnel(m, v);
-            vec3 r = reflect(-v, m);
-            r.y = abs(r.y);  // reflected down into the next wave: its mirror image
-            f.normal += 0.25 * m;
-            f.fresnel += 0.25 * fresnel;
-            f.sky += 0.25 * fresnel * sky_color(r);
-        }
-    f.normal = normalize(f.normal);
-    return f;
-}
-
-// How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
-// solid; thinner foam opens into lace (foam_lace, broken up by a finer gradient noise)
-// that rides the water (rest coordinates move with the particles). Where the pixel
-// cannot resolve the lace its edge widens to the whole range and the cover becomes a
-// smooth function of `foam` alone (smoothstep(foam)): no sparkle far away, though thin
-// distant foam shows less than its area share.
-float foam_cover(float foam, vec2 xz, float footprint) {
-    float broad = resolved(8.0, footprint), coarse = resolved(2.5, footprint), fine = resolved(0.7, footprint);
-    // Warped so that the cells vary in size and shape; patches 8 m across stay solid or open.
-    vec2 p = xz * 0.4;
-    vec2 warp = vec2(gradient_noise(p * 0.5, 41u).x, gradient_noise(p * 0.5, 43u).x);
-    float n = 0.5 + broad * 0.3 * gradient_noise(xz * 0.12, 47u).x +
-              coarse * (0.6 * (foam_lace(p + 0.7 * warp) - 0.5) + 0.2 * fine * gradient_noise(xz * 1.4, 37u).x);
-    float edge = mix(0.5, 0.1, coarse);
-    // Thin lace lets some of the water through.
-    return smoothstep(0.0, 1.0, (foam - n) / (2.0 * edge) + 0.5) * mix(0.75, 1.0, foam);
-}
-
 // Normal detail: every wave as much as the pixel resolves it, less what the geometry
 // already draws (waves faded out of the mesh add slope; waves the mesh draws but the
 // pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the

@@ -1,6 +1,6 @@
 // The foam a query reports (private): one definition for the SIMD kernels, the double
 // reference and the host side of the GPU query. The water shader's twin filters the same
-// curves over what a pixel cannot resolve (shaders/water.frag).
+// curves over what a pixel cannot resolve (shaders/foam_filter.glsl).
 // Threading: pure functions.
 #pragma once
 
