@@ -436,6 +436,37 @@ TEST(Wakes, SegmentsAreSkippedOnlyWhereTheyCannotBeFelt) {
     EXPECT_LT(felt_share / samples, 0.75);
 }
 
+// A wake queried just after a mark was laid: the boat's head point (age 0) and that mark
+// (33 ns old) make a segment whose wavevector's square is subnormal in float. A point its
+// reach misses, in one batch with a point it reaches, gets the same height as alone (the
+// SIMD kernels' inverse square root estimate once took the subnormal for zero: NaN).
+TEST(Wakes, AWakeJustLaidLeavesItsBatchNeighboursAlone) {
+    SceneBoat boat;
+    boat.path = {{0.0, 0.0}, {2000.0, 0.0}};
+    boat.speed = 5.0;
+    boat.hull = {20.0, 6.0, 1.5};
+    Wakes before;
+    scripted_boat_wake(boat, 0, 100.0, before);
+    double mark = 0.0;  // the last mark laid before the head at 100 s
+    for (const WakeChain& c : before.chains)
+        if (c.points.size() >= 2) mark = std::max(mark, c.points[c.points.size() - 2].emitted);
+    ASSERT_GT(mark, 90.0);
+    const double time = mark + 1.0 / 3.0e7;
+    Wakes wakes;
+    scripted_boat_wake(boat, 0, time, wakes);
+    glm::dvec2 bow;
+    double heading = 0.0;
+    boat.pose_at(time, bow, heading);
+    const glm::dvec2 near = bow + glm::dvec2(-5.0, 4.0), far = bow + glm::dvec2(-400.0, 350.0);
+    const std::vector<double> both = wake_heights(wakes, time, {far, near});
+    const std::vector<double> far_alone = wake_heights(wakes, time, {far}), near_alone = wake_heights(wakes, time, {near});
+    std::printf("a wake 33 ns after a mark: %.6f m far off (%.6f alone), %.6f m at the bow (%.6f alone)\n", both[0], far_alone[0], both[1],
+                near_alone[0]);
+    EXPECT_TRUE(std::isfinite(both[0]) && std::isfinite(both[1]));
+    EXPECT_EQ(both[0], far_alone[0]);
+    EXPECT_EQ(both[1], near_alone[0]);
+}
+
 std::string scene_with_boats(const std::string& boats) {
     return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm", "boats": )" + boats + "}";
 }

@@ -264,6 +264,12 @@ Status BuoyancyWorld::step(const FloatingWater& water) {
             surface[b].assign(out.begin() + static_cast<std::ptrdiff_t>(k), out.begin() + static_cast<std::ptrdiff_t>(k + world[b].size()));
             k += world[b].size();
         }
+        // The water is finite wherever it is queried; should it not be, say where rather
+        // than carry a NaN into the bodies' state.
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (!std::isfinite(out[i].height) || !std::isfinite(out[i].velocity.x + out[i].velocity.y + out[i].velocity.z))
+                return Error{ErrorCode::internal,
+                             fmt::format("floating bodies: the water at ({}, {}) at t = {} s is not finite", points[i].x, points[i].y, time_)};
     }
     for (std::size_t b = 0; b < props_.size(); ++b) {
         const RigidBodyProps& props = props_[b];

@@ -47,7 +47,7 @@ public:
         sample(ex, ez);
         const T zero(0.0), one(1.0);
         const T len2 = tx_ * tx_ + tz_ * tz_;
-        const T inv_len = Ops::inv_sqrt(Ops::select(len2 > zero, len2, one));
+        const T inv_len = Ops::inv_sqrt(Ops::select(len2 > constant<T>(kVanishingSquare), len2, one));
         const T tx = tx_ * inv_len, tz = tz_ * inv_len;
         const T depth_ramp = Ops::select(depth_ > zero, Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, one), zero);
         const T ramp = depth_ramp * weight_;

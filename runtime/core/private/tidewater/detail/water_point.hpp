@@ -88,12 +88,18 @@ struct WaveTerm {
 /// The coefficients of a wave with local wavevector (kx, kz), amplitude `a`, steepness
 /// `q` and angular frequency `omega`. A zero amplitude gives an exactly zero term, even
 /// where the wavevector is zero (dry land).
+/// Squares of wavevectors and directions under this are taken for zero (1/m^2): far
+/// above float's subnormals, far below any wave's (k = 1e-15 rad/m).
+inline constexpr double kVanishingSquare = 1e-30;
+
 template <typename T>
 WaveTerm<T> wave_term(const T& kx, const T& kz, const T& a, const T& q, const T& omega) {
     using Ops = NumberOps<T>;
     const T k2 = kx * kx + kz * kz;
-    // 1/k where it exists; a zero wavevector only occurs with zero amplitude.
-    const T inv_k = Ops::inv_sqrt(Ops::select(k2 > T(0.0), k2, T(1.0)));
+    // 1/k where it exists; a vanishing wavevector only occurs with zero amplitude (a
+    // wake's newest point), and its square may be subnormal, which the SIMD kernels'
+    // inverse square root estimate takes for zero: infinity times a zero amplitude.
+    const T inv_k = Ops::inv_sqrt(Ops::select(k2 > constant<T>(kVanishingSquare), k2, T(1.0)));
     const T qa = q * a;
     const T dx = kx * inv_k, dz = kz * inv_k;
     WaveTerm<T> w;
