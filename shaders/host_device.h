@@ -169,6 +169,7 @@ struct GpuFrame {
     vec4 sun;                // xyz: unit direction toward the sun; w: intensity
     vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
     vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
+    vec4 terrain_heights;    // x: the texture's highest ground (m); yzw: unused
     vec4 viewport;           // xy: size (px); zw: 1 / size
     vec4 options;            // x: has scene copy (0/1); y: the target wants linear colour (sRGB or float formats, 0/1);
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
@@ -260,7 +261,7 @@ static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 16 * 16 + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 17 * 16 + 16 * kMaxWakeBoxes);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

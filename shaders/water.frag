@@ -19,6 +19,7 @@
 #include "foam_filter.glsl"
 #include "foam_cover.glsl"
 #include "visible_facets.glsl"
+#include "scene_reflection.glsl"
 // Compiled twice: as is, and with TW_WATER_PER_SAMPLE for multisampled targets that shade
 // the water at every sample (its inputs interpolated there; RendererInitInfo::shade_water_per_sample).
 #ifdef TW_WATER_PER_SAMPLE
@@ -42,11 +43,6 @@ const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
 const vec3 kDeepColor = vec3(0.01, 0.09, 0.13);
 const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 
-vec3 world_from_depth(vec2 uv, float depth) {
-    vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-    return p.xyz / p.w;
-}
-
 // Detail shorter than a few footprints (wave_lod_at) cannot be drawn: it goes into the
 // slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
 // averaged reflection, as the supersampled picture shows, instead of aliasing.
@@ -57,8 +53,14 @@ vec3 world_from_depth(vec2 uv, float depth) {
 // pixel cannot resolve adds to `variance` (slope variance, per axis) and to `hidden`.
 // The same share changes the Jacobian (to first order, by minus the trace of their m):
 // by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
+// `fine`: the ripples' or flow detail's drawn slope and its slope variance per axis, which
+// the scene's reflection filters instead of following (scene_reflection.glsl).
+struct FineDetail {
+    vec2 slope;
+    float variance;
+};
 vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout float jacobian, inout vec4 lagged,
-                   inout HiddenWaves hidden) {
+                   inout HiddenWaves hidden, out FineDetail fine) {
     SurfaceSums faded = surface_zero();
     LaggedCompression faded_lags = lagged_zero();
     bool river = uint(d.body.x) == kBodyRiver;
@@ -79,19 +81,26 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
     }
     variance += hidden.slope_variance;  // the waves' share
-    vec2 slope = faded.slope;
     jacobian -= faded.m.x + faded.m.z;
     lagged -= faded_lags.mxx + faded_lags.mzz;
+    fine = FineDetail(vec2(0.0), 0.0);
     if (!river && d.ripple.x > 0.0) {
         // Ripple octaves: as slope where resolved, as variance where not.
+        float shown = resolved(1.0 / d.ripple.y, footprint);
         for (int o = 1; o <= int(d.ripple.z); ++o) {
             float drawn = resolved(1.0 / (float(o) * d.ripple.y), footprint);
             float octave_slope = d.ripple.x * d.ripple.y;  // (amplitude / o) * (o / wavelength)
             variance += (1.0 - drawn) * 0.5 * octave_slope * octave_slope;
+            fine.variance += shown * shown * 0.5 * octave_slope * octave_slope;
         }
-        slope += resolved(1.0 / d.ripple.y, footprint) * ripple_slope(rest_xz, d.ripple, d.ripple_offset);
+        fine.slope = shown * ripple_slope(rest_xz, d.ripple, d.ripple_offset);
     }
-    if (river && d.flow.params.z > 0.0) slope += flow_detail_slope(rest_xz - d.grid.xy, current, d.flow);
+    if (river && d.flow.params.z > 0.0) {
+        fine.slope = flow_detail_slope(rest_xz - d.grid.xy, current, d.flow);
+        float detail_slope = d.flow.params.x * d.flow.params.z;  // tiling x strength
+        fine.variance = 0.5 * detail_slope * detail_slope;
+    }
+    vec2 slope = faded.slope + fine.slope;
     vec3 n = normalize(geo_normal);
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
 }
@@ -110,7 +119,8 @@ void main() {
     float jacobian_detail = 0.0;
     vec4 lagged_detail = vec4(0.0);
     HiddenWaves hidden = hidden_zero();
-    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden);
+    FineDetail fine;
+    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden, fine);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     // The unresolved crests the viewer sees (before n turns to the visible facets' mean).
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
@@ -144,55 +154,26 @@ void main() {
     vec3 transmittance = exp(-kAbsorption * thickness);
     vec3 refracted = behind * transmittance * kShallowTint / max(kShallowTint.g, 1e-3) + kDeepColor * (1.0 - transmittance);
 
-    // Reflection: the sky, and the terrain by a short screen-space march.
-    vec3 r = reflect(-v, n);
-    r.y = abs(r.y);
-    vec3 reflected = vec3(0.0);  // the terrain's, where the screen-space march meets it
-    bool reflects_scene = false;  // the screen-space march hit the terrain
-    if (has_scene) {
-        vec3 p = world_pos;
-        float step_len = max(distance * 0.02, 0.5);
-        for (int i = 0; i < 24; ++i) {
-            p += r * step_len;
-            step_len *= 1.25;
-            vec4 clip = frame.view_proj * vec4(p, 1.0);
-            if (clip.w <= 0.0) break;
-            vec3 ndc = clip.xyz / clip.w;
-            vec2 suv = ndc.xy * 0.5 + 0.5;
-            if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) break;
-            float scene_z = textureLod(scene_depth, suv, 0.0).r;
-            // Reversed Z: larger is nearer. A hit when the scene is in front of the ray point.
-            if (scene_z > ndc.z && scene_z > 0.0) {
-                // Bisect back along the last step to where the ray meets the scene, and
-                // accept only a meeting within a few percent of its range: long steps
-                // otherwise pass far behind hills and take their colour.
-                vec3 lo = p - r * (step_len / 1.25), hi = p;
-                for (int b = 0; b < 5; ++b) {
-                    vec3 mid = 0.5 * (lo + hi);
-                    vec4 mc = frame.view_proj * vec4(mid, 1.0);
-                    vec3 mn = mc.xyz / mc.w;
-                    float mz = textureLod(scene_depth, mn.xy * 0.5 + 0.5, 0.0).r;
-                    if (mz > mn.z) hi = mid; else lo = mid;
-                }
-                vec4 hc = frame.view_proj * vec4(hi, 1.0);
-                suv = clamp(hc.xy / hc.w * 0.5 + 0.5, vec2(0.0), vec2(1.0));
-                p = hi;
-                scene_z = textureLod(scene_depth, suv, 0.0).r;
-                vec3 hit = world_from_depth(suv, scene_z);
-                if (length(hit - p) < 0.03 * length(p - frame.camera.xyz) + 1.0) {
-                    float edge = smoothstep(0.0, 0.1, min(min(suv.x, 1.0 - suv.x), min(suv.y, 1.0 - suv.y)));
-                    reflected = mix(sky_color(r), from_scene_copy(textureLod(scene_color, suv, 0.0).rgb), edge);
-                    reflects_scene = edge > 0.0;
-                }
-                break;
-            }
-        }
-    }
-
-    // The sky's reflection over the visible facets; the terrain's (screen-space) from the
-    // mean facet.
+    // Reflection: the sky over the visible facets, and the opaque scene where their
+    // reflections meet it (scene_reflection.glsl), under the same Fresnel.
     vec3 color = refracted * (1.0 - facets.fresnel) + facets.sky;
-    if (reflects_scene) color = mix(refracted, reflected, schlick_fresnel(n, v));
+    // The scene's reflection follows the waves' facets; the ripples' (or a river's detail's)
+    // drawn slope would scatter a far hill's reflection pixel by pixel, so it joins the spread.
+    vec3 r = reflect(-v, normalize(n + vec3(fine.slope.x, 0.0, fine.slope.y)));
+    r.y = abs(r.y);
+    float reflected_tangent = r.y / max(length(r.xz), 1e-4);
+    float reflected_change = length(vec2(dFdx(reflected_tangent), dFdy(reflected_tangent)));  // per pixel
+    if (has_scene) {
+        // Reflection doubles a facet's tilt, so the spread of the facets' slopes along the
+        // view (the visible ones' and the fine detail's) spreads the reflected elevations by
+        // twice it; across the pixel they change as they do to the next pixel (the
+        // mirror's own angle, the waves' curvature): a box that wide, of deviation the
+        // width over sqrt(12).
+        float slope_spread2 = facet_slopes.y * facet_slopes.y + fine.variance;
+        float spread = sqrt(4.0 * slope_spread2 + reflected_change * reflected_change / 12.0);
+        SceneReflection scene = scene_reflection(world_pos, r, max(distance * 0.02, 0.5), max(spread, 1e-4));
+        color = mix(color, refracted * (1.0 - facets.fresnel) + facets.fresnel * scene.color, scene.share);
+    }
     vec3 h = normalize(frame.sun.xyz + v);
     // Blinn-Phong sun glint widened by the unresolved slope variance; its energy is kept,
     // so a rough far field shows a broad, dimmer glitter path instead of sparkle.

@@ -92,6 +92,7 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.terrain_rect = glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
                                static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
                                static_cast<float>(terrain.height_rect_size), static_cast<float>(terrain.height_rect_size));
+    f.terrain_heights = glm::vec4(static_cast<float>(terrain.highest_ground), 0.0f, 0.0f, 0.0f);
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
 

@@ -15,6 +15,7 @@ namespace tidewater::render::detail {
 struct TerrainPlacement {
     glm::dvec2 height_rect_corner{0.0};  ///< World xz of the height texture's corner, m.
     double height_rect_size = 1.0;       ///< m
+    double highest_ground = 0.0;         ///< The height texture's highest sample, m.
     glm::dvec2 mesh_origin{0.0};         ///< World xz the terrain mesh is relative to, m.
 };
 

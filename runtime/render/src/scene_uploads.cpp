@@ -112,6 +112,7 @@ Result<TerrainUpload> TerrainUpload::create(const DeviceContext& ctx, VkCommandP
     t.placement.mesh_origin = mesh.origin;
     t.placement.height_rect_corner = terrain.extent_center() - glm::dvec2(half);
     t.placement.height_rect_size = 2.0 * half;
+    t.placement.highest_ground = samples.empty() ? 0.0 : static_cast<double>(*std::max_element(samples.begin(), samples.end()));
     t.water_half_size = std::max(3000.0, half);
     return t;
 }
