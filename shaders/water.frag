@@ -163,6 +163,8 @@ void main() {
     r.y = abs(r.y);
     float reflected_tangent = r.y / max(length(r.xz), 1e-4);
     float reflected_change = length(vec2(dFdx(reflected_tangent), dFdy(reflected_tangent)));  // per pixel
+    // Beside a discarded neighbour (another body's water) the difference is undefined.
+    if (!(reflected_change < 1.0)) reflected_change = 1.0;
     if (has_scene) {
         // Reflection doubles a facet's tilt, so the spread of the facets' slopes along the
         // view (the visible ones' and the fine detail's) spreads the reflected elevations by
