@@ -85,13 +85,13 @@ struct WaveTerm {
     T qaw_x, qaw_z, aw;        ///< Q A omega D, A omega: particle velocity
 };
 
-/// The coefficients of a wave with local wavevector (kx, kz), amplitude `a`, steepness
-/// `q` and angular frequency `omega`. A zero amplitude gives an exactly zero term, even
-/// where the wavevector is zero (dry land).
 /// Squares of wavevectors and directions under this are taken for zero (1/m^2): far
 /// above float's subnormals, far below any wave's (k = 1e-15 rad/m).
 inline constexpr double kVanishingSquare = 1e-30;
 
+/// The coefficients of a wave with local wavevector (kx, kz), amplitude `a`, steepness
+/// `q` and angular frequency `omega`. A zero amplitude gives an exactly zero term, even
+/// where the wavevector is zero (dry land) or vanishing.
 template <typename T>
 WaveTerm<T> wave_term(const T& kx, const T& kz, const T& a, const T& q, const T& omega) {
     using Ops = NumberOps<T>;
