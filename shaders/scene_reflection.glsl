@@ -32,13 +32,8 @@ vec3 scene_copy_at(vec3 p, out bool drawn) {
     drawn = textureLod(scene_depth, uv, 0.0).r > 0.0;  // reversed Z: 0 is the sky
     return from_scene_copy(textureLod(scene_color, uv, 0.0).rgb);
 }
-SceneReflection scene_seen_at(vec3 p) {
-    bool drawn;
-    vec3 color = scene_copy_at(p, drawn);
-    return SceneReflection(color, drawn ? 1.0 : 0.0);
-}
-// The same for a point of the terrain, looked for a little lower where the screen shows
-// the sky there: the height field and the drawn mesh differ by a little at the
+// The scene copy's colour at a point of the terrain (as scene_copy_at), looked for a
+// little lower where the screen shows the sky there: the height field and the drawn mesh differ by a little at the
 // silhouettes, and a meeting near one would otherwise take the sky behind the hill.
 SceneReflection terrain_seen_at(vec3 p, float range) {
     bool drawn = false;
@@ -57,10 +52,10 @@ float terrain_tangent(vec3 origin, vec3 r, float horizontal, float t) {
 
 // What the ray r (unit, upward) from water point `origin` reflects of the scene.
 // `elevation_spread`: the deviation of the pixel's reflected rays' elevation tangents
-// about r's (the visible facets' slope deviation doubles in reflection; the pixel's own
-// angular size adds its share). The march: 24 steps growing by 1.25 from `first_step` m;
-// the terrain's silhouette is then refined between the samples round its highest, so
-// that it does not step with them.
+// about r's (water.frag: the facets' slope deviation doubled in reflection, and the
+// elevation's change to the next pixel). The march: 24 steps growing by 1.25 from
+// `first_step` m; the terrain's silhouette is then refined between the samples round
+// its highest, so that it does not step with them.
 SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float elevation_spread) {
     float horizontal = max(length(r.xz), 1e-4);
     float ray_tangent = r.y / horizontal;
@@ -117,7 +112,7 @@ SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float el
             vec2 quv = clamp(qc.xy / qc.w * 0.5 + 0.5, vec2(0.0), vec2(1.0));
             vec3 seen = world_from_depth(quv, textureLod(scene_depth, quv, 0.0).r);
             if (abs(seen.y - terrain_height_at(seen.xz)) > 0.5 && length(seen - q) < 0.03 * length(q - frame.camera.xyz) + 1.0)
-                return scene_seen_at(seen);
+                return SceneReflection(from_scene_copy(textureLod(scene_color, quv, 0.0).rgb), 1.0);
         }
     }
     // Reflected rays never point down (a facet's reflection into the water is its mirror

@@ -157,15 +157,16 @@ void main() {
     // Reflection: the sky over the visible facets, and the opaque scene where their
     // reflections meet it (scene_reflection.glsl), under the same Fresnel.
     vec3 color = refracted * (1.0 - facets.fresnel) + facets.sky;
-    // The scene's reflection follows the waves' facets; the ripples' (or a river's detail's)
-    // drawn slope would scatter a far hill's reflection pixel by pixel, so it joins the spread.
-    vec3 r = reflect(-v, normalize(n + vec3(fine.slope.x, 0.0, fine.slope.y)));
-    r.y = abs(r.y);
-    float reflected_tangent = r.y / max(length(r.xz), 1e-4);
-    float reflected_change = length(vec2(dFdx(reflected_tangent), dFdy(reflected_tangent)));  // per pixel
-    // Beside a discarded neighbour (another body's water) the difference is undefined.
-    if (!(reflected_change < 1.0)) reflected_change = 1.0;
-    if (has_scene) {
+    if (has_scene) {  // the same for every fragment: derivatives stay defined
+        // The scene's reflection follows the waves' facets; the ripples' (or a river's
+        // detail's) drawn slope would scatter a far hill's reflection pixel by pixel, so it
+        // joins the spread.
+        vec3 r = reflect(-v, normalize(n + vec3(fine.slope.x, 0.0, fine.slope.y)));
+        r.y = abs(r.y);
+        float reflected_tangent = r.y / max(length(r.xz), 1e-4);
+        float reflected_change = length(vec2(dFdx(reflected_tangent), dFdy(reflected_tangent)));  // per pixel
+        // Beside a discarded neighbour (another body's water) the difference is undefined.
+        if (!(reflected_change < 1.0)) reflected_change = 1.0;
         // Reflection doubles a facet's tilt, so the spread of the facets' slopes along the
         // view (the visible ones' and the fine detail's) spreads the reflected elevations by
         // twice it; across the pixel they change as they do to the next pixel (the
