@@ -7,7 +7,7 @@
 #include "frame.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 normal;
-layout(push_constant) uniform Push { vec4 mesh_origin; vec4 paint; };  // paint: linear RGB
+layout(push_constant) uniform Push { layout(offset = kPushMeshOrigin) vec4 mesh_origin; layout(offset = kPushFloatPaint) vec4 paint; };  // paint: linear RGB
 layout(location = 0) out vec4 out_color;
 
 void main() {

@@ -1,17 +1,17 @@
-// Descriptor set 0 of the render pipelines (see Renderer): frame constants,
+// Set kFrameSet of the render pipelines (bindings in host_device.h): frame constants,
 // waves, the terrain height texture and the copy of the opaque scene.
 #ifndef TIDEWATER_FRAME_GLSL
 #define TIDEWATER_FRAME_GLSL
 
 #include "noise.glsl"
 
-layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Waves { GpuWave waves[]; };
-layout(set = 0, binding = 2) uniform sampler2D terrain_height;  // R32F, metres
-layout(set = 0, binding = 3) uniform sampler2D scene_color;
-layout(set = 0, binding = 4) uniform sampler2D scene_depth;
-layout(std430, set = 0, binding = 5) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
-layout(std430, set = 0, binding = 6) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
+layout(std140, set = kFrameSet, binding = eFrameConstants) uniform Frame { GpuFrame frame; };
+layout(std430, set = kFrameSet, binding = eFrameWaves) readonly buffer Waves { GpuWave waves[]; };
+layout(set = kFrameSet, binding = eFrameTerrainHeight) uniform sampler2D terrain_height;  // R32F, metres
+layout(set = kFrameSet, binding = eFrameSceneColor) uniform sampler2D scene_color;
+layout(set = kFrameSet, binding = eFrameSceneDepth) uniform sampler2D scene_depth;
+layout(std430, set = kFrameSet, binding = eFrameShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
+layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
 
 float terrain_height_at(vec2 xz) {
     vec2 uv = (xz - frame.terrain_rect.xy) / frame.terrain_rect.zw;

@@ -138,6 +138,65 @@ struct GpuQueryResult {
     vec4 lagged_jac;     // the Jacobian determinant of the waves at the rest position, l * kFoamLagStep s ago (l = 1..4)
 };
 
+// Descriptor bindings and push constants, declared once: the shaders name them in
+// their layout qualifiers, and the C++ builds layouts, pool sizes and descriptor writes
+// from the same names (render_pipelines.cpp, gpu_query.cpp). A new binding is one name
+// here, one row in its set's table there, and its use in a shader.
+#ifdef __cplusplus
+#define TW_BINDINGS(name) enum name : uint {
+#define TW_BINDINGS_END() }
+#else
+#define TW_BINDINGS(name) const uint
+#define TW_BINDINGS_END()
+#endif
+
+// Set 0 of the render pipelines (frame.glsl, water_draw.glsl).
+TW_CONST uint kFrameSet = 0u;
+TW_BINDINGS(FrameBinding)
+    eFrameConstants = 0u,     // uniform GpuFrame
+    eFrameWaves = 1u,         // GpuWave[] of every draw
+    eFrameTerrainHeight = 2u, // sampler2D, R32F metres
+    eFrameSceneColor = 3u,    // sampler2D, the opaque scene's colour copy
+    eFrameSceneDepth = 4u,    // sampler2D, its depth copy
+    eFrameShoreWaves = 5u,    // vec4[] shore fields per wave and texel
+    eFrameShoreShared = 6u,   // vec4[] shore fields per texel
+    eFrameBodyDraws = 7u,     // GpuBodyDraw[]
+    eFrameRiverTexels = 8u,   // float[] river query texels
+    eFrameRiverChannel = 9u,  // vec4[] river channel coordinates and current
+    eFrameBodyMasks = 10u,    // float[] river texel kinds, lake masks
+    eFrameRiverWaves = 11u,   // GpuRiverWave[]
+    eFramePatchList = 12u,    // uint[] water patches
+    eFrameWakePoints = 13u,   // wake blocks, then GpuWakePoint[]
+    eFrameBindingCount = 14u
+TW_BINDINGS_END();
+
+// The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
+// hold the terrain mesh's origin (vec4, relative to O); bytes 16-31 a float's paint
+// (vec4, float.frag) or the water draw's index (uint, water_draw.glsl).
+TW_CONST uint kPushMeshOrigin = 0u;
+TW_CONST uint kPushFloatPaint = 16u;
+TW_CONST uint kPushDrawIndex = 16u;
+TW_CONST uint kPushConstantBytes = 32u;
+
+// Set 0 of the GPU query pipeline (query.comp); its push constant is GpuQueryParams.
+TW_CONST uint kQuerySet = 0u;
+TW_BINDINGS(QueryBinding)
+    eQueryWaves = 0u,         // GpuWave[]
+    eQueryBasePhases = 1u,    // float[cell * wave_count + i]
+    eQueryPoints = 2u,        // GpuQueryPoint[]
+    eQueryResults = 3u,       // GpuQueryResult[]
+    eQueryShoreWaves = 4u,    // vec4[wave * texels + texel]
+    eQueryShoreShared = 5u,   // vec4[texel]
+    eQueryCellOrigins = 6u,   // vec2[]
+    eQueryRiverTexels = 7u,   // float[]
+    eQueryRiverChannel = 8u,  // vec4[]
+    eQueryRiverWaves = 9u,    // GpuRiverWave[]
+    eQueryWakePoints = 10u,   // wake blocks, then GpuWakePoint[]
+    eQueryBindingCount = 11u
+TW_BINDINGS_END();
+#undef TW_BINDINGS
+#undef TW_BINDINGS_END
+
 // Debug views (GpuFrame.params.w).
 TW_CONST uint kViewShaded = 0u;
 TW_CONST uint kViewHeight = 1u;
@@ -151,6 +210,7 @@ TW_CONST uint kViewBreaking = 8u;
 TW_CONST uint kViewFlow = 9u;
 TW_CONST uint kViewWake = 10u;
 TW_CONST uint kViewFoam = 11u;
+TW_CONST uint kViewCount = 12u;  // tidewater::render::DebugView holds the same order (static_assert in renderer.cpp)
 
 // What a water draw covers (GpuBodyDraw.body.x).
 TW_CONST uint kBodyOcean = 0u;

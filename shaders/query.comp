@@ -9,20 +9,20 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Waves { GpuWave waves[]; };
-layout(std430, set = 0, binding = 1) readonly buffer BasePhases { float base_phase[]; };  // [cell * wave_count + i]
-layout(std430, set = 0, binding = 2) readonly buffer Points { GpuQueryPoint points[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer Results { GpuQueryResult results[]; };
+layout(std430, set = kQuerySet, binding = eQueryWaves) readonly buffer Waves { GpuWave waves[]; };
+layout(std430, set = kQuerySet, binding = eQueryBasePhases) readonly buffer BasePhases { float base_phase[]; };  // [cell * wave_count + i]
+layout(std430, set = kQuerySet, binding = eQueryPoints) readonly buffer Points { GpuQueryPoint points[]; };
+layout(std430, set = kQuerySet, binding = eQueryResults) writeonly buffer Results { GpuQueryResult results[]; };
 // Shore fields; cell origins relative to the shore grid's corner plus params.shore_offset (m).
-layout(std430, set = 0, binding = 4) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // [wave * texels + texel]
-layout(std430, set = 0, binding = 5) readonly buffer ShoreShared { vec4 shore_shared[]; };     // [texel]
-layout(std430, set = 0, binding = 6) readonly buffer CellOrigins { vec2 cell_origin[]; };
+layout(std430, set = kQuerySet, binding = eQueryShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // [wave * texels + texel]
+layout(std430, set = kQuerySet, binding = eQueryShoreShared) readonly buffer ShoreShared { vec4 shore_shared[]; };     // [texel]
+layout(std430, set = kQuerySet, binding = eQueryCellOrigins) readonly buffer CellOrigins { vec2 cell_origin[]; };
 // A river: its query texels, its channel coordinates and current per texel, its waves.
-layout(std430, set = 0, binding = 7) readonly buffer RiverTexels { float river_texels[]; };
-layout(std430, set = 0, binding = 8) readonly buffer RiverChannel { vec4 river_channel[]; };   // s, n (m), flow x, z (m/s)
-layout(std430, set = 0, binding = 9) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
+layout(std430, set = kQuerySet, binding = eQueryRiverTexels) readonly buffer RiverTexels { float river_texels[]; };
+layout(std430, set = kQuerySet, binding = eQueryRiverChannel) readonly buffer RiverChannel { vec4 river_channel[]; };   // s, n (m), flow x, z (m/s)
+layout(std430, set = kQuerySet, binding = eQueryRiverWaves) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
 // Wakes on still water, relative to the cell origins' zero (the chains in order).
-layout(std430, set = 0, binding = 10) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };
+layout(std430, set = kQuerySet, binding = eQueryWakePoints) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
 #define SHORE_RESOLUTION params.shore_resolution

@@ -4,7 +4,7 @@
 #include "frame.glsl"
 layout(location = 0) in vec3 in_position;  // relative to the terrain mesh origin
 layout(location = 1) in vec3 in_normal;
-layout(push_constant) uniform Push { vec4 mesh_origin; };  // xyz: mesh origin relative to O
+layout(push_constant) uniform Push { layout(offset = kPushMeshOrigin) vec4 mesh_origin; };  // xyz: mesh origin relative to O
 layout(location = 0) out vec3 world_pos;
 layout(location = 1) out vec3 normal;
 void main() {

@@ -1,17 +1,18 @@
 // What the water stages of one draw share: the draw's description (the ocean, a lake
 // or a river), the rivers' fields and waves, the lakes' masks and the patch list.
-// Descriptor set 0 bindings 7 to 13 (see Renderer); the push constant picks the draw.
+// Set kFrameSet, bindings eFrameBodyDraws to eFrameWakePoints (host_device.h); the push
+// constant at kPushDrawIndex picks the draw.
 #ifndef TIDEWATER_WATER_DRAW_GLSL
 #define TIDEWATER_WATER_DRAW_GLSL
 
-layout(std430, set = 0, binding = 7) readonly buffer BodyDraws { GpuBodyDraw draws[]; };
-layout(std430, set = 0, binding = 8) readonly buffer RiverTexels { float river_texels[]; };   // kRiverQueryStride per texel
-layout(std430, set = 0, binding = 9) readonly buffer RiverChannel { vec4 river_channel[]; };  // s, n (m), flow x, z (m/s)
-layout(std430, set = 0, binding = 10) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks
-layout(std430, set = 0, binding = 11) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
-layout(std430, set = 0, binding = 12) readonly buffer PatchList { uint patch_list[]; };       // x | z << 16
-layout(std430, set = 0, binding = 13) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };  // chains in order, relative to O
-layout(push_constant) uniform DrawPush { layout(offset = 16) uint draw_index; } draw_push;
+layout(std430, set = kFrameSet, binding = eFrameBodyDraws) readonly buffer BodyDraws { GpuBodyDraw draws[]; };
+layout(std430, set = kFrameSet, binding = eFrameRiverTexels) readonly buffer RiverTexels { float river_texels[]; };   // kRiverQueryStride per texel
+layout(std430, set = kFrameSet, binding = eFrameRiverChannel) readonly buffer RiverChannel { vec4 river_channel[]; };  // s, n (m), flow x, z (m/s)
+layout(std430, set = kFrameSet, binding = eFrameBodyMasks) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks
+layout(std430, set = kFrameSet, binding = eFrameRiverWaves) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
+layout(std430, set = kFrameSet, binding = eFramePatchList) readonly buffer PatchList { uint patch_list[]; };       // x | z << 16
+layout(std430, set = kFrameSet, binding = eFrameWakePoints) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };  // chains in order, relative to O
+layout(push_constant) uniform DrawPush { layout(offset = kPushDrawIndex) uint draw_index; } draw_push;
 
 // The draw whose river fields river_water.glsl reads (set before evaluating).
 GpuBodyDraw g_draw;

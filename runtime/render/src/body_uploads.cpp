@@ -77,7 +77,7 @@ void append_river_fields(const td::RiverBake& river, std::vector<float>& texels,
         channel.emplace_back(river.channel_s[t], river.channel_n[t], river.flow_x[t], river.flow_z[t]);
 }
 
-Result<BodyBuffers> BodyBuffers::create(const DeviceContext& ctx, const Scene& scene) {
+Result<BodyBuffers> BodyBuffers::create(const Device& ctx, const Scene& scene) {
     BodyBuffers b;
     std::vector<float> texels, masks;
     std::vector<glm::vec4> channel;

@@ -40,7 +40,7 @@ struct BodyBuffers {
     GpuBuffer river_texels, river_channel, masks, patches;
     std::vector<BodyLayout> lakes, rivers;  ///< in the scene's order
 
-    static Result<BodyBuffers> create(const DeviceContext& ctx, const Scene& scene);
+    static Result<BodyBuffers> create(const Device& ctx, const Scene& scene);
 };
 
 /// Appends a river's query texels and channel (s, n, flow x, z) per texel, as the

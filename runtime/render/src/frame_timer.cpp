@@ -6,38 +6,37 @@
 
 namespace tidewater::render::detail {
 
-Result<FrameTimer> FrameTimer::create(const DeviceContext& ctx, std::uint32_t slots) {
+Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
     FrameTimer t;
     std::uint32_t family_count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, nullptr);
+    ctx.vk().GetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, nullptr);
     std::vector<VkQueueFamilyProperties> families(family_count);
-    vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, families.data());
+    ctx.vk().GetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, families.data());
     if (ctx.queue_family >= family_count || families[ctx.queue_family].timestampValidBits == 0) return t;
     VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(ctx.physical_device, &props);
+    ctx.vk().GetPhysicalDeviceProperties(ctx.physical_device, &props);
     t.period_ns_ = static_cast<double>(props.limits.timestampPeriod);
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = mark_count * slots;
-    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, t.pool_,
-                         [&](VkQueryPool* out) { return vkCreateQueryPool(ctx.device, &info, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, t.pool_, [&](VkQueryPool* out) { return ctx.vk().CreateQueryPool(ctx.device, &info, ctx.allocator, out); }));
     return t;
 }
 
-void FrameTimer::begin(VkCommandBuffer cmd, std::uint32_t slot) const {
+void FrameTimer::begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const {
     if (!pool_) return;
-    vkCmdResetQueryPool(cmd, pool_.get(), slot * mark_count, mark_count);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), slot * mark_count + start);
+    vk.CmdResetQueryPool(cmd, pool_.get(), slot * mark_count, mark_count);
+    vk.CmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), slot * mark_count + start);
 }
 
-void FrameTimer::mark(VkCommandBuffer cmd, std::uint32_t slot, Mark m, VkPipelineStageFlagBits stage) const {
-    if (pool_) vkCmdWriteTimestamp(cmd, stage, pool_.get(), slot * mark_count + m);
+void FrameTimer::mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark m, VkPipelineStageFlagBits stage) const {
+    if (pool_) vk.CmdWriteTimestamp(cmd, stage, pool_.get(), slot * mark_count + m);
 }
 
-Result<PassTimings> FrameTimer::read(const DeviceContext& ctx, std::uint32_t slot) const {
+Result<PassTimings> FrameTimer::read(const Device& ctx, std::uint32_t slot) const {
     if (!pool_) return Error{ErrorCode::unsupported, "renderer: this queue has no timestamps"};
     std::uint64_t ticks[mark_count];
-    const VkResult r = vkGetQueryPoolResults(ctx.device, pool_.get(), slot * mark_count, mark_count, sizeof(ticks), ticks,
+    const VkResult r = ctx.vk().GetQueryPoolResults(ctx.device, pool_.get(), slot * mark_count, mark_count, sizeof(ticks), ticks,
                                              sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
     if (r != VK_SUCCESS) return vk_error(r, "vkGetQueryPoolResults");
     auto ms = [&](Mark a, Mark b) { return static_cast<double>(ticks[b] - ticks[a]) * period_ns_ * 1e-6; };

@@ -15,14 +15,14 @@ public:
     enum Mark : std::uint32_t { start, opaque_done, copy_done, water_done, mark_count };
 
     /// A query pool for `slots` frames, or none when the queue family has no timestamps.
-    static Result<FrameTimer> create(const DeviceContext& ctx, std::uint32_t slots);
+    static Result<FrameTimer> create(const Device& ctx, std::uint32_t slots);
     bool available() const { return static_cast<bool>(pool_); }
 
     /// Resets the slot's queries and writes the start mark.
-    void begin(VkCommandBuffer cmd, std::uint32_t slot) const;
-    void mark(VkCommandBuffer cmd, std::uint32_t slot, Mark mark, VkPipelineStageFlagBits stage) const;
+    void begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const;
+    void mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark mark, VkPipelineStageFlagBits stage) const;
     /// The slot's pass times; fails while the GPU has not finished it.
-    Result<PassTimings> read(const DeviceContext& ctx, std::uint32_t slot) const;
+    Result<PassTimings> read(const Device& ctx, std::uint32_t slot) const;
 
 private:
     OwnedQueryPool pool_;

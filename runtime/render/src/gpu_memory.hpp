@@ -6,24 +6,22 @@
 #include <optional>
 #include <vulkan/vulkan.h>
 
-#include "vk_dispatch.hpp"
+#include "vk_device.hpp"
 
-#include "tidewater/render/device_context.hpp"
 #include "tidewater/result.hpp"
 
 namespace tidewater::render::detail {
 
-std::optional<std::uint32_t> find_memory_type(VkPhysicalDevice physical, std::uint32_t type_bits,
-                                              VkMemoryPropertyFlags wanted);
+std::optional<std::uint32_t> find_memory_type(const Device& device, std::uint32_t type_bits, VkMemoryPropertyFlags wanted);
 
 /// A host-visible, coherent, persistently mapped buffer. Move-only.
 class GpuBuffer {
 public:
     GpuBuffer() = default;
-    static Result<GpuBuffer> create(const DeviceContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
+    static Result<GpuBuffer> create(const Device& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
     /// A storage buffer holding a copy of `bytes` at `data` (at least 16 bytes, so that an
     /// empty array still binds).
-    static Result<GpuBuffer> storage_with(const DeviceContext& ctx, const void* data, std::size_t bytes);
+    static Result<GpuBuffer> storage_with(const Device& ctx, const void* data, std::size_t bytes);
     GpuBuffer(GpuBuffer&& other) noexcept { *this = std::move(other); }
     GpuBuffer& operator=(GpuBuffer&& other) noexcept;
     ~GpuBuffer() { reset(); }
@@ -38,6 +36,7 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
+    std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     void* mapped_ = nullptr;
@@ -48,7 +47,7 @@ private:
 class GpuImage {
 public:
     GpuImage() = default;
-    static Result<GpuImage> create(const DeviceContext& ctx, VkExtent2D extent, VkFormat format,
+    static Result<GpuImage> create(const Device& ctx, VkExtent2D extent, VkFormat format,
                                    VkImageUsageFlags usage, VkImageAspectFlags aspect,
                                    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
@@ -66,6 +65,7 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
+    std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with
     VkImage image_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
@@ -73,10 +73,11 @@ private:
     VkExtent2D extent_{};
 };
 
-/// Records with `record` into a fresh command buffer, submits to the context's
-/// queue and waits for it to finish.
+/// Records with `record` into a fresh command buffer from `pool`, submits to the
+/// context's queue and waits for it to finish; every failure (a lost device included)
+/// comes back as an Error carrying its VkResult.
 template <typename Record>
-Status submit_and_wait(const DeviceContext& ctx, VkCommandPool pool, const Record& record);
+Status submit_and_wait(const Device& ctx, VkCommandPool pool, const Record& record);
 
 }  // namespace tidewater::render::detail
 

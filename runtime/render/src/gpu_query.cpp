@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <vector>
 
+#include "descriptor_sets.hpp"
 #include "embedded_shaders.hpp"
 #include "body_uploads.hpp"
 #include "frame_constants.hpp"
@@ -26,7 +27,6 @@ namespace tidewater::render {
 using detail::GpuBuffer;
 
 namespace {
-constexpr std::uint32_t kBindings = 11;  // see shaders/query.comp
 
 /// A river evaluation: the river, its preset, and whether still water joins it.
 struct RiverDispatch {
@@ -36,9 +36,10 @@ struct RiverDispatch {
 };
 }  // namespace
 
+// Every submission is waited for before the call returns, so the members destroy their
+// handles without a device-wide wait.
 struct GpuQuery::Impl {
-    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
-    DeviceContext ctx;
+    detail::Device ctx;
     detail::OwnedSetLayout set_layout;
     detail::OwnedPipelineLayout pipeline_layout;
     detail::OwnedPipeline pipeline;
@@ -51,14 +52,6 @@ struct GpuQuery::Impl {
     const tidewater::detail::RiverBake* uploaded_river = nullptr;
     detail::ShoreBuffers shore;  // the same upload the renderer uses
 
-    Impl() = default;
-    Impl(const Impl&) = delete;
-    Impl& operator=(const Impl&) = delete;
-    ~Impl() {
-        // Every member destroys its own handles; none may be in use by the GPU then.
-        if (ctx.device) vkDeviceWaitIdle(ctx.device);
-    }
-
     /// Grows `buffer` to hold at least `bytes`; reports whether it was replaced.
     Result<bool> ensure(GpuBuffer& buffer, VkDeviceSize bytes) {
         if (buffer.handle() && buffer.size() >= bytes) return false;
@@ -69,23 +62,19 @@ struct GpuQuery::Impl {
     }
 
     void bind_buffers() {
-        VkDescriptorBufferInfo infos[kBindings] = {
-            {waves.handle(), 0, VK_WHOLE_SIZE},     {phases.handle(), 0, VK_WHOLE_SIZE},
-            {points.handle(), 0, VK_WHOLE_SIZE},    {results.handle(), 0, VK_WHOLE_SIZE},
-            {shore.per_wave(), 0, VK_WHOLE_SIZE},   {shore.shared(), 0, VK_WHOLE_SIZE},
-            {cell_origins.handle(), 0, VK_WHOLE_SIZE}, {river_texels.handle(), 0, VK_WHOLE_SIZE},
-            {river_channel.handle(), 0, VK_WHOLE_SIZE}, {river_waves.handle(), 0, VK_WHOLE_SIZE},
-            {wake_points.handle(), 0, VK_WHOLE_SIZE}};
-        VkWriteDescriptorSet writes[kBindings];
-        for (std::uint32_t i = 0; i < kBindings; ++i) {
-            writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-            writes[i].dstSet = set;
-            writes[i].dstBinding = i;
-            writes[i].descriptorCount = 1;
-            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            writes[i].pBufferInfo = &infos[i];
-        }
-        vkUpdateDescriptorSets(ctx.device, kBindings, writes, 0, nullptr);
+        std::array<detail::BoundResource, gpu::eQueryBindingCount> r;
+        r[gpu::eQueryWaves] = detail::bound_buffer(waves.handle());
+        r[gpu::eQueryBasePhases] = detail::bound_buffer(phases.handle());
+        r[gpu::eQueryPoints] = detail::bound_buffer(points.handle());
+        r[gpu::eQueryResults] = detail::bound_buffer(results.handle());
+        r[gpu::eQueryShoreWaves] = detail::bound_buffer(shore.per_wave());
+        r[gpu::eQueryShoreShared] = detail::bound_buffer(shore.shared());
+        r[gpu::eQueryCellOrigins] = detail::bound_buffer(cell_origins.handle());
+        r[gpu::eQueryRiverTexels] = detail::bound_buffer(river_texels.handle());
+        r[gpu::eQueryRiverChannel] = detail::bound_buffer(river_channel.handle());
+        r[gpu::eQueryRiverWaves] = detail::bound_buffer(river_waves.handle());
+        r[gpu::eQueryWakePoints] = detail::bound_buffer(wake_points.handle());
+        detail::write_set(ctx, set, detail::kQuerySetRows, r);
     }
 
     /// Uploads a river's fields (null: placeholders) unless they are there already.
@@ -115,34 +104,20 @@ Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river
 }
 
 GpuQuery::GpuQuery(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-GpuQuery::~GpuQuery() {
-    if (!impl_) return;
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
-    impl_.reset();
-}
+GpuQuery::~GpuQuery() = default;
 
 Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context) {
     if (!context.device || !context.queue || !context.physical_device) {
         return Error{ErrorCode::invalid_argument, "GpuQuery: the DeviceContext has no device, physical device or queue"};
     }
-    auto functions = detail::load_functions(context);
-    if (!functions) return functions.error();
-    const detail::ScopedDispatch dispatch_guard(functions->get());
+    auto device = detail::load_device(context);
+    if (!device) return device.error();
     auto impl = std::make_unique<Impl>();
-    impl->fn = std::move(functions).value();
-    impl->ctx = context;
-    const DeviceContext& ctx = impl->ctx;
+    impl->ctx = std::move(device).value();
+    const detail::Device& ctx = impl->ctx;
+    const detail::VulkanFunctions& vk = ctx.vk();
 
-    VkDescriptorSetLayoutBinding bindings[kBindings];
-    for (std::uint32_t i = 0; i < kBindings; ++i) {
-        bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    }
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = kBindings;
-    set_info.pBindings = bindings;
-    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->set_layout, [&](VkDescriptorSetLayout* out) {
-        return vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, out);
-    }));
+    TW_VK_TRY(detail::make_set_layout(ctx, detail::kQuerySetRows, VK_SHADER_STAGE_COMPUTE_BIT, impl->set_layout));
     const VkDescriptorSetLayout set_layout = impl->set_layout.get();
 
     VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::GpuQueryParams)};
@@ -151,47 +126,41 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     layout_info.pSetLayouts = &set_layout;
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &push;
-    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->pipeline_layout, [&](VkPipelineLayout* out) {
-        return vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
+    TW_VK_TRY(detail::make_owned(ctx, impl->pipeline_layout, [&](VkPipelineLayout* out) {
+        return vk.CreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
     }));
 
     const auto spirv = detail::embedded_spirv("query.comp");
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = spirv.size_bytes();
     module_info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    TW_VK_TRY(vkCreateShaderModule(ctx.device, &module_info, ctx.allocator, &module));
+    detail::OwnedShaderModule module;
+    TW_VK_TRY(detail::make_owned(ctx, module, [&](VkShaderModule* out) {
+        return vk.CreateShaderModule(ctx.device, &module_info, ctx.allocator, out);
+    }));
     VkComputePipelineCreateInfo pipe{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pipe.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pipe.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipe.stage.module = module;
+    pipe.stage.module = module.get();
     pipe.stage.pName = "main";
     pipe.layout = impl->pipeline_layout.get();
-    const VkResult made = detail::make_owned(ctx.device, ctx.allocator, impl->pipeline, [&](VkPipeline* out) {
-        return vkCreateComputePipelines(ctx.device, ctx.pipeline_cache, 1, &pipe, ctx.allocator, out);
+    const VkResult made = detail::make_owned(ctx, impl->pipeline, [&](VkPipeline* out) {
+        return vk.CreateComputePipelines(ctx.device, ctx.pipeline_cache, 1, &pipe, ctx.allocator, out);
     });
-    vkDestroyShaderModule(ctx.device, module, ctx.allocator);
     if (made != VK_SUCCESS) return detail::vk_error(made, "vkCreateComputePipelines(query.comp)");
 
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 1;
-    pool_info.pPoolSizes = &size;
-    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->pool, [&](VkDescriptorPool* out) {
-        return vkCreateDescriptorPool(ctx.device, &pool_info, ctx.allocator, out);
-    }));
+    TW_VK_TRY(detail::make_descriptor_pool(ctx, detail::kQuerySetRows, 1, impl->pool));
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = impl->pool.get();
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &set_layout;
-    TW_VK_TRY(vkAllocateDescriptorSets(ctx.device, &alloc, &impl->set));
+    TW_VK_TRY(vk.AllocateDescriptorSets(ctx.device, &alloc, &impl->set));
 
     VkCommandPoolCreateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cmd_info.queueFamilyIndex = ctx.queue_family;
     cmd_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(detail::make_owned(ctx.device, ctx.allocator, impl->commands,
-                                 [&](VkCommandPool* out) { return vkCreateCommandPool(ctx.device, &cmd_info, ctx.allocator, out); }));
+    TW_VK_TRY(detail::make_owned(ctx, impl->commands,
+                                 [&](VkCommandPool* out) { return vk.CreateCommandPool(ctx.device, &cmd_info, ctx.allocator, out); }));
     return std::unique_ptr<GpuQuery>(new GpuQuery(std::move(impl)));
 }
 
@@ -277,15 +246,16 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     params.wake_turbulent = wake_upload.turbulent;
     params.wake_radius = static_cast<float>(wake_upload.displacement_bound);
 
+    const detail::VulkanFunctions& vk = ctx.vk();
     Status st = detail::submit_and_wait(ctx, commands.get(), [&](VkCommandBuffer cmd) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.get());
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout.get(), 0, 1, &set, 0, nullptr);
-        vkCmdPushConstants(cmd, pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
-        vkCmdDispatch(cmd, (params.point_count + gpu::kQueryWorkgroupSize - 1) / gpu::kQueryWorkgroupSize, 1, 1);
+        vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.get());
+        vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout.get(), 0, 1, &set, 0, nullptr);
+        vk.CmdPushConstants(cmd, pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params), &params);
+        vk.CmdDispatch(cmd, (params.point_count + gpu::kQueryWorkgroupSize - 1) / gpu::kQueryWorkgroupSize, 1, 1);
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
+        vk.CmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
                              nullptr, 0, nullptr);
     });
     if (!st) return st;
@@ -318,7 +288,6 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
 
 Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                                std::span<SurfacePoint> out, const Wakes* wakes) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (points.size() != out.size()) {
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
     }
@@ -331,7 +300,6 @@ Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<con
 
 Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                              std::span<glm::dvec2> detail) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (points.size() != out.size() || (!detail.empty() && detail.size() != points.size()))
         return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();

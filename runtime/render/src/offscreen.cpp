@@ -11,44 +11,28 @@ namespace tidewater::render {
 using detail::GpuBuffer;
 using detail::GpuImage;
 
+// Every submission of this target is waited for before render() returns, so its
+// members destroy their handles without a device-wide wait.
 struct OffscreenTarget::Impl {
-    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
-    DeviceContext ctx;
+    detail::Device ctx;
     GpuImage color, depth;
     GpuImage resolved;  // multisampled targets: the picture, resolved by the water pass
     GpuBuffer readback;
-    VkCommandPool pool = VK_NULL_HANDLE;
-    std::uint64_t frame_counter = 0;
-
-    ~Impl() {
-        if (!ctx.device) return;
-        vkDeviceWaitIdle(ctx.device);
-        color.reset();
-        depth.reset();
-        resolved.reset();
-        readback.reset();
-        if (pool) vkDestroyCommandPool(ctx.device, pool, ctx.allocator);
-    }
+    detail::OwnedCommandPool pool;
 };
 
 OffscreenTarget::OffscreenTarget(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-OffscreenTarget::~OffscreenTarget() {
-    if (!impl_) return;
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
-    impl_.reset();
-}
+OffscreenTarget::~OffscreenTarget() = default;
 
 Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceContext& context, std::uint32_t width,
                                                                  std::uint32_t height, VkSampleCountFlagBits samples) {
     if (width < 16 || height < 16 || width > 8192 || height > 8192) {
         return Error{ErrorCode::invalid_argument, fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
     }
-    auto functions = detail::load_functions(context);
-    if (!functions) return functions.error();
-    const detail::ScopedDispatch dispatch_guard(functions->get());
+    auto device = detail::load_device(context);
+    if (!device) return device.error();
     auto impl = std::make_unique<Impl>();
-    impl->fn = std::move(functions).value();
-    impl->ctx = context;
+    impl->ctx = std::move(device).value();
     auto color = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, samples);
     if (!color) return color.error();
@@ -70,28 +54,30 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cp.queueFamilyIndex = impl->ctx.queue_family;
     cp.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(vkCreateCommandPool(impl->ctx.device, &cp, impl->ctx.allocator, &impl->pool));
+    const detail::Device& ctx = impl->ctx;
+    TW_VK_TRY(detail::make_owned(ctx, impl->pool,
+                                 [&](VkCommandPool* out) { return ctx.vk().CreateCommandPool(ctx.device, &cp, ctx.allocator, out); }));
     return std::unique_ptr<OffscreenTarget>(new OffscreenTarget(std::move(impl)));
 }
 
 Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& frame) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
+    const detail::VulkanFunctions& vk = m.ctx.vk();
     const VkExtent2D extent = m.color.extent();
     // The renderer's own copies follow the target's size (a no-op when it already does).
     if (auto st = renderer.resize(extent); !st) return st.error();
     Status recorded;
-    Status submitted = detail::submit_and_wait(m.ctx, m.pool, [&](VkCommandBuffer cmd) {
-        detail::transition(cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+    Status submitted = detail::submit_and_wait(m.ctx, m.pool.get(), [&](VkCommandBuffer cmd) {
+        detail::transition(vk, cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-        detail::transition(cmd, m.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+        detail::transition(vk, cmd, m.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
         const bool multisampled = m.resolved.handle() != VK_NULL_HANDLE;
         if (multisampled)
-            detail::transition(cmd, m.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            detail::transition(vk, cmd, m.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
         FrameTargets targets;
@@ -106,17 +92,17 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
         }
         recorded = renderer.record_frame(cmd, frame, targets);
         const VkImage picture = multisampled ? m.resolved.handle() : m.color.handle();
-        detail::transition(cmd, picture, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        detail::transition(vk, cmd, picture, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};
-        vkCmdCopyImageToBuffer(cmd, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m.readback.handle(), 1, &region);
+        vk.CmdCopyImageToBuffer(cmd, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m.readback.handle(), 1, &region);
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+        vk.CmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
     });
     if (!recorded) return recorded.error();
     if (!submitted) return submitted.error();

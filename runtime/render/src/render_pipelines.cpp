@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <vector>
 
+#include "descriptor_sets.hpp"
 #include "embedded_shaders.hpp"
 #include "vk_util.hpp"
 
@@ -10,21 +11,21 @@ namespace tidewater::render::detail {
 
 namespace {
 
-Result<VkShaderModule> make_module(const DeviceContext& ctx, std::string_view name, const ShaderLookup& shaders) {
+Result<OwnedShaderModule> make_module(const Device& ctx, std::string_view name, const ShaderLookup& shaders) {
     std::span<const std::uint32_t> spirv = shaders ? shaders(name) : std::span<const std::uint32_t>();
     if (spirv.empty()) spirv = embedded_spirv(name);
     if (spirv.empty()) return Error{ErrorCode::not_found, fmt::format("shader {} is not embedded in this build", name)};
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = spirv.size_bytes();
     info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    TW_VK_TRY(vkCreateShaderModule(ctx.device, &info, ctx.allocator, &module));
+    OwnedShaderModule module;
+    TW_VK_TRY(make_owned(ctx, module, [&](VkShaderModule* out) { return ctx.vk().CreateShaderModule(ctx.device, &info, ctx.allocator, out); }));
     return module;
 }
 
 }  // namespace
 
-Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& d) {
+Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     struct Stage {
         std::string_view name;
         VkShaderStageFlagBits stage;
@@ -35,21 +36,15 @@ Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc&
         wanted.push_back({d.tess_eval, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT});
     }
     wanted.push_back({d.fragment, VK_SHADER_STAGE_FRAGMENT_BIT});
-    std::vector<VkShaderModule> modules;
+    std::vector<OwnedShaderModule> modules;  // destroyed once the pipeline is made
     std::vector<VkPipelineShaderStageCreateInfo> stages;
-    auto destroy_modules = [&] {
-        for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, ctx.allocator);
-    };
     for (const Stage& s : wanted) {
         auto module = make_module(ctx, s.name, d.shaders);
-        if (!module) {
-            destroy_modules();
-            return module.error();
-        }
-        modules.push_back(*module);
+        if (!module) return module.error();
+        modules.push_back(std::move(module).value());
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         info.stage = s.stage;
-        info.module = *module;
+        info.module = modules.back().get();
         info.pName = "main";
         stages.push_back(info);
     }
@@ -112,65 +107,42 @@ Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc&
     info.pDynamicState = &dynamic;
     info.layout = d.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    const VkResult r = vkCreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);
-    destroy_modules();
+    const VkResult r = ctx.vk().CreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);
     if (r != VK_SUCCESS) return vk_error(r, "vkCreateGraphicsPipelines");
     return pipeline;
 }
 
 namespace {
 
-Status create_layouts(const DeviceContext& ctx, FramePipelines& p) {
-    const VkShaderStageFlags stages = VK_SHADER_STAGE_ALL_GRAPHICS;
-    const VkDescriptorSetLayoutBinding bindings[kFrameBindings] = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},          // GpuFrame
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // waves
-        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // terrain heights
-        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene colour copy
-        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},  // scene depth copy
-        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // shore fields per wave
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // shore fields shared
-        {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // water draws
-        {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // river query texels
-        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},          // river channel and current
-        {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // body masks
-        {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // river waves
-        {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},         // patch list
-        {13, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr}};        // wake points
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = kFrameBindings;
-    set_info.pBindings = bindings;
-    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.set_layout, [&](VkDescriptorSetLayout* out) {
-        return vkCreateDescriptorSetLayout(ctx.device, &set_info, ctx.allocator, out);
-    }));
+Status create_layouts(const Device& ctx, FramePipelines& p) {
+    TW_VK_TRY(make_set_layout(ctx, kFrameSetRows, VK_SHADER_STAGE_ALL_GRAPHICS, p.set_layout));
     const VkDescriptorSetLayout set_layout = p.set_layout.get();
-    // Bytes 0-15: the terrain mesh's origin; 16-19: the water draw's index (water_draw.glsl).
-    VkPushConstantRange push{VK_SHADER_STAGE_ALL_GRAPHICS, 0, kPushConstantBytes};
+    const VkPushConstantRange push{VK_SHADER_STAGE_ALL_GRAPHICS, 0, gpu::kPushConstantBytes};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
     layout_info.pSetLayouts = &set_layout;
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &push;
-    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.layout, [&](VkPipelineLayout* out) {
-        return vkCreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
+    TW_VK_TRY(make_owned(ctx, p.layout, [&](VkPipelineLayout* out) {
+        return ctx.vk().CreatePipelineLayout(ctx.device, &layout_info, ctx.allocator, out);
     }));
     return {};
 }
 
-Status create_samplers(const DeviceContext& ctx, FramePipelines& p) {
+Status create_samplers(const Device& ctx, FramePipelines& p) {
     VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     s.magFilter = s.minFilter = VK_FILTER_LINEAR;
     s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     s.maxLod = 0.0f;
-    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.linear, [&](VkSampler* out) { return vkCreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, p.linear, [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
     s.magFilter = s.minFilter = VK_FILTER_NEAREST;
-    TW_VK_TRY(make_owned(ctx.device, ctx.allocator, p.nearest, [&](VkSampler* out) { return vkCreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, p.nearest, [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
     return {};
 }
 
 }  // namespace
 
-Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+Result<FramePipelines> FramePipelines::create(const Device& ctx, VkFormat color_format, VkFormat depth_format,
                                               VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe) {
     FramePipelines p;
     if (auto st = create_layouts(ctx, p); !st) return st.error();
@@ -181,7 +153,7 @@ Result<FramePipelines> FramePipelines::create(const DeviceContext& ctx, VkFormat
     return p;
 }
 
-Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, VkFormat color_format, VkFormat depth_format,
                                                  VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
                                                  const ShaderLookup& shaders) const {
     DrawPipelines p;
@@ -194,7 +166,7 @@ Result<DrawPipelines> FramePipelines::make_draws(const DeviceContext& ctx, VkFor
     auto make = [&](OwnedPipeline& out, const PipelineDesc& d) -> Status {
         auto made = create_pipeline(ctx, d);
         if (!made) return made.error();
-        out = OwnedPipeline(ctx.device, ctx.allocator, *made);
+        out = OwnedPipeline(ctx, *made);
         return {};
     };
     PipelineDesc sky = base;

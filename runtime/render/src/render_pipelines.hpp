@@ -9,7 +9,6 @@
 #include <string_view>
 #include <vulkan/vulkan.h>
 
-#include "tidewater/render/device_context.hpp"
 #include "tidewater/result.hpp"
 #include "vk_handle.hpp"
 
@@ -30,21 +29,16 @@ struct PipelineDesc {
     ShaderLookup shaders;  ///< overrides of the embedded SPIR-V (hot reload); null: none
 };
 
-Result<VkPipeline> create_pipeline(const DeviceContext& ctx, const PipelineDesc& desc);
+Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& desc);
 
-/// Bindings of the frame's descriptor set: see shaders/frame.glsl.
-constexpr std::uint32_t kFrameBindings = 14;
-/// The push constants every graphics stage sees: the terrain mesh origin, the water draw.
-constexpr std::uint32_t kPushConstantBytes = 32;
-constexpr std::uint32_t kDrawIndexOffset = 16;
-
-/// Everything a frame's draws bind, made once per renderer. Wireframe pipelines exist
+/// The graphics pipelines of a frame, over the frame's layouts. Wireframe pipelines exist
 /// only when asked for (they need fillModeNonSolid).
-/// The graphics pipelines of a frame, over the frame's layouts.
 struct DrawPipelines {
     OwnedPipeline sky, terrain, terrain_wire, floats, water, water_wire;
 };
 
+/// Everything a frame's draws bind, made once per renderer: the layout of set
+/// gpu::kFrameSet (kFrameSetRows) and the push constants of host_device.h.
 struct FramePipelines {
     OwnedSetLayout set_layout;
     OwnedPipelineLayout layout;
@@ -53,10 +47,10 @@ struct FramePipelines {
 
     /// `water_per_sample`: the water's fragment shader is water_per_sample.frag (shaded at
     /// every sample; RendererInitInfo::shade_water_per_sample).
-    static Result<FramePipelines> create(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+    static Result<FramePipelines> create(const Device& ctx, VkFormat color_format, VkFormat depth_format,
                                          VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe);
     /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.
-    Result<DrawPipelines> make_draws(const DeviceContext& ctx, VkFormat color_format, VkFormat depth_format,
+    Result<DrawPipelines> make_draws(const Device& ctx, VkFormat color_format, VkFormat depth_format,
                                      VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
                                      const ShaderLookup& shaders) const;
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "body_uploads.hpp"
+#include "descriptor_sets.hpp"
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
 #include "frame_timer.hpp"
@@ -28,20 +29,46 @@ using detail::GpuBuffer;
 
 namespace {
 
-constexpr std::array<DebugView, 12> kViews = {DebugView::shaded, DebugView::height, DebugView::normals,
-                                              DebugView::jacobian, DebugView::depth, DebugView::lod,
-                                              DebugView::wireframe, DebugView::shore, DebugView::breaking, DebugView::flow,
-                                              DebugView::wake, DebugView::foam};
-constexpr std::array<std::string_view, 12> kViewNames = {"shaded", "height", "normals", "jacobian", "depth", "lod",
-                                                         "wireframe", "shore", "breaking", "flow", "wake", "foam"};
+// The debug views: the enum's values are the shaders' (host_device.h's kView*), each
+// named once here.
+struct NamedView {
+    DebugView view;
+    std::uint32_t shader_value;
+    std::string_view name;
+};
+constexpr std::array<NamedView, gpu::kViewCount> kNamedViews = {{
+    {DebugView::shaded, gpu::kViewShaded, "shaded"},
+    {DebugView::height, gpu::kViewHeight, "height"},
+    {DebugView::normals, gpu::kViewNormals, "normals"},
+    {DebugView::jacobian, gpu::kViewJacobian, "jacobian"},
+    {DebugView::depth, gpu::kViewDepth, "depth"},
+    {DebugView::lod, gpu::kViewLod, "lod"},
+    {DebugView::wireframe, gpu::kViewWireframe, "wireframe"},
+    {DebugView::shore, gpu::kViewShore, "shore"},
+    {DebugView::breaking, gpu::kViewBreaking, "breaking"},
+    {DebugView::flow, gpu::kViewFlow, "flow"},
+    {DebugView::wake, gpu::kViewWake, "wake"},
+    {DebugView::foam, gpu::kViewFoam, "foam"},
+}};
+constexpr bool views_match_shaders() {
+    for (std::size_t i = 0; i < kNamedViews.size(); ++i)
+        if (static_cast<std::uint32_t>(kNamedViews[i].view) != i || kNamedViews[i].shader_value != i) return false;
+    return true;
+}
+static_assert(views_match_shaders(), "DebugView, its names and host_device.h's kView* must list the views in one order");
+constexpr std::array<DebugView, gpu::kViewCount> kViews = [] {
+    std::array<DebugView, gpu::kViewCount> views{};
+    for (std::size_t i = 0; i < views.size(); ++i) views[i] = kNamedViews[i].view;
+    return views;
+}();
 
 }  // namespace
 
-std::string_view to_string(DebugView view) { return kViewNames[static_cast<std::size_t>(view)]; }
+std::string_view to_string(DebugView view) { return kNamedViews[static_cast<std::size_t>(view)].name; }
 
 std::optional<DebugView> parse_debug_view(std::string_view name) {
-    for (std::size_t i = 0; i < kViews.size(); ++i)
-        if (kViewNames[i] == name) return kViews[i];
+    for (const NamedView& v : kNamedViews)
+        if (v.name == name) return v.view;
     return std::nullopt;
 }
 
@@ -52,7 +79,7 @@ std::span<const DebugView> all_debug_views() { return kViews; }
 // frame (scene_copies) and its timestamps (frame_timer). This file holds the
 // in-flight slots and the public calls that tie them together.
 struct Renderer::Impl {
-    std::shared_ptr<const detail::VulkanFunctions> fn;  // first: destroyed after everything that calls Vulkan
+    detail::Device device;  // the host's, with the functions loaded for it
     RendererInitInfo info;
     /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
     /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
@@ -64,7 +91,8 @@ struct Renderer::Impl {
     std::uint64_t next_frame = 0;  // one past the last frame index recorded
     const detail::ColorTarget* color_target = nullptr;  // entries of the format table
     const detail::DepthTarget* depth_target = nullptr;
-    const DeviceContext& ctx() const { return info.device; }
+    const detail::Device& ctx() const { return device; }
+    const detail::VulkanFunctions& vk() const { return device.vk(); }
 
     detail::FramePipelines pipelines;
     detail::OwnedCommandPool upload_pool;
@@ -91,8 +119,10 @@ struct Renderer::Impl {
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;
     ~Impl() {
-        // Every member destroys its own handles; none may be in use by the GPU then.
-        if (ctx().device) vkDeviceWaitIdle(ctx().device);
+        // Every member destroys its own handles; none may be in use by the GPU then. A lost
+        // device has finished all its work: the handles go all the same, and the host hears.
+        if (const VkResult r = vk().DeviceWaitIdle(ctx().device); r != VK_SUCCESS)
+            log(detail::vk_error(r, "vkDeviceWaitIdle (destroying the renderer)").message);
     }
 
     void log(const std::string& message) const {
@@ -103,6 +133,11 @@ struct Renderer::Impl {
     /// Uploads the ocean's shore model (slot 0; null without an ocean) and each lake's after it.
     Status use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes);
     void write_descriptors(Slot& slot, bool with_scene_copy);
+    /// A frame's recording, in three steps: its inputs checked, its plan (what it draws,
+    /// from the frame and the scene), and the plan written into its in-flight slot.
+    Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
+    Result<detail::FramePlan> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot& slot);
+    Slot& take_slot(std::uint64_t frame_index);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot, detail::FramePlan& plan);
     void draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent, DebugView view);
     void draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent, DebugView view);
@@ -110,16 +145,7 @@ struct Renderer::Impl {
 
 Status Renderer::Impl::create_slots() {
     const std::uint32_t n = info.frames_in_flight;
-    VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10 * n},
-                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * n}};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = n;
-    pool_info.poolSizeCount = 3;
-    pool_info.pPoolSizes = sizes;
-    TW_VK_TRY(detail::make_owned(ctx().device, ctx().allocator, descriptor_pool, [&](VkDescriptorPool* out) {
-        return vkCreateDescriptorPool(ctx().device, &pool_info, ctx().allocator, out);
-    }));
+    TW_VK_TRY(detail::make_descriptor_pool(ctx(), detail::kFrameSetRows, n, descriptor_pool));
     slots.resize(n);
     const VkDescriptorSetLayout set_layout = pipelines.set_layout.get();
     for (Slot& s : slots) {
@@ -136,7 +162,7 @@ Status Renderer::Impl::create_slots() {
         alloc.descriptorPool = descriptor_pool.get();
         alloc.descriptorSetCount = 1;
         alloc.pSetLayouts = &set_layout;
-        TW_VK_TRY(vkAllocateDescriptorSets(ctx().device, &alloc, &s.set));
+        TW_VK_TRY(vk().AllocateDescriptorSets(ctx().device, &alloc, &s.set));
     }
     return size_slots(1, kMaxWaves, 1);
 }
@@ -160,54 +186,34 @@ Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<Scen
     detail::ShoreBuffers::Models models{ocean ? ocean->shore() : nullptr};
     for (const SceneLake& lake : lakes) models.push_back(lake.body.shore());
     if (shore.holds(models)) return {};
-    vkDeviceWaitIdle(ctx().device);  // frames in flight may read the old fields
+    TW_VK_TRY(vk().DeviceWaitIdle(ctx().device));  // frames in flight may read the old fields
     auto uploaded = shore.upload(ctx(), models);
     if (!uploaded) return uploaded.error();
     return {};
 }
 
 void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
-    VkDescriptorBufferInfo frame_info{slot.frame.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo wave_info{slot.waves.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo height{pipelines.linear.get(), terrain->heights.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo color{pipelines.linear.get(), copies.color_view(with_scene_copy), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo depth{pipelines.nearest.get(), copies.depth_view(with_scene_copy), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorBufferInfo shore_wave_info{shore.per_wave(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo shore_shared_info{shore.shared(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo body_infos[7] = {{slot.draws.handle(), 0, VK_WHOLE_SIZE},
-                                                  {bodies.river_texels.handle(), 0, VK_WHOLE_SIZE},
-                                                  {bodies.river_channel.handle(), 0, VK_WHOLE_SIZE},
-                                                  {bodies.masks.handle(), 0, VK_WHOLE_SIZE},
-                                                  {slot.river_waves.handle(), 0, VK_WHOLE_SIZE},
-                                                  {bodies.patches.handle(), 0, VK_WHOLE_SIZE},
-                                                  {slot.wake_points.handle(), 0, VK_WHOLE_SIZE}};
-    VkWriteDescriptorSet w[detail::kFrameBindings];
-    for (std::uint32_t i = 0; i < detail::kFrameBindings; ++i) {
-        w[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        w[i].dstSet = slot.set;
-        w[i].dstBinding = i;
-        w[i].descriptorCount = 1;
-    }
-    w[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    w[0].pBufferInfo = &frame_info;
-    w[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    w[1].pBufferInfo = &wave_info;
-    w[2].descriptorType = w[3].descriptorType = w[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w[2].pImageInfo = &height;
-    w[3].pImageInfo = &color;
-    w[4].pImageInfo = &depth;
-    w[5].descriptorType = w[6].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    w[5].pBufferInfo = &shore_wave_info;
-    w[6].pBufferInfo = &shore_shared_info;
-    for (std::uint32_t i = 7; i < detail::kFrameBindings; ++i) {
-        w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        w[i].pBufferInfo = &body_infos[i - 7];
-    }
-    vkUpdateDescriptorSets(ctx().device, detail::kFrameBindings, w, 0, nullptr);
+    using detail::bound_buffer;
+    using detail::bound_texture;
+    std::array<detail::BoundResource, gpu::eFrameBindingCount> r;
+    r[gpu::eFrameConstants] = bound_buffer(slot.frame.handle());
+    r[gpu::eFrameWaves] = bound_buffer(slot.waves.handle());
+    r[gpu::eFrameTerrainHeight] = bound_texture(pipelines.linear.get(), terrain->heights.view());
+    r[gpu::eFrameSceneColor] = bound_texture(pipelines.linear.get(), copies.color_view(with_scene_copy));
+    r[gpu::eFrameSceneDepth] = bound_texture(pipelines.nearest.get(), copies.depth_view(with_scene_copy));
+    r[gpu::eFrameShoreWaves] = bound_buffer(shore.per_wave());
+    r[gpu::eFrameShoreShared] = bound_buffer(shore.shared());
+    r[gpu::eFrameBodyDraws] = bound_buffer(slot.draws.handle());
+    r[gpu::eFrameRiverTexels] = bound_buffer(bodies.river_texels.handle());
+    r[gpu::eFrameRiverChannel] = bound_buffer(bodies.river_channel.handle());
+    r[gpu::eFrameBodyMasks] = bound_buffer(bodies.masks.handle());
+    r[gpu::eFrameRiverWaves] = bound_buffer(slot.river_waves.handle());
+    r[gpu::eFramePatchList] = bound_buffer(bodies.patches.handle());
+    r[gpu::eFrameWakePoints] = bound_buffer(slot.wake_points.handle());
+    detail::write_set(ctx(), slot.set, detail::kFrameSetRows, r);
 }
 
-Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
-                                    detail::FramePlan& plan) {
+Status Renderer::Impl::validate_frame(const FrameInfo& frame, VkExtent2D extent) const {
     if (!terrain) return Error{ErrorCode::invalid_argument, "renderer: no scene; call set_scene first"};
     if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
@@ -221,96 +227,117 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
     if (frame.view == DebugView::wireframe && !pipelines.draws.water_wire)
         return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
-    slot = &slots[frame.frame_index % slots.size()];
+    return {};
+}
+
+Renderer::Impl::Slot& Renderer::Impl::take_slot(std::uint64_t frame_index) {
+    Slot& slot = slots[frame_index % slots.size()];
     // Frames up to frame_index - frames_in_flight have finished: their pipelines may go.
-    std::erase_if(retired, [&](const Retired& r) { return r.until + slots.size() <= frame.frame_index; });
-    next_frame = std::max(next_frame, frame.frame_index + 1);
-    slot->recorded_frame = frame.frame_index;
+    std::erase_if(retired, [&](const Retired& r) { return r.until + slots.size() <= frame_index; });
+    next_frame = std::max(next_frame, frame_index + 1);
+    slot.recorded_frame = frame_index;
+    return slot;
+}
+
+// What the frame draws; the wakes and floats are packed straight into the slot's
+// mapped buffers (their packing is what can fail).
+Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot& slot) {
     const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
-    plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
-                              color_target->linear_output, water_density);
+    detail::FramePlan plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
+                                                color_target->linear_output, water_density);
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
     if (!wakes) return wakes.error();
     plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent),
                                  static_cast<float>(wakes->boxes.size()), 0.0f);
     for (std::size_t b = 0; b < wakes->boxes.size(); ++b) plan.frame.wake_boxes[b] = wakes->boxes[b];
-    detail::write_wake_buffer(*wakes, slot->wake_points.mapped());
     auto floats = detail::pack_floats(frame.floats, plan.origin);
     if (!floats) return floats.error();
+    // Checked: the slot's buffers are written from here on.
+    detail::write_wake_buffer(*wakes, slot.wake_points.mapped());
     if (!floats->vertices.empty())
-        std::memcpy(slot->float_vertices.mapped(), floats->vertices.data(), sizeof(detail::FloatVertex) * floats->vertices.size());
-    slot->float_draws = std::move(floats->draws);
-    std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
-    if (!draws.waves.empty()) std::memcpy(slot->waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
-    if (!draws.draws.empty()) std::memcpy(slot->draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
+        std::memcpy(slot.float_vertices.mapped(), floats->vertices.data(), sizeof(detail::FloatVertex) * floats->vertices.size());
+    slot.float_draws = std::move(floats->draws);
+    if (!draws.waves.empty()) std::memcpy(slot.waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
+    if (!draws.draws.empty()) std::memcpy(slot.draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
     if (!draws.river_waves.empty())
-        std::memcpy(slot->river_waves.mapped(), draws.river_waves.data(), sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
+        std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(), sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
     plan.water_draws = draws.patch_counts;
+    return plan;
+}
+
+Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
+                                    detail::FramePlan& plan) {
+    if (auto st = validate_frame(frame, extent); !st) return st;
+    slot = &take_slot(frame.frame_index);
+    auto planned = plan_frame(frame, extent, scene_copy, *slot);
+    if (!planned) return planned.error();
+    plan = std::move(planned).value();
+    std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
     write_descriptors(*slot, scene_copy);
     return {};
 }
 
 void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
                                  DebugView view) {
-    detail::set_viewport(cmd, extent);
+    const detail::VulkanFunctions& vk = this->vk();
+    detail::set_viewport(vk, cmd, extent);
     const VkPipelineLayout layout = pipelines.layout.get();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, 16, &plan.terrain_mesh_offset);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
+    vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
+    vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(glm::vec4), &plan.terrain_mesh_offset);
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
     const VkDeviceSize offset = 0;
     const VkBuffer vb = terrain->vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-    vkCmdBindIndexBuffer(cmd, terrain->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, terrain->index_count, 1, 0, 0, 0);
+    vk.CmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vk.CmdBindIndexBuffer(cmd, terrain->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vk.CmdDrawIndexed(cmd, terrain->index_count, 1, 0, 0, 0);
     if (!slot.float_draws.empty()) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.floats.get());
+        vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.floats.get());
         const VkBuffer fb = slot.float_vertices.handle();
-        vkCmdBindVertexBuffers(cmd, 0, 1, &fb, &offset);
+        vk.CmdBindVertexBuffers(cmd, 0, 1, &fb, &offset);
         for (const detail::FloatUpload::Draw& d : slot.float_draws) {
-            const glm::vec4 push[2] = {glm::vec4(0.0f), glm::vec4(d.color, 1.0f)};  // positions are relative to O already
-            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), push);
-            vkCmdDraw(cmd, d.count, 1, d.first, 0);
+            const glm::vec4 mesh_origin(0.0f);  // positions are relative to O already
+            const glm::vec4 paint(d.color, 1.0f);
+            vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(mesh_origin), &mesh_origin);
+            vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushFloatPaint, sizeof(paint), &paint);
+            vk.CmdDraw(cmd, d.count, 1, d.first, 0);
         }
     }
     // The sky last: it only fills pixels nothing else covered (depth still at the far plane).
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.sky.get());
-    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.sky.get());
+    vk.CmdDraw(cmd, 3, 1, 0, 0);
 }
 
 void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
                                 DebugView view) {
-    detail::set_viewport(cmd, extent);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
+    const detail::VulkanFunctions& vk = this->vk();
+    detail::set_viewport(vk, cmd, extent);
+    vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
     // One draw per body: the ocean, each lake, each river (water_draw.glsl).
     std::uint64_t patches = 0;
     for (std::uint32_t i = 0; i < plan.water_draws.size(); ++i) {
         if (plan.water_draws[i] == 0) continue;
-        vkCmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, detail::kDrawIndexOffset, sizeof(i), &i);
-        vkCmdDraw(cmd, 4, plan.water_draws[i], 0, 0);
+        vk.CmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushDrawIndex, sizeof(i), &i);
+        vk.CmdDraw(cmd, 4, plan.water_draws[i], 0, 0);
         patches += plan.water_draws[i];
     }
     last_patches = patches;
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-Renderer::~Renderer() {
-    if (!impl_) return;
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
-    impl_.reset();
-}
+Renderer::~Renderer() = default;
 
 namespace {
 
 /// Multisampled targets: a count the device renders colour and depth at, and a depth
 /// format without stencil (the depth resolve writes only the depth aspect).
-Status check_samples(const DeviceContext& c, VkSampleCountFlagBits samples, const detail::DepthTarget& depth) {
+Status check_samples(const detail::Device& c, VkSampleCountFlagBits samples, const detail::DepthTarget& depth) {
     if (samples == VK_SAMPLE_COUNT_1_BIT) return {};
     if (samples != VK_SAMPLE_COUNT_2_BIT && samples != VK_SAMPLE_COUNT_4_BIT && samples != VK_SAMPLE_COUNT_8_BIT)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: sample count {} is not 1, 2, 4 or 8", static_cast<int>(samples))};
     VkPhysicalDeviceProperties p;
-    vkGetPhysicalDeviceProperties(c.physical_device, &p);
+    c.vk().GetPhysicalDeviceProperties(c.physical_device, &p);
     const VkSampleCountFlags both = p.limits.framebufferColorSampleCounts & p.limits.framebufferDepthSampleCounts;
     if ((both & static_cast<VkSampleCountFlags>(samples)) == 0)
         return Error{ErrorCode::unsupported, fmt::format("renderer: this device cannot render colour and depth at {} samples", static_cast<int>(samples))};
@@ -322,14 +349,13 @@ Status check_samples(const DeviceContext& c, VkSampleCountFlagBits samples, cons
 }  // namespace
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info) {
-    const DeviceContext& c = info.device;
-    if (!c.instance || !c.physical_device || !c.device || !c.queue)
+    if (!info.device.instance || !info.device.physical_device || !info.device.device || !info.device.queue)
         return Error{ErrorCode::invalid_argument, "renderer: RendererInitInfo.device needs instance, physical device, device and queue"};
     if (info.frames_in_flight < 1 || info.frames_in_flight > 4)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
-    auto functions = detail::load_functions(c);
-    if (!functions) return functions.error();
-    const detail::ScopedDispatch dispatch_guard(functions->get());
+    auto device = detail::load_device(info.device);
+    if (!device) return device.error();
+    const detail::Device& c = *device;
     const detail::ColorTarget* color_target = detail::find_color_target(info.color_format);
     if (!color_target)
         return Error{ErrorCode::unsupported, fmt::format("renderer: colour format {} is not supported (accepted {})",
@@ -350,7 +376,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         return missing("fillModeNonSolid", "the wireframe view; or set RendererInitInfo::wireframe = false");
     auto check_format = [&](VkFormat f, VkFormatFeatureFlags need, const char* what) -> Status {
         VkFormatProperties p;
-        vkGetPhysicalDeviceFormatProperties(c.physical_device, f, &p);
+        c.vk().GetPhysicalDeviceFormatProperties(c.physical_device, f, &p);
         if ((p.optimalTilingFeatures & need) != need)
             return Error{ErrorCode::unsupported, fmt::format("renderer: {} format {} lacks the needed features on this device", what, detail::format_name(f))};
         return {};
@@ -368,7 +394,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         if (!c.enabled_features.sampleRateShading) return missing("sampleRateShading", "shade_water_per_sample");
     }
     auto impl = std::make_unique<Impl>();
-    impl->fn = std::move(functions).value();
+    impl->device = c;
     impl->info = info;
     auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples, info.shade_water_per_sample,
                                                     impl->info.wireframe);
@@ -377,8 +403,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cp.queueFamilyIndex = c.queue_family;
     cp.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(detail::make_owned(c.device, c.allocator, impl->upload_pool,
-                                 [&](VkCommandPool* out) { return vkCreateCommandPool(c.device, &cp, c.allocator, out); }));
+    TW_VK_TRY(detail::make_owned(c, impl->upload_pool,
+                                 [&](VkCommandPool* out) { return c.vk().CreateCommandPool(c.device, &cp, c.allocator, out); }));
     if (auto st = impl->create_slots(); !st) return st.error();
     auto timer = detail::FrameTimer::create(c, info.frames_in_flight);
     if (!timer) return timer.error();
@@ -392,7 +418,6 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
 }
 
 Status Renderer::set_scene(const Scene& scene) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     if (!scene.baked())
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
@@ -401,7 +426,7 @@ Status Renderer::set_scene(const Scene& scene) {
     std::size_t waves = scene.has_ocean ? scene.ocean.waves().size() : 0, river_waves = 0;
     for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
     for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();
-    vkDeviceWaitIdle(m.ctx().device);  // the old terrain may be in use by frames in flight
+    TW_VK_TRY(m.vk().DeviceWaitIdle(m.ctx().device));  // the old terrain may be in use by frames in flight
     auto terrain = detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain);
     if (!terrain) return terrain.error();
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
@@ -417,7 +442,6 @@ Status Renderer::set_scene(const Scene& scene) {
 }
 
 Status Renderer::resize(VkExtent2D extent) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     const VkExtent2D before = m.copies.extent();
     if (auto st = m.copies.resize(m.ctx(), m.upload_pool.get(), extent); !st) return st;
@@ -427,7 +451,6 @@ Status Renderer::resize(VkExtent2D extent) {
 }
 
 Status Renderer::set_water(const WaterBody& water) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     if (!impl_->terrain) return Error{ErrorCode::invalid_argument, "renderer: set_scene before set_water"};
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
     const Scene& scene = impl_->scene;
@@ -450,7 +473,7 @@ Status Renderer::set_water(const WaterBody& water) {
         // The frame's wave buffers hold the ocean's waves first: make room.
         std::size_t waves = water.waves().size();
         for (const SceneLake& lake : impl_->scene.lakes) waves += lake.body.waves().size();
-        vkDeviceWaitIdle(impl_->ctx().device);
+        TW_VK_TRY(impl_->vk().DeviceWaitIdle(impl_->ctx().device));
         if (auto st = impl_->size_slots(1 + detail::kOceanRings + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1); !st) return st;
     }
     impl_->scene.ocean = water;
@@ -458,8 +481,8 @@ Status Renderer::set_water(const WaterBody& water) {
 }
 
 Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& t) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
+    const detail::VulkanFunctions& vk = m.vk();
     if (!cmd || !t.color_image || !t.color_view || !t.depth_image || !t.depth_view)
         return Error{ErrorCode::invalid_argument, "renderer: record_frame needs a command buffer and the colour and depth images and views"};
     const VkExtent2D sized = m.copies.extent();
@@ -472,30 +495,29 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     detail::FramePlan plan;
     if (auto st = m.prepare_slot(frame, t.extent, true, slot, plan); !st) return st;
     const auto slot_index = static_cast<std::uint32_t>(slot - m.slots.data());
-    m.timer.begin(cmd, slot_index);
+    m.timer.begin(vk, cmd, slot_index);
 
     const bool msaa = m.copies.multisampled();
     detail::FramePasses passes(t, m.depth_target->attachment_layout, msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
-    if (msaa) m.copies.depth_to_resolve(cmd);
-    vkCmdBeginRendering(cmd, &passes.rendering);
+    if (msaa) m.copies.depth_to_resolve(vk, cmd);
+    vk.CmdBeginRendering(cmd, &passes.rendering);
     m.draw_opaque(cmd, *slot, plan, t.extent, frame.view);
-    vkCmdEndRendering(cmd);
-    if (msaa) m.copies.depth_resolved(cmd);
-    m.timer.mark(cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+    vk.CmdEndRendering(cmd);
+    if (msaa) m.copies.depth_resolved(vk, cmd);
+    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
 
-    m.copies.record_copy(cmd, t);  // the opaque scene, for refraction and reflection
-    m.timer.mark(cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    m.copies.record_copy(vk, cmd, t);  // the opaque scene, for refraction and reflection
+    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
 
     passes.load_for_water(t);
-    vkCmdBeginRendering(cmd, &passes.rendering);
+    vk.CmdBeginRendering(cmd, &passes.rendering);
     m.draw_water(cmd, *slot, plan, t.extent, frame.view);
-    vkCmdEndRendering(cmd);
-    m.timer.mark(cmd, slot_index, detail::FrameTimer::water_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+    vk.CmdEndRendering(cmd);
+    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::water_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
     return {};
 }
 
 Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_in_pass needs a command buffer"};
     Impl::Slot* slot = nullptr;
@@ -507,7 +529,6 @@ Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkE
 }
 
 Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     for (const auto& [name, words] : spirv)
         if (words.empty() || words[0] != 0x07230203u)
@@ -526,7 +547,6 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
 }
 
 Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
-    const detail::ScopedDispatch dispatch_guard(impl_->fn.get());
     Impl& m = *impl_;
     const std::size_t s = frame_index % m.slots.size();
     if (m.timer.available() && m.slots[s].recorded_frame != frame_index)

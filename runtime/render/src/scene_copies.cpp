@@ -14,7 +14,7 @@ constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_
 constexpr VkPipelineStageFlags kDepthStage = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 }  // namespace
 
-Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool pool, const ColorTarget& color_target,
+Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, const ColorTarget& color_target,
                                         const DepthTarget& depth_target, VkSampleCountFlagBits samples) {
     SceneCopies c;
     c.samples_ = samples;
@@ -34,11 +34,12 @@ Result<SceneCopies> SceneCopies::create(const DeviceContext& ctx, VkCommandPool 
     return c;
 }
 
-Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExtent2D extent) {
+Status SceneCopies::resize(const Device& ctx, VkCommandPool pool, VkExtent2D extent) {
     if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
         return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
     if (color_.handle() && extent.width == extent_.width && extent.height == extent_.height) return {};
-    vkDeviceWaitIdle(ctx.device);  // frames in flight may still sample the old copies
+    // Frames in flight may still sample the old copies.
+    TW_VK_TRY(ctx.vk().DeviceWaitIdle(ctx.device));
     color_.reset();
     depth_.reset();
     extent_ = {};
@@ -51,9 +52,9 @@ Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExten
     if (!depth) return depth.error();
     // Give the new images a defined layout before any frame samples them.
     Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        transition(ctx.vk(), cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-        transition(cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        transition(ctx.vk(), cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     });
     if (!st) return st;
@@ -63,11 +64,11 @@ Status SceneCopies::resize(const DeviceContext& ctx, VkCommandPool pool, VkExten
     return {};
 }
 
-void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const {
-    transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& t) const {
+    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     const DepthTarget& d = *depth_target_;
-    transition(cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStage,
+    transition(vk, cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     // Only the depth aspect is copied (and sampled); barriers cover every aspect. With
     // multisampling the colour is resolved and the depth was resolved by the pass.
@@ -80,7 +81,7 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
     for (const auto& p : pairs) {
         if (multisampled() && &p.copy == &depth_) continue;
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
-        transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_WRITE_BIT);
         if (multisampled()) {
@@ -88,39 +89,39 @@ void SceneCopies::record_copy(VkCommandBuffer cmd, const FrameTargets& t) const 
             region.srcSubresource = {p.aspect, 0, 0, 1};
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
-            vkCmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+            vk.CmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                               &region);
         } else {
             VkImageCopy region{};
             region.srcSubresource = {p.aspect, 0, 0, 1};
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
-            vkCmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+            vk.CmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                            &region);
         }
-        transition(cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                    VK_ACCESS_SHADER_READ_BIT);
     }
-    transition(cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kColorStage,
                VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    transition(cmd, t.depth_image, d.aspects, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.attachment_layout,
+    transition(vk, cmd, t.depth_image, d.aspects, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.attachment_layout,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kDepthStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
-void SceneCopies::depth_to_resolve(VkCommandBuffer cmd) const {
+void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) const {
     const DepthTarget& d = *depth_target_;
-    transition(cmd, depth_.handle(), d.aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, d.attachment_layout,
+    transition(vk, cmd, depth_.handle(), d.aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, d.attachment_layout,
                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, kDepthStage | kColorStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
 }
 
-void SceneCopies::depth_resolved(VkCommandBuffer cmd) const {
+void SceneCopies::depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const {
     const DepthTarget& d = *depth_target_;
     // Depth resolves run at the end of the pass, in the colour-output stage.
-    transition(cmd, depth_.handle(), d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStage | kColorStage,
+    transition(vk, cmd, depth_.handle(), d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStage | kColorStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                VK_ACCESS_SHADER_READ_BIT);
 }

@@ -16,20 +16,21 @@ public:
     /// 1x1 placeholders (bound by record_in_pass, which has no copy) and no copies yet.
     /// With multisampled targets (`samples` > 1) the colour copy is resolved (averaged)
     /// and the depth copy is written by the opaque pass's depth resolve (sample 0).
-    static Result<SceneCopies> create(const DeviceContext& ctx, VkCommandPool pool, const ColorTarget& color, const DepthTarget& depth,
+    static Result<SceneCopies> create(const Device& ctx, VkCommandPool pool, const ColorTarget& color, const DepthTarget& depth,
                                       VkSampleCountFlagBits samples);
 
-    /// (Re)makes the copies at `extent`: waits for the device, then gives them a layout.
-    Status resize(const DeviceContext& ctx, VkCommandPool pool, VkExtent2D extent);
+    /// (Re)makes the copies at `extent`: waits for the device, then gives them a layout. A
+    /// failed wait (a lost device) is returned before anything is replaced.
+    Status resize(const Device& ctx, VkCommandPool pool, VkExtent2D extent);
     VkExtent2D extent() const { return extent_; }
 
     /// Records the copy of the host's targets into the copies. The targets go from
     /// attachment layouts to TRANSFER_SRC and back; the copies end SHADER_READ_ONLY.
-    void record_copy(VkCommandBuffer cmd, const FrameTargets& targets) const;
+    void record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& targets) const;
     /// Multisampled targets: the depth copy's layout around the opaque pass that resolves
     /// into it (before: waits for the last frame's reads; after: ready to sample).
-    void depth_to_resolve(VkCommandBuffer cmd) const;
-    void depth_resolved(VkCommandBuffer cmd) const;
+    void depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) const;
+    void depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const;
     bool multisampled() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
     VkImageView depth_resolve_view() const { return depth_.view(); }
 

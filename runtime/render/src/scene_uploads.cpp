@@ -43,7 +43,7 @@ bool ShoreBuffers::holds(const Models& models) const {
     return true;
 }
 
-Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const Models& models) {
+Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models) {
     if (holds(models)) return false;
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
@@ -68,26 +68,26 @@ Result<bool> ShoreBuffers::upload(const DeviceContext& ctx, const Models& models
     return true;
 }
 
-Status upload_image(const DeviceContext& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
+Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
                     VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects) {
     if (barrier_aspects == 0) barrier_aspects = aspect;
     auto staging = GpuBuffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     if (!staging) return staging.error();
     std::memcpy(staging->mapped(), data, bytes);
     return submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {aspect, 0, 0, 1};
         region.imageExtent = {image.extent().width, image.extent().height, 1};
-        vkCmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        transition(cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
                    VK_ACCESS_SHADER_READ_BIT);
     });
 }
 
-Result<TerrainUpload> TerrainUpload::create(const DeviceContext& ctx, VkCommandPool pool, const Terrain& terrain) {
+Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool pool, const Terrain& terrain) {
     TerrainUpload t;
     const TerrainMesh mesh = build_terrain_mesh(terrain, kTerrainCells);
     const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(float), ibytes = mesh.indices.size() * sizeof(std::uint32_t);

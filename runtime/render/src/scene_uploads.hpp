@@ -47,8 +47,8 @@ public:
     /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
     /// Returns true when the buffers were replaced and descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
-    Result<bool> upload(const DeviceContext& ctx, const Models& models);
-    Result<bool> upload(const DeviceContext& ctx, const std::shared_ptr<const ShoreWaves>& shore) { return upload(ctx, Models{shore}); }
+    Result<bool> upload(const Device& ctx, const Models& models);
+    Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) { return upload(ctx, Models{shore}); }
 
     /// The first model uploaded (null: none).
     const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }
@@ -69,7 +69,7 @@ private:
 
 /// Uploads `bytes` of pixels into `image`'s `aspect` and leaves it SHADER_READ_ONLY_OPTIMAL;
 /// the layout transitions cover `barrier_aspects` (0: `aspect`; a depth-stencil image: both).
-Status upload_image(const DeviceContext& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
+Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
                     VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects = 0);
 
 /// The terrain on the GPU: its mesh and the height texture the water reads for depth.
@@ -81,7 +81,7 @@ struct TerrainUpload {
     TerrainPlacement placement;
     double water_half_size = 3000.0;  ///< m, half the side of the water grid.
 
-    static Result<TerrainUpload> create(const DeviceContext& ctx, VkCommandPool pool, const Terrain& terrain);
+    static Result<TerrainUpload> create(const Device& ctx, VkCommandPool pool, const Terrain& terrain);
 };
 
 }  // namespace tidewater::render::detail

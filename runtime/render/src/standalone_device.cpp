@@ -1,3 +1,8 @@
+// StandaloneDevice is a host like any other: it creates its instance and device
+// through the system loader's exported functions, then lends them as a DeviceContext.
+#undef VK_NO_PROTOTYPES
+#include <vulkan/vulkan.h>
+
 #include <cstdio>
 #include <cstring>
 #include <fmt/format.h>
@@ -14,9 +19,10 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 bool layer_available(const char* name) {
     std::uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    if (vkEnumerateInstanceLayerProperties(&count, nullptr) != VK_SUCCESS) return false;
     std::vector<VkLayerProperties> layers(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    if (vkEnumerateInstanceLayerProperties(&count, layers.data()) < VK_SUCCESS) return false;
+    layers.resize(count);
     for (const auto& l : layers)
         if (std::strcmp(l.layerName, name) == 0) return true;
     return false;
@@ -177,7 +183,12 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
 
 StandaloneDevice::~StandaloneDevice() {
     if (context_.device) {
-        vkDeviceWaitIdle(context_.device);
+        // A lost device has no work left: it is destroyed all the same.
+        if (const VkResult r = vkDeviceWaitIdle(context_.device); r != VK_SUCCESS) {
+            const std::string text = detail::vk_error(r, "vkDeviceWaitIdle (destroying the standalone device)").message;
+            if (log_) log_(text);
+            else std::fprintf(stderr, "%s\n", text.c_str());
+        }
         vkDestroyDevice(context_.device, nullptr);
     }
     if (messenger_) {

@@ -1,29 +1,31 @@
-// Owning wrappers for device-level Vulkan handles (private): each destroys its
-// handle with the device and allocator it was made with, so no class keeps a
-// hand-written destroy list. Move-only.
+// Owning wrappers for device-level Vulkan handles (private). Each keeps the device,
+// allocator and function table it was made with and destroys its handle through them,
+// so no class keeps a hand-written destroy list and a handle can be destroyed on any
+// thread. Move-only.
 #pragma once
 
+#include <memory>
 #include <utility>
 #include <vulkan/vulkan.h>
 
-#include "vk_dispatch.hpp"
+#include "vk_device.hpp"
 
 namespace tidewater::render::detail {
 
-/// `Destroy` names the table's destroy function (VulkanFunctions::DestroyPipeline, ...),
-/// looked up when the handle is destroyed.
+/// `Destroy` names the table's destroy function (&VulkanFunctions::DestroyPipeline, ...).
 template <typename Handle, auto Destroy>
 class VkOwned {
 public:
     VkOwned() = default;
-    VkOwned(VkDevice device, const VkAllocationCallbacks* allocator, Handle handle)
-        : device_(device), allocator_(allocator), handle_(handle) {}
+    VkOwned(const Device& device, Handle handle)
+        : device_(device.device), allocator_(device.allocator), functions_(device.functions), handle_(handle) {}
     VkOwned(VkOwned&& other) noexcept { *this = std::move(other); }
     VkOwned& operator=(VkOwned&& other) noexcept {
         if (this != &other) {
             reset();
             device_ = std::exchange(other.device_, VK_NULL_HANDLE);
             allocator_ = std::exchange(other.allocator_, nullptr);
+            functions_ = std::move(other.functions_);
             handle_ = std::exchange(other.handle_, VK_NULL_HANDLE);
         }
         return *this;
@@ -33,8 +35,9 @@ public:
     ~VkOwned() { reset(); }
 
     void reset() {
-        if (handle_ != VK_NULL_HANDLE) (dispatch().*Destroy)(device_, handle_, allocator_);
+        if (handle_ != VK_NULL_HANDLE) ((*functions_).*Destroy)(device_, handle_, allocator_);
         handle_ = VK_NULL_HANDLE;
+        functions_.reset();
     }
     Handle get() const { return handle_; }
     explicit operator bool() const { return handle_ != VK_NULL_HANDLE; }
@@ -42,6 +45,7 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
+    std::shared_ptr<const VulkanFunctions> functions_;
     Handle handle_ = VK_NULL_HANDLE;
 };
 
@@ -52,13 +56,16 @@ using OwnedDescriptorPool = VkOwned<VkDescriptorPool, &VulkanFunctions::DestroyD
 using OwnedSampler = VkOwned<VkSampler, &VulkanFunctions::DestroySampler>;
 using OwnedCommandPool = VkOwned<VkCommandPool, &VulkanFunctions::DestroyCommandPool>;
 using OwnedQueryPool = VkOwned<VkQueryPool, &VulkanFunctions::DestroyQueryPool>;
+using OwnedShaderModule = VkOwned<VkShaderModule, &VulkanFunctions::DestroyShaderModule>;
+using OwnedFence = VkOwned<VkFence, &VulkanFunctions::DestroyFence>;
 
-/// Runs `create(&handle)` (a vkCreate* call) and wraps the handle on success.
+/// Runs `create(&handle)` (a vkCreate* call through `device`'s table) and wraps the
+/// handle on success.
 template <typename Owned, typename Create>
-VkResult make_owned(VkDevice device, const VkAllocationCallbacks* allocator, Owned& out, const Create& create) {
+[[nodiscard]] VkResult make_owned(const Device& device, Owned& out, const Create& create) {
     decltype(out.get()) handle = VK_NULL_HANDLE;
     const VkResult r = create(&handle);
-    if (r == VK_SUCCESS) out = Owned(device, allocator, handle);
+    if (r == VK_SUCCESS) out = Owned(device, handle);
     return r;
 }
 

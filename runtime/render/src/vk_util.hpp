@@ -4,7 +4,7 @@
 #include <string>
 #include <vulkan/vulkan.h>
 
-#include "vk_dispatch.hpp"
+#include "vk_device.hpp"
 
 #include "tidewater/result.hpp"
 
@@ -14,12 +14,12 @@ const char* vk_result_name(VkResult result);
 Error vk_error(VkResult result, const char* call);
 
 /// One image layout transition (synchronization 1, core in every Vulkan 1.3 device).
-void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+void transition(const VulkanFunctions& vk, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
                 VkAccessFlags dst_access);
 
 /// Full-extent viewport and scissor (both dynamic in every Tidewater pipeline).
-void set_viewport(VkCommandBuffer cmd, VkExtent2D extent);
+void set_viewport(const VulkanFunctions& vk, VkCommandBuffer cmd, VkExtent2D extent);
 
 }  // namespace tidewater::render::detail
 
