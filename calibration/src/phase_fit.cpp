@@ -16,7 +16,7 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_point.hpp"
 #include "tidewater/dispersion.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 
 namespace tidewater::calibration {
 

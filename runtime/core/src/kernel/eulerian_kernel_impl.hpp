@@ -1,5 +1,5 @@
 // The SIMD Eulerian query kernel: the one water evaluation (water_point.hpp) and the one
-// Newton solver (water/newton.hpp) instantiated for xsimd float batches, whose lanes
+// Newton solver (tidewater/detail/newton.hpp) instantiated for xsimd float batches, whose lanes
 // are query points. Included once per instruction set by kernel_<isa>.cpp, each
 // compiled with its own flags and defining TIDEWATER_KERNEL_NS, so no inline function
 // is shared between ISAs.
@@ -20,7 +20,7 @@
 #include <type_traits>
 
 #include "kernel/kernel_waves.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/point_lanes.hpp"
 #include "water/river_solve.hpp"

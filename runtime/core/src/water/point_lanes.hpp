@@ -6,7 +6,7 @@
 #include <cstddef>
 
 #include "tidewater/query.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 
 namespace tidewater::detail {
 

@@ -7,7 +7,7 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 
 namespace tidewater::detail {
 

@@ -8,7 +8,7 @@
 #include "tidewater/query.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "water/body_at.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "water/river_solve.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/shore_water.hpp"

@@ -15,7 +15,7 @@
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/query.hpp"
-#include "water/newton.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/point_lanes.hpp"
 #include "water/prepared_waves.hpp"

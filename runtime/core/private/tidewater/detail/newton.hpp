@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <concepts>
 
 #include "host_device.h"
 #include "tidewater/detail/water_point.hpp"
@@ -59,10 +60,20 @@ SurfaceSums<T> select_sums(typename NumberOps<T>::Mask m, const SurfaceSums<T>& 
     return s;
 }
 
-/// Solves for the rest offset of each lane. `water` is the water at rest offsets from the
-/// query points: `water.template evaluate<kVelocity>(ex, ez)` returns the sums there and
-/// `water.record(mask)` keeps whatever else it sampled for the lanes that finish.
-template <bool kVelocity, typename T, typename Water>
+/// What the solver needs of a water (open sea, shore, river, wakes, a Jet model): its
+/// sums at rest offsets (ex, ez) from the query points, with or without the particle
+/// velocity, and record(mask), which keeps whatever else it sampled for the lanes in
+/// `mask` (those that finished at this evaluation).
+template <typename W, typename T>
+concept EulerianWater = requires(W& water, const T& ex, const T& ez, const typename NumberOps<T>::Mask& finished) {
+    { water.template evaluate<false>(ex, ez) } -> std::same_as<SurfaceSums<T>>;
+    { water.template evaluate<true>(ex, ez) } -> std::same_as<SurfaceSums<T>>;
+    water.record(finished);
+};
+
+/// Solves for the rest offset of each lane of `water`, the water at rest offsets from
+/// the query points.
+template <bool kVelocity, typename T, EulerianWater<T> Water>
 NewtonResult<T> solve_rest_offset(Water& water, double tolerance, double radius) {
     using Ops = NumberOps<T>;
     using Mask = typename Ops::Mask;
