@@ -1,6 +1,7 @@
-# Installs Tidewater as a CMake package: find_package(Tidewater [COMPONENTS core render
-# calibration]) gives Tidewater::core always, Tidewater::render where Vulkan is found and
-# Tidewater::calibration where Ceres and netCDF are. The exported files hold no path of
+# Installs Tidewater as a CMake package: find_package(Tidewater [COMPONENTS core bake
+# render calibration]) gives Tidewater::core always, Tidewater::bake where GMP and libpng
+# are, Tidewater::render where Vulkan is found and Tidewater::calibration where Ceres and
+# netCDF are. The exported files hold no path of
 # the build machine: the dependencies are found again on the host machine.
 include(CMakePackageConfigHelpers)
 
@@ -21,6 +22,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/core/include/tidewater
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/runtime/core/include/tidewater/version.hpp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tidewater)
+tidewater_install_component(tidewater_bake Bake)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/bake/include/tidewater
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 if(TARGET tidewater_render)
   tidewater_install_component(tidewater_render Render)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/render/include/tidewater

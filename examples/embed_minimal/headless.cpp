@@ -8,6 +8,7 @@
 // Exit status 0 when every step worked, the validation layer said nothing and the
 // query matched the depth buffer; 1 otherwise.
 #include <tidewater/render/renderer.hpp>
+#include <tidewater/scene_bake.hpp>
 #include <tidewater/tidewater.hpp>
 
 #include <glm/geometric.hpp>

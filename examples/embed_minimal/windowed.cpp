@@ -12,6 +12,7 @@
 #include <GLFW/glfw3.h>
 
 #include <tidewater/render/renderer.hpp>
+#include <tidewater/scene_bake.hpp>
 #include <tidewater/tidewater.hpp>
 
 #include <algorithm>

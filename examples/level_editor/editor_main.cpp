@@ -44,6 +44,7 @@
 #include "shader_reload.hpp"
 #include "surface_probe.hpp"
 #include "terrain_brush.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater::editor {
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/image_write.hpp"
 
 namespace tidewater::editor {
 

@@ -11,6 +11,7 @@
 #include "tidewater/detail/bodies_bake_folder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/world_query.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
 namespace {

@@ -9,6 +9,7 @@
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/terrain.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
 namespace {

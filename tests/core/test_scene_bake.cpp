@@ -13,6 +13,7 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
 namespace {

@@ -8,6 +8,7 @@
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
 namespace {

@@ -8,6 +8,8 @@
 #include "test_helpers.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/shore_bake_folder.hpp"
+#include "tidewater/detail/image_write.hpp"
+#include "tidewater/detail/shore_bake_write.hpp"
 
 namespace tidewater {
 namespace {

@@ -19,6 +19,7 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -232,7 +233,7 @@ TEST(ShoreQuery, QueriesWhileAnotherThreadBakes) {
         options.resolution = 512;
         options.threads = 0;
         for (int i = 0; i < 2; ++i) {
-            auto model = ShoreWaves::bake(island().ocean.waves(), island().terrain, island().water_level(), options);
+            auto model = bake_shore_waves(island().ocean.waves(), island().terrain, island().water_level(), options);
             EXPECT_TRUE(model.ok());
         }
         baking = false;

@@ -6,6 +6,7 @@
 #include "test_helpers.hpp"
 #include "tidewater/dispersion.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -47,7 +48,7 @@ TEST(ShoreWaves, FlatBottomWavelengthFollowsLinearDispersion) {
         const double wavelength = 200.0, k = kTwoPi / wavelength, h = kh / k;
         const double omega = std::sqrt(kGravity * k * std::tanh(kh));
         const WaveSet set = single_wave(omega, 0.05 * h, 0.0);
-        auto shore = ShoreWaves::bake(set, Terrain(FlatTerrain{-h}), 0.0);
+        auto shore = bake_shore_waves(set, Terrain(FlatTerrain{-h}), 0.0);
         ASSERT_TRUE(shore.ok()) << shore.error().message;
         std::vector<double> crossings;
         double prev = 0.0;
@@ -93,7 +94,7 @@ TEST(ShoreWaves, PlanarBeachShoalsAsLinearTheory) {
     const Beach beach = planar_beach();
     const double omega = deep_water_omega(100.0), a0 = 0.3;
     const WaveSet set = single_wave(omega, a0, 0.5);
-    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
+    auto shore = bake_shore_waves(set, Terrain(beach.plane), 0.0, grid(512));
     ASSERT_TRUE(shore.ok()) << shore.error().message;
     double worst = 0.0;
     int checked = 0;
@@ -115,7 +116,7 @@ TEST(ShoreWaves, BreaksAtTheDepthLimitAndStopsOnLand) {
     const Beach beach = planar_beach();
     const double omega = deep_water_omega(100.0);
     const WaveSet set = single_wave(omega, 1.2, 0.8);
-    auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
+    auto shore = bake_shore_waves(set, Terrain(beach.plane), 0.0, grid(512));
     ASSERT_TRUE(shore.ok()) << shore.error().message;
     double worst_excess = -1e9, foam_in_surf = 0.0;
     for (double h = 12.0; h > 0.2; h *= 0.85) {
@@ -148,7 +149,7 @@ TEST(ShoreWaves, ObliqueIncidenceFollowsSnellsLaw) {
     const double omega = deep_water_omega(80.0), k0 = omega * omega / kGravity;
     for (double theta0 : {30.0, 60.0}) {
         const WaveSet set = single_wave(omega, 0.2, 0.5, theta0);
-        auto shore = ShoreWaves::bake(set, Terrain(beach.plane), 0.0, grid(512));
+        auto shore = bake_shore_waves(set, Terrain(beach.plane), 0.0, grid(512));
         ASSERT_TRUE(shore.ok()) << shore.error().message;
         const double along = k0 * std::sin(theta0 * kPi / 180.0);
         double worst_along = 0.0, worst_cross = 0.0;
@@ -169,7 +170,7 @@ TEST(ShoreWaves, ObliqueIncidenceFollowsSnellsLaw) {
 
 TEST(ShoreWaves, BodyRefusesAShoreBakedForOtherWaves) {
     const WaveSet one = single_wave(deep_water_omega(50.0), 0.3, 0.5);
-    auto shore = ShoreWaves::bake(one, Terrain(planar_beach().plane), 0.0, grid(64));
+    auto shore = bake_shore_waves(one, Terrain(planar_beach().plane), 0.0, grid(64));
     ASSERT_TRUE(shore.ok());
     const WaterBody two = test::make_body(test::random_waves(2, 0.3, 1));
     auto refused = two.with_shore(*shore);

@@ -5,6 +5,7 @@
 
 #include "test_helpers.hpp"
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/image_write.hpp"
 
 namespace tidewater {
 namespace {

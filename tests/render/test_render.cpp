@@ -25,6 +25,8 @@
 #include "sky_model.hpp"
 #include "vk_util.hpp"
 #include "vulkan_fixture.hpp"
+#include "tidewater/detail/image_write.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
 namespace {

@@ -12,6 +12,7 @@
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/tidewater.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace {
 

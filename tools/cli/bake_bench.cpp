@@ -13,6 +13,7 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/spectrum.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
 
 namespace tidewater::cli {
 
@@ -122,7 +123,7 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
             o.resolution = res;
             o.threads = threads;
             const auto t1 = Clock::now();
-            auto shore = ShoreWaves::bake(*set, terrain, 0.0, o);
+            auto shore = bake_shore_waves(*set, terrain, 0.0, o);
             if (!shore) return shore.error();
             report["phase_fields"].push_back({{"resolution", res}, {"waves", 24}, {"threads", threads}, {"seconds", seconds_since(t1)}});
         }
@@ -132,7 +133,7 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
     say("queries with the shore on and off");
     ShoreWaveOptions so;
     so.resolution = 256;
-    auto shore = ShoreWaves::bake(*set, terrain, 0.0, so);
+    auto shore = bake_shore_waves(*set, terrain, 0.0, so);
     if (!shore) return shore.error();
     WaterProfile profile;
     profile.waves = *specs;

@@ -8,6 +8,7 @@
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "tidewater/scene_floaters.hpp"
+#include "tidewater/detail/image_write.hpp"
 
 namespace tidewater::cli {
 

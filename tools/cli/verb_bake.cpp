@@ -10,6 +10,7 @@
 #include "tidewater/body_summary.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene_bake.hpp"
 #include "verbs.hpp"
 
 namespace tidewater::cli {

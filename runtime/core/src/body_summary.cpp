@@ -1,7 +1,7 @@
 #include "tidewater/body_summary.hpp"
 
 #include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 
 namespace tidewater {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "water/body_at.hpp"
 
 namespace tidewater {

@@ -1,4 +1,4 @@
-#include "json_reader.hpp"
+#include "tidewater/detail/json_reader.hpp"
 
 #include <cmath>
 #include <fmt/format.h>

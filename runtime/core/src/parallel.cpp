@@ -1,4 +1,4 @@
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "kernel/kernel_select.hpp"
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/wakes.hpp"
 #include "water/shore_order.hpp"

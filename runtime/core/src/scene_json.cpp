@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "embedded_text.hpp"
-#include "json_reader.hpp"
+#include "tidewater/detail/json_reader.hpp"
 #include "scene/scene_json_parts.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/scene.hpp"

@@ -1,7 +1,6 @@
-// stb's PNG reader and writer, compiled once here from Debian's libstb-dev headers, so
-// that the installed library needs no build-machine path to an archive.
+// stb's PNG reader, compiled once here from Debian's libstb-dev headers, so that the
+// installed library needs no build-machine path to an archive (the writer is
+// Tidewater::bake's, stb_write_implementation.cpp).
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "kernel/kernel_select.hpp"
-#include "parallel.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/detail/parallel.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/wakes.hpp"
 #include "water/body_at.hpp"
 #include "water/prepared_waves.hpp"

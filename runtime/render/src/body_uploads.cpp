@@ -6,7 +6,7 @@
 #include "frame_constants.hpp"
 #include "tidewater/detail/body_finder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 
 namespace tidewater::render::detail {
 

@@ -12,7 +12,7 @@
 #include "frame_constants.hpp"
 #include "tidewater/detail/body_finder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/surface_foam.hpp"
 #include "gpu_memory.hpp"

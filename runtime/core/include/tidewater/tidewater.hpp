@@ -12,7 +12,7 @@
 #include "tidewater/flow_detail.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/scene.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/scene_floaters.hpp"
 #include "tidewater/spectrum.hpp"
 #include "tidewater/terrain.hpp"

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "host_device.h"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 
@@ -55,6 +56,40 @@ const char* river_end_name(RiverEnd end) {
         case RiverEnd::domain_edge: break;
     }
     return "domain_edge";
+}
+
+SquareRegion lake_basin_region(const LakeBake& lake) {
+    const FieldGrid& g = lake.grid;
+    SquareRegion region;
+    region.center = g.corner + 0.5 * g.texel * glm::dvec2(g.nx, g.nz);
+    region.half_size = 0.5 * g.texel * std::max(g.nx, g.nz) * 1.1 + 2.0 * g.texel;
+    return region;
+}
+
+bool LakeBake::holds(glm::dvec2 p, double terrain_height) const {
+    if (!(terrain_height < level)) return false;
+    const double u = (p.x - grid.corner.x) / grid.texel, v = (p.y - grid.corner.y) / grid.texel;
+    if (!(u > -1.0 && v > -1.0 && u < grid.nx + 1.0 && v < grid.nz + 1.0)) return false;
+    const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+    // A texel's neighbours too: the lake's edge lies between texel centres.
+    for (int j = j0 - 1; j <= j0 + 1; ++j)
+        for (int i = i0 - 1; i <= i0 + 1; ++i)
+            if (i >= 0 && j >= 0 && i < grid.nx && j < grid.nz && inside[grid.index(i, j)]) return true;
+    return false;
+}
+
+void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight) {
+    const std::size_t n = river.grid.size();
+    river.query_texels.assign(n * gpu::kRiverQueryStride, 0.0f);
+    for (std::size_t t = 0; t < n; ++t) {
+        float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
+        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
+        q[gpu::kRiverQueryDepth] = river.depth[t];
+        q[gpu::kRiverQueryTangentX] = river.tangent_x[t];
+        q[gpu::kRiverQueryTangentZ] = river.tangent_z[t];
+        q[gpu::kRiverQueryWaveWeight] = river_weight[t];
+        q[gpu::kRiverQueryStillWeight] = still_weight[t];
+    }
 }
 
 }  // namespace tidewater::detail

@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "json_reader.hpp"
+#include "tidewater/detail/json_reader.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater::detail {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 
 namespace tidewater::detail {
 

@@ -6,7 +6,7 @@
 #include "kernel/kernel_waves.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
-#include "tidewater/scene_bake.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "water/body_at.hpp"
 #include "tidewater/detail/newton.hpp"
 #include "water/river_solve.hpp"

@@ -1,6 +1,6 @@
-// Saved lakes and rivers (internal): beside a scene's shore bake in the folder
+// Saved lakes and rivers (internal; loaded here, written by Tidewater::bake): beside a scene's shore bake in the folder
 // `tidewater bake` writes, a sidecar `bodies.json` with what they were baked from and
-// their centreline profiles, 16-bit PNG fields per lake and river (bake/bake_files.hpp),
+// their centreline profiles, 16-bit PNG fields per lake and river (bake_files.hpp),
 // and each lake's shore model in `lake_NN/` (a shore bake over its basin). The format is
 // in docs/scene-format.md.
 //
@@ -32,13 +32,15 @@ struct LoadedBodies {
     std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
 };
 
-/// Writes the baked scene's lakes and rivers and their lakes' shore models into the
-/// existing folder `dir` (the caller writes the folder atomically).
-Status write_bodies_bake_into(const std::filesystem::path& dir, const Scene& baked);
-
 /// Loads the lakes and rivers saved in `dir` for `scene` (parsed, not baked), with its
 /// lakes' shore models when `lake_shores` is set.
 Result<LoadedBodies> load_bodies_bake(const std::filesystem::path& dir, const Scene& scene, const detail::BodiesBakeOptions& options,
                                       bool lake_shores);
+
+namespace detail {
+/// The grid lakes are found on, over the terrain's extent: a saved bake stores the
+/// terrain's shape on it, and loading checks it there.
+FieldGrid saved_lake_grid(const Terrain& terrain, int resolution);
+}  // namespace detail
 
 }  // namespace tidewater

@@ -1,6 +1,6 @@
 // Reference solvers (not part of the API users call): the scalar double path of the
-// water evaluation, the seed project's fixed-point loop, and a brute-force shoreline
-// distance. Tests and benchmarks measure the fast paths against them; they are slow
+// water evaluation and the seed project's fixed-point loop (the brute-force shoreline
+// distance is the bake's, shore_bake.hpp). Tests and benchmarks measure the fast paths against them; they are slow
 // by design. Threading: pure functions of immutable inputs.
 #pragma once
 
@@ -10,7 +10,6 @@
 
 #include "tidewater/query.hpp"
 #include "tidewater/world_query.hpp"
-#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
 
@@ -33,9 +32,6 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);
 /// query_world for one point on the scalar double path (rivers and plumes included).
 /// The scene must be baked where it has lakes or rivers (a default WorldPoint if not).
 WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point);
-
-/// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and tests).
-double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p);
 
 }  // namespace reference
 

@@ -28,25 +28,13 @@
 
 #include <glm/vec2.hpp>
 
-#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/square_region.hpp"
 #include "tidewater/gerstner.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/waves.hpp"
-#include "tidewater/detail/shore_bake.hpp"
 
 namespace tidewater {
-
-struct ShoreWaveOptions {
-    int resolution = 256;           ///< Texels per side over the terrain's extent, 16 to 4096.
-    /// The square the model covers; none: the terrain's extent (a lake's: its basin). Not
-    /// with a shoreline baked elsewhere.
-    std::optional<SquareRegion> region;
-    unsigned threads = 0;           ///< 0 = every hardware thread.
-    double breaking_index = 0.78;   ///< Breaker height / depth (McCowan), in (0, 1.2].
-    std::function<void(double)> progress;  ///< Called with 0..1, one call at a time (optional).
-    std::stop_token cancel;                ///< Requested: the bake returns ErrorCode::cancelled.
-};
 
 /// What the shore does to one wave at one place.
 struct LocalWave {
@@ -78,15 +66,11 @@ struct ShoreWaveFields {
 
 class ShoreWaves {
 public:
-    /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed
-    /// distance field already baked there (any resolution): the model samples it instead
-    /// of baking the shoreline again.
-    static Result<std::shared_ptr<const ShoreWaves>> bake(const WaveSet& set, const Terrain& terrain, double water_level,
-                                                          const ShoreWaveOptions& options = {},
-                                                          const ShoreField* shoreline = nullptr);
     /// A model from fields made elsewhere (a saved bake). Fails unless every grid is
     /// resolution^2 finite values and there are `wave_count` of each per-wave field.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::size_t wave_count);
+    /// A model from fields its bake made (bake_shore_waves): trusted, not checked again.
+    static std::shared_ptr<const ShoreWaves> from_baked_fields(ShoreWaveFields fields);
 
     /// Bilinear sample at world xz; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;

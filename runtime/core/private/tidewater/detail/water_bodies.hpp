@@ -1,5 +1,6 @@
 // Lakes and rivers as baked (internal): their extents, a river's falling surface,
-// carved bed and current. Hosts reach them through bake_scene and query_world.
+// carved bed and current. Tidewater::bake makes them (water_bodies_bake.hpp), saved bakes
+// load them; hosts reach them through bake_scene, load_scene_bake and query_world.
 //
 // Grids: values at texel centres, rows along +z, bilinear between centres.
 // Units: metres, seconds; discharge m^3/s.
@@ -16,7 +17,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/square_region.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
 
@@ -146,6 +147,10 @@ struct RiverWaveAt {
 /// `waves` of a river's preset at the body's local time.
 std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed);
 
+/// Packs what the water evaluation samples (RiverBake::query_texels) from the river's
+/// surface, depth and tangent fields and the weights of its waves and the still water's.
+void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight);
+
 /// Everything lakes and rivers bake to.
 struct WaterBodiesBake {
     std::vector<LakeBake> lakes;    ///< in the scene's order
@@ -171,10 +176,5 @@ struct BodiesBakeOptions {
 bool cut_touches(const TerrainCut& cut, const FieldGrid& grid);
 /// The cuts among `cuts` that reach into `grid`.
 std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const FieldGrid& grid);
-
-/// Finds the lakes' extents and bakes the rivers of `scene` over its terrain's shape (any
-/// cuts it carries are replaced by the rivers'). Errors name the scene and the body's
-/// JSON path.
-Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options);
 
 }  // namespace tidewater::detail

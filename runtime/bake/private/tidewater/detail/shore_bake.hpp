@@ -1,6 +1,6 @@
 // The shore bake: the shoreline (the terrain's contour at the water level)
 // and the signed distance to it, computed exactly from that contour with CGAL.
-// Internal: hosts bake through bake_scene (scene_bake.hpp).
+// Internal to Tidewater::bake: hosts bake through bake_scene (scene_bake.hpp).
 //
 // Grid: `resolution` x `resolution` texels over the terrain's square extent;
 // values are at texel centres, rows along +z. Units: metres.
@@ -16,16 +16,11 @@
 
 #include <glm/vec2.hpp>
 
+#include "tidewater/detail/square_region.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
 
 namespace tidewater {
-
-/// A square part of the world, m.
-struct SquareRegion {
-    glm::dvec2 center{0.0};
-    double half_size = 0.0;  ///< > 0
-};
 
 struct BakeOptions {
     int resolution = 1024;            ///< Texels per side, 8 to 8192.
@@ -84,5 +79,11 @@ struct ShoreField {
 /// (naming where) or out-of-range options, and with ErrorCode::cancelled when cancelled.
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
 
+
+namespace reference {
+/// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and
+/// tests; slow by design).
+double brute_force_shore_distance(const ShoreField& field, glm::dvec2 p);
+}  // namespace reference
 
 }  // namespace tidewater

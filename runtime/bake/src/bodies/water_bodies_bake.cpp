@@ -6,7 +6,7 @@
 
 #include "bodies/lake_extent.hpp"
 #include "bodies/river_channel.hpp"
-#include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater::detail {
 

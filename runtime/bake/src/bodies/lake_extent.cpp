@@ -13,26 +13,6 @@ std::vector<float> sample_terrain(const Terrain& terrain, const FieldGrid& grid)
     return h;
 }
 
-SquareRegion lake_basin_region(const LakeBake& lake) {
-    const FieldGrid& g = lake.grid;
-    SquareRegion region;
-    region.center = g.corner + 0.5 * g.texel * glm::dvec2(g.nx, g.nz);
-    region.half_size = 0.5 * g.texel * std::max(g.nx, g.nz) * 1.1 + 2.0 * g.texel;
-    return region;
-}
-
-bool LakeBake::holds(glm::dvec2 p, double terrain_height) const {
-    if (!(terrain_height < level)) return false;
-    const double u = (p.x - grid.corner.x) / grid.texel, v = (p.y - grid.corner.y) / grid.texel;
-    if (!(u > -1.0 && v > -1.0 && u < grid.nx + 1.0 && v < grid.nz + 1.0)) return false;
-    const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
-    // A texel's neighbours too: the lake's edge lies between texel centres.
-    for (int j = j0 - 1; j <= j0 + 1; ++j)
-        for (int i = i0 - 1; i <= i0 + 1; ++i)
-            if (i >= 0 && j >= 0 && i < grid.nx && j < grid.nz && inside[grid.index(i, j)]) return true;
-    return false;
-}
-
 Result<LakeBake> find_lake_extent(const SceneLake& lake, const FieldGrid& grid, const std::vector<float>& heights,
                                   const std::string& where) {
     const double level = lake.body.level();

@@ -1,7 +1,7 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/reference.hpp"
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 #include <algorithm>
 #include <atomic>

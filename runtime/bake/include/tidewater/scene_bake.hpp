@@ -4,9 +4,10 @@
 // shore model (per-wave fields from fast marching over the depth) and the exact signed
 // distance to the shoreline (CGAL) it is built on.
 //
-// parse_scene (scene.hpp) only reads. bake_scene does the work, or loads the saved
-// bake the scene names ("shore": {"bake": folder}) without redoing it, and returns a
-// new scene ready for the renderer and the queries. An editor re-bakes after a
+// parse_scene (scene.hpp) only reads. bake_scene (Tidewater::bake) does the work, or
+// loads the saved bake the scene names ("shore": {"bake": folder}) without redoing it
+// (load_scene_bake, baked_scene.hpp: Tidewater::core alone), and returns a new scene
+// ready for the renderer and the queries. An editor re-bakes after a
 // terrain edit on a worker thread, with progress and cancellation, while other
 // threads keep drawing and querying the previous result.
 //
@@ -24,48 +25,11 @@
 #include <string_view>
 #include <vector>
 
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater {
-
-class ShoreWaves;
-struct ShoreField;
-namespace detail {
-struct WaterBodiesBake;
-}
-
-/// What bake_scene made. Immutable; scenes copied from a baked one share it.
-struct SceneBake {
-    /// The ocean's shore model as baked or loaded, even when it is all deep water (the
-    /// ocean itself then carries none, and queries skip the shore). Null when the scene's
-    /// shore is disabled.
-    std::shared_ptr<const ShoreWaves> ocean_shore;
-    /// The exact signed distance to the simplified shoreline (m, positive over water) at
-    /// the resolution it was baked at. Null when the shore is disabled or was loaded.
-    std::shared_ptr<const ShoreField> shoreline;
-    /// The lakes' extents and the rivers' surfaces, carved beds and currents (null when
-    /// the scene has neither). Internal: reach them through the queries.
-    std::shared_ptr<const detail::WaterBodiesBake> bodies;
-    /// Each lake's shore model, in the scene's order (null where the shore is disabled);
-    /// the baked scene's lakes carry the ones that change their waves.
-    std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
-    bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
-    double seconds = 0.0;  ///< Wall-clock time of the bake or load.
-    /// What was taken unchanged from SceneBakeOptions::previous.
-    struct Reused {
-        std::size_t rivers = 0, lake_shores = 0;
-        bool ocean_shore = false;
-    } reused;
-    int distance_resolution = 0;  ///< texels per side of the shoreline's distance field (0: none baked)
-    /// What it was made from, so that Scene::baked() can tell an edited copy: the terrain
-    /// with the rivers' channels cut into it (the baked scene's terrain too).
-    Terrain terrain;
-    double water_level = 0.0;
-    SceneShore shore;
-    std::vector<SceneLake> lakes;    ///< as baked (levels and seeds)
-    std::vector<SceneRiver> rivers;  ///< as baked (paths, widths, discharges)
-};
 
 struct SceneBakeOptions {
     unsigned threads = 0;  ///< Worker threads, 0 = all.
@@ -75,7 +39,7 @@ struct SceneBakeOptions {
     int distance_resolution = 0;
     /// Told the stage ("water bodies", "lake shores", "shoreline", "shore waves" or "loading") and the fraction of the
     /// whole bake done, 0 to 1, never decreasing. One call at a time, from a baking thread.
-    std::function<void(std::string_view stage, double fraction)> progress;
+    BakeProgressCallback progress;
     /// Request a stop from any thread: bake_scene returns ErrorCode::cancelled soon after
     /// (within one wave or one tile row of the work) and keeps nothing.
     std::stop_token cancel;

@@ -149,20 +149,6 @@ double bank_psi(const ChannelInputs& in, double own_discharge, double along, int
     return psi;
 }
 
-void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight) {
-    const std::size_t n = river.grid.size();
-    river.query_texels.assign(n * gpu::kRiverQueryStride, 0.0f);
-    for (std::size_t t = 0; t < n; ++t) {
-        float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
-        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
-        q[gpu::kRiverQueryDepth] = river.depth[t];
-        q[gpu::kRiverQueryTangentX] = river.tangent_x[t];
-        q[gpu::kRiverQueryTangentZ] = river.tangent_z[t];
-        q[gpu::kRiverQueryWaveWeight] = river_weight[t];
-        q[gpu::kRiverQueryStillWeight] = still_weight[t];
-    }
-}
-
 Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     const double mouth = river.along.back();
     const double mouth_width = river.width.back();

@@ -1,5 +1,5 @@
 #include "contour.hpp"
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -9,7 +9,7 @@
 // per texel, several times faster: the tree is walked from its root once per root block.
 // The sign is the texel's side of the water level, so it always agrees with the depth.
 #include "distance_field.hpp"
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 #include <mutex>
 
 #include <algorithm>

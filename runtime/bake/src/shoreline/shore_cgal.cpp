@@ -1,7 +1,7 @@
 // Everything that includes CGAL lives in this file: the shoreline's polygons with
 // holes and the AABB tree for exact distances.
 #include <CGAL/AABB_segment_primitive.h>
-#include "parallel.hpp"
+#include "tidewater/detail/parallel.hpp"
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,5 @@
+// Baking a scene (bake_scene) and saving its bake (save_scene_bake); loading a saved
+// bake is Tidewater::core's (baked_scene.cpp).
 #include "tidewater/scene_bake.hpp"
 
 #include <algorithm>
@@ -6,11 +8,12 @@
 #include <mutex>
 
 #include "tidewater/detail/atomic_folder.hpp"
-#include "tidewater/detail/bodies_bake_folder.hpp"
+#include "tidewater/detail/bodies_bake_write.hpp"
+#include "tidewater/detail/scene_bake_parts.hpp"
 #include "tidewater/detail/shore_bake.hpp"
-#include "tidewater/detail/shore_bake_folder.hpp"
-#include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/detail/shore_bake_write.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
 
@@ -34,11 +37,6 @@ private:
     std::mutex lock_;
     double last_ = 0.0;
 };
-
-Error in_shore(const Scene& scene, Error e) {
-    e.message = fmt::format("scene \"{}\" /shore: {}", scene.name, e.message);
-    return e;
-}
 
 /// Each lake's own shore model over its basin (the square round its extent, with a
 /// margin of beach), at the scene's shore resolution.
@@ -86,7 +84,7 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
         model_options.threads = options.threads;
         model_options.cancel = options.cancel;
         model_options.progress = [&](double f) { progress((static_cast<double>(l) + f) / static_cast<double>(count)); };
-        auto model = ShoreWaves::bake(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
+        auto model = bake_shore_waves(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
         if (!model) {
             Error e = model.error();
             e.message = fmt::format("scene \"{}\" /lakes/{}: its shore: {}", scene.name, l, e.message);
@@ -107,21 +105,52 @@ bool unchanged_ocean_shore(const Scene& scene, const Terrain& terrain, int dista
            same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
-/// The lakes and rivers as baked, where what shapes their water is concerned.
-bool same_bodies(const Scene& scene, const SceneBake& bake) {
-    if (scene.lakes.size() != bake.lakes.size() || scene.rivers.size() != bake.rivers.size()) return false;
-    for (std::size_t l = 0; l < scene.lakes.size(); ++l) {
-        const SceneLake &a = scene.lakes[l], &b = bake.lakes[l];
-        if (a.name != b.name || a.at != b.at || a.body.level() != b.body.level() || a.body.waves().waves().size() != b.body.waves().waves().size())
-            return false;
+
+/// The ocean's shore model and the distance field it samples: the previous bake's when
+/// nothing it depends on changed (the edit was inland), else baked over `terrain`, with
+/// progress from `begin` to the end of the whole bake.
+Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneBakeOptions& options, BakeProgress& progress,
+                        double begin, SceneBake& bake) {
+    if (!(scene.shore.enabled && scene.has_ocean)) return {};
+    const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
+    if (unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
+        bake.ocean_shore = options.previous->bake->ocean_shore;
+        bake.shoreline = options.previous->bake->shoreline;
+        bake.distance_resolution = distance_resolution;
+        bake.reused.ocean_shore = true;
+        progress.report("shore waves", begin, 1.0, 1.0);
+        return {};
     }
-    for (std::size_t r = 0; r < scene.rivers.size(); ++r) {
-        const SceneRiver &a = scene.rivers[r], &b = bake.rivers[r];
-        if (a.name != b.name || a.path != b.path || a.width != b.width || a.discharge != b.discharge || a.manning != b.manning ||
-            a.carve != b.carve)
-            return false;
-    }
-    return true;
+    // One shoreline bake serves the distance field and the shore model, which samples
+    // it: it may be finer than the model's grid, never coarser.
+    if (distance_resolution < scene.shore.resolution)
+        return detail::in_shore(scene, Error{ErrorCode::invalid_argument,
+                                             fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
+                                                         "which samples it: give a distance resolution of at least {1}",
+                                                         distance_resolution, scene.shore.resolution)});
+    const double shoreline_share = begin + 0.3 * (1.0 - begin);
+    BakeOptions shoreline_options;
+    shoreline_options.resolution = distance_resolution;
+    shoreline_options.threads = options.threads;
+    shoreline_options.cancel = options.cancel;
+    shoreline_options.progress = [&](double f) { progress.report("shoreline", begin, shoreline_share, f); };
+    progress.report("shoreline", begin, shoreline_share, 0.0);
+    auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
+    if (!shoreline) return detail::in_shore(scene, shoreline.error());
+    progress.report("shore waves", shoreline_share, 1.0, 0.0);
+
+    ShoreWaveOptions model_options;
+    model_options.resolution = scene.shore.resolution;
+    model_options.breaking_index = scene.shore.breaking_index;
+    model_options.threads = options.threads;
+    model_options.cancel = options.cancel;
+    model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
+    auto model = bake_shore_waves(scene.ocean.waves(), terrain, scene.water_level(), model_options, &*shoreline);
+    if (!model) return detail::in_shore(scene, model.error());
+    bake.ocean_shore = std::move(model).value();
+    bake.shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
+    bake.distance_resolution = distance_resolution;
+    return {};
 }
 
 }  // namespace
@@ -131,6 +160,8 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
     if (options.distance_resolution != 0 && (options.distance_resolution < 8 || options.distance_resolution > 8192))
         return Error{ErrorCode::invalid_argument,
                      fmt::format("bake: distance_resolution {} is out of range (8 to 8192, or 0)", options.distance_resolution)};
+    // A scene that names its saved bake is loaded, not baked.
+    if (!scene.shore.bake_folder.empty()) return load_scene_bake(scene, options.progress);
     try {
         auto bake = std::make_shared<SceneBake>();
         BakeProgress progress(options);
@@ -143,23 +174,12 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         const double total = (has_bodies ? 1.0 : 0.0) + (lake_shores ? 1.0 : 0.0) + (shore ? 3.0 : 0.0);
         const double bodies_end = total > 0.0 && has_bodies ? 1.0 / total : 0.0;
         const double bodies_share = total > 0.0 && lake_shores ? bodies_end + 1.0 / total : bodies_end;
-        detail::BodiesBakeOptions bodies_options;
-        bodies_options.lake_resolution = scene.shore.resolution;
-        bodies_options.cancel = options.cancel;
-        bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
-        const bool load_bodies = has_bodies && !scene.shore.bake_folder.empty();
-        if (load_bodies) {
-            // The saved bake holds the lakes and rivers (and their lakes' shores) too.
-            progress.report("loading", 0.0, bodies_share, 0.0);
-            auto loaded = load_bodies_bake(scene.shore.bake_folder, scene, bodies_options, lake_shores);
-            if (!loaded) return in_shore(scene, loaded.error());
-            terrain = loaded->bodies.terrain;
-            bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(loaded->bodies));
-            if (lake_shores) bake->lake_shores = std::move(loaded->lake_shores);
-            bake->loaded = true;
-            progress.report("loading", 0.0, bodies_share, 1.0);
-        } else if (has_bodies) {
+        if (has_bodies) {
             progress.report("water bodies", 0.0, bodies_end, 0.0);
+            detail::BodiesBakeOptions bodies_options;
+            bodies_options.lake_resolution = scene.shore.resolution;
+            bodies_options.cancel = options.cancel;
+            bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
             const Scene* previous = options.previous.get();
             if (previous && previous->bake && previous->bake->bodies) bodies_options.previous = previous->bake->bodies.get();
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
@@ -167,12 +187,8 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             bake->reused.rivers = bodies->reused_rivers;
             terrain = bodies->terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(bodies).value());
-        } else if (!scene.shore.bake_folder.empty() && std::filesystem::exists(scene.shore.bake_folder / kBodiesSidecar)) {
-            return in_shore(scene, Error{ErrorCode::invalid_argument,
-                                         fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
-                                                     (scene.shore.bake_folder / kBodiesSidecar).string())});
         }
-        if (lake_shores && !load_bodies) {
+        if (lake_shores) {
             progress.report("lake shores", bodies_end, bodies_share, 0.0);
             auto models = bake_lake_shores(
                 scene, *bake->bodies, options, [&](double f) { progress.report("lake shores", bodies_end, bodies_share, f); },
@@ -180,100 +196,13 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             if (!models) return models.error();
             bake->lake_shores = std::move(models).value();
         }
-        if (shore && !scene.shore.bake_folder.empty()) {
-            progress.report("loading", bodies_share, 1.0, 0.0);
-            auto loaded = load_shore_bake(scene.shore.bake_folder, scene.ocean.waves(), scene.water_level(), terrain);
-            if (!loaded) return in_shore(scene, loaded.error());
-            bake->ocean_shore = std::move(loaded).value();
-            bake->loaded = true;
-            progress.report("loading", bodies_share, 1.0, 1.0);
-        } else if (const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
-                   shore && unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
-            // Nothing the ocean's shore depends on changed: the edit was inland.
-            bake->ocean_shore = options.previous->bake->ocean_shore;
-            bake->shoreline = options.previous->bake->shoreline;
-            bake->distance_resolution = distance_resolution;
-            bake->reused.ocean_shore = true;
-            progress.report("shore waves", bodies_share, 1.0, 1.0);
-        } else if (shore) {
-            // One shoreline bake serves the distance field and the shore model, which
-            // samples it: it may be finer than the model's grid, never coarser.
-            if (distance_resolution < scene.shore.resolution)
-                return in_shore(scene, Error{ErrorCode::invalid_argument,
-                                             fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
-                                                         "which samples it: give a distance resolution of at least {1}",
-                                                         distance_resolution, scene.shore.resolution)});
-            const double shoreline_share = bodies_share + 0.3 * (1.0 - bodies_share);
-            BakeOptions shoreline_options;
-            shoreline_options.resolution = distance_resolution;
-            shoreline_options.threads = options.threads;
-            shoreline_options.cancel = options.cancel;
-            shoreline_options.progress = [&](double f) { progress.report("shoreline", bodies_share, shoreline_share, f); };
-            progress.report("shoreline", bodies_share, shoreline_share, 0.0);
-            auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
-            if (!shoreline) return in_shore(scene, shoreline.error());
-            progress.report("shore waves", shoreline_share, 1.0, 0.0);
-
-            ShoreWaveOptions model_options;
-            model_options.resolution = scene.shore.resolution;
-            model_options.breaking_index = scene.shore.breaking_index;
-            model_options.threads = options.threads;
-            model_options.cancel = options.cancel;
-            model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
-            auto model = ShoreWaves::bake(scene.ocean.waves(), terrain, scene.water_level(), model_options, &*shoreline);
-            if (!model) return in_shore(scene, model.error());
-            bake->ocean_shore = std::move(model).value();
-            bake->shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
-            bake->distance_resolution = distance_resolution;
-        }
+        if (auto st = bake_ocean_shore(scene, terrain, options, progress, bodies_share, *bake); !st) return st.error();
         if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
-
-        auto baked = std::make_shared<Scene>(scene);
-        for (std::size_t l = 0; l < bake->lake_shores.size(); ++l) {
-            const auto& model = bake->lake_shores[l];
-            auto lake = scene.lakes[l].body.with_shore(model && !model->trivial() ? model : nullptr);
-            if (!lake) return lake.error();
-            baked->lakes[l].body = std::move(lake).value();
-        }
-        bake->lakes = scene.lakes;
-        bake->rivers = scene.rivers;
-        // An all-deep model changes nothing: the ocean carries none and queries skip the shore.
-        std::shared_ptr<const ShoreWaves> felt = bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
-        auto ocean = scene.ocean.with_shore(std::move(felt));
-        if (!ocean) return in_shore(scene, ocean.error());
-        baked->ocean = std::move(ocean).value();
-        baked->terrain = terrain;
         bake->terrain = terrain;
-        bake->water_level = scene.water_level();
-        bake->shore = scene.shore;
-        bake->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        baked->bake = std::move(bake);
-        return std::shared_ptr<const Scene>(std::move(baked));
+        return detail::finish_scene_bake(scene, std::move(bake), start);
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("scene \"{}\": the bake failed: {}", scene.name, e.what())};
     }
-}
-
-bool Scene::baked() const {
-    const bool has_bodies = !lakes.empty() || !rivers.empty();
-    if (!has_bodies && !(shore.enabled && has_ocean)) return true;
-    if (!bake || !(bake->terrain == terrain)) return false;
-    if (has_bodies && (!bake->bodies || !same_bodies(*this, *bake))) return false;
-    if (shore.enabled && !lakes.empty()) {
-        if (bake->lake_shores.size() != lakes.size()) return false;
-        for (std::size_t l = 0; l < lakes.size(); ++l) {
-            const auto& model = bake->lake_shores[l];
-            if (lakes[l].body.shore() != (model && !model->trivial() ? model : nullptr)) return false;
-        }
-    }
-    if (!(shore.enabled && has_ocean)) return true;
-    if (bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
-        bake->shore.resolution != shore.resolution || bake->shore.breaking_index != shore.breaking_index ||
-        bake->shore.bake_folder != shore.bake_folder)
-        return false;
-    const auto& model = bake->ocean_shore;
-    const bool felt = model && !model->trivial();
-    return ocean.shore() == (felt ? model : nullptr);
 }
 
 Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {

@@ -38,9 +38,6 @@ struct ChannelInputs {
 /// psi on the left (+1) or right (-1) bank at `along`.
 double bank_psi(const ChannelInputs& in, double own_discharge, double along, int side);
 
-/// Packs what the water evaluation samples (RiverBake::query_texels) from the river's
-/// surface, depth and tangent fields and the weights of its waves and the still water's.
-void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight);
 
 /// Fills `river`'s grid fields from its centreline (bake_profile) and `in`.
 Status bake_channel(const ChannelInputs& in, RiverBake& river);

@@ -1,0 +1,22 @@
+// Writing a saved bake's files (internal to Tidewater::bake); bake_files.hpp reads them.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tidewater/detail/bake_files.hpp"
+#include "tidewater/result.hpp"
+
+namespace tidewater::detail {
+
+/// Writes `values` (nx by nz, rows along +z) as dir/name.png; returns its sidecar entry
+/// (file, unit, zero_pixel, step, max_error).
+Result<nlohmann::json> write_field_png(const std::filesystem::path& dir, const std::string& name, const std::vector<float>& values,
+                                       int nx, int nz, const char* unit);
+
+/// Writes text to a file, failing with the path when it cannot.
+Status write_text_file(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace tidewater::detail

@@ -1,0 +1,22 @@
+// PNG writing for baked fields, heightmaps and rendered frames (internal to
+// Tidewater::bake; the tools and tests use it, hosts write images their own way).
+// Writes are atomic: a temporary file beside the target is renamed over it only when
+// complete, so a failure never leaves a half-written image. Threading: reentrant.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "tidewater/detail/image_io.hpp"
+#include "tidewater/result.hpp"
+
+namespace tidewater::detail {
+
+/// Writes RGBA8 pixels (row-major from the top row) as PNG.
+Status write_png_rgba8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba);
+
+/// Writes a 16-bit greyscale PNG (heightmaps, baked fields).
+Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& image);
+
+}  // namespace tidewater::detail

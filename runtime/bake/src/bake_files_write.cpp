@@ -1,0 +1,39 @@
+// Writing a saved bake's files (internal to Tidewater::bake): fields as 16-bit grey PNGs
+// in the encoding bake_files.hpp reads, and plain text files.
+#include "tidewater/detail/bake_files_write.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <fstream>
+
+#include "tidewater/detail/image_write.hpp"
+
+namespace tidewater::detail {
+
+namespace fs = std::filesystem;
+
+Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& name, const std::vector<float>& values, int nx, int nz,
+                                       const char* unit) {
+    if (values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz))
+        return Error{ErrorCode::internal, fmt::format("field {}: {} values for a {}x{} grid", name, values.size(), nx, nz)};
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    const FieldEncoding e = FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo), values.empty() ? 0.0 : static_cast<double>(*hi));
+    Gray16Image img;
+    img.width = nx;
+    img.height = nz;
+    img.pixels.resize(values.size());
+    for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
+    const std::string file = name + ".png";
+    if (auto st = write_png_gray16(dir / file, img); !st) return st.error();
+    return nlohmann::json{{"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
+}
+
+Status write_text_file(const fs::path& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text << "\n";
+    out.close();
+    if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", path.string())};
+    return {};
+}
+
+}  // namespace tidewater::detail
