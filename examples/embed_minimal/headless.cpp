@@ -15,6 +15,8 @@
 #include <png.h>
 #include <vulkan/vulkan.h>
 
+#include "../common/example_device.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -48,14 +50,9 @@ struct Image {
     VkImageView view = VK_NULL_HANDLE;
 };
 
-struct Host {
-    VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    std::uint32_t family = 0;
-    VkQueue queue = VK_NULL_HANDLE;
-    VkPhysicalDeviceFeatures enabled{};
+/// The host's device (example_device.hpp: instance, device, queue, the feature chain),
+/// a command pool, and its target images.
+struct Host : tidewater::examples::ExampleDevice {
     VkCommandPool pool = VK_NULL_HANDLE;
 
     std::uint32_t memory_type(std::uint32_t bits, VkMemoryPropertyFlags want) const {
@@ -98,77 +95,15 @@ struct Host {
         vkFreeMemory(device, img.memory, nullptr);
     }
 
-    /// Instance (with the validation layer when asked), the first device that has Vulkan
-    /// 1.3, tessellation and a graphics + compute queue, and the feature chain Tidewater needs.
     bool create(bool validation) {
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.pApplicationName = "embed_minimal";
-        app.apiVersion = VK_API_VERSION_1_3;
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-        VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ii.pApplicationInfo = &app;
-        if (validation) {
-            ii.enabledLayerCount = 1;
-            ii.ppEnabledLayerNames = &layer;
-            ii.enabledExtensionCount = 1;
-            ii.ppEnabledExtensionNames = &extension;
-        }
-        if (!check(vkCreateInstance(&ii, nullptr, &instance), "vkCreateInstance")) return false;
-        if (validation) {
-            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-            mi.pfnUserCallback = &on_message;
-            auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-            if (!create_messenger || !check(create_messenger(instance, &mi, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT"))
-                return false;
-        }
-        std::uint32_t count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> devices(count);
-        vkEnumeratePhysicalDevices(instance, &count, devices.data());
-        for (VkPhysicalDevice d : devices) {
-            VkPhysicalDeviceProperties props;
-            vkGetPhysicalDeviceProperties(d, &props);
-            VkPhysicalDeviceFeatures features;
-            vkGetPhysicalDeviceFeatures(d, &features);
-            if (props.apiVersion < VK_API_VERSION_1_3 || !features.tessellationShader) continue;
-            std::uint32_t families = 0;
-            vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
-            std::vector<VkQueueFamilyProperties> fp(families);
-            vkGetPhysicalDeviceQueueFamilyProperties(d, &families, fp.data());
-            for (std::uint32_t f = 0; f < families; ++f)
-                if ((fp[f].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (fp[f].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
-                    physical = d;
-                    family = f;
-                    enabled.fillModeNonSolid = features.fillModeNonSolid;
-                    break;
-                }
-            if (physical) break;
-        }
-        if (!physical) {
-            std::fprintf(stderr, "no Vulkan 1.3 device with tessellation and a graphics + compute queue\n");
+        tidewater::examples::ExampleDeviceOptions options;
+        options.application = "embed_minimal";
+        options.validation = validation;
+        options.on_message = &on_message;
+        if (!ExampleDevice::create(options)) {
+            std::fprintf(stderr, "%s\n", error().c_str());
             return false;
         }
-        // The feature chain: dynamic rendering (Vulkan 1.3) and tessellation, plus
-        // fillModeNonSolid for the wireframe view where the device has it.
-        VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        f13.dynamicRendering = VK_TRUE;
-        enabled.tessellationShader = VK_TRUE;
-        const float priority = 1.0f;
-        VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        qi.queueFamilyIndex = family;
-        qi.queueCount = 1;
-        qi.pQueuePriorities = &priority;
-        VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        di.pNext = &f13;
-        di.queueCreateInfoCount = 1;
-        di.pQueueCreateInfos = &qi;
-        di.pEnabledFeatures = &enabled;
-        if (!check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice")) return false;
-        vkGetDeviceQueue(device, family, 0, &queue);
         VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pi.queueFamilyIndex = family;
@@ -176,28 +111,9 @@ struct Host {
     }
 
     void destroy() {
-        if (device) {
-            vkDestroyCommandPool(device, pool, nullptr);
-            vkDestroyDevice(device, nullptr);
-        }
-        if (messenger) {
-            auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-            destroy_messenger(instance, messenger, nullptr);
-        }
-        if (instance) vkDestroyInstance(instance, nullptr);
-    }
-
-    tidewater::render::DeviceContext context() const {
-        tidewater::render::DeviceContext c;
-        c.instance = instance;
-        c.physical_device = physical;
-        c.device = device;
-        c.queue_family = family;
-        c.queue = queue;
-        c.enabled_features = enabled;  // what vkCreateDevice was given
-        c.dynamic_rendering = true;
-        return c;
+        if (device && pool) vkDestroyCommandPool(device, pool, nullptr);
+        pool = VK_NULL_HANDLE;
+        ExampleDevice::destroy();
     }
 };
 

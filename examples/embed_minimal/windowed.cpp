@@ -11,6 +11,8 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include "../common/example_device.hpp"
+
 #include <tidewater/render/renderer.hpp>
 #include <tidewater/scene_bake.hpp>
 #include <tidewater/tidewater.hpp>
@@ -40,16 +42,11 @@ struct Depth {
     VkImageView view = VK_NULL_HANDLE;
 };
 
-struct App {
+/// The host's device (example_device.hpp: instance, device, queue, the feature chain)
+/// with its window, surface, swapchain and frames in flight.
+struct App : tidewater::examples::ExampleDevice {
     GLFWwindow* window = nullptr;
-    VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
     VkSurfaceKHR surface = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    std::uint32_t family = 0;
-    VkQueue queue = VK_NULL_HANDLE;
-    VkPhysicalDeviceFeatures enabled{};
     VkCommandPool pool = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain = VK_NULL_HANDLE;
     VkSurfaceFormatKHR format{};
@@ -73,71 +70,22 @@ struct App {
     bool create_device() {
         std::uint32_t glfw_count = 0;
         const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&glfw_count);
-        std::vector<const char*> extensions(glfw_extensions, glfw_extensions + glfw_count);
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.apiVersion = VK_API_VERSION_1_3;
-        VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ii.pApplicationInfo = &app;
-        ii.enabledLayerCount = 1;
-        ii.ppEnabledLayerNames = &layer;
-        ii.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-        ii.ppEnabledExtensionNames = extensions.data();
-        if (vkCreateInstance(&ii, nullptr, &instance) != VK_SUCCESS) return false;
-        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-        mi.pfnUserCallback = &on_message;
-        auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create_messenger || create_messenger(instance, &mi, nullptr, &messenger) != VK_SUCCESS) return false;
-        if (glfwCreateWindowSurface(instance, window, nullptr, &surface) != VK_SUCCESS) return false;
-
-        std::uint32_t count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> devices(count);
-        vkEnumeratePhysicalDevices(instance, &count, devices.data());
-        for (VkPhysicalDevice d : devices) {
-            VkPhysicalDeviceProperties props;
-            vkGetPhysicalDeviceProperties(d, &props);
-            VkPhysicalDeviceFeatures features;
-            vkGetPhysicalDeviceFeatures(d, &features);
-            if (props.apiVersion < VK_API_VERSION_1_3 || !features.tessellationShader) continue;
-            std::uint32_t families = 0;
-            vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
-            std::vector<VkQueueFamilyProperties> fp(families);
-            vkGetPhysicalDeviceQueueFamilyProperties(d, &families, fp.data());
-            for (std::uint32_t f = 0; f < families && !physical; ++f) {
-                VkBool32 present = VK_FALSE;
-                vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface, &present);
-                if (present && (fp[f].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (fp[f].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
-                    physical = d;
-                    family = f;
-                    enabled.fillModeNonSolid = features.fillModeNonSolid;
-                }
-            }
-            if (physical) break;
+        tidewater::examples::ExampleDeviceOptions options;
+        options.application = "embed_minimal_windowed";
+        options.on_message = &on_message;
+        options.instance_extensions.assign(glfw_extensions, glfw_extensions + glfw_count);
+        options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+        options.on_instance = [this](VkInstance made) {
+            return glfwCreateWindowSurface(made, window, nullptr, &surface) == VK_SUCCESS;
+        };
+        options.can_present = [this](VkPhysicalDevice d, std::uint32_t f) {
+            VkBool32 present = VK_FALSE;
+            return vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface, &present) == VK_SUCCESS && present;
+        };
+        if (!create(options)) {
+            std::fprintf(stderr, "%s\n", error().c_str());
+            return false;
         }
-        if (!physical) return false;
-        VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        f13.dynamicRendering = VK_TRUE;
-        enabled.tessellationShader = VK_TRUE;
-        const float priority = 1.0f;
-        VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        qi.queueFamilyIndex = family;
-        qi.queueCount = 1;
-        qi.pQueuePriorities = &priority;
-        const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
-        VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        di.pNext = &f13;
-        di.queueCreateInfoCount = 1;
-        di.pQueueCreateInfos = &qi;
-        di.enabledExtensionCount = 1;
-        di.ppEnabledExtensionNames = &swapchain_extension;
-        di.pEnabledFeatures = &enabled;
-        if (vkCreateDevice(physical, &di, nullptr, &device) != VK_SUCCESS) return false;
-        vkGetDeviceQueue(device, family, 0, &queue);
         VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pi.queueFamilyIndex = family;
@@ -246,37 +194,21 @@ struct App {
         return true;
     }
 
-    tidewater::render::DeviceContext context() const {
-        tidewater::render::DeviceContext c;
-        c.instance = instance;
-        c.physical_device = physical;
-        c.device = device;
-        c.queue_family = family;
-        c.queue = queue;
-        c.enabled_features = enabled;
-        c.dynamic_rendering = true;
-        return c;
-    }
-
     void destroy() {
         if (device) {
-            vkDeviceWaitIdle(device);
+            vkDeviceWaitIdle(device);  // the host's last frames: nothing to report on the way out
             destroy_swapchain();
             for (std::uint32_t s = 0; s < kFramesInFlight; ++s) {
                 vkDestroyFence(device, fences[s], nullptr);
                 vkDestroySemaphore(device, acquired[s], nullptr);
             }
             vkDestroyCommandPool(device, pool, nullptr);
-            vkDestroyDevice(device, nullptr);
         }
         if (surface) vkDestroySurfaceKHR(instance, surface, nullptr);
-        if (messenger) {
-            auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-            destroy_messenger(instance, messenger, nullptr);
-        }
-        if (instance) vkDestroyInstance(instance, nullptr);
+        surface = VK_NULL_HANDLE;
+        ExampleDevice::destroy();
         if (window) glfwDestroyWindow(window);
+        window = nullptr;
     }
 };
 

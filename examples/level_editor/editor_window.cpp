@@ -62,79 +62,24 @@ Status EditorWindow::create(int width, int height, bool validation) {
 
     std::uint32_t glfw_count = 0;
     const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&glfw_count);
-    std::vector<const char*> extensions(glfw_extensions, glfw_extensions + glfw_count);
-    std::vector<const char*> layers;
-    if (validation) {
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        layers.push_back("VK_LAYER_KHRONOS_validation");
-    }
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "tidewater-editor";
-    app.apiVersion = VK_API_VERSION_1_3;
-    VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    ii.pApplicationInfo = &app;
-    ii.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
-    ii.ppEnabledLayerNames = layers.data();
-    ii.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-    ii.ppEnabledExtensionNames = extensions.data();
-    EDITOR_VK(vkCreateInstance(&ii, nullptr, &instance_));
-    if (validation) {
-        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-        mi.pfnUserCallback = &EditorWindow::on_message;
-        mi.pUserData = this;
-        auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (create_messenger) EDITOR_VK(create_messenger(instance_, &mi, nullptr, &messenger_));
-    }
-    EDITOR_VK(glfwCreateWindowSurface(instance_, window_, nullptr, &surface_));
-
-    std::uint32_t count = 0;
-    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
-    std::vector<VkPhysicalDevice> devices(count);
-    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
-    for (VkPhysicalDevice d : devices) {
-        VkPhysicalDeviceProperties props;
-        vkGetPhysicalDeviceProperties(d, &props);
-        VkPhysicalDeviceFeatures features;
-        vkGetPhysicalDeviceFeatures(d, &features);
-        if (props.apiVersion < VK_API_VERSION_1_3 || !features.tessellationShader) continue;
-        std::uint32_t families = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
-        std::vector<VkQueueFamilyProperties> fp(families);
-        vkGetPhysicalDeviceQueueFamilyProperties(d, &families, fp.data());
-        for (std::uint32_t f = 0; f < families && !physical_; ++f) {
-            VkBool32 present = VK_FALSE;
-            vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface_, &present);
-            if (present && (fp[f].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (fp[f].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
-                physical_ = d;
-                family_ = f;
-                enabled_.fillModeNonSolid = features.fillModeNonSolid;
-            }
-        }
-        if (physical_) break;
-    }
-    if (!physical_) return Error{ErrorCode::no_device, "editor: no Vulkan 1.3 device with tessellation that can present to the window"};
-    // Tidewater's feature chain: dynamic rendering, tessellation, fillModeNonSolid where there.
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    f13.dynamicRendering = VK_TRUE;
-    enabled_.tessellationShader = VK_TRUE;
-    const float priority = 1.0f;
-    VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    qi.queueFamilyIndex = family_;
-    qi.queueCount = 1;
-    qi.pQueuePriorities = &priority;
-    const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
-    VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    di.pNext = &f13;
-    di.queueCreateInfoCount = 1;
-    di.pQueueCreateInfos = &qi;
-    di.enabledExtensionCount = 1;
-    di.ppEnabledExtensionNames = &swapchain_extension;
-    di.pEnabledFeatures = &enabled_;
-    EDITOR_VK(vkCreateDevice(physical_, &di, nullptr, &device_));
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
+    examples::ExampleDeviceOptions options;
+    options.application = "tidewater-editor";
+    options.validation = validation;
+    options.on_message = &EditorWindow::on_message;
+    options.message_user = this;
+    options.instance_extensions.assign(glfw_extensions, glfw_extensions + glfw_count);
+    options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+    options.on_instance = [this](VkInstance made) { return glfwCreateWindowSurface(made, window_, nullptr, &surface_) == VK_SUCCESS; };
+    options.can_present = [this](VkPhysicalDevice d, std::uint32_t f) {
+        VkBool32 present = VK_FALSE;
+        return vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface_, &present) == VK_SUCCESS && present;
+    };
+    if (!gpu_.create(options)) return Error{ErrorCode::no_device, "editor: " + gpu_.error()};
+    instance_ = gpu_.instance;
+    physical_ = gpu_.physical;
+    device_ = gpu_.device;
+    family_ = gpu_.family;
+    queue_ = gpu_.queue;
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pi.queueFamilyIndex = family_;
@@ -277,17 +222,7 @@ void EditorWindow::destroy_swapchain() {
     swapchain_ = VK_NULL_HANDLE;
 }
 
-render::DeviceContext EditorWindow::context() const {
-    render::DeviceContext c;
-    c.instance = instance_;
-    c.physical_device = physical_;
-    c.device = device_;
-    c.queue_family = family_;
-    c.queue = queue_;
-    c.enabled_features = enabled_;
-    c.dynamic_rendering = true;
-    return c;
-}
+render::DeviceContext EditorWindow::context() const { return gpu_.context(); }
 
 Result<bool> EditorWindow::begin_frame(Frame& frame, const std::function<Status(VkExtent2D)>& resized) {
     const std::uint32_t s = static_cast<std::uint32_t>(frame_counter_ % kFramesInFlight);
@@ -405,18 +340,11 @@ void EditorWindow::destroy() {
             vkDestroySemaphore(device_, acquired_[s], nullptr);
         }
         vkDestroyCommandPool(device_, pool_, nullptr);
-        vkDestroyDevice(device_, nullptr);
         device_ = VK_NULL_HANDLE;
     }
     if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
     surface_ = VK_NULL_HANDLE;
-    if (messenger_) {
-        auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        destroy_messenger(instance_, messenger_, nullptr);
-        messenger_ = VK_NULL_HANDLE;
-    }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
+    gpu_.destroy();  // the device, the validation messenger and the instance
     instance_ = VK_NULL_HANDLE;
     if (window_) {
         glfwDestroyWindow(window_);

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "../common/example_device.hpp"
+
 #include <tidewater/render/device_context.hpp>
 #include <tidewater/result.hpp>
 
@@ -62,14 +64,14 @@ private:
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     GLFWwindow* window_ = nullptr;
+    examples::ExampleDevice gpu_;  // instance, device and queue (../common/example_device.hpp)
+    // gpu_'s handles, named as this file uses them.
     VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
     std::uint32_t family_ = 0;
     VkQueue queue_ = VK_NULL_HANDLE;
-    VkPhysicalDeviceFeatures enabled_{};
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkSurfaceFormatKHR format_{};

@@ -13,20 +13,17 @@
 #include "../baked_scene.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "vulkan_fixture.hpp"
+#include "../../examples/common/example_device.hpp"
 
 namespace tidewater {
 namespace {
 
-/// A minimal Vulkan host written the way an engine would, independent of Tidewater's helpers.
-class TestHost {
+/// A Vulkan host written the way an engine would, independent of Tidewater's helpers: its
+/// device as the examples make theirs (examples/common/example_device.hpp), under the
+/// validation layer, with its own targets and command pool.
+class TestHost : public examples::ExampleDevice {
 public:
     std::vector<std::string> messages;
-    VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    VkQueue queue = VK_NULL_HANDLE;
-    std::uint32_t family = 0;
     VkCommandPool pool = VK_NULL_HANDLE;
     struct Image {
         VkImage image = VK_NULL_HANDLE;
@@ -90,45 +87,11 @@ public:
     void create(VkFormat color_fmt = VK_FORMAT_R8G8B8A8_UNORM, VkFormat depth_fmt = VK_FORMAT_D32_SFLOAT) {
         color_format = color_fmt;
         depth_format = depth_fmt;
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.apiVersion = VK_API_VERSION_1_3;
-        VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ii.pApplicationInfo = &app;
-        ii.enabledLayerCount = 1;
-        ii.ppEnabledLayerNames = &layer;
-        ii.enabledExtensionCount = 1;
-        ii.ppEnabledExtensionNames = &ext;
-        ASSERT_EQ(vkCreateInstance(&ii, nullptr, &instance), VK_SUCCESS);
-        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
-        mi.pfnUserCallback = &on_message;
-        mi.pUserData = this;
-        auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-        ASSERT_NE(create_messenger, nullptr);
-        create_messenger(instance, &mi, nullptr, &messenger);
-        std::uint32_t count = 1;
-        vkEnumeratePhysicalDevices(instance, &count, &physical);
-        ASSERT_EQ(count, 1u);
-        VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        f13.dynamicRendering = VK_TRUE;
-        VkPhysicalDeviceFeatures features{};
-        features.tessellationShader = VK_TRUE;
-        features.fillModeNonSolid = VK_TRUE;
-        const float priority = 1.0f;
-        VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        qi.queueFamilyIndex = family;
-        qi.queueCount = 1;
-        qi.pQueuePriorities = &priority;
-        VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        di.pNext = &f13;
-        di.queueCreateInfoCount = 1;
-        di.pQueueCreateInfos = &qi;
-        di.pEnabledFeatures = &features;
-        ASSERT_EQ(vkCreateDevice(physical, &di, nullptr, &device), VK_SUCCESS);
-        vkGetDeviceQueue(device, family, 0, &queue);
+        examples::ExampleDeviceOptions options;
+        options.application = "tidewater embedding test";
+        options.on_message = &on_message;
+        options.message_user = this;
+        ASSERT_TRUE(ExampleDevice::create(options)) << error();
         VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pi.queueFamilyIndex = family;
         vkCreateCommandPool(device, &pi, nullptr, &pool);
@@ -158,24 +121,7 @@ public:
             vkFreeMemory(device, img->memory, nullptr);
         }
         vkDestroyCommandPool(device, pool, nullptr);
-        vkDestroyDevice(device, nullptr);
-        auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-        destroy_messenger(instance, messenger, nullptr);
-        vkDestroyInstance(instance, nullptr);
-        device = VK_NULL_HANDLE;
-    }
-
-    render::DeviceContext context() const {
-        render::DeviceContext c;
-        c.instance = instance;
-        c.physical_device = physical;
-        c.device = device;
-        c.queue_family = family;
-        c.queue = queue;
-        c.enabled_features.tessellationShader = VK_TRUE;  // as given to vkCreateDevice
-        c.enabled_features.fillModeNonSolid = VK_TRUE;
-        c.dynamic_rendering = true;
-        return c;
+        ExampleDevice::destroy();
     }
 };
 

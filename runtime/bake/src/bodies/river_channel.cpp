@@ -149,12 +149,26 @@ double bank_psi(const ChannelInputs& in, double own_discharge, double along, int
     return psi;
 }
 
-Status bake_channel(const ChannelInputs& in, RiverBake& river) {
+namespace {
+
+/// The channel's centreline, extended past a lake or ocean mouth along the plume's axis
+/// (widening to three times the mouth), each sample's reach (half width, banks and their
+/// slope), and the grid over them; an error when the grid would be too large.
+struct ChannelLine {
+    std::vector<glm::dvec2> line;
+    std::vector<double> along, width, reach;
+};
+Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& river) {
     const double mouth = river.along.back();
     const double mouth_width = river.width.back();
-    // The centreline and, past a lake or ocean mouth, the plume's axis.
-    std::vector<glm::dvec2> line = river.centreline;
-    std::vector<double> along = river.along, width = river.width;
+    ChannelLine c;
+    std::vector<glm::dvec2>& line = c.line;
+    line = river.centreline;
+    c.along = river.along;
+    c.width = river.width;
+    std::vector<double>& along = c.along;
+    std::vector<double>& width = c.width;
+    std::vector<double>& reach = c.reach;
     if (in.plume_length > 0.0) {
         const glm::dvec2 d = line.back() - line[line.size() - 2];
         const glm::dvec2 t = d / std::sqrt(d.x * d.x + d.y * d.y);
@@ -167,7 +181,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
         }
     }
     const double widest = *std::max_element(width.begin(), width.end());
-    std::vector<double> reach(width.size());
+    reach.resize(width.size());
     for (std::size_t k = 0; k < width.size(); ++k) reach[k] = width[k] + 2.0 * in.texel;  // half width, banks and their slope
     glm::dvec2 lo = line[0], hi = line[0];
     for (const auto& p : line) {
@@ -186,7 +200,102 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
                                  in.texel, nx, nz, kMaxRiverGrid)};
     g.nx = static_cast<int>(nx);
     g.nz = static_cast<int>(nz);
-    const ChannelFrame frame = nearest_on_line(g, line, along, reach);
+    return c;
+}
+
+/// The depth-integrated current h u = (-d psi/dz, d psi/dx) and the current u on the wet
+/// texels from the solved stream function; returns the summed depth of the river's own
+/// texels (its wet area over texel^2).
+double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, const std::vector<double>& psi,
+                        const ChannelFrame& frame, double mouth, RiverBake& river) {
+    const FieldGrid& g = river.grid;
+    // h u = (-d psi/dz, d psi/dx) by central differences. A bank texel next to the water
+    // carries half the flux of its faces, so the flux summed across a section is exactly
+    // the psi difference between the banks: the discharge.
+    river.psi.assign(g.size(), 0.0f);
+    river.discharge_x.assign(g.size(), 0.0f);
+    river.discharge_z.assign(g.size(), 0.0f);
+    river.flow_x.assign(g.size(), 0.0f);
+    river.flow_z.assign(g.size(), 0.0f);
+    auto has = [&](int i, int j) { return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]); };
+    auto flowing = [&](int i, int j) { return has(i, j) && problem.cell[g.index(i, j)] == FlowCell::wet; };
+    auto next_to_land = [&](int i, int j) {
+        for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+            const int a = i + di, b = j + dj;
+            if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) continue;
+            const FlowCell c = problem.cell[g.index(a, b)];
+            if (c == FlowCell::bank || c == FlowCell::island) return true;
+        }
+        return false;
+    };
+    auto depth_gradient = [&](int i, int j) {
+        auto d = [&](int a, int b) {
+            a = std::clamp(a, 0, g.nx - 1);
+            b = std::clamp(b, 0, g.nz - 1);
+            return static_cast<double>(river.depth[g.index(a, b)]);
+        };
+        return glm::dvec2(d(i + 1, j) - d(i - 1, j), d(i, j + 1) - d(i, j - 1));
+    };
+    double area_sum = 0.0;
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t t = g.index(i, j);
+            if (!has(i, j)) continue;
+            river.psi[t] = static_cast<float>(psi[t]);
+            const bool wet = problem.cell[t] == FlowCell::wet;
+            // d psi along one axis: across faces to water (and, from water, to banks and islands).
+            auto derivative = [&](int di, int dj) {
+                double sum = 0.0;
+                int faces = 0;
+                for (const int sgn : {1, -1}) {
+                    const int a = i + sgn * di, b = j + sgn * dj;
+                    if (!has(a, b) || !(wet || flowing(a, b))) continue;
+                    sum += sgn * (psi[g.index(a, b)] - psi[t]);
+                    ++faces;
+                }
+                // Water between two faces: a central difference; water at an open end: one-sided.
+                return wet && faces == 1 ? sum / g.texel : sum / (2.0 * g.texel);
+            };
+            const double dpsi_dx = derivative(1, 0), dpsi_dz = derivative(0, 1);
+            double fade = 1.0;
+            if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::plume))
+                fade = 1.0 - smoothstep(mouth, mouth + in.plume_length, frame.along[t]);
+            const double qx = -dpsi_dz * fade, qz = dpsi_dx * fade;
+            river.discharge_x[t] = static_cast<float>(qx);
+            river.discharge_z[t] = static_cast<float>(qz);
+            if (wet) {
+                const double h = std::max(static_cast<double>(problem.depth[t]), 0.05);
+                double ux = qx / h, uz = qz / h;
+                // At the waterline the staircase of texels bends the discrete contours of psi;
+                // the current there keeps the no-flux condition: nothing across the bank,
+                // whose normal is the depth's gradient.
+                if (next_to_land(i, j)) {
+                    const glm::dvec2 normal = depth_gradient(i, j);
+                    const double len = std::hypot(normal.x, normal.y);
+                    if (len > 0.0) {
+                        const double across = (ux * normal.x + uz * normal.y) / (len * len);
+                        ux -= across * normal.x;
+                        uz -= across * normal.y;
+                    }
+                }
+                river.flow_x[t] = static_cast<float>(ux);
+                river.flow_z[t] = static_cast<float>(uz);
+                if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river)) area_sum += static_cast<double>(problem.depth[t]);
+            }
+        }
+    return area_sum;
+}
+
+}  // namespace
+
+Status bake_channel(const ChannelInputs& in, RiverBake& river) {
+    const double mouth = river.along.back();
+    const double mouth_width = river.width.back();
+    auto channel = channel_line_and_grid(in, river);
+    if (!channel) return channel.error();
+    const std::vector<double>&along = channel->along, &width = channel->width;
+    FieldGrid& g = river.grid;
+    const ChannelFrame frame = nearest_on_line(g, channel->line, along, channel->reach);
     const MonotoneCubic surface_at(river.along, river.surface);
 
     StreamProblem problem;
@@ -282,80 +391,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     if (!solved) return solved.error();
     const std::vector<double>& psi = solved->psi;
 
-    // h u = (-d psi/dz, d psi/dx) by central differences. A bank texel next to the water
-    // carries half the flux of its faces, so the flux summed across a section is exactly
-    // the psi difference between the banks: the discharge.
-    river.psi.assign(g.size(), 0.0f);
-    river.discharge_x.assign(g.size(), 0.0f);
-    river.discharge_z.assign(g.size(), 0.0f);
-    river.flow_x.assign(g.size(), 0.0f);
-    river.flow_z.assign(g.size(), 0.0f);
-    auto has = [&](int i, int j) { return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]); };
-    auto flowing = [&](int i, int j) { return has(i, j) && problem.cell[g.index(i, j)] == FlowCell::wet; };
-    auto next_to_land = [&](int i, int j) {
-        for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-            const int a = i + di, b = j + dj;
-            if (a < 0 || b < 0 || a >= g.nx || b >= g.nz) continue;
-            const FlowCell c = problem.cell[g.index(a, b)];
-            if (c == FlowCell::bank || c == FlowCell::island) return true;
-        }
-        return false;
-    };
-    auto depth_gradient = [&](int i, int j) {
-        auto d = [&](int a, int b) {
-            a = std::clamp(a, 0, g.nx - 1);
-            b = std::clamp(b, 0, g.nz - 1);
-            return static_cast<double>(river.depth[g.index(a, b)]);
-        };
-        return glm::dvec2(d(i + 1, j) - d(i - 1, j), d(i, j + 1) - d(i, j - 1));
-    };
-    double area_sum = 0.0;
-    for (int j = 0; j < g.nz; ++j)
-        for (int i = 0; i < g.nx; ++i) {
-            const std::size_t t = g.index(i, j);
-            if (!has(i, j)) continue;
-            river.psi[t] = static_cast<float>(psi[t]);
-            const bool wet = problem.cell[t] == FlowCell::wet;
-            // d psi along one axis: across faces to water (and, from water, to banks and islands).
-            auto derivative = [&](int di, int dj) {
-                double sum = 0.0;
-                int faces = 0;
-                for (const int sgn : {1, -1}) {
-                    const int a = i + sgn * di, b = j + sgn * dj;
-                    if (!has(a, b) || !(wet || flowing(a, b))) continue;
-                    sum += sgn * (psi[g.index(a, b)] - psi[t]);
-                    ++faces;
-                }
-                // Water between two faces: a central difference; water at an open end: one-sided.
-                return wet && faces == 1 ? sum / g.texel : sum / (2.0 * g.texel);
-            };
-            const double dpsi_dx = derivative(1, 0), dpsi_dz = derivative(0, 1);
-            double fade = 1.0;
-            if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::plume))
-                fade = 1.0 - smoothstep(mouth, mouth + in.plume_length, frame.along[t]);
-            const double qx = -dpsi_dz * fade, qz = dpsi_dx * fade;
-            river.discharge_x[t] = static_cast<float>(qx);
-            river.discharge_z[t] = static_cast<float>(qz);
-            if (wet) {
-                const double h = std::max(static_cast<double>(problem.depth[t]), 0.05);
-                double ux = qx / h, uz = qz / h;
-                // At the waterline the staircase of texels bends the discrete contours of psi;
-                // the current there keeps the no-flux condition: nothing across the bank,
-                // whose normal is the depth's gradient.
-                if (next_to_land(i, j)) {
-                    const glm::dvec2 normal = depth_gradient(i, j);
-                    const double len = std::hypot(normal.x, normal.y);
-                    if (len > 0.0) {
-                        const double across = (ux * normal.x + uz * normal.y) / (len * len);
-                        ux -= across * normal.x;
-                        uz -= across * normal.y;
-                    }
-                }
-                river.flow_x[t] = static_cast<float>(ux);
-                river.flow_z[t] = static_cast<float>(uz);
-                if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river)) area_sum += static_cast<double>(problem.depth[t]);
-            }
-        }
+    const double area_sum = current_from_psi(in, problem, psi, frame, mouth, river);
     std::vector<float> river_weight, still_weight;
     blend_with_still_water(g, still, std::max(mouth_width, 2.0 * g.texel), river.texel, river_weight, still_weight);
     river.channel_s = frame.along;

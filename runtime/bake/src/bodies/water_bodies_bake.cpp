@@ -169,6 +169,84 @@ Result<std::vector<std::size_t>> bake_order(const Scene& scene, const std::vecto
     return order;
 }
 
+/// Each river's centreline sampled, its mouth found (ocean, lake, river or the domain's
+/// edge), the order to bake them in (a river before its tributaries) and the discharge
+/// each carries below its tributaries.
+struct RiverPlans {
+    std::vector<RiverPlan> plans;
+    std::vector<std::size_t> order;
+};
+Result<RiverPlans> plan_rivers(const Scene& scene, const Terrain& uncut, const std::vector<LakeBake>& lakes) {
+    const std::size_t count = scene.rivers.size();
+    std::vector<CentrelineSamples> raw(count);
+    for (std::size_t r = 0; r < count; ++r) {
+        const auto& path = scene.rivers[r].path;
+        const auto& w = scene.rivers[r].width;
+        const double spacing = 0.25 * *std::min_element(w.begin(), w.end());
+        double length = 0.0;
+        for (std::size_t k = 0; k + 1 < path.size(); ++k) length += std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
+        // Samples every quarter of the narrowest width: a very long, very narrow river would
+        // need more than memory allows, and its grid could not hold it anyway.
+        if (length / spacing > kMaxCentrelineSamples)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}/path: the river \"{}\" is {:.0f} m long and {} m wide at its narrowest: at most "
+                                     "{:.0f} widths long allowed",
+                                     river_path(scene, r), scene.rivers[r].name, length, 4.0 * spacing, kMaxCentrelineSamples / 4.0)};
+        raw[r] = resample_centreline(path, w, spacing);
+    }
+    RiverPlans out;
+    out.plans.resize(count);
+    for (std::size_t r = 0; r < count; ++r)
+        if (auto st = plan_mouth(scene, uncut, lakes, raw, r, out.plans[r]); !st) return st.error();
+    auto order = bake_order(scene, out.plans);
+    if (!order) return order.error();
+    out.order = std::move(order).value();
+    // Discharges add downstream: tributaries (later in the order) first.
+    for (std::size_t r = 0; r < count; ++r) out.plans[r].total = scene.rivers[r].discharge;
+    for (auto it = out.order.rbegin(); it != out.order.rend(); ++it)
+        if (out.plans[*it].end == RiverEnd::river) out.plans[static_cast<std::size_t>(out.plans[*it].receiver)].total += out.plans[*it].total;
+    return out;
+}
+
+/// Everything a river's bake depends on, for reuse after an edit.
+RiverBakeKey river_key(const SceneRiver& river, const RiverPlan& plan, const ChannelInputs& in, double mouth_level, bool still_mouth) {
+    RiverBakeKey key;
+    key.path = river.path;
+    key.width = river.width;
+    key.discharge = river.discharge;
+    key.manning = river.manning;
+    key.texel = in.texel;
+    key.carve = river.carve;
+    key.samples = plan.samples.points.size();
+    key.end = plan.end;
+    key.receiver = plan.receiver;
+    key.joins_at = plan.joins_at;
+    key.total = plan.total;
+    key.mouth_level = mouth_level;
+    key.psi_left = in.psi_left;
+    key.plume_length = still_mouth ? kPlumeWidths * plan.samples.width.back() : 0.0;
+    key.side = plan.side;
+    for (const Inflow& f : in.inflows) key.inflows.push_back({f.along, f.width, f.discharge, static_cast<double>(f.side)});
+    return key;
+}
+
+/// Whether the previous bake's river `old` is this one: the same key, the same lake
+/// extent where it runs into a lake (its plume), and the same cuts and ground under its
+/// grid (`same_ground`).
+template <typename SameGround>
+bool unchanged_river(const RiverBake& old, const SceneRiver& river, const RiverBakeKey& key, const RiverPlan& plan,
+                     const WaterBodiesBake& previous, const std::vector<LakeBake>& lakes,
+                     const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const SameGround& same_ground) {
+    // NaN mouth levels (domain edge) compare unequal: compare the rest then.
+    RiverBakeKey a = old.key, b = key;
+    if (std::isnan(a.mouth_level) && std::isnan(b.mouth_level)) a.mouth_level = b.mouth_level = 0.0;
+    const auto receiver = static_cast<std::size_t>(plan.receiver);
+    const bool same_receiver = plan.end != RiverEnd::lake || (receiver < previous.lakes.size() &&
+                                                              previous.lakes[receiver].inside == lakes[receiver].inside &&
+                                                              previous.lakes[receiver].grid.corner == lakes[receiver].grid.corner);
+    return old.name == river.name && a == b && same_receiver && old.baked_over == cuts_under(cuts, old.grid) && same_ground(old.grid);
+}
+
 }  // namespace
 
 Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOptions& options) {
@@ -192,32 +270,11 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
     auto lakes = find_lakes(scene, uncut, options);
     if (!lakes) return lakes.error();
     out.lakes = std::move(lakes).value();
+    auto planned = plan_rivers(scene, uncut, out.lakes);
+    if (!planned) return planned.error();
+    const std::vector<RiverPlan>& plans = planned->plans;
+    const std::vector<std::size_t>* order = &planned->order;
     const std::size_t count = scene.rivers.size();
-    std::vector<CentrelineSamples> raw(count);
-    for (std::size_t r = 0; r < count; ++r) {
-        const auto& path = scene.rivers[r].path;
-        const auto& w = scene.rivers[r].width;
-        const double spacing = 0.25 * *std::min_element(w.begin(), w.end());
-        double length = 0.0;
-        for (std::size_t k = 0; k + 1 < path.size(); ++k) length += std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
-        // Samples every quarter of the narrowest width: a very long, very narrow river would
-        // need more than memory allows, and its grid could not hold it anyway.
-        if (length / spacing > kMaxCentrelineSamples)
-            return Error{ErrorCode::invalid_argument,
-                         fmt::format("{}/path: the river \"{}\" is {:.0f} m long and {} m wide at its narrowest: at most "
-                                     "{:.0f} widths long allowed",
-                                     river_path(scene, r), scene.rivers[r].name, length, 4.0 * spacing, kMaxCentrelineSamples / 4.0)};
-        raw[r] = resample_centreline(path, w, spacing);
-    }
-    std::vector<RiverPlan> plans(count);
-    for (std::size_t r = 0; r < count; ++r)
-        if (auto st = plan_mouth(scene, uncut, out.lakes, raw, r, plans[r]); !st) return st.error();
-    auto order = bake_order(scene, plans);
-    if (!order) return order.error();
-    // Discharges add downstream: tributaries (later in the order) first.
-    for (std::size_t r = 0; r < count; ++r) plans[r].total = scene.rivers[r].discharge;
-    for (auto it = order->rbegin(); it != order->rend(); ++it)
-        if (plans[*it].end == RiverEnd::river) plans[static_cast<std::size_t>(plans[*it].receiver)].total += plans[*it].total;
 
     out.rivers.resize(count);
     std::vector<std::shared_ptr<const TerrainCut>> cuts;
@@ -267,45 +324,16 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         }
         bake.mouth_level = profile.mouth_level;
         const bool still_mouth = plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean;
-        RiverBakeKey key;
-        key.path = river.path;
-        key.width = river.width;
-        key.discharge = river.discharge;
-        key.manning = river.manning;
-        key.texel = in.texel;
-        key.carve = river.carve;
-        key.samples = plan.samples.points.size();
-        key.end = plan.end;
-        key.receiver = plan.receiver;
-        key.joins_at = plan.joins_at;
-        key.total = plan.total;
-        key.mouth_level = profile.mouth_level;
-        key.psi_left = in.psi_left;
-        key.plume_length = still_mouth ? kPlumeWidths * plan.samples.width.back() : 0.0;
-        key.side = plan.side;
-        for (const Inflow& f : in.inflows) key.inflows.push_back({f.along, f.width, f.discharge, static_cast<double>(f.side)});
+        RiverBakeKey key = river_key(river, plan, in, profile.mouth_level, still_mouth);
         // Unchanged, over the same terrain under its grid: the previous bake is this one.
-        if (previous && r < previous->rivers.size()) {
-            const RiverBake& old = previous->rivers[r];
-            // NaN mouth levels (domain edge) compare unequal: compare the rest then.
-            RiverBakeKey a = old.key, b = key;
-            if (std::isnan(a.mouth_level) && std::isnan(b.mouth_level)) a.mouth_level = b.mouth_level = 0.0;
-            // A river into a lake sees the lake's extent (its plume): that must be the same too.
-            const bool same_receiver = plan.end != RiverEnd::lake ||
-                                       (static_cast<std::size_t>(plan.receiver) < previous->lakes.size() &&
-                                        previous->lakes[static_cast<std::size_t>(plan.receiver)].inside ==
-                                            out.lakes[static_cast<std::size_t>(plan.receiver)].inside &&
-                                        previous->lakes[static_cast<std::size_t>(plan.receiver)].grid.corner ==
-                                            out.lakes[static_cast<std::size_t>(plan.receiver)].grid.corner);
-            if (old.name == river.name && a == b && same_receiver && old.baked_over == cuts_under(cuts, old.grid) &&
-                same_ground(old.grid)) {
-                bake = old;
-                ++out.reused_rivers;
-                in.terrain = nullptr;
-                if (bake.cut) cuts.push_back(bake.cut);
-                if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));
-                continue;
-            }
+        if (previous && r < previous->rivers.size() &&
+            unchanged_river(previous->rivers[r], river, key, plan, *previous, out.lakes, cuts, same_ground)) {
+            bake = previous->rivers[r];
+            ++out.reused_rivers;
+            in.terrain = nullptr;
+            if (bake.cut) cuts.push_back(bake.cut);
+            if (options.progress) options.progress(static_cast<double>(done + 1) / static_cast<double>(order->size()));
+            continue;
         }
         profile.discharge.resize(plan.samples.along.size());
         for (std::size_t k = 0; k < profile.discharge.size(); ++k) {

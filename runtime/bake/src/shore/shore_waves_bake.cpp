@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <mutex>
+#include <span>
 
 #include "shore/fast_marching.hpp"
 #include "tidewater/constants.hpp"
@@ -66,6 +67,158 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
 
 Error cancelled() { return Error{ErrorCode::cancelled, "shore waves: cancelled"}; }
 
+/// The model's grid: the shoreline baked elsewhere (resampled to the model's resolution
+/// where it differs), or baked here over `options.region` with progress 0..`share`.
+Result<ShoreField> model_grid(const Terrain& terrain, double water_level, const ShoreWaveOptions& options, const ShoreField* shoreline,
+                              double share) {
+    if (shoreline && options.region)
+        return Error{ErrorCode::invalid_argument, "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
+    if (shoreline && shoreline->resolution == options.resolution) return *shoreline;
+    if (shoreline) return resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
+    BakeOptions bake;
+    bake.resolution = options.resolution;
+    bake.region = options.region;
+    bake.threads = options.threads;
+    bake.cancel = options.cancel;
+    bake.progress = [&](double f) {
+        if (options.progress) options.progress(share * f);
+    };
+    return bake_shore(terrain, water_level, bake);
+}
+
+/// One wave's phase over the grid by fast marching from deep water (or from the edges it
+/// enters through, on a domain with none), offset by `base` (returned), and its local
+/// wavenumber k(h) per texel (0 on land) in `slowness`. Unreached texels stay infinite.
+struct MarchedPhase {
+    std::vector<double> slowness, phase;
+    std::vector<unsigned char> deep;
+    bool any_deep = false;
+    double base = 0.0;
+};
+MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
+    const int n = field.resolution;
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    const double k0 = wave.k;
+    const glm::dvec2 dir{wave.dir_x, wave.dir_z};
+    MarchedPhase m;
+    m.slowness.assign(count, 0.0);
+    m.phase.assign(count, detail::kUnreached);
+    m.deep.assign(count, 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        const double h = static_cast<double>(field.depth[k]);
+        if (h <= 0.0) continue;  // land blocks the waves
+        m.slowness[k] = wavenumber_at_depth(wave.omega, h);
+        m.deep[k] = m.slowness[k] * h >= kDeepKh;
+        m.any_deep = m.any_deep || m.deep[k];
+    }
+    // Sources: deep water, where the open-ocean phase holds. A domain with no deep
+    // water takes the wave from the edges it enters through instead (shallow edges
+    // would otherwise pin the unrefracted phase along them).
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = field.index(i, j);
+            if (m.slowness[k] <= 0.0) continue;
+            const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) || (j == 0 && dir.y > 0.05) ||
+                                    (j == n - 1 && dir.y < -0.05);
+            if (m.any_deep ? m.deep[k] != 0 : entry_edge) m.phase[k] = k0 * glm::dot(dir, field.texel_center(i, j));
+        }
+    }
+    // Offset so the marched values start near zero (keeps doubles exact on big domains).
+    m.base = k0 * glm::dot(dir, field.corner);
+    for (double& v : m.phase)
+        if (std::isfinite(v)) v -= m.base;
+    detail::fast_march(m.slowness, m.phase, n, field.texel);
+    return m;
+}
+
+/// Wave w's fields from its marched phase: the phase residual, the local wavevector
+/// (k0 D + grad residual, of length exactly k(h)) and the amplitude factor from shoaling
+/// (energy flux) and refraction (rays against the shore normal).
+void wave_fields(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, ShoreWaveFields& f) {
+    const int n = field.resolution;
+    const double k0 = wave.k;
+    const glm::dvec2 dir{wave.dir_x, wave.dir_z};
+    const std::vector<double>& phase = m.phase;
+    auto& residual = f.phase_residual[w];
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = field.index(i, j);
+            if (!std::isfinite(phase[k])) continue;  // unreached: no wave
+            if (m.any_deep && m.deep[k]) continue;   // a source: the open-ocean phase, residual exactly 0
+            residual[k] = static_cast<float>(phase[k] + m.base - k0 * glm::dot(dir, field.texel_center(i, j)));
+        }
+    // Local wavevector = k0 D + grad(residual), central differences over reached water.
+    auto& kx = f.wavevector_x[w];
+    auto& kz = f.wavevector_z[w];
+    auto& amp = f.amplitude_factor[w];
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = field.index(i, j);
+            const double h = field.depth[k];
+            if (h <= 0.0 || !std::isfinite(phase[k])) continue;
+            auto diff = [&](int a0, int b0, int a1, int b1) {
+                const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field.index(a0, b0)]);
+                const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field.index(a1, b1)]);
+                const double v0 = ok0 ? phase[field.index(a0, b0)] : phase[k];
+                const double v1 = ok1 ? phase[field.index(a1, b1)] : phase[k];
+                const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
+                return span > 0.0 ? (v1 - v0) / (span * field.texel) : 0.0;
+            };
+            glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
+            const double kl = m.slowness[k];  // k(h), solved once in march_phase
+            const double len = glm::length(kvec);
+            kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
+            kx[k] = static_cast<float>(kvec.x);
+            kz[k] = static_cast<float>(kvec.y);
+            // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
+            const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
+            const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
+            double kr = 1.0;
+            if (glm::length(normal) > 0.5) {
+                const double cos0 = std::abs(glm::dot(dir, normal));
+                const double cos1 = std::abs(glm::dot(kvec / kl, normal));
+                if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
+            }
+            amp[k] = static_cast<float>(ks * kr);
+        }
+}
+
+/// Breaking (all waves together) and steepness, per texel: the amplitudes are capped at
+/// breaking_index * h / 2 of local height, the foam rises toward the cap, and Q is scaled
+/// where the waves together would fold.
+void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveFields& f) {
+    const std::size_t count = f.depth.size(), nw = waves.size();
+    f.breaking.assign(count, 0.0f);
+    f.steepness_scale.assign(count, 1.0f);
+    const double cap_ratio = 0.5 * breaking_index;  // amplitude cap = index * h / 2
+    for (std::size_t k = 0; k < count; ++k) {
+        const double h = static_cast<double>(f.depth[k]);
+        // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
+        // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
+        double energy = 0.0;
+        for (std::size_t w = 0; w < nw; ++w) {
+            const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+            energy += a * a;
+        }
+        const double total = std::sqrt(energy);
+        if (h <= 0.0) {
+            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
+            continue;
+        }
+        const double cap = cap_ratio * h;
+        const double ratio = total > 0.0 ? total / cap : 0.0;
+        f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+        if (ratio > 1.0)
+            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
+        double fold = 0.0;
+        for (std::size_t w = 0; w < nw; ++w) {
+            const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
+            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+        }
+        if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
+    }
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain, double water_level,
@@ -77,25 +230,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
     try {
         // The grid: 0..30% of the progress when the shoreline is baked here, then the waves.
         const double grid_share = shoreline ? 0.0 : 0.3;
-        auto report = [&](double f) {
-            if (options.progress) options.progress(f);
-        };
-        Result<ShoreField> field = Error{};
-        if (shoreline && options.region)
-            return Error{ErrorCode::invalid_argument, "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
-        if (shoreline && shoreline->resolution == options.resolution) {
-            field = *shoreline;
-        } else if (shoreline) {
-            field = resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
-        } else {
-            BakeOptions bake;
-            bake.resolution = options.resolution;
-            bake.region = options.region;
-            bake.threads = options.threads;
-            bake.cancel = options.cancel;
-            bake.progress = [&](double f) { report(grid_share * f); };
-            field = bake_shore(terrain, water_level, bake);
-        }
+        auto field = model_grid(terrain, water_level, options, shoreline, grid_share);
         if (!field) return field.error();
         if (options.cancel.stop_requested()) return cancelled();
 
@@ -118,117 +253,15 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
         detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
-            const Wave& wave = waves[w];
-            const double k0 = wave.k;
-            const glm::dvec2 dir{wave.dir_x, wave.dir_z};
-            std::vector<double> slowness(count, 0.0), phase(count, detail::kUnreached);
-            std::vector<unsigned char> deep(count, 0);
-            bool any_deep = false;
-            for (std::size_t k = 0; k < count; ++k) {
-                const double h = static_cast<double>(field->depth[k]);
-                if (h <= 0.0) continue;  // land blocks the waves
-                slowness[k] = wavenumber_at_depth(wave.omega, h);
-                deep[k] = slowness[k] * h >= kDeepKh;
-                any_deep = any_deep || deep[k];
-            }
-            // Sources: deep water, where the open-ocean phase holds. A domain with no deep
-            // water takes the wave from the edges it enters through instead (shallow edges
-            // would otherwise pin the unrefracted phase along them).
-            for (int j = 0; j < n; ++j) {
-                for (int i = 0; i < n; ++i) {
-                    const std::size_t k = field->index(i, j);
-                    if (slowness[k] <= 0.0) continue;
-                    const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) ||
-                                            (j == 0 && dir.y > 0.05) || (j == n - 1 && dir.y < -0.05);
-                    if (any_deep ? deep[k] != 0 : entry_edge) phase[k] = k0 * glm::dot(dir, field->texel_center(i, j));
-                }
-            }
-            // Offset so the marched values start near zero (keeps doubles exact on big domains).
-            const double base = k0 * glm::dot(dir, field->corner);
-            for (double& v : phase)
-                if (std::isfinite(v)) v -= base;
-            detail::fast_march(slowness, phase, n, field->texel);
-            auto& residual = f.phase_residual[w];
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i) {
-                    const std::size_t k = field->index(i, j);
-                    if (!std::isfinite(phase[k])) continue;  // unreached: no wave
-                    if (any_deep && deep[k]) continue;       // a source: the open-ocean phase, residual exactly 0
-                    residual[k] = static_cast<float>(phase[k] + base - k0 * glm::dot(dir, field->texel_center(i, j)));
-                }
-            // Local wavevector = k0 D + grad(residual), central differences over reached water.
-            auto& kx = f.wavevector_x[w];
-            auto& kz = f.wavevector_z[w];
-            auto& amp = f.amplitude_factor[w];
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i) {
-                    const std::size_t k = field->index(i, j);
-                    const double h = field->depth[k];
-                    if (h <= 0.0 || !std::isfinite(phase[k])) continue;
-                    auto diff = [&](int a0, int b0, int a1, int b1) {
-                        const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field->index(a0, b0)]);
-                        const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field->index(a1, b1)]);
-                        const double v0 = ok0 ? phase[field->index(a0, b0)] : phase[k];
-                        const double v1 = ok1 ? phase[field->index(a1, b1)] : phase[k];
-                        const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
-                        return span > 0.0 ? (v1 - v0) / (span * field->texel) : 0.0;
-                    };
-                    glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
-                    const double kl = slowness[k];  // k(h), solved once above
-                    const double len = glm::length(kvec);
-                    kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
-                    kx[k] = static_cast<float>(kvec.x);
-                    kz[k] = static_cast<float>(kvec.y);
-                    // Shoaling and refraction (rays against the shore normal).
-                    // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
-                    const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
-                    const glm::dvec2 normal{static_cast<double>(field->gradient_x[k]), static_cast<double>(field->gradient_z[k])};
-                    double kr = 1.0;
-                    if (glm::length(normal) > 0.5) {
-                        const double cos0 = std::abs(glm::dot(dir, normal));
-                        const double cos1 = std::abs(glm::dot(kvec / kl, normal));
-                        if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
-                    }
-                    amp[k] = static_cast<float>(ks * kr);
-                }
+            wave_fields(waves[w], *field, march_phase(waves[w], *field), w, f);
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);
-                report(grid_share + (1.0 - grid_share) * static_cast<double>(done) / static_cast<double>(nw));
+                options.progress(grid_share + (1.0 - grid_share) * static_cast<double>(done) / static_cast<double>(nw));
             }
         });
         if (options.cancel.stop_requested()) return cancelled();
-
-        // Breaking (all waves together) and steepness, per texel.
-        f.breaking.assign(count, 0.0f);
-        f.steepness_scale.assign(count, 1.0f);
-        const double cap_ratio = 0.5 * options.breaking_index;  // amplitude cap = index * h / 2
-        for (std::size_t k = 0; k < count; ++k) {
-            const double h = static_cast<double>(f.depth[k]);
-            // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
-            // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
-            double energy = 0.0;
-            for (std::size_t w = 0; w < nw; ++w) {
-                const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
-                energy += a * a;
-            }
-            const double total = std::sqrt(energy);
-            if (h <= 0.0) {
-                for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
-                continue;
-            }
-            const double cap = cap_ratio * h;
-            const double ratio = total > 0.0 ? total / cap : 0.0;
-            f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
-            if (ratio > 1.0)
-                for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
-            double fold = 0.0;
-            for (std::size_t w = 0; w < nw; ++w) {
-                const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
-                fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
-            }
-            if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
-        }
+        cap_breaking(waves, options.breaking_index, f);
         return ShoreWaves::from_baked_fields(std::move(f));
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};

@@ -1,0 +1,46 @@
+// The editor's bake worker: a bake on a worker thread, with its progress, while the last
+// good scene keeps drawing; the result is swapped in between frames.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <tidewater/scene_bake.hpp>
+
+namespace tidewater::editor {
+
+/// A bake running on a worker thread while the last good scene keeps drawing.
+struct BackgroundBake {
+    std::future<Result<std::shared_ptr<const Scene>>> job;
+    std::atomic<double> fraction{0.0};
+    std::mutex lock;
+    std::string stage;
+
+    bool running() const { return job.valid(); }
+    void start(Scene edited, std::shared_ptr<const Scene> previous) {
+        fraction = 0.0;
+        job = std::async(std::launch::async, [this, edited = std::move(edited), previous = std::move(previous)] {
+            SceneBakeOptions o;
+            o.previous = previous;
+            o.progress = [this](std::string_view s, double f) {
+                fraction = f;
+                const std::lock_guard<std::mutex> g(lock);
+                stage = std::string(s);
+            };
+            return bake_scene(edited, o);
+        });
+    }
+    /// The result once it is ready (the job is then over).
+    std::optional<Result<std::shared_ptr<const Scene>>> ready() {
+        if (!job.valid() || job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+        return job.get();
+    }
+};
+
+}  // namespace tidewater::editor

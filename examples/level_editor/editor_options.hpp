@@ -1,0 +1,21 @@
+// tidewater-editor's command line (see editor_main.cpp for what each option does).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <optional>
+#include <string>
+
+namespace tidewater::editor {
+
+struct Options {
+    std::string scene, screenshot, script, shader_dir;
+    int width = 1280, height = 720;
+    long frames = -1, resize_at = -1;
+    std::optional<glm::dvec2> probe;
+    bool validation = true;
+};
+
+/// The options, or none when an argument is not understood.
+std::optional<Options> parse(int argc, char** argv);
+
+}  // namespace tidewater::editor

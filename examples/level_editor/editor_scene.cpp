@@ -1,0 +1,96 @@
+// The editor's scene: loading it, swapping in what the bake worker made, the boats and
+// floats riding it, and preset changes.
+#include "editor.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fmt/format.h>
+
+namespace tidewater::editor {
+
+Status Editor::load(const std::string& path) {
+    auto parsed = path.empty() ? default_scene() : load_scene(path);
+    if (!parsed) return parsed.error();
+    auto baked = bake_scene(*parsed);
+    if (!baked) return baked.error();
+    scene_ = std::move(baked).value();
+    floaters_.reset();
+    refloat();
+    scene_path_ = path;
+    std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
+    breaking_index_ = static_cast<float>(scene_->shore.breaking_index);
+    const auto presets = bundled_preset_names();
+    const auto at = std::find(presets.begin(), presets.end(), scene_->ocean.profile().name);
+    preset_ = at == presets.end() ? 0 : static_cast<int>(at - presets.begin());
+    if (scene_->camera) camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
+    if (renderer_)
+        if (auto st = renderer_->set_scene(*scene_); !st) return st;
+    return {};
+}
+
+void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
+    if (!baked) {
+        message_ = baked.error().message;
+        return;
+    }
+    // Between frames: the renderer waits for the frames in flight and uploads.
+    if (auto st = renderer_->set_scene(**baked); !st) {
+        message_ = st.error().message;
+        return;
+    }
+    scene_ = std::move(baked).value();
+    refloat();
+    message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
+                           scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);
+}
+
+// The scene's boats and floats: carried on over an edited scene with the same ones, set
+// afloat again otherwise (a failure is shown, and they are not drawn).
+void Editor::refloat() {
+    if (scene_->boats.empty() && scene_->floats.empty()) {
+        floaters_.reset();
+        return;
+    }
+    if (floaters_ && floaters_->set_scene(scene_)) return;
+    auto made = SceneFloaters::create(scene_, clock_.now());
+    if (!made) {
+        message_ = made.error().message;
+        floaters_.reset();
+        return;
+    }
+    floaters_ = std::move(made).value();
+}
+
+// Advances the boats and floats to the clock (set afloat again when the clock went back
+// or jumped a minute ahead) and hands them to the frame.
+void Editor::float_bodies(render::FrameInfo& info) {
+    if (!floaters_) return;
+    const double now = clock_.now();
+    if (now < floaters_->time() - 1e-6 || now > floaters_->time() + 60.0) {
+        floaters_.reset();
+        refloat();
+        if (!floaters_) return;
+    }
+    if (auto st = floaters_->advance_to(now); !st) {
+        message_ = st.error().message;
+        floaters_.reset();
+        return;
+    }
+    float_draws_ = render::float_draws(*floaters_);
+    info.floats = float_draws_;
+}
+
+void Editor::choose_preset(const std::string& name) {
+    auto profile = load_preset(name);
+    auto body = profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
+    if (!body) {
+        message_ = body.error().message;
+        return;
+    }
+    // A preset change keeps the surf: the shore model is baked again in the background.
+    Scene edited = *scene_;
+    edited.ocean = std::move(body).value();
+    bake_.start(std::move(edited), scene_);
+}
+
+}  // namespace tidewater::editor
