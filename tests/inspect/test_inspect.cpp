@@ -19,6 +19,7 @@
 #include "../baked_scene.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/query.hpp"
+#include "colour_maps.hpp"
 #include "tidewater/world_query.hpp"
 #include "vtk_output.hpp"
 #include "vtk_viewer.hpp"
@@ -30,6 +31,55 @@ namespace fs = std::filesystem;
 
 fs::path temp_dir(const std::string& name) {
     return fs::temp_directory_path() / ("tidewater_inspect_" + std::to_string(::getpid()) + "_" + name);
+}
+
+// CIE L* (0 black to 100 white) of an sRGB colour.
+double luminance(glm::dvec3 c) {
+    auto linear = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    const double y = 0.2126 * linear(c.r) + 0.7152 * linear(c.g) + 0.0722 * linear(c.b);
+    return y > 216.0 / 24389.0 ? 116.0 * std::cbrt(y) - 16.0 : y * 24389.0 / 27.0;
+}
+
+TEST(InspectColours, OneSignedFieldsRiseInLightnessWithoutHueBands) {
+    // Viridis: lightness rises strictly from end to end, so equal steps of the field read
+    // as steps of one kind (the rainbow's lightness goes up and down with its hue).
+    double last = -1.0;
+    for (int i = 0; i <= 255; ++i) {
+        const double l = luminance(map_colour(ColourMap::sequential, i / 255.0));
+        EXPECT_GT(l, last) << "at entry " << i;
+        last = l;
+    }
+    EXPECT_NEAR(map_colour(ColourMap::sequential, 0.0).b, 0.329, 0.002) << "viridis starts dark violet";
+    EXPECT_NEAR(map_colour(ColourMap::sequential, 1.0).r, 0.993, 0.002) << "and ends yellow";
+    for (const char* name : {"foam", "depth", "jacobian", "velocity", "flow", "displacement"})
+        EXPECT_EQ(colouring_for(*find_field(name), 0.0).map, ColourMap::sequential) << name;
+}
+
+TEST(InspectColours, SignedFieldsDivergeFromANeutralZero) {
+    for (const char* name : {"height", "shore_distance", "wake"})
+        EXPECT_EQ(colouring_for(*find_field(name), 0.0).map, ColourMap::diverging) << name;
+    EXPECT_EQ(colouring_for(*find_field("height"), 2.5).centre, 2.5) << "heights about the water level";
+    // The centre is grey and the lightest; the two arms are blue and red and darken
+    // toward their ends at the same rate.
+    const glm::dvec3 mid = map_colour(ColourMap::diverging, 0.5);
+    EXPECT_NEAR(mid.r, mid.g, 1e-6);
+    EXPECT_NEAR(mid.g, mid.b, 1e-6);
+    const glm::dvec3 cold = map_colour(ColourMap::diverging, 0.0), warm = map_colour(ColourMap::diverging, 1.0);
+    EXPECT_GT(cold.b, cold.r);
+    EXPECT_GT(warm.r, warm.b);
+    for (int i = 1; i <= 127; ++i) {
+        const double d = i / 255.0;
+        EXPECT_LT(luminance(map_colour(ColourMap::diverging, 0.5 - d)), luminance(mid)) << i;
+        EXPECT_LT(luminance(map_colour(ColourMap::diverging, 0.5 + d)), luminance(mid)) << i;
+    }
+    EXPECT_NEAR(luminance(cold), luminance(warm), 1.0) << "both ends equally dark";
+    // A lopsided sample keeps zero in the neutral middle.
+    const auto [lo, hi] = colour_range({ColourMap::diverging, 0.0}, -0.4, 1.6);
+    EXPECT_DOUBLE_EQ(lo, -1.6);
+    EXPECT_DOUBLE_EQ(hi, 1.6);
+    const auto [slo, shi] = colour_range({ColourMap::sequential, 0.0}, 0.2, 0.9);
+    EXPECT_DOUBLE_EQ(slo, 0.2);
+    EXPECT_DOUBLE_EQ(shi, 0.9);
 }
 
 TEST(Inspect, ExportReadsBackWithTheQueriesValues) {

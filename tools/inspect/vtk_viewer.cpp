@@ -1,5 +1,7 @@
 #include "vtk_viewer.hpp"
 
+#include "colour_maps.hpp"
+
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
 #include <vtkCallbackCommand.h>
@@ -69,6 +71,17 @@ vtkSmartPointer<vtkPolyData> grid_strips(const SampleGrid& grid, vtkPoints* poin
     poly->SetPoints(points);
     poly->SetStrips(strips);
     return poly;
+}
+
+/// The table's 256 entries from `map` (colour_maps.hpp).
+void fill_lookup_table(vtkLookupTable& lut, ColourMap map) {
+    constexpr int kEntries = 256;
+    lut.SetNumberOfTableValues(kEntries);
+    for (int i = 0; i < kEntries; ++i) {
+        const glm::dvec3 c = map_colour(map, i / double(kEntries - 1));
+        lut.SetTableValue(i, c.r, c.g, c.b, 1.0);
+    }
+    lut.Modified();
 }
 
 /// Terrain this far under the level is always behind the (opaque) water surface.
@@ -169,8 +182,11 @@ struct Viewer::Impl {
         scalars->Modified();
         vectors->Modified();
         if (glyphs) place_glyphs();
-        lut->SetTableRange(lo, hi);
-        surface_mapper->SetScalarRange(lo, hi);
+        const FieldColouring colouring = colouring_for(info(), scene->water_level());
+        fill_lookup_table(*lut, colouring.map);
+        const auto [from, to] = colour_range(colouring, lo, hi);
+        lut->SetTableRange(from, to);
+        surface_mapper->SetScalarRange(from, to);
         legend->SetTitle(fmt::format("{} ({})", info().name, info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit).c_str());
         caption->SetInput(fmt::format("t = {:.2f} s   field: {}{}", sample.time, info().name,
                                       interactive ? "   [space] play  [f] field  [g] glyphs  [p] probe" : "").c_str());
@@ -238,8 +254,6 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     });
     m->land->GetPointData()->SetScalars(ground);
 
-    m->lut->SetHueRange(0.667, 0.0);
-    m->lut->Build();
     m->surface_mapper->SetInputData(m->surface);
     m->surface_mapper->SetLookupTable(m->lut);
     m->surface_actor->SetMapper(m->surface_mapper);
