@@ -16,6 +16,7 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
   libgtest-dev libbenchmark-dev libstb-dev libpng-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools glslang-dev
+  clang-format
 )
 
 log() { printf '==> %s\n' "$*"; }
@@ -52,6 +53,13 @@ build() {
   cmake --build "$dir" --parallel "$JOBS" "$@"
 }
 
+# The C++ sources in the one format of .clang-format (GLSL under shaders/ is not C++).
+check_format() {
+  log "checking the C++ format (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
+  (cd "$ROOT" && find runtime tools tests examples calibration \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 |
+    xargs -0 clang-format --dry-run --Werror)
+}
+
 cmd="${1:-}"
 case "$cmd" in
   demo)
@@ -63,6 +71,7 @@ case "$cmd" in
     ;;
   test)
     install_packages
+    check_format
     configure "$BUILD"
     build "$BUILD"
     log "running the test suite"
