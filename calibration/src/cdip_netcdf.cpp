@@ -1,15 +1,15 @@
 // CDIP netCDF-4 buoy files (the only translation unit that includes netCDF).
+#include <fmt/format.h>
 #include <netcdf.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <initializer_list>
 #include <map>
 
-#include "tidewater/calibration/readers.hpp"
 #include "spectrum_direction.hpp"
+#include "tidewater/calibration/readers.hpp"
 #include "tidewater/calibration/spectrum.hpp"
 
 namespace tidewater::calibration {
@@ -17,8 +17,10 @@ namespace tidewater::calibration {
 namespace {
 
 class NcFile {
-public:
-    explicit NcFile(const std::filesystem::path& path) : name_(path.string()) { status_ = nc_open(name_.c_str(), NC_NOWRITE, &id_); }
+  public:
+    explicit NcFile(const std::filesystem::path& path) : name_(path.string()) {
+        status_ = nc_open(name_.c_str(), NC_NOWRITE, &id_);
+    }
     ~NcFile() {
         if (status_ == NC_NOERR) nc_close(id_);
     }
@@ -27,13 +29,16 @@ public:
 
     Status opened() const {
         if (status_ == NC_NOERR) return {};
-        return Error{ErrorCode::io_error, fmt::format("{}: not a readable netCDF file ({})", name_, nc_strerror(status_))};
+        return Error{ErrorCode::io_error,
+                     fmt::format("{}: not a readable netCDF file ({})", name_, nc_strerror(status_))};
     }
     Result<int> group(const char* name) const {
         int g = 0;
         if (nc_inq_grp_ncid(id_, name, &g) != NC_NOERR)
-            return Error{ErrorCode::schema_error, fmt::format("{}: no {} group (CDIP buoy files keep displacements in XYZ and "
-                                                              "spectra in Wave)", name_, name)};
+            return Error{ErrorCode::schema_error,
+                         fmt::format("{}: no {} group (CDIP buoy files keep displacements in XYZ and "
+                                     "spectra in Wave)",
+                                     name_, name)};
         return g;
     }
     /// A whole variable of `group` as doubles, with its length.
@@ -59,7 +64,8 @@ public:
         return out;
     }
     /// Several variables of `group`, by name; fails on the first missing one.
-    Result<std::map<std::string, std::vector<double>>> read_all(int g, const char* group, std::initializer_list<const char*> names) const {
+    Result<std::map<std::string, std::vector<double>>> read_all(int g, const char* group,
+                                                                std::initializer_list<const char*> names) const {
         std::map<std::string, std::vector<double>> out;
         for (const char* name : names) {
             auto v = doubles(g, group, name);
@@ -80,19 +86,28 @@ public:
         int y = 0, mo = 0, d = 0, h = 0, mi = 0;
         double s = 0.0;
         if (std::sscanf(units.c_str(), "%31s since %d-%d-%d %d:%d:%lf", unit, &y, &mo, &d, &h, &mi, &s) != 7)
-            return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} units \"{}\" are not \"UNIT since DATE TIME\"", name_, group, var, units)};
+            return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} units \"{}\" are not \"UNIT since DATE TIME\"",
+                                                              name_, group, var, units)};
         const std::string u = unit;
-        const double scale = u == "nanoseconds" ? 1e-9 : u == "seconds" ? 1.0 : u == "minutes" ? 60.0 : u == "hours" ? 3600.0 : u == "days" ? 86400.0 : 0.0;
-        if (scale == 0.0) return Error{ErrorCode::schema_error, fmt::format("{}: {}/{} has unknown time unit \"{}\"", name_, group, var, u)};
+        const double scale = u == "nanoseconds" ? 1e-9
+                             : u == "seconds"   ? 1.0
+                             : u == "minutes"   ? 60.0
+                             : u == "hours"     ? 3600.0
+                             : u == "days"      ? 86400.0
+                                                : 0.0;
+        if (scale == 0.0)
+            return Error{ErrorCode::schema_error,
+                         fmt::format("{}: {}/{} has unknown time unit \"{}\"", name_, group, var, u)};
         using namespace std::chrono;
         const sys_days date{year{y} / month{static_cast<unsigned>(mo)} / day{static_cast<unsigned>(d)}};
-        const double epoch = static_cast<double>(date.time_since_epoch().count()) * 86400.0 + h * 3600.0 + mi * 60.0 + s;
+        const double epoch =
+            static_cast<double>(date.time_since_epoch().count()) * 86400.0 + h * 3600.0 + mi * 60.0 + s;
         return std::pair{epoch, scale};
     }
     const std::string& name() const { return name_; }
     int root() const { return id_; }
 
-private:
+  private:
     std::string name_;
     int id_ = 0;
     int status_ = NC_NOERR;
@@ -108,7 +123,8 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
     auto vars = nc.read_all(*g, "XYZ", {"x", "y", "z", "FlagPrimary", "t", "FilterDelay"});
     if (!vars) return vars.error();
     // CDIP's x is north, y west (PROVENANCE.md's cross-phase check).
-    const auto *north = &(*vars)["x"], *west = &(*vars)["y"], *z = &(*vars)["z"], *flags = &(*vars)["FlagPrimary"], *t = &(*vars)["t"];
+    const auto *north = &(*vars)["x"], *west = &(*vars)["y"], *z = &(*vars)["z"], *flags = &(*vars)["FlagPrimary"],
+               *t = &(*vars)["t"];
     const auto* delay = &(*vars)["FilterDelay"];
     auto units = nc.time_units(*g, "XYZ", "t");
     if (!units) return units.error();
@@ -120,7 +136,8 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
     // station's declination (Meta/Declination, degrees east), as CDIP's directions are.
     double declination = 0.0;
     if (auto meta = nc.group("Meta")) {
-        if (auto d = nc.doubles(*meta, "Meta", "Declination"); d && !d->empty() && std::isfinite(d->front())) declination = d->front();
+        if (auto d = nc.doubles(*meta, "Meta", "Declination"); d && !d->empty() && std::isfinite(d->front()))
+            declination = d->front();
     }
     const double dr = declination * 3.14159265358979323846 / 180.0;
     const double cd = std::cos(dr), sd = std::sin(dr);
@@ -147,8 +164,9 @@ Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double s
         r.north.push_back(-e * sd + n_ * cd);
     }
     if (r.axis.empty())
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: no usable XYZ samples{} ({} flagged, {} missing)", nc.name(),
-                                                              window ? " in the time window" : "", r.skipped_flagged, r.skipped_missing)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: no usable XYZ samples{} ({} flagged, {} missing)", nc.name(),
+                                 window ? " in the time window" : "", r.skipped_flagged, r.skipped_missing)};
     r.axis_origin = r.axis.front();
     for (double& a : r.axis) a -= r.axis_origin;
     if (auto st = validate_record(r); !st) return st.error();
@@ -178,7 +196,6 @@ Result<std::vector<CdipWaveSummary>> read_cdip_wave_summaries(const std::filesys
     return out;
 }
 
-
 void set_direction(MeasuredSpectrum& s, std::size_t k, double from_deg, double r1) {
     const double to = (from_deg + 180.0) * 3.14159265358979323846 / 180.0;  // bearing of travel
     s.travel_east[k] = s.density[k] * r1 * std::sin(to);
@@ -190,16 +207,19 @@ Result<std::vector<SpectralRecord>> read_cdip_spectra(const std::filesystem::pat
     NcFile nc(path);
     if (auto st = nc.opened(); !st) return st.error();
     const int root = nc.root();
-    auto vars = nc.read_all(root, "", {"waveFrequency", "waveBandwidth", "waveEnergyDensity", "waveA1Value", "waveB1Value", "waveTime"});
+    auto vars = nc.read_all(
+        root, "", {"waveFrequency", "waveBandwidth", "waveEnergyDensity", "waveA1Value", "waveB1Value", "waveTime"});
     if (!vars) return vars.error();
-    const auto *freq = &(*vars)["waveFrequency"], *width = &(*vars)["waveBandwidth"], *energy = &(*vars)["waveEnergyDensity"];
+    const auto *freq = &(*vars)["waveFrequency"], *width = &(*vars)["waveBandwidth"],
+               *energy = &(*vars)["waveEnergyDensity"];
     const auto *a1 = &(*vars)["waveA1Value"], *b1 = &(*vars)["waveB1Value"], *time = &(*vars)["waveTime"];
     auto units = nc.time_units(root, "", "waveTime");
     if (!units) return units.error();
     auto hs = nc.doubles(root, "", "waveHs"), tp = nc.doubles(root, "", "waveTp"), dp = nc.doubles(root, "", "waveDp");
     const std::size_t nf = freq->size(), nt = time->size();
     if (width->size() != nf || energy->size() != nt * nf || a1->size() != nt * nf || b1->size() != nt * nf)
-        return Error{ErrorCode::schema_error, fmt::format("{}: wave spectrum variables have inconsistent sizes", nc.name())};
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: wave spectrum variables have inconsistent sizes", nc.name())};
     std::vector<SpectralRecord> out(nt);
     for (std::size_t t = 0; t < nt; ++t) {
         SpectralRecord& r = out[t];
@@ -218,7 +238,8 @@ Result<std::vector<SpectralRecord>> read_cdip_spectra(const std::filesystem::pat
             s.density[k] = std::isfinite(e) && e > 0.0 ? e : 0.0;
             // CDIP's a1, b1 are relative to true north: the mean direction waves come from.
             const double x = (*a1)[t * nf + k], y = (*b1)[t * nf + k];
-            if (std::isfinite(x) && std::isfinite(y)) set_direction(s, k, std::atan2(y, x) * 180.0 / 3.14159265358979323846, std::hypot(x, y));
+            if (std::isfinite(x) && std::isfinite(y))
+                set_direction(s, k, std::atan2(y, x) * 180.0 / 3.14159265358979323846, std::hypot(x, y));
         }
     }
     return out;

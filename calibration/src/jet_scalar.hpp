@@ -5,7 +5,9 @@
 
 namespace tidewater::calibration::detail {
 
-inline double scalar(double v) { return v; }
+inline double scalar(double v) {
+    return v;
+}
 template <typename T, int N>
 double scalar(const ceres::Jet<T, N>& v) {
     return v.a;

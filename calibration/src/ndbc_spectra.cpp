@@ -1,7 +1,8 @@
 // NDBC real-time spectral files: .data_spec (energy density), .swdir (alpha1), .swr1 (r1).
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -9,8 +10,6 @@
 #include "spectrum_direction.hpp"
 
 namespace tidewater::calibration {
-
-
 
 namespace {
 
@@ -32,7 +31,8 @@ Result<std::map<double, Row>> read_rows(const std::filesystem::path& path, int s
         std::istringstream cells(line);
         int y = 0, mo = 0, d = 0, h = 0, mi = 0;
         if (!(cells >> y >> mo >> d >> h >> mi) || mo < 1 || mo > 12 || d < 1 || d > 31)
-            return Error{ErrorCode::parse_error, fmt::format("{}:{}: expected YY MM DD hh mm first", path.string(), line_no)};
+            return Error{ErrorCode::parse_error,
+                         fmt::format("{}:{}: expected YY MM DD hh mm first", path.string(), line_no)};
         for (int k = 0; k < skip; ++k) {
             double ignored = 0.0;
             cells >> ignored;
@@ -44,15 +44,18 @@ Result<std::map<double, Row>> read_rows(const std::filesystem::path& path, int s
         std::string value, freq;
         while (cells >> value >> freq) {
             if (freq.size() < 3 || freq.front() != '(' || freq.back() != ')')
-                return Error{ErrorCode::parse_error, fmt::format("{}:{}: expected \"value (frequency)\" pairs", path.string(), line_no)};
+                return Error{ErrorCode::parse_error,
+                             fmt::format("{}:{}: expected \"value (frequency)\" pairs", path.string(), line_no)};
             try {
                 row.values.push_back(std::stod(value));
                 row.freqs.push_back(std::stod(freq.substr(1, freq.size() - 2)));
             } catch (const std::exception&) {
-                return Error{ErrorCode::parse_error, fmt::format("{}:{}: \"{} {}\" is not a number pair", path.string(), line_no, value, freq)};
+                return Error{ErrorCode::parse_error,
+                             fmt::format("{}:{}: \"{} {}\" is not a number pair", path.string(), line_no, value, freq)};
             }
         }
-        if (row.values.empty()) return Error{ErrorCode::parse_error, fmt::format("{}:{}: no spectrum on the line", path.string(), line_no)};
+        if (row.values.empty())
+            return Error{ErrorCode::parse_error, fmt::format("{}:{}: no spectrum on the line", path.string(), line_no)};
         rows[row.time] = std::move(row);
     }
     if (rows.empty()) return Error{ErrorCode::parse_error, fmt::format("{}: no spectra in the file", path.string())};
@@ -89,8 +92,10 @@ Result<std::vector<SpectralRecord>> read_ndbc_spectra(const std::filesystem::pat
         for (std::size_t k = 0; k < n; ++k) {
             s.density[k] = std::max(0.0, row.values[k]);
             // Band edges half way to the neighbours.
-            const double lo = k > 0 ? 0.5 * (row.freqs[k - 1] + row.freqs[k]) : row.freqs[k] - 0.5 * (row.freqs[1] - row.freqs[0]);
-            const double hi = k + 1 < n ? 0.5 * (row.freqs[k] + row.freqs[k + 1]) : row.freqs[k] + 0.5 * (row.freqs[k] - row.freqs[k - 1]);
+            const double lo =
+                k > 0 ? 0.5 * (row.freqs[k - 1] + row.freqs[k]) : row.freqs[k] - 0.5 * (row.freqs[1] - row.freqs[0]);
+            const double hi = k + 1 < n ? 0.5 * (row.freqs[k] + row.freqs[k + 1])
+                                        : row.freqs[k] + 0.5 * (row.freqs[k] - row.freqs[k - 1]);
             s.bandwidth[k] = hi - lo;
         }
         s.df = s.bandwidth.empty() ? 0.0 : s.bandwidth[0];
@@ -99,7 +104,8 @@ Result<std::vector<SpectralRecord>> read_ndbc_spectra(const std::filesystem::pat
             s.directional = true;
             s.travel_east.assign(n, 0.0), s.travel_north.assign(n, 0.0), s.r1.assign(n, 0.0);
             for (std::size_t k = 0; k < n; ++k)
-                if (d->second.values[k] < 990.0 && q->second.values[k] < 990.0) set_direction(s, k, d->second.values[k], q->second.values[k]);
+                if (d->second.values[k] < 990.0 && q->second.values[k] < 990.0)
+                    set_direction(s, k, d->second.values[k], q->second.values[k]);
         }
         out.push_back(std::move(r));
     }

@@ -17,11 +17,15 @@ WaveSpec to_wave_spec(const FittedWave& w) {
     return s;
 }
 
-nlohmann::json preset_json(const std::string& name, const std::string& description, const std::vector<WaveSpec>& waves) {
+nlohmann::json preset_json(const std::string& name, const std::string& description,
+                           const std::vector<WaveSpec>& waves) {
     nlohmann::json list = nlohmann::json::array();
     for (const WaveSpec& w : waves)
-        list.push_back({{"direction", w.direction_deg}, {"wavelength", w.wavelength}, {"amplitude", w.amplitude},
-                        {"steepness", w.steepness}, {"phase", w.phase}});
+        list.push_back({{"direction", w.direction_deg},
+                        {"wavelength", w.wavelength},
+                        {"amplitude", w.amplitude},
+                        {"steepness", w.steepness},
+                        {"phase", w.phase}});
     return {{"version", 1}, {"name", name}, {"description", description}, {"waves", list}};
 }
 

@@ -1,5 +1,8 @@
 // The phase-resolved fit (Ceres, automatic differentiation).
+#include "tidewater/calibration/phase_fit.hpp"
+
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -7,16 +10,14 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 #include <thread>
 
 #include "jet_scalar.hpp"
-#include "tidewater/calibration/phase_fit.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "tidewater/detail/water_point.hpp"
 #include "tidewater/dispersion.hpp"
-#include "tidewater/detail/newton.hpp"
 
 namespace tidewater::calibration {
 
@@ -35,7 +36,9 @@ using tidewater::detail::wave_term;
 using tidewater::detail::WaveTerm;
 
 /// Parameters per wave: amplitude, omega (profile: k), phase, Q, and for a buoy the direction.
-int stride(RecordKind kind) { return kind == RecordKind::buoy ? 5 : 4; }
+int stride(RecordKind kind) {
+    return kind == RecordKind::buoy ? 5 : 4;
+}
 
 /// Finite-depth wavenumber (the runtime's solver); derivatives through one Newton step
 /// from the converged value.
@@ -82,7 +85,8 @@ struct Model {
     template <typename T>
     SurfaceSums<T> along_axis(const AxisWaves<T>& w, const std::array<T, 64>& c, const T& alpha) const {
         SurfaceSums<T> s;
-        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i) add_wave<false>(s, w.terms[i], w.k[i] * alpha + c[i]);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i)
+            add_wave<false>(s, w.terms[i], w.k[i] * alpha + c[i]);
         return s;
     }
 
@@ -163,7 +167,8 @@ struct Model {
     template <typename T>
     void lagrangian(const T* p, const std::array<WaveTerm<T>, 64>& terms, double t, T* out) const {
         SurfaceSums<T> s;
-        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i) add_wave<false>(s, terms[i], p[5 * i + 2] - p[5 * i + 1] * t);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(waves); ++i)
+            add_wave<false>(s, terms[i], p[5 * i + 2] - p[5 * i + 1] * t);
         out[0] = s.eta;
         out[1] = s.dx;
         out[2] = s.dz;
@@ -218,7 +223,8 @@ struct ChunkResiduals {
         const double qa = Model::sum_qa(p, stride(model.kind), model.waves);
         for (std::size_t j = 0; j < count; ++j) {
             const std::size_t s = first + j;
-            residuals[j] = model.eulerian(p, w, wd, qa, record->axis[s], same ? &cached_alpha[j] : nullptr, same ? nullptr : &cached_alpha[j]) -
+            residuals[j] = model.eulerian(p, w, wd, qa, record->axis[s], same ? &cached_alpha[j] : nullptr,
+                                          same ? nullptr : &cached_alpha[j]) -
                            record->z[s];
         }
         return true;
@@ -252,12 +258,14 @@ struct Peak {
 
 /// Periodogram of `v` on bins w_min + b dw, each sample weighted by its spacing, so gaps
 /// and uneven spacing (a profile clustered at the crest) do not bias it.
-std::vector<double> periodogram(const MeasuredRecord& r, const std::vector<double>& v, double w_min, double dw, std::size_t bins) {
+std::vector<double> periodogram(const MeasuredRecord& r, const std::vector<double>& v, double w_min, double dw,
+                                std::size_t bins) {
     const double spacing = r.median_spacing();
     std::vector<double> weight(r.size());
     double mean = 0.0, total = 0.0;
     for (std::size_t s = 0; s < r.size(); ++s) {
-        const double before = s > 0 ? r.axis[s] - r.axis[s - 1] : 0.0, after = s + 1 < r.size() ? r.axis[s + 1] - r.axis[s] : 0.0;
+        const double before = s > 0 ? r.axis[s] - r.axis[s - 1] : 0.0,
+                     after = s + 1 < r.size() ? r.axis[s + 1] - r.axis[s] : 0.0;
         weight[s] = 0.5 * (std::min(before, 2.0 * spacing) + std::min(after, 2.0 * spacing));
         mean += v[s] * weight[s], total += weight[s];
     }
@@ -278,7 +286,8 @@ std::vector<double> periodogram(const MeasuredRecord& r, const std::vector<doubl
 }
 
 /// Least squares of sines and cosines at the given frequencies: coefficients and residual.
-Eigen::VectorXd linear_fit(const MeasuredRecord& r, const std::vector<double>& v, const std::vector<double>& freqs, std::vector<double>* residual) {
+Eigen::VectorXd linear_fit(const MeasuredRecord& r, const std::vector<double>& v, const std::vector<double>& freqs,
+                           std::vector<double>* residual) {
     const auto rows = static_cast<Eigen::Index>(r.size());
     const auto n = static_cast<Eigen::Index>(freqs.size());
     Eigen::MatrixXd design(rows, 2 * n);
@@ -314,7 +323,8 @@ std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
         for (std::size_t b = 0; b < bins; ++b) {
             const double w = w_min + dw * static_cast<double>(b);
             if (power[b] <= best) continue;
-            if (std::any_of(freqs.begin(), freqs.end(), [&](double f) { return std::abs(f - w) < resolution; })) continue;
+            if (std::any_of(freqs.begin(), freqs.end(), [&](double f) { return std::abs(f - w) < resolution; }))
+                continue;
             best = power[b], at = w;
         }
         if (best <= 0.0) break;
@@ -327,7 +337,8 @@ std::vector<Peak> spectral_peaks(const MeasuredRecord& r, int count) {
 
 /// Initial parameters: linear least squares of sines and cosines at the peak frequencies.
 /// `linear_rss` gets the elevation's residual sum of squares of that linear fit.
-std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vector<Peak>& peaks, double* linear_rss = nullptr) {
+std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vector<Peak>& peaks,
+                                       double* linear_rss = nullptr) {
     const int n = static_cast<int>(peaks.size()), m = stride(r.kind);
     std::vector<double> freqs;
     for (const Peak& p : peaks) freqs.push_back(p.frequency);
@@ -338,7 +349,8 @@ std::vector<double> initial_parameters(const MeasuredRecord& r, const std::vecto
         for (double v : residual) *linear_rss += v * v;
     }
     Eigen::VectorXd ce, cn;
-    if (r.kind == RecordKind::buoy) ce = linear_fit(r, r.east, freqs, nullptr), cn = linear_fit(r, r.north, freqs, nullptr);
+    if (r.kind == RecordKind::buoy)
+        ce = linear_fit(r, r.east, freqs, nullptr), cn = linear_fit(r, r.north, freqs, nullptr);
     std::vector<double> p(static_cast<std::size_t>(m * n), 0.0);
     for (int i = 0; i < n; ++i) {
         double* w = p.data() + m * i;
@@ -374,14 +386,16 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
     for (std::size_t first = 0; first < r.size(); first += kChunk) {
         const std::size_t count = std::min(kChunk, r.size() - first);
-        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 16>(new ChunkResiduals{model, &r, first, count, m * waves, {}, {}});
+        auto* cost = new ceres::DynamicAutoDiffCostFunction<ChunkResiduals, 16>(
+            new ChunkResiduals{model, &r, first, count, m * waves, {}, {}});
         cost->AddParameterBlock(m * waves);
         cost->SetNumResiduals(static_cast<int>(count) * per_sample);
         problem->AddResidualBlock(cost, huber > 0.0 ? new ceres::HuberLoss(huber) : nullptr, p.data());
     }
     double scale = 0.0;
     for (double v : r.z) scale = std::max(scale, std::abs(v));
-    auto* fold = new ceres::DynamicAutoDiffCostFunction<FoldPenalty, 8>(new FoldPenalty{model, 100.0 * scale * std::sqrt(double(r.size()))});
+    auto* fold = new ceres::DynamicAutoDiffCostFunction<FoldPenalty, 8>(
+        new FoldPenalty{model, 100.0 * scale * std::sqrt(double(r.size()))});
     fold->AddParameterBlock(m * waves);
     fold->SetNumResiduals(1);
     problem->AddResidualBlock(fold, nullptr, p.data());
@@ -398,7 +412,8 @@ Solved solve(const MeasuredRecord& r, std::vector<double> p, int waves, const Ph
     }
     ceres::Solver::Options options;
     options.max_num_iterations = o.max_iterations;
-    options.num_threads = static_cast<int>(o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads);
+    options.num_threads =
+        static_cast<int>(o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads);
     options.linear_solver_type = ceres::DENSE_QR;
     options.logging_type = ceres::SILENT;
     options.function_tolerance = 1e-9;
@@ -446,24 +461,29 @@ double wrap(double a) {
 
 }  // namespace
 
-double FittedWave::period() const { return omega > 0.0 ? kTwoPi / omega : 0.0; }
+double FittedWave::period() const {
+    return omega > 0.0 ? kTwoPi / omega : 0.0;
+}
 
 Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = validate_record(r); !st) return st.error();
     if (o.waves < 0 || o.waves > 64 || o.max_waves < 1 || o.max_waves > 64)
-        return Error{ErrorCode::invalid_argument, fmt::format("wave count {} / max {} out of range (1 to 64)", o.waves, o.max_waves)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("wave count {} / max {} out of range (1 to 64)", o.waves, o.max_waves)};
     if (!(r.depth > 0.0)) return Error{ErrorCode::invalid_argument, fmt::format("{}: depth must be > 0 m", r.source)};
     const int m = stride(r.kind);
     const int per_sample = r.kind == RecordKind::buoy ? 3 : 1;
     const int sample_limit = static_cast<int>(r.size() * static_cast<std::size_t>(per_sample)) / (2 * m);
     if (o.waves > sample_limit)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: {} waves need at least {} samples, the record has {}", r.source, o.waves, 2 * m * o.waves, r.size())};
+                     fmt::format("{}: {} waves need at least {} samples, the record has {}", r.source, o.waves,
+                                 2 * m * o.waves, r.size())};
     const int top = o.waves > 0 ? o.waves : std::min(o.max_waves, sample_limit);
     if (top < 1) return Error{ErrorCode::invalid_argument, fmt::format("{}: too few samples for one wave", r.source)};
     const std::vector<Peak> peaks = spectral_peaks(r, top);
-    if (peaks.empty()) return Error{ErrorCode::invalid_argument, fmt::format("{}: the record has no spectral peak", r.source)};
+    if (peaks.empty())
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: the record has no spectral peak", r.source)};
 
     // Huber scale from the linear fit's residuals (robust spread).
     double tss = 0.0, mean = 0.0;
@@ -490,9 +510,11 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         out.bic.push_back({n, bic});
         if (bic < best_bic) best_bic = bic, best_n = n;
     }
-    if (o.progress && ladder.size() > 1) o.progress(fmt::format("fit: {} waves chosen by BIC (of {} tried)", best_n, ladder.size()));
+    if (o.progress && ladder.size() > 1)
+        o.progress(fmt::format("fit: {} waves chosen by BIC (of {} tried)", best_n, ladder.size()));
     const double huber = 3.0 * std::sqrt(tss / static_cast<double>(r.size()));
-    Solved best = solve(r, initial_parameters(r, std::vector<Peak>(peaks.begin(), peaks.begin() + best_n)), best_n, o, huber);
+    Solved best =
+        solve(r, initial_parameters(r, std::vector<Peak>(peaks.begin(), peaks.begin() + best_n)), best_n, o, huber);
     if (r.kind == RecordKind::profile) {
         // A profile often spans whole wavelengths, where a one-cycle window shifts the
         // periodogram's peak: also start from the harmonics of the span and keep the better.
@@ -502,7 +524,9 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         Solved other = solve(r, initial_parameters(r, harmonics), best_n, o, huber);
         if (other.rss < best.rss) best = std::move(other);
     }
-    if (o.progress) o.progress(fmt::format("fit: {} waves, R^2 {:.4f}, {} iterations", best_n, 1.0 - best.rss / tss, best.iterations));
+    if (o.progress)
+        o.progress(
+            fmt::format("fit: {} waves, R^2 {:.4f}, {} iterations", best_n, 1.0 - best.rss / tss, best.iterations));
     // Uncertainties from Ceres' covariance of the chosen fit.
     std::vector<double> sigma(best.p.size(), -1.0);
     {
@@ -516,7 +540,8 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         if (covariance.Compute(blocks, best.problem.get())) {
             std::vector<double> c(best.p.size() * best.p.size());
             if (covariance.GetCovarianceBlock(block, block, c.data()))
-                for (std::size_t k = 0; k < best.p.size(); ++k) sigma[k] = std::sqrt(std::max(0.0, c[k * best.p.size() + k]));
+                for (std::size_t k = 0; k < best.p.size(); ++k)
+                    sigma[k] = std::sqrt(std::max(0.0, c[k * best.p.size() + k]));
         }
     }
     const Model model{r.kind, r.depth, best_n};
@@ -551,7 +576,8 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         f.steepness = w[3];
         if (r.kind == RecordKind::profile) {
             f.k = w[1];
-            f.omega = std::isfinite(r.depth) ? std::sqrt(kGravity * f.k * std::tanh(f.k * r.depth)) : std::sqrt(kGravity * f.k);
+            f.omega = std::isfinite(r.depth) ? std::sqrt(kGravity * f.k * std::tanh(f.k * r.depth))
+                                             : std::sqrt(kGravity * f.k);
         } else {
             f.omega = w[1];
             f.k = wavenumber(w[1], r.depth);
@@ -577,7 +603,8 @@ Result<PhaseFit> fit_phase_resolved(const MeasuredRecord& r, const PhaseFitOptio
         for (FittedWave& w : out.waves) w.steepness *= scale;
         out.steepness_scaled = true;
     }
-    std::sort(out.waves.begin(), out.waves.end(), [](const FittedWave& a, const FittedWave& b) { return a.amplitude > b.amplitude; });
+    std::sort(out.waves.begin(), out.waves.end(),
+              [](const FittedWave& a, const FittedWave& b) { return a.amplitude > b.amplitude; });
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
 }

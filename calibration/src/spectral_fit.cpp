@@ -2,10 +2,10 @@
 // record's energy: Hs is the measured 4 sqrt(m0) over the band, and Ceres fits the
 // shape (Tp, gamma) by least squares on the density around the dominant peak.
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <memory>
 
 #include "jet_scalar.hpp"
@@ -63,10 +63,12 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, do
         }
     }
     if (residuals->f.size() < 4)
-        return Error{ErrorCode::invalid_argument, fmt::format("the spectrum has {} bins in {}-{} Hz: too few to fit", residuals->f.size(), f_lo, f_hi)};
+        return Error{ErrorCode::invalid_argument, fmt::format("the spectrum has {} bins in {}-{} Hz: too few to fit",
+                                                              residuals->f.size(), f_lo, f_hi)};
     for (std::size_t k = 0; k < residuals->s.size(); ++k) residuals->m0 += residuals->s[k] * residuals->w[k];
     residuals->peak = *std::max_element(residuals->s.begin(), residuals->s.end());
-    if (!(residuals->m0 > 0.0) || !(band_m0 > 0.0)) return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
+    if (!(residuals->m0 > 0.0) || !(band_m0 > 0.0))
+        return Error{ErrorCode::invalid_argument, "the spectrum has no energy in the band"};
 
     double tp = std::clamp(measured.tp, 1.0, 40.0), gamma = 3.3;
     ceres::Problem problem;
@@ -97,7 +99,8 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo, do
         // The peak direction: the bin holding the fitted peak frequency (CDIP's Dp is its peak band's).
         const std::size_t bin = spectrum.nearest_bin(1.0 / fit.tp);
         if (bin < spectrum.frequency.size()) {
-            const double travel = std::atan2(spectrum.travel_north[bin], spectrum.travel_east[bin]) * 180.0 / 3.14159265358979323846;
+            const double travel =
+                std::atan2(spectrum.travel_north[bin], spectrum.travel_east[bin]) * 180.0 / 3.14159265358979323846;
             fit.peak_from_deg = std::fmod(270.0 - travel + 720.0, 360.0);
         }
     }

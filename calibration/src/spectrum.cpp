@@ -1,13 +1,15 @@
 // Welch spectra (Eigen's FFT), sea-state summaries and sampling presets from a JONSWAP.
+#include "tidewater/calibration/spectrum.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 #include <random>
 #include <unsupported/Eigen/FFT>
 
 #include "jonswap_shape.hpp"
-#include "tidewater/calibration/spectrum.hpp"
 #include "tidewater/constants.hpp"
 
 namespace tidewater::calibration {
@@ -23,13 +25,15 @@ double wrap_degrees(double d) {
 
 Result<MeasuredSpectrum> welch_spectrum(const MeasuredRecord& r, const WelchOptions& options) {
     if (r.kind == RecordKind::profile)
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: a profile has no frequency spectrum (fit it phase-resolved)", r.source)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: a profile has no frequency spectrum (fit it phase-resolved)", r.source)};
     const double dt = r.median_spacing();
     if (!(dt > 0.0)) return Error{ErrorCode::invalid_argument, fmt::format("{}: no sample spacing", r.source)};
     const auto seg = static_cast<std::size_t>(std::lround(options.segment_seconds / dt));
     if (seg < 16 || seg > r.size())
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} samples at {} s cannot fill a {} s spectral segment", r.source,
-                                                              r.size(), dt, options.segment_seconds)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: {} samples at {} s cannot fill a {} s spectral segment", r.source, r.size(), dt,
+                                 options.segment_seconds)};
     const bool buoy = r.kind == RecordKind::buoy;
     // Uniform runs: a gap (spacing over 1.5 dt) ends a run; segments never cross one.
     std::vector<std::pair<std::size_t, std::size_t>> runs;
@@ -81,7 +85,8 @@ Result<MeasuredSpectrum> welch_spectrum(const MeasuredRecord& r, const WelchOpti
             ++s.segments;
         }
     if (s.segments == 0)
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: no gap-free stretch of {} s for a spectrum", r.source, options.segment_seconds)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: no gap-free stretch of {} s for a spectrum", r.source, options.segment_seconds)};
     // One-sided density: 2 |X|^2 dt / (sum w^2), averaged over segments.
     const double norm = 2.0 * dt / (w2 * s.segments);
     s.frequency.resize(bins);
@@ -164,8 +169,10 @@ double jonswap_density(double f, double hs, double tp, double gamma) {
 
 Result<std::vector<WaveSpec>> sample_preset_waves(const JonswapFit& fit, int count, std::uint64_t seed, double fold) {
     if (count < 1 || count > static_cast<int>(kMaxWaves))
-        return Error{ErrorCode::invalid_argument, fmt::format("wave count {} is out of range (1 to {})", count, kMaxWaves)};
-    if (!(fit.hs > 0.0) || !(fit.tp > 0.0)) return Error{ErrorCode::invalid_argument, "the fitted spectrum has no energy"};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("wave count {} is out of range (1 to {})", count, kMaxWaves)};
+    if (!(fit.hs > 0.0) || !(fit.tp > 0.0))
+        return Error{ErrorCode::invalid_argument, "the fitted spectrum has no energy"};
     // Equal-energy frequency bands between 0.6 fp and 4 fp; each wave sits at its band's centroid.
     const double fp = 1.0 / fit.tp, lo = 0.6 * fp, hi = 4.0 * fp, df = (hi - lo) / 4000.0;
     std::vector<double> cumulative{0.0};

@@ -1,8 +1,9 @@
 // CSV, Datawell raw and two-column text readers.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -66,18 +67,23 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
     const std::set<std::string> known = {"t", "x", "z", "east", "north", "flag"};
     for (const auto& [role, column] : columns.role_to_column) {
         if (!known.count(role))
-            return Error{ErrorCode::invalid_argument, fmt::format("{}: unknown role \"{}\" (roles: t, x, z, east, north, flag)", name, role)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}: unknown role \"{}\" (roles: t, x, z, east, north, flag)", name, role)};
         if (role != "flag" && std::find(roles.begin(), roles.end(), role) == roles.end())
-            return Error{ErrorCode::invalid_argument, fmt::format("{}: role \"{}\" is not used by {} data", name, role, to_string(kind))};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}: role \"{}\" is not used by {} data", name, role, to_string(kind))};
     }
     for (const auto& [role, factor] : columns.scale)
         if (!known.count(role) || !std::isfinite(factor) || factor == 0.0)
-            return Error{ErrorCode::invalid_argument, fmt::format("{}: scale for \"{}\" must be a known role and a finite, non-zero number", name, role)};
+            return Error{
+                ErrorCode::invalid_argument,
+                fmt::format("{}: scale for \"{}\" must be a known role and a finite, non-zero number", name, role)};
     auto in = open(path);
     if (!in) return in.error();
     std::string line;
     if (!std::getline(*in, line) || trim(line).empty())
-        return Error{ErrorCode::parse_error, fmt::format("{}: the file is empty (a header row naming the columns is required)", name)};
+        return Error{ErrorCode::parse_error,
+                     fmt::format("{}: the file is empty (a header row naming the columns is required)", name)};
     const char sep = line.find(',') != std::string::npos ? ',' : (line.find(';') != std::string::npos ? ';' : '\t');
     const std::vector<std::string> header = split(line, sep);
     std::string header_list;
@@ -91,8 +97,8 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
         const auto pos = std::find(header.begin(), header.end(), column);
         if (pos == header.end())
             return Error{ErrorCode::invalid_argument,
-                         fmt::format("{}: no column \"{}\" for {} (the header has: {}); map it with --column {}=NAME", name, column,
-                                     role, header_list, role)};
+                         fmt::format("{}: no column \"{}\" for {} (the header has: {}); map it with --column {}=NAME",
+                                     name, column, role, header_list, role)};
         index.push_back(static_cast<std::size_t>(pos - header.begin()));
     }
     auto scale_of = [&](const std::string& role) {
@@ -111,12 +117,14 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
         bool missing = false;
         for (std::size_t c = 0; c < used.size(); ++c) {
             if (index[c] >= cells.size())
-                return Error{ErrorCode::parse_error, fmt::format("{}:{}: {} cells, column \"{}\" is number {}", name, line_no, cells.size(),
-                                                                 header[index[c]], index[c] + 1)};
-            if (!parse_cell(cells[index[c]], values[c]))
                 return Error{ErrorCode::parse_error,
-                             fmt::format("{}:{}: column \"{}\": \"{}\" is not a number", name, line_no, header[index[c]], cells[index[c]])};
-            const bool sentinel = std::find(columns.sentinels.begin(), columns.sentinels.end(), values[c]) != columns.sentinels.end();
+                             fmt::format("{}:{}: {} cells, column \"{}\" is number {}", name, line_no, cells.size(),
+                                         header[index[c]], index[c] + 1)};
+            if (!parse_cell(cells[index[c]], values[c]))
+                return Error{ErrorCode::parse_error, fmt::format("{}:{}: column \"{}\": \"{}\" is not a number", name,
+                                                                 line_no, header[index[c]], cells[index[c]])};
+            const bool sentinel =
+                std::find(columns.sentinels.begin(), columns.sentinels.end(), values[c]) != columns.sentinels.end();
             if (c == 0 && !std::isfinite(values[c]))
                 return Error{ErrorCode::parse_error, fmt::format("{}:{}: the {} is missing", name, line_no, used[0])};
             if (c > 0 && used[c] != "flag" && (!std::isfinite(values[c]) || sentinel)) missing = true;
@@ -140,8 +148,8 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
         }
     }
     if (r.axis.empty())
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: no usable samples ({} missing, {} flagged)", name, r.skipped_missing,
-                                                              r.skipped_flagged)};
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: no usable samples ({} missing, {} flagged)", name,
+                                                              r.skipped_missing, r.skipped_flagged)};
     rebase(r);
     if (auto st = validate_record(r); !st) return st.error();
     return r;
@@ -160,9 +168,10 @@ Result<MeasuredRecord> read_datawell_raw(const std::filesystem::path& path) {
         if (trim(line).empty()) continue;
         const auto cells = split(line, ',');
         double v[4];
-        if (cells.size() != 4 || !parse_cell(cells[0], v[0]) || !parse_cell(cells[1], v[1]) || !parse_cell(cells[2], v[2]) ||
-            !parse_cell(cells[3], v[3]))
-            return Error{ErrorCode::parse_error, fmt::format("{}:{}: expected \"status, heave, north, west\" in cm", r.source, line_no)};
+        if (cells.size() != 4 || !parse_cell(cells[0], v[0]) || !parse_cell(cells[1], v[1]) ||
+            !parse_cell(cells[2], v[2]) || !parse_cell(cells[3], v[3]))
+            return Error{ErrorCode::parse_error,
+                         fmt::format("{}:{}: expected \"status, heave, north, west\" in cm", r.source, line_no)};
         const double t = static_cast<double>(sample++) / 1.28;
         if (v[0] != 0.0) {
             ++r.skipped_flagged;
@@ -199,7 +208,8 @@ Result<MeasuredRecord> read_two_column(const std::filesystem::path& path, Record
         double v0 = 0.0, v1 = 0.0;
         if (!(cells >> b) || (cells >> extra) || !parse_cell(a, v0) || !parse_cell(b, v1))
             return Error{ErrorCode::parse_error, fmt::format("{}:{}: expected two numbers", r.source, line_no)};
-        if (!std::isfinite(v0)) return Error{ErrorCode::parse_error, fmt::format("{}:{}: the first column is missing", r.source, line_no)};
+        if (!std::isfinite(v0))
+            return Error{ErrorCode::parse_error, fmt::format("{}:{}: the first column is missing", r.source, line_no)};
         if (!std::isfinite(v1)) {
             ++r.skipped_missing;
             continue;

@@ -26,16 +26,19 @@ bool ExampleDevice::create(const ExampleDeviceOptions& options) {
     ii.ppEnabledLayerNames = &layer;
     ii.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
     ii.ppEnabledExtensionNames = extensions.data();
-    if (VkResult r = vkCreateInstance(&ii, nullptr, &instance); r != VK_SUCCESS) return failed(error_, "vkCreateInstance", r);
+    if (VkResult r = vkCreateInstance(&ii, nullptr, &instance); r != VK_SUCCESS)
+        return failed(error_, "vkCreateInstance", r);
     if (options.validation) {
         VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+        mi.messageSeverity =
+            VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
         mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
         mi.pfnUserCallback = options.on_message;
         mi.pUserData = options.message_user;
         auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create_messenger || !options.on_message) return failed(error_, "vkCreateDebugUtilsMessengerEXT (no callback)", VK_ERROR_EXTENSION_NOT_PRESENT);
+        if (!create_messenger || !options.on_message)
+            return failed(error_, "vkCreateDebugUtilsMessengerEXT (no callback)", VK_ERROR_EXTENSION_NOT_PRESENT);
         if (VkResult r = create_messenger(instance, &mi, nullptr, &messenger_); r != VK_SUCCESS)
             return failed(error_, "vkCreateDebugUtilsMessengerEXT", r);
     }
@@ -92,7 +95,8 @@ bool ExampleDevice::create(const ExampleDeviceOptions& options) {
     di.enabledExtensionCount = static_cast<std::uint32_t>(options.device_extensions.size());
     di.ppEnabledExtensionNames = options.device_extensions.data();
     di.pEnabledFeatures = &enabled;
-    if (VkResult r = vkCreateDevice(physical, &di, nullptr, &device); r != VK_SUCCESS) return failed(error_, "vkCreateDevice", r);
+    if (VkResult r = vkCreateDevice(physical, &di, nullptr, &device); r != VK_SUCCESS)
+        return failed(error_, "vkCreateDevice", r);
     vkGetDeviceQueue(device, family, 0, &queue);
     return true;
 }

@@ -13,9 +13,8 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <vector>
-
 #include <tidewater/render/device_context.hpp>
+#include <vector>
 
 namespace tidewater::examples {
 
@@ -36,7 +35,7 @@ struct ExampleDeviceOptions {
 };
 
 class ExampleDevice {
-public:
+  public:
     ExampleDevice() = default;
     ExampleDevice(const ExampleDevice&) = delete;
     ExampleDevice& operator=(const ExampleDevice&) = delete;
@@ -57,7 +56,7 @@ public:
     VkQueue queue = VK_NULL_HANDLE;
     VkPhysicalDeviceFeatures enabled{};  ///< what vkCreateDevice was given
 
-private:
+  private:
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     std::string error_;
 };

@@ -7,22 +7,21 @@
 //
 // Exit status 0 when every step worked, the validation layer said nothing and the
 // query matched the depth buffer; 1 otherwise.
-#include <tidewater/render/renderer.hpp>
-#include <tidewater/scene_bake.hpp>
-#include <tidewater/tidewater.hpp>
-
-#include <glm/geometric.hpp>
 #include <png.h>
 #include <vulkan/vulkan.h>
-
-#include "../common/example_device.hpp"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <string>
+#include <tidewater/render/renderer.hpp>
+#include <tidewater/scene_bake.hpp>
+#include <tidewater/tidewater.hpp>
 #include <vector>
+
+#include "../common/example_device.hpp"
 
 namespace {
 
@@ -118,7 +117,8 @@ struct Host : tidewater::examples::ExampleDevice {
 };
 
 void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage, VkAccessFlags dst_access) {
+             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
+             VkAccessFlags dst_access) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = src_access;
     b.dstAccessMask = dst_access;
@@ -158,9 +158,12 @@ int main(int argc, char** argv) {
     bool validation = true;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
-        else if (a == "--out" && i + 1 < argc) out = argv[++i];
-        else if (a == "--no-validation") validation = false;
+        if (a == "--frames" && i + 1 < argc)
+            frames = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--out" && i + 1 < argc)
+            out = argv[++i];
+        else if (a == "--no-validation")
+            validation = false;
         else {
             std::fprintf(stderr, "usage: embed_minimal_headless [--frames N] [--out frame.png] [--no-validation]\n");
             return 1;
@@ -184,9 +187,11 @@ int main(int argc, char** argv) {
         vkAllocateCommandBuffers(host.device, &ai, cmds.data());
         for (std::uint32_t s = 0; s < kFramesInFlight; ++s) {
             // TRANSFER_SRC: the renderer copies the opaque scene for refraction.
-            color[s] = host.make_image(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                       VK_IMAGE_ASPECT_COLOR_BIT);
-            depth[s] = host.make_image(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+            color[s] =
+                host.make_image(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                VK_IMAGE_ASPECT_COLOR_BIT);
+            depth[s] = host.make_image(kDepthFormat,
+                                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                        VK_IMAGE_ASPECT_DEPTH_BIT);
             VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
             fi.flags = VK_FENCE_CREATE_SIGNALED_BIT;
@@ -204,7 +209,8 @@ int main(int argc, char** argv) {
             vkGetBufferMemoryRequirements(host.device, readback[b], &req);
             VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
             alloc.allocationSize = req.size;
-            alloc.memoryTypeIndex = host.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+            alloc.memoryTypeIndex = host.memory_type(
+                req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
             vkAllocateMemory(host.device, &alloc, nullptr, &readback_memory[b]);
             vkBindBufferMemory(host.device, readback[b], readback_memory[b], 0);
         }
@@ -218,7 +224,8 @@ int main(int argc, char** argv) {
         init.log = [](const std::string& line) { std::printf("%s\n", line.c_str()); };
         auto renderer = tidewater::render::Renderer::create(init);
         auto parsed = tidewater::default_scene();
-        auto scene = parsed ? tidewater::bake_scene(*parsed) : tidewater::Result<std::shared_ptr<const tidewater::Scene>>(parsed.error());
+        auto scene = parsed ? tidewater::bake_scene(*parsed)
+                            : tidewater::Result<std::shared_ptr<const tidewater::Scene>>(parsed.error());
         if (!renderer || !scene) {
             std::fprintf(stderr, "%s\n", (!renderer ? renderer.error() : scene.error()).message.c_str());
             ok = false;
@@ -240,17 +247,18 @@ int main(int argc, char** argv) {
             VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
             vkBeginCommandBuffer(cmd, &begin);
             // The renderer takes the targets in attachment layouts and gives them back so.
-            barrier(cmd, color[s].image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-            barrier(cmd, depth[s].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+            barrier(cmd, color[s].image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+            barrier(cmd, depth[s].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
             tidewater::render::FrameInfo frame;
             frame.camera = camera;
             frame.time = clock.now();
             frame.frame_index = static_cast<std::uint64_t>(i);
-            const tidewater::render::FrameTargets targets{color[s].image, color[s].view, depth[s].image, depth[s].view, {kWidth, kHeight}};
+            const tidewater::render::FrameTargets targets{
+                color[s].image, color[s].view, depth[s].image, depth[s].view, {kWidth, kHeight}};
             if (auto st = (*renderer)->record_frame(cmd, frame, targets); !st) {
                 std::fprintf(stderr, "record_frame: %s\n", st.error().message.c_str());
                 ok = false;
@@ -259,20 +267,25 @@ int main(int argc, char** argv) {
                 // The last frame: read colour and depth back.
                 barrier(cmd, color[s].image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_ACCESS_TRANSFER_READ_BIT);
                 barrier(cmd, depth[s].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_ACCESS_TRANSFER_READ_BIT);
                 VkBufferImageCopy region{};
                 region.imageExtent = {kWidth, kHeight, 1};
                 region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                vkCmdCopyImageToBuffer(cmd, color[s].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback[0], 1, &region);
+                vkCmdCopyImageToBuffer(cmd, color[s].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback[0], 1,
+                                       &region);
                 region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-                vkCmdCopyImageToBuffer(cmd, depth[s].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback[1], 1, &region);
+                vkCmdCopyImageToBuffer(cmd, depth[s].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback[1], 1,
+                                       &region);
                 VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
                 to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
                 to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
+                                     nullptr, 0, nullptr);
             }
             vkEndCommandBuffer(cmd);
             VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -297,7 +310,8 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "%s: cannot write the PNG\n", out.c_str());
                 ok = false;
             } else {
-                std::printf("wrote %s (%ux%u, %d frames, %u in flight)\n", out.c_str(), kWidth, kHeight, frames, kFramesInFlight);
+                std::printf("wrote %s (%ux%u, %d frames, %u in flight)\n", out.c_str(), kWidth, kHeight, frames,
+                            kFramesInFlight);
             }
             // The drawn surface under the image centre against the CPU query there. Reversed-Z
             // with an infinite far plane: depth = near / (distance along the view direction).
@@ -312,8 +326,9 @@ int main(int argc, char** argv) {
             const glm::dvec3 hit = camera.position + ray * (camera.near_plane / static_cast<double>(d));
             const tidewater::WorldPoint water = tidewater::query_world_point(**scene, clock.now(), {hit.x, hit.z});
             const double gap = std::abs(water.surface.height - hit.y);
-            std::printf("image centre: drawn surface at y = %.3f m, CPU query %.3f m (%s): %.1f mm apart\n", hit.y, water.surface.height,
-                        std::string(tidewater::body_name(**scene, water.body)).c_str(), 1000.0 * gap);
+            std::printf("image centre: drawn surface at y = %.3f m, CPU query %.3f m (%s): %.1f mm apart\n", hit.y,
+                        water.surface.height, std::string(tidewater::body_name(**scene, water.body)).c_str(),
+                        1000.0 * gap);
             if (!(d > 0.0f) || !(gap < 0.05)) {
                 std::fprintf(stderr, "the CPU query does not match the drawn frame\n");
                 ok = false;

@@ -11,17 +11,16 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
-#include "../common/example_device.hpp"
-
-#include <tidewater/render/renderer.hpp>
-#include <tidewater/scene_bake.hpp>
-#include <tidewater/tidewater.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <tidewater/render/renderer.hpp>
+#include <tidewater/scene_bake.hpp>
+#include <tidewater/tidewater.hpp>
 #include <vector>
+
+#include "../common/example_device.hpp"
 
 namespace {
 
@@ -139,8 +138,9 @@ struct App : tidewater::examples::ExampleDevice {
             if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) format = f;
         int w = 0, h = 0;
         glfwGetFramebufferSize(window, &w, &h);
-        extent = caps.currentExtent.width != 0xFFFFFFFFu ? caps.currentExtent
-                                                         : VkExtent2D{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)};
+        extent = caps.currentExtent.width != 0xFFFFFFFFu
+                     ? caps.currentExtent
+                     : VkExtent2D{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)};
         VkSwapchainCreateInfoKHR sc{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
         sc.surface = surface;
         sc.minImageCount = std::max(caps.minImageCount, 2u);
@@ -213,7 +213,8 @@ struct App : tidewater::examples::ExampleDevice {
 };
 
 void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage, VkAccessFlags dst_access) {
+             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
+             VkAccessFlags dst_access) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = src_access;
     b.dstAccessMask = dst_access;
@@ -231,8 +232,10 @@ int main(int argc, char** argv) {
     long frames = -1, resize_at = -1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--frames" && i + 1 < argc) frames = std::atol(argv[++i]);
-        else if (a == "--resize-at" && i + 1 < argc) resize_at = std::atol(argv[++i]);
+        if (a == "--frames" && i + 1 < argc)
+            frames = std::atol(argv[++i]);
+        else if (a == "--resize-at" && i + 1 < argc)
+            resize_at = std::atol(argv[++i]);
         else {
             std::fprintf(stderr, "usage: embed_minimal_windowed [--frames N] [--resize-at N]\n");
             return 1;
@@ -257,20 +260,27 @@ int main(int argc, char** argv) {
         init.wireframe = app.enabled.fillModeNonSolid;
         auto renderer = tidewater::render::Renderer::create(init);
         auto parsed = tidewater::default_scene();
-        auto scene = parsed ? tidewater::bake_scene(*parsed) : tidewater::Result<std::shared_ptr<const tidewater::Scene>>(parsed.error());
+        auto scene = parsed ? tidewater::bake_scene(*parsed)
+                            : tidewater::Result<std::shared_ptr<const tidewater::Scene>>(parsed.error());
         ok = renderer && scene && (*renderer)->set_scene(**scene).ok() && (*renderer)->resize(app.extent).ok();
-        if (!ok) std::fprintf(stderr, "%s\n", !renderer ? renderer.error().message.c_str() : !scene ? scene.error().message.c_str() : "set_scene failed");
+        if (!ok)
+            std::fprintf(stderr, "%s\n",
+                         !renderer ? renderer.error().message.c_str()
+                         : !scene  ? scene.error().message.c_str()
+                                   : "set_scene failed");
         tidewater::Clock clock;
         std::vector<bool> seen(app.images.size(), false);  // images that have been presented once
         bool rebuild = false;
-        for (std::uint64_t i = 0; ok && !glfwWindowShouldClose(app.window) && (frames < 0 || static_cast<long>(i) < frames); ++i) {
+        for (std::uint64_t i = 0;
+             ok && !glfwWindowShouldClose(app.window) && (frames < 0 || static_cast<long>(i) < frames); ++i) {
             glfwPollEvents();
             if (static_cast<long>(i) == resize_at) glfwSetWindowSize(app.window, 480, 300);
             const std::uint32_t s = static_cast<std::uint32_t>(i % kFramesInFlight);
             vkWaitForFences(app.device, 1, &app.fences[s], VK_TRUE, UINT64_MAX);
             std::uint32_t index = 0;
             VkResult acquired = rebuild ? VK_ERROR_OUT_OF_DATE_KHR
-                                        : vkAcquireNextImageKHR(app.device, app.swapchain, UINT64_MAX, app.acquired[s], VK_NULL_HANDLE, &index);
+                                        : vkAcquireNextImageKHR(app.device, app.swapchain, UINT64_MAX, app.acquired[s],
+                                                                VK_NULL_HANDLE, &index);
             if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
                 // Rebuild the swapchain, then tell the renderer the new size.
                 ok = app.create_swapchain() && (*renderer)->resize(app.extent).ok();
@@ -290,10 +300,11 @@ int main(int argc, char** argv) {
             VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
             vkBeginCommandBuffer(cmd, &begin);
             barrier(cmd, app.images[index], VK_IMAGE_ASPECT_COLOR_BIT,
-                    seen[index] ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-            barrier(cmd, app.depths[index].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                    seen[index] ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+            barrier(cmd, app.depths[index].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
             tidewater::render::FrameInfo frame;
@@ -308,9 +319,9 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "record_frame: %s\n", st.error().message.c_str());
                 ok = false;
             }
-            barrier(cmd, app.images[index], VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                    VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+            barrier(cmd, app.images[index], VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
             vkEndCommandBuffer(cmd);
             const VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
             VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -332,9 +343,12 @@ int main(int argc, char** argv) {
             const VkResult presented = vkQueuePresentKHR(app.queue, &present);
             int w = 0, h = 0;
             glfwGetFramebufferSize(app.window, &w, &h);
-            const bool size_changed = static_cast<std::uint32_t>(w) != app.extent.width || static_cast<std::uint32_t>(h) != app.extent.height;
-            if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR || size_changed) rebuild = true;
-            else if (presented != VK_SUCCESS) ok = false;
+            const bool size_changed =
+                static_cast<std::uint32_t>(w) != app.extent.width || static_cast<std::uint32_t>(h) != app.extent.height;
+            if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR || size_changed)
+                rebuild = true;
+            else if (presented != VK_SUCCESS)
+                ok = false;
             ++drawn;
             clock.advance(1.0 / 60.0);
         }
@@ -343,6 +357,7 @@ int main(int argc, char** argv) {
     }
     app.destroy();
     glfwTerminate();
-    std::printf("presented %ld frame(s), %d swapchain rebuild(s), %d validation message(s)\n", drawn, resizes, g_validation_messages);
+    std::printf("presented %ld frame(s), %d swapchain rebuild(s), %d validation message(s)\n", drawn, resizes,
+                g_validation_messages);
     return ok && g_validation_messages == 0 && (resize_at < 0 || resizes > 0) ? 0 : 1;
 }

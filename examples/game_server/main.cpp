@@ -35,10 +35,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::printf("game server: scene \"%s\" loaded from its saved bake (%s) in %.2f s\n", (*scene)->name.c_str(),
-                (*scene)->bake && (*scene)->bake->loaded ? "loaded" : "nothing to load", (*scene)->bake ? (*scene)->bake->seconds : 0.0);
+                (*scene)->bake && (*scene)->bake->loaded ? "loaded" : "nothing to load",
+                (*scene)->bake ? (*scene)->bake->seconds : 0.0);
     for (std::size_t i = 0; i < points.size(); ++i)
         std::printf("  (%.1f, %.1f): %s, surface %.3f m\n", points[i].x, points[i].y,
-                    out[i].body.kind == tidewater::BodyKind::none ? "land" : std::string(tidewater::body_name(**scene, out[i].body)).c_str(),
+                    out[i].body.kind == tidewater::BodyKind::none
+                        ? "land"
+                        : std::string(tidewater::body_name(**scene, out[i].body)).c_str(),
                     out[i].surface.height);
     return 0;
 }

@@ -10,7 +10,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-
 #include <tidewater/scene_bake.hpp>
 
 namespace tidewater::editor {

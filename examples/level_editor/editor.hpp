@@ -5,16 +5,15 @@
 // and the terrain brush).
 #pragma once
 
+#include <imgui.h>
+
 #include <memory>
 #include <optional>
 #include <string>
-#include <utility>
-#include <vector>
-
-#include <imgui.h>
-
 #include <tidewater/render/renderer.hpp>
 #include <tidewater/tidewater.hpp>
+#include <utility>
+#include <vector>
 
 #include "bake_worker.hpp"
 #include "editor_options.hpp"
@@ -28,10 +27,10 @@ namespace tidewater::editor {
 /// The editor: its window, renderer, scene and panels. One per process; every member
 /// function runs on the main thread (the bake worker reports through BackgroundBake).
 class Editor {
-public:
+  public:
     int run(const Options& options);
 
-private:
+  private:
     Status start(const Options& options);
     Status load(const std::string& path);
     void panels();
@@ -45,7 +44,7 @@ private:
     std::unique_ptr<render::Renderer> renderer_;
     VkDescriptorPool imgui_pool_ = VK_NULL_HANDLE;
     std::shared_ptr<const Scene> scene_;
-    std::optional<SceneFloaters> floaters_;      // the scene's boats and floats, riding the water
+    std::optional<SceneFloaters> floaters_;       // the scene's boats and floats, riding the water
     std::vector<render::FloatDraw> float_draws_;  // this frame's
     void refloat();
     void float_bodies(render::FrameInfo& info);
@@ -72,14 +71,14 @@ private:
     };
     std::vector<Step> steps_;
     bool force_reload_ = false;
-    bool brushing_ = false;           // the Terrain panel's brush is on (left drag paints)
+    bool brushing_ = false;  // the Terrain panel's brush is on (left drag paints)
     float brush_radius_ = 60.0f, brush_height_ = 2.0f;
-    std::optional<Terrain> stroke_;   // the terrain under the current stroke
+    std::optional<Terrain> stroke_;                                // the terrain under the current stroke
     std::optional<std::pair<glm::dvec2, double>> scripted_brush_;  // where, and the ground there before
     void paint(glm::dvec2 at, double height);
-    bool editing_rivers_ = false;          // the Rivers panel's point editing is on
+    bool editing_rivers_ = false;                                 // the Rivers panel's point editing is on
     std::optional<std::pair<std::size_t, std::size_t>> dragged_;  // river, path point
-    std::optional<Scene> body_edit_;       // rivers and lakes being edited, baked on release
+    std::optional<Scene> body_edit_;                              // rivers and lakes being edited, baked on release
     void bodies_panel();
     void drag_points();
     std::optional<ImVec2> project(glm::dvec3 p) const;

@@ -1,8 +1,7 @@
 // The viewport's mouse input: orbit, pan, zoom, the probe, markers and the terrain brush.
-#include "editor.hpp"
-
 #include <cmath>
 
+#include "editor.hpp"
 #include "terrain_brush.hpp"
 
 namespace tidewater::editor {

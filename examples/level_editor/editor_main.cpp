@@ -18,13 +18,13 @@
 // Scripted mode (--frames) draws N frames, writes the last one with its panels to
 // --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
 // validation message).
+#include <fmt/format.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
-
-#include <imgui_impl_glfw.h>
-#include <imgui_impl_vulkan.h>
 
 #include "editor.hpp"
 
@@ -76,7 +76,8 @@ Status Editor::start(const Options& options) {
     info.MinImageCount = 2;
     info.ImageCount = std::max(2u, window_.image_count());
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
-    if (!ImGui_ImplVulkan_Init(&info, window_.ui_pass())) return Error{ErrorCode::device_error, "editor: ImGui's Vulkan backend failed"};
+    if (!ImGui_ImplVulkan_Init(&info, window_.ui_pass()))
+        return Error{ErrorCode::device_error, "editor: ImGui's Vulkan backend failed"};
     // The font texture, uploaded once through a one-off command buffer.
     VkCommandPool upload_pool = VK_NULL_HANDLE;
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -158,7 +159,8 @@ int Editor::run(const Options& options) {
         viewport_input();
         if (script_probe_) {
             const VkExtent2D e = window_.extent();
-            probe_ = probe_ray(*scene_, clock_.now(), camera_.position(), camera_.ray(script_probe_->x, script_probe_->y, e.width, e.height));
+            probe_ = probe_ray(*scene_, clock_.now(), camera_.position(),
+                               camera_.ray(script_probe_->x, script_probe_->y, e.width, e.height));
         }
         panels();
         drag_points();
@@ -170,7 +172,8 @@ int Editor::run(const Options& options) {
         info.frame_index = frame.index;
         info.view = render::all_debug_views()[static_cast<std::size_t>(view_)];
         float_bodies(info);
-        const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view, window_.extent()};
+        const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view,
+                                           window_.extent()};
         if (auto st = renderer_->record_frame(frame.cmd, info, targets); !st) {
             std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
             ok = false;
@@ -194,18 +197,22 @@ int Editor::run(const Options& options) {
             ++timed_frames;
         }
     }
-    if (timed_frames > 0) std::printf("frame time: %.1f ms mean over %ld frames\n", 1000.0 * frame_seconds / static_cast<double>(timed_frames), timed_frames);
+    if (timed_frames > 0)
+        std::printf("frame time: %.1f ms mean over %ld frames\n",
+                    1000.0 * frame_seconds / static_cast<double>(timed_frames), timed_frames);
     if (scripted_brush_)
-        std::printf("terrain at the brush (%.1f, %.1f): %.3f m, was %.3f m\n", scripted_brush_->first.x, scripted_brush_->first.y,
-                    scene_->terrain.height_at(scripted_brush_->first), scripted_brush_->second);
+        std::printf("terrain at the brush (%.1f, %.1f): %.3f m, was %.3f m\n", scripted_brush_->first.x,
+                    scripted_brush_->first.y, scene_->terrain.height_at(scripted_brush_->first),
+                    scripted_brush_->second);
     std::printf("window %ux%u, ocean \"%s\" with%s a shore model\n", window_.extent().width, window_.extent().height,
                 scene_->ocean.profile().name.c_str(), scene_->ocean.shore() ? "" : "out");
     if (!message_.empty()) std::printf("%s\n", message_.c_str());
     if (script_probe_ && probe_) {
-        const SurfacePoint direct = query_world_point(*scene_, clock_.now(), {probe_->point.x, probe_->point.z}).surface;
-        std::printf("probe: (%.3f, %.3f) height %.6f m, query_surface %.6f m, body \"%s\"%s\n", probe_->point.x, probe_->point.z,
-                    probe_->point.y, direct.height, std::string(body_name(*scene_, probe_->water.body)).c_str(),
-                    probe_->on_land ? " (land)" : "");
+        const SurfacePoint direct =
+            query_world_point(*scene_, clock_.now(), {probe_->point.x, probe_->point.z}).surface;
+        std::printf("probe: (%.3f, %.3f) height %.6f m, query_surface %.6f m, body \"%s\"%s\n", probe_->point.x,
+                    probe_->point.z, probe_->point.y, direct.height,
+                    std::string(body_name(*scene_, probe_->water.body)).c_str(), probe_->on_land ? " (land)" : "");
         std::printf("terrain at the probe: %.3f m\n", scene_->terrain.height_at({probe_->point.x, probe_->point.z}));
         std::printf("gpu: terrain %.3f ms, copy %.3f ms, water %.3f ms, total %.3f ms\n", timings_.sky_and_terrain_ms,
                     timings_.scene_copy_ms, timings_.water_ms, timings_.total_ms);
@@ -228,12 +235,12 @@ int Editor::run(const Options& options) {
 
 }  // namespace tidewater::editor
 
-
 int main(int argc, char** argv) {
     const auto options = tidewater::editor::parse(argc, argv);
     if (!options) {
-        std::fprintf(stderr, "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
-                             "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]\n");
+        std::fprintf(stderr,
+                     "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
+                     "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]\n");
         return 2;
     }
     tidewater::editor::Editor editor;

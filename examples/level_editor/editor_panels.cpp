@@ -1,12 +1,12 @@
 // The editor's ImGui panels and the overlays drawn over the frame (river points,
 // markers).
-#include "editor.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "editor.hpp"
 
 namespace tidewater::editor {
 
@@ -23,7 +23,8 @@ void Editor::panels() {
         }
         ImGui::SameLine();
         if (ImGui::Button("Save bake") && !bake_.running()) {
-            const std::string dir = std::string(path_field_).empty() ? "tidewater-bake" : std::string(path_field_) + ".bake";
+            const std::string dir =
+                std::string(path_field_).empty() ? "tidewater-bake" : std::string(path_field_) + ".bake";
             auto st = save_scene_bake(dir, *scene_);
             message_ = st ? fmt::format("saved the bake to {}/", dir) : st.error().message;
         }
@@ -34,7 +35,8 @@ void Editor::panels() {
         for (const auto& n : names) items.push_back(n.c_str());
         if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running())
             choose_preset(names[static_cast<std::size_t>(preset_)]);
-        ImGui::Text("%zu waves, Hs %.2f m", scene_->ocean.waves().size(), scene_->ocean.waves().significant_wave_height());
+        ImGui::Text("%zu waves, Hs %.2f m", scene_->ocean.waves().size(),
+                    scene_->ocean.waves().significant_wave_height());
     }
     if (ImGui::CollapsingHeader("Shore", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::SliderFloat("breaking index", &breaking_index_, 0.3f, 1.2f, "%.2f");
@@ -74,8 +76,8 @@ void Editor::panels() {
         std::vector<const char*> items;
         for (const auto& n : names) items.push_back(n.c_str());
         ImGui::Combo("debug view", &view_, items.data(), static_cast<int>(items.size()));
-        ImGui::Text("GPU: terrain %.2f ms, copy %.2f ms, water %.2f ms", timings_.sky_and_terrain_ms, timings_.scene_copy_ms,
-                    timings_.water_ms);
+        ImGui::Text("GPU: terrain %.2f ms, copy %.2f ms, water %.2f ms", timings_.sky_and_terrain_ms,
+                    timings_.scene_copy_ms, timings_.water_ms);
     }
     if (ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (probe_) {
@@ -89,8 +91,10 @@ void Editor::panels() {
         }
     }
     if (shaders_ && ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (shaders_->error().empty()) ImGui::TextWrapped("%s", shader_line_.empty() ? "watching for changes" : shader_line_.c_str());
-        else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", shaders_->error().c_str());
+        if (shaders_->error().empty())
+            ImGui::TextWrapped("%s", shader_line_.empty() ? "watching for changes" : shader_line_.c_str());
+        else
+            ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", shaders_->error().c_str());
     }
     if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::End();
@@ -120,7 +124,8 @@ void Editor::bodies_panel() {
     for (std::size_t l = 0; l < edited.lakes.size(); ++l) {
         ImGui::PushID(1000 + static_cast<int>(l));
         float level = static_cast<float>(edited.lakes[l].body.level());
-        if (ImGui::SliderFloat(fmt::format("lake \"{}\" level (m)", edited.lakes[l].name).c_str(), &level, -50.0f, 500.0f, "%.2f")) {
+        if (ImGui::SliderFloat(fmt::format("lake \"{}\" level (m)", edited.lakes[l].name).c_str(), &level, -50.0f,
+                               500.0f, "%.2f")) {
             auto body = WaterBody::create(edited.lakes[l].body.profile(), level, edited.lakes[l].name);
             if (body) {
                 edited.lakes[l].body = std::move(body).value();
@@ -170,7 +175,8 @@ void Editor::draw_markers() {
         if (!attitude) continue;
         const glm::dvec3 centre{m.position.x, attitude->heave, m.position.y};
         // The mast tilts with pitch and roll.
-        const glm::dvec3 mast = centre + 4.0 * glm::normalize(glm::dvec3(std::sin(attitude->pitch), 1.0, std::sin(attitude->roll)));
+        const glm::dvec3 mast =
+            centre + 4.0 * glm::normalize(glm::dvec3(std::sin(attitude->pitch), 1.0, std::sin(attitude->roll)));
         const auto a = project(centre), b = project(mast);
         if (!a || !b) continue;
         draw->AddCircleFilled(*a, 5.0f, IM_COL32(255, 140, 0, 255));
@@ -188,7 +194,8 @@ std::optional<ImVec2> Editor::project(glm::dvec3 p) const {
     const glm::dvec3 d = p - cam.position;
     const double depth = glm::dot(d, forward);
     if (depth <= 0.1) return std::nullopt;
-    const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height), y = glm::dot(d, up) / (depth * tan_half);
+    const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height),
+                 y = glm::dot(d, up) / (depth * tan_half);
     return ImVec2(static_cast<float>((x + 1.0) * 0.5 * e.width), static_cast<float>((1.0 - y) * 0.5 * e.height));
 }
 

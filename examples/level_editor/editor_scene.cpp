@@ -1,10 +1,11 @@
 // The editor's scene: loading it, swapping in what the bake worker made, the boats and
 // floats riding it, and preset changes.
-#include "editor.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <fmt/format.h>
+
+#include "editor.hpp"
 
 namespace tidewater::editor {
 
@@ -22,7 +23,8 @@ Status Editor::load(const std::string& path) {
     const auto presets = bundled_preset_names();
     const auto at = std::find(presets.begin(), presets.end(), scene_->ocean.profile().name);
     preset_ = at == presets.end() ? 0 : static_cast<int>(at - presets.begin());
-    if (scene_->camera) camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
+    if (scene_->camera)
+        camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
     if (renderer_)
         if (auto st = renderer_->set_scene(*scene_); !st) return st;
     return {};
@@ -82,7 +84,8 @@ void Editor::float_bodies(render::FrameInfo& info) {
 
 void Editor::choose_preset(const std::string& name) {
     auto profile = load_preset(name);
-    auto body = profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
+    auto body =
+        profile ? WaterBody::create(*profile, scene_->water_level(), "ocean") : Result<WaterBody>(profile.error());
     if (!body) {
         message_ = body.error().message;
         return;

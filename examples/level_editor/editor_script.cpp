@@ -1,11 +1,11 @@
-#include "editor.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
+#include "editor.hpp"
 #include "terrain_brush.hpp"
 
 namespace tidewater::editor {
@@ -24,7 +24,9 @@ Status Editor::run_script(const std::string& path) {
         std::istringstream words(line);
         std::string command;
         if (!(words >> command) || command[0] == '#') continue;
-        auto bad = [&] { return Error{ErrorCode::parse_error, fmt::format("{}:{}: cannot read \"{}\"", path, number, line)}; };
+        auto bad = [&] {
+            return Error{ErrorCode::parse_error, fmt::format("{}:{}: cannot read \"{}\"", path, number, line)};
+        };
         if (command == "camera") {
             glm::dvec3 p, t;
             double fov = camera_.fov_y_deg;
@@ -66,13 +68,15 @@ Status Editor::run_script(const std::string& path) {
             double value = 0.0;
             if (!(words >> name >> field >> value) || field != "discharge" || !(value > 0.0)) return bad();
             Scene edited = *scene_;
-            const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(), [&](const SceneRiver& r) { return r.name == name; });
+            const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(),
+                                         [&](const SceneRiver& r) { return r.name == name; });
             if (it == edited.rivers.end()) return bad();
             it->discharge = value;
             bake_.start(std::move(edited), scene_);
         } else if (command == "at") {
             Step step;
-            if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot")) return bad();
+            if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot"))
+                return bad();
             std::getline(words >> std::ws, step.argument);
             if (step.argument.empty()) return bad();
             steps_.push_back(step);
@@ -96,15 +100,18 @@ Status Editor::run_step(const Step& step, std::string& screenshot) {
     if (!shaders_) return Error{ErrorCode::invalid_argument, "editor: a replace step needs --shader-dir"};
     const auto bar = step.argument.find('|'), bar2 = step.argument.find('|', bar == std::string::npos ? 0 : bar + 1);
     if (bar == std::string::npos || bar2 == std::string::npos)
-        return Error{ErrorCode::parse_error, fmt::format("editor: replace needs FILE|OLD|NEW, got \"{}\"", step.argument)};
+        return Error{ErrorCode::parse_error,
+                     fmt::format("editor: replace needs FILE|OLD|NEW, got \"{}\"", step.argument)};
     const std::filesystem::path file = std::filesystem::path(shader_dir_) / step.argument.substr(0, bar);
-    const std::string old_text = step.argument.substr(bar + 1, bar2 - bar - 1), new_text = step.argument.substr(bar2 + 1);
+    const std::string old_text = step.argument.substr(bar + 1, bar2 - bar - 1),
+                      new_text = step.argument.substr(bar2 + 1);
     std::ifstream in(file);
     std::stringstream text;
     text << in.rdbuf();
     std::string source = text.str();
     const auto at = source.find(old_text);
-    if (!in || at == std::string::npos) return Error{ErrorCode::not_found, fmt::format("editor: {}: \"{}\" not found", file.string(), old_text)};
+    if (!in || at == std::string::npos)
+        return Error{ErrorCode::not_found, fmt::format("editor: {}: \"{}\" not found", file.string(), old_text)};
     source.replace(at, old_text.size(), new_text);
     std::ofstream(file, std::ios::trunc) << source;
     force_reload_ = true;

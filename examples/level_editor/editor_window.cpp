@@ -1,9 +1,10 @@
 #include "editor_window.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <fmt/format.h>
 
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/image_write.hpp"
@@ -18,14 +19,15 @@ Error vk_failed(const char* call, VkResult r) {
     return e;
 }
 
-#define EDITOR_VK(call)                                \
-    do {                                               \
-        const VkResult editor_r_ = (call);             \
+#define EDITOR_VK(call)                                                  \
+    do {                                                                 \
+        const VkResult editor_r_ = (call);                               \
         if (editor_r_ != VK_SUCCESS) return vk_failed(#call, editor_r_); \
     } while (0)
 
 void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage, VkAccessFlags dst_access) {
+             VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
+             VkAccessFlags dst_access) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = src_access;
     b.dstAccessMask = dst_access;
@@ -39,7 +41,8 @@ void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkIm
 
 }  // namespace
 
-VKAPI_ATTR VkBool32 VKAPI_CALL EditorWindow::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+VKAPI_ATTR VkBool32 VKAPI_CALL EditorWindow::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                        VkDebugUtilsMessageTypeFlagsEXT,
                                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     std::fprintf(stderr, "validation: %s\n", data->pMessage);
     ++static_cast<EditorWindow*>(user)->validation_messages_;
@@ -69,7 +72,9 @@ Status EditorWindow::create(int width, int height, bool validation) {
     options.message_user = this;
     options.instance_extensions.assign(glfw_extensions, glfw_extensions + glfw_count);
     options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-    options.on_instance = [this](VkInstance made) { return glfwCreateWindowSurface(made, window_, nullptr, &surface_) == VK_SUCCESS; };
+    options.on_instance = [this](VkInstance made) {
+        return glfwCreateWindowSurface(made, window_, nullptr, &surface_) == VK_SUCCESS;
+    };
     options.can_present = [this](VkPhysicalDevice d, std::uint32_t f) {
         VkBool32 present = VK_FALSE;
         return vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface_, &present) == VK_SUCCESS && present;
@@ -105,7 +110,8 @@ Status EditorWindow::create_swapchain() {
     VkSurfaceCapabilitiesKHR caps;
     EDITOR_VK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical_, surface_, &caps));
     if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
-        return Error{ErrorCode::unsupported, "editor: the window's images cannot be TRANSFER_SRC, which the renderer needs"};
+        return Error{ErrorCode::unsupported,
+                     "editor: the window's images cannot be TRANSFER_SRC, which the renderer needs"};
     std::uint32_t count = 0;
     vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface_, &count, nullptr);
     std::vector<VkSurfaceFormatKHR> formats(count);
@@ -115,8 +121,9 @@ Status EditorWindow::create_swapchain() {
         if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) format_ = f;
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
-    extent_ = caps.currentExtent.width != 0xFFFFFFFFu ? caps.currentExtent
-                                                      : VkExtent2D{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)};
+    extent_ = caps.currentExtent.width != 0xFFFFFFFFu
+                  ? caps.currentExtent
+                  : VkExtent2D{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)};
     VkSwapchainCreateInfoKHR sc{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     sc.surface = surface_;
     sc.minImageCount = std::max(caps.minImageCount, 2u);
@@ -222,7 +229,9 @@ void EditorWindow::destroy_swapchain() {
     swapchain_ = VK_NULL_HANDLE;
 }
 
-render::DeviceContext EditorWindow::context() const { return gpu_.context(); }
+render::DeviceContext EditorWindow::context() const {
+    return gpu_.context();
+}
 
 Result<bool> EditorWindow::begin_frame(Frame& frame, const std::function<Status(VkExtent2D)>& resized) {
     const std::uint32_t s = static_cast<std::uint32_t>(frame_counter_ % kFramesInFlight);
@@ -251,10 +260,12 @@ Result<bool> EditorWindow::begin_frame(Frame& frame, const std::function<Status(
     vkResetCommandBuffer(frame.cmd, 0);
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     EDITOR_VK(vkBeginCommandBuffer(frame.cmd, &begin));
-    barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, t.presented ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED,
+    barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT,
+            t.presented ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    barrier(frame.cmd, t.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+    barrier(frame.cmd, t.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
             VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
             VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
     return true;
@@ -276,18 +287,20 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
         vkGetBufferMemoryRequirements(device_, readback, &req);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
-        alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        alloc.memoryTypeIndex =
+            memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
         EDITOR_VK(vkAllocateMemory(device_, &alloc, nullptr, &readback_memory));
         EDITOR_VK(vkBindBufferMemory(device_, readback, readback_memory, 0));
-        barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT);
+        barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent_.width, extent_.height, 1};
         vkCmdCopyImageToBuffer(frame.cmd, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback, 1, &region);
-        barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+        barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
     }
     EDITOR_VK(vkEndCommandBuffer(frame.cmd));
     const VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
@@ -324,7 +337,9 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
         for (std::size_t k = 3; k < rgba.size(); k += 4) rgba[k] = 255;
         vkDestroyBuffer(device_, readback, nullptr);
         vkFreeMemory(device_, readback_memory, nullptr);
-        if (auto st = detail::write_png_rgba8(screenshot, static_cast<int>(extent_.width), static_cast<int>(extent_.height), rgba); !st)
+        if (auto st = detail::write_png_rgba8(screenshot, static_cast<int>(extent_.width),
+                                              static_cast<int>(extent_.height), rgba);
+            !st)
             return st;
     }
     return result;

@@ -13,17 +13,16 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <tidewater/render/device_context.hpp>
+#include <tidewater/result.hpp>
 #include <vector>
 
 #include "../common/example_device.hpp"
 
-#include <tidewater/render/device_context.hpp>
-#include <tidewater/result.hpp>
-
 namespace tidewater::editor {
 
 class EditorWindow {
-public:
+  public:
     static constexpr std::uint32_t kFramesInFlight = 2;
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
@@ -56,11 +55,12 @@ public:
     /// also written there (waits for the device).
     Status end_frame(Frame& frame, const std::string& screenshot = {});
 
-private:
+  private:
     Status create_swapchain();
     void destroy_swapchain();
     std::uint32_t memory_type(std::uint32_t bits, VkMemoryPropertyFlags want) const;
-    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                     VkDebugUtilsMessageTypeFlagsEXT,
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     GLFWwindow* window_ = nullptr;

@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-
 #include <tidewater/render/renderer.hpp>
 
 namespace tidewater::editor {
@@ -29,7 +27,8 @@ struct OrbitCamera {
         return c;
     }
     glm::dvec3 position() const {
-        return target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::sin(pitch), std::cos(pitch) * std::sin(yaw));
+        return target +
+               distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::sin(pitch), std::cos(pitch) * std::sin(yaw));
     }
     render::Camera camera() const {
         render::Camera c;

@@ -1,13 +1,13 @@
 #include "shader_reload.hpp"
 
 #include <fmt/format.h>
-#include <fstream>
-#include <regex>
-#include <sstream>
-
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 namespace tidewater::editor {
 
@@ -17,8 +17,8 @@ namespace fs = std::filesystem;
 
 /// The renderer's graphics shaders and their stages.
 constexpr std::pair<const char*, EShLanguage> kShaders[] = {
-    {"sky.vert", EShLangVertex},       {"sky.frag", EShLangFragment},     {"terrain.vert", EShLangVertex},
-    {"terrain.frag", EShLangFragment}, {"water.vert", EShLangVertex},     {"water.tesc", EShLangTessControl},
+    {"sky.vert", EShLangVertex},           {"sky.frag", EShLangFragment},  {"terrain.vert", EShLangVertex},
+    {"terrain.frag", EShLangFragment},     {"water.vert", EShLangVertex},  {"water.tesc", EShLangTessControl},
     {"water.tese", EShLangTessEvaluation}, {"water.frag", EShLangFragment}};
 
 std::string read_file(const fs::path& path) {
@@ -30,7 +30,7 @@ std::string read_file(const fs::path& path) {
 
 /// #include "x" resolved in the watched folder (GL_GOOGLE_include_directive).
 class FolderIncluder : public glslang::TShader::Includer {
-public:
+  public:
     explicit FolderIncluder(fs::path dir) : dir_(std::move(dir)) {}
     IncludeResult* includeLocal(const char* name, const char*, size_t) override { return include(name); }
     IncludeResult* includeSystem(const char* name, const char*, size_t) override { return include(name); }
@@ -40,7 +40,7 @@ public:
         delete result;
     }
 
-private:
+  private:
     IncludeResult* include(const char* name) {
         const fs::path path = dir_ / name;
         if (!fs::exists(path)) return nullptr;
@@ -61,8 +61,12 @@ std::string first_error(const std::string& log, const std::string& fallback) {
 
 }  // namespace
 
-ShaderReload::ShaderReload(fs::path dir) : dir_(std::move(dir)) { glslang::InitializeProcess(); }
-ShaderReload::~ShaderReload() { glslang::FinalizeProcess(); }
+ShaderReload::ShaderReload(fs::path dir) : dir_(std::move(dir)) {
+    glslang::InitializeProcess();
+}
+ShaderReload::~ShaderReload() {
+    glslang::FinalizeProcess();
+}
 
 bool ShaderReload::changed() {
     bool any = false, first = stamps_.empty();

@@ -11,13 +11,12 @@
 #include <map>
 #include <optional>
 #include <string>
-
 #include <tidewater/render/renderer.hpp>
 
 namespace tidewater::editor {
 
 class ShaderReload {
-public:
+  public:
     explicit ShaderReload(std::filesystem::path dir);
     ~ShaderReload();
 
@@ -29,7 +28,7 @@ public:
     /// The last error, "" after a success.
     const std::string& error() const { return error_; }
 
-private:
+  private:
     std::filesystem::path dir_;
     std::map<std::filesystem::path, std::filesystem::file_time_type> stamps_;
     std::optional<std::chrono::steady_clock::time_point> seen_change_;

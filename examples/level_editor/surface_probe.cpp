@@ -16,7 +16,8 @@ double surface_at(const Scene& scene, double time, glm::dvec2 xz, WorldPoint& wa
 
 }  // namespace
 
-std::optional<ProbeHit> probe_ray(const Scene& scene, double time, glm::dvec3 origin, glm::dvec3 direction, double reach) {
+std::optional<ProbeHit> probe_ray(const Scene& scene, double time, glm::dvec3 origin, glm::dvec3 direction,
+                                  double reach) {
     WorldPoint water;
     auto above = [&](double t) {
         const glm::dvec3 p = origin + t * direction;

@@ -3,10 +3,8 @@
 // and bisecting the crossing, so it answers what the frame draws.
 #pragma once
 
-#include <optional>
-
 #include <glm/vec3.hpp>
-
+#include <optional>
 #include <tidewater/world_query.hpp>
 
 namespace tidewater::editor {
@@ -18,6 +16,7 @@ struct ProbeHit {
 };
 
 /// The hit of the ray from `origin` along unit `direction`, within `reach` m.
-std::optional<ProbeHit> probe_ray(const Scene& scene, double time, glm::dvec3 origin, glm::dvec3 direction, double reach = 20000.0);
+std::optional<ProbeHit> probe_ray(const Scene& scene, double time, glm::dvec3 origin, glm::dvec3 direction,
+                                  double reach = 20000.0);
 
 }  // namespace tidewater::editor

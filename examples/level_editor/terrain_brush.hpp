@@ -5,7 +5,6 @@
 #pragma once
 
 #include <glm/vec2.hpp>
-
 #include <tidewater/terrain.hpp>
 
 namespace tidewater::editor {

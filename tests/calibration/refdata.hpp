@@ -17,9 +17,9 @@ inline std::filesystem::path refdata_dir() {
 }  // namespace tidewater::calibration::test
 
 /// Skips the test unless refdata/<sub> exists.
-#define TIDEWATER_REQUIRE_REFDATA(sub)                                                                                  \
-    do {                                                                                                                \
-        if (!std::filesystem::exists(::tidewater::calibration::test::refdata_dir() / (sub)))                            \
-            GTEST_SKIP() << "reference data " << (::tidewater::calibration::test::refdata_dir() / (sub)).string()       \
-                         << " is absent (see ../shared/refdata/PROVENANCE.md)";                                        \
+#define TIDEWATER_REQUIRE_REFDATA(sub)                                                                            \
+    do {                                                                                                          \
+        if (!std::filesystem::exists(::tidewater::calibration::test::refdata_dir() / (sub)))                      \
+            GTEST_SKIP() << "reference data " << (::tidewater::calibration::test::refdata_dir() / (sub)).string() \
+                         << " is absent (see ../shared/refdata/PROVENANCE.md)";                                   \
     } while (0)

@@ -2,11 +2,11 @@
 // group, and CSV missing values and flags are skipped and counted.
 #include <gtest/gtest.h>
 #include <netcdf.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "tidewater/calibration/readers.hpp"
 
@@ -15,7 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_path(const std::string& name) { return fs::temp_directory_path() / ("tidewater_readers_" + std::to_string(::getpid()) + "_" + name); }
+fs::path temp_path(const std::string& name) {
+    return fs::temp_directory_path() / ("tidewater_readers_" + std::to_string(::getpid()) + "_" + name);
+}
 
 TEST(Readers, NetcdfWithoutXyzGroupIsRefused) {
     const fs::path path = temp_path("no_xyz.nc");
@@ -37,7 +39,8 @@ TEST(Readers, CsvSkipsAndCountsMissingAndFlaggedSamples) {
         out << "time_s,eta_cm,qc\n";
         for (int k = 0; k < 20; ++k) {
             const char* value = k == 3 ? "" : k == 5 ? "NaN" : k == 7 ? "-999.99" : nullptr;
-            out << k * 0.5 << "," << (value ? value : std::to_string(10.0 * std::sin(0.7 * k))) << "," << (k == 9 ? 4 : 0) << "\n";
+            out << k * 0.5 << "," << (value ? value : std::to_string(10.0 * std::sin(0.7 * k))) << ","
+                << (k == 9 ? 4 : 0) << "\n";
         }
     }
     CsvColumns columns;

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "refdata.hpp"
@@ -18,7 +18,9 @@ namespace {
 
 using test::refdata_dir;
 
-double angle_difference(double a, double b) { return std::abs(std::remainder(a - b, 360.0)); }
+double angle_difference(double a, double b) {
+    return std::abs(std::remainder(a - b, 360.0));
+}
 
 /// "00h00", "00h30", ... for half-hour k of the day.
 std::string fmt_stamp(int half) {
@@ -39,7 +41,8 @@ TEST(RealRecords, CdipBuoySpectralFitMatchesCdipSummaries) {
         for (const CdipWaveSummary& s : *summaries) {
             auto record = read_cdip_xyz(path, s.start_utc_s, s.end_utc_s);
             if (!record.ok() || record->size() < 2000) {
-                std::printf("%s %.0f: %s\n", name, s.start_utc_s, record.ok() ? "too few good samples, skipped" : record.error().message.c_str());
+                std::printf("%s %.0f: %s\n", name, s.start_utc_s,
+                            record.ok() ? "too few good samples, skipped" : record.error().message.c_str());
                 continue;
             }
             auto spectrum = welch_spectrum(*record);
@@ -47,8 +50,11 @@ TEST(RealRecords, CdipBuoySpectralFitMatchesCdipSummaries) {
             auto fit = fit_jonswap(*spectrum);
             ASSERT_TRUE(fit.ok()) << fit.error().message;
             const SeaState measured = summarize(*spectrum);
-            std::printf("%s %.0f: Hs %.3f (CDIP %.3f)  Tp %.2f (CDIP %.2f; spectrum peak %.2f)  Dp %.0f (CDIP %.0f)  gamma %.1f, shape R^2 %.3f\n",
-                        name, s.start_utc_s, fit->hs, s.hs, fit->tp, s.tp, measured.tp, fit->peak_from_deg, s.dp, fit->gamma, fit->r2);
+            std::printf(
+                "%s %.0f: Hs %.3f (CDIP %.3f)  Tp %.2f (CDIP %.2f; spectrum peak %.2f)  Dp %.0f (CDIP %.0f)  gamma "
+                "%.1f, shape R^2 %.3f\n",
+                name, s.start_utc_s, fit->hs, s.hs, fit->tp, s.tp, measured.tp, fit->peak_from_deg, s.dp, fit->gamma,
+                fit->r2);
             EXPECT_NEAR(fit->hs, s.hs, 0.05 * s.hs);
             EXPECT_NEAR(fit->tp, s.tp, 0.10 * s.tp);
             EXPECT_LT(angle_difference(fit->peak_from_deg, s.dp), 20.0);
@@ -95,7 +101,8 @@ TEST(RealRecords, DatawellHalfHoursMatchTheBuoysHm0) {
         std::stringstream cells(line);
         for (std::string cell; std::getline(cells, cell, ',');) v.push_back(cell);
         ASSERT_GT(v.size(), 5u) << line;
-        const double end = 3600.0 * std::stod(v[0].substr(11, 2)) + 60.0 * std::stod(v[0].substr(14, 2)) + std::stod(v[0].substr(17, 6));
+        const double end = 3600.0 * std::stod(v[0].substr(11, 2)) + 60.0 * std::stod(v[0].substr(14, 2)) +
+                           std::stod(v[0].substr(17, 6));
         const double hm0 = 0.01 * std::stod(v[5]);
         MeasuredRecord window;
         window.kind = RecordKind::buoy;
@@ -118,7 +125,8 @@ TEST(RealRecords, DatawellHalfHoursMatchTheBuoysHm0) {
     std::vector<double> sorted = errors;
     std::sort(sorted.begin(), sorted.end());
     const double median = 0.5 * (sorted[23] + sorted[24]), worst = sorted.back();
-    std::printf("Datawell: Hs against the buoy's Hm0 over 48 half-hours: median error %.2f%%, worst %.2f%%\n", 100 * median, 100 * worst);
+    std::printf("Datawell: Hs against the buoy's Hm0 over 48 half-hours: median error %.2f%%, worst %.2f%%\n",
+                100 * median, 100 * worst);
     EXPECT_LT(median, 0.03);
     EXPECT_LT(worst, 0.08);
 }
@@ -145,8 +153,8 @@ TEST(RealRecords, FentonSteadyWaveProfile) {
     for (double& a : r.axis) a -= r.axis_origin;
     auto fit = fit_phase_resolved(r);
     ASSERT_TRUE(fit.ok()) << fit.error().message;
-    std::printf("Fenton profile: %zu waves, R^2 %.5f, rmse %.4f d; first wave L = %.3f d, Q = %.2f\n", fit->waves.size(), fit->r2,
-                fit->rmse, 2 * 3.14159265358979 / fit->waves[0].k, fit->waves[0].steepness);
+    std::printf("Fenton profile: %zu waves, R^2 %.5f, rmse %.4f d; first wave L = %.3f d, Q = %.2f\n",
+                fit->waves.size(), fit->r2, fit->rmse, 2 * 3.14159265358979 / fit->waves[0].k, fit->waves[0].steepness);
     EXPECT_GE(fit->r2, 0.99);
 }
 
@@ -154,7 +162,8 @@ TEST(RealRecords, FentonSteadyWaveProfile) {
 TEST(RealRecords, WaveTankProbesAroundTheHighestCrest) {
     TIDEWATER_REQUIRE_REFDATA("eagre_wavetank_202002");
     for (int probe = 1; probe <= 3; ++probe) {
-        auto all = read_two_column(refdata_dir() / "eagre_wavetank_202002" / ("WAVE_" + std::to_string(probe) + ".dat"), RecordKind::gauge);
+        auto all = read_two_column(refdata_dir() / "eagre_wavetank_202002" / ("WAVE_" + std::to_string(probe) + ".dat"),
+                                   RecordKind::gauge);
         ASSERT_TRUE(all.ok()) << all.error().message;
         const auto crest = static_cast<std::size_t>(std::max_element(all->z.begin(), all->z.end()) - all->z.begin());
         const double centre = all->axis[crest];
@@ -173,7 +182,8 @@ TEST(RealRecords, WaveTankProbesAroundTheHighestCrest) {
         o.max_waves = 32;
         auto fit = fit_phase_resolved(r, o);
         ASSERT_TRUE(fit.ok()) << fit.error().message;
-        std::printf("tank probe %d: %zu waves, R^2 %.4f, rmse %.2f mm, %.2f s\n", probe, fit->waves.size(), fit->r2, 1e3 * fit->rmse, fit->seconds);
+        std::printf("tank probe %d: %zu waves, R^2 %.4f, rmse %.2f mm, %.2f s\n", probe, fit->waves.size(), fit->r2,
+                    1e3 * fit->rmse, fit->seconds);
         EXPECT_LE(fit->waves.size(), 32u);
         EXPECT_GE(fit->r2, 0.95);
     }
@@ -188,8 +198,8 @@ TEST(RealRecords, SpectralFilesFitTheirProducersSummaries) {
     for (const SpectralRecord& r : *cdip) {
         auto fit = fit_jonswap(r.spectrum);
         ASSERT_TRUE(fit.ok()) << fit.error().message;
-        std::printf("CDIP 028 %.0f: Hs %.3f (CDIP %.3f)  Tp %.2f (CDIP %.2f)  Dp %.0f (CDIP %.0f)\n", r.time_utc_s, fit->hs, r.reported_hs,
-                    fit->tp, r.reported_tp, fit->peak_from_deg, r.reported_dp);
+        std::printf("CDIP 028 %.0f: Hs %.3f (CDIP %.3f)  Tp %.2f (CDIP %.2f)  Dp %.0f (CDIP %.0f)\n", r.time_utc_s,
+                    fit->hs, r.reported_hs, fit->tp, r.reported_tp, fit->peak_from_deg, r.reported_dp);
         EXPECT_NEAR(fit->hs, r.reported_hs, 0.05 * r.reported_hs);
         EXPECT_NEAR(fit->tp, r.reported_tp, 0.10 * r.reported_tp);
         EXPECT_LT(angle_difference(fit->peak_from_deg, r.reported_dp), 20.0);
@@ -214,7 +224,10 @@ TEST(RealRecords, SpectralFilesFitTheirProducersSummaries) {
         const auto days = static_cast<long>(std::floor(r.time_utc_s / 86400.0));
         const std::chrono::year_month_day ymd{std::chrono::sys_days{std::chrono::days{days}}};
         const long hour = static_cast<long>(std::fmod(r.time_utc_s, 86400.0) / 3600.0);
-        const long key = ((static_cast<int>(ymd.year()) * 100L + static_cast<unsigned>(ymd.month())) * 100 + static_cast<unsigned>(ymd.day())) * 100 + hour;
+        const long key = ((static_cast<int>(ymd.year()) * 100L + static_cast<unsigned>(ymd.month())) * 100 +
+                          static_cast<unsigned>(ymd.day())) *
+                             100 +
+                         hour;
         const auto it = wvht.find(key);
         if (it == wvht.end()) continue;
         auto fit = fit_jonswap(r.spectrum, 0.02, 0.5);
@@ -224,7 +237,8 @@ TEST(RealRecords, SpectralFilesFitTheirProducersSummaries) {
     ASSERT_GT(differences.size(), 100u);
     std::sort(differences.begin(), differences.end());
     const double median = differences[differences.size() / 2], worst = differences.back();
-    std::printf("NDBC 41010: %zu spectra against WVHT (0.1 m steps): median |Hs - WVHT| %.3f m, worst %.3f m\n", differences.size(), median, worst);
+    std::printf("NDBC 41010: %zu spectra against WVHT (0.1 m steps): median |Hs - WVHT| %.3f m, worst %.3f m\n",
+                differences.size(), median, worst);
     EXPECT_LE(median, 0.05);  // within WVHT's rounding
     EXPECT_LT(worst, 0.15);
 }

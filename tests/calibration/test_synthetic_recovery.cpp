@@ -69,15 +69,17 @@ void expect_recovered(const std::vector<WaveSpec>& truth, const PhaseFit& fit, b
     ASSERT_EQ(fit.waves.size(), truth.size());
     for (const WaveSpec& t : truth) {
         const double omega = std::sqrt(kGravity * kTwoPi / t.wavelength);
-        const auto it = std::min_element(fit.waves.begin(), fit.waves.end(), [&](const FittedWave& a, const FittedWave& b) {
-            return std::abs(a.omega - omega) < std::abs(b.omega - omega);
-        });
+        const auto it =
+            std::min_element(fit.waves.begin(), fit.waves.end(), [&](const FittedWave& a, const FittedWave& b) {
+                return std::abs(a.omega - omega) < std::abs(b.omega - omega);
+            });
         const double period = kTwoPi / omega;
         EXPECT_NEAR(it->amplitude, t.amplitude, 0.02 * t.amplitude) << "period " << period;
         EXPECT_NEAR(it->period(), period, 0.02 * period);
         if (check_direction) {
             const double d = std::remainder(it->direction_deg - t.direction_deg, 360.0);
-            EXPECT_LT(std::abs(d), 2.0) << "period " << period << ": fitted " << it->direction_deg << ", true " << t.direction_deg;
+            EXPECT_LT(std::abs(d), 2.0) << "period " << period << ": fitted " << it->direction_deg << ", true "
+                                        << t.direction_deg;
         }
     }
     EXPECT_GT(fit.r2, 0.99);
@@ -103,8 +105,8 @@ TEST(SyntheticRecovery, GaugeRecordWithNoiseAndGaps) {
         o.waves = 4;
         auto fit = fit_phase_resolved(r, o);
         ASSERT_TRUE(fit.ok()) << fit.error().message;
-        std::printf("gauge seed %llu: R^2 %.5f, rmse %.4f m, %d iterations, %.2f s\n", static_cast<unsigned long long>(seed), fit->r2,
-                    fit->rmse, fit->iterations, fit->seconds);
+        std::printf("gauge seed %llu: R^2 %.5f, rmse %.4f m, %d iterations, %.2f s\n",
+                    static_cast<unsigned long long>(seed), fit->r2, fit->rmse, fit->iterations, fit->seconds);
         expect_recovered(truth, *fit, false);
     }
 }
@@ -130,8 +132,8 @@ TEST(SyntheticRecovery, BuoyRecordRecoversDirections) {
         o.waves = 4;
         auto fit = fit_phase_resolved(r, o);
         ASSERT_TRUE(fit.ok()) << fit.error().message;
-        std::printf("buoy seed %llu: R^2 %.5f (horizontal %.5f), %d iterations, %.2f s\n", static_cast<unsigned long long>(seed), fit->r2,
-                    fit->horizontal_r2, fit->iterations, fit->seconds);
+        std::printf("buoy seed %llu: R^2 %.5f (horizontal %.5f), %d iterations, %.2f s\n",
+                    static_cast<unsigned long long>(seed), fit->r2, fit->horizontal_r2, fit->iterations, fit->seconds);
         expect_recovered(truth, *fit, true);
     }
 }
@@ -156,8 +158,8 @@ TEST(SyntheticRecovery, ProfileRecordAtOneInstant) {
         o.waves = 3;
         auto fit = fit_phase_resolved(r, o);
         ASSERT_TRUE(fit.ok()) << fit.error().message;
-        std::printf("profile seed %llu: R^2 %.5f, %d iterations, %.2f s\n", static_cast<unsigned long long>(seed), fit->r2, fit->iterations,
-                    fit->seconds);
+        std::printf("profile seed %llu: R^2 %.5f, %d iterations, %.2f s\n", static_cast<unsigned long long>(seed),
+                    fit->r2, fit->iterations, fit->seconds);
         expect_recovered(truth, *fit, false);
     }
 }

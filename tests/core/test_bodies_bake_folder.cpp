@@ -10,8 +10,8 @@
 #include "test_helpers.hpp"
 #include "tidewater/detail/bodies_bake_folder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/world_query.hpp"
 #include "tidewater/scene_bake.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater {
 namespace {
@@ -41,7 +41,7 @@ std::string refusal(const Scene& scene) {
 /// The default scene with its shore model at a small resolution (a quick bake), baked
 /// and saved to a temporary folder; `named` is the parsed scene naming that bake.
 class BodiesBakeFolder : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         auto scene = default_scene();
         ASSERT_TRUE(scene.ok());
@@ -85,8 +85,10 @@ TEST_F(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDis
         ASSERT_EQ(b.query_texels.size(), a.query_texels.size());
         double worst_surface = 0.0, worst_flow = 0.0;
         for (std::size_t t = 0; t < a.surface_height.size(); ++t) {
-            worst_surface = std::max(worst_surface, std::abs(double(a.surface_height[t]) - double(b.surface_height[t])));
-            worst_flow = std::max({worst_flow, std::abs(double(a.flow_x[t]) - double(b.flow_x[t])), std::abs(double(a.flow_z[t]) - double(b.flow_z[t]))});
+            worst_surface =
+                std::max(worst_surface, std::abs(double(a.surface_height[t]) - double(b.surface_height[t])));
+            worst_flow = std::max({worst_flow, std::abs(double(a.flow_x[t]) - double(b.flow_x[t])),
+                                   std::abs(double(a.flow_z[t]) - double(b.flow_z[t]))});
         }
         EXPECT_LT(worst_surface, 1e-3) << a.name;
         EXPECT_LT(worst_flow, 1e-3) << a.name;
@@ -101,11 +103,12 @@ TEST_F(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDis
     }
     // Queries on the loaded scene agree with the baked one within millimetres.
     double worst = 0.0;
-    for (const glm::dvec2 p : {glm::dvec2(20.0, -360.0), glm::dvec2(40.0, -470.0), glm::dvec2(120.0, -460.0), glm::dvec2(60.0, -240.0),
-                               glm::dvec2(44.0, -530.0), glm::dvec2(300.0, -700.0)}) {
+    for (const glm::dvec2 p : {glm::dvec2(20.0, -360.0), glm::dvec2(40.0, -470.0), glm::dvec2(120.0, -460.0),
+                               glm::dvec2(60.0, -240.0), glm::dvec2(44.0, -530.0), glm::dvec2(300.0, -700.0)}) {
         const WorldPoint a = query_world_point(*baked, 4.0, p), b = query_world_point(**loaded, 4.0, p);
         EXPECT_EQ(a.body, b.body) << p.x << ", " << p.y;
-        worst = std::max({worst, std::abs(a.surface.height - b.surface.height), std::abs(a.flow.x - b.flow.x), std::abs(a.flow.y - b.flow.y)});
+        worst = std::max({worst, std::abs(a.surface.height - b.surface.height), std::abs(a.flow.x - b.flow.x),
+                          std::abs(a.flow.y - b.flow.y)});
     }
     EXPECT_LT(worst, 2e-3);
 }
@@ -113,7 +116,8 @@ TEST_F(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDis
 TEST_F(BodiesBakeFolder, ABakeThatNoLongerFitsIsRefusedWithTheFileAndField) {
     Scene more_water = named;
     more_water.rivers[0].discharge *= 2.0;
-    EXPECT_NE(refusal(more_water).find("bodies.json: /rivers/0/discharge_m3_s"), std::string::npos) << refusal(more_water);
+    EXPECT_NE(refusal(more_water).find("bodies.json: /rivers/0/discharge_m3_s"), std::string::npos)
+        << refusal(more_water);
     Scene moved = named;
     moved.rivers[1].path[0].x += 5.0;
     EXPECT_NE(refusal(moved).find("bodies.json: /rivers/1/path_m"), std::string::npos) << refusal(moved);
@@ -139,9 +143,7 @@ TEST_F(BodiesBakeFolder, ABakeThatNoLongerFitsIsRefusedWithTheFileAndField) {
     dry.rivers.clear();
     EXPECT_NE(refusal(dry).find("holds lakes or rivers the scene does not have"), std::string::npos) << refusal(dry);
     // A corrupt field names its file.
-    {
-        std::ofstream(folder / "river_00_psi.png", std::ios::trunc) << "not a png";
-    }
+    { std::ofstream(folder / "river_00_psi.png", std::ios::trunc) << "not a png"; }
     EXPECT_NE(refusal(named).find("river_00_psi.png"), std::string::npos) << refusal(named);
     // No bodies in the folder at all.
     fs::remove(folder / "bodies.json");

@@ -50,8 +50,8 @@ TEST(Buoyancy, EquilibriumDraftsAreArchimedes) {
         const double d = 0.5 * (lo + hi);
         (kPi * d * d * (3.0 - d) / 3.0 < 1500.0 / kWaterDensity ? lo : hi) = d;
     }
-    std::printf("box draft %.4f m (Archimedes %.4f); sphere %.4f m (%.4f); sphere mesh volume %.4f of 4/3 pi\n", box_draft, box_expected,
-                sphere_draft, lo, sphere.hull.volume() / (4.0 / 3.0 * kPi));
+    std::printf("box draft %.4f m (Archimedes %.4f); sphere %.4f m (%.4f); sphere mesh volume %.4f of 4/3 pi\n",
+                box_draft, box_expected, sphere_draft, lo, sphere.hull.volume() / (4.0 / 3.0 * kPi));
     EXPECT_NEAR(box_draft, box_expected, 0.01 * box_expected);
     EXPECT_NEAR(sphere_draft, lo, 0.01 * lo);
 }
@@ -88,8 +88,8 @@ TEST(Buoyancy, HeavePeriodIsTheSpringOfTheWaterplane) {
     const double equilibrium = 0.5 - draft;
     std::vector<double> periods;
     for (const double rate : {30.0, 60.0, 144.0}) periods.push_back(heave_period(box, equilibrium, 1.0 / rate));
-    std::printf("heave period %.4f s at 30 Hz, %.4f at 60 Hz, %.4f at 144 Hz; 2 pi sqrt(m / rho g A) = %.4f s\n", periods[0], periods[1],
-                periods[2], expected);
+    std::printf("heave period %.4f s at 30 Hz, %.4f at 60 Hz, %.4f at 144 Hz; 2 pi sqrt(m / rho g A) = %.4f s\n",
+                periods[0], periods[1], periods[2], expected);
     for (double p : periods) EXPECT_NEAR(p, expected, 0.03 * expected);
     const auto [lo, hi] = std::minmax_element(periods.begin(), periods.end());
     EXPECT_LT((*hi - *lo) / *lo, 0.005);
@@ -121,9 +121,10 @@ TEST(Buoyancy, LongWavesLiftTheBodyByTheirAmplitude) {
 
 // A barrel 60 m beside a tug's track heaves more as the wake passes than before it comes.
 TEST(Buoyancy, ABarrelRidesThePassingWake) {
-    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
+    auto scene =
+        parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
         "boats": [{"name": "tug", "path": [[0, 0], [2000, 0]], "speed": 5.0, "length": 20.0, "beam": 6.0, "draft": 1.5}]})",
-                             "s.json");
+                    "s.json");
     ASSERT_TRUE(scene) << scene.error().message;
     auto baked = bake_scene(*scene);
     ASSERT_TRUE(baked) << baked.error().message;
@@ -140,10 +141,13 @@ TEST(Buoyancy, ABarrelRidesThePassingWake) {
     while (world.time() < 115.0) {
         ASSERT_TRUE(world.step({baked->get(), nullptr, nullptr}).ok());
         const double t = world.time(), y = world.state(id).position.y;
-        if (t > 50.0 && t < 70.0) before.push_back(y);  // the tug passes x = 300 at t = 60; its wake reaches the barrel near 95
+        if (t > 50.0 && t < 70.0)
+            before.push_back(y);  // the tug passes x = 300 at t = 60; its wake reaches the barrel near 95
         if (t > 95.0 && t < 115.0) during.push_back(y);
     }
-    auto spread = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end()); };
+    auto spread = [](const std::vector<double>& v) {
+        return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+    };
     std::printf("barrel heave range: %.4f m before the wake, %.4f m as it passes\n", spread(before), spread(during));
     EXPECT_GT(spread(during), 3.0 * spread(before));
     EXPECT_GT(spread(during), 0.05);

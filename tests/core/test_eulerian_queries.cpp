@@ -2,17 +2,17 @@
 // on steep seas, determinism. Tolerances are stated next to each check.
 #include <cmath>
 #include <cstring>
-#include "tidewater/detail/reference.hpp"
 
 #include "kernel/kernel_waves.hpp"
 #include "test_helpers.hpp"
+#include "tidewater/detail/reference.hpp"
 
 namespace tidewater {
 namespace {
 
+using test::expect_bitwise_equal;
 using test::make_body;
 using test::random_waves;
-using test::expect_bitwise_equal;
 using test::surface_on_threads;
 
 /// An independent yardstick: the rest position whose particle lands on `point`, found
@@ -117,7 +117,9 @@ TEST(EulerianQuery, ConvergesOnSteepSetsUpToFoldMeasure095) {
                 ASSERT_NEAR(body.waves().fold_measure(), fold, 1e-9);
                 std::mt19937_64 rng(seed);
                 std::vector<glm::dvec2> pts(1500);
-                for (auto& p : pts) p = {static_cast<double>(rng() % 200000) * 0.01 - 1000.0, static_cast<double>(rng() % 200000) * 0.01 - 1000.0};
+                for (auto& p : pts)
+                    p = {static_cast<double>(rng() % 200000) * 0.01 - 1000.0,
+                         static_cast<double>(rng() % 200000) * 0.01 - 1000.0};
                 const double t = 17.25 * static_cast<double>(seed);
                 std::vector<SurfacePoint> out(pts.size());
                 ASSERT_TRUE(query_surface(body, t, pts, out).ok());
@@ -162,8 +164,12 @@ TEST(EulerianQuery, NormalsMatchFiniteDifferencesOfHeights) {
     for (int i = 0; i < 200; ++i) {
         const glm::dvec2 p{i * 1.3 - 100.0, i * 0.7 - 50.0};
         const SurfacePoint s = query_point(body, 2.0, p);
-        const double dhdx = (query_point(body, 2.0, p + glm::dvec2(h, 0)).height - query_point(body, 2.0, p - glm::dvec2(h, 0)).height) / (2 * h);
-        const double dhdz = (query_point(body, 2.0, p + glm::dvec2(0, h)).height - query_point(body, 2.0, p - glm::dvec2(0, h)).height) / (2 * h);
+        const double dhdx = (query_point(body, 2.0, p + glm::dvec2(h, 0)).height -
+                             query_point(body, 2.0, p - glm::dvec2(h, 0)).height) /
+                            (2 * h);
+        const double dhdz = (query_point(body, 2.0, p + glm::dvec2(0, h)).height -
+                             query_point(body, 2.0, p - glm::dvec2(0, h)).height) /
+                            (2 * h);
         const glm::dvec3 fd = glm::normalize(glm::dvec3(-dhdx, 1.0, -dhdz));
         const double angle = std::acos(std::min(1.0, glm::dot(fd, s.normal))) * 180.0 / kPi;
         EXPECT_LT(angle, 0.05) << "point " << i;

@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <glm/geometric.hpp>
+#include <vector>
 
 #include "tidewater/tidewater.hpp"
 
@@ -59,9 +58,11 @@ TEST(FlowDetail, AFrameChangesTheDetailOnlyAsFarAsTheCurrentCarriesIt) {
     // would pop by a whole layer's slope and break the bound.
     const FlowDetailSpec s = river_spec();
     const double dt = 1.0 / 60.0;
-    const double hessian = 1.25 * std::max(noise_hessian_bound(s.seed), noise_hessian_bound(s.seed + 1));  // margin for the sampled maximum
+    const double hessian = 1.25 * std::max(noise_hessian_bound(s.seed),
+                                           noise_hessian_bound(s.seed + 1));  // margin for the sampled maximum
     for (const glm::dvec2 flow : {glm::dvec2(0.0, 0.0), glm::dvec2(0.8, 0.1), glm::dvec2(-2.5, 1.4)}) {
-        const double advection = std::sqrt(2.0) * hessian * s.tiling * s.tiling * s.strength * glm::length(flow) * s.speed * dt;
+        const double advection =
+            std::sqrt(2.0) * hessian * s.tiling * s.tiling * s.strength * glm::length(flow) * s.speed * dt;
         double worst_ratio = 0.0;
         for (int k = 0; k < 64; ++k) {
             const glm::dvec2 p{3.1 * k, 1.7 * k - 40.0};
@@ -142,7 +143,8 @@ TEST(FlowDetail, ContrastIsTheSameAtEveryPointOfAFade) {
     // over the middle bins (w in [0.4, 0.6)) 0.5067, over the end bins 0.9067, so the
     // middle's RMS is sqrt(0.5067 / 0.9067) = 0.748 of the ends' (0.707 at w = 0.5 exactly).
     const double ends = std::sqrt((linear[0] / count[0] + linear[kBins - 1] / count[kBins - 1]) / 2.0);
-    const double middle = std::sqrt((linear[kBins / 2 - 1] / count[kBins / 2 - 1] + linear[kBins / 2] / count[kBins / 2]) / 2.0);
+    const double middle =
+        std::sqrt((linear[kBins / 2 - 1] / count[kBins / 2 - 1] + linear[kBins / 2] / count[kBins / 2]) / 2.0);
     EXPECT_NEAR(middle / ends, 0.748, 0.03);
 }
 

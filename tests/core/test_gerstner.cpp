@@ -25,8 +25,10 @@ TEST(Gerstner, AnalyticDerivativesMatchFiniteDifferences) {
         const glm::dvec2 rest{i * 0.917 - 120.0, i * -0.53 + 33.0};
         const double t = 0.1 * i;
         const LagrangianSample s = evaluate_lagrangian(set, rest, t);
-        const glm::dvec3 tx = (position(set, rest + glm::dvec2(h, 0), t) - position(set, rest - glm::dvec2(h, 0), t)) / (2 * h);
-        const glm::dvec3 tz = (position(set, rest + glm::dvec2(0, h), t) - position(set, rest - glm::dvec2(0, h), t)) / (2 * h);
+        const glm::dvec3 tx =
+            (position(set, rest + glm::dvec2(h, 0), t) - position(set, rest - glm::dvec2(h, 0), t)) / (2 * h);
+        const glm::dvec3 tz =
+            (position(set, rest + glm::dvec2(0, h), t) - position(set, rest - glm::dvec2(0, h), t)) / (2 * h);
         const glm::dvec3 n = glm::normalize(glm::cross(tz, tx));
         EXPECT_NEAR(glm::length(n - s.normal), 0.0, 1e-6) << i;
         EXPECT_NEAR(tx.x * tz.z - tx.z * tz.x, s.jacobian, 1e-6) << i;
@@ -45,7 +47,7 @@ TEST(Gerstner, JacobianBoundedByFoldMeasure) {
         lowest = std::min(lowest, evaluate_lagrangian(body.waves(), {i * 0.05, i * 0.031}, 3.0).jacobian);
     }
     EXPECT_GE(lowest, (1.0 - 0.95) * (1.0 - 0.95) - 1e-12);  // det >= (1 - sum)^2 for the 2x2 map
-    EXPECT_LT(lowest, 0.9);  // and the steep set does compress the surface somewhere
+    EXPECT_LT(lowest, 0.9);                                  // and the steep set does compress the surface somewhere
 }
 
 // At t = 1e6 s the phase is as accurate as at t = 10 s: compare against a

@@ -2,13 +2,13 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
-#include <string>
-#include <unistd.h>
 #include <glm/geometric.hpp>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "tidewater/tidewater.hpp"
@@ -20,8 +20,9 @@ namespace tidewater::test {
 struct TempDir {
     std::filesystem::path path;
     explicit TempDir(const std::string& prefix = "tidewater_test_") {
-        path = std::filesystem::temp_directory_path() /
-               (prefix + std::to_string(::getpid()) + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        path =
+            std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid()) + "_" +
+                                                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::remove_all(path);
         std::filesystem::create_directories(path);
     }
@@ -60,8 +61,8 @@ inline std::vector<WaveSpec> random_waves(int n, double fold, std::uint64_t seed
 }
 
 /// The full surface at `pts` and `time`, solved on `threads` threads.
-inline std::vector<SurfacePoint> surface_on_threads(const WaterBody& body, double time, const std::vector<glm::dvec2>& pts,
-                                                    unsigned threads) {
+inline std::vector<SurfacePoint> surface_on_threads(const WaterBody& body, double time,
+                                                    const std::vector<glm::dvec2>& pts, unsigned threads) {
     std::vector<SurfacePoint> out(pts.size());
     QueryOptions o;
     o.threads = threads;

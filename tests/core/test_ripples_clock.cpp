@@ -17,8 +17,10 @@ TEST(Ripples, GradientMatchesFiniteDifferences) {
     for (int i = 0; i < 500; ++i) {
         const glm::dvec2 p{i * 0.0137 - 3.0, i * 0.0291 + 1.0};
         const RippleSample s = field.sample(p, 2.5);
-        const double dx = (field.sample(p + glm::dvec2(h, 0), 2.5).height - field.sample(p - glm::dvec2(h, 0), 2.5).height) / (2 * h);
-        const double dz = (field.sample(p + glm::dvec2(0, h), 2.5).height - field.sample(p - glm::dvec2(0, h), 2.5).height) / (2 * h);
+        const double dx =
+            (field.sample(p + glm::dvec2(h, 0), 2.5).height - field.sample(p - glm::dvec2(h, 0), 2.5).height) / (2 * h);
+        const double dz =
+            (field.sample(p + glm::dvec2(0, h), 2.5).height - field.sample(p - glm::dvec2(0, h), 2.5).height) / (2 * h);
         EXPECT_NEAR(s.slope.x, dx, 1e-5) << i;
         EXPECT_NEAR(s.slope.y, dz, 1e-5) << i;
     }

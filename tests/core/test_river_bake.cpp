@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/terrain.hpp"
-#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -76,7 +76,6 @@ TEST(RiverBake, DischargeIsTheSameThroughEverySection) {
         EXPECT_NEAR(q, 30.0, 0.3) << "at " << f * length << " m of " << length;
     }
 }
-
 
 TEST(RiverBake, NoCurrentOutsideTheRiver) {
     const Scene scene = parse_or_die(kBendingRiver);
@@ -239,7 +238,7 @@ TEST(RiverBake, TheCarveGoesRoundAKnollAndTheRiverSplitsAroundIt) {
         {
             const auto [gamma, speed] = circulation(r, {0.0, knoll_z}, knoll_z == 0.0 ? 24.0 : 22.0);
             std::printf("knoll: circulation %.3f m^2/s of a speed integral %.1f m^2/s\n", gamma, speed);
-        EXPECT_LT(std::abs(gamma), 0.05 * speed) << "circulation " << gamma << " m^2/s, speed integral " << speed;
+            EXPECT_LT(std::abs(gamma), 0.05 * speed) << "circulation " << gamma << " m^2/s, speed integral " << speed;
         }
     }
 }

@@ -1,12 +1,13 @@
 // Parsing is not baking: parse_scene only reads; bake_scene makes the shore model
 // once, with progress and cancellation, into an immutable scene that threads share;
 // a saved bake loads without the work.
+#include <unistd.h>
+
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 #include "test_helpers.hpp"
@@ -40,9 +41,10 @@ TEST(SceneBake, ParsingDoesNotBake) {
     EXPECT_EQ(scene->bake, nullptr);
     EXPECT_FALSE(scene->baked());
     // A scene whose shore is off has nothing to bake.
-    auto off = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -9}}, "ocean": "pool_calm",
+    auto off =
+        parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -9}}, "ocean": "pool_calm",
                                "shore": {"enabled": false}})",
-                           "off.json");
+                    "off.json");
     ASSERT_TRUE(off.ok());
     EXPECT_TRUE(off->baked());
 }
@@ -102,7 +104,8 @@ TEST(SceneBake, OneShorelineBakeServesTheModel) {
     double worst = 0.0;
     for (std::size_t k = 0; k < coarse.shore_distance().size(); ++k)
         worst = std::max(worst, std::abs(double(coarse.shore_distance()[k]) - double(model.shore_distance()[k])));
-    std::printf("shore distance from a 256 shoreline vs its own 64 bake: worst %.2f m (texel %.2f m)\n", worst, model.texel());
+    std::printf("shore distance from a 256 shoreline vs its own 64 bake: worst %.2f m (texel %.2f m)\n", worst,
+                model.texel());
     EXPECT_LT(worst, model.texel());
 }
 
@@ -175,9 +178,10 @@ TEST(SceneBake, SavedBakeLoadsWithoutTheWork) {
 
 TEST(SceneBake, EditorRebakesAfterATerrainEdit) {
     // Deep water everywhere: the bake finds nothing to change.
-    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling",
+    auto scene =
+        parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling",
                                  "shore": {"resolution": 64}})",
-                             "edit");
+                    "edit");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     auto deep = bake_scene(*scene);
     ASSERT_TRUE(deep.ok());
@@ -272,7 +276,8 @@ TEST(SceneBake, RefusesABadDistanceResolution) {
     auto scene = parse_scene(kSmallIsland, "s.json");
     ASSERT_TRUE(scene.ok());
     // Out of range, and coarser than the 64-texel model that would sample it.
-    for (const auto& [resolution, words] : {std::pair{4, "distance_resolution"}, std::pair{32, "coarser than the shore model"}}) {
+    for (const auto& [resolution, words] :
+         {std::pair{4, "distance_resolution"}, std::pair{32, "coarser than the shore model"}}) {
         SceneBakeOptions options;
         options.distance_resolution = resolution;
         auto r = bake_scene(*scene, options);
@@ -364,7 +369,6 @@ TEST(SceneBake, ReBakingAfterAnEditReusesWhatItLeavesAloneAndMatchesAFullBake) {
         expect_same_river((*edited)->bake->bodies->rivers[r], (*full)->bake->bodies->rivers[r]);
     EXPECT_EQ((*edited)->bake->lake_shores[0]->phase_residual(0), (*full)->bake->lake_shores[0]->phase_residual(0));
     EXPECT_EQ((*edited)->bake->ocean_shore->depth(), (*full)->bake->ocean_shore->depth());
-
 }
 
 }  // namespace

@@ -6,17 +6,19 @@
 #include <string>
 
 #include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/detail/water_bodies_bake.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
-#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
 namespace {
 
 /// A bowl around the origin: 30 m at its rim, 10 m at the bottom, under an ocean far below.
-std::string scene_with(const std::string& bodies, const std::string& ocean = R"("ocean": "ocean_rolling", "water_level": -50.0,)") {
+std::string scene_with(const std::string& bodies,
+                       const std::string& ocean = R"("ocean": "ocean_rolling", "water_level": -50.0,)") {
     return R"({ "version": 1, "name": "bodies", )" + ocean + R"(
-      "terrain": { "island": { "seed": 3, "radius": 800, "height": 60, "seabed": -80 } }, )" + bodies + "}";
+      "terrain": { "island": { "seed": 3, "radius": 800, "height": 60, "seabed": -80 } }, )" +
+           bodies + "}";
 }
 
 std::string refusal(const std::string& json) {
@@ -43,7 +45,8 @@ TEST(SceneBodies, LakesAndRiversLoadWithTheirDefaults) {
 }
 
 TEST(SceneBodies, AnInlandSceneHasNoOcean) {
-    auto scene = parse_scene(scene_with(R"("lakes": [ { "name": "crater", "level": 42.0, "at": [10, 20] } ])", ""), "inland.json");
+    auto scene = parse_scene(scene_with(R"("lakes": [ { "name": "crater", "level": 42.0, "at": [10, 20] } ])", ""),
+                             "inland.json");
     ASSERT_TRUE(scene) << scene.error().message;
     EXPECT_FALSE(scene->has_ocean);
     EXPECT_NE(refusal(scene_with(R"("lakes": [])", "")).find("a scene needs water"), std::string::npos);
@@ -53,21 +56,27 @@ TEST(SceneBodies, AnInlandSceneHasNoOcean) {
 }
 
 TEST(SceneBodies, BadBodiesAreRefusedWithTheirPath) {
-    const std::string river = R"("rivers": [ { "name": "mill", "path": [[0, 0], [100, 0], [200, 50]], "width": 10, "discharge": 3.0 )";
+    const std::string river =
+        R"("rivers": [ { "name": "mill", "path": [[0, 0], [100, 0], [200, 50]], "width": 10, "discharge": 3.0 )";
     const std::pair<std::string, std::string> cases[] = {
-        {R"("rivers": [ { "name": "m", "path": [[0, 0]], "width": 5, "discharge": 1 } ])", "bodies.json: /rivers/0/path: 1 points given"},
+        {R"("rivers": [ { "name": "m", "path": [[0, 0]], "width": 5, "discharge": 1 } ])",
+         "bodies.json: /rivers/0/path: 1 points given"},
         {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0], [100, 100], [50, -50]], "width": 5, "discharge": 1 } ])",
          "/rivers/0/path: crosses itself"},
         {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0]], "width": [5, 6, 7], "discharge": 1 } ])",
          "/rivers/0/width: 3 widths for 2 path points"},
-        {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0]], "width": -5, "discharge": 1 } ])", "/rivers/0/width: -5 is out of range"},
-        {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0]], "width": 5, "discharge": 0 } ])", "/rivers/0/discharge: 0 is out of range"},
+        {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0]], "width": -5, "discharge": 1 } ])",
+         "/rivers/0/width: -5 is out of range"},
+        {R"("rivers": [ { "name": "m", "path": [[0, 0], [100, 0]], "width": 5, "discharge": 0 } ])",
+         "/rivers/0/discharge: 0 is out of range"},
         {river + R"(, "colour": "blue" } ])", "/rivers/0/colour: unknown key"},
         {river + R"(, "manning": 2 } ])", "/rivers/0/manning: 2 is out of range"},
-        {R"("lakes": [ { "name": "mill", "level": 4, "at": [0, 0] } ], )" + river + "} ]", "/rivers/0/name: \"mill\" names another body"},
+        {R"("lakes": [ { "name": "mill", "level": 4, "at": [0, 0] } ], )" + river + "} ]",
+         "/rivers/0/name: \"mill\" names another body"},
         {R"("lakes": [ { "name": "ocean", "level": 4, "at": [0, 0] } ])", "/lakes/0/name: \"ocean\" names the ocean"},
         {R"("lakes": [ { "name": "a", "at": [0, 0] } ])", "/lakes/0/level: required number is missing"},
-        {R"("lakes": [ { "name": "a", "level": 4, "at": [0, 0], "preset": "no_such" } ])", "preset \"no_such\" is not bundled"},
+        {R"("lakes": [ { "name": "a", "level": 4, "at": [0, 0], "preset": "no_such" } ])",
+         "preset \"no_such\" is not bundled"},
         {R"("lakes": { "name": "a" })", "/lakes: expected an array"},
     };
     for (const auto& [bodies, expected] : cases) {
@@ -82,15 +91,18 @@ TEST(SceneBodies, ALakeFillsItsBasinAndRefusesToSpill) {
     auto scene = parse_scene(R"({ "version": 1, "name": "lake", "water_level": 0.0, "ocean": "ocean_rolling",
       "shore": { "enabled": false },
       "terrain": { "plane": { "height": 0.0, "slope": [0.0, 0.0] } },
-      "lakes": [ { "name": "flat", "level": 5.0, "at": [0, 0] } ] })", "lake.json");
+      "lakes": [ { "name": "flat", "level": 5.0, "at": [0, 0] } ] })",
+                             "lake.json");
     ASSERT_TRUE(scene) << scene.error().message;
     auto baked = bake_scene(*scene);
     ASSERT_FALSE(baked);
-    EXPECT_NE(baked.error().message.find("/lakes/0: spills over the domain edge"), std::string::npos) << baked.error().message;
+    EXPECT_NE(baked.error().message.find("/lakes/0: spills over the domain edge"), std::string::npos)
+        << baked.error().message;
 
     auto high = parse_scene(R"({ "version": 1, "name": "lake", "water_level": 0.0, "ocean": "ocean_rolling",
       "shore": { "enabled": false }, "terrain": { "plane": { "height": 0.0, "slope": [0.0, 0.0] } },
-      "lakes": [ { "name": "high", "level": -1.0, "at": [0, 0] } ] })", "lake.json");
+      "lakes": [ { "name": "high", "level": -1.0, "at": [0, 0] } ] })",
+                            "lake.json");
     ASSERT_TRUE(high);
     auto refused = bake_scene(*high);
     ASSERT_FALSE(refused);
@@ -103,7 +115,8 @@ TEST(SceneBodies, BakingReportsProgressToTheEndAndReBakingDoesNotCutTwice) {
     auto scene = parse_scene(R"({ "version": 1, "name": "carve", "water_level": 0.0, "ocean": "ocean_rolling",
       "shore": { "enabled": false },
       "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } },
-      "rivers": [ { "name": "straight", "path": [[-1500, 0], [2400, 0]], "width": 20, "discharge": 10.0 } ] })", "carve.json");
+      "rivers": [ { "name": "straight", "path": [[-1500, 0], [2400, 0]], "width": 20, "discharge": 10.0 } ] })",
+                             "carve.json");
     ASSERT_TRUE(scene) << scene.error().message;
     std::vector<double> fractions;
     SceneBakeOptions options;
@@ -128,8 +141,10 @@ TEST(SceneBodies, BakingReportsProgressToTheEndAndReBakingDoesNotCutTwice) {
 }
 
 TEST(SceneBodies, AVeryLongNarrowRiverIsRefusedNotBaked) {
-    auto scene = parse_scene(scene_with(R"("rivers": [ { "name": "thread", "path": [[0, 0], [9000000, 0]], "width": 0.5, "discharge": 1 } ])"),
-                             "long.json");
+    auto scene = parse_scene(
+        scene_with(
+            R"("rivers": [ { "name": "thread", "path": [[0, 0], [9000000, 0]], "width": 0.5, "discharge": 1 } ])"),
+        "long.json");
     ASSERT_TRUE(scene) << scene.error().message;
     auto baked = bake_scene(*scene);
     ASSERT_FALSE(baked);
@@ -140,7 +155,8 @@ TEST(SceneBodies, AVeryLongNarrowRiverIsRefusedNotBaked) {
 TEST(SceneBodies, ALakeOverTheSummitSpills) {
     auto scene = parse_scene(R"({ "version": 1, "name": "summit", "water_level": 0.0, "ocean": "ocean_rolling",
       "shore": { "enabled": false, "resolution": 256 },
-      "terrain": { "island": { "seed": 7, "radius": 600, "height": 80, "seabed": -40 } } })", "summit.json");
+      "terrain": { "island": { "seed": 7, "radius": 600, "height": 80, "seabed": -40 } } })",
+                             "summit.json");
     ASSERT_TRUE(scene) << scene.error().message;
     const Terrain& t = scene->terrain;
     glm::dvec2 best{0.0};

@@ -13,7 +13,8 @@ namespace tidewater {
 namespace {
 
 std::string pool(const std::string& extra) {
-    return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": {"waves": [{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}]})" + extra + "}";
+    return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": {"waves": [{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}]})" +
+           extra + "}";
 }
 
 std::shared_ptr<const Scene> baked(const std::string& text) {
@@ -25,7 +26,8 @@ std::shared_ptr<const Scene> baked(const std::string& text) {
     return b ? *b : nullptr;
 }
 
-const char* kBoatAndBarrel = R"(, "boats": [{"name": "tug", "path": [[0, 0], [400, 0], [400, 400]], "speed": 4.0, "length": 20.0,
+const char* kBoatAndBarrel =
+    R"(, "boats": [{"name": "tug", "path": [[0, 0], [400, 0], [400, 400]], "speed": 4.0, "length": 20.0,
                                               "beam": 6.0, "draft": 1.5, "start": 0.0}],
     "floats": [{"name": "barrel", "shape": "barrel", "at": [-300, -300], "radius": 0.3, "height": 0.9, "mass": 120},
                {"name": "crate", "shape": "box", "at": [-320, -300], "size": [1.0, 0.6, 0.8], "mass": 150},
@@ -56,8 +58,9 @@ TEST(SceneFloaters, BoatsKeepToTheirPathsAndFloatsSettleAtTheirDraft) {
     crate_y /= n;
     const double crate_draft = 150.0 / (kWaterDensity * 0.8);
     const glm::dvec3 barrel_axis = floaters->pose(1).orientation * glm::dvec3(0.0, 1.0, 0.0);
-    std::printf("crate draft %.4f m (Archimedes %.4f); barrel axis %.0f deg from upright; buoy centre at %.3f m\n", 0.3 - crate_y,
-                crate_draft, std::acos(std::abs(barrel_axis.y)) * 180.0 / kPi, floaters->pose(3).position.y);
+    std::printf("crate draft %.4f m (Archimedes %.4f); barrel axis %.0f deg from upright; buoy centre at %.3f m\n",
+                0.3 - crate_y, crate_draft, std::acos(std::abs(barrel_axis.y)) * 180.0 / kPi,
+                floaters->pose(3).position.y);
     EXPECT_NEAR(0.3 - crate_y, crate_draft, 0.01 * crate_draft);
     EXPECT_GT(std::acos(std::abs(barrel_axis.y)), 30.0 * kPi / 180.0);
     EXPECT_LT(std::abs(floaters->pose(1).position.y), 0.3);
@@ -73,12 +76,14 @@ TEST(SceneFloaters, BoatsKeepToTheirPathsAndFloatsSettleAtTheirDraft) {
         const glm::dvec3 forward = boat.orientation * glm::dvec3(1.0, 0.0, 0.0);
         const double drawn = std::atan2(forward.z, forward.x);
         const double tilt = std::acos(std::clamp((boat.orientation * glm::dvec3(0.0, 1.0, 0.0)).y, -1.0, 1.0));
-        std::printf("t = %.0f s: boat %.6f m off its path, heading %.6f deg off, origin at y = %.4f m, tilted %.2f deg\n", t,
-                    glm::length(glm::dvec2(boat.position.x, boat.position.z) - at),
-                    std::abs(std::remainder(drawn - heading, kTwoPi)) * 180.0 / kPi, boat.position.y, tilt * 180.0 / kPi);
+        std::printf(
+            "t = %.0f s: boat %.6f m off its path, heading %.6f deg off, origin at y = %.4f m, tilted %.2f deg\n", t,
+            glm::length(glm::dvec2(boat.position.x, boat.position.z) - at),
+            std::abs(std::remainder(drawn - heading, kTwoPi)) * 180.0 / kPi, boat.position.y, tilt * 180.0 / kPi);
         EXPECT_LT(glm::length(glm::dvec2(boat.position.x, boat.position.z) - at), 1e-6);
         EXPECT_LT(std::abs(std::remainder(drawn - heading, kTwoPi)), 1e-6);
-        EXPECT_LT(std::abs(boat.position.y), 0.04);  // keel at -draft: the origin at the waterline (it heels in the turn)
+        EXPECT_LT(std::abs(boat.position.y),
+                  0.04);                     // keel at -draft: the origin at the waterline (it heels in the turn)
         EXPECT_LT(tilt, 5.0 * kPi / 180.0);  // it heels in the turn
     }
 }
@@ -111,13 +116,15 @@ TEST(SceneFloaters, TheMotionDoesNotDependOnHowOftenItIsAdvanced) {
 TEST(SceneFloaters, BadFloatsAreRefusedByName) {
     const std::pair<const char*, const char*> cases[] = {
         {R"(, "floats": [{"shape": "raft", "at": [0, 0], "mass": 10}])", "/floats/0/shape"},
-        {R"(, "floats": [{"shape": "barrel", "at": [0, 0], "radius": 0.3, "height": 0.9, "mass": 1000}])", "/floats/0/mass"},
+        {R"(, "floats": [{"shape": "barrel", "at": [0, 0], "radius": 0.3, "height": 0.9, "mass": 1000}])",
+         "/floats/0/mass"},
         {R"(, "floats": [{"shape": "barrel", "at": [0, 0], "size": [1, 1, 1], "mass": 10}])", "/floats/0/size"},
         {R"(, "floats": [{"shape": "box", "at": [0, 0], "size": [1, -1, 1], "mass": 10}])", "/floats/0/size"},
         {R"(, "floats": [{"shape": "sphere", "at": [0, "x"], "radius": 0.5, "mass": 10}])", "/floats/0/at"},
         {R"(, "floats": [{"shape": "sphere", "at": [0, 0], "radius": NaN, "mass": 10}])", "floats.json"},
         {R"(, "floats": [{"shape": "sphere", "at": [0, 0], "radius": 0.5}])", "/floats/0/mass"},
-        {R"(, "floats": [{"shape": "sphere", "at": [0, 0], "radius": 0.5, "mass": 10, "colour": [1, 0, 0]}])", "colour"},
+        {R"(, "floats": [{"shape": "sphere", "at": [0, 0], "radius": 0.5, "mass": 10, "colour": [1, 0, 0]}])",
+         "colour"},
         {R"(, "floats": {"shape": "sphere"})", "/floats"},
     };
     for (const auto& [extra, where] : cases) {
@@ -127,9 +134,10 @@ TEST(SceneFloaters, BadFloatsAreRefusedByName) {
         EXPECT_NE(scene.error().message.find(where), std::string::npos) << scene.error().message;
     }
     // A float set on land is refused when it is set afloat.
-    auto island = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": 5}}, "ocean": "pool_calm",
+    auto island =
+        parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": 5}}, "ocean": "pool_calm",
                                  "floats": [{"name": "stranded", "at": [0, 0], "mass": 10}]})",
-                              "land.json");
+                    "land.json");
     ASSERT_TRUE(island) << island.error().message;
     auto b = bake_scene(*island);
     ASSERT_TRUE(b) << b.error().message;
@@ -147,7 +155,8 @@ TEST(SceneFloaters, BadFloatsAreRefusedByName) {
     ASSERT_TRUE(barred_baked) << barred_baked.error().message;
     auto aground = SceneFloaters::create(*barred_baked, 0.0);
     ASSERT_FALSE(aground);
-    EXPECT_NE(aground.error().message.find("boats/0 (tug): its path runs over land"), std::string::npos) << aground.error().message;
+    EXPECT_NE(aground.error().message.find("boats/0 (tug): its path runs over land"), std::string::npos)
+        << aground.error().message;
 }
 
 }  // namespace

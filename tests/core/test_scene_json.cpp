@@ -43,7 +43,8 @@ TEST(SceneJson, LoadsPlaneTerrainSpectrumAndPresetOverrides) {
     ASSERT_TRUE(preset.ok()) << preset.error().message;
     EXPECT_EQ(preset->ocean.profile().name, "lake_rippled");
 
-    auto overridden = parse_scene(scene_with_ocean(R"({"preset": "lake_rippled", "time_offset": 3.5, "ripples": {"amplitude": 0}})"), "s.json");
+    auto overridden = parse_scene(
+        scene_with_ocean(R"({"preset": "lake_rippled", "time_offset": 3.5, "ripples": {"amplitude": 0}})"), "s.json");
     ASSERT_TRUE(overridden.ok()) << overridden.error().message;
     EXPECT_DOUBLE_EQ(overridden->ocean.time_offset(), 3.5);
     EXPECT_FALSE(overridden->ocean.ripples().enabled());
@@ -71,7 +72,8 @@ TEST(SceneJson, FoldClampIsAWarning) {
     ASSERT_EQ(scene->warnings.size(), 1u);
     EXPECT_NE(scene->warnings[0].find("s.json: /ocean/waves"), std::string::npos) << scene->warnings[0];
     EXPECT_NEAR(scene->ocean.waves().fold_measure(), 1.0, 1e-9);
-    auto rejected = parse_scene(scene_with_ocean(std::string(ocean).replace(ocean.find("clamp"), 5, "reject")), "s.json");
+    auto rejected =
+        parse_scene(scene_with_ocean(std::string(ocean).replace(ocean.find("clamp"), 5, "reject")), "s.json");
     ASSERT_FALSE(rejected.ok());
     EXPECT_EQ(rejected.error().code, ErrorCode::fold_violation);
 }
@@ -91,50 +93,92 @@ TEST(SceneJson, BadInputNamesFilePathAndRange) {
     const std::vector<BadScene> cases = {
         {"malformed", R"({"version": 1, "water_level": 0,, })", {"bad.json", "malformed JSON", "line 1"}},
         {"truncated", R"({"version": 1, "terrain": {"flat": )", {"bad.json", "malformed JSON"}},
-        {"nan literal", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": NaN, "amplitude": 0.1, "steepness": 0.5})")), {"bad.json", "malformed JSON"}},
-        {"overflow", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 1e999, "amplitude": 0.1, "steepness": 0.5})")), {"bad.json"}},
-        {"wrong type", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": "long", "amplitude": 0.1, "steepness": 0.5})")),
+        {"nan literal",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": NaN, "amplitude": 0.1, "steepness": 0.5})")),
+         {"bad.json", "malformed JSON"}},
+        {"overflow",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 1e999, "amplitude": 0.1, "steepness": 0.5})")),
+         {"bad.json"}},
+        {"wrong type",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": "long", "amplitude": 0.1, "steepness": 0.5})")),
          {"bad.json: /ocean/waves/1/wavelength", "expected a number, found string"}},
-        {"unknown key", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 5, "amplitude": 0.1, "steepness": 0.5, "colour": 1})")),
-         {"bad.json: /ocean/waves/1/colour", "unknown key", "allowed here: direction, wavelength, amplitude, steepness, phase"}},
-        {"unknown top key", R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm", "sky": 1})",
+        {"unknown key",
+         scene_with_ocean(
+             wave_list(R"({"direction": 0, "wavelength": 5, "amplitude": 0.1, "steepness": 0.5, "colour": 1})")),
+         {"bad.json: /ocean/waves/1/colour", "unknown key",
+          "allowed here: direction, wavelength, amplitude, steepness, phase"}},
+        {"unknown top key",
+         R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm", "sky": 1})",
          {"bad.json: /sky", "unknown key"}},
-        {"wavelength zero", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 0, "amplitude": 0.1, "steepness": 0.5})")),
+        {"wavelength zero",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 0, "amplitude": 0.1, "steepness": 0.5})")),
          {"bad.json: /ocean/waves/1/wavelength", "0 < wavelength"}},
-        {"negative amplitude", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 3, "amplitude": -0.1, "steepness": 0.5})")),
+        {"negative amplitude",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 3, "amplitude": -0.1, "steepness": 0.5})")),
          {"bad.json: /ocean/waves/1/amplitude", "-0.1", "0 <= amplitude"}},
-        {"steepness above 1", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 3, "amplitude": 0.01, "steepness": 1.5})")),
+        {"steepness above 1",
+         scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 3, "amplitude": 0.01, "steepness": 1.5})")),
          {"bad.json: /ocean/waves/1/steepness", "0 <= steepness <= 1"}},
-        {"missing field", scene_with_ocean(wave_list(R"({"direction": 0, "amplitude": 0.01, "steepness": 0.5})")),
+        {"missing field",
+         scene_with_ocean(wave_list(R"({"direction": 0, "amplitude": 0.01, "steepness": 0.5})")),
          {"bad.json: /ocean/waves/1/wavelength", "missing"}},
         {"too many waves", scene_with_ocean(many), {"bad.json: /ocean/waves", "65 waves", "at most 64"}},
-        {"missing version", R"({"water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})", {"bad.json: /version", "missing"}},
-        {"future version", R"({"version": 2, "water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})", {"unsupported version 2"}},
+        {"missing version",
+         R"({"water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
+         {"bad.json: /version", "missing"}},
+        {"future version",
+         R"({"version": 2, "water_level": 0, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
+         {"unsupported version 2"}},
         {"no terrain", R"({"version": 1, "water_level": 0, "ocean": "pool_calm"})", {"bad.json: /terrain", "missing"}},
-        {"two terrains", scene_with_ocean(R"("pool_calm")", R"({"flat": {"height": -1}, "plane": {"height": 0, "slope": [0, 0]}})"), {"/terrain", "exactly one"}},
-        {"bad slope", scene_with_ocean(R"("pool_calm")", R"({"plane": {"height": 0, "slope": [0.1]}})"), {"/terrain/plane/slope", "two numbers"}},
+        {"two terrains",
+         scene_with_ocean(R"("pool_calm")", R"({"flat": {"height": -1}, "plane": {"height": 0, "slope": [0, 0]}})"),
+         {"/terrain", "exactly one"}},
+        {"bad slope",
+         scene_with_ocean(R"("pool_calm")", R"({"plane": {"height": 0, "slope": [0.1]}})"),
+         {"/terrain/plane/slope", "two numbers"}},
         {"unknown preset", scene_with_ocean(R"("ocean_stormy")"), {"ocean_stormy", "not bundled", "ocean_rolling"}},
         {"missing preset file", scene_with_ocean(R"("no/such/preset.json")"), {"no/such/preset.json", "cannot open"}},
-        {"two sources", scene_with_ocean(R"({"preset": "pool_calm", "waves": []})"), {"bad.json: /ocean", "exactly one"}},
-        {"bad spectrum", scene_with_ocean(R"({"spectrum": {"type": "tma", "wind_speed": 5}})"), {"bad.json: /ocean/spectrum/type", "jonswap"}},
-        {"spectrum range", scene_with_ocean(R"({"spectrum": {"type": "jonswap", "wind_speed": 5, "fetch": 10}})"), {"bad.json: /ocean/spectrum/fetch", "1000 <= fetch"}},
-        {"ripple octaves", scene_with_ocean(R"({"waves": [], "ripples": {"octaves": 12}})"), {"bad.json: /ocean/ripples/octaves", "1 to 8"}},
-        {"fold policy", scene_with_ocean(R"({"waves": [], "fold_policy": "ignore"})"), {"bad.json: /ocean/fold_policy", "clamp"}},
-        {"water level", R"({"version": 1, "water_level": 1e7, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})", {"bad.json: /water_level", "out of range"}},
-        {"knolls not a list", scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": {"at": [0, 0]}}})"),
+        {"two sources",
+         scene_with_ocean(R"({"preset": "pool_calm", "waves": []})"),
+         {"bad.json: /ocean", "exactly one"}},
+        {"bad spectrum",
+         scene_with_ocean(R"({"spectrum": {"type": "tma", "wind_speed": 5}})"),
+         {"bad.json: /ocean/spectrum/type", "jonswap"}},
+        {"spectrum range",
+         scene_with_ocean(R"({"spectrum": {"type": "jonswap", "wind_speed": 5, "fetch": 10}})"),
+         {"bad.json: /ocean/spectrum/fetch", "1000 <= fetch"}},
+        {"ripple octaves",
+         scene_with_ocean(R"({"waves": [], "ripples": {"octaves": 12}})"),
+         {"bad.json: /ocean/ripples/octaves", "1 to 8"}},
+        {"fold policy",
+         scene_with_ocean(R"({"waves": [], "fold_policy": "ignore"})"),
+         {"bad.json: /ocean/fold_policy", "clamp"}},
+        {"water level",
+         R"({"version": 1, "water_level": 1e7, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
+         {"bad.json: /water_level", "out of range"}},
+        {"knolls not a list",
+         scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": {"at": [0, 0]}}})"),
          {"bad.json: /terrain/island/knolls", "expected an array"}},
-        {"knoll radius", scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"at": [0, 0], "radius": 0, "height": 2}]}})"),
+        {"knoll radius",
+         scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"at": [0, 0], "radius": 0, "height": 2}]}})"),
          {"bad.json: /terrain/island/knolls/0/radius", "out of range"}},
-        {"knoll height", scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"at": [0, 0], "radius": 5, "height": -2}]}})"),
+        {"knoll height",
+         scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"at": [0, 0], "radius": 5, "height": -2}]}})"),
          {"bad.json: /terrain/island/knolls/0/height"}},
-        {"knoll without a place", scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"radius": 5, "height": 2}]}})"),
+        {"knoll without a place",
+         scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"radius": 5, "height": 2}]}})"),
          {"bad.json: /terrain/island/knolls/0/at", "missing"}},
-        {"knoll unknown key", scene_with_ocean(R"("pool_calm")", R"({"island": {"knolls": [{"at": [0, 0], "radius": 5, "height": 2, "rock": 1}]}})"),
+        {"knoll unknown key",
+         scene_with_ocean(R"("pool_calm")",
+                          R"({"island": {"knolls": [{"at": [0, 0], "radius": 5, "height": 2, "rock": 1}]}})"),
          {"bad.json: /terrain/island/knolls/0/rock", "unknown key"}},
         {"not an object", "[1, 2]", {"bad.json", "expected an object"}},
-        {"duplicate key", R"({"version": 1, "water_level": 0, "water_level": 1, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
+        {"duplicate key",
+         R"({"version": 1, "water_level": 0, "water_level": 1, "terrain": {"flat": {"height": -1}}, "ocean": "pool_calm"})",
          {"bad.json", "duplicate key \"water_level\""}},
-        {"nested duplicate", scene_with_ocean(wave_list(R"({"direction": 0, "wavelength": 5, "amplitude": 0.1, "amplitude": 0.2, "steepness": 0.5})")),
+        {"nested duplicate",
+         scene_with_ocean(
+             wave_list(R"({"direction": 0, "wavelength": 5, "amplitude": 0.1, "amplitude": 0.2, "steepness": 0.5})")),
          {"bad.json", "duplicate key \"amplitude\""}},
     };
     for (const BadScene& c : cases) {
@@ -183,7 +227,8 @@ TEST(Presets, BundledProfilesLoadAndDiffer) {
     EXPECT_GT(hs_ocean, 10.0 * hs_lake);
     EXPECT_GT(hs_lake, 3.0 * hs_pool);
     double river_max = 0.0, lake_min = 1e9, lake_max = -1e9;
-    for (const auto& w : bodies["river_flowing"].profile().waves) river_max = std::max(river_max, std::abs(w.direction_deg));
+    for (const auto& w : bodies["river_flowing"].profile().waves)
+        river_max = std::max(river_max, std::abs(w.direction_deg));
     for (const auto& w : bodies["lake_rippled"].profile().waves) {
         lake_min = std::min(lake_min, w.direction_deg);
         lake_max = std::max(lake_max, w.direction_deg);
@@ -194,7 +239,9 @@ TEST(Presets, BundledProfilesLoadAndDiffer) {
 }
 
 TEST(Presets, PresetFileErrorsNameTheFile) {
-    auto p = parse_preset(R"({"version": 1, "name": "x", "waves": [{"direction": 0, "wavelength": 5, "amplitude": 9, "steepness": 1}]})", "steep.json");
+    auto p = parse_preset(
+        R"({"version": 1, "name": "x", "waves": [{"direction": 0, "wavelength": 5, "amplitude": 9, "steepness": 1}]})",
+        "steep.json");
     ASSERT_FALSE(p.ok());
     EXPECT_NE(p.error().message.find("steep.json"), std::string::npos) << p.error().message;
     EXPECT_EQ(p.error().code, ErrorCode::fold_violation);

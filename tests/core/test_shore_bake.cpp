@@ -3,11 +3,11 @@
 // degenerate terrains bake with documented results; noisy shores are refused.
 #include <cmath>
 
-#include "test_helpers.hpp"
 #include "../baked_scene.hpp"
+#include "test_helpers.hpp"
 #include "tidewater/detail/reference.hpp"
-#include "tidewater/ripples.hpp"
 #include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/ripples.hpp"
 
 namespace tidewater {
 namespace {
@@ -22,7 +22,8 @@ Terrain radial_heightmap(int pixels, double size, double lo, double hi, const Pr
         for (int i = 0; i < pixels; ++i) {
             const double x = (i / double(pixels - 1) - 0.5) * size, z = (j / double(pixels - 1) - 0.5) * size;
             const double h = std::clamp(height(std::hypot(x, z)), lo, hi);
-            img->pixels[static_cast<std::size_t>(j * pixels + i)] = static_cast<std::uint16_t>(std::lround((h - lo) / (hi - lo) * 65535.0));
+            img->pixels[static_cast<std::size_t>(j * pixels + i)] =
+                static_cast<std::uint16_t>(std::lround((h - lo) / (hi - lo) * 65535.0));
         }
     HeightmapTerrain t;
     t.size = {size, size};
@@ -66,10 +67,13 @@ TEST(ShoreBake, CircularIslandMatchesExactDistance) {
     ASSERT_TRUE(f.ok()) << f.error().message;
     EXPECT_EQ(f->polygons, 1u);
     EXPECT_EQ(f->holes, 0u);
-    const Worst w = compare(*f, [&](glm::dvec2 p) {
-        const double r = glm::length(p);
-        return std::pair{r - r0, r > 0 ? p / r : glm::dvec2(0.0)};
-    }, [&](glm::dvec2 p) { return glm::length(p) < 0.2 * r0; });
+    const Worst w = compare(
+        *f,
+        [&](glm::dvec2 p) {
+            const double r = glm::length(p);
+            return std::pair{r - r0, r > 0 ? p / r : glm::dvec2(0.0)};
+        },
+        [&](glm::dvec2 p) { return glm::length(p) < 0.2 * r0; });
     std::printf("circular island: texel %.3f m, tolerance %.3f m, %zu segments: max |error| %.3f m, gradient %.4f\n",
                 f->texel, f->simplify_tolerance, f->segment_count, w.error, w.gradient_error);
     EXPECT_LE(w.error, f->texel + f->simplify_tolerance);
@@ -83,20 +87,24 @@ TEST(ShoreBake, CircularIslandMatchesExactDistance) {
 // inside, land between; one land polygon with one hole.
 TEST(ShoreBake, RingLagoonMatchesExactDistance) {
     const double a = 150.0, b = 300.0, mid = 0.5 * (a + b), half_width = 0.5 * (b - a);
-    const Terrain t = radial_heightmap(513, 1000.0, -40.0, 40.0, [&](double r) { return 0.2 * (half_width - std::abs(r - mid)); });
+    const Terrain t =
+        radial_heightmap(513, 1000.0, -40.0, 40.0, [&](double r) { return 0.2 * (half_width - std::abs(r - mid)); });
     BakeOptions o;
     o.resolution = 256;
     auto f = bake_shore(t, 0.0, o);
     ASSERT_TRUE(f.ok()) << f.error().message;
     EXPECT_EQ(f->polygons, 1u);
     EXPECT_EQ(f->holes, 1u);
-    const Worst w = compare(*f, [&](glm::dvec2 p) {
-        const double r = glm::length(p);
-        const glm::dvec2 out = r > 0 ? p / r : glm::dvec2(0.0);
-        if (r < a) return std::pair{a - r, -out};     // lagoon water
-        if (r > b) return std::pair{r - b, out};      // open sea
-        return r - a < b - r ? std::pair{-(r - a), -out} : std::pair{-(b - r), out};  // land
-    }, [&](glm::dvec2 p) { return glm::length(p) < 0.2 * a || std::abs(glm::length(p) - mid) < 0.2 * half_width; });
+    const Worst w = compare(
+        *f,
+        [&](glm::dvec2 p) {
+            const double r = glm::length(p);
+            const glm::dvec2 out = r > 0 ? p / r : glm::dvec2(0.0);
+            if (r < a) return std::pair{a - r, -out};                                     // lagoon water
+            if (r > b) return std::pair{r - b, out};                                      // open sea
+            return r - a < b - r ? std::pair{-(r - a), -out} : std::pair{-(b - r), out};  // land
+        },
+        [&](glm::dvec2 p) { return glm::length(p) < 0.2 * a || std::abs(glm::length(p) - mid) < 0.2 * half_width; });
     std::printf("ring lagoon: max |error| %.3f m (texel %.3f m + tolerance %.3f m), gradient %.4f\n", w.error, f->texel,
                 f->simplify_tolerance, w.gradient_error);
     EXPECT_LE(w.error, f->texel + f->simplify_tolerance);
@@ -131,8 +139,10 @@ Terrain noisy_archipelago(int pixels, double size) {
         for (int i = 0; i < pixels; ++i) {
             glm::dvec2 q = glm::dvec2(i - pixels / 2, j - pixels / 2) * (size / pixels) / 150.0;
             double h = 0.0, a = 30.0;
-            for (int o = 0; o < 5; ++o, q *= 2.3, a *= 0.6) h += a * gradient_noise(q, 7u + static_cast<std::uint32_t>(o)).value;
-            img->pixels[static_cast<std::size_t>(j * pixels + i)] = static_cast<std::uint16_t>(std::clamp((h + 60.0) / 120.0 * 65535.0, 0.0, 65535.0));
+            for (int o = 0; o < 5; ++o, q *= 2.3, a *= 0.6)
+                h += a * gradient_noise(q, 7u + static_cast<std::uint32_t>(o)).value;
+            img->pixels[static_cast<std::size_t>(j * pixels + i)] =
+                static_cast<std::uint16_t>(std::clamp((h + 60.0) / 120.0 * 65535.0, 0.0, 65535.0));
         }
     HeightmapTerrain t;
     t.size = {size, size};
@@ -159,7 +169,8 @@ TEST(ShoreBake, EveryTexelIsExactAndThreadCountDoesNotMatter) {
             for (int i = 0; i < resolution; ++i) {
                 const std::size_t k = one->index(i, j);
                 const double brute = reference::brute_force_shore_distance(*one, one->texel_center(i, j));
-                worst = std::max(worst, std::abs(std::abs(double(one->signed_distance[k])) - brute) / (1e-4 + 1e-6 * brute));
+                worst = std::max(worst,
+                                 std::abs(std::abs(double(one->signed_distance[k])) - brute) / (1e-4 + 1e-6 * brute));
                 // The sign is the texel's side of the water level, even within the simplification
                 // tolerance and beyond an open line's end along the domain edge (0 on the line).
                 if (one->signed_distance[k] != 0.0f) {

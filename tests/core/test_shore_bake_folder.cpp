@@ -1,14 +1,15 @@
 // Saved shore bakes: a model survives saving and loading within its 16-bit encoding,
 // and bakes that do not fit the scene are refused.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "../baked_scene.hpp"
 #include "test_helpers.hpp"
 #include "tidewater/detail/image_io.hpp"
-#include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/image_write.hpp"
+#include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/shore_bake_write.hpp"
 
 namespace tidewater {
@@ -58,8 +59,11 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     EXPECT_LE(worst_difference(back.depth(), model.depth()), half_step(model.depth()));
     EXPECT_LE(worst_difference(back.breaking(), model.breaking()), half_step(model.breaking()));
     for (std::size_t w = 0; w < model.wave_count(); ++w) {
-        EXPECT_LE(worst_difference(back.phase_residual(w), model.phase_residual(w)), half_step(model.phase_residual(w))) << w;
-        EXPECT_LE(worst_difference(back.amplitude_factor(w), model.amplitude_factor(w)), half_step(model.amplitude_factor(w))) << w;
+        EXPECT_LE(worst_difference(back.phase_residual(w), model.phase_residual(w)), half_step(model.phase_residual(w)))
+            << w;
+        EXPECT_LE(worst_difference(back.amplitude_factor(w), model.amplitude_factor(w)),
+                  half_step(model.amplitude_factor(w)))
+            << w;
         EXPECT_LE(worst_difference(back.wavevector_x(w), model.wavevector_x(w)), half_step(model.wavevector_x(w))) << w;
         // Offshore the residual is exactly 0 before and after: no seam where the fields end.
         for (std::size_t k = 0; k < model.phase_residual(w).size(); ++k) {
@@ -73,12 +77,14 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     auto body = scene->ocean.with_shore(*loaded);
     ASSERT_TRUE(body.ok());
     std::vector<glm::dvec2> points;
-    for (int k = 0; k < 400; ++k) points.push_back({std::fmod(k * 37.3, 900.0) - 450.0, std::fmod(k * 53.9, 900.0) - 450.0});
+    for (int k = 0; k < 400; ++k)
+        points.push_back({std::fmod(k * 37.3, 900.0) - 450.0, std::fmod(k * 53.9, 900.0) - 450.0});
     std::vector<SurfacePoint> original(points.size()), reloaded(points.size());
     ASSERT_TRUE(query_surface(scene->ocean, 4.2, points, original).ok());
     ASSERT_TRUE(query_surface(*body, 4.2, points, reloaded).ok());
     double worst = 0.0;
-    for (std::size_t k = 0; k < points.size(); ++k) worst = std::max(worst, std::abs(original[k].height - reloaded[k].height));
+    for (std::size_t k = 0; k < points.size(); ++k)
+        worst = std::max(worst, std::abs(original[k].height - reloaded[k].height));
     std::printf("saved and loaded bake: worst height difference %.3f mm over %zu points\n", worst * 1e3, points.size());
     EXPECT_LT(worst, 5e-3);
 }
@@ -97,7 +103,8 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
         return r.ok() ? std::string("loaded") : r.error().message;
     };
     EXPECT_NE(message(scene->ocean.waves(), 0.3, scene->terrain).find("/water_level_m"), std::string::npos);
-    auto lake = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -20}}, "ocean": "lake_rippled"})", "lake");
+    auto lake = parse_scene(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -20}}, "ocean": "lake_rippled"})", "lake");
     ASSERT_TRUE(lake.ok());
     EXPECT_NE(message(lake->ocean.waves(), 0.0, scene->terrain).find("re-run tidewater bake"), std::string::npos);
     IslandTerrain edited = std::get<IslandTerrain>(scene->terrain.shape());

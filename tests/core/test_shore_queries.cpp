@@ -4,22 +4,22 @@
 // on dry land; at most 3% (waterline) and 1% (surf zone) of the points may stall
 // unconverged at kinks of the bilinear shore fields. Then determinism across thread counts, and queries while another
 // thread bakes.
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <cmath>
 #include <cstring>
-#include <thread>
-
 #include <glm/geometric.hpp>
-#include <gtest/gtest.h>
+#include <thread>
 
 #include "../baked_scene.hpp"
 #include "test_helpers.hpp"
+#include "tidewater/constants.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/constants.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
-#include "tidewater/detail/shore_waves_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -44,7 +44,8 @@ std::vector<glm::dvec2> band(double lo, double hi, std::size_t count, unsigned k
             const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
             h = h * 6364136223846793005ull + 1442695040888963407ull;
             if (d < lo || d > hi || (h >> 60) >= keep_in_16) continue;
-            const double jx = static_cast<double>((h >> 20) & 1023) / 1024.0 - 0.5, jz = static_cast<double>((h >> 40) & 1023) / 1024.0 - 0.5;
+            const double jx = static_cast<double>((h >> 20) & 1023) / 1024.0 - 0.5,
+                         jz = static_cast<double>((h >> 40) & 1023) / 1024.0 - 0.5;
             pts.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5 + jx, j + 0.5 + jz));
         }
     return pts;
@@ -60,7 +61,8 @@ struct Band {
 TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
     const WaterBody& body = island().ocean;
     ASSERT_TRUE(body.shore() && !body.shore()->trivial());
-    for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01}, Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
+    for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01},
+                          Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
         const std::vector<glm::dvec2> pts = band(b.lo, b.hi, 1500, b.keep_in_16);
         ASSERT_GT(pts.size(), 200u) << b.name;
         for (double t : {0.0, 37.5, 1000.25}) {
@@ -77,7 +79,8 @@ TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
                     continue;
                 }
                 worst_h = std::max(worst_h, std::abs(simd[i].height - ref.height));
-                worst_n = std::max(worst_n, std::acos(std::clamp(glm::dot(simd[i].normal, ref.normal), -1.0, 1.0)) * 180.0 / kPi);
+                worst_n = std::max(
+                    worst_n, std::acos(std::clamp(glm::dot(simd[i].normal, ref.normal), -1.0, 1.0)) * 180.0 / kPi);
                 EXPECT_NEAR(simd[i].depth, ref.depth, 1e-3) << b.name;
                 EXPECT_NEAR(simd[i].shore_distance, ref.shore_distance, 1e-2) << b.name;
                 if (ref.depth < -0.5) {
@@ -90,8 +93,8 @@ TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
                 }
             }
             const double stalled = static_cast<double>(unconverged) / static_cast<double>(pts.size());
-            std::printf("%s, t = %g s: %zu points, %.1f%% unconverged, worst height %.2e m, normal %.3f deg\n", b.name, t,
-                        pts.size(), 100.0 * stalled, worst_h, worst_n);
+            std::printf("%s, t = %g s: %zu points, %.1f%% unconverged, worst height %.2e m, normal %.3f deg\n", b.name,
+                        t, pts.size(), 100.0 * stalled, worst_h, worst_n);
             EXPECT_LT(worst_h, 1e-4) << b.name << " at t = " << t;
             EXPECT_LT(worst_n, 0.05) << b.name << " at t = " << t;
             EXPECT_LE(stalled, b.stall_allowance) << b.name << " at t = " << t;
@@ -173,10 +176,13 @@ TEST(ShoreQuery, BitIdenticalForAnyBatching) {
     ASSERT_TRUE(query_heights(island().ocean, 55.5, pts, heights).ok());
     for (std::size_t at = 0; at < pts.size(); at += 37) {
         const std::size_t n = std::min<std::size_t>(37, pts.size() - at);
-        ASSERT_TRUE(query_surface(island().ocean, 55.5, std::span(pts.data() + at, n), std::span(pieces.data() + at, n)).ok());
+        ASSERT_TRUE(
+            query_surface(island().ocean, 55.5, std::span(pts.data() + at, n), std::span(pieces.data() + at, n)).ok());
     }
     test::expect_bitwise_equal(whole, pieces);
-    for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0) << i << " " << heights[i] - whole[i].height << " " << whole[i].iterations;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        ASSERT_EQ(std::memcmp(&heights[i], &whole[i].height, sizeof(double)), 0)
+            << i << " " << heights[i] - whole[i].height << " " << whole[i].iterations;
 }
 
 // Near a shore a particle's foam also remembers its crests: the shore fields are fixed in
@@ -198,15 +204,19 @@ TEST(ShoreQuery, FoamRemembersTheParticlesCrestsNearTheShore) {
         double crest = 0.0;
         for (int lag = 0; lag <= 4; ++lag) {
             const double age = 0.5 * lag;
-            const double j = evaluate_lagrangian_shore(body.waves(), *body.shore(), rest, body.local_time(time) - age, &local).jacobian;
+            const double j =
+                evaluate_lagrangian_shore(body.waves(), *body.shore(), rest, body.local_time(time) - age, &local)
+                    .jacobian;
             crest += crest_foam(j, body.whitecap_jacobian()) * std::exp(-age / 1.0);
         }
         const double expected = std::max(local.breaking, std::min(crest, 1.0));
         worst = std::max(worst, std::abs(out[i].foam - expected));
-        remembered += out[i].foam > std::max(local.breaking, crest_foam(out[i].jacobian, body.whitecap_jacobian())) + 0.1 ? 1 : 0;
+        remembered +=
+            out[i].foam > std::max(local.breaking, crest_foam(out[i].jacobian, body.whitecap_jacobian())) + 0.1 ? 1 : 0;
         ++checked;
     }
-    std::printf("shore foam against the particles' history: worst %.2e over %zu points, %zu with a trail\n", worst, checked, remembered);
+    std::printf("shore foam against the particles' history: worst %.2e over %zu points, %zu with a trail\n", worst,
+                checked, remembered);
     EXPECT_GT(checked, pts.size() / 2);
     EXPECT_LT(worst, 5e-3);
     EXPECT_GT(remembered, 0u);
@@ -215,7 +225,8 @@ TEST(ShoreQuery, FoamRemembersTheParticlesCrestsNearTheShore) {
 TEST(ShoreQuery, BitIdenticalForAnyThreadCount) {
     const auto pts = coast_points();
     const auto one = test::surface_on_threads(island().ocean, 55.5, pts, 1);
-    for (unsigned threads : {0u, 2u, 3u, 8u}) test::expect_bitwise_equal(one, test::surface_on_threads(island().ocean, 55.5, pts, threads));
+    for (unsigned threads : {0u, 2u, 3u, 8u})
+        test::expect_bitwise_equal(one, test::surface_on_threads(island().ocean, 55.5, pts, threads));
 }
 
 // Two threads query (one open water, one the shore) while a third bakes a shore model:

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "test_helpers.hpp"
-#include "tidewater/dispersion.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/shore_waves_bake.hpp"
+#include "tidewater/dispersion.hpp"
 
 namespace tidewater {
 namespace {
@@ -24,7 +24,7 @@ TEST(Dispersion, SolvesTheRelationWithItsLimits) {
             const double k = wavenumber_at_depth(omega, h);
             EXPECT_NEAR(kGravity * k * std::tanh(k * h) / (omega * omega), 1.0, 1e-12);
         }
-    EXPECT_NEAR(wavenumber_at_depth(1.0, 1e4), 1.0 / kGravity, 1e-12);                     // deep: w^2 / g
+    EXPECT_NEAR(wavenumber_at_depth(1.0, 1e4), 1.0 / kGravity, 1e-12);                      // deep: w^2 / g
     EXPECT_NEAR(wavenumber_at_depth(0.05, 1.0) / (0.05 / std::sqrt(kGravity)), 1.0, 1e-3);  // shallow: w / sqrt(g h)
     // Shoaling dips just below 1 at intermediate depth (minimum ~0.913 near kh = 1.3), then grows.
     const double omega = deep_water_omega(100.0);
@@ -79,7 +79,8 @@ Beach planar_beach() {
 }
 
 /// Largest |eta| and crest-to-trough height at a rest position over one period.
-std::pair<double, double> amplitude_and_height(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest, double period) {
+std::pair<double, double> amplitude_and_height(const WaveSet& set, const ShoreWaves& shore, glm::dvec2 rest,
+                                               double period) {
     double lo = 1e9, hi = -1e9;
     for (int s = 0; s < 200; ++s) {
         const double eta = evaluate_lagrangian_shore(set, shore, rest, period * s / 200.0).displacement.y;
@@ -125,7 +126,8 @@ TEST(ShoreWaves, BreaksAtTheDepthLimitAndStopsOnLand) {
         worst_excess = std::max(worst_excess, height - (0.78 * h + 0.05));
         LocalShore local;
         (void)evaluate_lagrangian_shore(set, **shore, {x, 0.0}, 0.0, &local);
-        if (1.2 * shoaling_coefficient(omega, h) > 0.39 * h * 1.3) foam_in_surf = std::max(foam_in_surf, local.breaking);
+        if (1.2 * shoaling_coefficient(omega, h) > 0.39 * h * 1.3)
+            foam_in_surf = std::max(foam_in_surf, local.breaking);
     }
     EXPECT_LE(worst_excess, 0.0) << "height above 0.78 h + 5 cm";
     EXPECT_GT(foam_in_surf, 0.5) << "foam where the waves break";

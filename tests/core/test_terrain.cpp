@@ -28,7 +28,8 @@ Gray16Image cone(int n) {
         for (int i = 0; i < n; ++i) {
             const double u = (i / double(n - 1)) * 2.0 - 1.0, v = (j / double(n - 1)) * 2.0 - 1.0;
             const double h = 20.0 - 40.0 * std::min(1.0, std::sqrt(u * u + v * v));  // in [-20, 20]
-            img.pixels[static_cast<std::size_t>(j * n + i)] = static_cast<std::uint16_t>(std::lround((h + 20.0) / 40.0 * 65535.0));
+            img.pixels[static_cast<std::size_t>(j * n + i)] =
+                static_cast<std::uint16_t>(std::lround((h + 20.0) / 40.0 * 65535.0));
         }
     }
     return img;
@@ -46,9 +47,9 @@ TEST(Terrain, HeightmapRoundTripsThroughPng) {
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     const Terrain& t = scene->terrain;
     EXPECT_STREQ(t.kind_name(), "heightmap");
-    EXPECT_NEAR(t.height_at({100.0, 0.0}), 20.0, 1e-3);           // centre pixel
-    EXPECT_NEAR(t.height_at({100.0 + 320.0, 0.0}), -20.0, 1e-3);  // edge
-    EXPECT_NEAR(t.height_at({100.0 + 160.0, 0.0}), 0.0, 1e-3);    // half way: 20 - 40 * 0.5
+    EXPECT_NEAR(t.height_at({100.0, 0.0}), 20.0, 1e-3);                         // centre pixel
+    EXPECT_NEAR(t.height_at({100.0 + 320.0, 0.0}), -20.0, 1e-3);                // edge
+    EXPECT_NEAR(t.height_at({100.0 + 160.0, 0.0}), 0.0, 1e-3);                  // half way: 20 - 40 * 0.5
     EXPECT_NEAR(t.height_at({5000.0, 0.0}), t.height_at({420.0, 0.0}), 1e-12);  // edge extends
     EXPECT_DOUBLE_EQ(t.extent_half_size(), 320.0);
     fs::remove_all(dir);
@@ -71,12 +72,15 @@ TEST(Terrain, BadHeightmapsNameTheFile) {
                           Case{"colour.png", "16-bit greyscale"}}) {
         auto scene = parse_scene(scene_text(c.file), "s.json", dir);
         ASSERT_FALSE(scene.ok()) << c.file;
-        EXPECT_NE(scene.error().message.find("s.json: /terrain/heightmap/file"), std::string::npos) << scene.error().message;
+        EXPECT_NE(scene.error().message.find("s.json: /terrain/heightmap/file"), std::string::npos)
+            << scene.error().message;
         EXPECT_NE(scene.error().message.find(c.file), std::string::npos) << scene.error().message;
         EXPECT_NE(scene.error().message.find(c.expected), std::string::npos) << scene.error().message;
     }
-    auto bad_range = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "x.png", "size": [100, 0],
-        "height_range": [-5, 5]}}, "ocean": "pool_calm"})", "s.json", dir);
+    auto bad_range =
+        parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "x.png", "size": [100, 0],
+        "height_range": [-5, 5]}}, "ocean": "pool_calm"})",
+                    "s.json", dir);
     ASSERT_FALSE(bad_range.ok());
     EXPECT_NE(bad_range.error().message.find("/terrain/heightmap/size"), std::string::npos);
     fs::remove_all(dir);
@@ -118,8 +122,8 @@ TEST(Terrain, ProceduralIslandHasBeachesCliffsAndLagoon) {
         steepest = std::max(steepest, slope);
     }
     EXPECT_GT(land, 600);
-    EXPECT_LT(gentlest, 0.1);   // a beach: under about 6 degrees
-    EXPECT_GT(steepest, 0.7);   // a cliff: over 35 degrees
+    EXPECT_LT(gentlest, 0.1);  // a beach: under about 6 degrees
+    EXPECT_GT(steepest, 0.7);  // a cliff: over 35 degrees
     // Water inland: the lagoon basin sits within 0.6 R of the centre, enclosed by land.
     int inland_water = 0;
     for (int i = 0; i < 400; ++i)

@@ -15,7 +15,7 @@ namespace tidewater {
 namespace {
 
 constexpr double kDeg = kPi / 180.0;
-constexpr double kKelvinAngle = 19.4712206;  // asin(1/3), degrees
+constexpr double kKelvinAngle = 19.4712206;    // asin(1/3), degrees
 constexpr double kCuspWaveAngle = 35.2643897;  // the cusp waves' direction from the track, atan(1/sqrt(2)), degrees
 
 /// A boat at speed U on deep, calm water with a hull whose length Froude number is 0.4,
@@ -37,7 +37,8 @@ struct KelvinCase {
         time = sailed_wavelengths * lambda / u;
         scripted_boat_wake(boat, 0, time, wakes);
         // Linear waves (the theory's), and no stern chain (it churns foam, not waves).
-        std::erase_if(wakes.chains, [](const WakeChain& c) { return c.points.empty() || c.points.front().strength == 0.0; });
+        std::erase_if(wakes.chains,
+                      [](const WakeChain& c) { return c.points.empty() || c.points.front().strength == 0.0; });
         for (WakeChain& c : wakes.chains)
             for (DisturbancePoint& p : c.points) p.steepness = 0.0;
         apex = {u * time + 0.25 * length, 0.0};
@@ -61,11 +62,13 @@ struct KelvinCase {
         std::vector<glm::dvec2> points;
         const int samples = 24;
         for (double a : angles)
-            for (int s = 0; s <= samples; ++s) points.push_back(behind(distance + lambda * (double(s) / samples - 0.5), a));
+            for (int s = 0; s <= samples; ++s)
+                points.push_back(behind(distance + lambda * (double(s) / samples - 0.5), a));
         const std::vector<double> h = heights(points);
         std::vector<double> env(angles.size(), 0.0);
         for (std::size_t i = 0; i < angles.size(); ++i)
-            for (int s = 0; s <= samples; ++s) env[i] = std::max(env[i], std::abs(h[i * (samples + 1) + static_cast<std::size_t>(s)]));
+            for (int s = 0; s <= samples; ++s)
+                env[i] = std::max(env[i], std::abs(h[i * (samples + 1) + static_cast<std::size_t>(s)]));
         return env;
     }
     /// The angle (degrees) of the strongest envelope between lo and hi, and its value.
@@ -123,8 +126,8 @@ TEST(Wakes, KelvinWedgeAngleAndWavelengths) {
                     edge = outward[i];
                     break;
                 }
-            std::printf("U = %.0f m/s, %2.0f wavelengths behind: crest %.2f deg (%.3f m), outer edge %.2f deg\n", u, x, angle, height,
-                        edge);
+            std::printf("U = %.0f m/s, %2.0f wavelengths behind: crest %.2f deg (%.3f m), outer edge %.2f deg\n", u, x,
+                        angle, height, edge);
             EXPECT_NEAR(angle, kKelvinAngle, 1.0) << "U " << u << ", " << x << " wavelengths";
             EXPECT_NEAR(edge, kKelvinAngle + 0.5, 1.0) << "U " << u << ", " << x << " wavelengths";
         }
@@ -141,9 +144,10 @@ TEST(Wakes, KelvinWedgeAngleAndWavelengths) {
         std::vector<glm::dvec2> line;
         const double fine = k.lambda / 128.0;
         for (double s = 12.0 * k.lambda; s <= 20.0 * k.lambda; s += fine) line.push_back(k.behind(s, ray));
-        const double cusp_wavelength = crossing_wavelength(k.heights(line), fine) * std::cos((kCuspWaveAngle + ray) * kDeg);
-        std::printf("U = %.0f m/s: transverse wavelength %.3f m (2 pi U^2 / g = %.3f), cusp %.3f m (ratio %.3f)\n", u, transverse,
-                    k.lambda, cusp_wavelength, cusp_wavelength / k.lambda);
+        const double cusp_wavelength =
+            crossing_wavelength(k.heights(line), fine) * std::cos((kCuspWaveAngle + ray) * kDeg);
+        std::printf("U = %.0f m/s: transverse wavelength %.3f m (2 pi U^2 / g = %.3f), cusp %.3f m (ratio %.3f)\n", u,
+                    transverse, k.lambda, cusp_wavelength, cusp_wavelength / k.lambda);
         EXPECT_NEAR(transverse / k.lambda, 1.0, 0.03) << "U " << u;
         EXPECT_NEAR(cusp_wavelength / k.lambda, 2.0 / 3.0, 0.05 * 2.0 / 3.0) << "U " << u;
     }
@@ -184,14 +188,16 @@ TEST(Wakes, CuspAndTransverseWavesDecayAsKelvinsIntegral) {
         off.push_back(k.envelope(x * k.lambda, {6.0})[0]);
     }
     const double cusp_exponent = log_slope(r, cusp), off_exponent = log_slope(r, off);
-    std::printf("decay exponents: cusp %.3f (theory -1/3), off the cusp %.3f (theory -1/2)\n", cusp_exponent, off_exponent);
+    std::printf("decay exponents: cusp %.3f (theory -1/3), off the cusp %.3f (theory -1/2)\n", cusp_exponent,
+                off_exponent);
     // The same measurement on Kelvin's integral.
     const double k0 = kGravity / (k.speed * k.speed), size = boat_wake_shape(k.boat.hull).bow_size;
     auto integral_envelope = [&](double distance, double angle) {
         double e = 0.0;
         for (int s = 0; s <= 24; ++s) {
             const double d = distance + k.lambda * (s / 24.0 - 0.5);
-            e = std::max(e, std::abs(kelvin_integral(k0, size, -d * std::cos(angle * kDeg), d * std::sin(angle * kDeg))));
+            e = std::max(e,
+                         std::abs(kelvin_integral(k0, size, -d * std::cos(angle * kDeg), d * std::sin(angle * kDeg))));
         }
         return e;
     };
@@ -202,7 +208,8 @@ TEST(Wakes, CuspAndTransverseWavesDecayAsKelvinsIntegral) {
         integral_cusp.push_back(best);
         integral_off.push_back(integral_envelope(d, 6.0));
     }
-    const double integral_cusp_exponent = log_slope(r, integral_cusp), integral_off_exponent = log_slope(r, integral_off);
+    const double integral_cusp_exponent = log_slope(r, integral_cusp),
+                 integral_off_exponent = log_slope(r, integral_off);
     std::printf("Kelvin's integral: cusp %.3f, off the cusp %.3f\n", integral_cusp_exponent, integral_off_exponent);
     EXPECT_NEAR(cusp_exponent, integral_cusp_exponent, 0.05);
     EXPECT_NEAR(off_exponent, integral_off_exponent, 0.05);
@@ -229,7 +236,7 @@ double largest(const std::vector<double>& v) {
 /// A grid behind a boat that sailed +x to `head`: 4 to 24 hull lengths back, out to 12 beside.
 std::vector<glm::dvec2> grid_behind(glm::dvec2 head, double length) {
     std::vector<glm::dvec2> points;
-    for (double x = 4.0; x <= 24.0; x += 0.37) // 0.37 hull lengths: not a multiple of the spacing
+    for (double x = 4.0; x <= 24.0; x += 0.37)  // 0.37 hull lengths: not a multiple of the spacing
         for (double z = -12.0; z <= 12.0; z += 0.37) points.push_back(head + length * glm::dvec2(-x, z));
     return points;
 }
@@ -300,8 +307,8 @@ TEST(Wakes, FrameRateDoesNotChangeTheWake) {
         const std::vector<double> h = wake_heights(fed, time, grid);
         double worst = 0.0;
         for (std::size_t i = 0; i < h.size(); ++i) worst = std::max(worst, std::abs(h[i] - reference[i]));
-        std::printf("%.0f frames/s: %zu points against %zu scripted; surfaces %.5f m apart at most\n", rate, fed.point_count(),
-                    scripted.point_count(), worst);
+        std::printf("%.0f frames/s: %zu points against %zu scripted; surfaces %.5f m apart at most\n", rate,
+                    fed.point_count(), scripted.point_count(), worst);
         EXPECT_LT(worst, 1e-3) << rate << " frames/s";
     }
 }
@@ -332,7 +339,8 @@ TEST(Wakes, PointsAppearAndExpireWithoutAJump) {
     };
     std::vector<glm::dvec2> near_bow;
     for (double x = -30.0; x <= 30.0; x += 1.3)
-        for (double z = -30.0; z <= 30.0; z += 1.3) near_bow.push_back(glm::dvec2(boat.speed * laid, 0.0) + glm::dvec2(x, z));
+        for (double z = -30.0; z <= 30.0; z += 1.3)
+            near_bow.push_back(glm::dvec2(boat.speed * laid, 0.0) + glm::dvec2(x, z));
     const auto [appear, changed] = jump(laid, near_bow);
     // The oldest bow point (laid at time 0) ages out at the chains' max age.
     const double expiry = 360.0;
@@ -363,7 +371,8 @@ TEST(Wakes, OutsideTheirReachTheChainsCancel) {
     ASSERT_EQ(prepared.boxes.size(), 2u);
     std::vector<glm::dvec2> ring;
     for (const glm::dvec4& b : prepared.boxes) {
-        const glm::dvec2 lo = prepared.origin + glm::dvec2(b.x, b.y) - 5.0, hi = prepared.origin + glm::dvec2(b.z, b.w) + 5.0;
+        const glm::dvec2 lo = prepared.origin + glm::dvec2(b.x, b.y) - 5.0,
+                         hi = prepared.origin + glm::dvec2(b.z, b.w) + 5.0;
         for (double f = 0.0; f <= 1.0; f += 0.01) {
             ring.push_back({glm::mix(lo.x, hi.x, f), lo.y});
             ring.push_back({glm::mix(lo.x, hi.x, f), hi.y});
@@ -387,8 +396,8 @@ TEST(Wakes, OutsideTheirReachTheChainsCancel) {
     std::size_t worst = 0;
     for (std::size_t i = 0; i < outside.size(); ++i)
         if (std::abs(outside[i]) > std::abs(outside[worst])) worst = i;
-    std::printf("beyond the wakes' reach: %.6f m at most over %zu points (at %.0f, %.0f); in the wake %.3f m\n", largest(outside),
-                ring.size(), ring[worst].x, ring[worst].y, largest(inside));
+    std::printf("beyond the wakes' reach: %.6f m at most over %zu points (at %.0f, %.0f); in the wake %.3f m\n",
+                largest(outside), ring.size(), ring[worst].x, ring[worst].y, largest(inside));
     EXPECT_LT(largest(outside), 1e-3);
     EXPECT_GT(largest(inside), 0.03);
 }
@@ -429,8 +438,10 @@ TEST(Wakes, SegmentsAreSkippedOnlyWhereTheyCannotBeFelt) {
                 ++samples;
             }
     }
-    std::printf("skipping segments beyond their reach: %.6f m at most (wake up to %.3f m); %.0f%% of segments summed on average\n",
-                worst, largest_height, 100.0 * felt_share / samples);
+    std::printf(
+        "skipping segments beyond their reach: %.6f m at most (wake up to %.3f m); %.0f%% of segments summed on "
+        "average\n",
+        worst, largest_height, 100.0 * felt_share / samples);
     EXPECT_GT(largest_height, 0.1);
     EXPECT_LT(worst, 1e-3);
     EXPECT_LT(felt_share / samples, 0.75);
@@ -459,24 +470,27 @@ TEST(Wakes, AWakeJustLaidLeavesItsBatchNeighboursAlone) {
     boat.pose_at(time, bow, heading);
     const glm::dvec2 near = bow + glm::dvec2(-5.0, 4.0), far = bow + glm::dvec2(-400.0, 350.0);
     const std::vector<double> both = wake_heights(wakes, time, {far, near});
-    const std::vector<double> far_alone = wake_heights(wakes, time, {far}), near_alone = wake_heights(wakes, time, {near});
-    std::printf("a wake 33 ns after a mark: %.6f m far off (%.6f alone), %.6f m at the bow (%.6f alone)\n", both[0], far_alone[0], both[1],
-                near_alone[0]);
+    const std::vector<double> far_alone = wake_heights(wakes, time, {far}),
+                              near_alone = wake_heights(wakes, time, {near});
+    std::printf("a wake 33 ns after a mark: %.6f m far off (%.6f alone), %.6f m at the bow (%.6f alone)\n", both[0],
+                far_alone[0], both[1], near_alone[0]);
     EXPECT_TRUE(std::isfinite(both[0]) && std::isfinite(both[1]));
     EXPECT_EQ(both[0], far_alone[0]);
     EXPECT_EQ(both[1], near_alone[0]);
 }
 
 std::string scene_with_boats(const std::string& boats) {
-    return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm", "boats": )" + boats + "}";
+    return R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm", "boats": )" +
+           boats + "}";
 }
 
 // A scene's boats: query_world adds their wakes (the wake column is their share of the
 // height), and a boat can leave its own wake out (emitter = its index).
 TEST(Wakes, SceneBoatsJoinTheWorldQueries) {
-    auto scene = parse_scene(scene_with_boats(R"([{"name": "tug", "path": [[0, 0], [2000, 0]], "speed": 5.0, "length": 20.0,
+    auto scene =
+        parse_scene(scene_with_boats(R"([{"name": "tug", "path": [[0, 0], [2000, 0]], "speed": 5.0, "length": 20.0,
                                                     "beam": 6.0, "draft": 1.5, "start": 0.0}])"),
-                             "s.json");
+                    "s.json");
     ASSERT_TRUE(scene) << scene.error().message;
     ASSERT_EQ(scene->boats.size(), 1u);
     auto baked = bake_scene(*scene);
@@ -493,11 +507,13 @@ TEST(Wakes, SceneBoatsJoinTheWorldQueries) {
     double biggest = 0.0, mismatch = 0.0, rest = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         biggest = std::max(biggest, std::abs(with[i].surface.wake));
-        mismatch = std::max(mismatch, std::abs(with[i].surface.height - without[i].surface.height - with[i].surface.wake));
+        mismatch =
+            std::max(mismatch, std::abs(with[i].surface.height - without[i].surface.height - with[i].surface.wake));
         rest = std::max(rest, std::abs(without[i].surface.wake));
     }
-    std::printf("the tug's wake: up to %.3f m; the heights with and without it differ by the wake column within %.4f m\n", biggest,
-                mismatch);
+    std::printf(
+        "the tug's wake: up to %.3f m; the heights with and without it differ by the wake column within %.4f m\n",
+        biggest, mismatch);
     EXPECT_GT(biggest, 0.1);
     EXPECT_EQ(rest, 0.0);
     // The pool's ripples are small: the height with the wake is the height without it plus
@@ -510,8 +526,10 @@ TEST(Wakes, BadBoatsAndWakesAreRefusedByName) {
     const std::string good = R"("name": "tug", "path": [[0, 0], [500, 0]], "length": 20, "beam": 6, "draft": 1.5)";
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"[{" + good + R"(, "speed": -5}])", "s.json: /boats/0/speed"},
-        {R"([{"name": "tug", "path": [[0, 0], [500, 0]], "speed": 5, "length": -20, "beam": 6, "draft": 1.5}])", "s.json: /boats/0/length"},
-        {R"([{"name": "tug", "path": [[0, 0]], "speed": 5, "length": 20, "beam": 6, "draft": 1.5}])", "s.json: /boats/0/path"},
+        {R"([{"name": "tug", "path": [[0, 0], [500, 0]], "speed": 5, "length": -20, "beam": 6, "draft": 1.5}])",
+         "s.json: /boats/0/length"},
+        {R"([{"name": "tug", "path": [[0, 0]], "speed": 5, "length": 20, "beam": 6, "draft": 1.5}])",
+         "s.json: /boats/0/path"},
         {"[{" + good + R"(, "speed": "nan"}])", "s.json: /boats/0/speed"},
         {"[{" + good + R"(, "speed": 5, "hull": 3}])", "hull"},
         {R"([{"name": "skiff", "path": [[0, 0], [500, 0]], "speed": 20, "length": 3, "beam": 1.5, "draft": 0.3}])",
@@ -529,7 +547,8 @@ TEST(Wakes, BadBoatsAndWakesAreRefusedByName) {
     wakes.chains[0].points[1].source_size = std::nan("");
     const Status nan_size = wakes.validate("w");
     ASSERT_FALSE(nan_size.ok());
-    EXPECT_NE(nan_size.error().message.find("w: chains[0].points[1]: source_size"), std::string::npos) << nan_size.error().message;
+    EXPECT_NE(nan_size.error().message.find("w: chains[0].points[1]: source_size"), std::string::npos)
+        << nan_size.error().message;
     wakes.chains[0].points[1].source_size = 1.0;
     wakes.chains[0].points[1].emitted = 0.0;
     const Status order = wakes.validate("w");

@@ -34,10 +34,10 @@ TEST(WaveSet, RejectsOutOfRangeValuesNamingTheField) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const BadWave cases[] = {
-        {{0, 0.0, 0.1, 0.5, 0}, "wavelength"},  {{0, -3.0, 0.1, 0.5, 0}, "wavelength"},
-        {{0, nan, 0.1, 0.5, 0}, "wavelength"},  {{0, 10, -0.1, 0.5, 0}, "amplitude"},
-        {{0, 10, inf, 0.5, 0}, "amplitude"},    {{0, 10, 0.1, 1.01, 0}, "steepness"},
-        {{0, 10, 0.1, -0.1, 0}, "steepness"},   {{nan, 10, 0.1, 0.5, 0}, "direction"},
+        {{0, 0.0, 0.1, 0.5, 0}, "wavelength"}, {{0, -3.0, 0.1, 0.5, 0}, "wavelength"},
+        {{0, nan, 0.1, 0.5, 0}, "wavelength"}, {{0, 10, -0.1, 0.5, 0}, "amplitude"},
+        {{0, 10, inf, 0.5, 0}, "amplitude"},   {{0, 10, 0.1, 1.01, 0}, "steepness"},
+        {{0, 10, 0.1, -0.1, 0}, "steepness"},  {{nan, 10, 0.1, 0.5, 0}, "direction"},
         {{0, 10, 0.1, 0.5, inf}, "phase"},
     };
     for (const BadWave& c : cases) {

@@ -56,7 +56,8 @@ TEST(Whitecaps, OpenSeaFoamCoversMonahansShare) {
         const int n = 256;
         std::vector<glm::dvec2> points;
         for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) points.emplace_back((i + 0.5) * 4.0 * longest / n, (j + 0.5) * 4.0 * longest / n);
+            for (int j = 0; j < n; ++j)
+                points.emplace_back((i + 0.5) * 4.0 * longest / n, (j + 0.5) * 4.0 * longest / n);
         std::vector<SurfacePoint> out(points.size());
         std::size_t foamy = 0, total = 0;
         for (int t = 0; t < 6; ++t) {
@@ -70,7 +71,8 @@ TEST(Whitecaps, OpenSeaFoamCoversMonahansShare) {
         EXPECT_LT(body.whitecap_jacobian(), 1.0);
         EXPECT_GT(body.whitecap_jacobian(), 0.0);
     }
-    EXPECT_LT(body_from_preset("ocean_rolling", 8.0).whitecap_jacobian(), body_from_preset("ocean_rolling", 16.0).whitecap_jacobian());
+    EXPECT_LT(body_from_preset("ocean_rolling", 8.0).whitecap_jacobian(),
+              body_from_preset("ocean_rolling", 16.0).whitecap_jacobian());
 }
 
 // The foam a particle reports is its crest foam now plus what its compression 0.5, 1, 1.5
@@ -85,7 +87,8 @@ TEST(Whitecaps, AParticleKeepsTheFoamItsCrestMadeFadingOverTime) {
     for (const Wave& w : body.waves().waves()) longest = std::max(longest, 2.0 * kPi / w.k);
     std::vector<glm::dvec2> points;
     for (int i = 0; i < 160; ++i)
-        for (int j = 0; j < 160; ++j) points.emplace_back((i + 0.5) * 2.0 * longest / 160, (j + 0.5) * 2.0 * longest / 160);
+        for (int j = 0; j < 160; ++j)
+            points.emplace_back((i + 0.5) * 2.0 * longest / 160, (j + 0.5) * 2.0 * longest / 160);
     const double time = 21.3;
     std::vector<SurfacePoint> out(points.size());
     ASSERT_TRUE(query_surface(body, time, points, out).ok());
@@ -103,8 +106,8 @@ TEST(Whitecaps, AParticleKeepsTheFoamItsCrestMadeFadingOverTime) {
         worst = std::max(worst, std::abs(out[i].foam - expected));
         trailing += out[i].foam > crest_foam(out[i].jacobian, star) + 0.1 ? 1 : 0;
     }
-    std::printf("foam against the particle's own history: worst %.2e; %zu of %zu points carry a trail\n", worst, trailing,
-                points.size());
+    std::printf("foam against the particle's own history: worst %.2e; %zu of %zu points carry a trail\n", worst,
+                trailing, points.size());
     EXPECT_LT(worst, 2e-3);
     EXPECT_GT(trailing, points.size() / 200);  // the trails are there to compare (0.5% of the sea at least)
 }

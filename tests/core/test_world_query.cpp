@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <memory>
 
-#include <glm/geometric.hpp>
-
+#include "../bowl_terrain.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/water_bodies.hpp"
@@ -16,7 +16,6 @@
 #include "tidewater/floating_body.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/world_query.hpp"
-#include "../bowl_terrain.hpp"
 
 namespace tidewater {
 namespace {
@@ -48,7 +47,9 @@ const char* kReach = R"({
                             "waves": [ { "direction": 0.0, "wavelength": 3.6, "amplitude": 0.03, "steepness": 0.5 } ] } } ]
 })";
 
-const detail::RiverBake& river_of(const Scene& scene, std::size_t r) { return scene.bake->bodies->rivers[r]; }
+const detail::RiverBake& river_of(const Scene& scene, std::size_t r) {
+    return scene.bake->bodies->rivers[r];
+}
 
 TEST(WorldQuery, FindsTheBodyOfEveryPoint) {
     const auto scene = bake_json(kReach);
@@ -110,7 +111,9 @@ TEST(WorldQuery, RiverWavesRideTheCurrent) {
     const double dt = 0.2;
     // The wave pattern moves downstream at c0 + U: the surface at p a moment later is the
     // surface upstream by (c0 + U) dt now. Heights are relative to the still surface.
-    auto eta = [&](glm::dvec2 p, double t) { return query_world_point(*scene, t, p).surface.height - r.grid.sample(r.surface_height, p); };
+    auto eta = [&](glm::dvec2 p, double t) {
+        return query_world_point(*scene, t, p).surface.height - r.grid.sample(r.surface_height, p);
+    };
     double worst = 0.0, worst_without_current = 0.0;
     for (int m = 0; m < 24; ++m) {
         const glm::dvec2 p{-600.0 + 0.31 * m, 30.0};
@@ -128,7 +131,8 @@ TEST(WorldQuery, NoStepWhereTheRiverMeetsTheSea) {
     const detail::RiverBake& r = river_of(*scene, 0);
     // Walk down the centreline to where the river's water turns into the sea's.
     for (const double across : {0.0, -5.0, 6.0}) {
-        glm::dvec2 a = r.centreline.back() + glm::dvec2(-40.0, across), b = r.centreline.back() + glm::dvec2(60.0, across);
+        glm::dvec2 a = r.centreline.back() + glm::dvec2(-40.0, across),
+                   b = r.centreline.back() + glm::dvec2(60.0, across);
         ASSERT_EQ(query_world_point(*scene, 0.0, a).body.kind, BodyKind::river);
         ASSERT_EQ(query_world_point(*scene, 0.0, b).body.kind, BodyKind::ocean);
         for (int it = 0; it < 40; ++it) {
@@ -175,7 +179,8 @@ TEST(WorldQuery, KernelMatchesTheDoubleReference) {
 
 TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
     auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
-      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })", "lake.json");
+      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
+                              "lake.json");
     ASSERT_TRUE(parsed) << parsed.error().message;
     parsed->terrain = test::bowl_terrain();
     const auto scene = bake_or_die(*parsed);
@@ -198,7 +203,8 @@ TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
     EXPECT_LT(beach, 0.35 * centre);
     const WorldPoint land = query_world_point(*scene, 0.0, {260.0, 0.0});
     EXPECT_EQ(land.body.kind, BodyKind::none);
-    EXPECT_NEAR(land.surface.height, scene->terrain.height_at({260.0, 0.0}), 1e-9) << "an inland scene's land is its terrain";
+    EXPECT_NEAR(land.surface.height, scene->terrain.height_at({260.0, 0.0}), 1e-9)
+        << "an inland scene's land is its terrain";
     EXPECT_FALSE(land.surface.wet);
 }
 
@@ -234,7 +240,8 @@ TEST(WorldQuery, RefusesAnUnbakedSceneWithBodies) {
 double crossing_time(const std::vector<DriftSample>& track, double gate) {
     for (std::size_t k = 1; k < track.size(); ++k) {
         const double x0 = track[k - 1].position.x, x1 = track[k].position.x;
-        if (x0 < gate && x1 >= gate) return track[k - 1].time + (gate - x0) / (x1 - x0) * (track[k].time - track[k - 1].time);
+        if (x0 < gate && x1 >= gate)
+            return track[k - 1].time + (gate - x0) / (x1 - x0) * (track[k].time - track[k - 1].time);
     }
     return std::nan("");
 }
@@ -245,7 +252,8 @@ TEST(WorldQuery, DriftTakesTheStreamlinesTravelTime) {
       "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } },
       "ocean": "ocean_rolling", "shore": { "enabled": false },
       "rivers": [ { "name": "bends", "path": [[-1500, 0], [-900, 120], [-300, -60], [400, 0], [2300, 0]],
-                    "width": [20, 30, 16, 24, 24], "discharge": 30.0 } ] })", "bends.json");
+                    "width": [20, 30, 16, 24, 24], "discharge": 30.0 } ] })",
+                              "bends.json");
     ASSERT_TRUE(parsed);
     const auto scene = bake_or_die(*parsed);
     const glm::dvec2 start{-1400.0, 0.0 + 120.0 * (100.0 / 600.0)};

@@ -2,6 +2,7 @@
 // on: it starts, draws frames whose screenshot shows water, terrain and its panels, its
 // probe lands on the CPU query surface, and a bad scene is reported.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -9,7 +10,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "tidewater/detail/image_io.hpp"
 
@@ -26,8 +26,8 @@ struct EditorRun {
 /// Runs the editor under xvfb-run with `args`.
 EditorRun run_editor(const std::string& args) {
     const fs::path log = fs::temp_directory_path() / ("tidewater_editor_" + std::to_string(::getpid()) + ".log");
-    const std::string command = std::string("xvfb-run -a -s '-screen 0 1400x900x24' ") + TIDEWATER_EDITOR_PATH + " " + args + " > " +
-                                log.string() + " 2>&1";
+    const std::string command = std::string("xvfb-run -a -s '-screen 0 1400x900x24' ") + TIDEWATER_EDITOR_PATH + " " +
+                                args + " > " + log.string() + " 2>&1";
     EditorRun r;
     const int raw = std::system(command.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -69,7 +69,9 @@ TEST(Editor, TheProbeLandsOnTheQuerySurface) {
     double x = 0, z = 0, height = 0, query = 0;
     const auto at = r.output.find("probe: (");
     ASSERT_NE(at, std::string::npos) << r.output;
-    ASSERT_EQ(std::sscanf(r.output.c_str() + at, "probe: (%lf, %lf) height %lf m, query_surface %lf m", &x, &z, &height, &query), 4)
+    ASSERT_EQ(std::sscanf(r.output.c_str() + at, "probe: (%lf, %lf) height %lf m, query_surface %lf m", &x, &z, &height,
+                          &query),
+              4)
         << r.output;
     EXPECT_NEAR(height, query, 1e-3) << "the ray meets the drawn surface where query_surface puts it";
     EXPECT_NE(r.output.find("body \"ocean\""), std::string::npos) << r.output;
@@ -89,7 +91,8 @@ TEST(Editor, APresetChangeKeepsTheSurfAndResizingWorks) {
 }
 
 TEST(Editor, ABadScriptLineIsReportedWithItsLine) {
-    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_bad_" + std::to_string(::getpid()) + ".script");
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_bad_" + std::to_string(::getpid()) + ".script");
     std::ofstream(script) << "view shaded\nfly to the moon\n";
     const EditorRun r = run_editor("--frames 2 --script " + script.string());
     EXPECT_NE(r.status, 0);
@@ -116,17 +119,21 @@ TEST(Editor, HotReloadReportsABrokenShaderAndSwapsInAMendedOne) {
                                fs::temp_directory_path() / ("tidewater_hr1_" + tag + ".png"),
                                fs::temp_directory_path() / ("tidewater_hr2_" + tag + ".png")};
     const fs::path script = fs::temp_directory_path() / ("tidewater_hr_" + tag + ".script");
-    std::ofstream(script) << "camera 900 300 500 120 0 20\n"
-                          << "at 1 screenshot " << shots[0].string() << "\n"
-                          << "at 2 replace water.frag|out_color = target_color(color);|out_color = target_color(color)\n"
-                          << "at 3 screenshot " << shots[1].string() << "\n"
-                          << "at 4 replace water.frag|out_color = target_color(color)|out_color = vec4(1.0, 0.0, 0.0, 1.0);\n"
-                          << "at 6 screenshot " << shots[2].string() << "\n";
-    const EditorRun r = run_editor("--frames 8 --size 800x480 --shader-dir " + dir.string() + " --script " + script.string());
+    std::ofstream(script)
+        << "camera 900 300 500 120 0 20\n"
+        << "at 1 screenshot " << shots[0].string() << "\n"
+        << "at 2 replace water.frag|out_color = target_color(color);|out_color = target_color(color)\n"
+        << "at 3 screenshot " << shots[1].string() << "\n"
+        << "at 4 replace water.frag|out_color = target_color(color)|out_color = vec4(1.0, 0.0, 0.0, 1.0);\n"
+        << "at 6 screenshot " << shots[2].string() << "\n";
+    const EditorRun r =
+        run_editor("--frames 8 --size 800x480 --shader-dir " + dir.string() + " --script " + script.string());
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("shader reload: water.frag:"), std::string::npos) << "the broken file and line: " << r.output;
+    EXPECT_NE(r.output.find("shader reload: water.frag:"), std::string::npos)
+        << "the broken file and line: " << r.output;
     EXPECT_NE(r.output.find("shader reload: ok ("), std::string::npos) << r.output;
-    auto before = detail::read_png_rgba8(shots[0]), broken = detail::read_png_rgba8(shots[1]), mended = detail::read_png_rgba8(shots[2]);
+    auto before = detail::read_png_rgba8(shots[0]), broken = detail::read_png_rgba8(shots[1]),
+         mended = detail::read_png_rgba8(shots[2]);
     ASSERT_TRUE(before.ok() && broken.ok() && mended.ok()) << r.output;
     const double kept = mean_difference(*before, *broken), changed = mean_difference(*broken, *mended);
     std::printf("mean change: %.4f across the failed reload, %.4f across the mended one\n", kept, changed);
@@ -139,7 +146,8 @@ TEST(Editor, HotReloadReportsABrokenShaderAndSwapsInAMendedOne) {
 
 // A brush stroke raises the ground and is re-baked in the background.
 TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
-    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_brush_" + std::to_string(::getpid()) + ".script");
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_brush_" + std::to_string(::getpid()) + ".script");
     std::ofstream(script) << "brush 640 330 120 30\n";
     const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
     fs::remove(script);
@@ -147,14 +155,17 @@ TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
     double after = 0.0, before = 0.0;
     const auto at = r.output.find("terrain at the brush (640.0, 330.0): ");
     ASSERT_NE(at, std::string::npos) << r.output;
-    ASSERT_EQ(std::sscanf(r.output.c_str() + at, "terrain at the brush (640.0, 330.0): %lf m, was %lf m", &after, &before), 2) << r.output;
+    ASSERT_EQ(
+        std::sscanf(r.output.c_str() + at, "terrain at the brush (640.0, 330.0): %lf m, was %lf m", &after, &before), 2)
+        << r.output;
     EXPECT_NEAR(after - before, 30.0, 0.5) << "raised by the stroke's 30 m at its centre (16-bit heightmap)";
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
 }
 
 // A river's discharge from the Rivers panel (scripted) is re-baked in the background.
 TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
-    const fs::path script = fs::temp_directory_path() / ("tidewater_editor_river_" + std::to_string(::getpid()) + ".script");
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_river_" + std::to_string(::getpid()) + ".script");
     std::ofstream(script) << "river brook discharge 20\n";
     const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
     fs::remove(script);

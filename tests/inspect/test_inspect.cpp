@@ -2,7 +2,7 @@
 // arrays with values equal to the core queries; pictures have the asked size, are not
 // blank, carry a colour legend, and differ between fields. Runs under xvfb-run.
 #include <gtest/gtest.h>
-
+#include <unistd.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -14,12 +14,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "../baked_scene.hpp"
+#include "colour_maps.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/query.hpp"
-#include "colour_maps.hpp"
 #include "tidewater/world_query.hpp"
 #include "vtk_output.hpp"
 #include "vtk_viewer.hpp"
@@ -120,7 +119,8 @@ TEST(Inspect, ExportReadsBackWithTheQueriesValues) {
             const WorldPoint out = query_world_point(*scene, times[step], where);
             auto* height = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("height"));
             auto* velocity = vtkDoubleArray::SafeDownCast(sg->GetPointData()->GetArray("velocity"));
-            worst = std::max({worst, std::abs(height->GetValue(k) - out.surface.height), std::abs(p[1] - out.surface.height),
+            worst = std::max({worst, std::abs(height->GetValue(k) - out.surface.height),
+                              std::abs(p[1] - out.surface.height),
                               std::abs(velocity->GetComponent(k, 1) - out.surface.velocity.y)});
         }
         EXPECT_LT(worst, 1e-5) << "step " << step;
@@ -149,7 +149,8 @@ double coverage(const detail::Rgba8Image& img, int x0, int x1) {
     std::size_t differ = 0, total = 0;
     for (int y = 0; y < img.height; ++y)
         for (int x = x0; x < x1; ++x) {
-            const std::uint8_t* p = &img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x))];
+            const std::uint8_t* p = &img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) +
+                                                     static_cast<std::size_t>(x))];
             differ += std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 30;
             ++total;
         }
@@ -172,7 +173,8 @@ TEST(Inspect, ExportsTheBoatsWakes) {
     double worst = 0.0, biggest = 0.0;
     for (std::size_t k = 0; k < grid.points(); ++k) {
         const glm::dvec2 where{sample->surface[k].x, sample->surface[k].z};
-        worst = std::max(worst, std::abs(sample->value("wake", k) - query_world_point(*scene, 0.0, where).surface.wake));
+        worst =
+            std::max(worst, std::abs(sample->value("wake", k) - query_world_point(*scene, 0.0, where).surface.wake));
         biggest = std::max(biggest, std::abs(sample->wake[k]));
     }
     std::printf("sampled wake up to %.3f m; against the world query %.2g m\n", biggest, worst);
@@ -237,7 +239,8 @@ TEST(Inspect, ExportsTheCurrentAndTheBodyAndShowsFlowGlyphs) {
         fs::remove(png);
     }
     std::size_t differ = 0;
-    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k) differ += pictures[0].pixels[k] != pictures[1].pixels[k];
+    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k)
+        differ += pictures[0].pixels[k] != pictures[1].pixels[k];
     EXPECT_GT(differ, 500u) << "glyphs and the track are drawn";
 }
 
@@ -261,24 +264,28 @@ TEST(Inspect, ScreenshotsHaveSizeLegendAndDifferByField) {
         EXPECT_EQ(img->height, 360);
         EXPECT_GT(coverage(*img, 0, img->width), 0.2) << field << ": the picture is blank";
         // The legend sits in the right tenth of the picture.
-        EXPECT_GT(coverage(*img, static_cast<int>(0.89 * img->width), static_cast<int>(0.95 * img->width)), 0.3) << field << ": no legend";
+        EXPECT_GT(coverage(*img, static_cast<int>(0.89 * img->width), static_cast<int>(0.95 * img->width)), 0.3)
+            << field << ": no legend";
         pictures.push_back(std::move(img).value());
         fs::remove(png);
     }
     std::size_t differ = 0;
-    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k) differ += pictures[0].pixels[k] != pictures[1].pixels[k];
+    for (std::size_t k = 0; k < pictures[0].pixels.size(); ++k)
+        differ += pictures[0].pixels[k] != pictures[1].pixels[k];
     EXPECT_GT(static_cast<double>(differ) / static_cast<double>(pictures[0].pixels.size()), 0.05);
     ScreenshotOptions bad;
     bad.field = "vorticity";
-    EXPECT_NE(screenshot(*scene, grid, 3.0, bad, temp_dir("bad.png")).error().message.find("unknown field"), std::string::npos);
+    EXPECT_NE(screenshot(*scene, grid, 3.0, bad, temp_dir("bad.png")).error().message.find("unknown field"),
+              std::string::npos);
     EXPECT_FALSE(fs::exists(temp_dir("bad.png")));
 }
 
 // A single wave: the probe's dominant period is the wave's, sqrt(2 pi L / g), within 1%.
 TEST(Inspect, ProbeFindsTheWavePeriod) {
-    auto scene = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "shore": {"enabled": false},
+    auto scene = parse_scene(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "shore": {"enabled": false},
         "ocean": {"waves": [{"direction": 30, "wavelength": 48, "amplitude": 0.6, "steepness": 0.5, "phase": 0.3}]}})",
-                             "single wave");
+        "single wave");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     const double period = std::sqrt(2.0 * 3.14159265358979 * 48.0 / 9.81);
     std::vector<double> times;

@@ -19,7 +19,7 @@
 namespace tidewater::test {
 
 class RenderTest : public test::VulkanTest {
-protected:
+  protected:
     void SetUp() override {
         VulkanTest::SetUp();
         render::RendererInitInfo init;
@@ -35,7 +35,8 @@ protected:
         target_.reset();
         renderer_.reset();
     }
-    render::RgbaImage render(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w = 320, std::uint32_t h = 180) {
+    render::RgbaImage render(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w = 320,
+                             std::uint32_t h = 180) {
         EXPECT_TRUE(renderer_->set_scene(scene).ok());
         if (!target_ || width_ != w || height_ != h) {
             auto t = render::OffscreenTarget::create(context(), w, h);
@@ -49,7 +50,8 @@ protected:
         // TIDEWATER_TEST_IMAGE_DIR keeps every frame a test renders, for looking at failures.
         if (const char* dir = std::getenv("TIDEWATER_TEST_IMAGE_DIR"); dir && img.ok()) {
             const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-            const auto path = std::filesystem::path(dir) / (std::string(info->name()) + "_" + std::to_string(dumped_++) + ".png");
+            const auto path =
+                std::filesystem::path(dir) / (std::string(info->name()) + "_" + std::to_string(dumped_++) + ".png");
             EXPECT_TRUE(detail::write_png_rgba8(path, img->width, img->height, img->pixels).ok());
         }
         return img.ok() ? std::move(img).value() : render::RgbaImage{};
@@ -61,8 +63,9 @@ protected:
     }
     /// A frame through a renderer and target of their own at `samples` per pixel, the
     /// water shaded at every sample when `water_per_sample`.
-    render::RgbaImage render_multisampled(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w, std::uint32_t h,
-                                          VkSampleCountFlagBits samples, bool water_per_sample = false) {
+    render::RgbaImage render_multisampled(const Scene& scene, const render::FrameInfo& frame, std::uint32_t w,
+                                          std::uint32_t h, VkSampleCountFlagBits samples,
+                                          bool water_per_sample = false) {
         render::RendererInitInfo init;
         init.device = context();
         init.samples = samples;
@@ -79,7 +82,8 @@ protected:
         EXPECT_TRUE(img.ok()) << img.error().message;
         if (const char* dir = std::getenv("TIDEWATER_TEST_IMAGE_DIR"); dir && img.ok()) {
             const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-            const auto path = std::filesystem::path(dir) / (std::string(info->name()) + "_" + std::to_string(dumped_++) + "_msaa.png");
+            const auto path = std::filesystem::path(dir) /
+                              (std::string(info->name()) + "_" + std::to_string(dumped_++) + "_msaa.png");
             EXPECT_TRUE(detail::write_png_rgba8(path, img->width, img->height, img->pixels).ok());
         }
         return img.ok() ? std::move(img).value() : render::RgbaImage{};
@@ -90,9 +94,15 @@ protected:
     int dumped_ = 0;
 };
 
-inline bool is_sky(Rgb c) { return c.b > c.r + 0.1 && c.b > 0.45; }
-inline bool is_water(Rgb c) { return c.b > c.r && c.g > c.r; }
-inline bool is_land(Rgb c) { return c.g > c.b && c.r > 0.08; }  // grass, sand and rock have more green than blue
+inline bool is_sky(Rgb c) {
+    return c.b > c.r + 0.1 && c.b > 0.45;
+}
+inline bool is_water(Rgb c) {
+    return c.b > c.r && c.g > c.r;
+}
+inline bool is_land(Rgb c) {
+    return c.g > c.b && c.r > 0.08;
+}  // grass, sand and rock have more green than blue
 
 }  // namespace tidewater::test
 

@@ -1,11 +1,10 @@
 // Rendering helpers for tests: render a scene offscreen and look at pixels.
 #pragma once
 
-#include <cstdlib>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 #include <optional>
@@ -20,7 +19,8 @@ struct Rgb {
 };
 
 inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.pixels[i] / 255.0, img.pixels[i + 1] / 255.0, img.pixels[i + 2] / 255.0};
 }
 
@@ -39,7 +39,9 @@ inline Rgb block(const render::RgbaImage& img, int x, int y, int r = 3) {
     for (int j = std::max(0, y - r); j <= std::min(img.height - 1, y + r); ++j)
         for (int i = std::max(0, x - r); i <= std::min(img.width - 1, x + r); ++i) {
             const Rgb p = pixel(img, i, j);
-            sum.r += p.r; sum.g += p.g; sum.b += p.b;
+            sum.r += p.r;
+            sum.g += p.g;
+            sum.b += p.b;
             ++n;
         }
     return {sum.r / n, sum.g / n, sum.b / n};
@@ -48,7 +50,8 @@ inline Rgb block(const render::RgbaImage& img, int x, int y, int r = 3) {
 /// Where a world point lands in the image (same camera maths as the renderer), if in front.
 inline std::optional<glm::ivec2> project(const render::Camera& cam, int width, int height, glm::dvec3 world) {
     const glm::dmat4 view = glm::lookAt(cam.position, cam.target, glm::dvec3(0, 1, 0));
-    const glm::dmat4 proj = glm::dmat4(render::detail::reversed_z_projection(cam.fov_y_deg, double(width) / height, cam.near_plane));
+    const glm::dmat4 proj =
+        glm::dmat4(render::detail::reversed_z_projection(cam.fov_y_deg, double(width) / height, cam.near_plane));
     const glm::dvec4 clip = proj * view * glm::dvec4(world, 1.0);
     if (clip.w <= 0.0) return std::nullopt;
     const double x = (clip.x / clip.w * 0.5 + 0.5) * width, y = (clip.y / clip.w * 0.5 + 0.5) * height;

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "../../examples/common/example_device.hpp"
+#include "../baked_scene.hpp"
 #include "../core/test_helpers.hpp"
 #include "render_helpers.hpp"
-#include "../baked_scene.hpp"
 #include "tidewater/render/renderer.hpp"
 #include "vulkan_fixture.hpp"
-#include "../../examples/common/example_device.hpp"
 
 namespace tidewater {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 /// device as the examples make theirs (examples/common/example_device.hpp), under the
 /// validation layer, with its own targets and command pool.
 class TestHost : public examples::ExampleDevice {
-public:
+  public:
     std::vector<std::string> messages;
     VkCommandPool pool = VK_NULL_HANDLE;
     struct Image {
@@ -40,10 +40,12 @@ public:
         return has_stencil() ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
     }
     VkImageLayout depth_layout() const {
-        return has_stencil() ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        return has_stencil() ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+                             : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     }
 
-    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                     VkDebugUtilsMessageTypeFlagsEXT,
                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
         if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT)
             static_cast<TestHost*>(user)->messages.push_back(data->pMessage ? data->pMessage : "?");
@@ -95,8 +97,10 @@ public:
         VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pi.queueFamilyIndex = family;
         vkCreateCommandPool(device, &pi, nullptr, &pool);
-        color = make_image(color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-        depth = make_image(depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, depth_aspects());
+        color = make_image(color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                           VK_IMAGE_ASPECT_COLOR_BIT);
+        depth = make_image(depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                           depth_aspects());
         VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         bi.size = kWidth * kHeight * 8;  // up to 8-byte texels (R16G16B16A16_SFLOAT)
         bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -105,7 +109,8 @@ public:
         vkGetBufferMemoryRequirements(device, readback, &req);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
-        alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        alloc.memoryTypeIndex =
+            memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
         vkAllocateMemory(device, &alloc, nullptr, &readback_memory);
         vkBindBufferMemory(device, readback, readback_memory, 0);
     }
@@ -134,14 +139,16 @@ void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkIm
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = image;
     b.subresourceRange = {aspect, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1, &b);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &b);
 }
 
 /// Begins `cmd` and moves the host's images to attachment layouts.
 void begin_attachments(TestHost& host, VkCommandBuffer cmd) {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     vkBeginCommandBuffer(cmd, &bi);
-    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     barrier(cmd, host.depth.image, host.depth_aspects(), VK_IMAGE_LAYOUT_UNDEFINED, host.depth_layout());
 }
 
@@ -193,7 +200,8 @@ std::uint8_t srgb_code(float linear) {
 /// Ends `cmd` after copying the host's colour image out, submits, waits, frees it and
 /// returns the picture as display RGBA8, whatever the target's format.
 render::RgbaImage finish_and_read(TestHost& host, VkCommandBuffer cmd) {
-    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
@@ -201,7 +209,8 @@ render::RgbaImage finish_and_read(TestHost& host, VkCommandBuffer cmd) {
     VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0,
+                         nullptr);
     vkEndCommandBuffer(cmd);
     EXPECT_TRUE(submit_and_wait(host, cmd));
     vkFreeCommandBuffers(host.device, host.pool, 1, &cmd);
@@ -373,7 +382,6 @@ render::RgbaImage draw_and_read(TestHost& host, render::Renderer& renderer, cons
     return finish_and_read(host, cmd);
 }
 
-
 // Every format of the table draws the same picture under validation: UNORM targets
 // hold the display values, sRGB ones encode the linear values the shaders write for
 // them, the float target holds linear values; the depth formats' aspects and layouts
@@ -383,9 +391,9 @@ TEST(Embedding, EveryTargetFormatInTheTableDrawsTheSamePicture) {
     ASSERT_TRUE(scene.ok());
     render::RgbaImage reference;
     const std::pair<VkFormat, VkFormat> formats[] = {
-        {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT},      {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_D32_SFLOAT},
-        {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_D32_SFLOAT},       {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT},
-        {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT}, {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D16_UNORM},
+        {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT},        {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_D32_SFLOAT},
+        {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_D32_SFLOAT},         {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT},
+        {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT},   {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D16_UNORM},
         {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT_S8_UINT}};
     for (const auto& [color, depth] : formats) {
         TestHost host;
@@ -400,7 +408,8 @@ TEST(Embedding, EveryTargetFormatInTheTableDrawsTheSamePicture) {
                 reference = img;
             } else {
                 const double diff = test::mean_difference(img, reference);
-                std::printf("colour %d, depth %d: mean difference %.5f\n", static_cast<int>(color), static_cast<int>(depth), diff);
+                std::printf("colour %d, depth %d: mean difference %.5f\n", static_cast<int>(color),
+                            static_cast<int>(depth), diff);
                 EXPECT_LT(diff, 0.01) << "colour format " << color << ", depth format " << depth;
             }
         }
@@ -415,8 +424,10 @@ TEST(Embedding, MissingDeviceFeaturesAreNamed) {
     host.create();
     ASSERT_NE(host.device, VK_NULL_HANDLE);
     const std::pair<const char*, void (*)(render::RendererInitInfo&)> cases[] = {
-        {"tessellationShader", [](render::RendererInitInfo& i) { i.device.enabled_features.tessellationShader = VK_FALSE; }},
-        {"fillModeNonSolid", [](render::RendererInitInfo& i) { i.device.enabled_features.fillModeNonSolid = VK_FALSE; }},
+        {"tessellationShader",
+         [](render::RendererInitInfo& i) { i.device.enabled_features.tessellationShader = VK_FALSE; }},
+        {"fillModeNonSolid",
+         [](render::RendererInitInfo& i) { i.device.enabled_features.fillModeNonSolid = VK_FALSE; }},
         {"dynamicRendering", [](render::RendererInitInfo& i) { i.device.dynamic_rendering = false; }},
     };
     for (const auto& [feature, drop] : cases) {
@@ -445,8 +456,9 @@ PFN_vkCmdDrawIndexed g_real_draw_indexed = nullptr;
 int g_hooked_draws = 0, g_device_lookups = 0, g_instance_lookups = 0;
 bool g_hide_queue_submit = false;
 
-VKAPI_ATTR void VKAPI_CALL counting_draw_indexed(VkCommandBuffer cmd, std::uint32_t indices, std::uint32_t instances, std::uint32_t first,
-                                                 std::int32_t offset, std::uint32_t first_instance) {
+VKAPI_ATTR void VKAPI_CALL counting_draw_indexed(VkCommandBuffer cmd, std::uint32_t indices, std::uint32_t instances,
+                                                 std::uint32_t first, std::int32_t offset,
+                                                 std::uint32_t first_instance) {
     ++g_hooked_draws;
     g_real_draw_indexed(cmd, indices, instances, first, offset, first_instance);
 }
@@ -513,12 +525,14 @@ TEST(Embedding, FormatsOutsideTheTableAreRefusedByName) {
     EXPECT_EQ(colour.error().code, ErrorCode::unsupported);
     EXPECT_NE(colour.error().message.find("colour format VK_FORMAT_R8G8B8A8_SNORM is not supported"), std::string::npos)
         << colour.error().message;
-    EXPECT_NE(colour.error().message.find("VK_FORMAT_R16G16B16A16_SFLOAT"), std::string::npos) << "lists the accepted formats";
+    EXPECT_NE(colour.error().message.find("VK_FORMAT_R16G16B16A16_SFLOAT"), std::string::npos)
+        << "lists the accepted formats";
     init = renderer_info(host);
     init.depth_format = VK_FORMAT_D24_UNORM_S8_UINT;
     auto depth = render::Renderer::create(init);
     ASSERT_FALSE(depth.ok());
-    EXPECT_NE(depth.error().message.find("depth format VK_FORMAT_D24_UNORM_S8_UINT is not supported"), std::string::npos)
+    EXPECT_NE(depth.error().message.find("depth format VK_FORMAT_D24_UNORM_S8_UINT is not supported"),
+              std::string::npos)
         << depth.error().message;
     host.destroy();
     for (const auto& m : host.messages) ADD_FAILURE() << m;

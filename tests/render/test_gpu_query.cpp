@@ -4,12 +4,11 @@
 // lagged sums) within 0.01; the figures reached are printed.
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <random>
 
-#include <glm/geometric.hpp>
-
-#include "../core/test_helpers.hpp"
 #include "../baked_scene.hpp"
+#include "../core/test_helpers.hpp"
 #include "host_device.h"
 #include "tidewater/render/gpu_query.hpp"
 #include "tidewater/wakes.hpp"
@@ -19,21 +18,21 @@ namespace tidewater {
 namespace {
 
 class GpuQueryTest : public test::VulkanTest {
-protected:
+  protected:
     void release() override { query_.reset(); }
     std::unique_ptr<render::GpuQuery> query_;
 };
 
 struct Parity {
-    std::size_t unconverged = 0;       // points either side did not converge (compared separately)
-    double unconverged_height = 0.0;   // m, largest difference among those
-    double height = 0.0;     // m
+    std::size_t unconverged = 0;      // points either side did not converge (compared separately)
+    double unconverged_height = 0.0;  // m, largest difference among those
+    double height = 0.0;              // m
     double normal_deg = 0.0;
-    double velocity = 0.0;   // m/s
+    double velocity = 0.0;  // m/s
     double jacobian = 0.0;
-    double foam = 0.0;       // its lingering part from the GPU's own lagged sums
+    double foam = 0.0;         // its lingering part from the GPU's own lagged sums
     std::size_t trailing = 0;  // points whose CPU foam is mostly remembered (the lags are exercised)
-    double depth = 0.0;      // m, at the query point (either way deep-water infinities must agree)
+    double depth = 0.0;        // m, at the query point (either way deep-water infinities must agree)
     std::size_t wet_mismatch = 0;
 };
 
@@ -50,7 +49,8 @@ Parity compare(render::GpuQuery& gpu, const WaterBody& body, double t, const std
             EXPECT_EQ(cpu[i].depth, dev[i].depth) << i;
             EXPECT_EQ(cpu[i].shore_distance, dev[i].shore_distance) << i;
         } else {
-            p.depth = std::max({p.depth, std::abs(cpu[i].depth - dev[i].depth), std::abs(cpu[i].shore_distance - dev[i].shore_distance)});
+            p.depth = std::max({p.depth, std::abs(cpu[i].depth - dev[i].depth),
+                                std::abs(cpu[i].shore_distance - dev[i].shore_distance)});
         }
         if (require_converged) {
             EXPECT_TRUE(dev[i].converged) << i;
@@ -68,7 +68,8 @@ Parity compare(render::GpuQuery& gpu, const WaterBody& body, double t, const std
         p.foam = std::max(p.foam, std::abs(cpu[i].foam - dev[i].foam));
         p.trailing += cpu[i].foam > crest_foam(cpu[i].jacobian, body.whitecap_jacobian()) + 0.1 ? 1 : 0;
         // Within a millimetre of the terrain the two may fairly disagree.
-        if (cpu[i].wet != dev[i].wet && std::abs(cpu[i].height - (body.level() - cpu[i].depth)) > 1e-3) ++p.wet_mismatch;
+        if (cpu[i].wet != dev[i].wet && std::abs(cpu[i].height - (body.level() - cpu[i].depth)) > 1e-3)
+            ++p.wet_mismatch;
     }
     return p;
 }
@@ -88,7 +89,9 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOnPresetsAndSteepSeas) {
 
     std::mt19937_64 rng(11);
     std::vector<glm::dvec2> pts(10000);
-    for (auto& p : pts) p = {static_cast<double>(rng() % 4000000) * 1e-3 - 2000.0, static_cast<double>(rng() % 4000000) * 1e-3 - 2000.0};
+    for (auto& p : pts)
+        p = {static_cast<double>(rng() % 4000000) * 1e-3 - 2000.0,
+             static_cast<double>(rng() % 4000000) * 1e-3 - 2000.0};
     // Far from the origin too: phase cells keep float accurate there.
     for (std::size_t i = 0; i < 500; ++i) pts[i] += glm::dvec2(25000.0, -18000.0);
 
@@ -107,10 +110,11 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOnPresetsAndSteepSeas) {
             worst.jacobian = std::max(worst.jacobian, p.jacobian);
         }
     }
-    std::printf("CPU/GPU parity over %zu points x %zu sets x 3 times on %s: max |dh| = %.3g m, max normal angle = %.3g deg, "
-                "max |dv| = %.3g m/s, max |dJ| = %.3g, max |dfoam| = %.3g (%zu points with a foam trail)\n",
-                pts.size(), bodies.size(), device_->device_name().c_str(), worst.height, worst.normal_deg, worst.velocity,
-                worst.jacobian, worst.foam, worst.trailing);
+    std::printf(
+        "CPU/GPU parity over %zu points x %zu sets x 3 times on %s: max |dh| = %.3g m, max normal angle = %.3g deg, "
+        "max |dv| = %.3g m/s, max |dJ| = %.3g, max |dfoam| = %.3g (%zu points with a foam trail)\n",
+        pts.size(), bodies.size(), device_->device_name().c_str(), worst.height, worst.normal_deg, worst.velocity,
+        worst.jacobian, worst.foam, worst.trailing);
     EXPECT_GT(worst.trailing, 0u) << "the lingering foam is compared somewhere";
     RecordProperty("max_height_difference_m", std::to_string(worst.height));
     RecordProperty("max_normal_angle_deg", std::to_string(worst.normal_deg));
@@ -129,7 +133,9 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
     ASSERT_NE(scene->ocean.shore(), nullptr);
     std::mt19937_64 rng(5);
     std::vector<glm::dvec2> pts(10000);
-    for (auto& p : pts) p = {static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0, static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0};
+    for (auto& p : pts)
+        p = {static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0,
+             static_cast<double>(rng() % 2400000) * 1e-3 - 1200.0};
     Parity worst;
     for (double t : {0.0, 7.5, 4321.0}) {
         const Parity p = compare(*query_, scene->ocean, t, pts, /*require_converged=*/false);
@@ -142,9 +148,11 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
         worst.foam = std::max(worst.foam, p.foam);
         worst.trailing += p.trailing;
     }
-    std::printf("shore parity over %zu points x 3 times: max |dh| = %.3g m, max normal angle = %.3g deg, max |dfoam| = %.3g "
-                "(%zu with a foam trail); %zu waterline points unconverged (best estimates differ by up to %.3g m)\n",
-                pts.size(), worst.height, worst.normal_deg, worst.foam, worst.trailing, worst.unconverged, worst.unconverged_height);
+    std::printf(
+        "shore parity over %zu points x 3 times: max |dh| = %.3g m, max normal angle = %.3g deg, max |dfoam| = %.3g "
+        "(%zu with a foam trail); %zu waterline points unconverged (best estimates differ by up to %.3g m)\n",
+        pts.size(), worst.height, worst.normal_deg, worst.foam, worst.trailing, worst.unconverged,
+        worst.unconverged_height);
     EXPECT_LE(worst.foam, 0.01) << "foam, breaking and lingering crest foam";
     EXPECT_GT(worst.trailing, 0u);
     EXPECT_LT(worst.unconverged, pts.size() * 3 / 100) << "under 1% of the points";
@@ -183,7 +191,8 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesWithWakes) {
     const WaterBody sea = WaterBody::create(load_preset("ocean_rolling").value(), 0.0, "ocean_rolling").value();
     std::mt19937_64 rng(9);
     std::vector<glm::dvec2> pts(4096);
-    for (auto& p : pts) p = {static_cast<double>(rng() % 1000000) * 1.5e-3, static_cast<double>(rng() % 1000000) * 4e-4 - 150.0};
+    for (auto& p : pts)
+        p = {static_cast<double>(rng() % 1000000) * 1.5e-3, static_cast<double>(rng() % 1000000) * 4e-4 - 150.0};
     std::vector<SurfacePoint> cpu(pts.size()), dev(pts.size());
     QueryOptions options;
     options.wakes = &wakes;
@@ -193,14 +202,15 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesWithWakes) {
     ASSERT_TRUE(st.ok()) << st.error().message;
     double height = 0.0, wake = 0.0, foam = 0.0, biggest = 0.0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        ASSERT_TRUE(cpu[i].converged && dev[i].converged) << i << ": cpu " << cpu[i].converged << ", gpu " << dev[i].converged;
+        ASSERT_TRUE(cpu[i].converged && dev[i].converged)
+            << i << ": cpu " << cpu[i].converged << ", gpu " << dev[i].converged;
         height = std::max(height, std::abs(cpu[i].height - dev[i].height));
         wake = std::max(wake, std::abs(cpu[i].wake - dev[i].wake));
         foam = std::max(foam, std::abs(cpu[i].foam - dev[i].foam));
         biggest = std::max(biggest, std::abs(cpu[i].wake));
     }
-    std::printf("wakes of %u points, largest %.3f m: GPU against CPU height %.5f m, wake %.5f m, foam %.4f\n", gpu::kMaxWakePoints, biggest,
-                height, wake, foam);
+    std::printf("wakes of %u points, largest %.3f m: GPU against CPU height %.5f m, wake %.5f m, foam %.4f\n",
+                gpu::kMaxWakePoints, biggest, height, wake, foam);
     EXPECT_GT(biggest, 0.1);
     EXPECT_LT(height, 1e-3);
     EXPECT_LT(wake, 1e-3);

@@ -5,9 +5,8 @@
 // and the shader's flow-mapped detail against its CPU twin (tidewater::flow_detail).
 #include <cmath>
 #include <cstdio>
-#include <random>
-
 #include <glm/geometric.hpp>
+#include <random>
 
 #include "../baked_scene.hpp"
 #include "tidewater/constants.hpp"
@@ -19,7 +18,7 @@ namespace tidewater {
 namespace {
 
 class GpuRiverQueryTest : public test::VulkanTest {
-protected:
+  protected:
     void release() override { query_.reset(); }
     std::unique_ptr<render::GpuQuery> query_;
 };
@@ -72,7 +71,8 @@ TEST_F(GpuRiverQueryTest, MatchesCpuWorldQueriesInARiverAndAtItsMouth) {
             flow = std::max(flow, glm::length(cpu[i].flow - dev[i].flow));
             if (cpu[i].body.kind == BodyKind::river) {
                 ++bodies_in_river;
-                const FlowDetailSample twin = flow_detail(spec, pts[i], cpu[i].flow, scene->rivers[0].body.local_time(time));
+                const FlowDetailSample twin =
+                    flow_detail(spec, pts[i], cpu[i].flow, scene->rivers[0].body.local_time(time));
                 detail = std::max(detail, glm::length(twin.slope - dev_detail[i]));
             }
             const SurfacePoint &c = cpu[i].surface, &d = dev[i].surface;
@@ -83,16 +83,19 @@ TEST_F(GpuRiverQueryTest, MatchesCpuWorldQueriesInARiverAndAtItsMouth) {
             }
             ++compared;
             height = std::max(height, std::abs(c.height - d.height));
-            normal_deg = std::max(normal_deg, std::acos(std::clamp(glm::dot(c.normal, d.normal), -1.0, 1.0)) * 180.0 / kPi);
+            normal_deg =
+                std::max(normal_deg, std::acos(std::clamp(glm::dot(c.normal, d.normal), -1.0, 1.0)) * 180.0 / kPi);
             velocity = std::max(velocity, glm::length(c.velocity - d.velocity));
-            foam = std::max(foam, std::abs(c.foam - d.foam));  // the plume's lingering foam fades in with its still water
+            foam =
+                std::max(foam, std::abs(c.foam - d.foam));  // the plume's lingering foam fades in with its still water
         }
     }
-    std::printf("river CPU/GPU parity on %s: %zu points compared (%zu unconverged, %zu in the river): max |dh| = %.3g m, "
-                "max normal angle = %.3g deg, max |dv| = %.3g m/s, max |d flow| = %.3g m/s, max |d detail slope| = %.3g, "
-                "max |d depth| = %.3g m, max |d foam| = %.3g\n",
-                device_->device_name().c_str(), compared, unconverged, bodies_in_river, height, normal_deg, velocity, flow, detail,
-                depth, foam);
+    std::printf(
+        "river CPU/GPU parity on %s: %zu points compared (%zu unconverged, %zu in the river): max |dh| = %.3g m, "
+        "max normal angle = %.3g deg, max |dv| = %.3g m/s, max |d flow| = %.3g m/s, max |d detail slope| = %.3g, "
+        "max |d depth| = %.3g m, max |d foam| = %.3g\n",
+        device_->device_name().c_str(), compared, unconverged, bodies_in_river, height, normal_deg, velocity, flow,
+        detail, depth, foam);
     EXPECT_LE(foam, 0.01);
     EXPECT_GT(bodies_in_river, 4000u);
     EXPECT_LE(unconverged, pts.size() / 200);

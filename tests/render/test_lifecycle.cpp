@@ -17,8 +17,8 @@
 #include <new>
 #include <unordered_map>
 
-#include "../core/test_helpers.hpp"
 #include "../baked_scene.hpp"
+#include "../core/test_helpers.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "vulkan_fixture.hpp"
@@ -49,29 +49,43 @@ void counted_free(void* p) noexcept {
 }
 }  // namespace
 
-void* operator new(std::size_t size) { return counted_alloc(size); }
-void* operator new[](std::size_t size) { return counted_alloc(size); }
-void operator delete(void* p) noexcept { counted_free(p); }
-void operator delete[](void* p) noexcept { counted_free(p); }
-void operator delete(void* p, std::size_t) noexcept { counted_free(p); }
-void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
+void* operator new(std::size_t size) {
+    return counted_alloc(size);
+}
+void* operator new[](std::size_t size) {
+    return counted_alloc(size);
+}
+void operator delete(void* p) noexcept {
+    counted_free(p);
+}
+void operator delete[](void* p) noexcept {
+    counted_free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    counted_free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    counted_free(p);
+}
 
 namespace tidewater {
 namespace {
 
 /// VkAllocationCallbacks that count live host allocations.
 class CountingVkAllocator {
-public:
+  public:
     CountingVkAllocator() {
         callbacks_.pUserData = this;
-        callbacks_.pfnAllocation = [](void* user, std::size_t size, std::size_t align, VkSystemAllocationScope) -> void* {
+        callbacks_.pfnAllocation = [](void* user, std::size_t size, std::size_t align,
+                                      VkSystemAllocationScope) -> void* {
             auto* self = static_cast<CountingVkAllocator*>(user);
             void* p = std::aligned_alloc(align, (size + align - 1) / align * align);
             std::lock_guard lock(self->mutex_);
             self->sizes_[p] = size;
             return p;
         };
-        callbacks_.pfnReallocation = [](void* user, void* old, std::size_t size, std::size_t align, VkSystemAllocationScope scope) -> void* {
+        callbacks_.pfnReallocation = [](void* user, void* old, std::size_t size, std::size_t align,
+                                        VkSystemAllocationScope scope) -> void* {
             auto* self = static_cast<CountingVkAllocator*>(user);
             void* p = self->callbacks_.pfnAllocation(user, size, align, scope);
             if (old) {
@@ -101,7 +115,7 @@ public:
         return sizes_.size();
     }
 
-private:
+  private:
     VkAllocationCallbacks callbacks_{};
     std::mutex mutex_;
     std::unordered_map<void*, std::size_t> sizes_;
@@ -120,11 +134,23 @@ struct Cycler {
     std::vector<WaterBody> presets;
     Cycler() {
         island = test::baked(default_scene()).value();
-        flat = test::baked(parse_scene(R"({"version": 1, "water_level": 2, "terrain": {"plane": {"height": -10, "slope": [0.01, 0]}}, "ocean": "lake_rippled"})", "flat")).value();
-        deep = test::baked(parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -50}}, "ocean": "pool_calm"})", "deep")).value();
-        for (const auto& name : bundled_preset_names()) presets.push_back(WaterBody::create(*load_preset(name), 0.0, name).value());
+        flat =
+            test::baked(
+                parse_scene(
+                    R"({"version": 1, "water_level": 2, "terrain": {"plane": {"height": -10, "slope": [0.01, 0]}}, "ocean": "lake_rippled"})",
+                    "flat"))
+                .value();
+        deep =
+            test::baked(
+                parse_scene(
+                    R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -50}}, "ocean": "pool_calm"})",
+                    "deep"))
+                .value();
+        for (const auto& name : bundled_preset_names())
+            presets.push_back(WaterBody::create(*load_preset(name), 0.0, name).value());
     }
-    void run(int i, const render::DeviceContext& ctx, render::Renderer& renderer, std::unique_ptr<render::OffscreenTarget>& target) {
+    void run(int i, const render::DeviceContext& ctx, render::Renderer& renderer,
+             std::unique_ptr<render::OffscreenTarget>& target) {
         const Scene& scene = i % 8 == 0 ? island : (i % 2 ? flat : deep);
         ASSERT_TRUE(renderer.set_scene(scene).ok());
         // A preset swap where the scene allows it: open water at the presets' level (a scene
@@ -132,7 +158,8 @@ struct Cycler {
         if (&scene == &deep) {
             ASSERT_TRUE(renderer.set_water(presets[static_cast<std::size_t>(i) % presets.size()]).ok());
         }
-        const std::uint32_t w = 64 + 16 * static_cast<std::uint32_t>(i % 3), h = 48 + 8 * static_cast<std::uint32_t>(i % 2);
+        const std::uint32_t w = 64 + 16 * static_cast<std::uint32_t>(i % 3),
+                            h = 48 + 8 * static_cast<std::uint32_t>(i % 2);
         target.reset();
         if (i % 4 == 1) {
             ASSERT_TRUE(renderer.resize({w, h}).ok());  // the host-side resize path
@@ -177,9 +204,10 @@ TEST(RendererLifecycle, ReloadsResizesAndPresetChangesDoNotGrowMemory) {
     }
     const long long grown = g_live_bytes.load() - bytes_after_warmup;
     t_counting = false;
-    std::printf("after %d cycles: C++ heap %+lld bytes, live Vulkan host allocations %zu (warm-up %zu), "
-                "process RSS %zu -> %zu KiB\n", kCycles - kWarmup, grown, allocator.live(), vulkan_after_warmup,
-                rss_after_warmup, resident_kib());
+    std::printf(
+        "after %d cycles: C++ heap %+lld bytes, live Vulkan host allocations %zu (warm-up %zu), "
+        "process RSS %zu -> %zu KiB\n",
+        kCycles - kWarmup, grown, allocator.live(), vulkan_after_warmup, rss_after_warmup, resident_kib());
     // The presets differ in wave count, so a few hundred bytes move; a leaked mesh,
     // texture staging or frame buffer would be megabytes.
     EXPECT_LT(std::llabs(grown), 16 * 1024) << "Tidewater's C++ heap does not grow";
@@ -190,7 +218,7 @@ TEST(RendererLifecycle, ReloadsResizesAndPresetChangesDoNotGrowMemory) {
 }
 
 class ValidatedLifecycle : public test::VulkanTest {
-protected:
+  protected:
     void release() override {
         target_.reset();
         renderer_.reset();

@@ -62,19 +62,20 @@ Pfn real(const char* name) {
 }
 
 // One wrapped create/destroy pair per handle type Tidewater makes.
-#define TW_HOOK_PAIR(Type, Create, CreateArgs, CreateCall, Destroy)                                                        \
-    VKAPI_ATTR VkResult VKAPI_CALL hooked_##Create CreateArgs {                                                            \
-        const VkResult r = real<PFN_vk##Create>("vk" #Create) CreateCall;                                                  \
-        if (r == VK_SUCCESS) g_ledger.add(#Type, id(*out));                                                                \
-        return r;                                                                                                          \
-    }                                                                                                                      \
-    VKAPI_ATTR void VKAPI_CALL hooked_##Destroy(VkDevice device, Vk##Type handle, const VkAllocationCallbacks* allocator) { \
-        g_ledger.remove(#Type, id(handle));                                                                                \
-        real<PFN_vk##Destroy>("vk" #Destroy)(device, handle, allocator);                                                   \
+#define TW_HOOK_PAIR(Type, Create, CreateArgs, CreateCall, Destroy)                       \
+    VKAPI_ATTR VkResult VKAPI_CALL hooked_##Create CreateArgs {                           \
+        const VkResult r = real<PFN_vk##Create>("vk" #Create) CreateCall;                 \
+        if (r == VK_SUCCESS) g_ledger.add(#Type, id(*out));                               \
+        return r;                                                                         \
+    }                                                                                     \
+    VKAPI_ATTR void VKAPI_CALL hooked_##Destroy(VkDevice device, Vk##Type handle,         \
+                                                const VkAllocationCallbacks* allocator) { \
+        g_ledger.remove(#Type, id(handle));                                               \
+        real<PFN_vk##Destroy>("vk" #Destroy)(device, handle, allocator);                  \
     }
-#define TW_SIMPLE_PAIR(Type, InfoType)                                                                                            \
-    TW_HOOK_PAIR(Type, Create##Type,                                                                                              \
-                 (VkDevice device, const InfoType* info, const VkAllocationCallbacks* allocator, Vk##Type* out),                  \
+#define TW_SIMPLE_PAIR(Type, InfoType)                                                                           \
+    TW_HOOK_PAIR(Type, Create##Type,                                                                             \
+                 (VkDevice device, const InfoType* info, const VkAllocationCallbacks* allocator, Vk##Type* out), \
                  (device, info, allocator, out), Destroy##Type)
 TW_SIMPLE_PAIR(Buffer, VkBufferCreateInfo)
 TW_SIMPLE_PAIR(Image, VkImageCreateInfo)
@@ -88,36 +89,43 @@ TW_SIMPLE_PAIR(CommandPool, VkCommandPoolCreateInfo)
 TW_SIMPLE_PAIR(QueryPool, VkQueryPoolCreateInfo)
 TW_SIMPLE_PAIR(Fence, VkFenceCreateInfo)
 TW_HOOK_PAIR(DeviceMemory, AllocateMemory,
-             (VkDevice device, const VkMemoryAllocateInfo* info, const VkAllocationCallbacks* allocator, VkDeviceMemory* out),
+             (VkDevice device, const VkMemoryAllocateInfo* info, const VkAllocationCallbacks* allocator,
+              VkDeviceMemory* out),
              (device, info, allocator, out), FreeMemory)
 #undef TW_SIMPLE_PAIR
 #undef TW_HOOK_PAIR
 
 // Pipelines: one create call may make several.
-VKAPI_ATTR VkResult VKAPI_CALL hooked_CreateGraphicsPipelines(VkDevice device, VkPipelineCache cache, std::uint32_t count,
+VKAPI_ATTR VkResult VKAPI_CALL hooked_CreateGraphicsPipelines(VkDevice device, VkPipelineCache cache,
+                                                              std::uint32_t count,
                                                               const VkGraphicsPipelineCreateInfo* infos,
                                                               const VkAllocationCallbacks* allocator, VkPipeline* out) {
-    const VkResult r = real<PFN_vkCreateGraphicsPipelines>("vkCreateGraphicsPipelines")(device, cache, count, infos, allocator, out);
+    const VkResult r =
+        real<PFN_vkCreateGraphicsPipelines>("vkCreateGraphicsPipelines")(device, cache, count, infos, allocator, out);
     if (r == VK_SUCCESS)
         for (std::uint32_t i = 0; i < count; ++i) g_ledger.add("Pipeline", id(out[i]));
     return r;
 }
-VKAPI_ATTR VkResult VKAPI_CALL hooked_CreateComputePipelines(VkDevice device, VkPipelineCache cache, std::uint32_t count,
+VKAPI_ATTR VkResult VKAPI_CALL hooked_CreateComputePipelines(VkDevice device, VkPipelineCache cache,
+                                                             std::uint32_t count,
                                                              const VkComputePipelineCreateInfo* infos,
                                                              const VkAllocationCallbacks* allocator, VkPipeline* out) {
-    const VkResult r = real<PFN_vkCreateComputePipelines>("vkCreateComputePipelines")(device, cache, count, infos, allocator, out);
+    const VkResult r =
+        real<PFN_vkCreateComputePipelines>("vkCreateComputePipelines")(device, cache, count, infos, allocator, out);
     if (r == VK_SUCCESS)
         for (std::uint32_t i = 0; i < count; ++i) g_ledger.add("Pipeline", id(out[i]));
     return r;
 }
-VKAPI_ATTR void VKAPI_CALL hooked_DestroyPipeline(VkDevice device, VkPipeline pipeline, const VkAllocationCallbacks* allocator) {
+VKAPI_ATTR void VKAPI_CALL hooked_DestroyPipeline(VkDevice device, VkPipeline pipeline,
+                                                  const VkAllocationCallbacks* allocator) {
     g_ledger.remove("Pipeline", id(pipeline));
     real<PFN_vkDestroyPipeline>("vkDestroyPipeline")(device, pipeline, allocator);
 }
 
 // A device lost on the host's side: the calls still reach the driver where skipping them
 // would leave work in flight (the wait), and report the loss.
-VKAPI_ATTR VkResult VKAPI_CALL hooked_QueueSubmit(VkQueue queue, std::uint32_t count, const VkSubmitInfo* submits, VkFence fence) {
+VKAPI_ATTR VkResult VKAPI_CALL hooked_QueueSubmit(VkQueue queue, std::uint32_t count, const VkSubmitInfo* submits,
+                                                  VkFence fence) {
     if (g_ledger.lose_device) {
         ++g_ledger.lost_reports;
         return VK_ERROR_DEVICE_LOST;  // nothing was submitted
@@ -136,16 +144,35 @@ VKAPI_ATTR VkResult VKAPI_CALL hooked_DeviceWaitIdle(VkDevice device) {
 const std::map<std::string, PFN_vkVoidFunction>& hooks() {
     static const std::map<std::string, PFN_vkVoidFunction> table = {
 #define TW_HOOK(name) {"vk" #name, reinterpret_cast<PFN_vkVoidFunction>(&hooked_##name)}
-        TW_HOOK(CreateBuffer),         TW_HOOK(DestroyBuffer),         TW_HOOK(CreateImage),
-        TW_HOOK(DestroyImage),         TW_HOOK(CreateImageView),       TW_HOOK(DestroyImageView),
-        TW_HOOK(CreateSampler),        TW_HOOK(DestroySampler),        TW_HOOK(CreateShaderModule),
-        TW_HOOK(DestroyShaderModule),  TW_HOOK(CreatePipelineLayout),  TW_HOOK(DestroyPipelineLayout),
-        TW_HOOK(CreateDescriptorSetLayout), TW_HOOK(DestroyDescriptorSetLayout), TW_HOOK(CreateDescriptorPool),
-        TW_HOOK(DestroyDescriptorPool), TW_HOOK(CreateCommandPool),    TW_HOOK(DestroyCommandPool),
-        TW_HOOK(CreateQueryPool),      TW_HOOK(DestroyQueryPool),      TW_HOOK(CreateFence),
-        TW_HOOK(DestroyFence),         TW_HOOK(AllocateMemory),        TW_HOOK(FreeMemory),
-        TW_HOOK(CreateGraphicsPipelines), TW_HOOK(CreateComputePipelines), TW_HOOK(DestroyPipeline),
-        TW_HOOK(QueueSubmit),          TW_HOOK(DeviceWaitIdle),
+        TW_HOOK(CreateBuffer),
+        TW_HOOK(DestroyBuffer),
+        TW_HOOK(CreateImage),
+        TW_HOOK(DestroyImage),
+        TW_HOOK(CreateImageView),
+        TW_HOOK(DestroyImageView),
+        TW_HOOK(CreateSampler),
+        TW_HOOK(DestroySampler),
+        TW_HOOK(CreateShaderModule),
+        TW_HOOK(DestroyShaderModule),
+        TW_HOOK(CreatePipelineLayout),
+        TW_HOOK(DestroyPipelineLayout),
+        TW_HOOK(CreateDescriptorSetLayout),
+        TW_HOOK(DestroyDescriptorSetLayout),
+        TW_HOOK(CreateDescriptorPool),
+        TW_HOOK(DestroyDescriptorPool),
+        TW_HOOK(CreateCommandPool),
+        TW_HOOK(DestroyCommandPool),
+        TW_HOOK(CreateQueryPool),
+        TW_HOOK(DestroyQueryPool),
+        TW_HOOK(CreateFence),
+        TW_HOOK(DestroyFence),
+        TW_HOOK(AllocateMemory),
+        TW_HOOK(FreeMemory),
+        TW_HOOK(CreateGraphicsPipelines),
+        TW_HOOK(CreateComputePipelines),
+        TW_HOOK(DestroyPipeline),
+        TW_HOOK(QueueSubmit),
+        TW_HOOK(DeviceWaitIdle),
 #undef TW_HOOK
     };
     return table;
@@ -163,7 +190,7 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL hook_instance_proc(VkInstance instance,
 }
 
 class LoaderHookTest : public test::VulkanTest {
-protected:
+  protected:
     render::DeviceContext hooked_context() const {
         render::DeviceContext ctx = context();
         ctx.get_instance_proc_addr = &hook_instance_proc;
@@ -211,8 +238,9 @@ TEST_F(LoaderHookTest, EveryHandleIsDestroyedThroughTheHostsLoaderFromAnotherThr
     std::vector<SurfacePoint> out(points.size());
     ASSERT_TRUE((*query)->query_surface(scene->ocean, 2.0, points, out).ok());
     EXPECT_GT(g_ledger.live_count(), 20u) << "the hook saw the handles made";
-    for (const char* type : {"Buffer", "Image", "ImageView", "DeviceMemory", "Pipeline", "PipelineLayout", "DescriptorSetLayout",
-                             "DescriptorPool", "CommandPool", "Sampler", "ShaderModule", "Fence"})
+    for (const char* type :
+         {"Buffer", "Image", "ImageView", "DeviceMemory", "Pipeline", "PipelineLayout", "DescriptorSetLayout",
+          "DescriptorPool", "CommandPool", "Sampler", "ShaderModule", "Fence"})
         EXPECT_GT(g_ledger.made[type], 0) << type << " made through the host's loader";
 
     // Destroyed on a thread that never called Tidewater before.
@@ -223,7 +251,8 @@ TEST_F(LoaderHookTest, EveryHandleIsDestroyedThroughTheHostsLoaderFromAnotherThr
     });
     destroyer.join();
     EXPECT_EQ(g_ledger.live_count(), 0u) << "every handle went back through the host's loader";
-    for (const auto& [type, handles] : g_ledger.live) EXPECT_TRUE(handles.empty()) << handles.size() << " " << type << " left";
+    for (const auto& [type, handles] : g_ledger.live)
+        EXPECT_TRUE(handles.empty()) << handles.size() << " " << type << " left";
     for (const auto& [type, n] : g_ledger.made) EXPECT_EQ(g_ledger.destroyed[type], n) << type;
 }
 

@@ -50,7 +50,8 @@ TEST_F(RenderTest, AReBakeOnAWorkerThreadIsSwappedInBetweenFrames) {
     EXPECT_EQ((*rebaked)->bake->reused.rivers, current->rivers.size()) << "the brook and rill are not in the edit";
     ASSERT_TRUE(renderer_->set_scene(**rebaked).ok());  // between frames
     const auto after = render(**rebaked, frame);
-    std::printf("%d frame(s) drawn while the worker re-baked in %.2f s\n", frames_while_baking, (*rebaked)->bake->seconds);
+    std::printf("%d frame(s) drawn while the worker re-baked in %.2f s\n", frames_while_baking,
+                (*rebaked)->bake->seconds);
     EXPECT_GT(test::mean_difference(before, after), 0.01) << "the new knoll is drawn";
 }
 
@@ -83,7 +84,8 @@ TEST_F(RenderTest, RiverIsDrawnWhereItRunsAndTheLandBesideItIsDry) {
         ASSERT_EQ(on.body.kind, BodyKind::river) << k;
         if (auto q = test::project(frame.camera, 480, 270, {c.x, on.surface.height, c.y})) {
             const Rgb col = test::block(img, q->x, q->y, 1);
-            EXPECT_TRUE(is_water(col)) << "river at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " " << col.b;
+            EXPECT_TRUE(is_water(col)) << "river at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " "
+                                       << col.b;
             ++river_points;
         }
         for (double side : {-120.0, 120.0}) {
@@ -91,7 +93,8 @@ TEST_F(RenderTest, RiverIsDrawnWhereItRunsAndTheLandBesideItIsDry) {
             ASSERT_EQ(query_world_point(scene, frame.time, d).body.kind, BodyKind::none);
             if (auto q = test::project(frame.camera, 480, 270, {d.x, scene.terrain.height_at(d), d.y})) {
                 const Rgb col = test::block(img, q->x, q->y, 1);
-                EXPECT_TRUE(is_land(col)) << "dry land at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " " << col.b;
+                EXPECT_TRUE(is_land(col))
+                    << "dry land at " << q->x << "," << q->y << ": " << col.r << " " << col.g << " " << col.b;
                 ++land_points;
             }
         }
@@ -119,8 +122,11 @@ TEST_F(RenderTest, RiverMeetsTheSeaWithoutASeam) {
         const auto q = test::project(frame.camera, 480, 270, {p.x, w.surface.height, p.y});
         if (!q) continue;
         const Rgb col = test::block(img, q->x, q->y, 1);
-        EXPECT_TRUE(is_water(col)) << "at x = " << p.x << " (" << q->x << "," << q->y << "): " << col.r << " " << col.g << " " << col.b;
-        if (last) worst_step = std::max({worst_step, std::abs(col.r - last->r), std::abs(col.g - last->g), std::abs(col.b - last->b)});
+        EXPECT_TRUE(is_water(col)) << "at x = " << p.x << " (" << q->x << "," << q->y << "): " << col.r << " " << col.g
+                                   << " " << col.b;
+        if (last)
+            worst_step =
+                std::max({worst_step, std::abs(col.r - last->r), std::abs(col.g - last->g), std::abs(col.b - last->b)});
         last = col;
         ++samples;
     }
@@ -132,7 +138,8 @@ TEST_F(RenderTest, RiverMeetsTheSeaWithoutASeam) {
 // (r = 245 m), dry slopes outside it; the floor at 10 m would hide water at any lower level.
 TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
     auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
-      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })", "lake.json");
+      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
+                              "lake.json");
     ASSERT_TRUE(parsed) << parsed.error().message;
     parsed->terrain = test::bowl_terrain();
     auto scene = test::baked(*parsed);
@@ -177,8 +184,10 @@ TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
         const auto q = test::project(frame.camera, 480, 270, {p.x, 30.0, p.y});
         if (!q) continue;
         const Rgb rim = test::block(shore_img, q->x, q->y, 1);
-        const double diff = std::max({std::abs(rim.r - middle.r), std::abs(rim.g - middle.g), std::abs(rim.b - middle.b)});
-        EXPECT_GT(diff, 0.25) << "rim at angle " << a << " looks like the middle: " << rim.r << " " << rim.g << " " << rim.b;
+        const double diff =
+            std::max({std::abs(rim.r - middle.r), std::abs(rim.g - middle.g), std::abs(rim.b - middle.b)});
+        EXPECT_GT(diff, 0.25) << "rim at angle " << a << " looks like the middle: " << rim.r << " " << rim.g << " "
+                              << rim.b;
         ++rim_pixels;
     }
     EXPECT_GT(rim_pixels, 12);

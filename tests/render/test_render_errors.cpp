@@ -39,12 +39,14 @@ TEST_F(RenderTest, UnsupportedFormatAndMissingDeviceAreNamed) {
     auto none = render::StandaloneDevice::create(options);
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.error().code, ErrorCode::no_device);
-    EXPECT_NE(none.error().message.find("llvmpipe"), std::string::npos) << "lists what was found: " << none.error().message;
+    EXPECT_NE(none.error().message.find("llvmpipe"), std::string::npos)
+        << "lists what was found: " << none.error().message;
     EXPECT_NE(none.error().message.find("NoSuchGPU"), std::string::npos);
 }
 
 TEST_F(RenderTest, BadFrameInputIsAnError) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "pool_calm"})");
+    const Scene scene =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "pool_calm"})");
     ASSERT_TRUE(renderer_->set_scene(scene).ok());
     auto t = render::OffscreenTarget::create(context(), 64, 64);
     ASSERT_TRUE(t.ok());

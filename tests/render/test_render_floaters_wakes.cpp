@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.hpp"
@@ -17,7 +16,8 @@ namespace {
 // those 30 m beside it are water; a barrel drifting 40 m off shows its orange. Under the
 // validation layer. A body without a hull is refused, naming it.
 TEST_F(RenderTest, FloatingBodiesAreDrawnWhereTheyFloat) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
+    const Scene scene =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
         "boats": [{"name": "tug", "path": [[-400, 0], [400, 0]], "speed": 5.0, "length": 20.0, "beam": 6.0, "draft": 1.5}],
         "floats": [{"name": "barrel", "at": [100, 40], "radius": 1.0, "height": 1.5, "mass": 1500, "color": [0.9, 0.45, 0.05]}]})");
     auto floaters = SceneFloaters::create(std::make_shared<const Scene>(scene), 20.0);  // the tug's centre at x = -300
@@ -43,8 +43,10 @@ TEST_F(RenderTest, FloatingBodiesAreDrawnWhereTheyFloat) {
             beside += red(test::pixel(img, 160 + dx, 160 + 105 + dy)) + red(test::pixel(img, 160 + dx, 160 - 105 + dy));
         }
     const Rgb deck = test::pixel(img, 160, 160), water = test::pixel(img, 160, 265);
-    std::printf("tug at (%.1f, %.3f, %.1f): %d of 81 pixels under its deck red (%.2f %.2f %.2f), %d of 162 beside it (water %.2f %.2f %.2f)\n",
-                tug.x, tug.y, tug.z, painted, deck.r, deck.g, deck.b, beside, water.r, water.g, water.b);
+    std::printf(
+        "tug at (%.1f, %.3f, %.1f): %d of 81 pixels under its deck red (%.2f %.2f %.2f), %d of 162 beside it (water "
+        "%.2f %.2f %.2f)\n",
+        tug.x, tug.y, tug.z, painted, deck.r, deck.g, deck.b, beside, water.r, water.g, water.b);
     EXPECT_GT(painted, 70);
     EXPECT_EQ(beside, 0);
     const glm::dvec3 barrel = floaters->pose(1).position;
@@ -68,7 +70,8 @@ TEST_F(RenderTest, FloatingBodiesAreDrawnWhereTheyFloat) {
 // is the CPU query's wake column within 2 cm (8-bit colour, rest against fixed point).
 // The shaded view shows the stern's churned foam behind the boat.
 TEST_F(RenderTest, BoatWakesAreDrawnInKelvinsWedge) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
+    const Scene scene =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm",
         "boats": [{"name": "tug", "path": [[-400, 0], [400, 0]], "speed": 5.0, "length": 20.0, "beam": 6.0, "draft": 1.5}]})");
     render::FrameInfo frame;
     frame.time = 100.0;  // the tug's bow shoulders are at x = 105
@@ -107,10 +110,12 @@ TEST_F(RenderTest, BoatWakesAreDrawnInKelvinsWedge) {
         }
     const glm::dvec3 under = ground(160, 160);
     const WorldPoint cpu = query_world_point(scene, frame.time, {under.x, under.z});
-    const double gpu = 0.25 * (wake_of(test::pixel(img, 159, 159)) + wake_of(test::pixel(img, 160, 159)) + wake_of(test::pixel(img, 159, 160)) +
-                               wake_of(test::pixel(img, 160, 160)));
-    std::printf("wake drawn on %d of %d pixels inside the wedge, %d of %d outside; under the centre %.4f m drawn, %.4f m queried\n",
-                inside_drawn, inside, outside_drawn, outside, gpu, cpu.surface.wake);
+    const double gpu = 0.25 * (wake_of(test::pixel(img, 159, 159)) + wake_of(test::pixel(img, 160, 159)) +
+                               wake_of(test::pixel(img, 159, 160)) + wake_of(test::pixel(img, 160, 160)));
+    std::printf(
+        "wake drawn on %d of %d pixels inside the wedge, %d of %d outside; under the centre %.4f m drawn, %.4f m "
+        "queried\n",
+        inside_drawn, inside, outside_drawn, outside, gpu, cpu.surface.wake);
     EXPECT_GT(inside_drawn, inside / 2);
     EXPECT_LT(outside_drawn, outside / 50 + 1);
     EXPECT_GT(std::abs(cpu.surface.wake), 0.03) << "the centre is on a wave of the wake";
@@ -119,13 +124,16 @@ TEST_F(RenderTest, BoatWakesAreDrawnInKelvinsWedge) {
     frame.camera.position = {200.0, 60.0, 120.0};
     frame.camera.target = {20.0, 0.0, 0.0};
     const auto shaded = render(scene, frame, 320, 180);
-    const auto calm = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm"})"),
-                             frame, 320, 180);
+    const auto calm = render(
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -40}}, "ocean": "pool_calm"})"),
+        frame, 320, 180);
     int white = 0;
     auto is_white = [](Rgb c) { return c.r > 0.75 && c.g > 0.75 && c.b > 0.75; };
     for (int y = 0; y < 180; ++y)
-        for (int x = 0; x < 320; ++x) white += is_white(test::pixel(shaded, x, y)) && !is_white(test::pixel(calm, x, y));
-    std::printf("shaded: %d white pixels of churned foam; %.4f from the calm pool\n", white, test::mean_difference(shaded, calm));
+        for (int x = 0; x < 320; ++x)
+            white += is_white(test::pixel(shaded, x, y)) && !is_white(test::pixel(calm, x, y));
+    std::printf("shaded: %d white pixels of churned foam; %.4f from the calm pool\n", white,
+                test::mean_difference(shaded, calm));
     EXPECT_GT(white, 20);  // the calm pool has none
     EXPECT_GT(test::mean_difference(shaded, calm), 0.002);
 }

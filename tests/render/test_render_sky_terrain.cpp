@@ -63,7 +63,8 @@ TEST_F(RenderTest, DefaultSceneHasSkyWaterAndLandWhereTheyBelong) {
 
 // Looking up at the sky, nothing but sky is drawn.
 TEST_F(RenderTest, EmptySkyShowsOnlySky) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "ocean_rolling"})");
+    const Scene scene = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}}, "ocean": "ocean_rolling"})");
     render::FrameInfo frame;
     frame.camera.position = {0.0, 10.0, 0.0};
     frame.camera.target = {0.0, 200.0, -100.0};  // about 62 degrees up: the horizon is off-screen
@@ -90,10 +91,13 @@ TEST_F(RenderTest, TerrainMaterialsFollowSlopeHeightAndWetness) {
     };
     auto saturation = [](Rgb c) { return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}); };
     auto luminance = [](Rgb c) { return 0.3 * c.r + 0.6 * c.g + 0.1 * c.b; };
-    const std::string ocean = R"("ocean": {"waves": [{"direction": 0, "wavelength": 60, "amplitude": 0.2, "steepness": 0.5}]}, "shore": {"enabled": false})";
+    const std::string ocean =
+        R"("ocean": {"waves": [{"direction": 0, "wavelength": 60, "amplitude": 0.2, "steepness": 0.5}]}, "shore": {"enabled": false})";
     // Gentle (slope 0.05) and steep (45 degrees) ground 20 m above the sea.
-    const Scene gentle = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [0.05, 0]}}, )" + ocean + "}");
-    const Scene steep = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [1.0, 0]}}, )" + ocean + "}");
+    const Scene gentle = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [0.05, 0]}}, )" + ocean + "}");
+    const Scene steep = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 20, "slope": [1.0, 0]}}, )" + ocean + "}");
     const Rgb grass = test::block(look_at(gentle, {0.0, 20.0, 0.0}, 0.0), 160, 90, 20);
     const Rgb rock = test::block(look_at(steep, {0.0, 20.0, 0.0}, 0.0), 160, 90, 20);
     EXPECT_GT(grass.g, grass.r + 0.05) << "grass is green";
@@ -101,43 +105,50 @@ TEST_F(RenderTest, TerrainMaterialsFollowSlopeHeightAndWetness) {
     // A beach rising 2 cm per metre from the sea at x = 0 under a 0.1 m swell 150 m long:
     // the swash runs up R2% = 0.043 sqrt(Hs L0) = 0.28 m (Hs = 0.28 m), above the 0.1 m
     // crests; the sand is soaked up to R and 3 m up it is dry.
-    const Scene beach = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 0, "slope": [0.02, 0]}},
+    const Scene beach =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"plane": {"height": 0, "slope": [0.02, 0]}},
         "ocean": {"waves": [{"direction": 0, "wavelength": 150, "amplitude": 0.1, "steepness": 0.5}]}, "shore": {"enabled": false}})");
     const Rgb wet = test::block(look_at(beach, {10.0, 0.2, 0.0}, 0.0), 160, 90, 10);
     const Rgb dry = test::block(look_at(beach, {150.0, 3.0, 0.0}, 0.0), 160, 90, 10);
     EXPECT_GT(dry.r, dry.b + 0.1) << "dry sand is sand-coloured";
     EXPECT_LT(luminance(wet), 0.85 * luminance(dry)) << "wet sand is darker";
     // The wet film's top moves with the waves' period (9.8 s: half of it apart).
-    const double moved = test::mean_difference(look_at(beach, {8.0, 0.16, 0.0}, 0.0), look_at(beach, {8.0, 0.16, 0.0}, 4.9));
+    const double moved =
+        test::mean_difference(look_at(beach, {8.0, 0.16, 0.0}, 0.0), look_at(beach, {8.0, 0.16, 0.0}, 4.9));
     EXPECT_GT(moved, 0.005) << "the swash line moves";
-    std::printf("grass saturation %.3f, rock %.3f; wet sand luminance %.3f of dry; swash frames differ by %.4f\n", saturation(grass),
-                saturation(rock), luminance(wet) / luminance(dry), moved);
+    std::printf("grass saturation %.3f, rock %.3f; wet sand luminance %.3f of dry; swash frames differ by %.4f\n",
+                saturation(grass), saturation(rock), luminance(wet) / luminance(dry), moved);
 }
 
 /// The sky's display colour the documented way (sky_model.hpp): Preetham's Yxy, white
 /// balance, exposure keeping the hue, saturation, sRGB encoding, the sun's glow.
 Rgb expected_sky(glm::dvec3 sun, double turbidity, glm::dvec3 dir) {
     const render::detail::PreethamSky sky = render::detail::preetham_sky(sun, turbidity);
-    glm::dvec3 rgb = render::detail::linear_srgb_from_Yxy(render::detail::preetham_Yxy(sky, sun, dir) / glm::dvec3(sky.zenith.x, 1.0, 1.0));
+    glm::dvec3 rgb = render::detail::linear_srgb_from_Yxy(render::detail::preetham_Yxy(sky, sun, dir) /
+                                                          glm::dvec3(sky.zenith.x, 1.0, 1.0));
     rgb = glm::max(rgb, glm::dvec3(0.0)) * render::detail::sky_white_balance(sky, sun);
     const double luminance = std::max(glm::dot(rgb, glm::dvec3(0.2126, 0.7152, 0.0722)), 1e-6);
     const double shown = 1.0 - std::exp(-render::detail::kSkyExposure * luminance);
-    rgb = glm::max(glm::mix(glm::dvec3(shown), rgb * (shown / luminance), render::detail::kSkySaturation), glm::dvec3(0.0));
+    rgb = glm::max(glm::mix(glm::dvec3(shown), rgb * (shown / luminance), render::detail::kSkySaturation),
+                   glm::dvec3(0.0));
     auto encode = [](double c) {
         c = std::clamp(c, 0.0, 1.0);
         return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
     };
     const double s = std::max(glm::dot(dir, sun), 0.0);
-    const glm::dvec3 glow = std::pow(s, 900.0) * glm::dvec3(8.0, 7.0, 5.5) + std::pow(s, 12.0) * glm::dvec3(0.25, 0.2, 0.12);
+    const glm::dvec3 glow =
+        std::pow(s, 900.0) * glm::dvec3(8.0, 7.0, 5.5) + std::pow(s, 12.0) * glm::dvec3(0.25, 0.2, 0.12);
     // An 8-bit target holds at most 1.
-    return {std::min(encode(rgb.r) + glow.r, 1.0), std::min(encode(rgb.g) + glow.g, 1.0), std::min(encode(rgb.b) + glow.b, 1.0)};
+    return {std::min(encode(rgb.r) + glow.r, 1.0), std::min(encode(rgb.g) + glow.g, 1.0),
+            std::min(encode(rgb.b) + glow.b, 1.0)};
 }
 
 // The background is the Preetham sky: pixels toward five directions (from 20 to 75
 // degrees up, toward and away from the sun) match the model's colour within 2/255 per
 // channel, and it is bluest at the zenith, whitest low down (the clear-sky gradient).
 TEST_F(RenderTest, TheSkyIsPreethamsModel) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling"})");
+    const Scene scene = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling"})");
     render::FrameInfo frame;
     frame.camera.position = {0.0, 10.0, 0.0};
     frame.camera.target = {0.0, 10.0 + 1.0, 1.0};  // 45 degrees up toward +z
@@ -146,8 +157,8 @@ TEST_F(RenderTest, TheSkyIsPreethamsModel) {
     const auto img = render(scene, frame, 320, 320);
     const glm::dvec3 sun = glm::normalize(frame.sun_direction);
     double worst = 0.0;
-    for (const glm::dvec3 d : {glm::dvec3(0.0, 0.34, 0.94), glm::dvec3(0.0, 0.71, 0.71), glm::dvec3(0.0, 0.97, 0.26), glm::dvec3(0.45, 0.45, 0.77),
-                               glm::dvec3(-0.45, 0.45, 0.77)}) {
+    for (const glm::dvec3 d : {glm::dvec3(0.0, 0.34, 0.94), glm::dvec3(0.0, 0.71, 0.71), glm::dvec3(0.0, 0.97, 0.26),
+                               glm::dvec3(0.45, 0.45, 0.77), glm::dvec3(-0.45, 0.45, 0.77)}) {
         const glm::dvec3 dir = glm::normalize(d);
         const auto at = test::project(frame.camera, img.width, img.height, frame.camera.position + dir * 1000.0);
         ASSERT_TRUE(at.has_value());

@@ -65,9 +65,12 @@ TEST_F(RenderTest, ShallowWaterShowsTheBottomDeepWaterDoesNot) {
     frame.camera.position = {0.0, 10.0, 12.0};
     frame.camera.target = {0.0, 0.0, 0.0};
     frame.sun_direction = {0.0, 0.8, 0.6};  // behind the camera: no glitter in view
-    const std::string calm = R"("ocean": {"waves": [{"direction": 0, "wavelength": 8, "amplitude": 0.02, "steepness": 0.3}]})";
-    const auto shallow = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, )" + calm + "}"), frame);
-    const auto deep = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -60}}, )" + calm + "}"), frame);
+    const std::string calm =
+        R"("ocean": {"waves": [{"direction": 0, "wavelength": 8, "amplitude": 0.02, "steepness": 0.3}]})";
+    const auto shallow = render(
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, )" + calm + "}"), frame);
+    const auto deep = render(
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -60}}, )" + calm + "}"), frame);
     auto luminance_spread = [](const render::RgbaImage& img) {
         double sum = 0.0, sum2 = 0.0;
         int n = 0;
@@ -103,9 +106,12 @@ TEST_F(RenderTest, FoamOnSteepCrestsOnly) {
     };
     const double lambda = 20.0, a = 0.95 * lambda / (2 * kPi);  // k A = 0.95 with Q = 1
     const auto steep = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -80}},
-        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": )" + std::to_string(a) + R"(, "steepness": 1}]}})"), frame);
+        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": )" +
+                                         std::to_string(a) + R"(, "steepness": 1}]}})"),
+                              frame);
     const auto calm = render(scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -80}},
-        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": 0.3, "steepness": 0.3}]}})"), frame);
+        "ocean": {"waves": [{"direction": 90, "wavelength": 20, "amplitude": 0.3, "steepness": 0.3}]}})"),
+                             frame);
     EXPECT_GT(white_fraction(steep), 0.02);
     EXPECT_LT(white_fraction(calm), 0.001);
 }
@@ -128,7 +134,9 @@ TEST_F(RenderTest, CalmWaterMirrorsTheSkyAtTheHorizon) {
         Rgb m;
         for (int x = 0; x < img.width; ++x) {
             const Rgb p = test::pixel(img, x, y);
-            m.r += p.r / img.width; m.g += p.g / img.width; m.b += p.b / img.width;
+            m.r += p.r / img.width;
+            m.g += p.g / img.width;
+            m.b += p.b / img.width;
         }
         return m;
     };
@@ -145,7 +153,8 @@ TEST_F(RenderTest, CalmWaterMirrorsTheSkyAtTheHorizon) {
 // ocean_rolling (12 m/s: W = 1.84%), the white pixels over four instants and places
 // cover within a factor of 2 of W; the sun is low behind, so no glint is counted.
 TEST_F(RenderTest, OpenSeaWhitecapsCoverMonahansShare) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "ocean": "ocean_rolling"})");
+    const Scene scene = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}}, "ocean": "ocean_rolling"})");
     const double expected = monahan_whitecap_fraction(scene.ocean.profile().spectrum->wind_speed);
     std::size_t white = 0, total = 0;
     for (int k = 0; k < 4; ++k) {
@@ -163,7 +172,8 @@ TEST_F(RenderTest, OpenSeaWhitecapsCoverMonahansShare) {
             }
     }
     const double coverage = static_cast<double>(white) / static_cast<double>(total);
-    std::printf("open-sea whitecap coverage %.4f against Monahan's %.4f (ratio %.2f)\n", coverage, expected, coverage / expected);
+    std::printf("open-sea whitecap coverage %.4f against Monahan's %.4f (ratio %.2f)\n", coverage, expected,
+                coverage / expected);
     EXPECT_GT(coverage, 0.5 * expected);
     EXPECT_LT(coverage, 2.0 * expected);
 }
@@ -172,7 +182,8 @@ TEST_F(RenderTest, OpenSeaWhitecapsCoverMonahansShare) {
 // pixel is water. In the depth view 200 m of water is pure red and the sky is pale, so
 // any pixel that is not red would be a hole in the surface.
 TEST_F(RenderTest, WaterSurfaceHasNoCracks) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling"})");
+    const Scene scene = scene_from(
+        R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -200}}, "ocean": "ocean_rolling"})");
     for (double height : {8.0, 60.0, 400.0}) {
         render::FrameInfo frame;
         frame.camera.position = {13.0, height, 7.0};
@@ -203,8 +214,8 @@ TEST_F(RenderTest, SmallCameraMovesDoNotPop) {
         frame.time = 5.0;
         return render(*scene, frame);
     };
-    const auto inside_a = frame_at(60.00), inside_b = frame_at(60.04);   // within one origin cell
-    const auto cross_a = frame_at(127.98), cross_b = frame_at(128.02);   // across the boundary at 128 m
+    const auto inside_a = frame_at(60.00), inside_b = frame_at(60.04);  // within one origin cell
+    const auto cross_a = frame_at(127.98), cross_b = frame_at(128.02);  // across the boundary at 128 m
     const double within = test::mean_difference(inside_a, inside_b), across = test::mean_difference(cross_a, cross_b);
     std::printf("mean change for a 4 cm move: %.4f within a cell, %.4f across a cell boundary\n", within, across);
     EXPECT_LT(within, 0.02);
@@ -288,8 +299,15 @@ render::RgbaImage box_filter_4x(const render::RgbaImage& big) {
             for (int c = 0; c < 3; ++c) {
                 int sum = 0;
                 for (int j = 0; j < 4; ++j)
-                    for (int i = 0; i < 4; ++i) sum += big.pixels[(static_cast<std::size_t>(4 * y + j) * static_cast<std::size_t>(big.width) + static_cast<std::size_t>(4 * x + i)) * 4 + static_cast<std::size_t>(c)];
-                out.pixels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x)) * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>((sum + 8) / 16);
+                    for (int i = 0; i < 4; ++i)
+                        sum += big.pixels[(static_cast<std::size_t>(4 * y + j) * static_cast<std::size_t>(big.width) +
+                                           static_cast<std::size_t>(4 * x + i)) *
+                                              4 +
+                                          static_cast<std::size_t>(c)];
+                out.pixels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) +
+                            static_cast<std::size_t>(x)) *
+                               4 +
+                           static_cast<std::size_t>(c)] = static_cast<std::uint8_t>((sum + 8) / 16);
             }
     return out;
 }
@@ -306,7 +324,8 @@ render::FrameInfo far_field_frame(double height) {
 }
 /// The first row under the horizon in far_field_frame at 640 x 360 (the horizon is at
 /// row 180 - 180 tan 7.6 / tan 25 = 128.5): the far band is the 30 rows from here.
-const int kFarBandTop = static_cast<int>(std::ceil(180.0 - 180.0 * std::tan(7.6 * kPi / 180.0) / std::tan(25.0 * kPi / 180.0))) + 1;
+const int kFarBandTop =
+    static_cast<int>(std::ceil(180.0 - 180.0 * std::tan(7.6 * kPi / 180.0) / std::tan(25.0 * kPi / 180.0))) + 1;
 
 /// Mean |a - b| per channel over rows [y0, y1), 0..1.
 double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, int y0, int y1) {
@@ -315,7 +334,10 @@ double band_difference(const render::RgbaImage& a, const render::RgbaImage& b, i
     for (int y = std::max(0, y0); y < std::min(a.height, y1); ++y)
         for (int x = 0; x < a.width; ++x)
             for (std::size_t c = 0; c < 3; ++c) {
-                const std::size_t k = (static_cast<std::size_t>(y) * static_cast<std::size_t>(a.width) + static_cast<std::size_t>(x)) * 4 + c;
+                const std::size_t k =
+                    (static_cast<std::size_t>(y) * static_cast<std::size_t>(a.width) + static_cast<std::size_t>(x)) *
+                        4 +
+                    c;
                 sum += std::abs(int(a.pixels[k]) - int(b.pixels[k])) / 255.0;
                 ++n;
             }
@@ -338,7 +360,12 @@ std::pair<double, double> subrow_spread_floor(const render::RgbaImage& big, int 
                 double row[4] = {};
                 for (int j = 0; j < 4; ++j)
                     for (int i = 0; i < 4; ++i)
-                        row[j] += big.pixels[(static_cast<std::size_t>(4 * y + j) * static_cast<std::size_t>(big.width) + static_cast<std::size_t>(4 * x + i)) * 4 + c] / (4.0 * 255.0);
+                        row[j] +=
+                            big.pixels[(static_cast<std::size_t>(4 * y + j) * static_cast<std::size_t>(big.width) +
+                                        static_cast<std::size_t>(4 * x + i)) *
+                                           4 +
+                                       c] /
+                            (4.0 * 255.0);
                 const double mean = 0.25 * (row[0] + row[1] + row[2] + row[3]);
                 const double offsets[4] = {-1.5, -0.5, 0.5, 1.5};
                 double gradient = 0.0, spread = 0.0, residual = 0.0;
@@ -380,15 +407,18 @@ TEST_F(RenderTest, TheFarFieldIsFilteredNotAliased) {
         const auto truth = box_filter_4x(big);
         const double alias = band_difference(small, truth, kFarBandTop, kFarBandTop + 30);
         const auto [spread_floor, detrended_floor] = subrow_spread_floor(big, kFarBandTop, kFarBandTop + 30);
-        std::printf("from %.0f m: what one shading per pixel cannot place of the 4x frame (its sub-rows' spread) %.4f, %.4f less a gradient\n",
-                    height, spread_floor, detrended_floor);
+        std::printf(
+            "from %.0f m: what one shading per pixel cannot place of the 4x frame (its sub-rows' spread) %.4f, %.4f "
+            "less a gradient\n",
+            height, spread_floor, detrended_floor);
 
         frame.time += 1.0 / 60.0;
         const auto small_next = render(*scene, frame, 640, 360);
         const auto truth_next = box_filter_4x(render(*scene, frame, 2560, 1440));
         const double flicker = band_difference(small, small_next, kFarBandTop, kFarBandTop + 30);
         const double truth_flicker = band_difference(truth, truth_next, kFarBandTop, kFarBandTop + 30);
-        std::printf("from %.0f m: far band 1x vs 4x %.4f; frame to frame %.4f (supersampled %.4f)\n", height, alias, flicker, truth_flicker);
+        std::printf("from %.0f m: far band 1x vs 4x %.4f; frame to frame %.4f (supersampled %.4f)\n", height, alias,
+                    flicker, truth_flicker);
         EXPECT_LE(alias, height > 100.0 ? 0.02 : 0.04) << "from " << height << " m";
         EXPECT_LE(flicker, 2.0 * truth_flicker + 1e-3) << "from " << height << " m";
         if (height < 100.0) {
@@ -449,7 +479,8 @@ TEST_F(RenderTest, FarFieldFoamDoesNotThinWithPixelSize) {
     const double truth = band_foam(box_filter_4x(render(*scene, frame, 2560, 1440)));
     frame.time += 1.0 / 60.0;
     const double next = band_foam(render(*scene, frame, 640, 360));
-    std::printf("far band foam: %.4f at 1x, %.4f at 4x box-filtered (%.2f); %.4f 1/60 s later\n", small, truth, small / truth, next);
+    std::printf("far band foam: %.4f at 1x, %.4f at 4x box-filtered (%.2f); %.4f 1/60 s later\n", small, truth,
+                small / truth, next);
     EXPECT_GT(truth, 0.01) << "the open sea has whitecaps out there";
     EXPECT_GT(small, 0.85 * truth);
     EXPECT_LT(small, 1.15 * truth);
@@ -484,11 +515,18 @@ TEST_F(RenderTest, MultisampledTargetsAntialiasTheEdges) {
             for (auto [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
                 gradient = std::max(gradient, std::abs(luminance(test::pixel(single, x + dx, y + dy)) - l));
             const double change = std::abs(luminance(test::pixel(multi, x, y)) - l);
-            if (gradient > 0.1) { edge_sum += change; ++edges; } else { flat_sum += change; ++flats; }
+            if (gradient > 0.1) {
+                edge_sum += change;
+                ++edges;
+            } else {
+                flat_sum += change;
+                ++flats;
+            }
         }
     const double edge_change = edge_sum / std::max(edges, 1), flat_change = flat_sum / std::max(flats, 1);
     const double same = test::mean_difference(single, multi);
-    std::printf("4x MSAA against 1 sample: %.4f overall; %.4f on %d edge pixels, %.4f elsewhere\n", same, edge_change, edges, flat_change);
+    std::printf("4x MSAA against 1 sample: %.4f overall; %.4f on %d edge pixels, %.4f elsewhere\n", same, edge_change,
+                edges, flat_change);
     EXPECT_LT(same, 0.01);
     EXPECT_GT(edges, 100);
     EXPECT_GT(edge_change, 3.0 * flat_change);
@@ -504,7 +542,8 @@ TEST_F(RenderTest, MultisampledTargetsAntialiasTheEdges) {
     init.shade_water_per_sample = true;
     auto single_sampled = render::Renderer::create(init);
     ASSERT_FALSE(single_sampled.ok());
-    EXPECT_NE(single_sampled.error().message.find("shade_water_per_sample needs a multisampled target"), std::string::npos)
+    EXPECT_NE(single_sampled.error().message.find("shade_water_per_sample needs a multisampled target"),
+              std::string::npos)
         << single_sampled.error().message;
     init.samples = VK_SAMPLE_COUNT_4_BIT;
     init.device.enabled_features.sampleRateShading = VK_FALSE;  // what the host says it enabled

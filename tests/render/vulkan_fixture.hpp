@@ -14,7 +14,7 @@
 namespace tidewater::test {
 
 class VulkanTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         render::StandaloneOptions options;
         options.validation = true;

@@ -11,8 +11,8 @@
 
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/tidewater.hpp"
 #include "tidewater/scene_bake.hpp"
+#include "tidewater/tidewater.hpp"
 
 namespace {
 
@@ -37,7 +37,8 @@ std::vector<glm::dvec2> make_points() {
     std::mt19937_64 rng(7);
     std::vector<glm::dvec2> pts(kPoints);
     for (auto& p : pts) {
-        p = {static_cast<double>(rng() % 2000000) * 1e-3 - 1000.0, static_cast<double>(rng() % 2000000) * 1e-3 - 1000.0};
+        p = {static_cast<double>(rng() % 2000000) * 1e-3 - 1000.0,
+             static_cast<double>(rng() % 2000000) * 1e-3 - 1000.0};
     }
     return pts;
 }
@@ -83,13 +84,15 @@ std::vector<glm::dvec2> harbour_points(const ShoreWaves& shore) {
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
-            if (d >= 2.0 && d <= 120.0) centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
+            if (d >= 2.0 && d <= 120.0)
+                centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
         }
     std::mt19937_64 rng(9);
     std::vector<glm::dvec2> pts;
     for (int boat = 0; boat < 100; ++boat) {
         const glm::dvec2 c = centres[rng() % centres.size()];
-        for (const glm::dvec2 corner : {glm::dvec2(2, 1), glm::dvec2(2, -1), glm::dvec2(-2, 1), glm::dvec2(-2, -1)}) pts.push_back(c + corner);
+        for (const glm::dvec2 corner : {glm::dvec2(2, 1), glm::dvec2(2, -1), glm::dvec2(-2, 1), glm::dvec2(-2, -1)})
+            pts.push_back(c + corner);
     }
     return pts;
 }
@@ -103,7 +106,8 @@ void BM_ShoreHarbour(benchmark::State& state) {
     double t = kTime;
     for (auto _ : state) {
         t += 1.0 / 60.0;
-        benchmark::DoNotOptimize(full ? query_surface(scene.ocean, t, pts, out).ok() : query_heights(scene.ocean, t, pts, h).ok());
+        benchmark::DoNotOptimize(full ? query_surface(scene.ocean, t, pts, out).ok()
+                                      : query_heights(scene.ocean, t, pts, h).ok());
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
@@ -126,7 +130,8 @@ void BM_RiverWorld(benchmark::State& state) {
     std::vector<glm::dvec2> pts(kPoints);
     for (auto& p : pts) {
         const double u = static_cast<double>(rng() % 1000000) * 1e-6, v = static_cast<double>(rng() % 1000000) * 1e-6;
-        p = mouth ? glm::dvec2(2460.0 + 120.0 * u, 30.0 + 40.0 * (v - 0.5)) : glm::dvec2(-1800.0 + 4000.0 * u, 30.0 + 20.0 * (v - 0.5));
+        p = mouth ? glm::dvec2(2460.0 + 120.0 * u, 30.0 + 40.0 * (v - 0.5))
+                  : glm::dvec2(-1800.0 + 4000.0 * u, 30.0 + 20.0 * (v - 0.5));
     }
     std::vector<WorldPoint> out(pts.size());
     double t = kTime;
@@ -161,7 +166,8 @@ void BM_WakeQueries(benchmark::State& state) {
     }
     std::mt19937_64 rng(5);
     std::vector<glm::dvec2> pts(kPoints);
-    for (auto& p : pts) p = {static_cast<double>(rng() % 1000000) * 1.3e-3, static_cast<double>(rng() % 1000000) * 4e-4 - 200.0};
+    for (auto& p : pts)
+        p = {static_cast<double>(rng() % 1000000) * 1.3e-3, static_cast<double>(rng() % 1000000) * 4e-4 - 200.0};
     std::vector<double> h(pts.size());
     QueryOptions options;
     options.wakes = points > 0 ? &wakes : nullptr;

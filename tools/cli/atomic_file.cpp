@@ -28,7 +28,8 @@ Status AtomicFile::commit() {
     if (!good) return Error{ErrorCode::io_error, fmt::format("{}: write failed", target_.string())};
     std::error_code ec;
     std::filesystem::rename(temp_, target_, ec);
-    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot replace file: {}", target_.string(), ec.message())};
+    if (ec)
+        return Error{ErrorCode::io_error, fmt::format("{}: cannot replace file: {}", target_.string(), ec.message())};
     committed_ = true;
     return {};
 }

@@ -12,7 +12,7 @@
 namespace tidewater::cli {
 
 class AtomicFile {
-public:
+  public:
     /// Opens a temporary file next to `target`; check ok() before writing.
     explicit AtomicFile(std::filesystem::path target);
     ~AtomicFile();  ///< Removes the temporary file unless committed.
@@ -26,7 +26,7 @@ public:
     /// Writes `text`, then commits.
     Status write_and_commit(std::string_view text);
 
-private:
+  private:
     std::filesystem::path target_;
     std::filesystem::path temp_;
     std::ofstream out_;

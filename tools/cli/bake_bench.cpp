@@ -1,19 +1,20 @@
 #include "bake_bench.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <memory>
 #include <thread>
 
 #include "tidewater/detail/reference.hpp"
-#include "tidewater/query.hpp"
-#include "tidewater/ripples.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/spectrum.hpp"
 #include "tidewater/detail/shore_waves_bake.hpp"
+#include "tidewater/query.hpp"
+#include "tidewater/ripples.hpp"
+#include "tidewater/spectrum.hpp"
 
 namespace tidewater::cli {
 
@@ -21,7 +22,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 /// An archipelago: fractal noise crossing the water level gives hundreds of islands and
 /// well over 10^4 shoreline segments at 1024^2 over 3 km.
@@ -53,7 +56,8 @@ Terrain archipelago() {
 
 }  // namespace
 
-Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::function<void(const std::string&)>& progress) {
+Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config,
+                                      const std::function<void(const std::string&)>& progress) {
     const unsigned all = config.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : config.threads;
     auto say = [&](const std::string& s) {
         if (progress) progress(s);
@@ -79,14 +83,18 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
             auto field = bake_shore(terrain, 0.0, o);
             const double s = seconds_since(t0);
             if (!field) return field.error();
-            report["distance_fields"].push_back({{"resolution", res}, {"threads", threads}, {"seconds", s},
-                                                 {"segments", field->segment_count}, {"land_polygons", field->polygons},
+            report["distance_fields"].push_back({{"resolution", res},
+                                                 {"threads", threads},
+                                                 {"seconds", s},
+                                                 {"segments", field->segment_count},
+                                                 {"land_polygons", field->polygons},
                                                  {"enclosed_waters", field->holes},
-                                                 {"stages_seconds", {{"heights", field->timings.heights},
-                                                                     {"contour", field->timings.contour},
-                                                                     {"simplify", field->timings.simplify},
-                                                                     {"tree", field->timings.tree},
-                                                                     {"distance", field->timings.distance}}},
+                                                 {"stages_seconds",
+                                                  {{"heights", field->timings.heights},
+                                                   {"contour", field->timings.contour},
+                                                   {"simplify", field->timings.simplify},
+                                                   {"tree", field->timings.tree},
+                                                   {"distance", field->timings.distance}}},
                                                  {"queries_per_second", res * double(res) / s}});
             if (res == 1024 && threads == 1) kept = std::make_unique<ShoreField>(std::move(field).value());
         }
@@ -100,11 +108,13 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
     for (int j = 3; j < kept->resolution; j += 16)
         for (int i = 7; i < kept->resolution; i += 16) {
             const double brute = reference::brute_force_shore_distance(*kept, kept->texel_center(i, j));
-            worst = std::max(worst, std::abs(brute - std::abs(static_cast<double>(kept->signed_distance[kept->index(i, j)]))));
+            worst = std::max(worst,
+                             std::abs(brute - std::abs(static_cast<double>(kept->signed_distance[kept->index(i, j)]))));
             ++samples;
         }
     const double brute_seconds = seconds_since(t0);
-    report["brute_force"] = {{"samples", samples}, {"seconds_per_query", brute_seconds / samples},
+    report["brute_force"] = {{"samples", samples},
+                             {"seconds_per_query", brute_seconds / samples},
                              {"max_difference_m", worst},
                              {"note", "CGAL values are stored as float: differences are float rounding of metres"}};
 
@@ -125,7 +135,8 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
             const auto t1 = Clock::now();
             auto shore = bake_shore_waves(*set, terrain, 0.0, o);
             if (!shore) return shore.error();
-            report["phase_fields"].push_back({{"resolution", res}, {"waves", 24}, {"threads", threads}, {"seconds", seconds_since(t1)}});
+            report["phase_fields"].push_back(
+                {{"resolution", res}, {"waves", 24}, {"threads", threads}, {"seconds", seconds_since(t1)}});
         }
     }
 
@@ -145,7 +156,8 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
     const WaterBody& shored = *shored_result;
     std::vector<glm::dvec2> pts(100000);
     for (std::size_t k = 0; k < pts.size(); ++k)
-        pts[k] = {std::fmod(static_cast<double>(k) * 37.71, 3000.0) - 1500.0, std::fmod(static_cast<double>(k) * 91.13, 3000.0) - 1500.0};
+        pts[k] = {std::fmod(static_cast<double>(k) * 37.71, 3000.0) - 1500.0,
+                  std::fmod(static_cast<double>(k) * 91.13, 3000.0) - 1500.0};
     std::vector<SurfacePoint> out(pts.size());
     const WaterBody& open_body = *open;
     for (auto [name, body] : {std::pair<const char*, const WaterBody*>{"open_water_simd", &open_body},
@@ -155,7 +167,8 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
             qo.threads = threads;
             const auto t2 = Clock::now();
             if (auto st = query_surface(*body, 10.0, pts, out, qo); !st) return st.error();
-            report["queries"].push_back({{"mode", name}, {"threads", threads},
+            report["queries"].push_back({{"mode", name},
+                                         {"threads", threads},
                                          {"queries_per_second", static_cast<double>(pts.size()) / seconds_since(t2)}});
         }
     }
@@ -163,22 +176,27 @@ Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::
 }
 
 std::string bake_bench_markdown(const nlohmann::json& r) {
-    std::string s = fmt::format("Coastline: {}. All threads = {}.\n\n", r["coastline"].get<std::string>(), r["threads_all"].get<unsigned>());
-    s += "| signed distance field | threads | seconds | heights | contour | simplify | tree | distances | segments | land polygons | "
+    std::string s = fmt::format("Coastline: {}. All threads = {}.\n\n", r["coastline"].get<std::string>(),
+                                r["threads_all"].get<unsigned>());
+    s += "| signed distance field | threads | seconds | heights | contour | simplify | tree | distances | segments | "
+         "land polygons | "
          "enclosed waters |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& d : r["distance_fields"]) {
         const auto& st = d["stages_seconds"];
-        s += fmt::format("| {}^2 | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {} | {} |\n", d["resolution"].get<int>(),
-                         d["threads"].get<unsigned>(), d["seconds"].get<double>(), st["heights"].get<double>(), st["contour"].get<double>(),
-                         st["simplify"].get<double>(), st["tree"].get<double>(), st["distance"].get<double>(),
-                         d["segments"].get<std::size_t>(), d["land_polygons"].get<std::size_t>(), d["enclosed_waters"].get<std::size_t>());
+        s += fmt::format("| {}^2 | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {} | {} |\n",
+                         d["resolution"].get<int>(), d["threads"].get<unsigned>(), d["seconds"].get<double>(),
+                         st["heights"].get<double>(), st["contour"].get<double>(), st["simplify"].get<double>(),
+                         st["tree"].get<double>(), st["distance"].get<double>(), d["segments"].get<std::size_t>(),
+                         d["land_polygons"].get<std::size_t>(), d["enclosed_waters"].get<std::size_t>());
     }
     const auto& b = r["brute_force"];
-    s += fmt::format("\nBrute force over every segment: {:.1f} us per texel ({} texels), max |CGAL - brute force| = {:.2g} m.\n\n",
-                     b["seconds_per_query"].get<double>() * 1e6, b["samples"].get<int>(), b["max_difference_m"].get<double>());
+    s += fmt::format(
+        "\nBrute force over every segment: {:.1f} us per texel ({} texels), max |CGAL - brute force| = {:.2g} m.\n\n",
+        b["seconds_per_query"].get<double>() * 1e6, b["samples"].get<int>(), b["max_difference_m"].get<double>());
     s += "| phase fields (24 waves) | threads | seconds |\n|---|---:|---:|\n";
     for (const auto& p : r["phase_fields"])
-        s += fmt::format("| {}^2 | {} | {:.2f} |\n", p["resolution"].get<int>(), p["threads"].get<unsigned>(), p["seconds"].get<double>());
+        s += fmt::format("| {}^2 | {} | {:.2f} |\n", p["resolution"].get<int>(), p["threads"].get<unsigned>(),
+                         p["seconds"].get<double>());
     s += "\n| queries (24 waves) | threads | queries/s |\n|---|---:|---:|\n";
     for (const auto& q : r["queries"])
         s += fmt::format("| {} | {} | {:.3g} |\n", q["mode"].get<std::string>(), q["threads"].get<unsigned>(),

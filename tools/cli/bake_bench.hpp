@@ -17,7 +17,8 @@ struct BakeBenchConfig {
     unsigned threads = 0;  ///< "All threads"; 0 = hardware concurrency.
 };
 
-Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config, const std::function<void(const std::string&)>& progress);
+Result<nlohmann::json> run_bake_bench(const BakeBenchConfig& config,
+                                      const std::function<void(const std::string&)>& progress);
 std::string bake_bench_markdown(const nlohmann::json& report);
 
 }  // namespace tidewater::cli

@@ -1,8 +1,9 @@
 #include "bodies_bench.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <memory>
 
@@ -37,7 +38,8 @@ Terrain bench_terrain(int n) {
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             // Pixel centres span the extent (as HeightmapTerrain samples them).
-            const double x = (static_cast<double>(i) / (n - 1) - 0.5) * kSize, z = (static_cast<double>(j) / (n - 1) - 0.5) * kSize;
+            const double x = (static_cast<double>(i) / (n - 1) - 0.5) * kSize,
+                         z = (static_cast<double>(j) / (n - 1) - 0.5) * kSize;
             const double v = (bench_height(x, z) - kMin) / (kMax - kMin);
             image->pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] =
                 static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
@@ -88,7 +90,8 @@ struct Timed {
     double total = 0.0;
 };
 
-Result<Timed> timed_bake(const Scene& scene, unsigned threads, int distance_resolution, std::shared_ptr<const Scene> previous = nullptr) {
+Result<Timed> timed_bake(const Scene& scene, unsigned threads, int distance_resolution,
+                         std::shared_ptr<const Scene> previous = nullptr) {
     Timed out;
     std::string stage;
     auto mark = std::chrono::steady_clock::now();
@@ -133,7 +136,8 @@ json stages_json(const Timed& t) {
 
 }  // namespace
 
-Result<json> run_bodies_bench(const BodiesBenchConfig& config, const std::function<void(const std::string&)>& progress) {
+Result<json> run_bodies_bench(const BodiesBenchConfig& config,
+                              const std::function<void(const std::string&)>& progress) {
     json report = {{"benchmark", "lakes and rivers bake"}, {"repeats", config.repeats}};
     std::vector<int> sizes = {1024};
     if (config.include_2048) sizes.push_back(2048);
@@ -151,8 +155,13 @@ Result<json> run_bodies_bench(const BodiesBenchConfig& config, const std::functi
         }
         json rivers = json::array();
         for (const RiverSummary& r : summarize_bodies(*baked).rivers)
-            rivers.push_back({{"name", r.name}, {"ends_in", r.ends_in}, {"receiver", r.receiver}, {"length_m", r.length},
-                              {"grid", fmt::format("{}x{}", r.grid_nx, r.grid_nz)}, {"texel_m", r.texel}, {"islands", r.islands},
+            rivers.push_back({{"name", r.name},
+                              {"ends_in", r.ends_in},
+                              {"receiver", r.receiver},
+                              {"length_m", r.length},
+                              {"grid", fmt::format("{}x{}", r.grid_nx, r.grid_nz)},
+                              {"texel_m", r.texel},
+                              {"islands", r.islands},
                               {"mean_speed_m_s", r.mean_speed}});
         entry["rivers"] = rivers;
         // An editor moves one point of the east river by 15 m: only it is baked again.
@@ -182,14 +191,17 @@ Result<json> run_bodies_bench(const BodiesBenchConfig& config, const std::functi
 }
 
 std::string bodies_bench_markdown(const json& report) {
-    std::string md = "| terrain | threads | water bodies | lake shores | shoreline | shore waves | total |\n|---|---:|---:|---:|---:|---:|---:|\n";
+    std::string md =
+        "| terrain | threads | water bodies | lake shores | shoreline | shore waves | total "
+        "|\n|---|---:|---:|---:|---:|---:|---:|\n";
     auto stage = [](const json& run, const char* name) {
         const json& s = run.at("stages_s");
         return s.contains(name) ? fmt::format("{:.3f} s", s.at(name).get<double>()) : std::string("—");
     };
     auto row = [&](const std::string& what, const std::string& threads, const json& run) {
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {:.3f} s |\n", what, threads, stage(run, "water bodies"), stage(run, "lake shores"),
-                          stage(run, "shoreline"), stage(run, "shore waves"), run.at("total_s").get<double>());
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {:.3f} s |\n", what, threads, stage(run, "water bodies"),
+                          stage(run, "lake shores"), stage(run, "shoreline"), stage(run, "shore waves"),
+                          run.at("total_s").get<double>());
     };
     for (const json& t : report.at("terrains")) {
         const std::string name = fmt::format("4 km, {0}² heightmap and distance field", t.at("heightmap").get<int>());
@@ -197,11 +209,13 @@ std::string bodies_bench_markdown(const json& report) {
         for (const char* threads : {"1", "2"}) {
             const json& r = t.at(fmt::format("edit_one_reach_threads_{}", threads));
             row(fmt::format("{}: re-bake after moving one point of `east` (reused {} rivers, ocean shore {})", name,
-                            r.at("reused_rivers").get<int>(), r.at("reused_ocean_shore").get<bool>() ? "reused" : "re-baked"),
+                            r.at("reused_rivers").get<int>(),
+                            r.at("reused_ocean_shore").get<bool>() ? "reused" : "re-baked"),
                 threads, r);
         }
     }
-    for (const char* threads : {"1", "2"}) row("default scene", threads, report.at("default_scene").at(fmt::format("threads_{}", threads)));
+    for (const char* threads : {"1", "2"})
+        row("default scene", threads, report.at("default_scene").at(fmt::format("threads_{}", threads)));
     return md;
 }
 

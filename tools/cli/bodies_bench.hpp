@@ -17,7 +17,8 @@ struct BodiesBenchConfig {
     int repeats = 3;  ///< runs per measurement; the best is kept
 };
 
-Result<nlohmann::json> run_bodies_bench(const BodiesBenchConfig& config, const std::function<void(const std::string&)>& progress);
+Result<nlohmann::json> run_bodies_bench(const BodiesBenchConfig& config,
+                                        const std::function<void(const std::string&)>& progress);
 std::string bodies_bench_markdown(const nlohmann::json& report);
 
 }  // namespace tidewater::cli

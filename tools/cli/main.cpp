@@ -18,12 +18,14 @@ int fail(const char* verb, const std::string& message) {
 int main(int argc, char** argv) {
     using namespace tidewater::cli;
     try {
-        CLI::App app{"Tidewater: Gerstner water that feels the shore, with CPU queries that match what is drawn.\n"
-                     "Run 'tidewater <verb> --help' for a verb's options.",
-                     "tidewater"};
+        CLI::App app{
+            "Tidewater: Gerstner water that feels the shore, with CPU queries that match what is drawn.\n"
+            "Run 'tidewater <verb> --help' for a verb's options.",
+            "tidewater"};
         app.set_version_flag("--version", TIDEWATER_VERSION_STRING);
         app.require_subcommand(1);
-        std::vector<Verb> verbs = {add_query_verb(app), add_drift_verb(app), add_bench_verb(app), add_demo_verb(app), add_bake_verb(app), add_fit_verb(app), add_inspect_verb(app)};
+        std::vector<Verb> verbs = {add_query_verb(app), add_drift_verb(app), add_bench_verb(app),  add_demo_verb(app),
+                                   add_bake_verb(app),  add_fit_verb(app),   add_inspect_verb(app)};
 #if defined(TIDEWATER_HAVE_RENDER)
         verbs.push_back(add_render_verb(app));
 #endif

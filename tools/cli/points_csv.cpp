@@ -1,8 +1,9 @@
 #include "points_csv.hpp"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -22,7 +23,8 @@ std::vector<std::string_view> split(std::string_view line) {
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = line.find(',', start);
-        cells.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+        cells.push_back(
+            trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
         if (comma == std::string_view::npos) break;
         start = comma + 1;
     }
@@ -79,7 +81,8 @@ Result<std::vector<glm::dvec2>> parse_points_csv(const std::string& text, const 
         }
         points.push_back(p);
     }
-    if (columns == 0) return Error{ErrorCode::parse_error, fmt::format("{}: empty file: expected a header \"x,z\"", source)};
+    if (columns == 0)
+        return Error{ErrorCode::parse_error, fmt::format("{}: empty file: expected a header \"x,z\"", source)};
     if (points.empty()) return Error{ErrorCode::parse_error, fmt::format("{}: no points after the header", source)};
     return points;
 }

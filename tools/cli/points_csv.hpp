@@ -2,10 +2,9 @@
 // columns are allowed and ignored), then one point per line.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/result.hpp"
 

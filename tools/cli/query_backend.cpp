@@ -22,11 +22,11 @@ Result<QueryBackend> make_gpu_query_backend() {
         std::unique_ptr<render::GpuQuery> query;
     };
     auto engine = std::make_shared<Engine>(Engine{shared_device, std::move(gpu).value()});
-    return QueryBackend([engine](const Scene& scene, double t, std::span<const glm::dvec2> pts, std::span<WorldPoint> out) {
-        return engine->query->query_world(scene, t, pts, out);
-    });
+    return QueryBackend([engine](const Scene& scene, double t, std::span<const glm::dvec2> pts,
+                                 std::span<WorldPoint> out) { return engine->query->query_world(scene, t, pts, out); });
 #else
-    return Error{ErrorCode::unsupported, "--backend gpu: this build has no renderer (configure with TIDEWATER_BUILD_RENDER=ON)"};
+    return Error{ErrorCode::unsupported,
+                 "--backend gpu: this build has no renderer (configure with TIDEWATER_BUILD_RENDER=ON)"};
 #endif
 }
 

@@ -1,14 +1,14 @@
 #include "query_bench.hpp"
 
-#include "bench_timing.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <random>
 #include <thread>
 
+#include "bench_timing.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/gerstner.hpp"
 #include "tidewater/query.hpp"
@@ -32,7 +32,6 @@ std::vector<glm::dvec2> random_points(std::size_t n, std::uint64_t seed) {
     return pts;
 }
 
-
 /// Runs the reference loop over `threads` contiguous chunks.
 void reference_parallel(const WaveSet& set, std::span<const glm::dvec2> pts, std::span<double> out, unsigned threads) {
     if (threads <= 1) {
@@ -43,18 +42,23 @@ void reference_parallel(const WaveSet& set, std::span<const glm::dvec2> pts, std
     const std::size_t chunk = (pts.size() + threads - 1) / threads;
     for (unsigned t = 0; t < threads; ++t) {
         const std::size_t b = std::min(pts.size(), t * chunk), e = std::min(pts.size(), b + chunk);
-        pool.emplace_back([&, b, e] { reference::fixed_point_heights(set, kBenchTime, pts.subspan(b, e - b), out.subspan(b, e - b)); });
+        pool.emplace_back([&, b, e] {
+            reference::fixed_point_heights(set, kBenchTime, pts.subspan(b, e - b), out.subspan(b, e - b));
+        });
     }
     for (auto& th : pool) th.join();
 }
 
 }  // namespace
 
-Result<BenchReport> run_query_bench(const BenchConfig& config, const std::function<void(const std::string&)>& progress) {
+Result<BenchReport> run_query_bench(const BenchConfig& config,
+                                    const std::function<void(const std::string&)>& progress) {
     if (config.points < 1 || config.points > 100'000'000)
-        return Error{ErrorCode::invalid_argument, fmt::format("--points: {} is out of range (1 to 1e8)", config.points)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("--points: {} is out of range (1 to 1e8)", config.points)};
     if (config.repeats < 1 || config.repeats > 1000)
-        return Error{ErrorCode::invalid_argument, fmt::format("--repeats: {} is out of range (1 to 1000)", config.repeats)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("--repeats: {} is out of range (1 to 1000)", config.repeats)};
     BenchReport report;
     report.config = config;
     report.kernel = query_kernel_name();
@@ -100,11 +104,14 @@ Result<BenchReport> run_query_bench(const BenchConfig& config, const std::functi
             QueryOptions opt;
             opt.threads = threads;
             Status status;
-            const double t_heights = best_time(config.repeats, [&] { status = query_heights(*body, kBenchTime, pts, heights, opt); });
+            const double t_heights =
+                best_time(config.repeats, [&] { status = query_heights(*body, kBenchTime, pts, heights, opt); });
             if (!status) return status.error();
-            row.methods.push_back({"newton_simd_heights", threads, static_cast<double>(pts.size()) / t_heights, max_error(heights)});
+            row.methods.push_back(
+                {"newton_simd_heights", threads, static_cast<double>(pts.size()) / t_heights, max_error(heights)});
 
-            const double t_full = best_time(config.repeats, [&] { status = query_surface(*body, kBenchTime, pts, full, opt); });
+            const double t_full =
+                best_time(config.repeats, [&] { status = query_surface(*body, kBenchTime, pts, full, opt); });
             if (!status) return status.error();
             std::vector<double> full_heights(pts.size());
             double iterations = 0.0;
@@ -113,10 +120,12 @@ Result<BenchReport> run_query_bench(const BenchConfig& config, const std::functi
                 iterations += full[i].iterations;
             }
             row.mean_iterations = iterations / static_cast<double>(pts.size());
-            row.methods.push_back({"newton_simd_full", threads, static_cast<double>(pts.size()) / t_full, max_error(full_heights)});
+            row.methods.push_back(
+                {"newton_simd_full", threads, static_cast<double>(pts.size()) / t_full, max_error(full_heights)});
 
             const double t_ref = best_time(config.repeats, [&] { reference_parallel(set, pts, heights, threads); });
-            row.methods.push_back({"fixed_point_reference", threads, static_cast<double>(pts.size()) / t_ref, max_error(heights)});
+            row.methods.push_back(
+                {"fixed_point_reference", threads, static_cast<double>(pts.size()) / t_ref, max_error(heights)});
         }
         report.results.push_back(std::move(row));
     }
@@ -165,16 +174,17 @@ nlohmann::json to_json(const BenchReport& report) {
 }
 
 std::string to_markdown(const BenchReport& report) {
-    std::string s = fmt::format("Kernel `{}`, {} points per run, best of {}, sum(Q k A) target {}, all threads = {}\n\n",
-                                report.kernel, report.config.points, report.config.repeats, report.config.steepness,
-                                report.threads);
+    std::string s = fmt::format(
+        "Kernel `{}`, {} points per run, best of {}, sum(Q k A) target {}, all threads = {}\n\n", report.kernel,
+        report.config.points, report.config.repeats, report.config.steepness, report.threads);
     s += "| waves | sum(QkA) | method | threads | queries/s | max height error (m) | Newton evals |\n";
     s += "|---:|---:|---|---:|---:|---:|---:|\n";
     for (const auto& r : report.results) {
         for (const auto& m : r.methods) {
             s += fmt::format("| {} | {:.3f} | {} | {} | {:.3g} | {:.2e} | {} |\n", r.waves, r.fold_measure, m.method,
                              m.threads, m.queries_per_second, m.max_height_error,
-                             m.method == "fixed_point_reference" ? std::string("4 (fixed)") : fmt::format("{:.2f}", r.mean_iterations));
+                             m.method == "fixed_point_reference" ? std::string("4 (fixed)")
+                                                                 : fmt::format("{:.2f}", r.mean_iterations));
         }
     }
     s += "\n| waves | speed-up per core (heights) | speed-up, all threads |\n|---:|---:|---:|\n";

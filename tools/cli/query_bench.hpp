@@ -16,11 +16,11 @@ namespace tidewater::cli {
 
 struct BenchConfig {
     std::vector<int> wave_counts{8, 32, 64};
-    std::size_t points = 200000;        ///< Query points per timed run.
-    int repeats = 3;                    ///< Best of this many runs is reported.
-    double steepness = 0.7;             ///< Target sum(Q*k*A) of the generated sets.
+    std::size_t points = 200000;  ///< Query points per timed run.
+    int repeats = 3;              ///< Best of this many runs is reported.
+    double steepness = 0.7;       ///< Target sum(Q*k*A) of the generated sets.
     std::uint64_t seed = 42;
-    unsigned threads = 0;               ///< "All threads" count; 0 = hardware concurrency.
+    unsigned threads = 0;                 ///< "All threads" count; 0 = hardware concurrency.
     std::size_t accuracy_samples = 2000;  ///< Points checked against the exact solve.
 };
 

@@ -1,14 +1,15 @@
 #include "render_job.hpp"
 
-#include <algorithm>
-#include <filesystem>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/image_write.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "tidewater/scene_floaters.hpp"
-#include "tidewater/detail/image_write.hpp"
 
 namespace tidewater::cli {
 
@@ -47,12 +48,15 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     if (auto st = (*renderer)->set_scene(scene); !st) return st.error();
-    auto target = render::OffscreenTarget::create((*device)->context(), job.extent.width, job.extent.height, job.samples);
+    auto target =
+        render::OffscreenTarget::create((*device)->context(), job.extent.width, job.extent.height, job.samples);
     if (!target) return target.error();
     if (!job.output_dir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(job.output_dir, ec);
-        if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create folder: {}", job.output_dir, ec.message())};
+        if (ec)
+            return Error{ErrorCode::io_error,
+                         fmt::format("{}: cannot create folder: {}", job.output_dir, ec.message())};
     }
     // The scene's boats and floats riding the water, drawn at each frame's time.
     std::optional<SceneFloaters> floaters;
@@ -77,15 +81,21 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
         if (!image) return image.error();
         // Validation messages fail the job before anything is written for this frame.
         if ((*device)->validation_messages() > 0)
-            return Error{ErrorCode::device_error, fmt::format("{} Vulkan validation message(s); see above", (*device)->validation_messages())};
-        const std::string path = job.frames == 1 && !job.single_output.empty()
-                                     ? job.single_output
-                                     : (std::filesystem::path(job.output_dir) / fmt::format("frame_{:04}.png", i)).string();
+            return Error{ErrorCode::device_error,
+                         fmt::format("{} Vulkan validation message(s); see above", (*device)->validation_messages())};
+        const std::string path =
+            job.frames == 1 && !job.single_output.empty()
+                ? job.single_output
+                : (std::filesystem::path(job.output_dir) / fmt::format("frame_{:04}.png", i)).string();
         if (auto st = detail::write_png_rgba8(path, image->width, image->height, image->pixels); !st) return st.error();
         result.files.push_back(path);
         if (auto t = (*renderer)->timings(frame.frame_index); t) {
-            frames.push_back({{"frame", i}, {"time_s", frame.time}, {"sky_and_terrain_ms", t->sky_and_terrain_ms},
-                              {"scene_copy_ms", t->scene_copy_ms}, {"water_ms", t->water_ms}, {"total_ms", t->total_ms}});
+            frames.push_back({{"frame", i},
+                              {"time_s", frame.time},
+                              {"sky_and_terrain_ms", t->sky_and_terrain_ms},
+                              {"scene_copy_ms", t->scene_copy_ms},
+                              {"water_ms", t->water_ms},
+                              {"total_ms", t->total_ms}});
         }
     }
     const render::RendererStats s = (*renderer)->stats();
@@ -93,8 +103,11 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                     {"size", {job.extent.width, job.extent.height}},
                     {"view", std::string(render::to_string(job.view))},
                     {"frames", frames},
-                    {"counts", {{"terrain_vertices", s.terrain_vertices}, {"terrain_triangles", s.terrain_triangles},
-                                {"water_patches", s.water_patches}, {"waves", s.waves}}},
+                    {"counts",
+                     {{"terrain_vertices", s.terrain_vertices},
+                      {"terrain_triangles", s.terrain_triangles},
+                      {"water_patches", s.water_patches},
+                      {"waves", s.waves}}},
                     {"units", "milliseconds of GPU time from timestamp queries"}};
     return result;
 }

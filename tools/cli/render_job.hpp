@@ -14,18 +14,18 @@ namespace tidewater::cli {
 
 struct RenderJob {
     VkExtent2D extent{1280, 720};
-    double start_time = 0.0;     ///< s
+    double start_time = 0.0;  ///< s
     int frames = 1;
     double fps = 30.0;
     render::DebugView view = render::DebugView::shaded;
     std::optional<render::Camera> camera;  ///< Default: the scene's camera or an offshore view.
-    std::string single_output;   ///< PNG path when frames == 1; else frame_NNNN.png in output_dir.
+    std::string single_output;             ///< PNG path when frames == 1; else frame_NNNN.png in output_dir.
     std::string output_dir;
     bool validate = false;
-    std::optional<glm::dvec3> sun_direction;  ///< Toward the sun; default FrameInfo's.
-    double sky_turbidity = 2.5;               ///< Preetham sky, in [1.7, 10].
+    std::optional<glm::dvec3> sun_direction;                ///< Toward the sun; default FrameInfo's.
+    double sky_turbidity = 2.5;                             ///< Preetham sky, in [1.7, 10].
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Multisampling (antialiased edges).
-    bool water_per_sample = false;  ///< RendererInitInfo::shade_water_per_sample (samples > 1).
+    bool water_per_sample = false;                          ///< RendererInitInfo::shade_water_per_sample (samples > 1).
 };
 
 struct RenderResult {

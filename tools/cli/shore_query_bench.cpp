@@ -1,20 +1,20 @@
 #include "shore_query_bench.hpp"
 
-#include "bench_timing.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <random>
 
-#include "tidewater/detail/reference.hpp"
+#include "bench_timing.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/reference.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
-#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater::cli {
 
@@ -25,17 +25,20 @@ constexpr double kBenchTime = 1000.25;  // s
 constexpr std::size_t kBatch = 400;     // 100 floating objects, 4 points each
 constexpr double kBoatSpeed = 1.0;      // m/s, the harbour boats' drift
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 /// Points on the shore grid where the signed shore distance lies in [lo, hi] m, jittered
 /// within their texel, in a fixed random order.
-std::vector<glm::dvec2> shore_band(const ShoreWaves& shore, double lo, double hi, std::size_t count, std::uint64_t seed) {
+std::vector<glm::dvec2> shore_band(const ShoreWaves& shore, double lo, double hi, std::size_t count,
+                                   std::uint64_t seed) {
     std::vector<glm::dvec2> centres;
     const int n = shore.resolution();
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const double d = shore.shore_distance()[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)];
+            const double d = shore.shore_distance()[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+                                                    static_cast<std::size_t>(i)];
             if (d >= lo && d <= hi) centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
         }
     std::vector<glm::dvec2> pts;
@@ -58,7 +61,7 @@ std::vector<glm::dvec2> open_sea(std::size_t count, std::uint64_t seed) {
 }
 
 struct Accuracy {
-    double height = 0.0;     // m
+    double height = 0.0;  // m
     double normal_deg = 0.0;
     double dry_motion = 0.0;  // largest |displacement| + |velocity| at dry points
     std::size_t dry = 0;
@@ -116,7 +119,8 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
     j["kernel"] = query_kernel_name();
     j["waves"] = shore_body.waves().size();
     j["points"] = config.points;
-    j["units"] = {{"queries_per_second", "1/s"}, {"batch_ms", "ms"}, {"height_error", "m"}, {"normal_error", "degrees"}};
+    j["units"] = {
+        {"queries_per_second", "1/s"}, {"batch_ms", "ms"}, {"height_error", "m"}, {"normal_error", "degrees"}};
 
     std::vector<unsigned> thread_counts{1u};
     const unsigned all = config.threads == 0 ? 0u : config.threads;
@@ -134,11 +138,15 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
             const std::vector<glm::dvec2>* pts;
         };
         for (const Case& c : {Case{"open_water", &*open_body, &open}, Case{"shore", &shore_body, &near}}) {
-            if (progress) progress(fmt::format("shore: {} with {} thread(s)", c.name, threads == 0 ? "all" : std::to_string(threads)));
+            if (progress)
+                progress(
+                    fmt::format("shore: {} with {} thread(s)", c.name, threads == 0 ? "all" : std::to_string(threads)));
             Status st;
-            const double th = best_time(config.repeats, [&] { st = query_heights(*c.body, kBenchTime, *c.pts, heights, opt); });
+            const double th =
+                best_time(config.repeats, [&] { st = query_heights(*c.body, kBenchTime, *c.pts, heights, opt); });
             if (!st) return st.error();
-            const double tf = best_time(config.repeats, [&] { st = query_surface(*c.body, kBenchTime, *c.pts, full, opt); });
+            const double tf =
+                best_time(config.repeats, [&] { st = query_surface(*c.body, kBenchTime, *c.pts, full, opt); });
             if (!st) return st.error();
             double evals = 0.0;
             for (const auto& p : full) evals += p.iterations;
@@ -146,8 +154,10 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
                            {"surface_per_second", static_cast<double>(c.pts->size()) / tf},
                            {"mean_newton_evaluations", evals / static_cast<double>(full.size())}};
         }
-        row["shore_over_open_heights"] = row["shore"]["heights_per_second"].get<double>() / row["open_water"]["heights_per_second"].get<double>();
-        row["shore_over_open_surface"] = row["shore"]["surface_per_second"].get<double>() / row["open_water"]["surface_per_second"].get<double>();
+        row["shore_over_open_heights"] =
+            row["shore"]["heights_per_second"].get<double>() / row["open_water"]["heights_per_second"].get<double>();
+        row["shore_over_open_surface"] =
+            row["shore"]["surface_per_second"].get<double>() / row["open_water"]["surface_per_second"].get<double>();
         j["throughput"].push_back(row);
     }
 
@@ -167,7 +177,8 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
         for (std::size_t b = 0; b < boats.size(); ++b) {
             const glm::dvec2 fwd(std::cos(heading[b]), std::sin(heading[b])), side(-fwd.y, fwd.x);
             const glm::dvec2 centre = boats[b] + kBoatSpeed * t * fwd;
-            for (const glm::dvec2 corner : {glm::dvec2(2.0, 1.0), glm::dvec2(2.0, -1.0), glm::dvec2(-2.0, 1.0), glm::dvec2(-2.0, -1.0)})
+            for (const glm::dvec2 corner :
+                 {glm::dvec2(2.0, 1.0), glm::dvec2(2.0, -1.0), glm::dvec2(-2.0, 1.0), glm::dvec2(-2.0, -1.0)})
                 pts.push_back(centre + corner.x * fwd + corner.y * side);
         }
     };
@@ -189,8 +200,9 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
                 }
                 const double time = kBenchTime + call / 60.0;
                 const auto t0 = Clock::now();
-                const Status st = std::string(kind) == "heights" ? query_heights(shore_body, time, batch, std::span(h.data(), batch.size()))
-                                                                 : query_surface(shore_body, time, batch, std::span(out.data(), batch.size()));
+                const Status st = std::string(kind) == "heights"
+                                      ? query_heights(shore_body, time, batch, std::span(h.data(), batch.size()))
+                                      : query_surface(shore_body, time, batch, std::span(out.data(), batch.size()));
                 times.push_back(seconds_since(t0));
                 if (!st) return st.error();
             }
@@ -203,16 +215,21 @@ Result<nlohmann::json> run_shore_query_bench(const ShoreBenchConfig& config,
     if (progress) progress("shore: accuracy against the scalar double path");
     const Accuracy a = accuracy(shore_body, near, config.accuracy_samples);
     const Accuracy o = accuracy(*open_body, open, config.accuracy_samples);
-    j["accuracy"] = {{"shore_max_height_error", a.height}, {"shore_max_normal_error", a.normal_deg},
-                     {"open_max_height_error", o.height}, {"open_max_normal_error", o.normal_deg},
-                     {"dry_points", a.dry}, {"dry_max_motion", a.dry_motion},
-                     {"shore_unconverged", a.unconverged}, {"samples", std::min(config.accuracy_samples, near.size())}};
+    j["accuracy"] = {{"shore_max_height_error", a.height},
+                     {"shore_max_normal_error", a.normal_deg},
+                     {"open_max_height_error", o.height},
+                     {"open_max_normal_error", o.normal_deg},
+                     {"dry_points", a.dry},
+                     {"dry_max_motion", a.dry_motion},
+                     {"shore_unconverged", a.unconverged},
+                     {"samples", std::min(config.accuracy_samples, near.size())}};
     return j;
 }
 
 std::string shore_query_bench_markdown(const nlohmann::json& r) {
-    std::string s = fmt::format("Default island, {} waves, kernel `{}`, {} points per run\n\n", r["waves"].get<std::size_t>(),
-                                r["kernel"].get<std::string>(), r["points"].get<std::size_t>());
+    std::string s =
+        fmt::format("Default island, {} waves, kernel `{}`, {} points per run\n\n", r["waves"].get<std::size_t>(),
+                    r["kernel"].get<std::string>(), r["points"].get<std::size_t>());
     s += "| threads | case | heights/s | surface/s | Newton evals |\n|---|---|---:|---:|---:|\n";
     for (const auto& row : r["throughput"]) {
         for (const char* c : {"open_water", "shore"})
@@ -226,15 +243,19 @@ std::string shore_query_bench_markdown(const nlohmann::json& r) {
     s += "\n400 points near the shore, one call on one thread (median, p95 in brackets):\n\n"
          "| batch | heights (ms) | full surface (ms) |\n|---|---:|---:|\n";
     for (const char* scenario : {"harbour", "scattered"})
-        s += fmt::format("| {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) |\n", scenario, b[scenario]["heights"]["median_ms"].get<double>(),
-                         b[scenario]["heights"]["p95_ms"].get<double>(), b[scenario]["surface"]["median_ms"].get<double>(),
-                         b[scenario]["surface"]["p95_ms"].get<double>());
+        s += fmt::format(
+            "| {} | {:.4f} ({:.4f}) | {:.4f} ({:.4f}) |\n", scenario, b[scenario]["heights"]["median_ms"].get<double>(),
+            b[scenario]["heights"]["p95_ms"].get<double>(), b[scenario]["surface"]["median_ms"].get<double>(),
+            b[scenario]["surface"]["p95_ms"].get<double>());
     const auto& a = r["accuracy"];
-    s += fmt::format("\nAgainst the scalar double path ({} points, {} left unconverged by either): shore height {:.2e} m, normal {:.2e} deg; "
-                     "open water height {:.2e} m, normal {:.2e} deg; {} dry points, largest displacement + velocity {:.1e}\n",
-                     a["samples"].get<std::size_t>(), a["shore_unconverged"].get<std::size_t>(), a["shore_max_height_error"].get<double>(), a["shore_max_normal_error"].get<double>(),
-                     a["open_max_height_error"].get<double>(), a["open_max_normal_error"].get<double>(), a["dry_points"].get<std::size_t>(),
-                     a["dry_max_motion"].get<double>());
+    s += fmt::format(
+        "\nAgainst the scalar double path ({} points, {} left unconverged by either): shore height {:.2e} m, normal "
+        "{:.2e} deg; "
+        "open water height {:.2e} m, normal {:.2e} deg; {} dry points, largest displacement + velocity {:.1e}\n",
+        a["samples"].get<std::size_t>(), a["shore_unconverged"].get<std::size_t>(),
+        a["shore_max_height_error"].get<double>(), a["shore_max_normal_error"].get<double>(),
+        a["open_max_height_error"].get<double>(), a["open_max_normal_error"].get<double>(),
+        a["dry_points"].get<std::size_t>(), a["dry_max_motion"].get<double>());
     return s;
 }
 

@@ -1,8 +1,9 @@
 #include "time_range.hpp"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
-#include <fmt/format.h>
 #include <string_view>
 
 namespace tidewater::cli {
@@ -35,7 +36,8 @@ Result<std::vector<double>> parse_time_range(const std::string& text, const char
     if (auto st = check_time(t0, option); !st) return st.error();
     if (auto st = check_time(t1, option); !st) return st.error();
     if (!(dt > 0.0)) return Error{ErrorCode::invalid_argument, fmt::format("{}: dt must be > 0 (got {})", option, dt)};
-    if (t1 < t0) return Error{ErrorCode::invalid_argument, fmt::format("{}: t1 ({}) is before t0 ({})", option, t1, t0)};
+    if (t1 < t0)
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: t1 ({}) is before t0 ({})", option, t1, t0)};
     const double steps = std::floor((t1 - t0) / dt * (1.0 + 1e-9) + 1e-6) + 1.0;
     if (steps > static_cast<double>(kMaxTimeSteps)) {
         return Error{ErrorCode::invalid_argument,
@@ -48,7 +50,8 @@ Result<std::vector<double>> parse_time_range(const std::string& text, const char
 }
 
 Result<std::vector<double>> times_from_options(const std::optional<double>& time, const std::string& times) {
-    if (time.has_value() == !times.empty()) return Error{ErrorCode::invalid_argument, "give exactly one of --time and --times"};
+    if (time.has_value() == !times.empty())
+        return Error{ErrorCode::invalid_argument, "give exactly one of --time and --times"};
     if (!time) return parse_time_range(times, "--times");
     if (auto st = check_time(*time, "--time"); !st) return st.error();
     return std::vector<double>{*time};

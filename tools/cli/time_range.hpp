@@ -9,7 +9,7 @@
 
 namespace tidewater::cli {
 
-inline constexpr double kMaxAbsTime = 1e9;        ///< s; beyond this nothing is meaningful.
+inline constexpr double kMaxAbsTime = 1e9;  ///< s; beyond this nothing is meaningful.
 inline constexpr std::size_t kMaxTimeSteps = 1'000'000;
 
 /// Checks a single time value named `option` in messages.

@@ -1,8 +1,9 @@
 // tidewater bake: a scene's bake (bake_scene: one shoreline bake, the shore model
 // sampling it, the lakes and rivers and the lakes' shore models) saved as 16-bit PNGs
 // with JSON sidecars, whole or not at all. A scene loads it with "shore": {"bake": "folder"}.
-#include <cstdio>
 #include <fmt/format.h>
+
+#include <cstdio>
 #include <memory>
 #include <string_view>
 
@@ -29,7 +30,7 @@ struct BakeArgs {
 
 /// A progress line every 10% of the whole bake, naming the stage.
 class Progress {
-public:
+  public:
     explicit Progress(bool quiet) : quiet_(quiet) {}
     void operator()(std::string_view stage, double f) {
         const int percent = static_cast<int>(f * 100.0);
@@ -39,7 +40,7 @@ public:
         }
     }
 
-private:
+  private:
     bool quiet_;
     int last_ = -10;
 };
@@ -52,13 +53,15 @@ int run_bake(const BakeArgs& a) {
     const bool bodies = !scene->lakes.empty() || !scene->rivers.empty();
     const bool ocean_shore = scene->shore.enabled && scene->has_ocean;
     if (!ocean_shore && !bodies)
-        return fail(verb, fmt::format("scene \"{}\" has its shore disabled and no lakes or rivers: there is nothing to bake", scene->name));
+        return fail(verb,
+                    fmt::format("scene \"{}\" has its shore disabled and no lakes or rivers: there is nothing to bake",
+                                scene->name));
     // This verb makes the scene's bake: a saved one it names is not loaded but redone.
     scene->shore.bake_folder.clear();
     if (a.model_resolution != 0) scene->shore.resolution = a.model_resolution;
     if (!a.quiet)
-        std::fprintf(stderr, "bake: shore model %dx%d over a %dx%d shoreline, %zu waves\n", scene->shore.resolution, scene->shore.resolution,
-                     a.resolution, a.resolution, scene->ocean.waves().size());
+        std::fprintf(stderr, "bake: shore model %dx%d over a %dx%d shoreline, %zu waves\n", scene->shore.resolution,
+                     scene->shore.resolution, a.resolution, a.resolution, scene->ocean.waves().size());
     SceneBakeOptions options;
     options.distance_resolution = a.resolution;
     options.threads = a.threads;
@@ -71,17 +74,20 @@ int run_bake(const BakeArgs& a) {
     if (ocean_shore) {
         const ShoreWaves& model = *(*baked)->bake->ocean_shore;
         const ShoreField& field = *(*baked)->bake->shoreline;
-        std::printf("  ocean: shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu shoreline "
-                    "segments, %zu land polygons, %zu enclosed waters\n",
-                    model.resolution(), model.resolution(), model.texel(), model.wave_count(), field.resolution, field.resolution, field.texel,
-                    field.segment_count, field.polygons, field.holes);
+        std::printf(
+            "  ocean: shore model %dx%d (%.2f m texels, %zu waves); signed distance %dx%d (%.2f m texels): %zu "
+            "shoreline "
+            "segments, %zu land polygons, %zu enclosed waters\n",
+            model.resolution(), model.resolution(), model.texel(), model.wave_count(), field.resolution,
+            field.resolution, field.texel, field.segment_count, field.polygons, field.holes);
     }
     const BodySummary summary = summarize_bodies(**baked);
-    for (const LakeSummary& l : summary.lakes) std::printf("  lake \"%s\": level %.2f m, %.0f m^2\n", l.name.c_str(), l.level, l.area);
+    for (const LakeSummary& l : summary.lakes)
+        std::printf("  lake \"%s\": level %.2f m, %.0f m^2\n", l.name.c_str(), l.level, l.area);
     for (const RiverSummary& r : summary.rivers)
-        std::printf("  river \"%s\": %.0f m to %s%s%s, %.2f m^3/s, grid %dx%d at %.2f m, %d island%s\n", r.name.c_str(), r.length,
-                    r.ends_in.c_str(), r.receiver.empty() ? "" : " ", r.receiver.c_str(), r.discharge, r.grid_nx, r.grid_nz, r.texel,
-                    r.islands, r.islands == 1 ? "" : "s");
+        std::printf("  river \"%s\": %.0f m to %s%s%s, %.2f m^3/s, grid %dx%d at %.2f m, %d island%s\n", r.name.c_str(),
+                    r.length, r.ends_in.c_str(), r.receiver.empty() ? "" : " ", r.receiver.c_str(), r.discharge,
+                    r.grid_nx, r.grid_nz, r.texel, r.islands, r.islands == 1 ? "" : "s");
     return 0;
 }
 
@@ -89,11 +95,14 @@ int run_bake(const BakeArgs& a) {
 
 Verb add_bake_verb(CLI::App& app) {
     auto args = std::make_shared<BakeArgs>();
-    CLI::App* cmd = app.add_subcommand("bake", "Bake the shore model (per-wave fields), the shoreline, its signed distance and the depth "
-                                                "to a folder a scene can load");
+    CLI::App* cmd =
+        app.add_subcommand("bake",
+                           "Bake the shore model (per-wave fields), the shoreline, its signed distance and the depth "
+                           "to a folder a scene can load");
     cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--out", args->out, "Output folder (written whole or not at all)")->required();
-    cmd->add_option("--resolution", args->resolution, "Texels per side of the signed distance field (8 to 8192)")->capture_default_str();
+    cmd->add_option("--resolution", args->resolution, "Texels per side of the signed distance field (8 to 8192)")
+        ->capture_default_str();
     cmd->add_option("--model-resolution", args->model_resolution,
                     "Texels per side of the per-wave shore model (16 to 4096; default: the scene's shore.resolution)");
     cmd->add_option("--tolerance", args->tolerance, "Shoreline simplification tolerance, m (0 = half a texel)");

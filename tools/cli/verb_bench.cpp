@@ -50,7 +50,8 @@ int run_bench(const BenchArgs& a) {
         json = report->dump(2) + "\n";
         table = fit_bench_markdown(*report);
 #else
-        return fail(verb, "--fit needs the calibration library: install libceres-dev and libnetcdf-dev and configure again");
+        return fail(verb,
+                    "--fit needs the calibration library: install libceres-dev and libnetcdf-dev and configure again");
 #endif
     } else if (a.bodies) {
         BodiesBenchConfig bodies_config;
@@ -107,8 +108,10 @@ Verb add_bench_verb(CLI::App& app) {
     cmd->add_option("--threads", args->config.threads, "Thread count of the 'all threads' runs (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines on standard error");
     cmd->add_flag("--bake", args->bake, "Benchmark the shore bake instead of the queries");
-    cmd->add_flag("--bodies", args->bodies, "Benchmark the lakes-and-rivers bake (4 km terrain at 1024^2 and 2048^2, re-bake of one reach)");
-    cmd->add_option("--fit", args->fit_refdata, "Benchmark phase-resolved fits on the reference data in this folder (../shared/refdata)");
+    cmd->add_flag("--bodies", args->bodies,
+                  "Benchmark the lakes-and-rivers bake (4 km terrain at 1024^2 and 2048^2, re-bake of one reach)");
+    cmd->add_option("--fit", args->fit_refdata,
+                    "Benchmark phase-resolved fits on the reference data in this folder (../shared/refdata)");
     return {cmd, [args] {
                 for (int w : args->config.wave_counts) {
                     if (w < 1 || w > 64) return fail("bench", "--waves: each count must be in 1..64");

@@ -1,7 +1,8 @@
 // tidewater drift: a floating tracer carried by the scene's currents, as a CSV track.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <memory>
 #include <string>
 
@@ -27,7 +28,8 @@ struct DriftArgs {
 Result<glm::dvec2> parse_start(const std::string& text) {
     const auto comma = text.find(',');
     const auto bad = [&] {
-        return Error{ErrorCode::invalid_argument, fmt::format("--start \"{}\" must be x,z in metres (two finite numbers)", text)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("--start \"{}\" must be x,z in metres (two finite numbers)", text)};
     };
     if (comma == std::string::npos) return bad();
     try {
@@ -58,8 +60,8 @@ int run_drift(const DriftArgs& a) {
 
     std::string text = "t,x,z,height,body\n";
     for (const DriftSample& s : *track)
-        fmt::format_to(std::back_inserter(text), "{:.6f},{:.6f},{:.6f},{:.6f},{}\n", s.time, s.position.x, s.position.y, s.height,
-                       body_name(*scene, s.body));
+        fmt::format_to(std::back_inserter(text), "{:.6f},{:.6f},{:.6f},{:.6f},{}\n", s.time, s.position.x, s.position.y,
+                       s.height, body_name(*scene, s.body));
     // Written whole or not at all.
     AtomicFile file(a.out);
     if (!file.status()) return fail(verb, file.status().error().message);
@@ -67,7 +69,8 @@ int run_drift(const DriftArgs& a) {
     if (auto st = file.commit(); !st) return fail(verb, st.error().message);
     const double travelled = track->back().time - track->front().time;
     std::fprintf(stderr, "tidewater drift: %zu samples over %.3f s, from %s to %s\n", track->size(), travelled,
-                 std::string(body_name(*scene, track->front().body)).c_str(), std::string(body_name(*scene, track->back().body)).c_str());
+                 std::string(body_name(*scene, track->front().body)).c_str(),
+                 std::string(body_name(*scene, track->back().body)).c_str());
     return 0;
 }
 
@@ -75,15 +78,17 @@ int run_drift(const DriftArgs& a) {
 
 Verb add_drift_verb(CLI::App& app) {
     auto args = std::make_shared<DriftArgs>();
-    CLI::App* cmd = app.add_subcommand("drift", "A floating tracer carried by the currents (RK4 on the baked river current)");
+    CLI::App* cmd =
+        app.add_subcommand("drift", "A floating tracer carried by the currents (RK4 on the baked river current)");
     cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--start", args->start, "Start point x,z, m (in water)")->required();
     cmd->add_option("--duration", args->duration, "How long to drift, s (> 0)")->required();
     cmd->add_option("--dt", args->dt, "Integration step, s")->capture_default_str();
     cmd->add_option("--time", args->time, "Clock time at the start, s")->capture_default_str();
     cmd->add_option("--out", args->out, "Output CSV; written whole or not at all")->required();
-    cmd->footer("Output columns: t,x,z,height,body (s, m, m, world y in m, the body's name).\n"
-                "The track stops at the duration or where the next step would leave the water.");
+    cmd->footer(
+        "Output columns: t,x,z,height,body (s, m, m, world y in m, the body's name).\n"
+        "The track stops at the duration or where the next step would leave the water.");
     return {cmd, [args] { return run_drift(*args); }};
 }
 

@@ -1,10 +1,11 @@
 // tidewater inspect: sample the water the runtime draws over a grid and times, then
 // export it for ParaView or render a picture of a field (VTK; optional at configure time).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <memory>
 #include <optional>
 
@@ -26,7 +27,8 @@ namespace tidewater::cli {
 namespace {
 
 struct InspectArgs : DataOptions {
-    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot, size = "1280x720", probe, plot, preset, track;
+    std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot,
+                               size = "1280x720", probe, plot, preset, track;
     std::optional<double> time;
     unsigned threads = 0;
     std::size_t play = 0;
@@ -38,7 +40,8 @@ struct InspectArgs : DataOptions {
 Result<glm::dvec2> parse_point(const std::string& text, const char* option) {
     glm::dvec2 at{0.0};
     char extra = 0;
-    if (std::sscanf(text.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2 || !std::isfinite(at.x) || !std::isfinite(at.y))
+    if (std::sscanf(text.c_str(), "%lf,%lf%c", &at.x, &at.y, &extra) != 2 || !std::isfinite(at.x) ||
+        !std::isfinite(at.y))
         return Error{ErrorCode::invalid_argument, fmt::format("{} \"{}\": expected x,z in metres", option, text)};
     return at;
 }
@@ -59,7 +62,8 @@ int run_overlay(const InspectArgs& a) {
     if (a.preset.empty() || a.plot.empty()) return fail(verb, "--data needs --preset P and --plot PNG");
     auto kind = parse_kind(a.kind);
     if (!kind) return fail(verb, kind.error().message);
-    if (*kind == calibration::RecordKind::profile) return fail(verb, "--data: a profile has no time series to overlay (use gauge or buoy)");
+    if (*kind == calibration::RecordKind::profile)
+        return fail(verb, "--data: a profile has no time series to overlay (use gauge or buoy)");
     auto record = read_data(a, *kind);
     if (!record) return fail(verb, record.error().message);
     auto profile = load_preset(a.preset);
@@ -77,7 +81,8 @@ int run_overlay(const InspectArgs& a) {
     std::vector<SurfacePoint> out(1);
     for (std::size_t k = 0; k < record->size(); ++k) {
         if (*kind == calibration::RecordKind::buoy) {
-            model[k] = evaluate_lagrangian(body->waves(), at, record->axis[k]).displacement.y;  // the buoy rides the particle
+            model[k] =
+                evaluate_lagrangian(body->waves(), at, record->axis[k]).displacement.y;  // the buoy rides the particle
         } else {
             if (auto st = query_surface(*body, record->axis[k], where, out); !st) return fail(verb, st.error().message);
             model[k] = out[0].height;
@@ -87,16 +92,21 @@ int run_overlay(const InspectArgs& a) {
     for (double v : record->z) mean += v;
     mean /= static_cast<double>(record->size());
     for (std::size_t k = 0; k < record->size(); ++k)
-        tss += (record->z[k] - mean) * (record->z[k] - mean), rss += (record->z[k] - model[k]) * (record->z[k] - model[k]);
+        tss += (record->z[k] - mean) * (record->z[k] - mean),
+            rss += (record->z[k] - model[k]) * (record->z[k] - model[k]);
     const double r2 = tss > 0.0 ? 1.0 - rss / tss : 0.0;
-    const std::string title = fmt::format("{} against {} at x = {:g}, z = {:g} m: R^2 {:.4f}", std::filesystem::path(record->source).filename().string(),
+    const std::string title = fmt::format("{} against {} at x = {:g}, z = {:g} m: R^2 {:.4f}",
+                                          std::filesystem::path(record->source).filename().string(),
                                           std::filesystem::path(a.preset).filename().string(), at.x, at.y, r2);
-    if (auto st = inspect::overlay_chart(record->axis, record->z, model, title, "t, s", a.plot); !st) return fail(verb, st.error().message);
+    if (auto st = inspect::overlay_chart(record->axis, record->z, model, title, "t, s", a.plot); !st)
+        return fail(verb, st.error().message);
     std::printf("%s -> %s\n", title.c_str(), a.plot.c_str());
     return 0;
 #else
     (void)a;
-    return fail(verb, "--data needs the calibration library (its readers): install libceres-dev and libnetcdf-dev and configure again");
+    return fail(verb,
+                "--data needs the calibration library (its readers): install libceres-dev and libnetcdf-dev and "
+                "configure again");
 #endif
 }
 
@@ -105,7 +115,8 @@ int run_inspect(const InspectArgs& a) {
     if (!a.data.empty()) return run_overlay(a);
     if (a.export_dir.empty() && a.screenshot.empty() && a.plot.empty() && !a.view)
         return fail(verb, "give --view (interactive), --export DIR, --screenshot PNG and/or --plot PNG --probe x,z");
-    if (a.plot.empty() != a.probe.empty()) return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
+    if (a.plot.empty() != a.probe.empty())
+        return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
     if (!inspect::find_field(a.field)) {
         std::string names;
         for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
@@ -124,7 +135,8 @@ int run_inspect(const InspectArgs& a) {
         grid.max = scene->terrain.extent_center() + glm::dvec2(half);
     } else {
         char extra = 0;
-        if (std::sscanf(a.extent.c_str(), "%lf:%lf,%lf:%lf%c", &grid.min.x, &grid.max.x, &grid.min.y, &grid.max.y, &extra) != 4)
+        if (std::sscanf(a.extent.c_str(), "%lf:%lf,%lf:%lf%c", &grid.min.x, &grid.max.x, &grid.min.y, &grid.max.y,
+                        &extra) != 4)
             return fail(verb, fmt::format("--extent \"{}\": expected x0:x1,z0:z1 in metres", a.extent));
     }
     if (auto st = inspect::validate_grid(grid); !st) return fail(verb, "--resolution/--extent: " + st.error().message);
@@ -141,10 +153,12 @@ int run_inspect(const InspectArgs& a) {
         if (auto st = inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress, &stats); !st)
             return fail(verb, st.error().message);
         const double points = static_cast<double>(grid.points()) * static_cast<double>(times.size());
-        std::printf("exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView): sampling %.3g points/s "
-                    "(%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
-                    times.size(), grid.nx, grid.nz, a.export_dir.c_str(), points / std::max(stats.sample_seconds, 1e-9), stats.sample_seconds,
-                    points / std::max(stats.write_seconds, 1e-9), stats.write_seconds, static_cast<double>(stats.bytes) / 1e6);
+        std::printf(
+            "exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView): sampling %.3g points/s "
+            "(%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
+            times.size(), grid.nx, grid.nz, a.export_dir.c_str(), points / std::max(stats.sample_seconds, 1e-9),
+            stats.sample_seconds, points / std::max(stats.write_seconds, 1e-9), stats.write_seconds,
+            static_cast<double>(stats.bytes) / 1e6);
     }
     if (!a.plot.empty()) {
         auto parsed = parse_point(a.probe, "--probe");
@@ -154,9 +168,11 @@ int run_inspect(const InspectArgs& a) {
         if (!series) return fail(verb, "--probe: " + series.error().message);
         if (auto st = inspect::probe_chart(*series, a.plot); !st) return fail(verb, st.error().message);
         if (series->dominant_period > 0.0)
-            std::printf("probe at x = %g, z = %g m: dominant period %.4f s -> %s\n", at.x, at.y, series->dominant_period, a.plot.c_str());
+            std::printf("probe at x = %g, z = %g m: dominant period %.4f s -> %s\n", at.x, at.y,
+                        series->dominant_period, a.plot.c_str());
         else
-            std::printf("probe at x = %g, z = %g m: the height does not change (dry land or still water) -> %s\n", at.x, at.y, a.plot.c_str());
+            std::printf("probe at x = %g, z = %g m: the height does not change (dry land or still water) -> %s\n", at.x,
+                        at.y, a.plot.c_str());
     }
     if (a.view) {
         auto size = parse_pair(a.size, "--size");
@@ -190,7 +206,8 @@ int run_inspect(const InspectArgs& a) {
             if (!track) return fail(verb, "--track: " + track.error().message);
             o.track = std::move(track).value();
         }
-        if (auto st = inspect::screenshot(*scene, grid, times.front(), o, a.screenshot); !st) return fail(verb, st.error().message);
+        if (auto st = inspect::screenshot(*scene, grid, times.front(), o, a.screenshot); !st)
+            return fail(verb, st.error().message);
         std::printf("rendered %s at t = %g s to %s\n", a.field.c_str(), times.front(), a.screenshot.c_str());
     }
     return 0;
@@ -201,34 +218,46 @@ int run_inspect(const InspectArgs& a) {
 
 Verb add_inspect_verb(CLI::App& app) {
     auto a = std::make_shared<InspectArgs>();
-    CLI::App* cmd = app.add_subcommand("inspect", "Sample the water over a grid and times: ParaView export or a picture of a field (VTK)");
+    CLI::App* cmd = app.add_subcommand(
+        "inspect", "Sample the water over a grid and times: ParaView export or a picture of a field (VTK)");
     cmd->add_option("--scene", a->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--extent", a->extent, "x0:x1,z0:z1, m (default: the terrain's extent)");
     cmd->add_option("--resolution", a->resolution, "Grid points NXxNZ")->capture_default_str();
     cmd->add_option("--time", a->time, "Clock time, s");
     cmd->add_option("--times", a->times, "Time range t0:t1:dt, s (export: one file per time)");
-    cmd->add_option("--field", a->field, "Field to colour: height, displacement, normal, velocity, jacobian, foam, depth, "
-                                         "shore_distance, wet, flow, body, wake")
+    cmd->add_option("--field", a->field,
+                    "Field to colour: height, displacement, normal, velocity, jacobian, foam, depth, "
+                    "shore_distance, wet, flow, body, wake")
         ->capture_default_str();
-    cmd->add_option("--export", a->export_dir, "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
+    cmd->add_option("--export", a->export_dir,
+                    "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
     cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");
     cmd->add_option("--size", a->size, "Screenshot size WxH")->capture_default_str();
-    cmd->add_flag("--glyphs", a->glyphs, "With --screenshot: arrows of the current (--field flow) or else of the velocity");
-    cmd->add_option("--track", a->track, "With --screenshot: a CSV with columns x and z (a drift track) drawn on the water");
-    cmd->add_option("--probe", a->probe, "x,z: a point whose height over --times is charted with its spectrum (--plot)");
+    cmd->add_flag("--glyphs", a->glyphs,
+                  "With --screenshot: arrows of the current (--field flow) or else of the velocity");
+    cmd->add_option("--track", a->track,
+                    "With --screenshot: a CSV with columns x and z (a drift track) drawn on the water");
+    cmd->add_option("--probe", a->probe,
+                    "x,z: a point whose height over --times is charted with its spectrum (--plot)");
     cmd->add_option("--plot", a->plot, "Write the probe chart (height against time and its spectrum) to this PNG");
     cmd->add_option("--threads", a->threads, "Query threads (0 = all)");
     add_data_options(cmd, *a);
-    cmd->add_option("--preset", a->preset, "With --data: the preset whose prediction is overlaid on the record (--plot)");
+    cmd->add_option("--preset", a->preset,
+                    "With --data: the preset whose prediction is overlaid on the record (--plot)");
     cmd->add_flag("--quiet", a->quiet, "No progress lines");
-    cmd->add_option("--play", a->play, "With --view: play this many time steps offscreen (resample and draw each), print steps/s and exit");
-    cmd->add_flag("--view", a->view, "Open the interactive viewer over --times (time slider, play/pause, fields, glyphs, probe)");
+    cmd->add_option(
+        "--play", a->play,
+        "With --view: play this many time steps offscreen (resample and draw each), print steps/s and exit");
+    cmd->add_flag("--view", a->view,
+                  "Open the interactive viewer over --times (time slider, play/pause, fields, glyphs, probe)");
 #if defined(TIDEWATER_HAVE_INSPECT)
     return {cmd, [a] { return run_inspect(*a); }};
 #else
     return {cmd, [] {
-                return fail("inspect", "this build has no inspector: install VTK (apt-get install libvtk9-dev) and configure again "
-                                       "with -DTIDEWATER_BUILD_INSPECTOR=ON");
+                return fail(
+                    "inspect",
+                    "this build has no inspector: install VTK (apt-get install libvtk9-dev) and configure again "
+                    "with -DTIDEWATER_BUILD_INSPECTOR=ON");
             }};
 #endif
 }

@@ -1,12 +1,13 @@
 // tidewater query: the water surface at points from a CSV, at one time or a range.
-#include <cstdio>
 #include <fmt/format.h>
+
+#include <cstdio>
 #include <memory>
 #include <optional>
 
 #include "atomic_file.hpp"
-#include "query_backend.hpp"
 #include "points_csv.hpp"
+#include "query_backend.hpp"
 #include "scene_option.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/world_query.hpp"
@@ -37,7 +38,9 @@ void write_rows(std::string& buffer, const Sink& sink, const Scene& scene, const
     for (std::size_t i = 0; i < points.size(); ++i) {
         const SurfacePoint& s = results[i].surface;
         if (t) fmt::format_to(std::back_inserter(buffer), "{},", *t);
-        fmt::format_to(std::back_inserter(buffer), "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g},{},{:.6g},{:.6g},{:.6g}\n",
+        fmt::format_to(std::back_inserter(buffer),
+                       "{},{},{:.9g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.7g},{:.6g},{:.6g},{},{:.4g},{},{:.6g}"
+                       ",{:.6g},{:.6g}\n",
                        points[i].x, points[i].y, s.height, s.normal.x, s.normal.y, s.normal.z, s.velocity.x,
                        s.velocity.y, s.velocity.z, s.jacobian, s.depth, s.shore_distance, s.wet ? 1 : 0, s.foam,
                        body_name(scene, results[i].body), results[i].flow.x, results[i].flow.y, s.wake);
@@ -106,8 +109,10 @@ int run_query(const QueryArgs& a) {
     }
     sink(buffer);
     if (unconverged > 0) {
-        std::fprintf(stderr, "tidewater query: warning: %zu point(s) at the waterline where the shore folds the surface: "
-                             "best estimates written\n", unconverged);
+        std::fprintf(stderr,
+                     "tidewater query: warning: %zu point(s) at the waterline where the shore folds the surface: "
+                     "best estimates written\n",
+                     unconverged);
     }
     if (file) {
         if (auto st = file->commit(); !st) return fail(verb, st.error().message);
@@ -120,7 +125,8 @@ int run_query(const QueryArgs& a) {
 
 Verb add_query_verb(CLI::App& app) {
     auto args = std::make_shared<QueryArgs>();
-    CLI::App* cmd = app.add_subcommand("query", "Water surface at fixed (x, z) points: height, normal, velocity, Jacobian");
+    CLI::App* cmd =
+        app.add_subcommand("query", "Water surface at fixed (x, z) points: height, normal, velocity, Jacobian");
     cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--time", args->time, "Clock time, s");
     cmd->add_option("--times", args->times, "Time range t0:t1:dt, s (writes a leading t column)");
@@ -130,11 +136,13 @@ Verb add_query_verb(CLI::App& app) {
     cmd->add_option("--backend", args->backend, "cpu, or gpu (a Vulkan compute shader; same columns)")
         ->check(CLI::IsMember({"cpu", "gpu"}))
         ->capture_default_str();
-    cmd->footer("Output columns: [t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake\n"
-                "(SI units; height is world y; velocity is the current plus the waves' orbital velocity; depth is the still\n"
-                "water column at the point (< 0 on land); shore_distance (> 0 over water) comes from the shore model, inf\n"
-                "without one; wet = 1 where the surface is above the terrain; foam 0..1; body is the water body's name, empty\n"
-                "on land; flow_x, flow_z are the current alone, m/s; wake is the boats' wakes' share of the height, m).");
+    cmd->footer(
+        "Output columns: "
+        "[t,]x,z,height,nx,ny,nz,vx,vy,vz,jacobian,depth,shore_distance,wet,foam,body,flow_x,flow_z,wake\n"
+        "(SI units; height is world y; velocity is the current plus the waves' orbital velocity; depth is the still\n"
+        "water column at the point (< 0 on land); shore_distance (> 0 over water) comes from the shore model, inf\n"
+        "without one; wet = 1 where the surface is above the terrain; foam 0..1; body is the water body's name, empty\n"
+        "on land; flow_x, flow_z are the current alone, m/s; wake is the boats' wakes' share of the height, m).");
     return {cmd, [args] { return run_query(*args); }};
 }
 

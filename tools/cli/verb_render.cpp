@@ -1,9 +1,10 @@
 // tidewater render: frames of a scene as PNG, headless, with per-pass GPU times.
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -11,8 +12,8 @@
 #include <string>
 
 #include "atomic_file.hpp"
-#include "scene_option.hpp"
 #include "render_job.hpp"
+#include "scene_option.hpp"
 #include "time_range.hpp"
 #include "verbs.hpp"
 
@@ -45,8 +46,8 @@ Result<VkExtent2D> parse_size(const std::string& text) {
     if (x != std::string::npos) {
         const auto a = std::from_chars(text.data(), text.data() + x, w);
         const auto b = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
-        if (a.ec == std::errc() && a.ptr == text.data() + x && b.ec == std::errc() && b.ptr == text.data() + text.size() &&
-            w >= 16 && h >= 16 && w <= 8192 && h <= 8192)
+        if (a.ec == std::errc() && a.ptr == text.data() + x && b.ec == std::errc() &&
+            b.ptr == text.data() + text.size() && w >= 16 && h >= 16 && w <= 8192 && h <= 8192)
             return VkExtent2D{w, h};
     }
     return Error{ErrorCode::invalid_argument, fmt::format("--size: \"{}\" is not WxH with 16 <= W, H <= 8192", text)};
@@ -55,7 +56,8 @@ Result<VkExtent2D> parse_size(const std::string& text) {
 /// The debug views' names, "shaded, height, ...", from the renderer's own list.
 std::string view_names() {
     std::string names;
-    for (const auto view : render::all_debug_views()) names += (names.empty() ? "" : ", ") + std::string(render::to_string(view));
+    for (const auto view : render::all_debug_views())
+        names += (names.empty() ? "" : ", ") + std::string(render::to_string(view));
     return names;
 }
 
@@ -68,9 +70,11 @@ int run_render(const RenderArgs& a) {
     if (!view) return fail(verb, fmt::format("--view: \"{}\" is not a view ({})", a.view, view_names()));
     if (a.frames < 1 || a.frames > 100000) return fail(verb, "--frames: must be in 1..100000");
     if (!(a.fps > 0.0 && a.fps <= 1000.0)) return fail(verb, "--fps: must be in (0, 1000]");
-    if (a.frames == 1 && a.out.empty() && a.out_dir.empty()) return fail(verb, "give --out FILE.png (or --frames N --out-dir D)");
+    if (a.frames == 1 && a.out.empty() && a.out_dir.empty())
+        return fail(verb, "give --out FILE.png (or --frames N --out-dir D)");
     if (a.frames > 1 && a.out_dir.empty()) return fail(verb, "--frames > 1 needs --out-dir");
-    if (check_time(a.time + (a.frames - 1) / a.fps, "--time").ok() == false) return fail(verb, "--time: the sequence ends out of range");
+    if (check_time(a.time + (a.frames - 1) / a.fps, "--time").ok() == false)
+        return fail(verb, "--time: the sequence ends out of range");
     auto loaded = load_scene_option(a.scene);
     if (!loaded) return fail(verb, loaded.error().message);
     const std::shared_ptr<const Scene> scene = std::move(loaded).value();
@@ -90,9 +94,11 @@ int run_render(const RenderArgs& a) {
             return fail(verb, "--sun: the direction must be finite and non-zero");
         job.sun_direction = sun;
     }
-    if (!(a.turbidity >= 1.7 && a.turbidity <= 10.0)) return fail(verb, fmt::format("--turbidity: {} is out of range (1.7 to 10)", a.turbidity));
+    if (!(a.turbidity >= 1.7 && a.turbidity <= 10.0))
+        return fail(verb, fmt::format("--turbidity: {} is out of range (1.7 to 10)", a.turbidity));
     job.sky_turbidity = a.turbidity;
-    if (a.samples != 1 && a.samples != 2 && a.samples != 4 && a.samples != 8) return fail(verb, fmt::format("--samples: {} is not 1, 2, 4 or 8", a.samples));
+    if (a.samples != 1 && a.samples != 2 && a.samples != 4 && a.samples != 8)
+        return fail(verb, fmt::format("--samples: {} is not 1, 2, 4 or 8", a.samples));
     job.samples = static_cast<VkSampleCountFlagBits>(a.samples);
     if (a.water_per_sample && a.samples == 1) return fail(verb, "--water-per-sample: needs --samples 2, 4 or 8");
     job.water_per_sample = a.water_per_sample;
@@ -112,7 +118,8 @@ int run_render(const RenderArgs& a) {
     auto result = run_render_job(*scene, job);
     if (!result) return fail(verb, result.error().message);
     if (stats_file) {
-        if (auto st = stats_file->write_and_commit(result->stats.dump(2) + "\n"); !st) return fail(verb, st.error().message);
+        if (auto st = stats_file->write_and_commit(result->stats.dump(2) + "\n"); !st)
+            return fail(verb, st.error().message);
     }
     std::printf("rendered %zu frame(s) of \"%s\" at %ux%u on %s: %s%s\n", result->files.size(), scene->name.c_str(),
                 extent->width, extent->height, result->device.c_str(), result->files.front().c_str(),
@@ -138,11 +145,15 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);
     cmd->add_option("--fov", args->fov, "Vertical field of view, degrees");
     cmd->add_option("--sun", args->sun, "Direction toward the sun x y z (y up)")->expected(3);
-    cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")->capture_default_str();
-    cmd->add_flag("--water-per-sample", args->water_per_sample,
-                  "Shade the water at every sample, its waves drawn for a sample's footprint: a grazing far field converges "
-                  "to the supersampled picture (about --samples times the water's cost)");
-    cmd->add_option("--turbidity", args->turbidity, "Air turbidity of the Preetham sky: 2 very clear, 3 clear, 6 hazy (1.7 to 10)")->capture_default_str();
+    cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")
+        ->capture_default_str();
+    cmd->add_flag(
+        "--water-per-sample", args->water_per_sample,
+        "Shade the water at every sample, its waves drawn for a sample's footprint: a grazing far field converges "
+        "to the supersampled picture (about --samples times the water's cost)");
+    cmd->add_option("--turbidity", args->turbidity,
+                    "Air turbidity of the Preetham sky: 2 very clear, 3 clear, 6 hazy (1.7 to 10)")
+        ->capture_default_str();
     cmd->add_flag("--validate", args->validate, "Enable the Khronos validation layer; any message fails the run");
     return {cmd, [args] { return run_render(*args); }};
 }

@@ -1,7 +1,8 @@
 #include "field_sampler.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <limits>
 
 #include "tidewater/query.hpp"
@@ -10,14 +11,16 @@
 namespace tidewater::inspect {
 
 Status validate_grid(const SampleGrid& g) {
-    if (g.nx < 2 || g.nz < 2) return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{}: at least 2x2 points", g.nx, g.nz)};
+    if (g.nx < 2 || g.nz < 2)
+        return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{}: at least 2x2 points", g.nx, g.nz)};
     const double points = static_cast<double>(g.nx) * static_cast<double>(g.nz);
     if (points > static_cast<double>(kMaxGridPoints))
-        return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{} is {:.3g} points, more than the {} one sample holds: "
-                                                              "lower the resolution or split the extent",
-                                                              g.nx, g.nz, points, kMaxGridPoints)};
-    if (!std::isfinite(g.min.x) || !std::isfinite(g.min.y) || !std::isfinite(g.max.x) || !std::isfinite(g.max.y) || !(g.max.x > g.min.x) ||
-        !(g.max.y > g.min.y))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("grid {}x{} is {:.3g} points, more than the {} one sample holds: "
+                                 "lower the resolution or split the extent",
+                                 g.nx, g.nz, points, kMaxGridPoints)};
+    if (!std::isfinite(g.min.x) || !std::isfinite(g.min.y) || !std::isfinite(g.max.x) || !std::isfinite(g.max.y) ||
+        !(g.max.x > g.min.x) || !(g.max.y > g.min.y))
         return Error{ErrorCode::invalid_argument, "grid extent: need finite x0 < x1 and z0 < z1"};
     return {};
 }
@@ -34,7 +37,8 @@ const std::vector<FieldInfo>& field_infos() {
         {"shore_distance", 1, "m", "signed distance to the shoreline (+ over water; inf without a shore model)"},
         {"wet", 1, "1", "1 where the surface stands above the terrain"},
         {"flow", 3, "m/s", "depth-averaged current alone (x, 0, z): rivers and their plumes, 0 elsewhere"},
-        {"body", 1, "1", "water body id: 0 land, 1 ocean, then the lakes and the rivers in the scene's order (names in body_names)"},
+        {"body", 1, "1",
+         "water body id: 0 land, 1 ocean, then the lakes and the rivers in the scene's order (names in body_names)"},
         {"wake", 1, "m", "the boats' wakes' share of the height (the scene's boats)"},
     };
     return infos;
@@ -69,8 +73,7 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     const std::size_t n = grid.points();
     std::vector<glm::dvec2> where(n);
     for (int j = 0; j < grid.nz; ++j)
-        for (int i = 0; i < grid.nx; ++i)
-            where[grid.index(i, j)] = grid.point(i, j);
+        for (int i = 0; i < grid.nx; ++i) where[grid.index(i, j)] = grid.point(i, j);
     std::vector<WorldPoint> out(n);
     QueryOptions options;
     options.threads = threads;
@@ -80,15 +83,18 @@ Result<FieldSample> sample_field(const Scene& scene, const SampleGrid& grid, dou
     s.time = time;
     s.has_shore = scene.ocean.shore() != nullptr || !scene.lakes.empty() || !scene.rivers.empty();
     s.body_names = body_names(scene);
-    s.surface.resize(n), s.height.resize(n), s.jacobian.resize(n), s.foam.resize(n), s.depth.resize(n), s.shore_distance.resize(n);
-    s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n), s.flow.resize(n), s.body.resize(n);
+    s.surface.resize(n), s.height.resize(n), s.jacobian.resize(n), s.foam.resize(n), s.depth.resize(n),
+        s.shore_distance.resize(n);
+    s.wet.resize(n), s.displacement.resize(n), s.normal.resize(n), s.velocity.resize(n), s.flow.resize(n),
+        s.body.resize(n);
     s.wake.resize(n);
     const double lakes = static_cast<double>(scene.lakes.size());
     for (std::size_t k = 0; k < n; ++k) {
         const SurfacePoint& p = out[k].surface;
         // The body's rest level: the displacement is measured from it.
-        const double level = out[k].body.kind == BodyKind::lake ? scene.lakes[static_cast<std::size_t>(out[k].body.index)].body.level()
-                                                                  : scene.water_level();
+        const double level = out[k].body.kind == BodyKind::lake
+                                 ? scene.lakes[static_cast<std::size_t>(out[k].body.index)].body.level()
+                                 : scene.water_level();
         s.surface[k] = {where[k].x, p.height, where[k].y};
         s.height[k] = p.height;
         // A river's rest surface falls: the terrain (carved) plus its still water column.
@@ -122,8 +128,7 @@ std::vector<std::string> body_names(const Scene& scene) {
 std::vector<double> sample_terrain(const Scene& scene, const SampleGrid& grid) {
     std::vector<double> h(grid.points());
     for (int j = 0; j < grid.nz; ++j)
-        for (int i = 0; i < grid.nx; ++i)
-            h[grid.index(i, j)] = scene.terrain.height_at(grid.point(i, j));
+        for (int i = 0; i < grid.nx; ++i) h[grid.index(i, j)] = scene.terrain.height_at(grid.point(i, j));
     return h;
 }
 

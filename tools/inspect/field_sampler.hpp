@@ -3,11 +3,10 @@
 // Units: metres, seconds, m/s. Threading: reentrant; `threads` query threads.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
@@ -19,9 +18,13 @@ struct SampleGrid {
     glm::dvec2 min{-50.0}, max{50.0};
     int nx = 64, nz = 64;
     std::size_t points() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
-    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i);
+    }
     /// The world (x, z) of point (i, j), m.
-    glm::dvec2 point(int i, int j) const { return min + (max - min) * glm::dvec2(i / double(nx - 1), j / double(nz - 1)); }
+    glm::dvec2 point(int i, int j) const {
+        return min + (max - min) * glm::dvec2(i / double(nx - 1), j / double(nz - 1));
+    }
 };
 
 /// The largest grid sampled in one go (about 1.6 GB of arrays).

@@ -1,8 +1,9 @@
 #include "probe.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 #include <unsupported/Eigen/FFT>
 
 #include "tidewater/constants.hpp"
@@ -11,8 +12,11 @@
 namespace tidewater::inspect {
 
 Result<ProbeSeries> probe(const Scene& scene, glm::dvec2 at, const std::vector<double>& times) {
-    if (times.size() < 16) return Error{ErrorCode::invalid_argument, fmt::format("probe: {} time steps, at least 16 make a spectrum", times.size())};
-    if (!std::isfinite(at.x) || !std::isfinite(at.y)) return Error{ErrorCode::invalid_argument, "probe: the point must be finite"};
+    if (times.size() < 16)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("probe: {} time steps, at least 16 make a spectrum", times.size())};
+    if (!std::isfinite(at.x) || !std::isfinite(at.y))
+        return Error{ErrorCode::invalid_argument, "probe: the point must be finite"};
     const double dt = (times.back() - times.front()) / static_cast<double>(times.size() - 1);
     ProbeSeries p;
     p.at = at;

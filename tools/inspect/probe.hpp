@@ -1,9 +1,8 @@
 // A probe: the height at one point over time and its spectrum (no VTK here).
 #pragma once
 
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
@@ -11,10 +10,11 @@
 namespace tidewater::inspect {
 
 struct ProbeSeries {
-    glm::dvec2 at{0.0};              ///< x, z, m.
-    std::vector<double> time, height;  ///< s, m (world y of the surface).
+    glm::dvec2 at{0.0};                    ///< x, z, m.
+    std::vector<double> time, height;      ///< s, m (world y of the surface).
     std::vector<double> frequency, power;  ///< Hz, m^2/Hz (one-sided, Hann window, zero-padded x8).
-    double dominant_period = 0.0;    ///< s, of the strongest spectral peak (parabolic refinement); 0 where the height never changes.
+    double dominant_period =
+        0.0;  ///< s, of the strongest spectral peak (parabolic refinement); 0 where the height never changes.
 };
 
 /// Samples the surface at `at` over `times`, which must be evenly spaced (a t0:t1:dt

@@ -1,4 +1,7 @@
 // The probe chart (VTK's 2D charts): height against time and its spectrum.
+#include "vtk_chart.hpp"
+
+#include <fmt/format.h>
 #include <vtkAxis.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
@@ -11,9 +14,6 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
-#include <fmt/format.h>
-
-#include "vtk_chart.hpp"
 #include "vtk_output.hpp"
 #include "vtk_png.hpp"
 
@@ -21,7 +21,8 @@ namespace tidewater::inspect {
 
 namespace {
 
-vtkNew<vtkTable> table_of(const char* x_name, const std::vector<double>& x, const char* y_name, const std::vector<double>& y, std::size_t count) {
+vtkNew<vtkTable> table_of(const char* x_name, const std::vector<double>& x, const char* y_name,
+                          const std::vector<double>& y, std::size_t count) {
     vtkNew<vtkTable> table;
     vtkNew<vtkDoubleArray> xs, ys;
     xs->SetName(x_name);
@@ -64,8 +65,9 @@ vtkSmartPointer<vtkContextView> probe_view(const ProbeSeries& p, int width, int 
     vtkPlot* power = right->AddPlot(vtkChart::LINE);
     power->SetInputData(spectrum, 0, 1);
     power->SetColor(214, 39, 40, 255);
-    style(right, p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
-                                         : std::string("spectrum: the height does not change here (dry land or still water)"),
+    style(right,
+          p.dominant_period > 0.0 ? fmt::format("spectrum: dominant period {:.3f} s", p.dominant_period)
+                                  : std::string("spectrum: the height does not change here (dry land or still water)"),
           "frequency, Hz", "power, m^2/Hz");
     return view;
 }
@@ -77,8 +79,9 @@ Status probe_chart(const ProbeSeries& p, const std::filesystem::path& png, int w
     return save_window_png(view->GetRenderWindow(), png);
 }
 
-Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured, const std::vector<double>& model,
-                     const std::string& title, const std::string& x_title, const std::filesystem::path& png, int width, int height) {
+Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured,
+                     const std::vector<double>& model, const std::string& title, const std::string& x_title,
+                     const std::filesystem::path& png, int width, int height) {
     if (axis.empty() || measured.size() != axis.size() || model.size() != axis.size())
         return Error{ErrorCode::invalid_argument, "overlay chart: the series have different lengths"};
     vtkNew<vtkTable> table;
@@ -86,7 +89,8 @@ Status overlay_chart(const std::vector<double>& axis, const std::vector<double>&
     x->SetName(x_title.c_str());
     m->SetName("measured");
     p->SetName("preset");
-    for (std::size_t k = 0; k < axis.size(); ++k) x->InsertNextValue(axis[k]), m->InsertNextValue(measured[k]), p->InsertNextValue(model[k]);
+    for (std::size_t k = 0; k < axis.size(); ++k)
+        x->InsertNextValue(axis[k]), m->InsertNextValue(measured[k]), p->InsertNextValue(model[k]);
     table->AddColumn(x);
     table->AddColumn(m);
     table->AddColumn(p);

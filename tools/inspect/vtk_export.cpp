@@ -1,4 +1,5 @@
 // ParaView export: .vts per time step and a .pvd collection (VTK's XML writers).
+#include <fmt/format.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -9,7 +10,6 @@
 #include <vtkXMLStructuredGridWriter.h>
 
 #include <chrono>
-#include <fmt/format.h>
 #include <fstream>
 
 #include "tidewater/detail/atomic_folder.hpp"
@@ -41,7 +41,8 @@ void add_units(vtkStructuredGrid* sg, double time, const std::vector<std::string
     sg->GetFieldData()->AddArray(names);
     vtkNew<vtkStringArray> units;
     units->SetName("units");
-    for (const FieldInfo& f : field_infos()) units->InsertNextValue(fmt::format("{}: {} ({})", f.name, f.unit, f.meaning));
+    for (const FieldInfo& f : field_infos())
+        units->InsertNextValue(fmt::format("{}: {} ({})", f.name, f.unit, f.meaning));
     sg->GetFieldData()->AddArray(units);
     vtkNew<vtkDoubleArray> t;
     t->SetName("TimeValue");
@@ -57,7 +58,8 @@ Status write(vtkStructuredGrid* sg, const fs::path& path) {
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
     writer->SetCompressorTypeToLZ4();
-    if (writer->Write() != 1) return Error{ErrorCode::io_error, fmt::format("{}: VTK could not write the file", path.string())};
+    if (writer->Write() != 1)
+        return Error{ErrorCode::io_error, fmt::format("{}: VTK could not write the file", path.string())};
     return {};
 }
 
@@ -65,8 +67,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
-                    const std::function<void(double)>& progress, ExportStats& stats) {
+Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
+                    unsigned threads, const std::function<void(double)>& progress, ExportStats& stats) {
     // The terrain: a second surface.
     const std::vector<double> ground = sample_terrain(scene, grid);
     std::vector<glm::dvec3> terrain_points(grid.points());
@@ -94,7 +96,9 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
             a->SetNumberOfTuples(static_cast<vtkIdType>(grid.points()));
             double* out = a->WritePointer(0, static_cast<vtkIdType>(grid.points()) * f.components);
             for (std::size_t k = 0; k < grid.points(); ++k)
-                for (int c = 0; c < f.components; ++c) out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] = sample->value(f.name, k, c);
+                for (int c = 0; c < f.components; ++c)
+                    out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] =
+                        sample->value(f.name, k, c);
             sg->GetPointData()->AddArray(a);
         }
         add_units(sg, times[step], sample->body_names);
@@ -114,8 +118,8 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
 
 }  // namespace
 
-Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
-                     const std::function<void(double)>& progress, ExportStats* stats_out) {
+Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
+                     unsigned threads, const std::function<void(double)>& progress, ExportStats* stats_out) {
     if (auto st = validate_grid(grid); !st) return st;
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};

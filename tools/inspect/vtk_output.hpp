@@ -2,8 +2,8 @@
 // Everything that includes VTK lives in vtk_export.cpp and vtk_view.cpp.
 #pragma once
 
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,8 +23,9 @@ struct ExportStats {
 /// Writes `dir` whole or not at all: surface_NNNN.vts per time (a structured grid of
 /// the displaced surface with every field_infos() array and their units in the field
 /// data), terrain.vts, and surface.pvd, the time collection ParaView opens.
-Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
-                     unsigned threads, const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr);
+Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid,
+                     const std::vector<double>& times, unsigned threads,
+                     const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr);
 
 struct ScreenshotOptions {
     std::string field = "height";
@@ -43,8 +44,8 @@ Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const
 Status probe_chart(const ProbeSeries& probe, const std::filesystem::path& png, int width = 1200, int height = 420);
 
 /// A measured record and a model's prediction at the same place on one chart, to a PNG.
-Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured, const std::vector<double>& model,
-                     const std::string& title, const std::string& x_title, const std::filesystem::path& png, int width = 1200,
-                     int height = 420);
+Status overlay_chart(const std::vector<double>& axis, const std::vector<double>& measured,
+                     const std::vector<double>& model, const std::string& title, const std::string& x_title,
+                     const std::filesystem::path& png, int width = 1200, int height = 420);
 
 }  // namespace tidewater::inspect

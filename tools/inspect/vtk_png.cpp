@@ -1,12 +1,11 @@
 #include "vtk_png.hpp"
 
+#include <fmt/format.h>
+#include <unistd.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
-
-#include <fmt/format.h>
-#include <unistd.h>
 
 namespace tidewater::inspect {
 

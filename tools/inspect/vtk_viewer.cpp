@@ -1,22 +1,23 @@
 #include "vtk_viewer.hpp"
 
-#include "colour_maps.hpp"
-
+#include <fmt/format.h>
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkContourFilter.h>
-#include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkGlyph3D.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyLine.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
@@ -24,16 +25,14 @@
 #include <vtkScalarBarActor.h>
 #include <vtkSliderRepresentation2D.h>
 #include <vtkSliderWidget.h>
-#include <vtkPolyData.h>
-#include <vtkPolyLine.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 
+#include "colour_maps.hpp"
 #include "probe.hpp"
 #include "tidewater/world_query.hpp"
 #include "vtk_chart.hpp"
@@ -98,7 +97,7 @@ struct Viewer::Impl {
     FieldSample sample;
     std::vector<double> terrain;
     bool playing = false;
-    bool interactive = false;  // key hints in the caption
+    bool interactive = false;               // key hints in the caption
     vtkSmartPointer<vtkContextView> chart;  // the last probe's chart window
 
     vtkSmartPointer<vtkPolyData> surface, land;
@@ -136,7 +135,8 @@ struct Viewer::Impl {
         glyph_points->Modified();
         double typical = 1.0;
         if (!speeds.empty()) {
-            const auto p95 = speeds.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(speeds.size() - 1));
+            const auto p95 =
+                speeds.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(speeds.size() - 1));
             std::nth_element(speeds.begin(), p95, speeds.end());
             typical = *p95;
         }
@@ -168,7 +168,8 @@ struct Viewer::Impl {
             if (info().components == 1) {
                 v = sample.value(info().name, k);
             } else {
-                for (int c = 0; c < info().components; ++c) v += sample.value(info().name, k, c) * sample.value(info().name, k, c);
+                for (int c = 0; c < info().components; ++c)
+                    v += sample.value(info().name, k, c) * sample.value(info().name, k, c);
                 v = std::sqrt(v);
             }
             scalars->SetValue(static_cast<vtkIdType>(k), v);
@@ -187,9 +188,13 @@ struct Viewer::Impl {
         const auto [from, to] = colour_range(colouring, lo, hi);
         lut->SetTableRange(from, to);
         surface_mapper->SetScalarRange(from, to);
-        legend->SetTitle(fmt::format("{} ({})", info().name, info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit).c_str());
+        legend->SetTitle(
+            fmt::format("{} ({})", info().name,
+                        info().components > 1 ? fmt::format("|{}|, {}", info().name, info().unit) : info().unit)
+                .c_str());
         caption->SetInput(fmt::format("t = {:.2f} s   field: {}{}", sample.time, info().name,
-                                      interactive ? "   [space] play  [f] field  [g] glyphs  [p] probe" : "").c_str());
+                                      interactive ? "   [space] play  [f] field  [g] glyphs  [p] probe" : "")
+                              .c_str());
     }
 
     Status resample(std::size_t index) {
@@ -205,8 +210,8 @@ struct Viewer::Impl {
 Viewer::Viewer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Viewer::~Viewer() = default;
 
-Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleGrid& grid, std::vector<double> times, const std::string& field,
-                                               int width, int height, bool offscreen) {
+Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleGrid& grid, std::vector<double> times,
+                                               const std::string& field, int width, int height, bool offscreen) {
     if (auto st = validate_grid(grid); !st) return st.error();
     if (times.empty()) return Error{ErrorCode::invalid_argument, "viewer: the time range holds no time"};
     if (width < 64 || height < 64 || width > 8192 || height > 8192)
@@ -303,7 +308,8 @@ Result<std::unique_ptr<Viewer>> Viewer::create(const Scene& scene, const SampleG
     m->track_actor->GetProperty()->SetColor(0.85, 0.1, 0.1);
     m->track_actor->GetProperty()->SetLineWidth(3.0);
     m->track_actor->SetVisibility(false);
-    for (vtkActor* a : {m->land_actor.Get(), m->surface_actor.Get(), m->shore_actor.Get(), m->glyph_actor.Get(), m->track_actor.Get()})
+    for (vtkActor* a : {m->land_actor.Get(), m->surface_actor.Get(), m->shore_actor.Get(), m->glyph_actor.Get(),
+                        m->track_actor.Get()})
         m->renderer->AddActor(a);
     m->renderer->AddActor2D(m->legend);
     m->renderer->AddActor2D(m->caption);
@@ -334,7 +340,9 @@ void Viewer::next_field() {
     impl_->update();
 }
 
-void Viewer::set_glyphs(bool on) { impl_->glyph_actor->SetVisibility(on); }
+void Viewer::set_glyphs(bool on) {
+    impl_->glyph_actor->SetVisibility(on);
+}
 
 void Viewer::set_track(const std::vector<glm::dvec2>& path) {
     Impl& m = *impl_;
@@ -366,10 +374,18 @@ Result<double> Viewer::probe(glm::dvec2 at, const std::filesystem::path& png) {
     return series->dominant_period;
 }
 
-Status Viewer::save(const std::filesystem::path& png) { return save_window_png(impl_->window, png); }
-void Viewer::render() { impl_->window->Render(); }
-std::string Viewer::field() const { return impl_->info().name; }
-double Viewer::time() const { return impl_->sample.time; }
+Status Viewer::save(const std::filesystem::path& png) {
+    return save_window_png(impl_->window, png);
+}
+void Viewer::render() {
+    impl_->window->Render();
+}
+std::string Viewer::field() const {
+    return impl_->info().name;
+}
+double Viewer::time() const {
+    return impl_->sample.time;
+}
 
 void Viewer::run() {
     Impl& m = *impl_;
@@ -422,8 +438,8 @@ void Viewer::run() {
                     std::printf("probe: %s\n", series.error().message.c_str());
                 } else {
                     const Status written = probe_chart(*series, png);
-                    std::printf("probe at x = %.1f, z = %.1f m: dominant period %.3f s%s\n", w[0], w[2], series->dominant_period,
-                                written ? (" -> " + png).c_str() : "");
+                    std::printf("probe at x = %.1f, z = %.1f m: dominant period %.3f s%s\n", w[0], w[2],
+                                series->dominant_period, written ? (" -> " + png).c_str() : "");
                     // Show the chart in a window of its own beside the viewer.
                     v->impl_->chart = probe_view(*series, 900, 320, false);
                     v->impl_->chart->GetRenderWindow()->Render();
@@ -450,7 +466,8 @@ void Viewer::run() {
     interactor->Start();
 }
 
-Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const ScreenshotOptions& o, const std::filesystem::path& png) {
+Status screenshot(const Scene& scene, const SampleGrid& grid, double time, const ScreenshotOptions& o,
+                  const std::filesystem::path& png) {
     auto viewer = Viewer::create(scene, grid, {time}, o.field, o.width, o.height, true);
     if (!viewer) return viewer.error();
     (*viewer)->set_glyphs(o.glyphs);

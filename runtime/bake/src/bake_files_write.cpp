@@ -2,8 +2,9 @@
 // in the encoding bake_files.hpp reads, and plain text files.
 #include "tidewater/detail/bake_files_write.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <fstream>
 
 #include "tidewater/detail/image_write.hpp"
@@ -12,12 +13,14 @@ namespace tidewater::detail {
 
 namespace fs = std::filesystem;
 
-Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& name, const std::vector<float>& values, int nx, int nz,
-                                       const char* unit) {
+Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& name, const std::vector<float>& values,
+                                       int nx, int nz, const char* unit) {
     if (values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz))
-        return Error{ErrorCode::internal, fmt::format("field {}: {} values for a {}x{} grid", name, values.size(), nx, nz)};
+        return Error{ErrorCode::internal,
+                     fmt::format("field {}: {} values for a {}x{} grid", name, values.size(), nx, nz)};
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    const FieldEncoding e = FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo), values.empty() ? 0.0 : static_cast<double>(*hi));
+    const FieldEncoding e = FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo),
+                                                    values.empty() ? 0.0 : static_cast<double>(*hi));
     Gray16Image img;
     img.width = nx;
     img.height = nz;
@@ -25,7 +28,8 @@ Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& n
     for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
     const std::string file = name + ".png";
     if (auto st = write_png_gray16(dir / file, img); !st) return st.error();
-    return nlohmann::json{{"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
+    return nlohmann::json{
+        {"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
 }
 
 Status write_text_file(const fs::path& path, const std::string& text) {

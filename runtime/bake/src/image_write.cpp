@@ -2,11 +2,12 @@
 // atomic: a temporary file beside the target is renamed over it only when complete.
 #include "tidewater/detail/image_write.hpp"
 
-#include <cstdio>
 #include <fmt/format.h>
 #include <png.h>
 #include <stb/stb_image_write.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace tidewater::detail {
 
@@ -34,9 +35,11 @@ Status write_atomically(const std::filesystem::path& path, const Encode& encode)
 }  // namespace
 
 Status write_png_rgba8(const std::filesystem::path& path, int width, int height, std::span<const std::uint8_t> rgba) {
-    if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: {}x{} RGBA needs {} bytes, got {}", path.string(),
-                                                              width, height, std::size_t(width) * std::size_t(height) * 4, rgba.size())};
+    if (width <= 0 || height <= 0 ||
+        rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: {}x{} RGBA needs {} bytes, got {}", path.string(), width, height,
+                                 std::size_t(width) * std::size_t(height) * 4, rgba.size())};
     }
     return write_atomically(path, [&](const std::string& temp) {
         return stbi_write_png(temp.c_str(), width, height, 4, rgba.data(), width * 4) != 0;
@@ -46,7 +49,8 @@ Status write_png_rgba8(const std::filesystem::path& path, int width, int height,
 Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& image) {
     if (image.width <= 0 || image.height <= 0 ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: image size and pixel count disagree", path.string())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: image size and pixel count disagree", path.string())};
     }
     return write_atomically(path, [&](const std::string& temp) {
         png_image png{};

@@ -2,9 +2,10 @@
 // bake is Tidewater::core's (baked_scene.cpp).
 #include "tidewater/scene_bake.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
-#include <fmt/format.h>
 #include <mutex>
 
 #include "tidewater/detail/atomic_folder.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 /// Forwards stage progress as a whole-bake fraction that never goes back.
 class BakeProgress {
-public:
+  public:
     explicit BakeProgress(const SceneBakeOptions& options) : options_(options) {}
 
     /// Reports `fraction` of a stage that spans [begin, end] of the whole bake.
@@ -32,7 +33,7 @@ public:
         options_.progress(stage, last_);
     }
 
-private:
+  private:
     const SceneBakeOptions& options_;
     std::mutex lock_;
     double last_ = 0.0;
@@ -40,19 +41,22 @@ private:
 
 /// Each lake's own shore model over its basin (the square round its extent, with a
 /// margin of beach), at the scene's shore resolution.
-bool same_waves(const WaveSet& a, const WaveSet& b) { return std::ranges::equal(a.waves(), b.waves()); }
+bool same_waves(const WaveSet& a, const WaveSet& b) {
+    return std::ranges::equal(a.waves(), b.waves());
+}
 
 /// The previous bake's model of lake l when nothing it depends on changed: the lake's
 /// extent and level, its waves, the shore settings and the cuts under its basin.
-std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const detail::WaterBodiesBake& bodies, std::size_t l,
-                                                       const Scene* previous) {
+std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const detail::WaterBodiesBake& bodies,
+                                                       std::size_t l, const Scene* previous) {
     if (!previous || !previous->bake || !previous->bake->bodies || l >= previous->bake->lake_shores.size() ||
         l >= previous->lakes.size())
         return nullptr;
     const SceneBake& old = *previous->bake;
     const detail::LakeBake &now = bodies.lakes[l], &then = old.bodies->lakes[l];
-    if (!old.lake_shores[l] || old.shore.resolution != scene.shore.resolution || old.shore.breaking_index != scene.shore.breaking_index ||
-        now.level != then.level || now.inside != then.inside || !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
+    if (!old.lake_shores[l] || old.shore.resolution != scene.shore.resolution ||
+        old.shore.breaking_index != scene.shore.breaking_index || now.level != then.level ||
+        now.inside != then.inside || !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
         !same_waves(scene.lakes[l].body.waves(), previous->lakes[l].body.waves()))
         return nullptr;
     const SquareRegion region = detail::lake_basin_region(now);
@@ -60,14 +64,16 @@ std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const
     basin.corner = region.center - glm::dvec2(region.half_size);
     basin.texel = 2.0 * region.half_size;
     basin.nx = basin.nz = 1;
-    if (detail::cuts_under(bodies.terrain.cuts(), basin) != detail::cuts_under(old.bodies->terrain.cuts(), basin)) return nullptr;
+    if (detail::cuts_under(bodies.terrain.cuts(), basin) != detail::cuts_under(old.bodies->terrain.cuts(), basin))
+        return nullptr;
     return old.lake_shores[l];
 }
 
-Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Scene& scene, const detail::WaterBodiesBake& bodies,
-                                                                       const SceneBakeOptions& options,
-                                                                       const std::function<void(double)>& progress,
-                                                                       std::size_t& reused) {
+Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Scene& scene,
+                                                                        const detail::WaterBodiesBake& bodies,
+                                                                        const SceneBakeOptions& options,
+                                                                        const std::function<void(double)>& progress,
+                                                                        std::size_t& reused) {
     std::vector<std::shared_ptr<const ShoreWaves>> models;
     const std::size_t count = bodies.lakes.size();
     for (std::size_t l = 0; l < count; ++l) {
@@ -84,7 +90,8 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
         model_options.threads = options.threads;
         model_options.cancel = options.cancel;
         model_options.progress = [&](double f) { progress((static_cast<double>(l) + f) / static_cast<double>(count)); };
-        auto model = bake_shore_waves(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
+        auto model =
+            bake_shore_waves(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
         if (!model) {
             Error e = model.error();
             e.message = fmt::format("scene \"{}\" /lakes/{}: its shore: {}", scene.name, l, e.message);
@@ -98,21 +105,23 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
 /// Whether the previous bake's ocean shore model is this scene's: the same carved
 /// terrain (shape and cut objects), waves, level, shore settings and distance field.
 bool unchanged_ocean_shore(const Scene& scene, const Terrain& terrain, int distance_resolution, const Scene* previous) {
-    if (!previous || !previous->bake || !previous->bake->ocean_shore || !previous->bake->shoreline || previous->bake->loaded) return false;
+    if (!previous || !previous->bake || !previous->bake->ocean_shore || !previous->bake->shoreline ||
+        previous->bake->loaded)
+        return false;
     const SceneBake& old = *previous->bake;
-    return old.terrain == terrain && old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
-           old.shore.breaking_index == scene.shore.breaking_index && old.distance_resolution == distance_resolution &&
-           same_waves(previous->ocean.waves(), scene.ocean.waves());
+    return old.terrain == terrain && old.water_level == scene.water_level() &&
+           old.shore.resolution == scene.shore.resolution && old.shore.breaking_index == scene.shore.breaking_index &&
+           old.distance_resolution == distance_resolution && same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
-
 
 /// The ocean's shore model and the distance field it samples: the previous bake's when
 /// nothing it depends on changed (the edit was inland), else baked over `terrain`, with
 /// progress from `begin` to the end of the whole bake.
-Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneBakeOptions& options, BakeProgress& progress,
-                        double begin, SceneBake& bake) {
+Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneBakeOptions& options,
+                        BakeProgress& progress, double begin, SceneBake& bake) {
     if (!(scene.shore.enabled && scene.has_ocean)) return {};
-    const int distance_resolution = options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
+    const int distance_resolution =
+        options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
     if (unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
         bake.ocean_shore = options.previous->bake->ocean_shore;
         bake.shoreline = options.previous->bake->shoreline;
@@ -124,10 +133,11 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     // One shoreline bake serves the distance field and the shore model, which samples
     // it: it may be finer than the model's grid, never coarser.
     if (distance_resolution < scene.shore.resolution)
-        return detail::in_shore(scene, Error{ErrorCode::invalid_argument,
-                                             fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
-                                                         "which samples it: give a distance resolution of at least {1}",
-                                                         distance_resolution, scene.shore.resolution)});
+        return detail::in_shore(
+            scene, Error{ErrorCode::invalid_argument,
+                         fmt::format("the distance field ({0}x{0}) is coarser than the shore model's grid ({1}x{1}), "
+                                     "which samples it: give a distance resolution of at least {1}",
+                                     distance_resolution, scene.shore.resolution)});
     const double shoreline_share = begin + 0.3 * (1.0 - begin);
     BakeOptions shoreline_options;
     shoreline_options.resolution = distance_resolution;
@@ -158,8 +168,9 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
 Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     if (options.distance_resolution != 0 && (options.distance_resolution < 8 || options.distance_resolution > 8192))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("bake: distance_resolution {} is out of range (8 to 8192, or 0)", options.distance_resolution)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("bake: distance_resolution {} is out of range (8 to 8192, or 0)", options.distance_resolution)};
     // A scene that names its saved bake is loaded, not baked.
     if (!scene.shore.bake_folder.empty()) return load_scene_bake(scene, options.progress);
     try {
@@ -181,7 +192,8 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             bodies_options.cancel = options.cancel;
             bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
             const Scene* previous = options.previous.get();
-            if (previous && previous->bake && previous->bake->bodies) bodies_options.previous = previous->bake->bodies.get();
+            if (previous && previous->bake && previous->bake->bodies)
+                bodies_options.previous = previous->bake->bodies.get();
             auto bodies = detail::bake_water_bodies(scene, bodies_options);
             if (!bodies) return bodies.error();
             bake->reused.rivers = bodies->reused_rivers;
@@ -191,13 +203,15 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         if (lake_shores) {
             progress.report("lake shores", bodies_end, bodies_share, 0.0);
             auto models = bake_lake_shores(
-                scene, *bake->bodies, options, [&](double f) { progress.report("lake shores", bodies_end, bodies_share, f); },
+                scene, *bake->bodies, options,
+                [&](double f) { progress.report("lake shores", bodies_end, bodies_share, f); },
                 bake->reused.lake_shores);
             if (!models) return models.error();
             bake->lake_shores = std::move(models).value();
         }
         if (auto st = bake_ocean_shore(scene, terrain, options, progress, bodies_share, *bake); !st) return st.error();
-        if (options.cancel.stop_requested()) return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
+        if (options.cancel.stop_requested())
+            return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
         bake->terrain = terrain;
         return detail::finish_scene_bake(scene, std::move(bake), start);
     } catch (const std::exception& e) {
@@ -214,8 +228,9 @@ Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
                                  !baked.bake ? "pass it through bake_scene first"
                                              : "its shore is disabled and it has no lakes or rivers")};
     if (!baked.baked())
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("scene \"{}\" was edited after its bake: pass it through bake_scene again", baked.name)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("scene \"{}\" was edited after its bake: pass it through bake_scene again", baked.name)};
     return detail::write_folder_atomically(dir, [&](const std::filesystem::path& temp) -> Status {
         if (ocean) {
             ShoreBakeContents contents;

@@ -1,9 +1,10 @@
 // Reading saved bakes' files: sidecars and 16-bit PNG fields (the writers are Tidewater::bake's).
 #include "tidewater/detail/bake_files.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/terrain.hpp"
@@ -12,7 +13,8 @@ namespace tidewater::detail {
 
 namespace fs = std::filesystem;
 
-Result<std::vector<float>> read_field_png(const fs::path& dir, const ObjectReader& fields, std::string_view name, int nx, int nz) {
+Result<std::vector<float>> read_field_png(const fs::path& dir, const ObjectReader& fields, std::string_view name,
+                                          int nx, int nz) {
     if (!fields.has(name)) return fields.error(name, "is missing");
     auto r = ObjectReader::open(fields.at(name), fields.source(), fields.child_path(name));
     if (!r) return r.error();
@@ -28,8 +30,8 @@ Result<std::vector<float>> read_field_png(const fs::path& dir, const ObjectReade
     auto img = read_png_gray16(dir / file);
     if (!img) return img.error();
     if (img->width != nx || img->height != nz)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: the image is {}x{}, the bake's grid is {}x{}", (dir / file).string(), img->width, img->height, nx, nz)};
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: the image is {}x{}, the bake's grid is {}x{}",
+                                                              (dir / file).string(), img->width, img->height, nx, nz)};
     FieldEncoding e;
     e.step = step;
     e.zero = static_cast<std::int64_t>(zero);
@@ -38,7 +40,9 @@ Result<std::vector<float>> read_field_png(const fs::path& dir, const ObjectReade
     return values;
 }
 
-double field_png_step(const ObjectReader& fields, std::string_view name) { return fields.at(name).at("step").get<double>(); }
+double field_png_step(const ObjectReader& fields, std::string_view name) {
+    return fields.at(name).at("step").get<double>();
+}
 
 Result<nlohmann::json> read_sidecar(const fs::path& path, int version) {
     auto text = read_text_file(path.string());
@@ -49,9 +53,9 @@ Result<nlohmann::json> read_sidecar(const fs::path& path, int version) {
     if (!root) return root.error();
     std::int64_t found = 0;
     if (auto st = root->integer("version", found, 1, 1000, true); !st) return st.error();
-    if (found != version) return root->error("version", fmt::format("{} is not supported (this build reads version {})", found, version));
+    if (found != version)
+        return root->error("version", fmt::format("{} is not supported (this build reads version {})", found, version));
     return doc;
 }
-
 
 }  // namespace tidewater::detail

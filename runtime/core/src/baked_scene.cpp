@@ -2,9 +2,10 @@
 // loading the saved bake a scene names, and the step that puts a bake into a new scene.
 #include "tidewater/baked_scene.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <filesystem>
-#include <fmt/format.h>
 
 #include "tidewater/detail/bodies_bake_folder.hpp"
 #include "tidewater/detail/scene_bake_parts.hpp"
@@ -21,13 +22,14 @@ bool same_bodies(const Scene& scene, const SceneBake& bake) {
     if (scene.lakes.size() != bake.lakes.size() || scene.rivers.size() != bake.rivers.size()) return false;
     for (std::size_t l = 0; l < scene.lakes.size(); ++l) {
         const SceneLake &a = scene.lakes[l], &b = bake.lakes[l];
-        if (a.name != b.name || a.at != b.at || a.body.level() != b.body.level() || a.body.waves().waves().size() != b.body.waves().waves().size())
+        if (a.name != b.name || a.at != b.at || a.body.level() != b.body.level() ||
+            a.body.waves().waves().size() != b.body.waves().waves().size())
             return false;
     }
     for (std::size_t r = 0; r < scene.rivers.size(); ++r) {
         const SceneRiver &a = scene.rivers[r], &b = bake.rivers[r];
-        if (a.name != b.name || a.path != b.path || a.width != b.width || a.discharge != b.discharge || a.manning != b.manning ||
-            a.carve != b.carve)
+        if (a.name != b.name || a.path != b.path || a.width != b.width || a.discharge != b.discharge ||
+            a.manning != b.manning || a.carve != b.carve)
             return false;
     }
     return true;
@@ -52,7 +54,8 @@ Result<std::shared_ptr<const Scene>> detail::finish_scene_bake(const Scene& scen
     bake->lakes = scene.lakes;
     bake->rivers = scene.rivers;
     // An all-deep model changes nothing: the ocean carries none and queries skip the shore.
-    std::shared_ptr<const ShoreWaves> felt = bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
+    std::shared_ptr<const ShoreWaves> felt =
+        bake->ocean_shore && !bake->ocean_shore->trivial() ? bake->ocean_shore : nullptr;
     auto ocean = scene.ocean.with_shore(std::move(felt));
     if (!ocean) return in_shore(scene, ocean.error());
     baked->ocean = std::move(ocean).value();
@@ -72,9 +75,10 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
     const std::filesystem::path& folder = scene.shore.bake_folder;
     if (folder.empty()) {
         if (!has_bodies && !shore) return std::make_shared<const Scene>(scene);
-        return detail::in_shore(scene, Error{ErrorCode::invalid_argument,
-                                             "names no saved bake (\"shore\": {\"bake\": folder}) to load: bake the scene "
-                                             "with bake_scene (Tidewater::bake) or `tidewater bake`"});
+        return detail::in_shore(scene,
+                                Error{ErrorCode::invalid_argument,
+                                      "names no saved bake (\"shore\": {\"bake\": folder}) to load: bake the scene "
+                                      "with bake_scene (Tidewater::bake) or `tidewater bake`"});
     }
     try {
         auto bake = std::make_shared<SceneBake>();
@@ -99,9 +103,11 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
             if (lake_shores) bake->lake_shores = std::move(loaded->lake_shores);
             report(bodies_share);
         } else if (std::filesystem::exists(folder / kBodiesSidecar)) {
-            return detail::in_shore(scene, Error{ErrorCode::invalid_argument,
-                                                 fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
-                                                             (folder / kBodiesSidecar).string())});
+            return detail::in_shore(
+                scene,
+                Error{ErrorCode::invalid_argument,
+                      fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
+                                  (folder / kBodiesSidecar).string())});
         }
         if (shore) {
             auto loaded = load_shore_bake(folder, scene.ocean.waves(), scene.water_level(), bake->terrain);
@@ -111,7 +117,8 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
         report(1.0);
         return detail::finish_scene_bake(scene, std::move(bake), start);
     } catch (const std::exception& e) {
-        return Error{ErrorCode::internal, fmt::format("scene \"{}\": loading its bake failed: {}", scene.name, e.what())};
+        return Error{ErrorCode::internal,
+                     fmt::format("scene \"{}\": loading its bake failed: {}", scene.name, e.what())};
     }
 }
 

@@ -1,7 +1,7 @@
 #include "tidewater/body_summary.hpp"
 
-#include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 
 namespace tidewater {
 
@@ -10,7 +10,8 @@ BodySummary summarize_bodies(const Scene& scene) {
     if (!scene.bake || !scene.bake->bodies) return out;
     const detail::WaterBodiesBake& bodies = *scene.bake->bodies;
     for (const detail::LakeBake& lake : bodies.lakes)
-        out.lakes.push_back({lake.name, lake.level, static_cast<double>(lake.texels) * lake.grid.texel * lake.grid.texel});
+        out.lakes.push_back(
+            {lake.name, lake.level, static_cast<double>(lake.texels) * lake.grid.texel * lake.grid.texel});
     for (std::size_t k = 0; k < bodies.rivers.size(); ++k) {
         const detail::RiverBake& river = bodies.rivers[k];
         RiverSummary r;

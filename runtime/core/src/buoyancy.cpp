@@ -1,11 +1,11 @@
 #include "tidewater/buoyancy.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
-#include <map>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <map>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/query.hpp"
@@ -17,9 +17,11 @@ namespace tidewater {
 HullMesh HullMesh::box(glm::dvec3 size) {
     const glm::dvec3 h = 0.5 * size;
     HullMesh m;
-    for (int i = 0; i < 8; ++i) m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
     // Two triangles per face, counter-clockwise seen from outside.
-    const std::uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const std::uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& f : faces) {
         m.triangles.push_back({f[0], f[1], f[2]});
         m.triangles.push_back({f[0], f[2], f[3]});
@@ -35,7 +37,8 @@ HullMesh HullMesh::sphere(double radius, int rings) {
         const double polar = kPi * r / rings;
         for (int s = 0; s < segments; ++s) {
             const double azimuth = kTwoPi * s / segments;
-            m.vertices.push_back(radius * glm::dvec3(std::sin(polar) * std::cos(azimuth), std::cos(polar), std::sin(polar) * std::sin(azimuth)));
+            m.vertices.push_back(radius * glm::dvec3(std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                                                     std::sin(polar) * std::sin(azimuth)));
         }
     }
     m.vertices.push_back({0.0, -radius, 0.0});
@@ -106,24 +109,31 @@ void add_prism(HullMesh& m, const std::vector<glm::dvec2>& outline, double y0, d
 
 std::vector<glm::dvec2> boat_plan(double length, double beam) {
     const double shoulder = 0.2 * length, half = 0.5 * beam;
-    std::vector<glm::dvec2> plan = {{-0.5 * length, -half}, {shoulder, -half}, {0.5 * length, 0.0}, {shoulder, half}, {-0.5 * length, half}};
+    std::vector<glm::dvec2> plan = {
+        {-0.5 * length, -half}, {shoulder, -half}, {0.5 * length, 0.0}, {shoulder, half}, {-0.5 * length, half}};
     // Put the plan's centroid (rectangle aft, triangle forward) on the origin.
     const double rect = (shoulder + 0.5 * length) * beam, tri = 0.5 * (0.5 * length - shoulder) * beam;
-    const double cx = (rect * 0.5 * (shoulder - 0.5 * length) + tri * (shoulder + (0.5 * length - shoulder) / 3.0)) / (rect + tri);
+    const double cx =
+        (rect * 0.5 * (shoulder - 0.5 * length) + tri * (shoulder + (0.5 * length - shoulder) / 3.0)) / (rect + tri);
     for (glm::dvec2& p : plan) p.x -= cx;
     return plan;
 }
 
 }  // namespace
 
-double HullMesh::boat_plan_area(double length, double beam) { return 0.85 * length * beam; }
+double HullMesh::boat_plan_area(double length, double beam) {
+    return 0.85 * length * beam;
+}
 
 HullMesh HullMesh::boat(double length, double beam, double draft) {
     HullMesh m;
     add_prism(m, boat_plan(length, beam), -draft, draft);
     const double house_x = -0.1 * length, house_l = 0.25 * length, house_b = 0.25 * beam;
-    add_prism(m, {{house_x - 0.5 * house_l, -house_b}, {house_x + 0.5 * house_l, -house_b}, {house_x + 0.5 * house_l, house_b},
-                  {house_x - 0.5 * house_l, house_b}},
+    add_prism(m,
+              {{house_x - 0.5 * house_l, -house_b},
+               {house_x + 0.5 * house_l, -house_b},
+               {house_x + 0.5 * house_l, house_b},
+               {house_x - 0.5 * house_l, house_b}},
               draft, draft + std::max(1.0, 1.5 * draft));
     return m;
 }
@@ -142,16 +152,20 @@ Status HullMesh::validate() const {
     for (std::size_t i = 0; i < triangles.size(); ++i)
         for (std::uint32_t k : triangles[i])
             if (k >= vertices.size())
-                return Error{ErrorCode::invalid_argument, fmt::format("hull: triangle {} names vertex {} of {}", i, k, vertices.size())};
+                return Error{ErrorCode::invalid_argument,
+                             fmt::format("hull: triangle {} names vertex {} of {}", i, k, vertices.size())};
     if (!(volume() > 0.0))
-        return Error{ErrorCode::invalid_argument, fmt::format("hull: volume {} m^3 is not positive (not closed, or facing inward)", volume())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("hull: volume {} m^3 is not positive (not closed, or facing inward)", volume())};
     return {};
 }
 
 RigidBodyProps RigidBodyProps::solid_box(glm::dvec3 size, double mass) {
     RigidBodyProps p;
     p.mass = mass;
-    p.inertia = mass / 12.0 * glm::dvec3(size.y * size.y + size.z * size.z, size.x * size.x + size.z * size.z, size.x * size.x + size.y * size.y);
+    p.inertia = mass / 12.0 *
+                glm::dvec3(size.y * size.y + size.z * size.z, size.x * size.x + size.z * size.z,
+                           size.x * size.x + size.y * size.y);
     p.hull = HullMesh::box(size);
     return p;
 }
@@ -171,10 +185,12 @@ Result<int> BuoyancyWorld::add(const RigidBodyProps& props, const RigidBodyState
     if (!(props.mass > 0.0) || !std::isfinite(props.mass))
         return Error{ErrorCode::invalid_argument, fmt::format("floating body: mass {} kg must be > 0", props.mass)};
     if (!(props.inertia.x > 0.0 && props.inertia.y > 0.0 && props.inertia.z > 0.0))
-        return Error{ErrorCode::invalid_argument, "floating body: every principal moment of inertia must be > 0 kg m^2"};
+        return Error{ErrorCode::invalid_argument,
+                     "floating body: every principal moment of inertia must be > 0 kg m^2"};
     if (!(props.drag >= 0.0) || !std::isfinite(props.drag))
         return Error{ErrorCode::invalid_argument, fmt::format("floating body: drag {} must be >= 0", props.drag)};
-    if (auto st = props.hull.validate(); !st) return Error{ErrorCode::invalid_argument, "floating body: " + st.error().message};
+    if (auto st = props.hull.validate(); !st)
+        return Error{ErrorCode::invalid_argument, "floating body: " + st.error().message};
     if (!(options_.step > 0.0)) return Error{ErrorCode::invalid_argument, "floating body: the step must be > 0 s"};
     props_.push_back(props);
     states_.push_back(state);
@@ -232,7 +248,8 @@ int submerged(const glm::dvec3 (&p)[3], const double (&d)[3], Piece (&out)[2], g
 }  // namespace
 
 Status BuoyancyWorld::advance(const FloatingWater& water, double dt) {
-    if (!(dt >= 0.0) || !std::isfinite(dt)) return Error{ErrorCode::invalid_argument, fmt::format("floating bodies: dt {} s", dt)};
+    if (!(dt >= 0.0) || !std::isfinite(dt))
+        return Error{ErrorCode::invalid_argument, fmt::format("floating bodies: dt {} s", dt)};
     carry_ += dt;
     while (carry_ >= options_.step * (1.0 - 1e-9)) {
         if (auto st = step(water); !st) return st;
@@ -261,15 +278,18 @@ Status BuoyancyWorld::step(const FloatingWater& water) {
         if (auto st = water_at(water, time_, emitter, points, out); !st) return st;
         std::size_t k = 0;
         for (std::size_t b : bodies) {
-            surface[b].assign(out.begin() + static_cast<std::ptrdiff_t>(k), out.begin() + static_cast<std::ptrdiff_t>(k + world[b].size()));
+            surface[b].assign(out.begin() + static_cast<std::ptrdiff_t>(k),
+                              out.begin() + static_cast<std::ptrdiff_t>(k + world[b].size()));
             k += world[b].size();
         }
         // The water is finite wherever it is queried; should it not be, say where rather
         // than carry a NaN into the bodies' state.
         for (std::size_t i = 0; i < out.size(); ++i)
-            if (!std::isfinite(out[i].height) || !std::isfinite(out[i].velocity.x + out[i].velocity.y + out[i].velocity.z))
+            if (!std::isfinite(out[i].height) ||
+                !std::isfinite(out[i].velocity.x + out[i].velocity.y + out[i].velocity.z))
                 return Error{ErrorCode::internal,
-                             fmt::format("floating bodies: the water at ({}, {}) at t = {} s is not finite", points[i].x, points[i].y, time_)};
+                             fmt::format("floating bodies: the water at ({}, {}) at t = {} s is not finite",
+                                         points[i].x, points[i].y, time_)};
     }
     for (std::size_t b = 0; b < props_.size(); ++b) {
         const RigidBodyProps& props = props_[b];
@@ -278,8 +298,10 @@ Status BuoyancyWorld::step(const FloatingWater& water) {
         f.force = {0.0, -props.mass * g, 0.0};
         for (const auto& t : props.hull.triangles) {
             const glm::dvec3 p[3] = {world[b][t[0]], world[b][t[1]], world[b][t[2]]};
-            const double d[3] = {surface[b][t[0]].height - p[0].y, surface[b][t[1]].height - p[1].y, surface[b][t[2]].height - p[2].y};
-            const glm::dvec3 water_velocity = (surface[b][t[0]].velocity + surface[b][t[1]].velocity + surface[b][t[2]].velocity) / 3.0;
+            const double d[3] = {surface[b][t[0]].height - p[0].y, surface[b][t[1]].height - p[1].y,
+                                 surface[b][t[2]].height - p[2].y};
+            const glm::dvec3 water_velocity =
+                (surface[b][t[0]].velocity + surface[b][t[1]].velocity + surface[b][t[2]].velocity) / 3.0;
             Piece pieces[2];
             const int n = submerged(p, d, pieces, water_velocity);
             for (int i = 0; i < n; ++i) {
@@ -292,8 +314,9 @@ Status BuoyancyWorld::step(const FloatingWater& water) {
                 const double mean_depth = (q.depth[0] + q.depth[1] + q.depth[2]) / 3.0;
                 const glm::dvec3 pressure = -rho * g * mean_depth * area * normal;
                 const glm::dvec3 r[3] = {q.p[0] - s.position, q.p[1] - s.position, q.p[2] - s.position};
-                const glm::dvec3 moment_arm = (area / 12.0) * ((r[0] + r[1] + r[2]) * (q.depth[0] + q.depth[1] + q.depth[2]) +
-                                                               r[0] * q.depth[0] + r[1] * q.depth[1] + r[2] * q.depth[2]);
+                const glm::dvec3 moment_arm =
+                    (area / 12.0) * ((r[0] + r[1] + r[2]) * (q.depth[0] + q.depth[1] + q.depth[2]) + r[0] * q.depth[0] +
+                                     r[1] * q.depth[1] + r[2] * q.depth[2]);
                 f.buoyancy += pressure;
                 f.torque += -rho * g * glm::cross(moment_arm, normal);
                 // Drag on the face's motion through the water along its normal.
@@ -311,7 +334,9 @@ Status BuoyancyWorld::step(const FloatingWater& water) {
         s.velocity += f.force / props.mass * h;
         s.position += s.velocity * h;
         const glm::dmat3 rotate = glm::mat3_cast(s.orientation);
-        const glm::dmat3 inertia = rotate * glm::dmat3(props.inertia.x, 0, 0, 0, props.inertia.y, 0, 0, 0, props.inertia.z) * glm::transpose(rotate);
+        const glm::dmat3 inertia = rotate *
+                                   glm::dmat3(props.inertia.x, 0, 0, 0, props.inertia.y, 0, 0, 0, props.inertia.z) *
+                                   glm::transpose(rotate);
         const glm::dvec3 momentum = inertia * s.angular_velocity;
         s.angular_velocity += glm::inverse(inertia) * (f.torque - glm::cross(s.angular_velocity, momentum)) * h;
         const glm::dquat spin(0.0, s.angular_velocity.x, s.angular_velocity.y, s.angular_velocity.z);

@@ -1,7 +1,8 @@
 #include "tidewater/drift.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "tidewater/baked_scene.hpp"
 #include "water/body_at.hpp"
@@ -13,7 +14,9 @@ namespace {
 /// The largest track drift writes: a guard against a step far too small for the duration.
 constexpr double kMaxDriftSteps = 1.0e7;
 
-const detail::WaterBodiesBake* bodies_of(const Scene& scene) { return scene.bake ? scene.bake->bodies.get() : nullptr; }
+const detail::WaterBodiesBake* bodies_of(const Scene& scene) {
+    return scene.bake ? scene.bake->bodies.get() : nullptr;
+}
 
 }  // namespace
 
@@ -24,24 +27,31 @@ glm::dvec2 current_at(const Scene& scene, glm::dvec2 point) {
 Result<std::vector<DriftSample>> drift(const Scene& scene, glm::dvec2 start, const DriftOptions& options) {
     if (!std::isfinite(start.x) || !std::isfinite(start.y))
         return Error{ErrorCode::invalid_argument, "drift: the start point is not finite"};
-    if (!std::isfinite(options.start_time)) return Error{ErrorCode::invalid_argument, "drift: start_time is not finite"};
+    if (!std::isfinite(options.start_time))
+        return Error{ErrorCode::invalid_argument, "drift: start_time is not finite"};
     if (!(options.duration > 0.0) || !std::isfinite(options.duration))
-        return Error{ErrorCode::invalid_argument, fmt::format("drift: duration {} s must be finite and > 0", options.duration)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("drift: duration {} s must be finite and > 0", options.duration)};
     if (!(options.dt > 0.0) || !(options.dt <= options.duration))
-        return Error{ErrorCode::invalid_argument, fmt::format("drift: dt {} s must be > 0 and at most the duration", options.dt)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("drift: dt {} s must be > 0 and at most the duration", options.dt)};
     const double steps_wanted = std::ceil(options.duration / options.dt - 1e-9);
     if (steps_wanted > kMaxDriftSteps)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("drift: {} steps of {} s; at most {:.0f}: take a longer step", steps_wanted, options.dt, kMaxDriftSteps)};
+                     fmt::format("drift: {} steps of {} s; at most {:.0f}: take a longer step", steps_wanted,
+                                 options.dt, kMaxDriftSteps)};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && !scene.baked())
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("drift: scene \"{}\" has lakes or rivers but is not baked: pass it through bake_scene first", scene.name)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("drift: scene \"{}\" has lakes or rivers but is not baked: pass it through bake_scene first",
+                        scene.name)};
 
     const detail::BodyFinder finder(scene, bodies_of(scene));
     const detail::PointBody first = finder.find(start);
     if (first.body.kind == BodyKind::none)
-        return Error{ErrorCode::invalid_argument, fmt::format("drift: the start ({}, {}) is not in water", start.x, start.y)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("drift: the start ({}, {}) is not in water", start.x, start.y)};
     const auto flow = [&](glm::dvec2 p) { return finder.find(p).flow; };
     const auto steps = static_cast<std::size_t>(steps_wanted);
     std::vector<DriftSample> track;

@@ -1,7 +1,8 @@
 #include "tidewater/floating_body.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/world_query.hpp"
@@ -44,7 +45,14 @@ Result<HullAttitude> fit_attitude(const FloatingBody& hull, const std::vector<do
     double sxx = 0, sxz = 0, szz = 0, sx = 0, sz = 0, sy = 0, sxy = 0, szy = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const double x = hull.hull_points[i].x, z = hull.hull_points[i].y, y = heights[i];
-        sxx += x * x; sxz += x * z; szz += z * z; sx += x; sz += z; sy += y; sxy += x * y; szy += z * y;
+        sxx += x * x;
+        sxz += x * z;
+        szz += z * z;
+        sx += x;
+        sz += z;
+        sy += y;
+        sxy += x * y;
+        szy += z * y;
     }
     const double m[3][3] = {{static_cast<double>(n), sx, sz}, {sx, sxx, sxz}, {sz, sxz, szz}};
     const double rhs[3] = {sy, sxy, szy};
@@ -55,7 +63,8 @@ Result<HullAttitude> fit_attitude(const FloatingBody& hull, const std::vector<do
     const double d = det3(m);
     const double span = sxx + szz;
     if (!(std::abs(d) > 1e-12 * span * span * static_cast<double>(n))) {
-        return Error{ErrorCode::invalid_argument, "floating body: hull points are collinear; a plane needs spread in both axes"};
+        return Error{ErrorCode::invalid_argument,
+                     "floating body: hull points are collinear; a plane needs spread in both axes"};
     }
     double sol[3];
     for (int c = 0; c < 3; ++c) {
@@ -66,8 +75,8 @@ Result<HullAttitude> fit_attitude(const FloatingBody& hull, const std::vector<do
     }
     HullAttitude att;
     att.heave = sol[0];
-    att.pitch = std::atan(sol[1]);   // bow (+x) higher -> positive pitch
-    att.roll = std::atan(-sol[2]);   // starboard (+z) lower -> positive roll
+    att.pitch = std::atan(sol[1]);  // bow (+x) higher -> positive pitch
+    att.roll = std::atan(-sol[2]);  // starboard (+z) lower -> positive roll
     return att;
 }
 

@@ -2,9 +2,10 @@
 // The writers are Tidewater::bake's (image_write.cpp).
 #include "tidewater/detail/image_io.hpp"
 
-#include <cstdio>
 #include <fmt/format.h>
 #include <stb/stb_image.h>
+
+#include <cstdio>
 
 namespace tidewater::detail {
 
@@ -22,12 +23,13 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
     if (!is16 || channels != 1) {
         std::fclose(f);
         return Error{ErrorCode::schema_error,
-                     fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name,
-                                 channels, is16 ? 16 : 8)};
+                     fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name, channels,
+                                 is16 ? 16 : 8)};
     }
     if (w < 1 || h < 1 || static_cast<long long>(w) * h > (1LL << 28)) {
         std::fclose(f);
-        return Error{ErrorCode::schema_error, fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
     }
     stbi_us* data = stbi_load_from_file_16(f, &w, &h, &channels, 1);
     std::fclose(f);
@@ -45,7 +47,8 @@ Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path) {
     int w = 0, h = 0, channels = 0;
     stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
     if (!data) {
-        if (!std::filesystem::exists(path)) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+        if (!std::filesystem::exists(path))
+            return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
         return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
     }
     Rgba8Image img;

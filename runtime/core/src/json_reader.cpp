@@ -1,11 +1,12 @@
 #include "tidewater/detail/json_reader.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <fstream>
 #include <set>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 namespace tidewater::detail {
 
@@ -29,8 +30,9 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
     try {
         nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), track_keys);
         if (!duplicate.empty()) {
-            return Error{ErrorCode::schema_error,
-                         fmt::format("{}: duplicate key \"{}\" (each key may appear once per object)", source, duplicate)};
+            return Error{
+                ErrorCode::schema_error,
+                fmt::format("{}: duplicate key \"{}\" (each key may appear once per object)", source, duplicate)};
         }
         return doc;
     } catch (const nlohmann::json::exception& e) {
@@ -58,9 +60,8 @@ std::string json_type_name(const nlohmann::json& v) {
 
 Result<ObjectReader> ObjectReader::open(const nlohmann::json& value, const std::string& source, std::string path) {
     if (!value.is_object()) {
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: {}: expected an object, found {}", source, path.empty() ? "/" : path,
-                                 json_type_name(value))};
+        return Error{ErrorCode::schema_error, fmt::format("{}: {}: expected an object, found {}", source,
+                                                          path.empty() ? "/" : path, json_type_name(value))};
     }
     return ObjectReader(value, source, std::move(path));
 }
@@ -79,11 +80,17 @@ Status ObjectReader::allow_only(std::initializer_list<std::string_view> allowed)
     return {};
 }
 
-bool ObjectReader::has(std::string_view key) const { return value_->contains(key); }
+bool ObjectReader::has(std::string_view key) const {
+    return value_->contains(key);
+}
 
-const nlohmann::json& ObjectReader::at(std::string_view key) const { return value_->at(std::string(key)); }
+const nlohmann::json& ObjectReader::at(std::string_view key) const {
+    return value_->at(std::string(key));
+}
 
-std::string ObjectReader::child_path(std::string_view key) const { return fmt::format("{}/{}", path_, key); }
+std::string ObjectReader::child_path(std::string_view key) const {
+    return fmt::format("{}/{}", path_, key);
+}
 
 std::string ObjectReader::context(std::string_view key) const {
     if (key.empty()) return fmt::format("{}: {}", source_, path_.empty() ? "/" : path_);

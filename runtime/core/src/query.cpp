@@ -1,9 +1,10 @@
 #include "tidewater/query.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <exception>
-#include <fmt/format.h>
 #include <vector>
 
 #include "kernel/kernel_select.hpp"
@@ -47,8 +48,7 @@ void solve_in_shore_order(const detail::KernelInput& in, SolveFn solve, std::spa
 Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2> points, SurfacePoint* full,
                   double* heights, const QueryOptions& options) {
     try {
-        const detail::PreparedWaves<float> waves =
-            detail::prepare_body_waves<float>(body, time);
+        const detail::PreparedWaves<float> waves = detail::prepare_body_waves<float>(body, time);
         detail::KernelInput in;
         in.waves = &waves;
         detail::PreparedWakes<float> wakes;
@@ -62,9 +62,11 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
         if (in.shore != nullptr && points.size() >= detail::kShoreOrderMinPoints && points.size() <= UINT32_MAX) {
             solve_in_shore_order(in, solve, points, full, heights, options);
         } else {
-            detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
-                solve(in, points.data() + begin, end - begin, full ? full + begin : nullptr, heights ? heights + begin : nullptr);
-            });
+            detail::parallel_chunks(points.size(), kPointsPerChunk, options.threads,
+                                    [&](std::size_t begin, std::size_t end) {
+                                        solve(in, points.data() + begin, end - begin, full ? full + begin : nullptr,
+                                              heights ? heights + begin : nullptr);
+                                    });
         }
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("query: could not run: {}", e.what())};
@@ -74,15 +76,16 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
 
 Status check_sizes(std::size_t points, std::size_t out) {
     if (points != out) {
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("query: {} points but room for {} results", points, out)};
+        return Error{ErrorCode::invalid_argument, fmt::format("query: {} points but room for {} results", points, out)};
     }
     return {};
 }
 
 }  // namespace
 
-const char* query_kernel_name() { return detail::query_kernel().name; }
+const char* query_kernel_name() {
+    return detail::query_kernel().name;
+}
 
 Status query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                      std::span<SurfacePoint> out, const QueryOptions& options) {
@@ -91,8 +94,8 @@ Status query_surface(const WaterBody& body, double time, std::span<const glm::dv
     return run_kernel(body, time, points, out.data(), nullptr, options);
 }
 
-Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points,
-                     std::span<double> heights, const QueryOptions& options) {
+Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points, std::span<double> heights,
+                     const QueryOptions& options) {
     if (auto st = check_sizes(points.size(), heights.size()); !st) return st;
     if (points.empty()) return {};
     return run_kernel(body, time, points, nullptr, heights.data(), options);

@@ -1,7 +1,8 @@
 #include "tidewater/ripples.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "tidewater/constants.hpp"
 
@@ -28,8 +29,7 @@ std::uint32_t hash_cell(std::int64_t ix, std::int64_t iz, std::uint32_t seed) {
 
 glm::dvec2 gradient_of(std::uint32_t h) {
     constexpr double d = 0.70710678118654752;
-    static constexpr glm::dvec2 kGradients[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1},
-                                                  {d, d}, {-d, d}, {d, -d}, {-d, -d}};
+    static constexpr glm::dvec2 kGradients[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {d, d}, {-d, d}, {d, -d}, {-d, -d}};
     return kGradients[h & 7u];
 }
 

@@ -1,10 +1,10 @@
 #include "tidewater/scene_floaters.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
-#include <span>
 
+#include <cmath>
 #include <glm/gtc/quaternion.hpp>
+#include <span>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/world_query.hpp"
@@ -15,7 +15,8 @@ namespace {
 
 RigidBodyProps float_props(const SceneFloat& f) {
     switch (f.shape) {
-        case SceneFloat::Shape::box: return RigidBodyProps::solid_box(f.size, f.mass);
+        case SceneFloat::Shape::box:
+            return RigidBodyProps::solid_box(f.size, f.mass);
         case SceneFloat::Shape::sphere: {
             RigidBodyProps p;
             p.mass = f.mass;
@@ -24,7 +25,8 @@ RigidBodyProps float_props(const SceneFloat& f) {
             p.hull = HullMesh::sphere(r, 8);
             return p;
         }
-        case SceneFloat::Shape::barrel: break;
+        case SceneFloat::Shape::barrel:
+            break;
     }
     RigidBodyProps p = RigidBodyProps::barrel(0.5 * f.size.x, f.size.y, f.mass);
     p.hull = HullMesh::cylinder(0.5 * f.size.x, f.size.y, 12);
@@ -40,14 +42,18 @@ double rest_height(const SceneFloat& f) {
 }
 
 /// The rotation that points the body's x axis along `heading` (radians from +x toward +z).
-glm::dquat yaw(double heading) { return glm::angleAxis(-heading, glm::dvec3(0.0, 1.0, 0.0)); }
+glm::dquat yaw(double heading) {
+    return glm::angleAxis(-heading, glm::dvec3(0.0, 1.0, 0.0));
+}
 
 }  // namespace
 
 Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, double start, double step) {
     if (!scene) return Error{ErrorCode::invalid_argument, "scene floaters: no scene"};
-    if (!(step > 0.0) || step > 0.5) return Error{ErrorCode::invalid_argument, fmt::format("scene floaters: step {} s must be in (0, 0.5]", step)};
-    if (!std::isfinite(start)) return Error{ErrorCode::invalid_argument, "scene floaters: the start time is not finite"};
+    if (!(step > 0.0) || step > 0.5)
+        return Error{ErrorCode::invalid_argument, fmt::format("scene floaters: step {} s must be in (0, 0.5]", step)};
+    if (!std::isfinite(start))
+        return Error{ErrorCode::invalid_argument, "scene floaters: the start time is not finite"};
     SceneFloaters f(scene, step);
     const double from = start - kSceneFloatSettle;
     f.world_.set_time(from);
@@ -60,13 +66,15 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
             double heading = 0.0;
             b.pose_at(b.start + std::min(d, length) / b.speed, at, heading);
             if (query_world_point(*scene, from, at).body.kind == BodyKind::none)
-                return Error{ErrorCode::invalid_argument,
-                             fmt::format("boats/{} ({}): its path runs over land at ({:.1f}, {:.1f}), {:.0f} m along it", i, b.name, at.x, at.y,
-                                         std::min(d, length))};
+                return Error{
+                    ErrorCode::invalid_argument,
+                    fmt::format("boats/{} ({}): its path runs over land at ({:.1f}, {:.1f}), {:.0f} m along it", i,
+                                b.name, at.x, at.y, std::min(d, length))};
         }
         // Inertia as a solid box round the hull; the boat's own hull for the water.
         const double mass = kWaterDensity * HullMesh::boat_plan_area(b.hull.length, b.hull.beam) * b.hull.draft;
-        RigidBodyProps props = RigidBodyProps::solid_box(glm::dvec3(b.hull.length, 2.0 * b.hull.draft, b.hull.beam), mass);
+        RigidBodyProps props =
+            RigidBodyProps::solid_box(glm::dvec3(b.hull.length, 2.0 * b.hull.draft, b.hull.beam), mass);
         props.hull = HullMesh::boat(b.hull.length, b.hull.beam, b.hull.draft);
         props.emitter = static_cast<int>(i);  // scene_boat_wakes: boat i is emitter i
         RigidBodyState s;
@@ -77,7 +85,9 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         QueryOptions own;
         own.exclude_emitter = static_cast<int>(i);
         WorldPoint under;
-        if (auto st = query_world(*scene, from, std::span<const glm::dvec2>(&at, 1), std::span<WorldPoint>(&under, 1), own); !st)
+        if (auto st =
+                query_world(*scene, from, std::span<const glm::dvec2>(&at, 1), std::span<WorldPoint>(&under, 1), own);
+            !st)
             return st.error();
         s.position = {at.x, under.surface.height, at.y};
         s.orientation = yaw(heading);
@@ -95,7 +105,8 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         RigidBodyState s;
         const WorldPoint under = query_world_point(*scene, from, sf.at);
         if (under.body.kind == BodyKind::none)
-            return Error{ErrorCode::invalid_argument, fmt::format("floats/{} ({}): ({}, {}) is on land", i, sf.name, sf.at.x, sf.at.y)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("floats/{} ({}): ({}, {}) is on land", i, sf.name, sf.at.x, sf.at.y)};
         s.position = {sf.at.x, under.surface.height + rest_height(sf), sf.at.y};
         auto id = f.world_.add(props, s);
         if (!id) return Error{id.error().code, fmt::format("floats/{} ({}): {}", i, sf.name, id.error().message)};
@@ -108,9 +119,10 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
 Status SceneFloaters::set_scene(std::shared_ptr<const Scene> scene) {
     if (!scene) return Error{ErrorCode::invalid_argument, "scene floaters: no scene"};
     if (scene->boats.size() != scene_->boats.size() || scene->floats.size() != scene_->floats.size())
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("scene floaters: the scene has {} boats and {} floats, these {} and {}: create them again", scene->boats.size(),
-                                 scene->floats.size(), scene_->boats.size(), scene_->floats.size())};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("scene floaters: the scene has {} boats and {} floats, these {} and {}: create them again",
+                        scene->boats.size(), scene->floats.size(), scene_->boats.size(), scene_->floats.size())};
     scene_ = std::move(scene);
     return {};
 }

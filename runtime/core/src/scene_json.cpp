@@ -1,22 +1,22 @@
 // Scene and preset JSON -> Scene / WaterProfile. Schema: docs/scene-format.md.
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "embedded_text.hpp"
-#include "tidewater/detail/json_reader.hpp"
 #include "scene/scene_json_parts.hpp"
 #include "tidewater/constants.hpp"
-#include "tidewater/scene.hpp"
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/json_reader.hpp"
+#include "tidewater/scene.hpp"
 
 namespace tidewater {
 
-
 namespace {
 
-using detail::ObjectReader;
 using detail::check_range;
+using detail::ObjectReader;
 using detail::read_pair;
 using nlohmann::json;
 
@@ -74,7 +74,8 @@ Status read_spectrum(const ObjectReader& parent, SpectrumSpec& s) {
     } else if (type == "pierson_moskowitz") {
         s.kind = SpectrumKind::pierson_moskowitz;
     } else {
-        return r->error("type", fmt::format("\"{}\" is not a spectrum (allowed: \"jonswap\", \"pierson_moskowitz\")", type));
+        return r->error("type",
+                        fmt::format("\"{}\" is not a spectrum (allowed: \"jonswap\", \"pierson_moskowitz\")", type));
     }
     std::int64_t count = s.wave_count, seed = static_cast<std::int64_t>(s.seed);
     if (auto st = r->number("wind_speed", s.wind_speed, true); !st) return st;
@@ -140,9 +141,8 @@ Status read_fold_policy(const ObjectReader& r, FoldPolicy& policy) {
 Status read_wave_source(const ObjectReader& r, WaterProfile& p, bool preset_allowed) {
     const int sources = int(r.has("waves")) + int(r.has("spectrum")) + int(preset_allowed && r.has("preset"));
     if (sources != 1) {
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: give exactly one of {}\"waves\" and \"spectrum\"", r.context(),
-                                 preset_allowed ? "\"preset\", " : "")};
+        return Error{ErrorCode::schema_error, fmt::format("{}: give exactly one of {}\"waves\" and \"spectrum\"",
+                                                          r.context(), preset_allowed ? "\"preset\", " : "")};
     }
     if (r.has("waves")) return read_waves(r, p.waves);
     if (r.has("spectrum")) {
@@ -191,7 +191,8 @@ Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::pat
         return e;
     }
     if (image->width < 2 || image->height < 2)
-        return r.error("file", fmt::format("{}: {}x{} pixels: a heightmap needs at least 2x2", path.string(), image->width, image->height));
+        return r.error("file", fmt::format("{}: {}x{} pixels: a heightmap needs at least 2x2", path.string(),
+                                           image->width, image->height));
     t.file = path.string();
     t.image = std::make_shared<const Gray16Image>(std::move(image).value());
     return Terrain(t);
@@ -200,7 +201,8 @@ Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::pat
 Status read_knolls(const ObjectReader& r, std::vector<Knoll>& out) {
     if (!r.has("knolls")) return {};
     const nlohmann::json& list = r.at("knolls");
-    if (!list.is_array()) return r.error("knolls", fmt::format("expected an array of objects, found {}", detail::json_type_name(list)));
+    if (!list.is_array())
+        return r.error("knolls", fmt::format("expected an array of objects, found {}", detail::json_type_name(list)));
     if (list.size() > 256) return r.error("knolls", fmt::format("{} knolls: at most 256", list.size()));
     for (std::size_t i = 0; i < list.size(); ++i) {
         auto k = ObjectReader::open(list[i], r.source(), r.child_path("knolls") + "/" + std::to_string(i));
@@ -240,8 +242,9 @@ Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::p
     if (auto st = r->allow_only({"flat", "plane", "heightmap", "island"}); !st) return st.error();
     const int shapes = int(r->has("flat")) + int(r->has("plane")) + int(r->has("heightmap")) + int(r->has("island"));
     if (shapes != 1) {
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: give exactly one of \"flat\", \"plane\", \"heightmap\" and \"island\"", r->context())};
+        return Error{
+            ErrorCode::schema_error,
+            fmt::format("{}: give exactly one of \"flat\", \"plane\", \"heightmap\" and \"island\"", r->context())};
     }
     for (const char* key : {"flat", "plane", "heightmap", "island"}) {
         if (!r->has(key)) continue;
@@ -254,13 +257,15 @@ Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::p
             if (auto st = shape->allow_only({"height"}); !st) return st.error();
             FlatTerrain flat;
             if (auto st = shape->number("height", flat.height, true); !st) return st.error();
-            if (auto st = check_range(*shape, "height", flat.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st) return st.error();
+            if (auto st = check_range(*shape, "height", flat.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
+                return st.error();
             return Terrain(flat);
         }
         if (auto st = shape->allow_only({"height", "slope"}); !st) return st.error();
         PlaneTerrain plane;
         if (auto st = shape->number("height", plane.height, true); !st) return st.error();
-        if (auto st = check_range(*shape, "height", plane.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st) return st.error();
+        if (auto st = check_range(*shape, "height", plane.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
+            return st.error();
         if (auto st = read_pair(*shape, "slope", plane.slope, true, 10.0); !st) return st.error();
         return Terrain(plane);
     }
@@ -279,7 +284,8 @@ Result<SceneCamera> read_camera(const ObjectReader& scene) {
             return r->error(key, "expected [x, y, z], three numbers");
         const glm::dvec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
         for (double c : {p.x, p.y, p.z})
-            if (!std::isfinite(c) || std::abs(c) > 1e7) return r->error(key, fmt::format("{} is out of range (|value| <= 1e7 m)", c));
+            if (!std::isfinite(c) || std::abs(c) > 1e7)
+                return r->error(key, fmt::format("{} is out of range (|value| <= 1e7 m)", c));
         (std::string(key) == "position" ? cam.position : cam.target) = p;
     }
     if (auto st = r->number("fov", cam.fov_y_deg); !st) return st.error();
@@ -332,8 +338,8 @@ Result<WaterProfile> read_water_profile(const json& value, const std::string& so
     if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
-    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset", "name",
-                                 "description"});
+    if (auto st = r->allow_only(
+            {"preset", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset", "name", "description"});
         !st)
         return st.error();
     WaterProfile profile;
@@ -383,8 +389,8 @@ Result<WaterProfile> parse_preset(std::string_view json_text, const std::string&
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "waves", "spectrum", "ripples", "flow", "fold_policy",
-                                 "time_offset"});
+    if (auto st = r->allow_only(
+            {"version", "name", "description", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset"});
         !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
@@ -415,25 +421,30 @@ Result<WaterProfile> load_preset(const std::string& name_or_path, const std::fil
     return parse_preset(*text, path.string());
 }
 
-Result<Scene> parse_scene(std::string_view json_text, const std::string& source, const std::filesystem::path& base_dir) {
+Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
+                          const std::filesystem::path& base_dir) {
     auto doc = detail::parse_json_text(json_text, source);
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "lakes", "rivers", "boats", "floats", "camera", "shore"}); !st)
+    if (auto st = r->allow_only({"version", "name", "description", "water_level", "terrain", "ocean", "lakes", "rivers",
+                                 "boats", "floats", "camera", "shore"});
+        !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
     if (auto st = r->string("name", scene.name); !st) return st.error();
     if (!r->has("ocean") && !r->has("lakes") && !r->has("rivers"))
-        return r->error("ocean", "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
+        return r->error("ocean",
+                        "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
     // The ocean's level: required with an ocean, meaningless without one.
     double level = 0.0;
     if (r->has("ocean") || r->has("water_level")) {
         if (!r->has("ocean")) return r->error("water_level", "is the ocean's level, and this scene has no \"ocean\"");
         if (auto st = r->number("water_level", level, true); !st) return st.error();
         if (std::abs(level) > kMaxAbsHeight) {
-            return r->error("water_level", fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", level));
+            return r->error("water_level",
+                            fmt::format("{} is out of range (allowed: |water_level| <= 100000 m)", level));
         }
     }
     if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
@@ -454,7 +465,8 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (auto st = detail::read_boats(*r, scene.boats); !st) return st.error();
     if (auto st = detail::read_floats(*r, scene.floats); !st) return st.error();
     if (!scene.has_ocean && scene.lakes.empty() && scene.rivers.empty())
-        return r->error("ocean", "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
+        return r->error("ocean",
+                        "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");
     if (auto st = detail::check_body_names(*r, scene); !st) return st.error();
     // How the waves feel the shore; bake_scene makes the model.
     auto shore = read_shore(*r, base_dir);

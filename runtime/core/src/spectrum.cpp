@@ -1,8 +1,9 @@
 #include "tidewater/spectrum.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <random>
 
 #include "tidewater/constants.hpp"
@@ -29,7 +30,9 @@ double spectrum_alpha(const SpectrumSpec& s) {
 
 /// Uniform double in [0, 1) from 53 random bits; unlike std::uniform_real_distribution
 /// this is the same on every standard library.
-double unit_uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double unit_uniform(std::mt19937_64& rng) {
+    return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 struct CumulativeTable {
     std::vector<double> omega;
@@ -77,7 +80,8 @@ double spread_offset(double spreading, double u) {
     auto density = [&](double a) { return std::pow(std::cos(0.5 * a), 2.0 * spreading); };
     for (int i = 1; i <= n; ++i) {
         const double a0 = -kPi + kTwoPi * (i - 1) / n, a1 = -kPi + kTwoPi * i / n;
-        cdf[static_cast<std::size_t>(i)] = cdf[static_cast<std::size_t>(i - 1)] + 0.5 * (density(a0) + density(a1)) * (a1 - a0);
+        cdf[static_cast<std::size_t>(i)] =
+            cdf[static_cast<std::size_t>(i - 1)] + 0.5 * (density(a0) + density(a1)) * (a1 - a0);
     }
     const double target = u * cdf.back();
     const auto it = std::lower_bound(cdf.begin(), cdf.end(), target);

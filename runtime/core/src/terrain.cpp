@@ -29,9 +29,11 @@ double sample_heightmap(const HeightmapTerrain& t, glm::dvec2 p) {
     const int i0 = std::min(static_cast<int>(cu), img.width - 2), j0 = std::min(static_cast<int>(cv), img.height - 2);
     const double fu = cu - i0, fv = cv - j0;
     auto at = [&](int i, int j) {
-        return static_cast<double>(img.pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(i)]);
+        return static_cast<double>(img.pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(img.width) +
+                                              static_cast<std::size_t>(i)]);
     };
-    const double raw = (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+    const double raw = (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) +
+                       fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
     return t.min_height + (t.max_height - t.min_height) * raw / 65535.0;
 }
 
@@ -60,7 +62,7 @@ double sample_island(const IslandTerrain& t, glm::dvec2 p) {
         h = t.seabed * (1.0 - std::exp(slope * s / t.seabed));
     } else {
         const double inland = -s;
-        const double beach = std::min(0.05 * inland, 3.0);                  // ~3 degrees, up to 3 m
+        const double beach = std::min(0.05 * inland, 3.0);                         // ~3 degrees, up to 3 m
         const double cliff_step = cliff * 25.0 * (1.0 - std::exp(-inland / 6.0));  // a 25 m wall
         const double hills = t.height * (0.7 + 1.2 * fbm(p / 450.0, t.seed + 3u, 4));
         const double ramp = std::clamp((inland - 40.0) / 310.0, 0.0, 1.0);
@@ -98,7 +100,8 @@ double TerrainCut::depth_at(glm::dvec2 p) const {
         if (i < 0 || j < 0 || i >= nx || j >= nz) return 0.0;
         return depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)];
     };
-    return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+    return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) +
+           fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
 }
 
 double Terrain::height_at(glm::dvec2 p) const {
@@ -122,18 +125,18 @@ double Terrain::shape_height_at(glm::dvec2 p) const {
 }
 
 const char* Terrain::kind_name() const {
-    return std::visit(Overloaded{[](const FlatTerrain&) { return "flat"; }, [](const PlaneTerrain&) { return "plane"; },
-                                 [](const HeightmapTerrain&) { return "heightmap"; },
-                                 [](const IslandTerrain&) { return "island"; }},
-                      shape_);
+    return std::visit(
+        Overloaded{[](const FlatTerrain&) { return "flat"; }, [](const PlaneTerrain&) { return "plane"; },
+                   [](const HeightmapTerrain&) { return "heightmap"; }, [](const IslandTerrain&) { return "island"; }},
+        shape_);
 }
 
 glm::dvec2 Terrain::extent_center() const {
-    return std::visit(Overloaded{[](const FlatTerrain&) { return glm::dvec2(0.0); },
-                                 [](const PlaneTerrain&) { return glm::dvec2(0.0); },
-                                 [](const HeightmapTerrain& h) { return h.center; },
-                                 [](const IslandTerrain& i) { return i.center; }},
-                      shape_);
+    return std::visit(
+        Overloaded{[](const FlatTerrain&) { return glm::dvec2(0.0); },
+                   [](const PlaneTerrain&) { return glm::dvec2(0.0); },
+                   [](const HeightmapTerrain& h) { return h.center; }, [](const IslandTerrain& i) { return i.center; }},
+        shape_);
 }
 
 double Terrain::extent_half_size() const {

@@ -1,8 +1,9 @@
 #include "tidewater/wakes.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "host_device.h"
 #include "tidewater/constants.hpp"
@@ -11,19 +12,26 @@ namespace tidewater {
 
 namespace {
 
-bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+bool finite(glm::dvec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
 
 Status check_point(const DisturbancePoint& p, const std::string& where) {
-    if (!finite(p.position)) return Error{ErrorCode::invalid_argument, fmt::format("{}: position is not finite", where)};
+    if (!finite(p.position))
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: position is not finite", where)};
     if (!std::isfinite(p.strength))
         return Error{ErrorCode::invalid_argument, fmt::format("{}: strength {} is not finite", where, p.strength)};
     if (!(p.source_size > 0.0) || !std::isfinite(p.source_size))
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: source_size {} must be > 0 m", where, p.source_size)};
-    if (!std::isfinite(p.emitted)) return Error{ErrorCode::invalid_argument, fmt::format("{}: emitted is not finite", where)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: source_size {} must be > 0 m", where, p.source_size)};
+    if (!std::isfinite(p.emitted))
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: emitted is not finite", where)};
     if (!(p.steepness >= 0.0 && p.steepness <= 1.0))
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: steepness {} must be in [0, 1]", where, p.steepness)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: steepness {} must be in [0, 1]", where, p.steepness)};
     if (!(p.turbulence >= 0.0 && p.turbulence <= 1.0))
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: turbulence {} must be in [0, 1]", where, p.turbulence)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: turbulence {} must be in [0, 1]", where, p.turbulence)};
     return {};
 }
 
@@ -33,7 +41,8 @@ glm::dvec2 along(const std::vector<glm::dvec2>& path, double distance) {
     double walked = 0.0;
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
         const double length = glm::length(path[i + 1] - path[i]);
-        if (distance <= walked + length && length > 0.0) return path[i] + (path[i + 1] - path[i]) * ((distance - walked) / length);
+        if (distance <= walked + length && length > 0.0)
+            return path[i] + (path[i + 1] - path[i]) * ((distance - walked) / length);
         walked += length;
     }
     if (distance <= 0.0) return path.front();
@@ -61,26 +70,31 @@ std::size_t Wakes::point_count() const {
 Status Wakes::validate(const std::string& context) const {
     if (point_count() > gpu::kMaxWakePoints)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: {} disturbance points, more than the {} a frame may hold", context, point_count(), gpu::kMaxWakePoints)};
+                     fmt::format("{}: {} disturbance points, more than the {} a frame may hold", context, point_count(),
+                                 gpu::kMaxWakePoints)};
     for (std::size_t c = 0; c < chains.size(); ++c) {
         const WakeChain& chain = chains[c];
         if (!(chain.max_age > 0.0) || !std::isfinite(chain.max_age))
-            return Error{ErrorCode::invalid_argument, fmt::format("{}: chains[{}].max_age {} must be > 0 s", context, c, chain.max_age)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("{}: chains[{}].max_age {} must be > 0 s", context, c, chain.max_age)};
         for (std::size_t i = 0; i < chain.points.size(); ++i) {
-            if (auto st = check_point(chain.points[i], fmt::format("{}: chains[{}].points[{}]", context, c, i)); !st) return st;
+            if (auto st = check_point(chain.points[i], fmt::format("{}: chains[{}].points[{}]", context, c, i)); !st)
+                return st;
             if (i > 0 && !(chain.points[i].emitted > chain.points[i - 1].emitted))
-                return Error{ErrorCode::invalid_argument,
-                             fmt::format("{}: chains[{}].points[{}] was emitted at {} s, not after the point before it ({} s)", context,
-                                         c, i, chain.points[i].emitted, chain.points[i - 1].emitted)};
+                return Error{
+                    ErrorCode::invalid_argument,
+                    fmt::format("{}: chains[{}].points[{}] was emitted at {} s, not after the point before it ({} s)",
+                                context, c, i, chain.points[i].emitted, chain.points[i - 1].emitted)};
         }
     }
     for (std::size_t i = 0; i < splashes.size(); ++i)
         if (auto st = check_point(splashes[i], fmt::format("{}: splashes[{}]", context, i)); !st) return st;
     if (!splash_emitters.empty() && splash_emitters.size() != splashes.size())
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: {} splash emitters for {} splashes", context, splash_emitters.size(), splashes.size())};
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} splash emitters for {} splashes", context,
+                                                              splash_emitters.size(), splashes.size())};
     if (!(splash_max_age > 0.0) || !std::isfinite(splash_max_age))
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: splash_max_age {} must be > 0 s", context, splash_max_age)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: splash_max_age {} must be > 0 s", context, splash_max_age)};
     return {};
 }
 
@@ -166,7 +180,8 @@ void lay_points(const BoatWakeShape& s, const BoatHull& hull, glm::dvec2 centre,
 
 }  // namespace
 
-BoatWakeEmitter::BoatWakeEmitter(const BoatHull& hull, int emitter) : hull_(hull), shape_(boat_wake_shape(hull)), emitter_(emitter) {
+BoatWakeEmitter::BoatWakeEmitter(const BoatHull& hull, int emitter)
+    : hull_(hull), shape_(boat_wake_shape(hull)), emitter_(emitter) {
     start_chains(chains_, emitter);
 }
 
@@ -183,7 +198,8 @@ Status BoatWakeEmitter::advance(glm::dvec2 position, double heading, double time
     if (!finite(position) || !std::isfinite(heading) || !std::isfinite(time))
         return Error{ErrorCode::invalid_argument, "boat wake: the pose or its time is not finite"};
     if (started_ && !(time > last_.time))
-        return Error{ErrorCode::invalid_argument, fmt::format("boat wake: pose at {} s does not follow the last one ({} s)", time, last_.time)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("boat wake: pose at {} s does not follow the last one ({} s)", time, last_.time)};
     const Pose now{position, heading, time, started_ ? last_.track + glm::length(position - last_.position) : 0.0};
     if (!started_) {
         started_ = true;

@@ -1,10 +1,11 @@
 #include "tidewater/water_body.hpp"
 
-#include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/whitecaps.hpp"
+#include <fmt/format.h>
 
 #include <cmath>
-#include <fmt/format.h>
+
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/whitecaps.hpp"
 
 namespace tidewater {
 
@@ -28,17 +29,18 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     body.waves_ = std::move(waves).value();
     body.ripples_ = RippleField(profile.ripples);
     body.level_ = level;
-    body.whitecap_jacobian_ = profile.spectrum
-                                  ? tidewater::whitecap_jacobian(body.waves_, monahan_whitecap_fraction(profile.spectrum->wind_speed))
-                                  : kDefaultWhitecapJacobian;
+    body.whitecap_jacobian_ =
+        profile.spectrum
+            ? tidewater::whitecap_jacobian(body.waves_, monahan_whitecap_fraction(profile.spectrum->wind_speed))
+            : kDefaultWhitecapJacobian;
     return body;
 }
 
 Result<WaterBody> WaterBody::with_shore(std::shared_ptr<const ShoreWaves> shore) const {
     if (shore && shore->wave_count() != waves_.size()) {
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("water body: the shore model was baked for {} waves, the body has {}", shore->wave_count(),
-                                 waves_.size())};
+                     fmt::format("water body: the shore model was baked for {} waves, the body has {}",
+                                 shore->wave_count(), waves_.size())};
     }
     WaterBody copy = *this;
     copy.shore_ = std::move(shore);

@@ -1,19 +1,28 @@
 #include "tidewater/waves.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "tidewater/constants.hpp"
 
 namespace tidewater {
 
-double deep_water_omega(double wavelength) { return std::sqrt(kGravity * kTwoPi / wavelength); }
+double deep_water_omega(double wavelength) {
+    return std::sqrt(kGravity * kTwoPi / wavelength);
+}
 
-double deep_water_wavelength(double omega) { return kTwoPi * kGravity / (omega * omega); }
+double deep_water_wavelength(double omega) {
+    return kTwoPi * kGravity / (omega * omega);
+}
 
-double Wave::period() const { return kTwoPi / omega; }
+double Wave::period() const {
+    return kTwoPi / omega;
+}
 
-double Wave::phase_speed() const { return omega / k; }
+double Wave::phase_speed() const {
+    return omega / k;
+}
 
 namespace {
 
@@ -34,8 +43,8 @@ Status validate_spec(const WaveSpec& s, const std::string& where) {
     if (auto st = check_range(s.direction_deg, -1e6, 1e6, where, "direction", "finite degrees"); !st) return st;
     if (!std::isfinite(s.wavelength) || s.wavelength <= 0.0 || s.wavelength > 1e5) {
         return Error{ErrorCode::schema_error,
-                     fmt::format("{}/wavelength: {} is out of range (allowed: 0 < wavelength <= 100000 m)",
-                                 where, s.wavelength)};
+                     fmt::format("{}/wavelength: {} is out of range (allowed: 0 < wavelength <= 100000 m)", where,
+                                 s.wavelength)};
     }
     if (auto st = check_range(s.amplitude, 0.0, 1e3, where, "amplitude", "0 <= amplitude <= 1000 m"); !st) return st;
     if (auto st = check_range(s.steepness, 0.0, 1.0, where, "steepness", "0 <= steepness <= 1"); !st) return st;
@@ -45,8 +54,8 @@ Status validate_spec(const WaveSpec& s, const std::string& where) {
 
 }  // namespace
 
-Result<WaveSet> WaveSet::create(std::span<const WaveSpec> specs, FoldPolicy policy,
-                                const std::string& context, std::vector<std::string>* warnings) {
+Result<WaveSet> WaveSet::create(std::span<const WaveSpec> specs, FoldPolicy policy, const std::string& context,
+                                std::vector<std::string>* warnings) {
     if (specs.size() > kMaxWaves) {
         return Error{ErrorCode::schema_error,
                      fmt::format("{}: {} waves given, at most {} allowed", context, specs.size(), kMaxWaves)};
@@ -79,9 +88,9 @@ Result<WaveSet> WaveSet::create(std::span<const WaveSpec> specs, FoldPolicy poli
         const double scale = kFoldLimit / fold;
         for (Wave& w : set.waves_) w.steepness *= scale;
         if (warnings) {
-            warnings->push_back(fmt::format(
-                "{}: sum(steepness * k * amplitude) = {:.4f} exceeds {}; every steepness scaled by {:.4f}",
-                context, fold, kFoldLimit, scale));
+            warnings->push_back(
+                fmt::format("{}: sum(steepness * k * amplitude) = {:.4f} exceeds {}; every steepness scaled by {:.4f}",
+                            context, fold, kFoldLimit, scale));
         }
     }
     return set;

@@ -1,12 +1,13 @@
 #include "tidewater/world_query.hpp"
 
-#include <exception>
 #include <fmt/format.h>
+
+#include <exception>
 #include <vector>
 
 #include "kernel/kernel_select.hpp"
-#include "tidewater/detail/parallel.hpp"
 #include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/parallel.hpp"
 #include "tidewater/wakes.hpp"
 #include "water/body_at.hpp"
 #include "water/prepared_waves.hpp"
@@ -33,11 +34,13 @@ struct Group {
 Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies, const detail::EvaluationKey& key,
                        double time, Group& group, const QueryOptions& options) {
     detail::PreparedWaves<float> river_waves, still_waves;
-    const detail::RiverInput<float> in = detail::prepare_river_input<float>(scene, bodies, key, time, river_waves, still_waves);
+    const detail::RiverInput<float> in =
+        detail::prepare_river_input<float>(scene, bodies, key, time, river_waves, still_waves);
     const detail::RiverSolveFn solve = detail::query_kernel().solve_river;
-    detail::parallel_chunks(group.points.size(), kRiverPointsPerChunk, options.threads, [&](std::size_t begin, std::size_t end) {
-        solve(in, group.points.data() + begin, end - begin, group.results.data() + begin);
-    });
+    detail::parallel_chunks(group.points.size(), kRiverPointsPerChunk, options.threads,
+                            [&](std::size_t begin, std::size_t end) {
+                                solve(in, group.points.data() + begin, end - begin, group.results.data() + begin);
+                            });
     return {};
 }
 
@@ -67,13 +70,19 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
         Status st;
         switch (key.kind) {
             case detail::EvaluationKind::land:
-                for (std::size_t k = 0; k < group.points.size(); ++k) group.results[k] = detail::land_surface(scene, group.points[k]);
+                for (std::size_t k = 0; k < group.points.size(); ++k)
+                    group.results[k] = detail::land_surface(scene, group.points[k]);
                 break;
-            case detail::EvaluationKind::ocean: st = query_surface(scene.ocean, time, group.points, group.results, options); break;
+            case detail::EvaluationKind::ocean:
+                st = query_surface(scene.ocean, time, group.points, group.results, options);
+                break;
             case detail::EvaluationKind::lake:
-                st = query_surface(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, group.points, group.results, options);
+                st = query_surface(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, group.points,
+                                   group.results, options);
                 break;
-            case detail::EvaluationKind::river: st = run_river_group(scene, *bodies, key, time, group, options); break;
+            case detail::EvaluationKind::river:
+                st = run_river_group(scene, *bodies, key, time, group, options);
+                break;
         }
         if (!st) return st;
         for (std::size_t k = 0; k < group.members.size(); ++k) {
@@ -89,10 +98,14 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
 std::string_view body_name(const Scene& scene, BodyRef body) {
     const auto index = static_cast<std::size_t>(body.index);
     switch (body.kind) {
-        case BodyKind::ocean: return "ocean";
-        case BodyKind::lake: return body.index >= 0 && index < scene.lakes.size() ? std::string_view(scene.lakes[index].name) : "";
-        case BodyKind::river: return body.index >= 0 && index < scene.rivers.size() ? std::string_view(scene.rivers[index].name) : "";
-        case BodyKind::none: break;
+        case BodyKind::ocean:
+            return "ocean";
+        case BodyKind::lake:
+            return body.index >= 0 && index < scene.lakes.size() ? std::string_view(scene.lakes[index].name) : "";
+        case BodyKind::river:
+            return body.index >= 0 && index < scene.rivers.size() ? std::string_view(scene.rivers[index].name) : "";
+        case BodyKind::none:
+            break;
     }
     return "";
 }
@@ -100,12 +113,15 @@ std::string_view body_name(const Scene& scene, BodyRef body) {
 Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                    const QueryOptions& options) {
     if (points.size() != out.size())
-        return Error{ErrorCode::invalid_argument, fmt::format("query_world: {} points but room for {} results", points.size(), out.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass it "
-                                 "through bake_scene first", scene.name)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass it "
+                        "through bake_scene first",
+                        scene.name)};
     if (points.empty()) return {};
     try {
         return run_world(scene, time, points, out, options);
@@ -116,7 +132,8 @@ Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> 
 
 WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) {
     WorldPoint out;
-    if (!query_world(scene, time, std::span<const glm::dvec2>(&point, 1), std::span<WorldPoint>(&out, 1))) return WorldPoint{};
+    if (!query_world(scene, time, std::span<const glm::dvec2>(&point, 1), std::span<WorldPoint>(&out, 1)))
+        return WorldPoint{};
     return out;
 }
 

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "frame_constants.hpp"
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/body_finder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/baked_scene.hpp"
 
 namespace tidewater::render::detail {
 
@@ -18,7 +18,9 @@ namespace td = tidewater::detail;
 /// (nx * nz flags), grown by one patch so that displaced water at their edges is drawn.
 std::vector<std::uint32_t> wet_patches(int nx, int nz, int per, const std::vector<std::uint8_t>& wet) {
     const int px = (nx + per - 1) / per, pz = (nz + per - 1) / per;
-    auto at = [](int i, int j, int row) { return static_cast<std::size_t>(j) * static_cast<std::size_t>(row) + static_cast<std::size_t>(i); };
+    auto at = [](int i, int j, int row) {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(row) + static_cast<std::size_t>(i);
+    };
     std::vector<std::uint8_t> hit(at(0, pz, px), 0);
     for (int j = 0; j < nz; ++j)
         for (int i = 0; i < nx; ++i)
@@ -28,7 +30,8 @@ std::vector<std::uint32_t> wet_patches(int nx, int nz, int per, const std::vecto
         for (int a = 0; a < px; ++a) {
             bool near = false;
             for (int z = std::max(b - 1, 0); z <= std::min(b + 1, pz - 1) && !near; ++z)
-                for (int x = std::max(a - 1, 0); x <= std::min(a + 1, px - 1) && !near; ++x) near = hit[at(x, z, px)] != 0;
+                for (int x = std::max(a - 1, 0); x <= std::min(a + 1, px - 1) && !near; ++x)
+                    near = hit[at(x, z, px)] != 0;
             if (near) out.push_back(static_cast<std::uint32_t>(a) | (static_cast<std::uint32_t>(b) << 16));
         }
     return out;
@@ -91,13 +94,15 @@ Result<BodyBuffers> BodyBuffers::create(const Device& ctx, const Scene& scene) {
             append_river_fields(r, texels, channel);
             for (std::size_t t = 0; t < r.grid.size(); ++t) {
                 masks.push_back(static_cast<float>(r.texel[t]));
-                if (wet[t]) l.surface_rise = std::max(l.surface_rise, static_cast<double>(r.surface_height[t]) - r.mouth_level);
+                if (wet[t])
+                    l.surface_rise = std::max(l.surface_rise, static_cast<double>(r.surface_height[t]) - r.mouth_level);
             }
             b.rivers.push_back(l);
         }
         for (const td::LakeBake& lake : bodies->lakes) {
             const std::vector<std::uint8_t> extent = grown_extent(lake);
-            b.lakes.push_back(layout_on(lake.grid, std::max(16.0, 2.0 * lake.grid.texel), masks.size(), extent, patches));
+            b.lakes.push_back(
+                layout_on(lake.grid, std::max(16.0, 2.0 * lake.grid.texel), masks.size(), extent, patches));
             for (std::uint8_t v : extent) masks.push_back(static_cast<float>(v));
         }
     }
@@ -116,14 +121,16 @@ Result<BodyBuffers> BodyBuffers::create(const Device& ctx, const Scene& scene) {
     return b;
 }
 
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, const ShoreBuffers& shores) {
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan,
+                          const ShoreBuffers& shores) {
     BodyDraws out;
     const glm::dvec2 origin = plan.origin;
     // A draw's still water reads shore model `slot` of `shores` (0: the ocean's, 1 + l: lake l's).
     auto use_shore = [&](gpu::GpuBodyDraw& d, std::size_t slot) {
         const ShorePlacement p = shores.placement(slot);
         if (!p.model) return;
-        d.shore = glm::vec4(rel(p.model->corner(), origin), static_cast<float>(p.model->texel()), static_cast<float>(p.model->resolution()));
+        d.shore = glm::vec4(rel(p.model->corner(), origin), static_cast<float>(p.model->texel()),
+                            static_cast<float>(p.model->resolution()));
         d.shore_base = glm::uvec4(p.per_wave, p.shared, 0u, 0u);
     };
     const std::size_t ocean_draws = scene.has_ocean ? 1 + plan.ocean_rings.size() : 0;
@@ -145,8 +152,10 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         gpu::GpuBodyDraw d{};
         const glm::vec4& grid = plan.frame.water_patch;  // size, per side, corner
         d.patch_grid = glm::vec4(grid.z, grid.w, grid.x, grid.y);
-        d.body = glm::vec4(static_cast<float>(gpu::kBodyOcean), static_cast<float>(scene.water_level()), 0.0f, static_cast<float>(ocean_count));
-        d.extra = glm::vec4(static_cast<float>(scene.ocean.whitecap_jacobian()), 0.0f, 0.0f, static_cast<float>(displacement(scene.ocean)));
+        d.body = glm::vec4(static_cast<float>(gpu::kBodyOcean), static_cast<float>(scene.water_level()), 0.0f,
+                           static_cast<float>(ocean_count));
+        d.extra = glm::vec4(static_cast<float>(scene.ocean.whitecap_jacobian()), 0.0f, 0.0f,
+                            static_cast<float>(displacement(scene.ocean)));
         d.lod.x = static_cast<float>(scene.ocean.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 0);
@@ -171,11 +180,12 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         gpu::GpuBodyDraw d{};
         const glm::vec2 corner = rel(b.corner, origin);
         d.patch_grid = glm::vec4(corner, static_cast<float>(b.patch), 0.0f);
-        d.body = glm::vec4(static_cast<float>(gpu::kBodyLake), static_cast<float>(lake.level()), static_cast<float>(lake_first[l]),
-                           static_cast<float>(lake.waves().size()));
+        d.body = glm::vec4(static_cast<float>(gpu::kBodyLake), static_cast<float>(lake.level()),
+                           static_cast<float>(lake_first[l]), static_cast<float>(lake.waves().size()));
         d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_texel));
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), 0.0f, 0.0f);
-        d.extra = glm::vec4(static_cast<float>(lake.whitecap_jacobian()), static_cast<float>(b.first_patch), 0.0f, static_cast<float>(displacement(lake)));
+        d.extra = glm::vec4(static_cast<float>(lake.whitecap_jacobian()), static_cast<float>(b.first_patch), 0.0f,
+                            static_cast<float>(displacement(lake)));
         d.lod.x = static_cast<float>(lake.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 1 + l);
@@ -195,18 +205,22 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         const glm::vec2 corner = rel(b.corner, origin);
         d.patch_grid = glm::vec4(corner, static_cast<float>(b.patch), 0.0f);
         const std::uint32_t still_first = into_lake ? lake_first[static_cast<std::size_t>(river.receiver)] : 0u;
-        const std::uint32_t still_count = into_lake ? static_cast<std::uint32_t>(still.waves().size()) : into_ocean ? ocean_count : 0u;
-        d.body = glm::vec4(static_cast<float>(gpu::kBodyRiver), static_cast<float>(river.mouth_level), static_cast<float>(still_first),
-                           static_cast<float>(still_count));
+        const std::uint32_t still_count = into_lake    ? static_cast<std::uint32_t>(still.waves().size())
+                                          : into_ocean ? ocean_count
+                                                       : 0u;
+        d.body = glm::vec4(static_cast<float>(gpu::kBodyRiver), static_cast<float>(river.mouth_level),
+                           static_cast<float>(still_first), static_cast<float>(still_count));
         d.grid = glm::vec4(corner, static_cast<float>(b.texel), static_cast<float>(b.first_texel));
         const std::uint32_t first_wave = static_cast<std::uint32_t>(out.river_waves.size());
         const auto river_waves = gpu_river_waves(preset, time, river.mean_speed);
         out.river_waves.insert(out.river_waves.end(), river_waves.begin(), river_waves.end());
         d.river = glm::vec4(static_cast<float>(b.nx), static_cast<float>(b.nz), static_cast<float>(first_wave),
                             static_cast<float>(out.river_waves.size() - first_wave));
-        d.extra = glm::vec4(static_cast<float>(preset.whitecap_jacobian()), static_cast<float>(b.first_patch), static_cast<float>(b.surface_rise),
+        d.extra = glm::vec4(static_cast<float>(preset.whitecap_jacobian()), static_cast<float>(b.first_patch),
+                            static_cast<float>(b.surface_rise),
                             static_cast<float>(displacement(preset) + (still_count > 0 ? displacement(still) : 0.0)));
-        d.lod.x = static_cast<float>(preset.waves().mean_square_slope() + (still_count > 0 ? still.waves().mean_square_slope() : 0.0));
+        d.lod.x = static_cast<float>(preset.waves().mean_square_slope() +
+                                     (still_count > 0 ? still.waves().mean_square_slope() : 0.0));
         d.rivers = rivers;
         if (into_ocean) use_shore(d, 0);
         if (into_lake) use_shore(d, 1 + static_cast<std::size_t>(river.receiver));

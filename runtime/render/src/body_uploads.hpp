@@ -9,17 +9,16 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
-#include "scene_uploads.hpp"
 #include "host_device.h"
-#include "tidewater/render/device_context.hpp"
+#include "scene_uploads.hpp"
 #include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/render/device_context.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater::render::detail {
@@ -32,7 +31,7 @@ struct BodyLayout {
     std::uint32_t first_texel = 0;  ///< in the body masks (and a river's in its fields)
     double patch = 8.0;             ///< m, a whole number of texels
     std::uint32_t first_patch = 0, patch_count = 0;
-    double surface_rise = 0.0;      ///< highest rest surface above the level, m
+    double surface_rise = 0.0;  ///< highest rest surface above the level, m
 };
 
 /// The scene's lakes and rivers as the shaders read them; placeholders without any.
@@ -45,7 +44,8 @@ struct BodyBuffers {
 
 /// Appends a river's query texels and channel (s, n, flow x, z) per texel, as the
 /// shaders read them (river_water.glsl), to `texels` and `channel`.
-void append_river_fields(const tidewater::detail::RiverBake& river, std::vector<float>& texels, std::vector<glm::vec4>& channel);
+void append_river_fields(const tidewater::detail::RiverBake& river, std::vector<float>& texels,
+                         std::vector<glm::vec4>& channel);
 
 /// What one frame draws: the ocean (when the scene has one), each lake, each river.
 struct BodyDraws {
@@ -57,6 +57,7 @@ struct BodyDraws {
 
 /// The ocean's waves and patch grid come from the frame's `plan`; `ocean_shore` says
 /// whether the frame's shore fields hold the ocean's model.
-BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan, const ShoreBuffers& shores);
+BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan,
+                          const ShoreBuffers& shores);
 
 }  // namespace tidewater::render::detail

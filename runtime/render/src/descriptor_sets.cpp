@@ -4,7 +4,8 @@
 
 namespace tidewater::render::detail {
 
-VkResult make_set_layout(const Device& device, std::span<const BindingRow> rows, VkShaderStageFlags stages, OwnedSetLayout& out) {
+VkResult make_set_layout(const Device& device, std::span<const BindingRow> rows, VkShaderStageFlags stages,
+                         OwnedSetLayout& out) {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const BindingRow& r : rows) bindings.push_back({r.binding, r.type, 1, stages, nullptr});
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -15,10 +16,12 @@ VkResult make_set_layout(const Device& device, std::span<const BindingRow> rows,
     });
 }
 
-VkResult make_descriptor_pool(const Device& device, std::span<const BindingRow> rows, std::uint32_t sets, OwnedDescriptorPool& out) {
+VkResult make_descriptor_pool(const Device& device, std::span<const BindingRow> rows, std::uint32_t sets,
+                              OwnedDescriptorPool& out) {
     std::vector<VkDescriptorPoolSize> sizes;
     for (const BindingRow& r : rows) {
-        auto same = std::find_if(sizes.begin(), sizes.end(), [&](const VkDescriptorPoolSize& s) { return s.type == r.type; });
+        auto same =
+            std::find_if(sizes.begin(), sizes.end(), [&](const VkDescriptorPoolSize& s) { return s.type == r.type; });
         if (same == sizes.end()) same = sizes.insert(sizes.end(), {r.type, 0});
         same->descriptorCount += sets;
     }
@@ -46,7 +49,8 @@ void write_set(const Device& device, VkDescriptorSet set, std::span<const Bindin
         else
             w.pBufferInfo = &resources[i].buffer;
     }
-    device.vk().UpdateDescriptorSets(device.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    device.vk().UpdateDescriptorSets(device.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0,
+                                     nullptr);
 }
 
 }  // namespace tidewater::render::detail

@@ -3,11 +3,12 @@
 // descriptor writes are all made from that table, so a new binding is one row here.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
-#include <vulkan/vulkan.h>
 
 #include "host_device.h"
 #include "vk_handle.hpp"
@@ -69,17 +70,21 @@ static_assert(rows_in_binding_order(kFrameSetRows), "kFrameSetRows must list hos
 static_assert(rows_in_binding_order(kQuerySetRows), "kQuerySetRows must list host_device.h's QueryBinding in order");
 
 /// The set layout of `rows`, visible to `stages`.
-VkResult make_set_layout(const Device& device, std::span<const BindingRow> rows, VkShaderStageFlags stages, OwnedSetLayout& out);
+VkResult make_set_layout(const Device& device, std::span<const BindingRow> rows, VkShaderStageFlags stages,
+                         OwnedSetLayout& out);
 
 /// A pool for `sets` sets of `rows`.
-VkResult make_descriptor_pool(const Device& device, std::span<const BindingRow> rows, std::uint32_t sets, OwnedDescriptorPool& out);
+VkResult make_descriptor_pool(const Device& device, std::span<const BindingRow> rows, std::uint32_t sets,
+                              OwnedDescriptorPool& out);
 
 /// What one binding holds: its buffer, or its sampled image (by the row's type).
 struct BoundResource {
     VkDescriptorBufferInfo buffer{};
     VkDescriptorImageInfo image{};
 };
-inline BoundResource bound_buffer(VkBuffer buffer) { return {{buffer, 0, VK_WHOLE_SIZE}, {}}; }
+inline BoundResource bound_buffer(VkBuffer buffer) {
+    return {{buffer, 0, VK_WHOLE_SIZE}, {}};
+}
 inline BoundResource bound_texture(VkSampler sampler, VkImageView view) {
     return {{}, {sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
 }

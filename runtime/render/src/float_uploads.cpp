@@ -1,8 +1,8 @@
 #include "float_uploads.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -27,7 +27,9 @@ namespace tidewater::render::detail {
 
 namespace {
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 
@@ -38,16 +40,20 @@ Result<FloatUpload> pack_floats(std::span<const FloatDraw> floats, glm::dvec2 or
         const FloatDraw& f = floats[i];
         const std::string what = fmt::format("renderer: FrameInfo::floats[{}]", i);
         if (f.hull == nullptr) return Error{ErrorCode::invalid_argument, what + ": no hull"};
-        if (auto st = f.hull->validate(); !st) return Error{ErrorCode::invalid_argument, what + ": " + st.error().message};
+        if (auto st = f.hull->validate(); !st)
+            return Error{ErrorCode::invalid_argument, what + ": " + st.error().message};
         const glm::dvec4 q(f.orientation.x, f.orientation.y, f.orientation.z, f.orientation.w);
         if (!finite(f.position) || !std::isfinite(q.x + q.y + q.z + q.w) || glm::length(q) < 1e-6)
-            return Error{ErrorCode::invalid_argument, what + ": the position and orientation must be finite (a non-zero quaternion)"};
-        if (!(f.color.r >= 0.0f && f.color.g >= 0.0f && f.color.b >= 0.0f && f.color.r <= 1.0f && f.color.g <= 1.0f && f.color.b <= 1.0f))
+            return Error{ErrorCode::invalid_argument,
+                         what + ": the position and orientation must be finite (a non-zero quaternion)"};
+        if (!(f.color.r >= 0.0f && f.color.g >= 0.0f && f.color.b >= 0.0f && f.color.r <= 1.0f && f.color.g <= 1.0f &&
+              f.color.b <= 1.0f))
             return Error{ErrorCode::invalid_argument, what + ": color must be linear RGB in 0..1"};
         const std::size_t count = 3 * f.hull->triangles.size();
         if (out.vertices.size() + count > kMaxFloatVertices)
-            return Error{ErrorCode::invalid_argument,
-                         fmt::format("{}: the floats' hulls hold more than {} triangles in all", what, kMaxFloatVertices / 3)};
+            return Error{
+                ErrorCode::invalid_argument,
+                fmt::format("{}: the floats' hulls hold more than {} triangles in all", what, kMaxFloatVertices / 3)};
         const glm::dquat rotation = glm::normalize(f.orientation);
         FloatUpload::Draw draw;
         draw.first = static_cast<std::uint32_t>(out.vertices.size());

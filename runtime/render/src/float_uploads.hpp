@@ -3,11 +3,10 @@
 #pragma once
 
 #include <cstdint>
-#include <span>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <span>
+#include <vector>
 
 #include "tidewater/render/renderer.hpp"
 #include "tidewater/result.hpp"

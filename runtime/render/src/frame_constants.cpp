@@ -1,8 +1,9 @@
 #include "frame_constants.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,7 +30,7 @@ glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_pla
     p[0][0] = static_cast<float>(f / aspect);
     p[1][1] = static_cast<float>(-f);  // Vulkan clip y points down
     p[2][2] = 0.0f;
-    p[2][3] = -1.0f;                   // w = -z_view
+    p[2][3] = -1.0f;                           // w = -z_view
     p[3][2] = static_cast<float>(near_plane);  // depth = near / -z_view: 1 at the near plane, 0 at infinity
     return p;
 }
@@ -44,9 +45,11 @@ Status validate_camera(const Camera& c) {
     if (std::abs(dir.y) > 0.99999)
         return Error{ErrorCode::invalid_argument, "camera: looking straight up or down is not supported (y is up)"};
     if (!(c.fov_y_deg > 1.0 && c.fov_y_deg < 179.0))
-        return Error{ErrorCode::invalid_argument, fmt::format("camera: fov_y {} is out of range (1 to 179 degrees)", c.fov_y_deg)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("camera: fov_y {} is out of range (1 to 179 degrees)", c.fov_y_deg)};
     if (!(c.near_plane > 0.0 && c.near_plane < 1e4))
-        return Error{ErrorCode::invalid_argument, fmt::format("camera: near plane {} is out of range (0 to 1e4 m)", c.near_plane)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("camera: near plane {} is out of range (0 to 1e4 m)", c.near_plane)};
     return {};
 }
 
@@ -62,9 +65,8 @@ SwashBand swash_band(const WaveSet& waves) {
     return band;
 }
 
-FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
-                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output,
-                     double water_density) {
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, const TerrainPlacement& terrain,
+                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density) {
     FramePlan plan;
     const Camera& cam = info.camera;
     // The render origin: the camera snapped to the phase-cell grid, in double.
@@ -89,9 +91,10 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     const double tess_scale = static_cast<double>(extent.height) / (6.0 * tan_half);
     f.params = glm::vec4(static_cast<float>(water.level()), static_cast<float>(water.waves().size()),
                          static_cast<float>(tess_scale), static_cast<float>(static_cast<std::uint32_t>(info.view)));
-    f.terrain_rect = glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
-                               static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
-                               static_cast<float>(terrain.height_rect_size), static_cast<float>(terrain.height_rect_size));
+    f.terrain_rect =
+        glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
+                  static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
+                  static_cast<float>(terrain.height_rect_size), static_cast<float>(terrain.height_rect_size));
     f.terrain_heights = glm::vec4(static_cast<float>(terrain.highest_ground), 0.0f, 0.0f, 0.0f);
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
@@ -99,16 +102,17 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     const SwashBand swash = swash_band(water.waves());
     f.options = glm::vec4(has_scene_copy ? 1.0f : 0.0f, linear_output ? 1.0f : 0.0f, static_cast<float>(swash.runup),
                           static_cast<float>(swash.omega));
-    f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)), static_cast<float>(positive_mod(plan.origin.y, 2048.0)),
-                             0.0f, 0.0f);
+    f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)),
+                             static_cast<float>(positive_mod(plan.origin.y, 2048.0)), 0.0f, 0.0f);
     f.water_density = glm::vec4(static_cast<float>(water_density), 0.0f, 0.0f, 0.0f);
     const PreethamSky sky = preetham_sky(sun, info.sky_turbidity);
     f.sky_Y = glm::vec4(sky.abcd[0]);
     f.sky_x = glm::vec4(sky.abcd[1]);
     f.sky_y = glm::vec4(sky.abcd[2]);
     f.sky_e = glm::vec4(glm::vec3(sky.e), static_cast<float>(kSkyExposure));
-    f.sky_zenith = glm::vec4(static_cast<float>(sky.zenith_over_f0.x / sky.zenith.x), static_cast<float>(sky.zenith_over_f0.y),
-                             static_cast<float>(sky.zenith_over_f0.z), static_cast<float>(kSkySaturation));
+    f.sky_zenith =
+        glm::vec4(static_cast<float>(sky.zenith_over_f0.x / sky.zenith.x), static_cast<float>(sky.zenith_over_f0.y),
+                  static_cast<float>(sky.zenith_over_f0.z), static_cast<float>(kSkySaturation));
     f.sky_balance = glm::vec4(glm::vec3(sky_white_balance(sky, sun)), 0.0f);
 
     // The water patch grid: world-aligned, following the camera in whole patches.
@@ -116,8 +120,9 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     plan.patches_per_side = static_cast<std::uint32_t>(std::ceil(2.0 * water_half_size / patch));
     const glm::dvec2 corner{std::floor((cam.position.x - water_half_size) / patch) * patch,
                             std::floor((cam.position.z - water_half_size) / patch) * patch};
-    f.water_patch = glm::vec4(static_cast<float>(patch), static_cast<float>(plan.patches_per_side),
-                              static_cast<float>(corner.x - plan.origin.x), static_cast<float>(corner.y - plan.origin.y));
+    f.water_patch =
+        glm::vec4(static_cast<float>(patch), static_cast<float>(plan.patches_per_side),
+                  static_cast<float>(corner.x - plan.origin.x), static_cast<float>(corner.y - plan.origin.y));
 
     // Rings of coarser patches out to the horizon, each snapped to its own patch size.
     // From 400 m up the last ring's edge lies 0.03 degrees under the horizon.
@@ -125,9 +130,11 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     for (int k = 0; k < kOceanRings; ++k) {
         half *= 2.0;
         const double size = 2.0 * half / kOceanRingPatches;
-        const glm::dvec2 ring{std::floor((cam.position.x - half) / size) * size, std::floor((cam.position.z - half) / size) * size};
-        plan.ocean_rings.push_back(glm::vec4(static_cast<float>(ring.x - plan.origin.x), static_cast<float>(ring.y - plan.origin.y),
-                                             static_cast<float>(size), static_cast<float>(kOceanRingPatches)));
+        const glm::dvec2 ring{std::floor((cam.position.x - half) / size) * size,
+                              std::floor((cam.position.z - half) / size) * size};
+        plan.ocean_rings.push_back(glm::vec4(static_cast<float>(ring.x - plan.origin.x),
+                                             static_cast<float>(ring.y - plan.origin.y), static_cast<float>(size),
+                                             static_cast<float>(kOceanRingPatches)));
     }
 
     plan.waves = waves_at_origin(water, info.time, plan.origin);
@@ -161,24 +168,29 @@ void gpu_ripples(const WaterBody& body, double time, glm::dvec2 origin, glm::vec
     const RippleSpec& rs = body.ripples().spec();
     const double drift = std::fmod(body.local_time(time) * rs.speed / rs.wavelength, 256.0);
     const double rad = rs.direction_deg * kPi / 180.0;
-    ripple = glm::vec4(static_cast<float>(body.ripples().enabled() ? rs.amplitude : 0.0), static_cast<float>(1.0 / rs.wavelength),
-                       static_cast<float>(rs.octaves), static_cast<float>(rs.seed));
+    ripple =
+        glm::vec4(static_cast<float>(body.ripples().enabled() ? rs.amplitude : 0.0),
+                  static_cast<float>(1.0 / rs.wavelength), static_cast<float>(rs.octaves), static_cast<float>(rs.seed));
     const double period = 256.0 * rs.wavelength;
     offset = glm::vec4(static_cast<float>(drift * std::cos(rad)), static_cast<float>(drift * std::sin(rad)),
-                       static_cast<float>(positive_mod(origin.x, period)), static_cast<float>(positive_mod(origin.y, period)));
+                       static_cast<float>(positive_mod(origin.x, period)),
+                       static_cast<float>(positive_mod(origin.y, period)));
 }
 
 gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time, glm::dvec2 zero) {
     const FlowDetailClock clock = flow_detail_clock(spec, local_time);
     // Both noises repeat over the coarser one's period: reduce the zero modulo it.
-    const double period = static_cast<double>(gpu::kFlowNoisePeriod) / (spec.tiling * static_cast<double>(gpu::kFlowOffsetScale));
+    const double period =
+        static_cast<double>(gpu::kFlowNoisePeriod) / (spec.tiling * static_cast<double>(gpu::kFlowOffsetScale));
     gpu::GpuFlowDetail d{};
-    d.params = glm::vec4(static_cast<float>(spec.tiling), static_cast<float>(spec.speed), static_cast<float>(spec.strength),
-                         static_cast<float>(spec.offset));
-    d.clock = glm::vec4(static_cast<float>(spec.period), static_cast<float>(clock.cycle_fraction), static_cast<float>(spec.jump.x),
-                        static_cast<float>(spec.jump.y));
-    d.jump = glm::vec4(static_cast<float>(clock.jump_base.x), static_cast<float>(clock.jump_base.y), static_cast<float>(spec.seed), 0.0f);
-    d.origin = glm::vec4(static_cast<float>(positive_mod(zero.x, period)), static_cast<float>(positive_mod(zero.y, period)), 0.0f, 0.0f);
+    d.params = glm::vec4(static_cast<float>(spec.tiling), static_cast<float>(spec.speed),
+                         static_cast<float>(spec.strength), static_cast<float>(spec.offset));
+    d.clock = glm::vec4(static_cast<float>(spec.period), static_cast<float>(clock.cycle_fraction),
+                        static_cast<float>(spec.jump.x), static_cast<float>(spec.jump.y));
+    d.jump = glm::vec4(static_cast<float>(clock.jump_base.x), static_cast<float>(clock.jump_base.y),
+                       static_cast<float>(spec.seed), 0.0f);
+    d.origin = glm::vec4(static_cast<float>(positive_mod(zero.x, period)),
+                         static_cast<float>(positive_mod(zero.y, period)), 0.0f, 0.0f);
     return d;
 }
 

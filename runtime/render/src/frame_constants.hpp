@@ -2,10 +2,9 @@
 // origin, wave phases reduced in double, the water patch grid.
 #pragma once
 
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "host_device.h"
 #include "tidewater/render/renderer.hpp"
@@ -22,14 +21,15 @@ struct TerrainPlacement {
 struct FramePlan {
     gpu::GpuFrame frame{};
     std::vector<gpu::GpuWave> waves;
-    glm::dvec2 origin{0.0};              ///< The render origin O, world xz, m.
-    glm::vec4 terrain_mesh_offset{0.0f}; ///< Mesh origin relative to O.
+    glm::dvec2 origin{0.0};               ///< The render origin O, world xz, m.
+    glm::vec4 terrain_mesh_offset{0.0f};  ///< Mesh origin relative to O.
     std::uint32_t patches_per_side = 0;
     /// The open sea beyond the patch grid, out to the horizon: squares of coarser patches
     /// round it, each with a hole where the one inside draws. x, y: corner relative to O
     /// (m); z: patch size (m); w: patches per side.
     std::vector<glm::vec4> ocean_rings;
-    std::vector<std::uint32_t> water_draws;  ///< patch instances of each water draw (the ocean, its rings, lakes, rivers)
+    std::vector<std::uint32_t>
+        water_draws;  ///< patch instances of each water draw (the ocean, its rings, lakes, rivers)
 };
 
 /// Patches per side of each ring round the ocean's patch grid, and how many rings.
@@ -69,8 +69,7 @@ SwashBand swash_band(const WaveSet& waves);
 
 /// `water_density`: the water's vertices and shading footprints per pixel side (1, or
 /// sqrt(samples) where the water shades every sample; GpuFrame::water_density).
-FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water,
-                     const TerrainPlacement& terrain, double water_half_size, bool has_scene_copy, bool linear_output,
-                     double water_density);
+FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, const TerrainPlacement& terrain,
+                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density);
 
 }  // namespace tidewater::render::detail

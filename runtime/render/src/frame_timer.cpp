@@ -19,7 +19,9 @@ Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = mark_count * slots;
-    TW_VK_TRY(make_owned(ctx, t.pool_, [&](VkQueryPool* out) { return ctx.vk().CreateQueryPool(ctx.device, &info, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, t.pool_, [&](VkQueryPool* out) {
+        return ctx.vk().CreateQueryPool(ctx.device, &info, ctx.allocator, out);
+    }));
     return t;
 }
 
@@ -29,15 +31,17 @@ void FrameTimer::begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint
     vk.CmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), slot * mark_count + start);
 }
 
-void FrameTimer::mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark m, VkPipelineStageFlagBits stage) const {
+void FrameTimer::mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark m,
+                      VkPipelineStageFlagBits stage) const {
     if (pool_) vk.CmdWriteTimestamp(cmd, stage, pool_.get(), slot * mark_count + m);
 }
 
 Result<PassTimings> FrameTimer::read(const Device& ctx, std::uint32_t slot) const {
     if (!pool_) return Error{ErrorCode::unsupported, "renderer: this queue has no timestamps"};
     std::uint64_t ticks[mark_count];
-    const VkResult r = ctx.vk().GetQueryPoolResults(ctx.device, pool_.get(), slot * mark_count, mark_count, sizeof(ticks), ticks,
-                                             sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
+    const VkResult r =
+        ctx.vk().GetQueryPoolResults(ctx.device, pool_.get(), slot * mark_count, mark_count, sizeof(ticks), ticks,
+                                     sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
     if (r != VK_SUCCESS) return vk_error(r, "vkGetQueryPoolResults");
     auto ms = [&](Mark a, Mark b) { return static_cast<double>(ticks[b] - ticks[a]) * period_ns_ * 1e-6; };
     PassTimings p;

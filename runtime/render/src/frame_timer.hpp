@@ -2,8 +2,9 @@
 // as the time of each pass once the host knows the frame has finished.
 #pragma once
 
-#include <cstdint>
 #include <vulkan/vulkan.h>
+
+#include <cstdint>
 
 #include "tidewater/render/renderer.hpp"
 #include "vk_handle.hpp"
@@ -11,7 +12,7 @@
 namespace tidewater::render::detail {
 
 class FrameTimer {
-public:
+  public:
     enum Mark : std::uint32_t { start, opaque_done, copy_done, water_done, mark_count };
 
     /// A query pool for `slots` frames, or none when the queue family has no timestamps.
@@ -20,11 +21,12 @@ public:
 
     /// Resets the slot's queries and writes the start mark.
     void begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const;
-    void mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark mark, VkPipelineStageFlagBits stage) const;
+    void mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark mark,
+              VkPipelineStageFlagBits stage) const;
     /// The slot's pass times; fails while the GPU has not finished it.
     Result<PassTimings> read(const Device& ctx, std::uint32_t slot) const;
 
-private:
+  private:
     OwnedQueryPool pool_;
     double period_ns_ = 1.0;
 };

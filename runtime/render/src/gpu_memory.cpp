@@ -1,14 +1,15 @@
 #include "gpu_memory.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
-
-#include <fmt/format.h>
 #include <utility>
 
 namespace tidewater::render::detail {
 
-std::optional<std::uint32_t> find_memory_type(const Device& device, std::uint32_t type_bits, VkMemoryPropertyFlags wanted) {
+std::optional<std::uint32_t> find_memory_type(const Device& device, std::uint32_t type_bits,
+                                              VkMemoryPropertyFlags wanted) {
     VkPhysicalDeviceMemoryProperties props;
     device.vk().GetPhysicalDeviceMemoryProperties(device.physical_device, &props);
     for (std::uint32_t i = 0; i < props.memoryTypeCount; ++i) {
@@ -54,7 +55,8 @@ Result<GpuBuffer> GpuBuffer::create(const Device& ctx, VkDeviceSize size, VkBuff
     TW_VK_TRY(ctx.vk().CreateBuffer(ctx.device, &info, ctx.allocator, &b.buffer_));
     VkMemoryRequirements req;
     ctx.vk().GetBufferMemoryRequirements(ctx.device, b.buffer_, &req);
-    auto memory = allocate(ctx, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "buffer");
+    auto memory =
+        allocate(ctx, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "buffer");
     if (!memory) return memory.error();
     b.memory_ = *memory;
     TW_VK_TRY(ctx.vk().BindBufferMemory(ctx.device, b.buffer_, b.memory_, 0));
@@ -87,11 +89,11 @@ void GpuBuffer::reset() {
     functions_.reset();
 }
 
-Result<GpuImage> GpuImage::create(const Device& ctx, VkExtent2D extent, VkFormat format,
-                                  VkImageUsageFlags usage, VkImageAspectFlags aspect, VkSampleCountFlagBits samples) {
+Result<GpuImage> GpuImage::create(const Device& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                                  VkImageAspectFlags aspect, VkSampleCountFlagBits samples) {
     VkImageFormatProperties fp;
-    if (ctx.vk().GetPhysicalDeviceImageFormatProperties(ctx.physical_device, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
-                                                 usage, 0, &fp) != VK_SUCCESS) {
+    if (ctx.vk().GetPhysicalDeviceImageFormatProperties(ctx.physical_device, format, VK_IMAGE_TYPE_2D,
+                                                        VK_IMAGE_TILING_OPTIMAL, usage, 0, &fp) != VK_SUCCESS) {
         return Error{ErrorCode::unsupported,
                      fmt::format("Vulkan: image format {} with usage 0x{:x} is not supported by this device",
                                  static_cast<int>(format), usage)};

@@ -2,21 +2,22 @@
 // handful of resources per renderer, so each gets a dedicated allocation.
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <vulkan/vulkan.h>
 
-#include "vk_device.hpp"
+#include <cstdint>
+#include <optional>
 
 #include "tidewater/result.hpp"
+#include "vk_device.hpp"
 
 namespace tidewater::render::detail {
 
-std::optional<std::uint32_t> find_memory_type(const Device& device, std::uint32_t type_bits, VkMemoryPropertyFlags wanted);
+std::optional<std::uint32_t> find_memory_type(const Device& device, std::uint32_t type_bits,
+                                              VkMemoryPropertyFlags wanted);
 
 /// A host-visible, coherent, persistently mapped buffer. Move-only.
 class GpuBuffer {
-public:
+  public:
     GpuBuffer() = default;
     static Result<GpuBuffer> create(const Device& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
     /// A storage buffer holding a copy of `bytes` at `data` (at least 16 bytes, so that an
@@ -33,7 +34,7 @@ public:
     void* mapped() const { return mapped_; }
     VkDeviceSize size() const { return size_; }
 
-private:
+  private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
     std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with
@@ -45,11 +46,10 @@ private:
 
 /// A device-local 2D image with one view. Move-only.
 class GpuImage {
-public:
+  public:
     GpuImage() = default;
-    static Result<GpuImage> create(const Device& ctx, VkExtent2D extent, VkFormat format,
-                                   VkImageUsageFlags usage, VkImageAspectFlags aspect,
-                                   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
+    static Result<GpuImage> create(const Device& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                                   VkImageAspectFlags aspect, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
     GpuImage& operator=(GpuImage&& other) noexcept;
     ~GpuImage() { reset(); }
@@ -62,7 +62,7 @@ public:
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
 
-private:
+  private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
     std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with

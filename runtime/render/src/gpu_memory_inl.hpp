@@ -32,7 +32,8 @@ Status submit_and_wait(const Device& ctx, VkCommandPool pool, const Record& reco
     if (const VkResult r = vk.EndCommandBuffer(cmd); r != VK_SUCCESS) return fail(r, "vkEndCommandBuffer");
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     OwnedFence fence;
-    if (const VkResult r = make_owned(ctx, fence, [&](VkFence* out) { return vk.CreateFence(ctx.device, &fence_info, ctx.allocator, out); });
+    if (const VkResult r = make_owned(
+            ctx, fence, [&](VkFence* out) { return vk.CreateFence(ctx.device, &fence_info, ctx.allocator, out); });
         r != VK_SUCCESS)
         return fail(r, "vkCreateFence");
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

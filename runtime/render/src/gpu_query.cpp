@@ -1,23 +1,24 @@
 #include "tidewater/render/gpu_query.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <fmt/format.h>
 #include <vector>
 
+#include "body_uploads.hpp"
 #include "descriptor_sets.hpp"
 #include "embedded_shaders.hpp"
-#include "body_uploads.hpp"
 #include "frame_constants.hpp"
-#include "tidewater/detail/body_finder.hpp"
-#include "tidewater/detail/water_bodies.hpp"
-#include "tidewater/baked_scene.hpp"
-#include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/detail/surface_foam.hpp"
 #include "gpu_memory.hpp"
 #include "phase_cells.hpp"
 #include "scene_uploads.hpp"
+#include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/body_finder.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/surface_foam.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 #include "vk_handle.hpp"
 #include "vk_util.hpp"
 #include "wake_uploads.hpp"
@@ -84,8 +85,9 @@ struct GpuQuery::Impl {
     /// water with `still` fading in at its mouth. `flow`, when not empty, receives the
     /// current (xy) and flow-detail slope (zw) at each point. `wakes` (null: none) ride
     /// still water only.
-    Status solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
-                 std::span<SurfacePoint> out, std::span<glm::vec4> flow, const Wakes* wakes = nullptr);
+    Status solve(const WaterBody& still, const RiverDispatch* river, double time,
+                 std::span<const glm::dvec2> query_points, std::span<SurfacePoint> out, std::span<glm::vec4> flow,
+                 const Wakes* wakes = nullptr);
 };
 
 Result<bool> GpuQuery::Impl::use_river(const tidewater::detail::RiverBake* river) {
@@ -108,7 +110,8 @@ GpuQuery::~GpuQuery() = default;
 
 Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context) {
     if (!context.device || !context.queue || !context.physical_device) {
-        return Error{ErrorCode::invalid_argument, "GpuQuery: the DeviceContext has no device, physical device or queue"};
+        return Error{ErrorCode::invalid_argument,
+                     "GpuQuery: the DeviceContext has no device, physical device or queue"};
     }
     auto device = detail::load_device(context);
     if (!device) return device.error();
@@ -159,13 +162,15 @@ Result<std::unique_ptr<GpuQuery>> GpuQuery::create(const DeviceContext& context)
     VkCommandPoolCreateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cmd_info.queueFamilyIndex = ctx.queue_family;
     cmd_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(detail::make_owned(ctx, impl->commands,
-                                 [&](VkCommandPool* out) { return vk.CreateCommandPool(ctx.device, &cmd_info, ctx.allocator, out); }));
+    TW_VK_TRY(detail::make_owned(ctx, impl->commands, [&](VkCommandPool* out) {
+        return vk.CreateCommandPool(ctx.device, &cmd_info, ctx.allocator, out);
+    }));
     return std::unique_ptr<GpuQuery>(new GpuQuery(std::move(impl)));
 }
 
-Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river, double time, std::span<const glm::dvec2> query_points,
-                             std::span<SurfacePoint> out, std::span<glm::vec4> flow, const Wakes* wakes) {
+Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river, double time,
+                             std::span<const glm::dvec2> query_points, std::span<SurfacePoint> out,
+                             std::span<glm::vec4> flow, const Wakes* wakes) {
     const WaveSet& still_set = still.waves();
     const bool river_mode = river != nullptr;
     // The still water's waves: none in a river's own channel away from its mouth.
@@ -175,14 +180,16 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     if (!still_waves) wave_data.clear();
 
     const std::vector<gpu::GpuRiverWave> channel_waves =
-        river_mode ? detail::gpu_river_waves(*river->body, time, river->river->mean_speed) : std::vector<gpu::GpuRiverWave>{};
+        river_mode ? detail::gpu_river_waves(*river->body, time, river->river->mean_speed)
+                   : std::vector<gpu::GpuRiverWave>{};
     const double river_max_offset = river_mode ? river->body->waves().max_horizontal_displacement() : 0.0;
     bool rebind = false;
-    for (auto [buffer, bytes] : {std::pair{&waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, wave_data.size())},
-                                 std::pair{&phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
-                                 std::pair{&points, sizeof(gpu::GpuQueryPoint) * query_points.size()},
-                                 std::pair{&results, sizeof(gpu::GpuQueryResult) * query_points.size()},
-                                 std::pair{&river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(1, channel_waves.size())}}) {
+    for (auto [buffer, bytes] :
+         {std::pair{&waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(1, wave_data.size())},
+          std::pair{&phases, sizeof(float) * std::max<std::size_t>(1, cells.base_phase.size())},
+          std::pair{&points, sizeof(gpu::GpuQueryPoint) * query_points.size()},
+          std::pair{&results, sizeof(gpu::GpuQueryResult) * query_points.size()},
+          std::pair{&river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(1, channel_waves.size())}}) {
         auto grown = ensure(*buffer, bytes);
         if (!grown) return grown.error();
         rebind = rebind || *grown;
@@ -212,13 +219,15 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         if (!packed) return packed.error();
         wake_upload = std::move(packed).value();
     }
-    auto grown_wakes = ensure(wake_points, detail::wake_buffer_bytes(std::max<std::size_t>(1, wake_upload.points.size())));
+    auto grown_wakes =
+        ensure(wake_points, detail::wake_buffer_bytes(std::max<std::size_t>(1, wake_upload.points.size())));
     if (!grown_wakes) return grown_wakes.error();
     rebind = rebind || *grown_wakes;
     if (rebind) bind_buffers();
     std::memcpy(cell_origins.mapped(), origins.data(), sizeof(glm::vec2) * origins.size());
     if (!wave_data.empty()) std::memcpy(waves.mapped(), wave_data.data(), sizeof(gpu::GpuWave) * wave_data.size());
-    if (!channel_waves.empty()) std::memcpy(river_waves.mapped(), channel_waves.data(), sizeof(gpu::GpuRiverWave) * channel_waves.size());
+    if (!channel_waves.empty())
+        std::memcpy(river_waves.mapped(), channel_waves.data(), sizeof(gpu::GpuRiverWave) * channel_waves.size());
     std::memcpy(phases.mapped(), cells.base_phase.data(), sizeof(float) * cells.base_phase.size());
     std::memcpy(points.mapped(), cells.points.data(), sizeof(gpu::GpuQueryPoint) * query_points.size());
     detail::write_wake_buffer(wake_upload, wake_points.mapped());
@@ -227,7 +236,8 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     gpu::GpuQueryParams params{};
     params.wave_count = static_cast<std::uint32_t>(wave_data.size());
     params.point_count = static_cast<std::uint32_t>(query_points.size());
-    params.max_offset = static_cast<float>((still_waves ? still_set.max_horizontal_displacement() : 0.0) + river_max_offset);
+    params.max_offset =
+        static_cast<float>((still_waves ? still_set.max_horizontal_displacement() : 0.0) + river_max_offset);
     params.river_wave_count = static_cast<std::uint32_t>(channel_waves.size());
     params.shore_resolution = model ? static_cast<std::uint32_t>(model->resolution()) : 0u;
     params.shore_texel = model ? static_cast<float>(model->texel()) : 1.0f;
@@ -256,7 +266,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
         vk.CmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
-                             nullptr, 0, nullptr);
+                              nullptr, 0, nullptr);
     });
     if (!st) return st;
 
@@ -277,8 +287,10 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         o.shore_distance = model ? static_cast<double>(r[i].shore.y) : kDeepWater;
         const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
         o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
-        const std::array<double, tidewater::detail::kFoamLags> lagged{r[i].lagged_jac.x, r[i].lagged_jac.y, r[i].lagged_jac.z, r[i].lagged_jac.w};
-        o.foam = tidewater::detail::surface_foam(model ? static_cast<double>(r[i].shore.z) : 0.0, o.jacobian, lagged, whitecap);
+        const std::array<double, tidewater::detail::kFoamLags> lagged{r[i].lagged_jac.x, r[i].lagged_jac.y,
+                                                                      r[i].lagged_jac.z, r[i].lagged_jac.w};
+        o.foam = tidewater::detail::surface_foam(model ? static_cast<double>(r[i].shore.z) : 0.0, o.jacobian, lagged,
+                                                 whitecap);
         o.wake = static_cast<double>(r[i].wake.x);
         o.foam = std::max(o.foam, static_cast<double>(r[i].wake.y));
         if (!flow.empty()) flow[i] = r[i].flow;
@@ -289,27 +301,34 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
 Status GpuQuery::query_surface(const WaterBody& body, double time, std::span<const glm::dvec2> points,
                                std::span<SurfacePoint> out, const Wakes* wakes) {
     if (points.size() != out.size()) {
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query: {} points but room for {} results", points.size(), out.size())};
     }
     if (points.empty()) return {};
     if (points.size() > (1u << 26)) {
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query: {} points in one call, at most 2^26", points.size())};
     }
     return impl_->solve(body, nullptr, time, points, out, {}, wakes);
 }
 
-Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
-                             std::span<glm::dvec2> detail) {
+Status GpuQuery::query_world(const Scene& scene, double time, std::span<const glm::dvec2> points,
+                             std::span<WorldPoint> out, std::span<glm::dvec2> detail) {
     if (points.size() != out.size() || (!detail.empty() && detail.size() != points.size()))
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("GPU query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass "
-                                 "it through bake_scene first", scene.name)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format(
+                "GPU query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass "
+                "it through bake_scene first",
+                scene.name)};
     if (points.empty()) return {};
     if (points.size() > (1u << 26))
-        return Error{ErrorCode::invalid_argument, fmt::format("GPU query_world: {} points in one call, at most 2^26", points.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query_world: {} points in one call, at most 2^26", points.size())};
     namespace td = tidewater::detail;
     const td::WaterBodiesBake* bodies = scene.bake ? scene.bake->bodies.get() : nullptr;
     const td::BodyFinder finder(scene, bodies);
@@ -336,9 +355,12 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
             case td::EvaluationKind::land:
                 for (std::size_t k = 0; k < members.size(); ++k) results[k] = td::land_surface(scene, group_points[k]);
                 break;
-            case td::EvaluationKind::ocean: st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {}, wakes); break;
+            case td::EvaluationKind::ocean:
+                st = impl_->solve(scene.ocean, nullptr, time, group_points, results, {}, wakes);
+                break;
             case td::EvaluationKind::lake:
-                st = impl_->solve(scene.lakes[static_cast<std::size_t>(key.lake)].body, nullptr, time, group_points, results, {}, wakes);
+                st = impl_->solve(scene.lakes[static_cast<std::size_t>(key.lake)].body, nullptr, time, group_points,
+                                  results, {}, wakes);
                 break;
             case td::EvaluationKind::river: {
                 const td::RiverBake& baked = bodies->rivers[static_cast<std::size_t>(key.river)];

@@ -1,7 +1,8 @@
 #include "tidewater/render/offscreen.hpp"
 
-#include <cstring>
 #include <fmt/format.h>
+
+#include <cstring>
 
 #include "gpu_memory.hpp"
 #include "vk_util.hpp"
@@ -27,25 +28,28 @@ OffscreenTarget::~OffscreenTarget() = default;
 Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceContext& context, std::uint32_t width,
                                                                  std::uint32_t height, VkSampleCountFlagBits samples) {
     if (width < 16 || height < 16 || width > 8192 || height > 8192) {
-        return Error{ErrorCode::invalid_argument, fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("image size {}x{} is out of range (16x16 to 8192x8192)", width, height)};
     }
     auto device = detail::load_device(context);
     if (!device) return device.error();
     auto impl = std::make_unique<Impl>();
     impl->ctx = std::move(device).value();
     auto color = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
-                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, samples);
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, samples);
     if (!color) return color.error();
     impl->color = std::move(color).value();
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         auto resolved = GpuImage::create(impl->ctx, {width, height}, kColorFormat,
-                                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+                                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                         VK_IMAGE_ASPECT_COLOR_BIT);
         if (!resolved) return resolved.error();
         impl->resolved = std::move(resolved).value();
     }
     auto depth = GpuImage::create(impl->ctx, {width, height}, kDepthFormat,
-                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
-                                  samples);
+                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_ASPECT_DEPTH_BIT, samples);
     if (!depth) return depth.error();
     impl->depth = std::move(depth).value();
     auto readback = GpuBuffer::create(impl->ctx, VkDeviceSize{width} * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -55,8 +59,9 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
     cp.queueFamilyIndex = impl->ctx.queue_family;
     cp.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     const detail::Device& ctx = impl->ctx;
-    TW_VK_TRY(detail::make_owned(ctx, impl->pool,
-                                 [&](VkCommandPool* out) { return ctx.vk().CreateCommandPool(ctx.device, &cp, ctx.allocator, out); }));
+    TW_VK_TRY(detail::make_owned(ctx, impl->pool, [&](VkCommandPool* out) {
+        return ctx.vk().CreateCommandPool(ctx.device, &cp, ctx.allocator, out);
+    }));
     return std::unique_ptr<OffscreenTarget>(new OffscreenTarget(std::move(impl)));
 }
 
@@ -68,13 +73,13 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
     if (auto st = renderer.resize(extent); !st) return st.error();
     Status recorded;
     Status submitted = detail::submit_and_wait(m.ctx, m.pool.get(), [&](VkCommandBuffer cmd) {
-        detail::transition(vk, cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-        detail::transition(vk, cmd, m.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+        detail::transition(vk, cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                           VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        detail::transition(vk, cmd, m.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                           VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
         const bool multisampled = m.resolved.handle() != VK_NULL_HANDLE;
         if (multisampled)
             detail::transition(vk, cmd, m.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -93,8 +98,9 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
         recorded = renderer.record_frame(cmd, frame, targets);
         const VkImage picture = multisampled ? m.resolved.handle() : m.color.handle();
         detail::transition(vk, cmd, picture, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_ACCESS_TRANSFER_READ_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};
@@ -102,7 +108,8 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vk.CmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+        vk.CmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
+                              nullptr, 0, nullptr);
     });
     if (!recorded) return recorded.error();
     if (!submitted) return submitted.error();

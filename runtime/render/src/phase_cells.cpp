@@ -23,7 +23,8 @@ PhaseCells build_phase_cells(const WaveSet& set, double local_time, std::span<co
         auto [it, inserted] = index.try_emplace(key, static_cast<std::uint32_t>(origins.size()));
         if (inserted) origins.push_back({cx * kPhaseCellSize, cz * kPhaseCellSize});
         const glm::dvec2 origin = origins[it->second];
-        out.points.push_back({glm::vec2(static_cast<float>(p.x - origin.x), static_cast<float>(p.y - origin.y)), it->second, 0u});
+        out.points.push_back(
+            {glm::vec2(static_cast<float>(p.x - origin.x), static_cast<float>(p.y - origin.y)), it->second, 0u});
     }
     out.cell_count = origins.size();
     out.origins = origins;

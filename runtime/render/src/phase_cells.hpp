@@ -3,10 +3,9 @@
 // k*D*(point - cell origin) in float, which stays small anywhere in the world.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "host_device.h"
 #include "tidewater/waves.hpp"
@@ -17,7 +16,7 @@ inline constexpr double kPhaseCellSize = 64.0;  // m
 
 struct PhaseCells {
     std::vector<gpu::GpuQueryPoint> points;
-    std::vector<float> base_phase;  // [cell * wave_count + wave]
+    std::vector<float> base_phase;    // [cell * wave_count + wave]
     std::vector<glm::dvec2> origins;  // world xz of each cell's origin, m
     std::size_t cell_count = 0;
 };

@@ -1,6 +1,7 @@
 #include "render_pipelines.hpp"
 
 #include <fmt/format.h>
+
 #include <vector>
 
 #include "descriptor_sets.hpp"
@@ -19,7 +20,9 @@ Result<OwnedShaderModule> make_module(const Device& ctx, std::string_view name, 
     info.codeSize = spirv.size_bytes();
     info.pCode = spirv.data();
     OwnedShaderModule module;
-    TW_VK_TRY(make_owned(ctx, module, [&](VkShaderModule* out) { return ctx.vk().CreateShaderModule(ctx.device, &info, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, module, [&](VkShaderModule* out) {
+        return ctx.vk().CreateShaderModule(ctx.device, &info, ctx.allocator, out);
+    }));
     return module;
 }
 
@@ -79,7 +82,8 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     depth.depthWriteEnable = d.depth_write ? VK_TRUE : VK_FALSE;
     depth.depthCompareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reversed-Z
     VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    blend.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blending{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blending.attachmentCount = 1;
     blending.pAttachments = &blend;
@@ -107,7 +111,8 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     info.pDynamicState = &dynamic;
     info.layout = d.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    const VkResult r = ctx.vk().CreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);
+    const VkResult r =
+        ctx.vk().CreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);
     if (r != VK_SUCCESS) return vk_error(r, "vkCreateGraphicsPipelines");
     return pipeline;
 }
@@ -134,9 +139,11 @@ Status create_samplers(const Device& ctx, FramePipelines& p) {
     s.magFilter = s.minFilter = VK_FILTER_LINEAR;
     s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     s.maxLod = 0.0f;
-    TW_VK_TRY(make_owned(ctx, p.linear, [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, p.linear,
+                         [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
     s.magFilter = s.minFilter = VK_FILTER_NEAREST;
-    TW_VK_TRY(make_owned(ctx, p.nearest, [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    TW_VK_TRY(make_owned(ctx, p.nearest,
+                         [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
     return {};
 }
 

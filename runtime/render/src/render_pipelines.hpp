@@ -3,11 +3,12 @@
 // shaders) and its samplers.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <string_view>
-#include <vulkan/vulkan.h>
 
 #include "tidewater/result.hpp"
 #include "vk_handle.hpp"
@@ -21,9 +22,9 @@ struct PipelineDesc {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the targets' (multisampling)
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;       // the targets' (multisampling)
     std::string_view vertex, tess_control, tess_eval, fragment;  // embedded shader names; tess ones optional
-    bool terrain_vertices = false;   // position + normal, 24-byte stride
+    bool terrain_vertices = false;                               // position + normal, 24-byte stride
     bool depth_write = true;
     VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
     ShaderLookup shaders;  ///< overrides of the embedded SPIR-V (hot reload); null: none

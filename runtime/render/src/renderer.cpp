@@ -1,27 +1,28 @@
 #include "tidewater/render/renderer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 #include <optional>
 #include <vector>
 
 #include "body_uploads.hpp"
 #include "descriptor_sets.hpp"
+#include "float_uploads.hpp"
 #include "frame_constants.hpp"
-#include "gpu_memory.hpp"
 #include "frame_timer.hpp"
+#include "gpu_memory.hpp"
 #include "render_pipelines.hpp"
 #include "scene_copies.hpp"
-#include "target_formats.hpp"
 #include "scene_uploads.hpp"
+#include "target_formats.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/shore_waves.hpp"
-#include "float_uploads.hpp"
-#include "wake_uploads.hpp"
 #include "vk_util.hpp"
+#include "wake_uploads.hpp"
 
 namespace tidewater::render {
 
@@ -55,7 +56,8 @@ constexpr bool views_match_shaders() {
         if (static_cast<std::uint32_t>(kNamedViews[i].view) != i || kNamedViews[i].shader_value != i) return false;
     return true;
 }
-static_assert(views_match_shaders(), "DebugView, its names and host_device.h's kView* must list the views in one order");
+static_assert(views_match_shaders(),
+              "DebugView, its names and host_device.h's kView* must list the views in one order");
 constexpr std::array<DebugView, gpu::kViewCount> kViews = [] {
     std::array<DebugView, gpu::kViewCount> views{};
     for (std::size_t i = 0; i < views.size(); ++i) views[i] = kNamedViews[i].view;
@@ -64,7 +66,9 @@ constexpr std::array<DebugView, gpu::kViewCount> kViews = [] {
 
 }  // namespace
 
-std::string_view to_string(DebugView view) { return kNamedViews[static_cast<std::size_t>(view)].name; }
+std::string_view to_string(DebugView view) {
+    return kNamedViews[static_cast<std::size_t>(view)].name;
+}
 
 std::optional<DebugView> parse_debug_view(std::string_view name) {
     for (const NamedView& v : kNamedViews)
@@ -72,7 +76,9 @@ std::optional<DebugView> parse_debug_view(std::string_view name) {
     return std::nullopt;
 }
 
-std::span<const DebugView> all_debug_views() { return kViews; }
+std::span<const DebugView> all_debug_views() {
+    return kViews;
+}
 
 // The renderer is its parts: pipelines (render_pipelines), the scene's GPU data
 // (scene_uploads, shared with the GPU queries), the scene copies and passes of a
@@ -88,7 +94,7 @@ struct Renderer::Impl {
         std::uint64_t until = 0;
     };
     std::vector<Retired> retired;
-    std::uint64_t next_frame = 0;  // one past the last frame index recorded
+    std::uint64_t next_frame = 0;                       // one past the last frame index recorded
     const detail::ColorTarget* color_target = nullptr;  // entries of the format table
     const detail::DepthTarget* depth_target = nullptr;
     const detail::Device& ctx() const { return device; }
@@ -138,9 +144,12 @@ struct Renderer::Impl {
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
     Result<detail::FramePlan> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot& slot);
     Slot& take_slot(std::uint64_t frame_index);
-    Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot, detail::FramePlan& plan);
-    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent, DebugView view);
-    void draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent, DebugView view);
+    Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
+                        detail::FramePlan& plan);
+    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
+                     DebugView view);
+    void draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
+                    DebugView view);
 };
 
 Status Renderer::Impl::create_slots() {
@@ -152,10 +161,12 @@ Status Renderer::Impl::create_slots() {
         auto frame = GpuBuffer::create(ctx(), sizeof(gpu::GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         if (!frame) return frame.error();
         s.frame = std::move(frame).value();
-        auto wake_points = GpuBuffer::create(ctx(), detail::wake_buffer_bytes(gpu::kMaxWakePoints), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        auto wake_points = GpuBuffer::create(ctx(), detail::wake_buffer_bytes(gpu::kMaxWakePoints),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         if (!wake_points) return wake_points.error();
         s.wake_points = std::move(wake_points).value();
-        auto float_vertices = GpuBuffer::create(ctx(), sizeof(detail::FloatVertex) * detail::kMaxFloatVertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        auto float_vertices = GpuBuffer::create(ctx(), sizeof(detail::FloatVertex) * detail::kMaxFloatVertices,
+                                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         if (!float_vertices) return float_vertices.error();
         s.float_vertices = std::move(float_vertices).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -170,9 +181,10 @@ Status Renderer::Impl::create_slots() {
 // Per-frame buffers sized for a scene's draws; called with no frame in flight.
 Status Renderer::Impl::size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves) {
     for (Slot& s : slots) {
-        for (auto [buffer, bytes] : {std::pair{&s.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(waves, 1)},
-                                     std::pair{&s.draws, sizeof(gpu::GpuBodyDraw) * std::max<std::size_t>(draws, 1)},
-                                     std::pair{&s.river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(river_waves, 1)}}) {
+        for (auto [buffer, bytes] :
+             {std::pair{&s.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(waves, 1)},
+              std::pair{&s.draws, sizeof(gpu::GpuBodyDraw) * std::max<std::size_t>(draws, 1)},
+              std::pair{&s.river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(river_waves, 1)}}) {
             if (buffer->handle() && buffer->size() >= bytes) continue;
             auto made = GpuBuffer::create(ctx(), bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             if (!made) return made.error();
@@ -216,17 +228,21 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
 Status Renderer::Impl::validate_frame(const FrameInfo& frame, VkExtent2D extent) const {
     if (!terrain) return Error{ErrorCode::invalid_argument, "renderer: no scene; call set_scene first"};
     if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
     if (auto st = detail::validate_camera(frame.camera); !st) return st;
     if (!std::isfinite(frame.time) || std::abs(frame.time) > 1e9)
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: time {} is out of range (finite, |t| <= 1e9 s)", frame.time)};
-    if (!std::isfinite(frame.sun_direction.x) || !std::isfinite(frame.sun_direction.y) || !std::isfinite(frame.sun_direction.z) ||
-        glm::length(frame.sun_direction) < 1e-9)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: time {} is out of range (finite, |t| <= 1e9 s)", frame.time)};
+    if (!std::isfinite(frame.sun_direction.x) || !std::isfinite(frame.sun_direction.y) ||
+        !std::isfinite(frame.sun_direction.z) || glm::length(frame.sun_direction) < 1e-9)
         return Error{ErrorCode::invalid_argument, "renderer: sun_direction must be finite and non-zero"};
     if (!(frame.sky_turbidity >= 1.7 && frame.sky_turbidity <= 10.0))
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
     if (frame.view == DebugView::wireframe && !pipelines.draws.water_wire)
-        return Error{ErrorCode::unsupported, "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
+        return Error{ErrorCode::unsupported,
+                     "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
     return {};
 }
 
@@ -241,10 +257,12 @@ Renderer::Impl::Slot& Renderer::Impl::take_slot(std::uint64_t frame_index) {
 
 // What the frame draws; the wakes and floats are packed straight into the slot's
 // mapped buffers (their packing is what can fail).
-Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot& slot) {
+Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy,
+                                                     Slot& slot) {
     const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
-    detail::FramePlan plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
-                                                color_target->linear_output, water_density);
+    detail::FramePlan plan =
+        detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
+                           color_target->linear_output, water_density);
     const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
     if (!wakes) return wakes.error();
@@ -256,12 +274,16 @@ Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkE
     // Checked: the slot's buffers are written from here on.
     detail::write_wake_buffer(*wakes, slot.wake_points.mapped());
     if (!floats->vertices.empty())
-        std::memcpy(slot.float_vertices.mapped(), floats->vertices.data(), sizeof(detail::FloatVertex) * floats->vertices.size());
+        std::memcpy(slot.float_vertices.mapped(), floats->vertices.data(),
+                    sizeof(detail::FloatVertex) * floats->vertices.size());
     slot.float_draws = std::move(floats->draws);
-    if (!draws.waves.empty()) std::memcpy(slot.waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
-    if (!draws.draws.empty()) std::memcpy(slot.draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
+    if (!draws.waves.empty())
+        std::memcpy(slot.waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
+    if (!draws.draws.empty())
+        std::memcpy(slot.draws.mapped(), draws.draws.data(), sizeof(gpu::GpuBodyDraw) * draws.draws.size());
     if (!draws.river_waves.empty())
-        std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(), sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
+        std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(),
+                    sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
     plan.water_draws = draws.patch_counts;
     return plan;
 }
@@ -278,14 +300,16 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     return {};
 }
 
-void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
-                                 DebugView view) {
+void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan,
+                                 VkExtent2D extent, DebugView view) {
     const detail::VulkanFunctions& vk = this->vk();
     detail::set_viewport(vk, cmd, extent);
     const VkPipelineLayout layout = pipelines.layout.get();
     vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
-    vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(glm::vec4), &plan.terrain_mesh_offset);
-    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
+    vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(glm::vec4),
+                        &plan.terrain_mesh_offset);
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                       (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
     const VkDeviceSize offset = 0;
     const VkBuffer vb = terrain->vertices.handle();
     vk.CmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
@@ -298,7 +322,8 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const de
         for (const detail::FloatUpload::Draw& d : slot.float_draws) {
             const glm::vec4 mesh_origin(0.0f);  // positions are relative to O already
             const glm::vec4 paint(d.color, 1.0f);
-            vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(mesh_origin), &mesh_origin);
+            vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(mesh_origin),
+                                &mesh_origin);
             vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushFloatPaint, sizeof(paint), &paint);
             vk.CmdDraw(cmd, d.count, 1, d.first, 0);
         }
@@ -313,12 +338,14 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
     const detail::VulkanFunctions& vk = this->vk();
     detail::set_viewport(vk, cmd, extent);
     vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
-    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                       (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
     // One draw per body: the ocean, each lake, each river (water_draw.glsl).
     std::uint64_t patches = 0;
     for (std::uint32_t i = 0; i < plan.water_draws.size(); ++i) {
         if (plan.water_draws[i] == 0) continue;
-        vk.CmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushDrawIndex, sizeof(i), &i);
+        vk.CmdPushConstants(cmd, pipelines.layout.get(), VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushDrawIndex, sizeof(i),
+                            &i);
         vk.CmdDraw(cmd, 4, plan.water_draws[i], 0, 0);
         patches += plan.water_draws[i];
     }
@@ -335,14 +362,19 @@ namespace {
 Status check_samples(const detail::Device& c, VkSampleCountFlagBits samples, const detail::DepthTarget& depth) {
     if (samples == VK_SAMPLE_COUNT_1_BIT) return {};
     if (samples != VK_SAMPLE_COUNT_2_BIT && samples != VK_SAMPLE_COUNT_4_BIT && samples != VK_SAMPLE_COUNT_8_BIT)
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: sample count {} is not 1, 2, 4 or 8", static_cast<int>(samples))};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: sample count {} is not 1, 2, 4 or 8", static_cast<int>(samples))};
     VkPhysicalDeviceProperties p;
     c.vk().GetPhysicalDeviceProperties(c.physical_device, &p);
     const VkSampleCountFlags both = p.limits.framebufferColorSampleCounts & p.limits.framebufferDepthSampleCounts;
     if ((both & static_cast<VkSampleCountFlags>(samples)) == 0)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: this device cannot render colour and depth at {} samples", static_cast<int>(samples))};
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: this device cannot render colour and depth at {} samples",
+                                 static_cast<int>(samples))};
     if (depth.aspects != VK_IMAGE_ASPECT_DEPTH_BIT)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: multisampling needs a depth format without stencil (D32 or D16), not {}", depth.name)};
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: multisampling needs a depth format without stencil (D32 or D16), not {}",
+                                 depth.name)};
     return {};
 }
 
@@ -350,27 +382,33 @@ Status check_samples(const detail::Device& c, VkSampleCountFlagBits samples, con
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info) {
     if (!info.device.instance || !info.device.physical_device || !info.device.device || !info.device.queue)
-        return Error{ErrorCode::invalid_argument, "renderer: RendererInitInfo.device needs instance, physical device, device and queue"};
+        return Error{ErrorCode::invalid_argument,
+                     "renderer: RendererInitInfo.device needs instance, physical device, device and queue"};
     if (info.frames_in_flight < 1 || info.frames_in_flight > 4)
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
     auto device = detail::load_device(info.device);
     if (!device) return device.error();
     const detail::Device& c = *device;
     const detail::ColorTarget* color_target = detail::find_color_target(info.color_format);
     if (!color_target)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: colour format {} is not supported (accepted {})",
-                                                         detail::format_name(info.color_format), detail::accepted_formats())};
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: colour format {} is not supported (accepted {})",
+                                 detail::format_name(info.color_format), detail::accepted_formats())};
     const detail::DepthTarget* depth_target = detail::find_depth_target(info.depth_format);
     if (!depth_target)
-        return Error{ErrorCode::unsupported, fmt::format("renderer: depth format {} is not supported (accepted {})",
-                                                         detail::format_name(info.depth_format), detail::accepted_formats())};
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: depth format {} is not supported (accepted {})",
+                                 detail::format_name(info.depth_format), detail::accepted_formats())};
     // The features the host says it enabled (DeviceContext), not merely what the device has.
     auto missing = [](const char* feature, const char* why) {
-        return Error{ErrorCode::unsupported, fmt::format("renderer: the device feature {} is not enabled ({}): enable it in "
-                                                         "vkCreateDevice and say so in DeviceContext",
-                                                         feature, why)};
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: the device feature {} is not enabled ({}): enable it in "
+                                 "vkCreateDevice and say so in DeviceContext",
+                                 feature, why)};
     };
-    if (!c.dynamic_rendering) return missing("dynamicRendering (VkPhysicalDeviceVulkan13Features)", "every pass uses it");
+    if (!c.dynamic_rendering)
+        return missing("dynamicRendering (VkPhysicalDeviceVulkan13Features)", "every pass uses it");
     if (!c.enabled_features.tessellationShader) return missing("tessellationShader", "the water's level of detail");
     if (info.wireframe && !c.enabled_features.fillModeNonSolid)
         return missing("fillModeNonSolid", "the wireframe view; or set RendererInitInfo::wireframe = false");
@@ -378,33 +416,47 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         VkFormatProperties p;
         c.vk().GetPhysicalDeviceFormatProperties(c.physical_device, f, &p);
         if ((p.optimalTilingFeatures & need) != need)
-            return Error{ErrorCode::unsupported, fmt::format("renderer: {} format {} lacks the needed features on this device", what, detail::format_name(f))};
+            return Error{ErrorCode::unsupported,
+                         fmt::format("renderer: {} format {} lacks the needed features on this device", what,
+                                     detail::format_name(f))};
         return {};
     };
-    if (auto st = check_format(info.color_format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                                      VK_FORMAT_FEATURE_TRANSFER_DST_BIT, "colour"); !st) return st.error();
-    if (auto st = check_format(info.depth_format, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                                      VK_FORMAT_FEATURE_TRANSFER_DST_BIT, "depth"); !st) return st.error();
-    if (auto st = check_format(VK_FORMAT_R32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT, "height texture (R32_SFLOAT)"); !st)
+    if (auto st = check_format(info.color_format,
+                               VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                   VK_FORMAT_FEATURE_TRANSFER_DST_BIT,
+                               "colour");
+        !st)
+        return st.error();
+    if (auto st = check_format(info.depth_format,
+                               VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                   VK_FORMAT_FEATURE_TRANSFER_DST_BIT,
+                               "depth");
+        !st)
+        return st.error();
+    if (auto st = check_format(VK_FORMAT_R32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT,
+                               "height texture (R32_SFLOAT)");
+        !st)
         return st.error();
     if (auto st = check_samples(c, info.samples, *depth_target); !st) return st.error();
     if (info.shade_water_per_sample) {
         if (info.samples == VK_SAMPLE_COUNT_1_BIT)
-            return Error{ErrorCode::invalid_argument, "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8)"};
+            return Error{ErrorCode::invalid_argument,
+                         "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8)"};
         if (!c.enabled_features.sampleRateShading) return missing("sampleRateShading", "shade_water_per_sample");
     }
     auto impl = std::make_unique<Impl>();
     impl->device = c;
     impl->info = info;
-    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples, info.shade_water_per_sample,
-                                                    impl->info.wireframe);
+    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples,
+                                                    info.shade_water_per_sample, impl->info.wireframe);
     if (!pipelines) return pipelines.error();
     impl->pipelines = std::move(pipelines).value();
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cp.queueFamilyIndex = c.queue_family;
     cp.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    TW_VK_TRY(detail::make_owned(c, impl->upload_pool,
-                                 [&](VkCommandPool* out) { return c.vk().CreateCommandPool(c.device, &cp, c.allocator, out); }));
+    TW_VK_TRY(detail::make_owned(c, impl->upload_pool, [&](VkCommandPool* out) {
+        return c.vk().CreateCommandPool(c.device, &cp, c.allocator, out);
+    }));
     if (auto st = impl->create_slots(); !st) return st.error();
     auto timer = detail::FrameTimer::create(c, info.frames_in_flight);
     if (!timer) return timer.error();
@@ -420,9 +472,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
 Status Renderer::set_scene(const Scene& scene) {
     Impl& m = *impl_;
     if (!scene.baked())
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
-                                                              "since its bake: pass it through bake_scene (or disable its shore) "
-                                                              "before set_scene", scene.name)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
+                                 "since its bake: pass it through bake_scene (or disable its shore) "
+                                 "before set_scene",
+                                 scene.name)};
     std::size_t waves = scene.has_ocean ? scene.ocean.waves().size() : 0, river_waves = 0;
     for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
     for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();
@@ -431,13 +485,16 @@ Status Renderer::set_scene(const Scene& scene) {
     if (!terrain) return terrain.error();
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
-    if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves); !st) return st;
+    if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves);
+        !st)
+        return st;
     if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes); !st) return st;
     m.terrain = std::move(terrain).value();
     m.bodies = std::move(bodies).value();
     m.scene = scene;
-    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves, {} lakes, {} rivers", scene.name,
-                      m.terrain->vertex_count, scene.ocean.waves().size(), scene.lakes.size(), scene.rivers.size()));
+    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves, {} lakes, {} rivers",
+                      scene.name, m.terrain->vertex_count, scene.ocean.waves().size(), scene.lakes.size(),
+                      scene.rivers.size()));
     return {};
 }
 
@@ -455,18 +512,21 @@ Status Renderer::set_water(const WaterBody& water) {
     if (water.waves().size() > kMaxWaves) return Error{ErrorCode::invalid_argument, "renderer: too many waves"};
     const Scene& scene = impl_->scene;
     if (scene.has_ocean && water.level() != scene.water_level())
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("renderer: set_water: the body's level {} m is not the scene's water level {} m: change the level "
-                                 "in the scene and bake it (bake_scene), then set_scene",
-                                 water.level(), scene.water_level())};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format(
+                "renderer: set_water: the body's level {} m is not the scene's water level {} m: change the level "
+                "in the scene and bake it (bake_scene), then set_scene",
+                water.level(), scene.water_level())};
     // The surf is never dropped silently: a body without a shore model over a scene whose
     // ocean feels its shore is refused, with the recipe.
     if (impl_->shore.placement(0).model && !water.shore())
-        return Error{ErrorCode::invalid_argument,
-                     "renderer: set_water: the new water has no shore model, and the scene's ocean feels its shore: the surf "
-                     "would be lost. Put the water in a copy of the scene (scene.ocean = water), bake it with bake_scene "
-                     "(SceneBakeOptions::previous = the current scene re-bakes only the shore) and call set_scene; or give a "
-                     "body whose with_shore() model was baked for these waves"};
+        return Error{
+            ErrorCode::invalid_argument,
+            "renderer: set_water: the new water has no shore model, and the scene's ocean feels its shore: the surf "
+            "would be lost. Put the water in a copy of the scene (scene.ocean = water), bake it with bake_scene "
+            "(SceneBakeOptions::previous = the current scene re-bakes only the shore) and call set_scene; or give a "
+            "body whose with_shore() model was baked for these waves"};
     // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
     if (auto st = impl_->use_shores(&water, impl_->scene.lakes); !st) return st;
     if (water.waves().size() > impl_->scene.ocean.waves().size()) {
@@ -474,7 +534,10 @@ Status Renderer::set_water(const WaterBody& water) {
         std::size_t waves = water.waves().size();
         for (const SceneLake& lake : impl_->scene.lakes) waves += lake.body.waves().size();
         TW_VK_TRY(impl_->vk().DeviceWaitIdle(impl_->ctx().device));
-        if (auto st = impl_->size_slots(1 + detail::kOceanRings + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1); !st) return st;
+        if (auto st = impl_->size_slots(
+                1 + detail::kOceanRings + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1);
+            !st)
+            return st;
     }
     impl_->scene.ocean = water;
     return {};
@@ -484,13 +547,15 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     Impl& m = *impl_;
     const detail::VulkanFunctions& vk = m.vk();
     if (!cmd || !t.color_image || !t.color_view || !t.depth_image || !t.depth_view)
-        return Error{ErrorCode::invalid_argument, "renderer: record_frame needs a command buffer and the colour and depth images and views"};
+        return Error{ErrorCode::invalid_argument,
+                     "renderer: record_frame needs a command buffer and the colour and depth images and views"};
     const VkExtent2D sized = m.copies.extent();
     if (t.extent.width != sized.width || t.extent.height != sized.height)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("renderer: the frame's targets are {}x{} but the renderer is sized for {}x{}: call resize() "
-                                 "whenever the targets change size (record_frame never waits)",
-                                 t.extent.width, t.extent.height, sized.width, sized.height)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("renderer: the frame's targets are {}x{} but the renderer is sized for {}x{}: call resize() "
+                        "whenever the targets change size (record_frame never waits)",
+                        t.extent.width, t.extent.height, sized.width, sized.height)};
     Impl::Slot* slot = nullptr;
     detail::FramePlan plan;
     if (auto st = m.prepare_slot(frame, t.extent, true, slot, plan); !st) return st;
@@ -498,7 +563,8 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     m.timer.begin(vk, cmd, slot_index);
 
     const bool msaa = m.copies.multisampled();
-    detail::FramePasses passes(t, m.depth_target->attachment_layout, msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
+    detail::FramePasses passes(t, m.depth_target->attachment_layout,
+                               msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
     if (msaa) m.copies.depth_to_resolve(vk, cmd);
     vk.CmdBeginRendering(cmd, &passes.rendering);
     m.draw_opaque(cmd, *slot, plan, t.extent, frame.view);
@@ -537,8 +603,8 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
         const auto it = spirv.find(name);
         return it == spirv.end() ? std::span<const std::uint32_t>() : std::span<const std::uint32_t>(it->second);
     };
-    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples, m.info.shade_water_per_sample,
-                                        m.info.wireframe, lookup);
+    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples,
+                                        m.info.shade_water_per_sample, m.info.wireframe, lookup);
     if (!draws) return draws.error();  // the current pipelines keep drawing
     // No device-wide wait: the old pipelines live until the frames in flight are done.
     m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});
@@ -550,7 +616,8 @@ Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
     Impl& m = *impl_;
     const std::size_t s = frame_index % m.slots.size();
     if (m.timer.available() && m.slots[s].recorded_frame != frame_index)
-        return Error{ErrorCode::not_found, fmt::format("renderer: frame {} is not the last recorded in its slot", frame_index)};
+        return Error{ErrorCode::not_found,
+                     fmt::format("renderer: frame {} is not the last recorded in its slot", frame_index)};
     return m.timer.read(m.ctx(), static_cast<std::uint32_t>(s));
 }
 

@@ -1,7 +1,8 @@
 #include "scene_copies.hpp"
 
-#include <cstdint>
 #include <fmt/format.h>
+
+#include <cstdint>
 
 #include "scene_uploads.hpp"
 #include "vk_util.hpp"
@@ -11,7 +12,8 @@ namespace tidewater::render::detail {
 namespace {
 constexpr VkImageUsageFlags kCopyUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-constexpr VkPipelineStageFlags kDepthStage = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkPipelineStageFlags kDepthStage =
+    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 }  // namespace
 
 Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, const ColorTarget& color_target,
@@ -26,8 +28,11 @@ Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, c
     if (!depth) return depth.error();
     // Black, and reversed-Z's far plane (0 in every depth format).
     const std::uint64_t zero = 0;
-    if (auto st = upload_image(ctx, pool, *color, &zero, color_target.texel_bytes, VK_IMAGE_ASPECT_COLOR_BIT); !st) return st.error();
-    if (auto st = upload_image(ctx, pool, *depth, &zero, depth_target.texel_bytes, VK_IMAGE_ASPECT_DEPTH_BIT, depth_target.aspects); !st)
+    if (auto st = upload_image(ctx, pool, *color, &zero, color_target.texel_bytes, VK_IMAGE_ASPECT_COLOR_BIT); !st)
+        return st.error();
+    if (auto st = upload_image(ctx, pool, *depth, &zero, depth_target.texel_bytes, VK_IMAGE_ASPECT_DEPTH_BIT,
+                               depth_target.aspects);
+        !st)
         return st.error();
     c.placeholder_color_ = std::move(color).value();
     c.placeholder_depth_ = std::move(depth).value();
@@ -36,7 +41,8 @@ Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, c
 
 Status SceneCopies::resize(const Device& ctx, VkCommandPool pool, VkExtent2D extent) {
     if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
     if (color_.handle() && extent.width == extent_.width && extent.height == extent_.height) return {};
     // Frames in flight may still sample the old copies.
     TW_VK_TRY(ctx.vk().DeviceWaitIdle(ctx.device));
@@ -47,15 +53,18 @@ Status SceneCopies::resize(const Device& ctx, VkCommandPool pool, VkExtent2D ext
     if (!color) return color.error();
     // Multisampled targets resolve their depth into the copy as an attachment.
     const VkImageUsageFlags depth_usage =
-        kCopyUsage | (multisampled() ? static_cast<VkImageUsageFlags>(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) : VkImageUsageFlags{0});
+        kCopyUsage | (multisampled() ? static_cast<VkImageUsageFlags>(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)
+                                     : VkImageUsageFlags{0});
     auto depth = GpuImage::create(ctx, extent, depth_target_->format, depth_usage, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (!depth) return depth.error();
     // Give the new images a defined layout before any frame samples them.
     Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(ctx.vk(), cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-        transition(ctx.vk(), cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+        transition(ctx.vk(), cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+        transition(ctx.vk(), cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     });
     if (!st) return st;
     color_ = std::move(color).value();
@@ -65,11 +74,13 @@ Status SceneCopies::resize(const Device& ctx, VkCommandPool pool, VkExtent2D ext
 }
 
 void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& t) const {
-    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-               kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     const DepthTarget& d = *depth_target_;
-    transition(vk, cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthStage,
-               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    transition(vk, cmd, t.depth_image, d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               kDepthStage, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT);
     // Only the depth aspect is copied (and sampled); barriers cover every aspect. With
     // multisampling the colour is resolved and the depth was resolved by the pass.
     const struct {
@@ -81,31 +92,31 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
     for (const auto& p : pairs) {
         if (multisampled() && &p.copy == &depth_) continue;
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
-        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                   VK_ACCESS_TRANSFER_WRITE_BIT);
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                   VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
         if (multisampled()) {
             VkImageResolve region{};
             region.srcSubresource = {p.aspect, 0, 0, 1};
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
-            vk.CmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                              &region);
+            vk.CmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         } else {
             VkImageCopy region{};
             region.srcSubresource = {p.aspect, 0, 0, 1};
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
-            vk.CmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &region);
+            vk.CmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(),
+                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         }
-        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                   VK_ACCESS_SHADER_READ_BIT);
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     }
-    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kColorStage,
-               VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+               kColorStage, VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     transition(vk, cmd, t.depth_image, d.aspects, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.attachment_layout,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kDepthStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
@@ -121,9 +132,10 @@ void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cm
 void SceneCopies::depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const {
     const DepthTarget& d = *depth_target_;
     // Depth resolves run at the end of the pass, in the colour-output stage.
-    transition(vk, cmd, depth_.handle(), d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStage | kColorStage,
-               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-               VK_ACCESS_SHADER_READ_BIT);
+    transition(vk, cmd, depth_.handle(), d.aspects, d.attachment_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               kDepthStage | kColorStage,
+               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 }
 
 FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout, VkImageView depth_resolve) {

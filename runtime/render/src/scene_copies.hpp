@@ -12,12 +12,12 @@
 namespace tidewater::render::detail {
 
 class SceneCopies {
-public:
+  public:
     /// 1x1 placeholders (bound by record_in_pass, which has no copy) and no copies yet.
     /// With multisampled targets (`samples` > 1) the colour copy is resolved (averaged)
     /// and the depth copy is written by the opaque pass's depth resolve (sample 0).
-    static Result<SceneCopies> create(const Device& ctx, VkCommandPool pool, const ColorTarget& color, const DepthTarget& depth,
-                                      VkSampleCountFlagBits samples);
+    static Result<SceneCopies> create(const Device& ctx, VkCommandPool pool, const ColorTarget& color,
+                                      const DepthTarget& depth, VkSampleCountFlagBits samples);
 
     /// (Re)makes the copies at `extent`: waits for the device, then gives them a layout. A
     /// failed wait (a lost device) is returned before anything is replaced.
@@ -37,7 +37,7 @@ public:
     VkImageView color_view(bool copied) const { return (copied ? color_ : placeholder_color_).view(); }
     VkImageView depth_view(bool copied) const { return (copied ? depth_ : placeholder_depth_).view(); }
 
-private:
+  private:
     const ColorTarget* color_target_ = nullptr;
     const DepthTarget* depth_target_ = nullptr;
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;

@@ -1,8 +1,9 @@
 #include "scene_uploads.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
-#include <fmt/format.h>
 #include <limits>
 
 #include "terrain_mesh.hpp"
@@ -23,14 +24,17 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         const ShoreWaves* shore = models[m];
         if (!shore) continue;
         if (!any) p.per_wave.clear(), p.shared.clear(), any = true;
-        const std::size_t texels = static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
-        placements[m] = {shore, static_cast<std::uint32_t>(p.per_wave.size()), static_cast<std::uint32_t>(p.shared.size())};
+        const std::size_t texels =
+            static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
+        placements[m] = {shore, static_cast<std::uint32_t>(p.per_wave.size()),
+                         static_cast<std::uint32_t>(p.shared.size())};
         for (std::size_t w = 0; w < shore->wave_count(); ++w)
             for (std::size_t k = 0; k < texels; ++k)
-                p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k], shore->wavevector_x(w)[k],
-                                      shore->wavevector_z(w)[k]});
+                p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k],
+                                      shore->wavevector_x(w)[k], shore->wavevector_z(w)[k]});
         for (std::size_t k = 0; k < texels; ++k)
-            p.shared.push_back({shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
+            p.shared.push_back(
+                {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
     }
     if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // a model without waves
     return p;
@@ -51,7 +55,8 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models) {
     const PackedShore packed = pack_shores(wanted_models, placements);
     // The offsets are 32-bit element indices in the shaders.
     if (packed.per_wave.size() > std::numeric_limits<std::uint32_t>::max())
-        return Error{ErrorCode::invalid_argument, fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
     GpuBuffer fresh[2];
     const std::vector<glm::vec4>* data[2] = {&packed.per_wave, &packed.shared};
     for (int i = 0; i < 2; ++i) {
@@ -75,33 +80,39 @@ Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, cons
     if (!staging) return staging.error();
     std::memcpy(staging->mapped(), data, bytes);
     return submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
         VkBufferImageCopy region{};
         region.imageSubresource = {aspect, 0, 0, 1};
         region.imageExtent = {image.extent().width, image.extent().height, 1};
-        ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
-                   VK_ACCESS_SHADER_READ_BIT);
+        ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                                      &region);
+        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_READ_BIT);
     });
 }
 
 Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool pool, const Terrain& terrain) {
     TerrainUpload t;
     const TerrainMesh mesh = build_terrain_mesh(terrain, kTerrainCells);
-    const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(float), ibytes = mesh.indices.size() * sizeof(std::uint32_t);
+    const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(float),
+                       ibytes = mesh.indices.size() * sizeof(std::uint32_t);
     auto vb = GpuBuffer::create(ctx, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     if (!vb) return vb.error();
     auto ib = GpuBuffer::create(ctx, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     if (!ib) return ib.error();
     std::memcpy(vb->mapped(), mesh.vertices.data(), vbytes);
     std::memcpy(ib->mapped(), mesh.indices.data(), ibytes);
-    auto heights = GpuImage::create(ctx, {kHeightTextureSize, kHeightTextureSize}, VK_FORMAT_R32_SFLOAT,
-                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    auto heights =
+        GpuImage::create(ctx, {kHeightTextureSize, kHeightTextureSize}, VK_FORMAT_R32_SFLOAT,
+                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!heights) return heights.error();
     const std::vector<float> samples = sample_height_texture(terrain, kHeightTextureSize);
-    if (auto st = upload_image(ctx, pool, *heights, samples.data(), samples.size() * sizeof(float), VK_IMAGE_ASPECT_COLOR_BIT); !st)
+    if (auto st = upload_image(ctx, pool, *heights, samples.data(), samples.size() * sizeof(float),
+                               VK_IMAGE_ASPECT_COLOR_BIT);
+        !st)
         return st.error();
     t.vertices = std::move(vb).value();
     t.indices = std::move(ib).value();
@@ -112,7 +123,8 @@ Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool poo
     t.placement.mesh_origin = mesh.origin;
     t.placement.height_rect_corner = terrain.extent_center() - glm::dvec2(half);
     t.placement.height_rect_size = 2.0 * half;
-    t.placement.highest_ground = samples.empty() ? 0.0 : static_cast<double>(*std::max_element(samples.begin(), samples.end()));
+    t.placement.highest_ground =
+        samples.empty() ? 0.0 : static_cast<double>(*std::max_element(samples.begin(), samples.end()));
     t.water_half_size = std::max(3000.0, half);
     return t;
 }

@@ -3,12 +3,12 @@
 // texture. Uploads submit and wait: they are the explicit, blocking calls.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <vector>
-
-#include <glm/vec4.hpp>
-#include <vulkan/vulkan.h>
 
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
@@ -40,7 +40,7 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
 /// renderer, one for a GPU query), or placeholders, so that their bindings are always
 /// valid. Keeps the models alive while they are the ones uploaded.
 class ShoreBuffers {
-public:
+  public:
     using Models = std::vector<std::shared_ptr<const ShoreWaves>>;
     /// True when `models` are what the buffers hold already (no upload needed).
     bool holds(const Models& models) const;
@@ -48,7 +48,9 @@ public:
     /// Returns true when the buffers were replaced and descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
     Result<bool> upload(const Device& ctx, const Models& models);
-    Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) { return upload(ctx, Models{shore}); }
+    Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
+        return upload(ctx, Models{shore});
+    }
 
     /// The first model uploaded (null: none).
     const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }
@@ -57,7 +59,7 @@ public:
     VkBuffer per_wave() const { return per_wave_.handle(); }
     VkBuffer shared() const { return shared_.handle(); }
 
-private:
+  private:
     static const ShoreWaves* wanted(const std::shared_ptr<const ShoreWaves>& shore) {
         return shore && !shore->trivial() ? shore.get() : nullptr;
     }

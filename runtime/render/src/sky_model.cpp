@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace tidewater::render::detail {
@@ -54,7 +53,8 @@ glm::dvec3 sky_white_balance(const PreethamSky& sky, glm::dvec3 sun) {
     glm::dvec3 rgb{0.0};
     for (int i = 0; i < 8; ++i) {
         const double azimuth = 2.0 * M_PI * i / 8.0;
-        rgb += linear_srgb_from_Yxy(preetham_Yxy(sky, sun, glm::normalize(glm::dvec3(std::cos(azimuth), 0.0175, std::sin(azimuth)))));
+        rgb += linear_srgb_from_Yxy(
+            preetham_Yxy(sky, sun, glm::normalize(glm::dvec3(std::cos(azimuth), 0.0175, std::sin(azimuth)))));
     }
     if (!(rgb.r > 0.0 && rgb.g > 0.0 && rgb.b > 0.0)) return glm::dvec3(1.0);
     return glm::dvec3(0.94 * rgb.g / rgb.r, 1.0, 1.1 * rgb.g / rgb.b);
@@ -63,7 +63,8 @@ glm::dvec3 sky_white_balance(const PreethamSky& sky, glm::dvec3 sun) {
 glm::dvec3 linear_srgb_from_Yxy(glm::dvec3 Yxy) {
     const double Y = Yxy.x, x = Yxy.y, y = std::max(Yxy.z, 1e-6);
     const double X = x * Y / y, Z = (1.0 - x - y) * Y / y;
-    return {3.2406 * X - 1.5372 * Y - 0.4986 * Z, -0.9689 * X + 1.8758 * Y + 0.0415 * Z, 0.0557 * X - 0.2040 * Y + 1.0570 * Z};
+    return {3.2406 * X - 1.5372 * Y - 0.4986 * Z, -0.9689 * X + 1.8758 * Y + 0.0415 * Z,
+            0.0557 * X - 0.2040 * Y + 1.0570 * Z};
 }
 
 }  // namespace tidewater::render::detail

@@ -1,11 +1,11 @@
 // StandaloneDevice is a host like any other: it creates its instance and device
 // through the system loader's exported functions, then lends them as a DeviceContext.
 #undef VK_NO_PROTOTYPES
+#include <fmt/format.h>
 #include <vulkan/vulkan.h>
 
 #include <cstdio>
 #include <cstring>
-#include <fmt/format.h>
 #include <vector>
 
 #include "tidewater/render/standalone.hpp"
@@ -109,8 +109,10 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     app.pEngineName = "tidewater";
     app.apiVersion = VK_API_VERSION_1_3;
     VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+    messenger.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                             VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger.pfnUserCallback = &StandaloneDevice::on_message;
     messenger.pUserData = self.get();
@@ -123,13 +125,15 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     if (options.validation) info.pNext = &messenger;  // also covers instance creation itself
     const VkResult created = vkCreateInstance(&info, nullptr, &self->context_.instance);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER) {
-        return Error{ErrorCode::no_device, "No Vulkan device: no Vulkan 1.3 driver is installed (Debian: mesa-vulkan-drivers)"};
+        return Error{ErrorCode::no_device,
+                     "No Vulkan device: no Vulkan 1.3 driver is installed (Debian: mesa-vulkan-drivers)"};
     }
     if (created != VK_SUCCESS) return detail::vk_error(created, "vkCreateInstance");
     if (options.validation) {
         auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(self->context_.instance, "vkCreateDebugUtilsMessengerEXT"));
-        if (create_messenger) TW_VK_TRY(create_messenger(self->context_.instance, &messenger, nullptr, &self->messenger_));
+        if (create_messenger)
+            TW_VK_TRY(create_messenger(self->context_.instance, &messenger, nullptr, &self->messenger_));
     }
 
     std::uint32_t count = 0;
@@ -141,15 +145,19 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     std::vector<Candidate> candidates;
     for (VkPhysicalDevice d : devices) candidates.push_back(inspect(d));
     for (const Candidate& c : candidates) {
-        const bool name_ok = options.device_name_contains.empty() || c.name.find(options.device_name_contains) != std::string::npos;
+        const bool name_ok =
+            options.device_name_contains.empty() || c.name.find(options.device_name_contains) != std::string::npos;
         found += fmt::format("{}\"{}\" ({})", found.empty() ? "" : ", ", c.name,
                              !c.why_not.empty() ? c.why_not : (name_ok ? "usable" : "name does not match"));
         if (!chosen && c.why_not.empty() && name_ok) chosen = &c;
     }
     if (!chosen) {
         return Error{ErrorCode::no_device,
-                     fmt::format("No Vulkan device fits (needs Vulkan 1.3, dynamic rendering, tessellation, a graphics+compute queue{}); found: {}",
-                                 options.device_name_contains.empty() ? "" : fmt::format(", a name containing \"{}\"", options.device_name_contains),
+                     fmt::format("No Vulkan device fits (needs Vulkan 1.3, dynamic rendering, tessellation, a "
+                                 "graphics+compute queue{}); found: {}",
+                                 options.device_name_contains.empty()
+                                     ? ""
+                                     : fmt::format(", a name containing \"{}\"", options.device_name_contains),
                                  found.empty() ? "none" : found)};
     }
     self->device_name_ = chosen->name;
@@ -159,7 +167,7 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     VkPhysicalDeviceFeatures supported;
     vkGetPhysicalDeviceFeatures(chosen->device, &supported);
     VkPhysicalDeviceFeatures enabled{};
-    enabled.fillModeNonSolid = supported.fillModeNonSolid;  // wireframe debug view
+    enabled.fillModeNonSolid = supported.fillModeNonSolid;      // wireframe debug view
     enabled.tessellationShader = supported.tessellationShader;  // water level of detail
     enabled.sampleRateShading = supported.sampleRateShading;    // water shaded per sample (optional)
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
@@ -186,8 +194,10 @@ StandaloneDevice::~StandaloneDevice() {
         // A lost device has no work left: it is destroyed all the same.
         if (const VkResult r = vkDeviceWaitIdle(context_.device); r != VK_SUCCESS) {
             const std::string text = detail::vk_error(r, "vkDeviceWaitIdle (destroying the standalone device)").message;
-            if (log_) log_(text);
-            else std::fprintf(stderr, "%s\n", text.c_str());
+            if (log_)
+                log_(text);
+            else
+                std::fprintf(stderr, "%s\n", text.c_str());
         }
         vkDestroyDevice(context_.device, nullptr);
     }

@@ -3,9 +3,10 @@
 // colour copy, and a depth format's aspects and attachment layout.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <string>
-#include <vulkan/vulkan.h>
 
 namespace tidewater::render::detail {
 
@@ -21,9 +22,9 @@ struct ColorTarget {
 struct DepthTarget {
     VkFormat format;
     const char* name;
-    VkImageAspectFlags aspects;          ///< every aspect, for layout transitions
-    VkImageLayout attachment_layout;     ///< the layout the host hands it in and gets it back
-    std::uint32_t texel_bytes;           ///< of its depth aspect in a buffer copy
+    VkImageAspectFlags aspects;       ///< every aspect, for layout transitions
+    VkImageLayout attachment_layout;  ///< the layout the host hands it in and gets it back
+    std::uint32_t texel_bytes;        ///< of its depth aspect in a buffer copy
 };
 
 /// The accepted formats, or null.

@@ -41,7 +41,8 @@ std::vector<float> sample_height_texture(const Terrain& terrain, std::uint32_t s
     std::vector<float> heights(static_cast<std::size_t>(size) * size);
     for (std::uint32_t j = 0; j < size; ++j) {
         for (std::uint32_t i = 0; i < size; ++i) {
-            const glm::dvec2 p = center + glm::dvec2(-half + (i + 0.5) * 2.0 * half / size, -half + (j + 0.5) * 2.0 * half / size);
+            const glm::dvec2 p =
+                center + glm::dvec2(-half + (i + 0.5) * 2.0 * half / size, -half + (j + 0.5) * 2.0 * half / size);
             heights[static_cast<std::size_t>(j) * size + i] = static_cast<float>(terrain.height_at(p));
         }
     }

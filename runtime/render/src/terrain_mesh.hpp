@@ -3,18 +3,17 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "tidewater/terrain.hpp"
 
 namespace tidewater::render::detail {
 
 struct TerrainMesh {
-    std::vector<float> vertices;        // per vertex: position xyz (relative to origin), normal xyz
-    std::vector<std::uint32_t> indices; // triangles
-    glm::dvec2 origin{0.0};             // world xz of the mesh's (0, 0)
+    std::vector<float> vertices;         // per vertex: position xyz (relative to origin), normal xyz
+    std::vector<std::uint32_t> indices;  // triangles
+    glm::dvec2 origin{0.0};              // world xz of the mesh's (0, 0)
 };
 
 /// A grid of `cells` x `cells` quads over the terrain's extent.

@@ -4,6 +4,7 @@
 #include "vk_device.hpp"
 
 #include <fmt/format.h>
+
 #include <string>
 
 extern "C" {
@@ -14,12 +15,12 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL vkGetDeviceProcAddr(VkDevice device, co
 namespace tidewater::render::detail {
 
 Result<Device> load_device(const DeviceContext& ctx) {
-    if (!ctx.instance || !ctx.device)
-        return Error{ErrorCode::invalid_argument, "DeviceContext: no instance or device"};
+    if (!ctx.instance || !ctx.device) return Error{ErrorCode::invalid_argument, "DeviceContext: no instance or device"};
     const bool hooked = ctx.get_instance_proc_addr || ctx.get_device_proc_addr;
     if (hooked && (!ctx.get_instance_proc_addr || !ctx.get_device_proc_addr))
-        return Error{ErrorCode::invalid_argument,
-                     "DeviceContext: give both get_instance_proc_addr and get_device_proc_addr, or neither (the system loader)"};
+        return Error{
+            ErrorCode::invalid_argument,
+            "DeviceContext: give both get_instance_proc_addr and get_device_proc_addr, or neither (the system loader)"};
     const PFN_vkGetInstanceProcAddr instance_proc = hooked ? ctx.get_instance_proc_addr : &::vkGetInstanceProcAddr;
     const PFN_vkGetDeviceProcAddr device_proc = hooked ? ctx.get_device_proc_addr : &::vkGetDeviceProcAddr;
     auto f = std::make_shared<VulkanFunctions>();
@@ -27,10 +28,10 @@ Result<Device> load_device(const DeviceContext& ctx) {
     auto note_missing = [&](bool found, const char* name) {
         if (!found) missing += fmt::format("{}{}", missing.empty() ? "" : ", ", name);
     };
-#define TIDEWATER_VK_LOAD_INSTANCE(name)                                                                       \
+#define TIDEWATER_VK_LOAD_INSTANCE(name)                                                       \
     f->name.pointer = reinterpret_cast<PFN_vk##name>(instance_proc(ctx.instance, "vk" #name)); \
     note_missing(f->name.pointer != nullptr, "vk" #name);
-#define TIDEWATER_VK_LOAD_DEVICE(name)                                                                     \
+#define TIDEWATER_VK_LOAD_DEVICE(name)                                                     \
     f->name.pointer = reinterpret_cast<PFN_vk##name>(device_proc(ctx.device, "vk" #name)); \
     note_missing(f->name.pointer != nullptr, "vk" #name);
     TIDEWATER_VK_INSTANCE_FUNCTIONS(TIDEWATER_VK_LOAD_INSTANCE)
@@ -38,8 +39,8 @@ Result<Device> load_device(const DeviceContext& ctx) {
 #undef TIDEWATER_VK_LOAD_INSTANCE
 #undef TIDEWATER_VK_LOAD_DEVICE
     if (!missing.empty())
-        return Error{ErrorCode::unsupported,
-                     fmt::format("DeviceContext: the {} has no {}", hooked ? "host's loader" : "Vulkan loader", missing)};
+        return Error{ErrorCode::unsupported, fmt::format("DeviceContext: the {} has no {}",
+                                                         hooked ? "host's loader" : "Vulkan loader", missing)};
     Device device;
     static_cast<DeviceContext&>(device) = ctx;
     device.functions = std::move(f);

@@ -7,89 +7,90 @@
 // any thread.
 #pragma once
 
-#include <memory>
 #include <vulkan/vulkan.h>
+
+#include <memory>
 
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/result.hpp"
 
 // Instance-level functions (loaded with vkGetInstanceProcAddr).
-#define TIDEWATER_VK_INSTANCE_FUNCTIONS(X) \
-    X(CreateDevice) \
-    X(DestroyInstance) \
-    X(EnumeratePhysicalDevices) \
-    X(GetPhysicalDeviceFeatures) \
-    X(GetPhysicalDeviceFeatures2) \
-    X(GetPhysicalDeviceFormatProperties) \
+#define TIDEWATER_VK_INSTANCE_FUNCTIONS(X)    \
+    X(CreateDevice)                           \
+    X(DestroyInstance)                        \
+    X(EnumeratePhysicalDevices)               \
+    X(GetPhysicalDeviceFeatures)              \
+    X(GetPhysicalDeviceFeatures2)             \
+    X(GetPhysicalDeviceFormatProperties)      \
     X(GetPhysicalDeviceImageFormatProperties) \
-    X(GetPhysicalDeviceMemoryProperties) \
-    X(GetPhysicalDeviceProperties) \
+    X(GetPhysicalDeviceMemoryProperties)      \
+    X(GetPhysicalDeviceProperties)            \
     X(GetPhysicalDeviceQueueFamilyProperties)
 // Device-level functions (loaded with vkGetDeviceProcAddr).
 #define TIDEWATER_VK_DEVICE_FUNCTIONS(X) \
-    X(AllocateCommandBuffers) \
-    X(AllocateDescriptorSets) \
-    X(AllocateMemory) \
-    X(BeginCommandBuffer) \
-    X(BindBufferMemory) \
-    X(BindImageMemory) \
-    X(CmdBeginRendering) \
-    X(CmdBindDescriptorSets) \
-    X(CmdBindIndexBuffer) \
-    X(CmdBindPipeline) \
-    X(CmdBindVertexBuffers) \
-    X(CmdCopyBufferToImage) \
-    X(CmdCopyImage) \
-    X(CmdCopyImageToBuffer) \
-    X(CmdDispatch) \
-    X(CmdDraw) \
-    X(CmdDrawIndexed) \
-    X(CmdEndRendering) \
-    X(CmdPipelineBarrier) \
-    X(CmdPushConstants) \
-    X(CmdResolveImage) \
-    X(CmdResetQueryPool) \
-    X(CmdSetScissor) \
-    X(CmdSetViewport) \
-    X(CmdWriteTimestamp) \
-    X(CreateBuffer) \
-    X(CreateCommandPool) \
-    X(CreateComputePipelines) \
-    X(CreateDescriptorPool) \
-    X(CreateDescriptorSetLayout) \
-    X(CreateFence) \
-    X(CreateGraphicsPipelines) \
-    X(CreateImage) \
-    X(CreateImageView) \
-    X(CreatePipelineLayout) \
-    X(CreateQueryPool) \
-    X(CreateSampler) \
-    X(CreateShaderModule) \
-    X(DestroyBuffer) \
-    X(DestroyCommandPool) \
-    X(DestroyDescriptorPool) \
-    X(DestroyDescriptorSetLayout) \
-    X(DestroyDevice) \
-    X(DestroyFence) \
-    X(DestroyImage) \
-    X(DestroyImageView) \
-    X(DestroyPipeline) \
-    X(DestroyPipelineLayout) \
-    X(DestroyQueryPool) \
-    X(DestroySampler) \
-    X(DestroyShaderModule) \
-    X(DeviceWaitIdle) \
-    X(EndCommandBuffer) \
-    X(FreeCommandBuffers) \
-    X(FreeMemory) \
-    X(GetBufferMemoryRequirements) \
-    X(GetDeviceQueue) \
-    X(GetImageMemoryRequirements) \
-    X(GetQueryPoolResults) \
-    X(MapMemory) \
-    X(QueueSubmit) \
-    X(ResetCommandPool) \
-    X(UpdateDescriptorSets) \
+    X(AllocateCommandBuffers)            \
+    X(AllocateDescriptorSets)            \
+    X(AllocateMemory)                    \
+    X(BeginCommandBuffer)                \
+    X(BindBufferMemory)                  \
+    X(BindImageMemory)                   \
+    X(CmdBeginRendering)                 \
+    X(CmdBindDescriptorSets)             \
+    X(CmdBindIndexBuffer)                \
+    X(CmdBindPipeline)                   \
+    X(CmdBindVertexBuffers)              \
+    X(CmdCopyBufferToImage)              \
+    X(CmdCopyImage)                      \
+    X(CmdCopyImageToBuffer)              \
+    X(CmdDispatch)                       \
+    X(CmdDraw)                           \
+    X(CmdDrawIndexed)                    \
+    X(CmdEndRendering)                   \
+    X(CmdPipelineBarrier)                \
+    X(CmdPushConstants)                  \
+    X(CmdResolveImage)                   \
+    X(CmdResetQueryPool)                 \
+    X(CmdSetScissor)                     \
+    X(CmdSetViewport)                    \
+    X(CmdWriteTimestamp)                 \
+    X(CreateBuffer)                      \
+    X(CreateCommandPool)                 \
+    X(CreateComputePipelines)            \
+    X(CreateDescriptorPool)              \
+    X(CreateDescriptorSetLayout)         \
+    X(CreateFence)                       \
+    X(CreateGraphicsPipelines)           \
+    X(CreateImage)                       \
+    X(CreateImageView)                   \
+    X(CreatePipelineLayout)              \
+    X(CreateQueryPool)                   \
+    X(CreateSampler)                     \
+    X(CreateShaderModule)                \
+    X(DestroyBuffer)                     \
+    X(DestroyCommandPool)                \
+    X(DestroyDescriptorPool)             \
+    X(DestroyDescriptorSetLayout)        \
+    X(DestroyDevice)                     \
+    X(DestroyFence)                      \
+    X(DestroyImage)                      \
+    X(DestroyImageView)                  \
+    X(DestroyPipeline)                   \
+    X(DestroyPipelineLayout)             \
+    X(DestroyQueryPool)                  \
+    X(DestroySampler)                    \
+    X(DestroyShaderModule)               \
+    X(DeviceWaitIdle)                    \
+    X(EndCommandBuffer)                  \
+    X(FreeCommandBuffers)                \
+    X(FreeMemory)                        \
+    X(GetBufferMemoryRequirements)       \
+    X(GetDeviceQueue)                    \
+    X(GetImageMemoryRequirements)        \
+    X(GetQueryPoolResults)               \
+    X(MapMemory)                         \
+    X(QueueSubmit)                       \
+    X(ResetCommandPool)                  \
+    X(UpdateDescriptorSets)              \
     X(WaitForFences)
 
 namespace tidewater::render::detail {

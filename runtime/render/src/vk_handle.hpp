@@ -4,9 +4,10 @@
 // thread. Move-only.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <memory>
 #include <utility>
-#include <vulkan/vulkan.h>
 
 #include "vk_device.hpp"
 
@@ -15,7 +16,7 @@ namespace tidewater::render::detail {
 /// `Destroy` names the table's destroy function (&VulkanFunctions::DestroyPipeline, ...).
 template <typename Handle, auto Destroy>
 class VkOwned {
-public:
+  public:
     VkOwned() = default;
     VkOwned(const Device& device, Handle handle)
         : device_(device.device), allocator_(device.allocator), functions_(device.functions), handle_(handle) {}
@@ -42,7 +43,7 @@ public:
     Handle get() const { return handle_; }
     explicit operator bool() const { return handle_ != VK_NULL_HANDLE; }
 
-private:
+  private:
     VkDevice device_ = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator_ = nullptr;
     std::shared_ptr<const VulkanFunctions> functions_;

@@ -15,7 +15,8 @@ void write_wake_buffer(const WakeUpload& upload, void* mapped) {
     auto* bytes = static_cast<unsigned char*>(mapped);
     if (!upload.blocks.empty()) std::memcpy(bytes, upload.blocks.data(), sizeof(glm::vec4) * upload.blocks.size());
     if (!upload.points.empty())
-        std::memcpy(bytes + sizeof(glm::vec4) * gpu::kMaxWakeBlocks, upload.points.data(), sizeof(gpu::GpuWakePoint) * upload.points.size());
+        std::memcpy(bytes + sizeof(glm::vec4) * gpu::kMaxWakeBlocks, upload.points.data(),
+                    sizeof(gpu::GpuWakePoint) * upload.points.size());
 }
 
 Result<WakeUpload> pack_wakes(const Scene& scene, const Wakes* host, double time, glm::dvec2 origin) {
@@ -36,7 +37,8 @@ Result<WakeUpload> pack_wakes(const Wakes& given, double time, glm::dvec2 origin
     Wakes churning, calm;
     churning.splash_max_age = calm.splash_max_age = given.splash_max_age;
     auto churns = [](const DisturbancePoint& p) { return p.turbulence > 0.0; };
-    for (const WakeChain& c : given.chains) (std::any_of(c.points.begin(), c.points.end(), churns) ? churning : calm).chains.push_back(c);
+    for (const WakeChain& c : given.chains)
+        (std::any_of(c.points.begin(), c.points.end(), churns) ? churning : calm).chains.push_back(c);
     for (std::size_t i = 0; i < given.splashes.size(); ++i) {
         Wakes& to = churns(given.splashes[i]) ? churning : calm;
         to.splashes.push_back(given.splashes[i]);
@@ -49,8 +51,9 @@ Result<WakeUpload> pack_wakes(const Wakes& given, double time, glm::dvec2 origin
         const glm::dvec2 shift = prepared.origin - origin;
         for (std::size_t i = 0; i < prepared.x.size(); ++i) {
             gpu::GpuWakePoint p;
-            p.position_age = glm::vec4(static_cast<float>(prepared.x[i] + shift.x), static_cast<float>(prepared.z[i] + shift.y),
-                                       static_cast<float>(prepared.age[i]), static_cast<float>(prepared.strength[i]));
+            p.position_age =
+                glm::vec4(static_cast<float>(prepared.x[i] + shift.x), static_cast<float>(prepared.z[i] + shift.y),
+                          static_cast<float>(prepared.age[i]), static_cast<float>(prepared.strength[i]));
             p.shape = glm::vec4(static_cast<float>(prepared.size[i]), static_cast<float>(prepared.steepness[i]),
                                 static_cast<float>(prepared.turbulence[i]), prepared.linked[i] ? 1.0f : 0.0f);
             out.points.push_back(p);
@@ -62,18 +65,20 @@ Result<WakeUpload> pack_wakes(const Wakes& given, double time, glm::dvec2 origin
         if (part == &churning) out.turbulent = static_cast<std::uint32_t>(out.points.size());
         out.displacement_bound += prepared.displacement_bound;
         for (const glm::dvec4& b : prepared.boxes) {
-            const glm::vec4 box(static_cast<float>(b.x + shift.x), static_cast<float>(b.y + shift.y), static_cast<float>(b.z + shift.x),
-                                static_cast<float>(b.w + shift.y));
+            const glm::vec4 box(static_cast<float>(b.x + shift.x), static_cast<float>(b.y + shift.y),
+                                static_cast<float>(b.z + shift.x), static_cast<float>(b.w + shift.y));
             if (out.boxes.size() < gpu::kMaxWakeBoxes) {
                 out.boxes.push_back(box);
             } else {  // merged into the last: larger, never smaller
                 glm::vec4& last = out.boxes.back();
-                last = glm::vec4(std::min(last.x, box.x), std::min(last.y, box.y), std::max(last.z, box.z), std::max(last.w, box.w));
+                last = glm::vec4(std::min(last.x, box.x), std::min(last.y, box.y), std::max(last.z, box.z),
+                                 std::max(last.w, box.w));
             }
         }
     }
     for (const glm::dvec3& b : tidewater::detail::wake_block_discs(reach_x, reach_z, reach2, linked))
-        out.blocks.push_back(glm::vec4(static_cast<float>(b.x), static_cast<float>(b.y), static_cast<float>(b.z), 0.0f));
+        out.blocks.push_back(
+            glm::vec4(static_cast<float>(b.x), static_cast<float>(b.y), static_cast<float>(b.z), 0.0f));
     return out;
 }
 

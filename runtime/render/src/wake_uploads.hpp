@@ -1,9 +1,8 @@
 // A frame's wakes as the shaders read them (private): the host's and the scene's boats'.
 #pragma once
 
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "host_device.h"
 #include "tidewater/result.hpp"
@@ -16,8 +15,8 @@ struct WakeUpload {
     std::vector<gpu::GpuWakePoint> points;  ///< chains with turbulence first, positions relative to O
     std::uint32_t turbulent = 0;            ///< how many of the first points belong to them
     double displacement_bound = 0.0;        ///< as detail::PreparedWakes
-    std::vector<glm::vec4> boxes;           ///< where they reach, relative to O (at most kMaxWakeBoxes: the rest merged)
-    std::vector<glm::vec4> blocks;          ///< per kWakeBlockPoints points: centre xz (relative to O), squared radius, 0
+    std::vector<glm::vec4> boxes;   ///< where they reach, relative to O (at most kMaxWakeBoxes: the rest merged)
+    std::vector<glm::vec4> blocks;  ///< per kWakeBlockPoints points: centre xz (relative to O), squared radius, 0
 };
 
 /// Bytes of a wake buffer for `points` points: kMaxWakeBlocks block discs, then the points.

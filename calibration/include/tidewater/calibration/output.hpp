@@ -1,10 +1,9 @@
 // What a fit writes: a preset the runtime loads unchanged, and a report.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "tidewater/calibration/phase_fit.hpp"
 #include "tidewater/calibration/record.hpp"

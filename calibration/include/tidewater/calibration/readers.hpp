@@ -28,14 +28,15 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
 /// Reads a CDIP netCDF-4 file's XYZ group (x = north, y = west, z = up; FlagPrimary 9 is
 /// missing) as a buoy record. With start/end (s since 1970, end > start) only samples whose
 /// true time (stored time minus the filter delay) lies in [start, end) are kept.
-Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double start_utc_s = -1.0, double end_utc_s = -1.0);
+Result<MeasuredRecord> read_cdip_xyz(const std::filesystem::path& path, double start_utc_s = -1.0,
+                                     double end_utc_s = -1.0);
 
 /// One spectral summary CDIP computed for a half-hour (the netCDF Wave group).
 struct CdipWaveSummary {
     double start_utc_s = 0.0, end_utc_s = 0.0;  ///< The record's time bounds, s since 1970.
-    double hs = 0.0;   ///< m
-    double tp = 0.0;   ///< s
-    double dp = 0.0;   ///< Peak direction waves come from, degrees true.
+    double hs = 0.0;                            ///< m
+    double tp = 0.0;                            ///< s
+    double dp = 0.0;                            ///< Peak direction waves come from, degrees true.
 };
 Result<std::vector<CdipWaveSummary>> read_cdip_wave_summaries(const std::filesystem::path& path);
 

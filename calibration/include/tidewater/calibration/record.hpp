@@ -23,15 +23,15 @@ const char* to_string(RecordKind kind);
 
 struct MeasuredRecord {
     RecordKind kind = RecordKind::gauge;
-    std::string source;          ///< File name, for messages and reports.
-    std::vector<double> axis;    ///< Time, s (gauge, buoy; from the first kept sample) or position, m (profile).
-    std::vector<double> z;       ///< Elevation or heave, m, up.
-    std::vector<double> east;    ///< Buoy only, m.
-    std::vector<double> north;   ///< Buoy only, m.
-    double axis_origin = 0.0;    ///< The file's axis value of axis[0] (s or m).
+    std::string source;         ///< File name, for messages and reports.
+    std::vector<double> axis;   ///< Time, s (gauge, buoy; from the first kept sample) or position, m (profile).
+    std::vector<double> z;      ///< Elevation or heave, m, up.
+    std::vector<double> east;   ///< Buoy only, m.
+    std::vector<double> north;  ///< Buoy only, m.
+    double axis_origin = 0.0;   ///< The file's axis value of axis[0] (s or m).
     double depth = std::numeric_limits<double>::infinity();  ///< Water depth, m; finite: finite-depth dispersion.
-    std::size_t skipped_missing = 0;  ///< Empty, NaN or sentinel values.
-    std::size_t skipped_flagged = 0;  ///< Samples a quality flag marks bad.
+    std::size_t skipped_missing = 0;                         ///< Empty, NaN or sentinel values.
+    std::size_t skipped_flagged = 0;                         ///< Samples a quality flag marks bad.
 
     std::size_t size() const { return axis.size(); }
     /// Median spacing of the axis (s or m).

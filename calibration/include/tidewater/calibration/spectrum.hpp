@@ -52,11 +52,11 @@ Result<std::vector<SpectralRecord>> read_ndbc_spectra(const std::filesystem::pat
 Result<MeasuredSpectrum> welch_spectrum(const MeasuredRecord& record, const WelchOptions& options = {});
 
 struct SeaState {
-    double hs = 0.0;        ///< 4 sqrt(m0) over the band, m.
-    double tp = 0.0;        ///< 1 / peak frequency, s.
-    double peak_from_deg = 0.0;   ///< Buoy only: direction waves come from at the peak, degrees clockwise from north.
-    double mean_travel_deg = 0.0; ///< Buoy only: energy-weighted direction of travel, degrees from east toward north.
-    double spreading_s = 0.0;     ///< Buoy only: cos-2s spreading from r1 near the peak.
+    double hs = 0.0;               ///< 4 sqrt(m0) over the band, m.
+    double tp = 0.0;               ///< 1 / peak frequency, s.
+    double peak_from_deg = 0.0;    ///< Buoy only: direction waves come from at the peak, degrees clockwise from north.
+    double mean_travel_deg = 0.0;  ///< Buoy only: energy-weighted direction of travel, degrees from east toward north.
+    double spreading_s = 0.0;      ///< Buoy only: cos-2s spreading from r1 near the peak.
 };
 
 /// Summary over [f_lo, f_hi] Hz.
@@ -67,9 +67,9 @@ SeaState summarize(const MeasuredSpectrum& spectrum, double f_lo = 0.025, double
 struct JonswapFit {
     double hs = 0.0, tp = 0.0, gamma = 1.0;
     double mean_travel_deg = 0.0;  ///< From the buoy's directional moments (0 for 1-D data).
-    double peak_from_deg = 0.0;    ///< Buoy: direction waves come from in the bin at 1/tp, degrees clockwise from north.
-    double spreading_s = 0.0;      ///< cos-2s exponent (0 for 1-D data).
-    double r2 = 0.0;               ///< Of the fitted density against the measured one, over the band.
+    double peak_from_deg = 0.0;  ///< Buoy: direction waves come from in the bin at 1/tp, degrees clockwise from north.
+    double spreading_s = 0.0;    ///< cos-2s exponent (0 for 1-D data).
+    double r2 = 0.0;             ///< Of the fitted density against the measured one, over the band.
     int iterations = 0;
 };
 double jonswap_density(double f, double hs, double tp, double gamma);
@@ -80,6 +80,7 @@ Result<JonswapFit> fit_jonswap(const MeasuredSpectrum& spectrum, double f_lo = 0
 /// N waves that reproduce the fitted sea state: frequencies spanning the spectrum,
 /// amplitudes from its density (sum A^2/2 = m0), directions from the spreading, phases
 /// from `seed`, one Q for all so that sum(Q k A) = `fold` (at most Q = 1).
-Result<std::vector<WaveSpec>> sample_preset_waves(const JonswapFit& fit, int count, std::uint64_t seed, double fold = 0.6);
+Result<std::vector<WaveSpec>> sample_preset_waves(const JonswapFit& fit, int count, std::uint64_t seed,
+                                                  double fold = 0.6);
 
 }  // namespace tidewater::calibration

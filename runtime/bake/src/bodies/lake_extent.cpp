@@ -1,7 +1,8 @@
 #include "bodies/lake_extent.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <vector>
 
 namespace tidewater::detail {
@@ -9,7 +10,8 @@ namespace tidewater::detail {
 std::vector<float> sample_terrain(const Terrain& terrain, const FieldGrid& grid) {
     std::vector<float> h(grid.size());
     for (int j = 0; j < grid.nz; ++j)
-        for (int i = 0; i < grid.nx; ++i) h[grid.index(i, j)] = static_cast<float>(terrain.height_at(grid.center(i, j)));
+        for (int i = 0; i < grid.nx; ++i)
+            h[grid.index(i, j)] = static_cast<float>(terrain.height_at(grid.center(i, j)));
     return h;
 }
 

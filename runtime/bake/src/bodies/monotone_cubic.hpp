@@ -7,14 +7,14 @@
 namespace tidewater::detail {
 
 class MonotoneCubic {
-public:
+  public:
     MonotoneCubic() = default;
     /// `x` strictly increasing, `y` the values there (at least two samples).
     MonotoneCubic(std::vector<double> x, std::vector<double> y);
     /// The interpolant at x, held constant beyond the ends.
     double operator()(double x) const;
 
-private:
+  private:
     std::vector<double> x_, y_, slope_;
 };
 

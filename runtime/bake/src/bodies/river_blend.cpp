@@ -47,7 +47,8 @@ std::vector<float> distance_to_river(const FieldGrid& g, const std::vector<std::
 }  // namespace
 
 void blend_with_still_water(const FieldGrid& g, const std::vector<std::uint8_t>& still, double blend_width,
-                            std::vector<std::uint8_t>& texel, std::vector<float>& river_weight, std::vector<float>& still_weight) {
+                            std::vector<std::uint8_t>& texel, std::vector<float>& river_weight,
+                            std::vector<float>& still_weight) {
     river_weight.assign(g.size(), 0.0f);
     still_weight.assign(g.size(), 0.0f);
     const std::vector<float> d = distance_to_river(g, texel);

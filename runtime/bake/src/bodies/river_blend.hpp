@@ -16,6 +16,7 @@ namespace tidewater::detail {
 /// and in the river). Still texels within the blend become plume texels; river texels
 /// within two texels of still water become mouth texels (their evaluation blends too).
 void blend_with_still_water(const FieldGrid& grid, const std::vector<std::uint8_t>& still, double blend_width,
-                            std::vector<std::uint8_t>& texel, std::vector<float>& river_weight, std::vector<float>& still_weight);
+                            std::vector<std::uint8_t>& texel, std::vector<float>& river_weight,
+                            std::vector<float>& still_weight);
 
 }  // namespace tidewater::detail

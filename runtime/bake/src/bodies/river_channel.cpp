@@ -1,13 +1,14 @@
 #include "bodies/river_channel.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "bodies/monotone_cubic.hpp"
 #include "bodies/river_blend.hpp"
-#include "host_device.h"
 #include "bodies/stream_function.hpp"
+#include "host_device.h"
 
 namespace tidewater::detail {
 
@@ -127,7 +128,8 @@ int mark_islands(const FieldGrid& g, std::vector<FlowCell>& cell, const std::vec
 
 /// Knolls a carve leaves standing: groups of at least kIslandMinimumTexels `standing`
 /// texels ringed by `clear` ones (clear of the banks) and off the grid's edge.
-std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint8_t>& standing, const std::vector<std::uint8_t>& clear) {
+std::vector<std::uint8_t> knolls(const FieldGrid& g, const std::vector<std::uint8_t>& standing,
+                                 const std::vector<std::uint8_t>& clear) {
     std::vector<std::uint8_t> keep(g.size(), 0);
     for_each_group(
         g, [&](std::size_t t) { return standing[t] != 0; }, [&](std::size_t t) { return clear[t] != 0; },
@@ -182,7 +184,8 @@ Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& ri
     }
     const double widest = *std::max_element(width.begin(), width.end());
     reach.resize(width.size());
-    for (std::size_t k = 0; k < width.size(); ++k) reach[k] = width[k] + 2.0 * in.texel;  // half width, banks and their slope
+    for (std::size_t k = 0; k < width.size(); ++k)
+        reach[k] = width[k] + 2.0 * in.texel;  // half width, banks and their slope
     glm::dvec2 lo = line[0], hi = line[0];
     for (const auto& p : line) {
         lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -192,12 +195,14 @@ Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& ri
     FieldGrid& g = river.grid;
     g.texel = in.texel;
     g.corner = lo - glm::dvec2(margin);
-    const double nx = std::ceil((hi.x - lo.x + 2 * margin) / in.texel), nz = std::ceil((hi.y - lo.y + 2 * margin) / in.texel);
+    const double nx = std::ceil((hi.x - lo.x + 2 * margin) / in.texel),
+                 nz = std::ceil((hi.y - lo.y + 2 * margin) / in.texel);
     if (nx > kMaxRiverGrid || nz > kMaxRiverGrid)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("its grid at {:.2f} m texels would be {} x {} (at most {} per side): widen the river or "
-                                 "split it",
-                                 in.texel, nx, nz, kMaxRiverGrid)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("its grid at {:.2f} m texels would be {} x {} (at most {} per side): widen the river or "
+                        "split it",
+                        in.texel, nx, nz, kMaxRiverGrid)};
     g.nx = static_cast<int>(nx);
     g.nz = static_cast<int>(nz);
     return c;
@@ -217,7 +222,9 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
     river.discharge_z.assign(g.size(), 0.0f);
     river.flow_x.assign(g.size(), 0.0f);
     river.flow_z.assign(g.size(), 0.0f);
-    auto has = [&](int i, int j) { return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]); };
+    auto has = [&](int i, int j) {
+        return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]);
+    };
     auto flowing = [&](int i, int j) { return has(i, j) && problem.cell[g.index(i, j)] == FlowCell::wet; };
     auto next_to_land = [&](int i, int j) {
         for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
@@ -280,7 +287,8 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
                 }
                 river.flow_x[t] = static_cast<float>(ux);
                 river.flow_z[t] = static_cast<float>(uz);
-                if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river)) area_sum += static_cast<double>(problem.depth[t]);
+                if (river.texel[t] == static_cast<std::uint8_t>(RiverTexel::river))
+                    area_sum += static_cast<double>(problem.depth[t]);
             }
         }
     return area_sum;
@@ -325,7 +333,8 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
             surface[t] = plume ? river.surface.back() : surface_at(s);
             ground_at[t] = in.terrain->height_at(g.center(i, j));
             // Clear of the banks by a texel: a knoll must be ringed by these.
-            const bool inside = frame.beyond[t] == 0 && !plume && std::abs(n) < 0.5 * at_along(along, width, s) - g.texel;
+            const bool inside =
+                frame.beyond[t] == 0 && !plume && std::abs(n) < 0.5 * at_along(along, width, s) - g.texel;
             clear[t] = inside ? 1 : 0;
             standing[t] = in.carve && inside && ground_at[t] > surface[t] + kIslandFreeboard ? 1 : 0;
         }
@@ -350,7 +359,8 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
                 const double fade = plume ? 1.0 - smoothstep(mouth, mouth + in.plume_length, s) : 1.0;
                 const double hc = at_along(river.along, in.centre_depth, std::min(s, mouth)) * fade;
                 const double x = std::abs(n) / half;
-                const double profile = x <= 1.0 ? eta - hc * carved_depth_fraction(x) : eta + (std::abs(n) - half) * kCarvedBankSlope;
+                const double profile =
+                    x <= 1.0 ? eta - hc * carved_depth_fraction(x) : eta + (std::abs(n) - half) * kCarvedBankSlope;
                 if (profile < ground) {
                     bed = profile;
                     cut->depth[t] = static_cast<float>(in.terrain->shape_height_at(p) - profile);

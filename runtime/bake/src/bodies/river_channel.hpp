@@ -21,11 +21,11 @@ struct Inflow {
 };
 
 struct ChannelInputs {
-    const Terrain* terrain = nullptr;   ///< with the cuts of the rivers baked before
-    double texel = 1.0;                  ///< m
+    const Terrain* terrain = nullptr;  ///< with the cuts of the rivers baked before
+    double texel = 1.0;                ///< m
     bool carve = true;
-    std::vector<double> centre_depth;    ///< carved h_c per sample (bake_profile)
-    double psi_left = 0.0;               ///< psi on the left bank at the source, m^3/s
+    std::vector<double> centre_depth;  ///< carved h_c per sample (bake_profile)
+    double psi_left = 0.0;             ///< psi on the left bank at the source, m^3/s
     std::vector<Inflow> inflows;
     /// Beyond a lake or ocean mouth the current fades out over this length, m (0: none).
     double plume_length = 0.0;
@@ -37,7 +37,6 @@ struct ChannelInputs {
 
 /// psi on the left (+1) or right (-1) bank at `along`.
 double bank_psi(const ChannelInputs& in, double own_discharge, double along, int side);
-
 
 /// Fills `river`'s grid fields from its centreline (bake_profile) and `in`.
 Status bake_channel(const ChannelInputs& in, RiverBake& river);

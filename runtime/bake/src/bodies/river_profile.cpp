@@ -11,7 +11,9 @@ namespace {
 /// Lateral samples of a section (odd: one on the centreline).
 constexpr std::size_t kSectionSamples = 33;
 
-glm::dvec2 left_normal(glm::dvec2 t) { return {-t.y, t.x}; }
+glm::dvec2 left_normal(glm::dvec2 t) {
+    return {-t.y, t.x};
+}
 
 glm::dvec2 tangent_at(const CentrelineSamples& s, std::size_t k) {
     const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, s.points.size() - 1);
@@ -104,7 +106,8 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
         if (std::isnan(in.mouth_level)) return;
         const double end = samples.along.back();
         for (std::size_t k = 0; k < n; ++k)
-            profile[k] = std::max(in.mouth_level, std::min(profile[k], in.mouth_level + kMouthRampSlope * (end - samples.along[k])));
+            profile[k] = std::max(in.mouth_level,
+                                  std::min(profile[k], in.mouth_level + kMouthRampSlope * (end - samples.along[k])));
     };
     auto slope_of = [&](const std::vector<double>& profile, std::size_t k) {
         // Over about two widths each way: a local dip in the terrain is not a weir.
@@ -128,7 +131,9 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
                     const double x = std::abs(2.0 * static_cast<double>(j) / (kSectionSamples - 1.0) - 1.0);
                     carved[j] = std::min(section[k][j], surface[k] - hc * carved_depth_fraction(x, 2.0 * in.texel / w));
                 }
-                return manning_discharge(carved.data(), static_cast<int>(kSectionSamples), dn, surface[k], slope[k], in.manning) - in.discharge[k];
+                return manning_discharge(carved.data(), static_cast<int>(kSectionSamples), dn, surface[k], slope[k],
+                                         in.manning) -
+                       in.discharge[k];
             };
             centre_depth[k] = increasing_root(shape, 1e-3, 500.0);
             shape(centre_depth[k]);
@@ -140,7 +145,9 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
             const double dn = samples.width[k] / (kSectionSamples - 1.0);
             surface[k] = increasing_root(
                 [&](double eta) {
-                    return manning_discharge(section[k].data(), static_cast<int>(kSectionSamples), dn, eta, slope[k], in.manning) - in.discharge[k];
+                    return manning_discharge(section[k].data(), static_cast<int>(kSectionSamples), dn, eta, slope[k],
+                                             in.manning) -
+                           in.discharge[k];
                 },
                 bed[k], bed[k] + 500.0);
         }

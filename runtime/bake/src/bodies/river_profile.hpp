@@ -53,10 +53,10 @@ CentrelineSamples resample_centreline(const std::vector<glm::dvec2>& path, const
 struct ProfileInputs {
     const Terrain* terrain = nullptr;
     bool carve = true;
-    double texel = 1.0;                  ///< m, of the grid that will hold the channel
+    double texel = 1.0;  ///< m, of the grid that will hold the channel
     double manning = 0.035;
-    double mouth_level = 0.0;            ///< NaN: no level to meet
-    std::vector<double> discharge;       ///< Q at each sample, m^3/s
+    double mouth_level = 0.0;       ///< NaN: no level to meet
+    std::vector<double> discharge;  ///< Q at each sample, m^3/s
 };
 
 /// The river's surface, bed, slope and centre depth per sample (fills `river`'s

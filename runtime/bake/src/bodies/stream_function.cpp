@@ -1,10 +1,11 @@
 #include "bodies/stream_function.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace tidewater::detail {
 
@@ -123,14 +124,19 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
     solver.compute(matrix);
     if (solver.info() != Eigen::Success)
-        return Error{ErrorCode::internal, fmt::format("the stream function's system ({} unknowns) could not be factorised", total)};
+        return Error{ErrorCode::internal,
+                     fmt::format("the stream function's system ({} unknowns) could not be factorised", total)};
     const Eigen::VectorXd x = solver.solve(rhs);
     if (solver.info() != Eigen::Success)
-        return Error{ErrorCode::internal, fmt::format("the stream function's system ({} unknowns) could not be solved", total)};
+        return Error{ErrorCode::internal,
+                     fmt::format("the stream function's system ({} unknowns) could not be solved", total)};
     for (std::size_t t = 0; t < g.size(); ++t) {
-        if (unknown[t] >= 0) out.psi[t] = x[unknown[t]];
-        else if (p.cell[t] == FlowCell::bank) out.psi[t] = p.bank_value[t];
-        else if (p.cell[t] == FlowCell::island) out.psi[t] = x[count + p.island_of[t]];
+        if (unknown[t] >= 0)
+            out.psi[t] = x[unknown[t]];
+        else if (p.cell[t] == FlowCell::bank)
+            out.psi[t] = p.bank_value[t];
+        else if (p.cell[t] == FlowCell::island)
+            out.psi[t] = x[count + p.island_of[t]];
     }
     return out;
 }

@@ -33,8 +33,8 @@ struct StreamProblem {
 };
 
 struct StreamSolution {
-    std::vector<double> psi;            ///< every texel: wet solved, bank fixed, island its constant, else NaN
-    std::size_t unknowns = 0;           ///< wet texels solved for, plus one per island
+    std::vector<double> psi;   ///< every texel: wet solved, bank fixed, island its constant, else NaN
+    std::size_t unknowns = 0;  ///< wet texels solved for, plus one per island
 };
 
 /// Solves for psi. Wet texels no bank or island reaches (a pool cut off at an end) keep

@@ -1,12 +1,14 @@
 // Lakes first (their extents are what rivers run into), then the rivers from the
 // last receiver up: a tributary meets the surface of the river it joins.
+#include "tidewater/detail/water_bodies_bake.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "bodies/lake_extent.hpp"
 #include "bodies/river_channel.hpp"
-#include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater::detail {
 
@@ -22,7 +24,9 @@ Error named(const std::string& where, Error e) {
     return e;
 }
 
-std::string river_path(const Scene& scene, std::size_t r) { return fmt::format("scene \"{}\" /rivers/{}", scene.name, r); }
+std::string river_path(const Scene& scene, std::size_t r) {
+    return fmt::format("scene \"{}\" /rivers/{}", scene.name, r);
+}
 
 /// Distance from p to the polyline and the distance along it of the nearest point.
 double distance_to_line(const std::vector<glm::dvec2>& line, const std::vector<double>& along, glm::dvec2 p,
@@ -48,9 +52,9 @@ struct RiverPlan {
     CentrelineSamples samples;  // truncated at the mouth
     RiverEnd end = RiverEnd::domain_edge;
     int receiver = -1;
-    double joins_at = 0.0;      // along the receiving river
-    int side = 0;               // the receiving river's bank it enters from
-    double total = 0.0;         // discharge below all tributaries
+    double joins_at = 0.0;  // along the receiving river
+    int side = 0;           // the receiving river's bank it enters from
+    double total = 0.0;     // discharge below all tributaries
 };
 
 Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& ground, const BodiesBakeOptions& options) {
@@ -63,7 +67,8 @@ Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& grou
     grid.corner = ground.extent_center() - glm::dvec2(half);
     const std::vector<float> heights = sample_terrain(ground, grid);
     for (std::size_t i = 0; i < scene.lakes.size(); ++i) {
-        auto lake = find_lake_extent(scene.lakes[i], grid, heights, fmt::format("scene \"{}\" /lakes/{}", scene.name, i));
+        auto lake =
+            find_lake_extent(scene.lakes[i], grid, heights, fmt::format("scene \"{}\" /lakes/{}", scene.name, i));
         if (!lake) return lake.error();
         lakes.push_back(std::move(lake).value());
     }
@@ -77,17 +82,18 @@ Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& grou
                     int bi = 0, bj = 0;
                     lb.grid.texel_of(p, bi, bj);
                     if (lb.inside[lb.grid.index(bi, bj)])
-                        return Error{ErrorCode::invalid_argument,
-                                     fmt::format("scene \"{}\" /lakes/{}: lake \"{}\" overlaps lake \"{}\" at [{:.1f}, {:.1f}]",
-                                                 scene.name, b, lb.name, la.name, p.x, p.y)};
+                        return Error{
+                            ErrorCode::invalid_argument,
+                            fmt::format("scene \"{}\" /lakes/{}: lake \"{}\" overlaps lake \"{}\" at [{:.1f}, {:.1f}]",
+                                        scene.name, b, lb.name, la.name, p.x, p.y)};
                 }
         }
     return lakes;
 }
 
 /// Walks each river to where it first meets a lake, the ocean or another river.
-Status plan_mouth(const Scene& scene, const Terrain& terrain, const std::vector<LakeBake>& lakes, const std::vector<CentrelineSamples>& raw,
-                  std::size_t r, RiverPlan& plan) {
+Status plan_mouth(const Scene& scene, const Terrain& terrain, const std::vector<LakeBake>& lakes,
+                  const std::vector<CentrelineSamples>& raw, std::size_t r, RiverPlan& plan) {
     const SceneRiver& river = scene.rivers[r];
     const CentrelineSamples& s = raw[r];
     // Whether river a's mouth lies within river b's channel.
@@ -139,10 +145,11 @@ Status plan_mouth(const Scene& scene, const Terrain& terrain, const std::vector<
     const double half = terrain.extent_half_size();
     const double slack = std::max(s.width.back(), 0.01 * half);
     if (std::max(std::abs(e.x - c.x), std::abs(e.y - c.y)) < half - slack)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}/path: the river \"{}\" ends on land at [{:.1f}, {:.1f}]; a river ends in a lake, the "
-                                 "ocean, another river or at the domain edge",
-                                 river_path(scene, r), river.name, e.x, e.y)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("{}/path: the river \"{}\" ends on land at [{:.1f}, {:.1f}]; a river ends in a lake, the "
+                        "ocean, another river or at the domain edge",
+                        river_path(scene, r), river.name, e.x, e.y)};
     plan.samples = s;
     plan.end = RiverEnd::domain_edge;
     return {};
@@ -161,9 +168,10 @@ Result<std::vector<std::size_t>> bake_order(const Scene& scene, const std::vecto
             order.push_back(r);
         }
         if (order.size() == before) {
-            const std::size_t r = static_cast<std::size_t>(std::find(placed.begin(), placed.end(), false) - placed.begin());
-            return Error{ErrorCode::invalid_argument,
-                         fmt::format("{}: the river \"{}\" runs into a loop of rivers", river_path(scene, r), scene.rivers[r].name)};
+            const std::size_t r =
+                static_cast<std::size_t>(std::find(placed.begin(), placed.end(), false) - placed.begin());
+            return Error{ErrorCode::invalid_argument, fmt::format("{}: the river \"{}\" runs into a loop of rivers",
+                                                                  river_path(scene, r), scene.rivers[r].name)};
         }
     }
     return order;
@@ -184,14 +192,17 @@ Result<RiverPlans> plan_rivers(const Scene& scene, const Terrain& uncut, const s
         const auto& w = scene.rivers[r].width;
         const double spacing = 0.25 * *std::min_element(w.begin(), w.end());
         double length = 0.0;
-        for (std::size_t k = 0; k + 1 < path.size(); ++k) length += std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
+        for (std::size_t k = 0; k + 1 < path.size(); ++k)
+            length += std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
         // Samples every quarter of the narrowest width: a very long, very narrow river would
         // need more than memory allows, and its grid could not hold it anyway.
         if (length / spacing > kMaxCentrelineSamples)
-            return Error{ErrorCode::invalid_argument,
-                         fmt::format("{}/path: the river \"{}\" is {:.0f} m long and {} m wide at its narrowest: at most "
-                                     "{:.0f} widths long allowed",
-                                     river_path(scene, r), scene.rivers[r].name, length, 4.0 * spacing, kMaxCentrelineSamples / 4.0)};
+            return Error{
+                ErrorCode::invalid_argument,
+                fmt::format("{}/path: the river \"{}\" is {:.0f} m long and {} m wide at its narrowest: at most "
+                            "{:.0f} widths long allowed",
+                            river_path(scene, r), scene.rivers[r].name, length, 4.0 * spacing,
+                            kMaxCentrelineSamples / 4.0)};
         raw[r] = resample_centreline(path, w, spacing);
     }
     RiverPlans out;
@@ -204,12 +215,14 @@ Result<RiverPlans> plan_rivers(const Scene& scene, const Terrain& uncut, const s
     // Discharges add downstream: tributaries (later in the order) first.
     for (std::size_t r = 0; r < count; ++r) out.plans[r].total = scene.rivers[r].discharge;
     for (auto it = out.order.rbegin(); it != out.order.rend(); ++it)
-        if (out.plans[*it].end == RiverEnd::river) out.plans[static_cast<std::size_t>(out.plans[*it].receiver)].total += out.plans[*it].total;
+        if (out.plans[*it].end == RiverEnd::river)
+            out.plans[static_cast<std::size_t>(out.plans[*it].receiver)].total += out.plans[*it].total;
     return out;
 }
 
 /// Everything a river's bake depends on, for reuse after an edit.
-RiverBakeKey river_key(const SceneRiver& river, const RiverPlan& plan, const ChannelInputs& in, double mouth_level, bool still_mouth) {
+RiverBakeKey river_key(const SceneRiver& river, const RiverPlan& plan, const ChannelInputs& in, double mouth_level,
+                       bool still_mouth) {
     RiverBakeKey key;
     key.path = river.path;
     key.width = river.width;
@@ -226,7 +239,8 @@ RiverBakeKey river_key(const SceneRiver& river, const RiverPlan& plan, const Cha
     key.psi_left = in.psi_left;
     key.plume_length = still_mouth ? kPlumeWidths * plan.samples.width.back() : 0.0;
     key.side = plan.side;
-    for (const Inflow& f : in.inflows) key.inflows.push_back({f.along, f.width, f.discharge, static_cast<double>(f.side)});
+    for (const Inflow& f : in.inflows)
+        key.inflows.push_back({f.along, f.width, f.discharge, static_cast<double>(f.side)});
     return key;
 }
 
@@ -241,10 +255,12 @@ bool unchanged_river(const RiverBake& old, const SceneRiver& river, const RiverB
     RiverBakeKey a = old.key, b = key;
     if (std::isnan(a.mouth_level) && std::isnan(b.mouth_level)) a.mouth_level = b.mouth_level = 0.0;
     const auto receiver = static_cast<std::size_t>(plan.receiver);
-    const bool same_receiver = plan.end != RiverEnd::lake || (receiver < previous.lakes.size() &&
-                                                              previous.lakes[receiver].inside == lakes[receiver].inside &&
-                                                              previous.lakes[receiver].grid.corner == lakes[receiver].grid.corner);
-    return old.name == river.name && a == b && same_receiver && old.baked_over == cuts_under(cuts, old.grid) && same_ground(old.grid);
+    const bool same_receiver =
+        plan.end != RiverEnd::lake ||
+        (receiver < previous.lakes.size() && previous.lakes[receiver].inside == lakes[receiver].inside &&
+         previous.lakes[receiver].grid.corner == lakes[receiver].grid.corner);
+    return old.name == river.name && a == b && same_receiver && old.baked_over == cuts_under(cuts, old.grid) &&
+           same_ground(old.grid);
 }
 
 }  // namespace
@@ -258,13 +274,15 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
     // Lakes are found again (a pass over the lake grid); the previous bake's rivers are
     // reused only over the same grids, where the ground under them is unchanged.
     const WaterBodiesBake* previous = options.previous;
-    if (previous && (previous->lake_resolution != options.lake_resolution || previous->texels_across != options.texels_across))
+    if (previous &&
+        (previous->lake_resolution != options.lake_resolution || previous->texels_across != options.texels_across))
         previous = nullptr;
     const Terrain previous_shape = previous ? previous->terrain.with_cuts({}) : Terrain();
     auto same_ground = [&](const FieldGrid& g) {
         for (int j = 0; j < g.nz; ++j)
             for (int i = 0; i < g.nx; ++i)
-                if (uncut.shape_height_at(g.center(i, j)) != previous_shape.shape_height_at(g.center(i, j))) return false;
+                if (uncut.shape_height_at(g.center(i, j)) != previous_shape.shape_height_at(g.center(i, j)))
+                    return false;
         return true;
     };
     auto lakes = find_lakes(scene, uncut, options);
@@ -306,8 +324,12 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
         profile.manning = river.manning;
         profile.mouth_level = std::nan("");
         switch (plan.end) {
-            case RiverEnd::ocean: profile.mouth_level = scene.water_level(); break;
-            case RiverEnd::lake: profile.mouth_level = out.lakes[static_cast<std::size_t>(plan.receiver)].level; break;
+            case RiverEnd::ocean:
+                profile.mouth_level = scene.water_level();
+                break;
+            case RiverEnd::lake:
+                profile.mouth_level = out.lakes[static_cast<std::size_t>(plan.receiver)].level;
+                break;
             case RiverEnd::river: {
                 const RiverBake& main = out.rivers[static_cast<std::size_t>(plan.receiver)];
                 const double at = plan.joins_at;
@@ -320,7 +342,8 @@ Result<WaterBodiesBake> bake_water_bodies(const Scene& scene, const BodiesBakeOp
                 in.receiver_river = &main;
                 break;
             }
-            case RiverEnd::domain_edge: break;
+            case RiverEnd::domain_edge:
+                break;
         }
         bake.mouth_level = profile.mouth_level;
         const bool still_mouth = plan.end == RiverEnd::lake || plan.end == RiverEnd::ocean;

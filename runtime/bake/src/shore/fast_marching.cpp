@@ -70,7 +70,8 @@ void fast_march(const std::vector<double>& slowness, std::vector<double>& value,
             }
         }
         // One axis only: the nearer arrival plus a step.
-        const double t1 = std::min(std::min(known_at(i - 1, j), known_at(i + 1, j)), std::min(known_at(i, j - 1), known_at(i, j + 1)));
+        const double t1 = std::min(std::min(known_at(i - 1, j), known_at(i + 1, j)),
+                                   std::min(known_at(i, j - 1), known_at(i, j + 1)));
         return t1 + std::sqrt(f2);
     };
     auto relax_neighbours = [&](int i, int j) {
@@ -78,7 +79,8 @@ void fast_march(const std::vector<double>& slowness, std::vector<double>& value,
         for (int d = 0; d < 4; ++d) {
             const int a = i + di[d], b = j + dj[d];
             if (a < 0 || b < 0 || a >= n || b >= n) continue;
-            const std::size_t k = static_cast<std::size_t>(b) * static_cast<std::size_t>(n) + static_cast<std::size_t>(a);
+            const std::size_t k =
+                static_cast<std::size_t>(b) * static_cast<std::size_t>(n) + static_cast<std::size_t>(a);
             if (state[k] == kKnown || slowness[k] <= 0.0) continue;
             const double t = solve(a, b);
             if (t < value[k]) {
@@ -90,13 +92,16 @@ void fast_march(const std::vector<double>& slowness, std::vector<double>& value,
     };
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            if (state[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] == kKnown) relax_neighbours(i, j);
+            if (state[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] ==
+                kKnown)
+                relax_neighbours(i, j);
     while (!heap.empty()) {
         const auto [t, k] = heap.top();
         heap.pop();
         if (state[k] == kKnown || t > value[k]) continue;
         state[k] = kKnown;
-        relax_neighbours(static_cast<int>(k % static_cast<std::size_t>(n)), static_cast<int>(k / static_cast<std::size_t>(n)));
+        relax_neighbours(static_cast<int>(k % static_cast<std::size_t>(n)),
+                         static_cast<int>(k / static_cast<std::size_t>(n)));
     }
 }
 

@@ -2,11 +2,12 @@
 // from the shoreline's distance field, by fast marching per wave.
 #include "tidewater/detail/shore_waves_bake.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <mutex>
 #include <span>
@@ -25,7 +26,6 @@ namespace {
 constexpr double kDeepKh = kPi;
 constexpr double kMaxFold = 0.95;
 
-
 /// The model's own grid from a shoreline baked at another resolution: depth from the
 /// terrain at this grid's texel centres; distance and gradient sampled from `shoreline`,
 /// the distance signed by the texel's own depth so that it agrees with `depth`.
@@ -38,7 +38,8 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
     g.corner = terrain.extent_center() - glm::dvec2(half);
     if (std::abs(shoreline.texel * shoreline.resolution - 2.0 * half) > 1e-6 * half ||
         glm::length(shoreline.corner - g.corner) > 1e-6 * half)
-        return Error{ErrorCode::invalid_argument, "shore waves: the shoreline field covers another extent than the terrain"};
+        return Error{ErrorCode::invalid_argument,
+                     "shore waves: the shoreline field covers another extent than the terrain"};
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     g.depth.resize(count);
     g.signed_distance.resize(count);
@@ -53,7 +54,8 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
             const double depth = water_level - terrain.height_at(p);
             if (!std::isfinite(depth)) finite = false;
             g.depth[k] = static_cast<float>(depth);
-            g.signed_distance[k] = static_cast<float>(std::copysign(std::abs(shoreline.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+            g.signed_distance[k] =
+                static_cast<float>(std::copysign(std::abs(shoreline.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
             glm::dvec2 grad{shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)};
             const double len = glm::length(grad);
             grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
@@ -61,18 +63,23 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
             g.gradient_z[k] = static_cast<float>(grad.y);
         }
     });
-    if (!finite) return Error{ErrorCode::invalid_argument, "shore waves: the terrain height is not finite somewhere on the model grid"};
+    if (!finite)
+        return Error{ErrorCode::invalid_argument,
+                     "shore waves: the terrain height is not finite somewhere on the model grid"};
     return g;
 }
 
-Error cancelled() { return Error{ErrorCode::cancelled, "shore waves: cancelled"}; }
+Error cancelled() {
+    return Error{ErrorCode::cancelled, "shore waves: cancelled"};
+}
 
 /// The model's grid: the shoreline baked elsewhere (resampled to the model's resolution
 /// where it differs), or baked here over `options.region` with progress 0..`share`.
-Result<ShoreField> model_grid(const Terrain& terrain, double water_level, const ShoreWaveOptions& options, const ShoreField* shoreline,
-                              double share) {
+Result<ShoreField> model_grid(const Terrain& terrain, double water_level, const ShoreWaveOptions& options,
+                              const ShoreField* shoreline, double share) {
     if (shoreline && options.region)
-        return Error{ErrorCode::invalid_argument, "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
+        return Error{ErrorCode::invalid_argument,
+                     "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
     if (shoreline && shoreline->resolution == options.resolution) return *shoreline;
     if (shoreline) return resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
     BakeOptions bake;
@@ -118,8 +125,8 @@ MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
         for (int i = 0; i < n; ++i) {
             const std::size_t k = field.index(i, j);
             if (m.slowness[k] <= 0.0) continue;
-            const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) || (j == 0 && dir.y > 0.05) ||
-                                    (j == n - 1 && dir.y < -0.05);
+            const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) ||
+                                    (j == 0 && dir.y > 0.05) || (j == n - 1 && dir.y < -0.05);
             if (m.any_deep ? m.deep[k] != 0 : entry_edge) m.phase[k] = k0 * glm::dot(dir, field.texel_center(i, j));
         }
     }
@@ -209,10 +216,12 @@ void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveF
         const double ratio = total > 0.0 ? total / cap : 0.0;
         f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
         if (ratio > 1.0)
-            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
+            for (std::size_t w = 0; w < nw; ++w)
+                f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
         double fold = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-            const double kl = std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
+            const double kl =
+                std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
             fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
         }
         if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
@@ -221,10 +230,12 @@ void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveF
 
 }  // namespace
 
-Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain, double water_level,
-                                                           const ShoreWaveOptions& options, const ShoreField* shoreline) {
+Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain,
+                                                           double water_level, const ShoreWaveOptions& options,
+                                                           const ShoreField* shoreline) {
     if (options.resolution < 16 || options.resolution > 4096)
-        return Error{ErrorCode::invalid_argument, fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
     if (!(options.breaking_index > 0.0 && options.breaking_index <= 1.2))
         return Error{ErrorCode::invalid_argument, "shore waves: breaking_index must be in (0, 1.2]"};
     try {

@@ -1,8 +1,9 @@
 #include "contour.hpp"
-#include "tidewater/detail/parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
+
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater::detail {
 
@@ -35,8 +36,9 @@ void row_segments(const std::vector<double>& v, int n, int j, std::vector<Segmen
         if (l00 == l10 && l10 == l11 && l11 == l01) continue;
         const glm::dvec2 p00(i, j), p10(i + 1, j), p11(i + 1, j + 1), p01(i, j + 1);
         const bool present[4] = {l00 != l10, l10 != l11, l01 != l11, l00 != l01};
-        const glm::dvec2 point[4] = {present[0] ? cross(p00, p10, c00, c10) : p00, present[1] ? cross(p10, p11, c10, c11) : p10,
-                                     present[2] ? cross(p01, p11, c01, c11) : p01, present[3] ? cross(p00, p01, c00, c01) : p00};
+        const glm::dvec2 point[4] = {
+            present[0] ? cross(p00, p10, c00, c10) : p00, present[1] ? cross(p10, p11, c10, c11) : p10,
+            present[2] ? cross(p01, p11, c01, c11) : p01, present[3] ? cross(p00, p01, c00, c01) : p00};
         int pairs[2][2];
         int count = 0;
         if (int(present[0]) + int(present[1]) + int(present[2]) + int(present[3]) == 2) {
@@ -76,7 +78,8 @@ std::vector<ContourChain> extract_contours(const std::vector<double>& values, in
     // Rows of cells are independent: find their segments in parallel.
     const int cell_rows = n - 1;
     std::vector<std::vector<Segment>> rows(static_cast<std::size_t>(std::max(cell_rows, 0)));
-    parallel_for_each(rows.size(), threads, [&](std::size_t j) { row_segments(values, n, static_cast<int>(j), rows[j]); });
+    parallel_for_each(rows.size(), threads,
+                      [&](std::size_t j) { row_segments(values, n, static_cast<int>(j), rows[j]); });
 
     std::vector<Segment> segments;
     std::vector<std::size_t> row_start(rows.size() + 1, 0);

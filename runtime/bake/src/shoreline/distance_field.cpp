@@ -9,14 +9,14 @@
 // per texel, several times faster: the tree is walked from its root once per root block.
 // The sign is the texel's side of the water level, so it always agrees with the depth.
 #include "distance_field.hpp"
-#include "tidewater/detail/parallel.hpp"
-#include <mutex>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-
+#include <mutex>
 #include <xsimd/xsimd.hpp>
+
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater::detail {
 
@@ -36,9 +36,7 @@ struct Candidates {
 
     std::size_t size() const { return id.size(); }
 
-    void clear() {
-        id.clear(), ax.clear(), ay.clear(), ex.clear(), ey.clear(), inv_len2.clear();
-    }
+    void clear() { id.clear(), ax.clear(), ay.clear(), ex.clear(), ey.clear(), inv_len2.clear(); }
     void push(std::uint32_t s, double x, double y, double dx, double dy, double inv) {
         id.push_back(s), ax.push_back(x), ay.push_back(y), ex.push_back(dx), ey.push_back(dy), inv_len2.push_back(inv);
     }
@@ -66,7 +64,8 @@ struct Candidates {
         for (std::size_t k = 0; k < n; k += kLanes) {
             const Batch dx0 = px - Batch::load_unaligned(&ax[k]), dy0 = py - Batch::load_unaligned(&ay[k]);
             const Batch vx = Batch::load_unaligned(&ex[k]), vy = Batch::load_unaligned(&ey[k]);
-            const Batch t = xsimd::min(xsimd::max((dx0 * vx + dy0 * vy) * Batch::load_unaligned(&inv_len2[k]), zero), one);
+            const Batch t =
+                xsimd::min(xsimd::max((dx0 * vx + dy0 * vy) * Batch::load_unaligned(&inv_len2[k]), zero), one);
             const Batch dx = dx0 - t * vx, dy = dy0 - t * vy;
             (dx * dx + dy * dy).store_unaligned(&out[k]);
         }
@@ -85,7 +84,7 @@ struct Block {
 };
 
 class BlockFiller {
-public:
+  public:
     BlockFiller(const ShoreDistance& distance, ShoreField& field) : distance_(distance), field_(field) {}
 
     void fill_root(const Block& b, Workspace& w, ShoreDistance::Hit& hint, bool& have_hint) const {
@@ -106,7 +105,7 @@ public:
         fill(b, 0, w);
     }
 
-private:
+  private:
     std::pair<glm::dvec2, double> bounds(const Block& b) const {
         const glm::dvec2 lo = field_.texel_center(b.i0, b.j0), hi = field_.texel_center(b.i1 - 1, b.j1 - 1);
         return {0.5 * (lo + hi), 0.5 * std::hypot(hi.x - lo.x, hi.y - lo.y)};
@@ -120,7 +119,8 @@ private:
             return;
         }
         const int im = (b.i0 + b.i1) / 2, jm = (b.j0 + b.j1) / 2;
-        const Block quadrants[4] = {{b.i0, b.j0, im, jm}, {im, b.j0, b.i1, jm}, {b.i0, jm, im, b.j1}, {im, jm, b.i1, b.j1}};
+        const Block quadrants[4] = {
+            {b.i0, b.j0, im, jm}, {im, b.j0, b.i1, jm}, {b.i0, jm, im, b.j1}, {im, jm, b.i1, b.j1}};
         if (w.levels.size() <= level + 1) w.levels.resize(level + 2);
         for (const Block& q : quadrants) {
             if (q.i0 >= q.i1 || q.j0 >= q.j1) continue;
@@ -174,7 +174,8 @@ void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsig
         ShoreDistance::Hit hint;
         bool have_hint = false;
         const int j0 = static_cast<int>(row) * kRootBlock, j1 = std::min(n, j0 + kRootBlock);
-        for (int i0 = 0; i0 < n; i0 += kRootBlock) filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), j1}, w, hint, have_hint);
+        for (int i0 = 0; i0 < n; i0 += kRootBlock)
+            filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), j1}, w, hint, have_hint);
         const int rows = ++done;
         if (progress) {
             const std::lock_guard<std::mutex> lock(progress_lock);

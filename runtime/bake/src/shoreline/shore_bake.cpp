@@ -1,17 +1,18 @@
 #include "tidewater/detail/shore_bake.hpp"
-#include "tidewater/detail/grid_taps.hpp"
-#include "tidewater/detail/reference.hpp"
-#include "tidewater/detail/parallel.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "contour.hpp"
 #include "distance_field.hpp"
 #include "shore_geometry.hpp"
+#include "tidewater/detail/grid_taps.hpp"
+#include "tidewater/detail/parallel.hpp"
+#include "tidewater/detail/reference.hpp"
 
 namespace tidewater {
 
@@ -23,12 +24,13 @@ constexpr std::size_t kMaxShoreLines = 200'000;
 
 template <typename RowWork>
 void parallel_rows(int rows, unsigned threads, const RowWork& work) {
-    detail::parallel_for_each(static_cast<std::size_t>(rows), threads, [&](std::size_t j) { work(static_cast<int>(j)); });
+    detail::parallel_for_each(static_cast<std::size_t>(rows), threads,
+                              [&](std::size_t j) { work(static_cast<int>(j)); });
 }
 
 /// Seconds since the last call (or construction): one stage of the bake.
 class StageClock {
-public:
+  public:
     double lap() {
         const auto now = std::chrono::steady_clock::now();
         const double s = std::chrono::duration<double>(now - last_).count();
@@ -36,7 +38,7 @@ public:
         return s;
     }
 
-private:
+  private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
@@ -49,7 +51,8 @@ double ShoreField::sample(const std::vector<float>& grid, glm::dvec2 p) const {
 
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options) {
     if (options.resolution < 8 || options.resolution > 8192) {
-        return Error{ErrorCode::invalid_argument, fmt::format("bake: resolution {} is out of range (8 to 8192)", options.resolution)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: resolution {} is out of range (8 to 8192)", options.resolution)};
     }
     if (!std::isfinite(water_level)) return Error{ErrorCode::invalid_argument, "bake: the water level is not finite"};
     if (!std::isfinite(options.simplify_tolerance) || options.simplify_tolerance < 0.0) {
@@ -66,7 +69,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.resolution = n;
     if (options.region && !(options.region->half_size > 0.0 && std::isfinite(options.region->half_size) &&
                             std::isfinite(options.region->center.x) && std::isfinite(options.region->center.y)))
-        return Error{ErrorCode::invalid_argument, "bake: the region must have a finite centre and a finite half-size > 0"};
+        return Error{ErrorCode::invalid_argument,
+                     "bake: the region must have a finite centre and a finite half-size > 0"};
     const double half = options.region ? options.region->half_size : terrain.extent_half_size();
     field.texel = 2.0 * half / n;
     field.corner = (options.region ? options.region->center : terrain.extent_center()) - glm::dvec2(half);
@@ -89,7 +93,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     });
     if (!finite) {
         const auto k = bad_index.load();
-        const glm::dvec2 p = field.texel_center(static_cast<int>(k % static_cast<std::size_t>(n)), static_cast<int>(k / static_cast<std::size_t>(n)));
+        const glm::dvec2 p = field.texel_center(static_cast<int>(k % static_cast<std::size_t>(n)),
+                                                static_cast<int>(k / static_cast<std::size_t>(n)));
         return Error{ErrorCode::invalid_argument,
                      fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
     }
@@ -111,10 +116,12 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     });
     const std::size_t mixed_limit = std::max<std::size_t>(50'000, count / 8);
     if (mixed > mixed_limit) {
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
-                                 "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the resolution",
-                                 mixed.load(), count, mixed_limit)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format(
+                "bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
+                "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the resolution",
+                mixed.load(), count, mixed_limit)};
     }
     field.timings.heights = clock.lap();
     // The contour at the water level, in world units.
@@ -122,10 +129,11 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     std::size_t raw_segments = 0;
     for (const auto& c : chains) raw_segments += c.points.size();
     if (raw_segments > kMaxShoreSegments || chains.size() > kMaxShoreLines) {
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("bake: the shoreline has {} pieces and {} segments at this resolution (at most {} and {}): "
-                                 "the terrain is too noisy at the water level; smooth it or lower the resolution",
-                                 chains.size(), raw_segments, kMaxShoreLines, kMaxShoreSegments)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("bake: the shoreline has {} pieces and {} segments at this resolution (at most {} and {}): "
+                        "the terrain is too noisy at the water level; smooth it or lower the resolution",
+                        chains.size(), raw_segments, kMaxShoreLines, kMaxShoreSegments)};
     }
     std::vector<ShoreLine> lines;
     lines.reserve(chains.size());
@@ -160,7 +168,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         report(1.0);
         return field;
     }
-    detail::fill_distance_field(*distance, field, threads, [&](double f) { report(0.3 + 0.7 * f); }, options.cancel);
+    detail::fill_distance_field(
+        *distance, field, threads, [&](double f) { report(0.3 + 0.7 * f); }, options.cancel);
     if (options.cancel.stop_requested()) return cancelled();
     field.timings.distance = clock.lap();
     report(1.0);

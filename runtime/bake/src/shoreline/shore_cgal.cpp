@@ -1,7 +1,6 @@
 // Everything that includes CGAL lives in this file: the shoreline's polygons with
 // holes and the AABB tree for exact distances.
 #include <CGAL/AABB_segment_primitive.h>
-#include "tidewater/detail/parallel.hpp"
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -9,14 +8,14 @@
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include <boost/iterator/function_output_iterator.hpp>
-
 #include <algorithm>
 #include <atomic>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <cmath>
 
 #include "shore_geometry.hpp"
 #include "simplify_line.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater::detail {
 
@@ -39,7 +38,8 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K3, Primitive>>;
 ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads) {
     ClassifiedShore shore;
     // The lines are independent: simplify them in parallel.
-    detail::parallel_for_each(lines.size(), threads, [&](std::size_t k) { lines[k].points = simplify_line(lines[k], tolerance); });
+    detail::parallel_for_each(lines.size(), threads,
+                              [&](std::size_t k) { lines[k].points = simplify_line(lines[k], tolerance); });
     std::vector<Polygon> outers, holes;
     for (ShoreLine& line : lines) {
         if (line.closed && line.points.size() >= 3) {
@@ -88,8 +88,12 @@ struct ShoreDistance::Impl {
 ShoreDistance::ShoreDistance(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 ShoreDistance::~ShoreDistance() = default;
 
-std::size_t ShoreDistance::segment_count() const { return impl_->segments.size(); }
-const ShoreDistance::Segment& ShoreDistance::segment(std::size_t s) const { return impl_->flat[s]; }
+std::size_t ShoreDistance::segment_count() const {
+    return impl_->segments.size();
+}
+const ShoreDistance::Segment& ShoreDistance::segment(std::size_t s) const {
+    return impl_->flat[s];
+}
 
 std::unique_ptr<ShoreDistance> ShoreDistance::build(const std::vector<ShoreLine>& lines) {
     auto impl = std::make_unique<Impl>();
@@ -123,11 +127,10 @@ ShoreDistance::Hit ShoreDistance::query(glm::dvec2 p, const Hit* hint) const {
     const Impl& m = *impl_;
     const K3::Point_3 q(p.x, p.y, 0.0);
     // The hint is a (point, primitive) pair: CGAL returns its primitive when nothing is closer.
-    const auto result =
-        hint ? m.tree.closest_point_and_primitive(
-                   q, std::make_pair(K3::Point_3(hint->closest.x, hint->closest.y, 0.0),
-                                     m.segments.cbegin() + static_cast<std::ptrdiff_t>(hint->segment)))
-             : m.tree.closest_point_and_primitive(q);
+    const auto result = hint ? m.tree.closest_point_and_primitive(
+                                   q, std::make_pair(K3::Point_3(hint->closest.x, hint->closest.y, 0.0),
+                                                     m.segments.cbegin() + static_cast<std::ptrdiff_t>(hint->segment)))
+                             : m.tree.closest_point_and_primitive(q);
     return hit_on(p, static_cast<std::size_t>(result.second - m.segments.cbegin()));
 }
 
@@ -139,14 +142,15 @@ void ShoreDistance::segments_within(glm::dvec2 p, double radius, std::vector<std
     const CGAL::Bbox_3 box(p.x - radius, p.y - radius, -1.0, p.x + radius, p.y + radius, 1.0);
     const auto first = m.segments.cbegin();
     const double r2 = radius * radius;
-    m.tree.all_intersected_primitives(box, boost::make_function_output_iterator([&](SegmentIterator s) {
-        const auto k = static_cast<std::size_t>(s - first);
-        const glm::dvec2 a = m.flat[k].a, ab = m.flat[k].b - a;
-        const double len2 = ab.x * ab.x + ab.y * ab.y;
-        const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2, 0.0, 1.0) : 0.0;
-        const glm::dvec2 d = p - (a + t * ab);
-        if (d.x * d.x + d.y * d.y <= r2) out.push_back(static_cast<std::uint32_t>(k));
-    }));
+    m.tree.all_intersected_primitives(
+        box, boost::make_function_output_iterator([&](SegmentIterator s) {
+            const auto k = static_cast<std::size_t>(s - first);
+            const glm::dvec2 a = m.flat[k].a, ab = m.flat[k].b - a;
+            const double len2 = ab.x * ab.x + ab.y * ab.y;
+            const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2, 0.0, 1.0) : 0.0;
+            const glm::dvec2 d = p - (a + t * ab);
+            if (d.x * d.x + d.y * d.y <= r2) out.push_back(static_cast<std::uint32_t>(k));
+        }));
 }
 
 ShoreDistance::Hit ShoreDistance::hit_on(glm::dvec2 p, std::size_t s) const {

@@ -2,13 +2,12 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <vector>
 
-#include <glm/vec2.hpp>
-
-#include "tidewater/result.hpp"
 #include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/result.hpp"
 
 namespace tidewater::detail {
 
@@ -25,7 +24,7 @@ ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double toler
 
 /// Exact distance to a set of segments (a CGAL AABB tree), thread-safe for queries.
 class ShoreDistance {
-public:
+  public:
     struct Hit {
         double signed_distance = 0.0;  // m, + over water (right of the land-on-left segments)
         glm::dvec2 gradient{0.0};      // unit
@@ -54,7 +53,7 @@ public:
     const Segment& segment(std::size_t s) const;
     std::size_t segment_count() const;
 
-private:
+  private:
     struct Impl;
     explicit ShoreDistance(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

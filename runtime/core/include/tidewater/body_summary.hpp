@@ -23,15 +23,15 @@ struct RiverSummary {
     std::string name;
     /// Where it ends: "ocean", "lake", "river" (a confluence) or "domain_edge".
     std::string ends_in;
-    std::string receiver;       ///< the lake's or river's name it runs into ("" for the ocean or the edge)
-    double length = 0.0;        ///< along its centreline to the mouth, m
-    double discharge = 0.0;     ///< below its tributaries, m^3/s
-    double mean_speed = 0.0;    ///< discharge over the mean wetted section, m/s
-    double source_level = 0.0;  ///< its surface at the source, m
-    double mouth_level = 0.0;   ///< the surface it meets, m
-    int islands = 0;            ///< knolls it flows round
+    std::string receiver;          ///< the lake's or river's name it runs into ("" for the ocean or the edge)
+    double length = 0.0;           ///< along its centreline to the mouth, m
+    double discharge = 0.0;        ///< below its tributaries, m^3/s
+    double mean_speed = 0.0;       ///< discharge over the mean wetted section, m/s
+    double source_level = 0.0;     ///< its surface at the source, m
+    double mouth_level = 0.0;      ///< the surface it meets, m
+    int islands = 0;               ///< knolls it flows round
     int grid_nx = 0, grid_nz = 0;  ///< texels of its fields
-    double texel = 0.0;         ///< m
+    double texel = 0.0;            ///< m
 };
 
 struct BodySummary {

@@ -15,10 +15,9 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
-
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "tidewater/result.hpp"
 
@@ -48,8 +47,8 @@ struct HullMesh {
     static HullMesh boat(double length, double beam, double draft);
     /// The plan area of boat()'s hull, m^2.
     static double boat_plan_area(double length, double beam);
-    double volume() const;   ///< m^3 (a closed, outward mesh)
-    Status validate() const; ///< indices in range, finite vertices, a positive volume
+    double volume() const;    ///< m^3 (a closed, outward mesh)
+    Status validate() const;  ///< indices in range, finite vertices, a positive volume
 };
 
 struct RigidBodyProps {
@@ -67,10 +66,10 @@ struct RigidBodyProps {
 };
 
 struct RigidBodyState {
-    glm::dvec3 position{0.0};             ///< centre of mass, world, m
+    glm::dvec3 position{0.0};                    ///< centre of mass, world, m
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  ///< body to world
-    glm::dvec3 velocity{0.0};             ///< m/s
-    glm::dvec3 angular_velocity{0.0};     ///< world axes, rad/s
+    glm::dvec3 velocity{0.0};                    ///< m/s
+    glm::dvec3 angular_velocity{0.0};            ///< world axes, rad/s
 };
 
 /// What the bodies float on: a scene (query_world, its boats' wakes included) or one
@@ -90,7 +89,7 @@ struct BuoyancyOptions {
 /// Floating bodies advanced in fixed steps (semi-implicit Euler): the same motion at any
 /// frame rate for the same step.
 class BuoyancyWorld {
-public:
+  public:
     explicit BuoyancyWorld(const BuoyancyOptions& options = {});
 
     /// Adds a body; returns its index. Fails on a bad mass, inertia or hull.
@@ -117,7 +116,7 @@ public:
     };
     const Forces& forces(int body) const { return forces_[static_cast<std::size_t>(body)]; }
 
-private:
+  private:
     BuoyancyOptions options_;
     double time_ = 0.0, carry_ = 0.0;
     std::vector<RigidBodyProps> props_;

@@ -9,7 +9,7 @@
 namespace tidewater {
 
 class Clock {
-public:
+  public:
     explicit Clock(double start_time = 0.0) : time_(start_time) {}
 
     /// Advances by `real_seconds` times the scale, unless paused. Negative or
@@ -26,7 +26,7 @@ public:
     void set_time(double seconds) { time_ = seconds; }
     double now() const { return time_; }
 
-private:
+  private:
     double time_ = 0.0;
     double scale_ = 1.0;
     bool paused_ = false;

@@ -9,9 +9,8 @@
 // Units: metres, seconds. Threading: reentrant; the scene is only read.
 #pragma once
 
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "tidewater/result.hpp"
 #include "tidewater/scene.hpp"
@@ -26,10 +25,10 @@ struct DriftOptions {
 };
 
 struct DriftSample {
-    double time = 0.0;        ///< clock time, s
-    glm::dvec2 position{0.0}; ///< world xz, m
-    double height = 0.0;      ///< the water surface there (waves included), world y, m
-    BodyRef body;             ///< the body it floats in
+    double time = 0.0;         ///< clock time, s
+    glm::dvec2 position{0.0};  ///< world xz, m
+    double height = 0.0;       ///< the water surface there (waves included), world y, m
+    BodyRef body;              ///< the body it floats in
 };
 
 /// The tracer's track from `start`, one sample per step (the first at start_time).

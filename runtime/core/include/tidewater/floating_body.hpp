@@ -8,10 +8,9 @@
 // Threading: reentrant; FloatingBody is a plain value.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"

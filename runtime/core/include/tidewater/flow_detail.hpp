@@ -18,9 +18,8 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-
 #include <glm/vec2.hpp>
+#include <string>
 
 #include "tidewater/result.hpp"
 
@@ -28,12 +27,12 @@ namespace tidewater {
 
 /// A preset's "flow" settings. Strength 0 turns flow detail off.
 struct FlowDetailSpec {
-    double tiling = 0.35;          ///< noise features per metre, 1/m, in [0.01, 20]
-    double speed = 1.0;            ///< how fast the detail moves, as a multiple of the current, [0, 4]
-    double strength = 0.0;         ///< slope amplitude of the detail, [0, 1]; 0 = off
-    double offset = -0.5;          ///< where in a cycle the detail is undistorted, [-1, 0] (-0.5: mid-cycle)
-    double period = 2.0;           ///< one cycle of a layer, s, in [0.1, 60]
-    glm::dvec2 jump{0.24, 0.2083}; ///< texture-coordinate jump per cycle, noise cells, each in [-0.5, 0.5]
+    double tiling = 0.35;           ///< noise features per metre, 1/m, in [0.01, 20]
+    double speed = 1.0;             ///< how fast the detail moves, as a multiple of the current, [0, 4]
+    double strength = 0.0;          ///< slope amplitude of the detail, [0, 1]; 0 = off
+    double offset = -0.5;           ///< where in a cycle the detail is undistorted, [-1, 0] (-0.5: mid-cycle)
+    double period = 2.0;            ///< one cycle of a layer, s, in [0.1, 60]
+    glm::dvec2 jump{0.24, 0.2083};  ///< texture-coordinate jump per cycle, noise cells, each in [-0.5, 0.5]
     std::uint32_t seed = 11;
 };
 
@@ -41,8 +40,8 @@ Status validate(const FlowDetailSpec& spec, const std::string& context);
 
 /// The two layers at one point and instant.
 struct FlowDetailSample {
-    glm::dvec2 slope{0.0};    ///< the blended detail slope (strength included)
-    double weight_a = 0.0;    ///< triangle weights, summing to one
+    glm::dvec2 slope{0.0};  ///< the blended detail slope (strength included)
+    double weight_a = 0.0;  ///< triangle weights, summing to one
     double weight_b = 0.0;
     glm::dvec2 slope_a{0.0};  ///< each layer's slope (strength included), before blending
     glm::dvec2 slope_b{0.0};

@@ -16,10 +16,10 @@ namespace tidewater {
 
 /// The state of the surface particle whose rest position is x0.
 struct LagrangianSample {
-    glm::dvec3 displacement{0.0};  ///< (dx, eta, dz): from the rest position, m.
+    glm::dvec3 displacement{0.0};      ///< (dx, eta, dz): from the rest position, m.
     glm::dvec3 normal{0.0, 1.0, 0.0};  ///< Unit surface normal.
-    glm::dvec3 velocity{0.0};      ///< Particle velocity, m/s.
-    double jacobian = 1.0;         ///< det of d(x,z)/d(x0,z0): 1 flat, -> 0 where the surface folds.
+    glm::dvec3 velocity{0.0};          ///< Particle velocity, m/s.
+    double jacobian = 1.0;             ///< det of d(x,z)/d(x0,z0): 1 flat, -> 0 where the surface folds.
     /// d(x,z)/d(x0,z0) entries: [[jxx, jxz], [jxz, jzz]] (the map is symmetric).
     double jxx = 1.0, jxz = 0.0, jzz = 1.0;
     /// d eta / d x0 and d eta / d z0.

@@ -12,11 +12,10 @@
 #pragma once
 
 #include <cstddef>
-#include <limits>
-#include <span>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
+#include <span>
 
 #include "tidewater/result.hpp"
 #include "tidewater/water_body.hpp"
@@ -27,11 +26,11 @@ namespace tidewater {
 inline constexpr double kDeepWater = std::numeric_limits<double>::infinity();
 
 struct SurfacePoint {
-    double height = 0.0;             ///< World y of the surface, m.
+    double height = 0.0;               ///< World y of the surface, m.
     glm::dvec3 normal{0.0, 1.0, 0.0};  ///< Unit normal of the displaced surface.
-    glm::dvec2 displacement{0.0};    ///< Horizontal offset of this particle from its rest position, m.
-    glm::dvec3 velocity{0.0};        ///< Water particle velocity, m/s.
-    double jacobian = 1.0;           ///< Horizontal-map determinant; -> 0 where crests fold (foam).
+    glm::dvec2 displacement{0.0};      ///< Horizontal offset of this particle from its rest position, m.
+    glm::dvec3 velocity{0.0};          ///< Water particle velocity, m/s.
+    double jacobian = 1.0;             ///< Horizontal-map determinant; -> 0 where crests fold (foam).
     /// Still-water depth at the query point: the body's level minus the terrain there, m
     /// (< 0 on land), from the shore model's grid. +infinity where the body has no shore
     /// model (open water: no bottom is known).
@@ -49,13 +48,15 @@ struct SurfacePoint {
     double foam = 0.0;
     /// The wakes' share of the height, m (QueryOptions::wakes; the scene's boats in query_world).
     double wake = 0.0;
-    int iterations = 0;              ///< Newton evaluations used.
+    int iterations = 0;  ///< Newton evaluations used.
     bool converged = true;
 };
 
 namespace detail {
 /// SurfacePoint::wet, the one definition every backend uses.
-inline bool surface_wet(double height, double level, double depth) { return height > level - depth; }
+inline bool surface_wet(double height, double level, double depth) {
+    return height > level - depth;
+}
 }  // namespace detail
 
 struct Wakes;
@@ -76,8 +77,8 @@ Status query_surface(const WaterBody& body, double time, std::span<const glm::dv
                      std::span<SurfacePoint> out, const QueryOptions& options = {});
 
 /// Heights only (world y), the fast path for buoyancy and gameplay.
-Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points,
-                     std::span<double> heights, const QueryOptions& options = {});
+Status query_heights(const WaterBody& body, double time, std::span<const glm::dvec2> points, std::span<double> heights,
+                     const QueryOptions& options = {});
 
 /// Single-point convenience wrapper of query_surface.
 SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point);

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/vec2.hpp>
 
 #include "tidewater/result.hpp"
@@ -16,23 +15,23 @@
 namespace tidewater {
 
 struct RippleSpec {
-    double amplitude = 0.0;     ///< m, in [0, 1]; 0 disables ripples.
-    double wavelength = 0.5;    ///< Base octave feature size, m, in [0.01, 100].
-    int octaves = 3;            ///< In [1, 8].
-    double speed = 0.3;         ///< Drift speed of the base octave, m/s, in [0, 20].
-    double direction_deg = 0.0; ///< Drift direction, degrees from +x toward +z.
+    double amplitude = 0.0;      ///< m, in [0, 1]; 0 disables ripples.
+    double wavelength = 0.5;     ///< Base octave feature size, m, in [0.01, 100].
+    int octaves = 3;             ///< In [1, 8].
+    double speed = 0.3;          ///< Drift speed of the base octave, m/s, in [0, 20].
+    double direction_deg = 0.0;  ///< Drift direction, degrees from +x toward +z.
     std::uint32_t seed = 7;
 };
 
 Status validate(const RippleSpec& spec, const std::string& context);
 
 struct RippleSample {
-    double height = 0.0;     ///< m
-    glm::dvec2 slope{0.0};   ///< d height / dx, d height / dz.
+    double height = 0.0;    ///< m
+    glm::dvec2 slope{0.0};  ///< d height / dx, d height / dz.
 };
 
 class RippleField {
-public:
+  public:
     RippleField() = default;
     explicit RippleField(const RippleSpec& spec) : spec_(spec) {}
 
@@ -42,7 +41,7 @@ public:
     /// Height and analytic slope at world position p (x, z) and time t.
     RippleSample sample(glm::dvec2 p, double time) const;
 
-private:
+  private:
     RippleSpec spec_{};
 };
 

@@ -8,11 +8,10 @@
 #pragma once
 
 #include <filesystem>
-#include <memory>
-#include <optional>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,9 +34,9 @@ struct SceneCamera {
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {
     bool enabled = true;
-    int resolution = 256;                ///< Texels per side of the shore model, 16 to 4096.
-    double breaking_index = 0.78;        ///< Breaker height / depth (McCowan), 0.3 to 1.2.
-    std::filesystem::path bake_folder;   ///< A saved bake for bake_scene to load (empty: bake).
+    int resolution = 256;               ///< Texels per side of the shore model, 16 to 4096.
+    double breaking_index = 0.78;       ///< Breaker height / depth (McCowan), 0.3 to 1.2.
+    std::filesystem::path bake_folder;  ///< A saved bake for bake_scene to load (empty: bake).
 };
 
 /// Something the scene sets afloat (tidewater/scene_floaters.hpp): a barrel (an upright
@@ -46,29 +45,29 @@ struct SceneFloat {
     enum class Shape { barrel, box, sphere };
     std::string name;
     Shape shape = Shape::barrel;
-    glm::dvec3 size{0.6, 0.9, 0.6};  ///< m: barrel: diameter, height, diameter; box: x, y, z; sphere: diameter
-    double mass = 100.0;             ///< kg (> 0, less than the water its hull displaces)
-    glm::dvec2 at{0.0};              ///< world (x, z) where it starts, m
+    glm::dvec3 size{0.6, 0.9, 0.6};     ///< m: barrel: diameter, height, diameter; box: x, y, z; sphere: diameter
+    double mass = 100.0;                ///< kg (> 0, less than the water its hull displaces)
+    glm::dvec2 at{0.0};                 ///< world (x, z) where it starts, m
     glm::vec3 color{0.85, 0.35, 0.05};  ///< paint, linear RGB 0..1
 };
 
 /// A lake: the terrain below `level` connected to `at` (found by bake_scene), with its own
 /// waves. Its body's level() is the lake's level.
 struct SceneLake {
-    std::string name;       ///< Unique among the scene's bodies.
-    glm::dvec2 at{0.0};     ///< World xz, m: a point under the lake's level.
-    WaterBody body;         ///< Waves and ripples of its preset, at the lake's level.
+    std::string name;    ///< Unique among the scene's bodies.
+    glm::dvec2 at{0.0};  ///< World xz, m: a point under the lake's level.
+    WaterBody body;      ///< Waves and ripples of its preset, at the lake's level.
 };
 
 /// A river: a centreline from source to mouth with its discharge. Its falling surface,
 /// carved bed and current come from bake_scene.
 struct SceneRiver {
-    std::string name;                ///< Unique among the scene's bodies.
-    std::vector<glm::dvec2> path;    ///< World xz, m, source first; at least two points.
-    std::vector<double> width;       ///< Wetted width per path point, m (> 0).
-    double discharge = 1.0;          ///< Q, m^3/s (> 0).
-    double manning = 0.035;          ///< Manning roughness n, s/m^(1/3).
-    bool carve = true;               ///< Cut the channel into terrain that has none.
+    std::string name;              ///< Unique among the scene's bodies.
+    std::vector<glm::dvec2> path;  ///< World xz, m, source first; at least two points.
+    std::vector<double> width;     ///< Wetted width per path point, m (> 0).
+    double discharge = 1.0;        ///< Q, m^3/s (> 0).
+    double manning = 0.035;        ///< Manning roughness n, s/m^(1/3).
+    bool carve = true;             ///< Cut the channel into terrain that has none.
     /// Waves and ripples of its preset, directions relative to downstream (level unused).
     WaterBody body;
 };
@@ -92,7 +91,7 @@ struct Scene {
     std::vector<SceneBoat> boats;
     /// Barrels, boxes and buoys afloat (SceneFloaters rides them with the boats).
     std::vector<SceneFloat> floats;
-    std::optional<SceneCamera> camera;   ///< Default viewpoint, if the scene gives one.
+    std::optional<SceneCamera> camera;  ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
     /// What bake_scene made (null as parsed). Copies share it; it is never modified.
     std::shared_ptr<const SceneBake> bake;
@@ -117,8 +116,7 @@ Result<Scene> default_scene();
 /// Parses a preset (a WaterProfile with "version" and "name").
 Result<WaterProfile> parse_preset(std::string_view json_text, const std::string& source);
 /// Loads a preset by bundled name ("ocean_rolling") or from a .json file path.
-Result<WaterProfile> load_preset(const std::string& name_or_path,
-                                 const std::filesystem::path& base_dir = {});
+Result<WaterProfile> load_preset(const std::string& name_or_path, const std::filesystem::path& base_dir = {});
 /// Names of the bundled presets (examples/presets/*.json).
 std::vector<std::string> bundled_preset_names();
 

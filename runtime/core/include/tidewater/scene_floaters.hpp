@@ -10,12 +10,11 @@
 // Units: metres, seconds, kilograms; world frame y up.
 #pragma once
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <glm/gtc/quaternion.hpp>
-#include <glm/vec3.hpp>
 
 #include "tidewater/buoyancy.hpp"
 #include "tidewater/result.hpp"
@@ -28,12 +27,12 @@ namespace tidewater {
 inline constexpr double kSceneFloatSettle = 12.0;
 
 class SceneFloaters {
-public:
+  public:
     struct Body {
         std::string name;
-        HullMesh hull;         ///< body frame, m (x forward, y up, z to starboard)
+        HullMesh hull;          ///< body frame, m (x forward, y up, z to starboard)
         glm::vec3 color{0.8f};  ///< paint, linear RGB
-        bool boat = false;     ///< a scene boat (kept to its path) or a free float
+        bool boat = false;      ///< a scene boat (kept to its path) or a free float
     };
     struct Pose {
         glm::dvec3 position{0.0};                    ///< the body frame's origin, world, m
@@ -55,8 +54,9 @@ public:
     const std::vector<Body>& bodies() const { return bodies_; }
     Pose pose(std::size_t body) const;
 
-private:
-    SceneFloaters(std::shared_ptr<const Scene> scene, double step) : scene_(std::move(scene)), world_(BuoyancyOptions{step}) {}
+  private:
+    SceneFloaters(std::shared_ptr<const Scene> scene, double step)
+        : scene_(std::move(scene)), world_(BuoyancyOptions{step}) {}
     void hold_boats_to_their_paths();
 
     std::shared_ptr<const Scene> scene_;

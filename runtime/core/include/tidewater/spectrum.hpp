@@ -21,14 +21,14 @@ enum class SpectrumKind { pierson_moskowitz, jonswap };
 
 struct SpectrumSpec {
     SpectrumKind kind = SpectrumKind::jonswap;
-    double wind_speed = 10.0;       ///< U10, m/s, in (0, 60].
-    double fetch = 100000.0;        ///< m, JONSWAP only, in [1e3, 1e7].
-    double peak_enhancement = 3.3;  ///< JONSWAP gamma, in [1, 10].
+    double wind_speed = 10.0;         ///< U10, m/s, in (0, 60].
+    double fetch = 100000.0;          ///< m, JONSWAP only, in [1e3, 1e7].
+    double peak_enhancement = 3.3;    ///< JONSWAP gamma, in [1, 10].
     double mean_direction_deg = 0.0;  ///< Mean direction of travel, degrees from +x toward +z.
-    double spreading = 10.0;        ///< s in cos^(2s)((theta - mean)/2), in [0, 100]; 0 = uniform.
-    int wave_count = 32;            ///< In [1, kMaxWaves].
-    std::uint64_t seed = 1;         ///< Same seed, same waves, on every platform.
-    double steepness = 0.6;         ///< Target sum(Q*k*A), in [0, 1]; Q is equal across waves.
+    double spreading = 10.0;          ///< s in cos^(2s)((theta - mean)/2), in [0, 100]; 0 = uniform.
+    int wave_count = 32;              ///< In [1, kMaxWaves].
+    std::uint64_t seed = 1;           ///< Same seed, same waves, on every platform.
+    double steepness = 0.6;           ///< Target sum(Q*k*A), in [0, 1]; Q is equal across waves.
 };
 
 /// Spectral density S(omega), m^2 s / rad.

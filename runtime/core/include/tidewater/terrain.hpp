@@ -4,12 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <string>
 #include <variant>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 namespace tidewater {
 
@@ -27,8 +26,8 @@ struct FlatTerrain {
 
 /// h(x, z) = height + slope.x * x + slope.y * z.
 struct PlaneTerrain {
-    double height = -100.0;   ///< m at the origin
-    glm::dvec2 slope{0.0};    ///< dh/dx, dh/dz (dimensionless)
+    double height = -100.0;  ///< m at the origin
+    glm::dvec2 slope{0.0};   ///< dh/dx, dh/dz (dimensionless)
     bool operator==(const PlaneTerrain&) const = default;
 };
 
@@ -36,11 +35,11 @@ struct PlaneTerrain {
 /// Image column i maps to x, row j to z, spanning `size` centred on `center`;
 /// outside it the edge pixels extend. Sampled bilinearly between pixel centres.
 struct HeightmapTerrain {
-    std::string file;                     ///< Where it came from (for messages).
-    glm::dvec2 size{1000.0, 1000.0};      ///< m along x and z, > 0.
-    glm::dvec2 center{0.0};               ///< m
-    double min_height = -50.0;            ///< m
-    double max_height = 50.0;             ///< m
+    std::string file;                 ///< Where it came from (for messages).
+    glm::dvec2 size{1000.0, 1000.0};  ///< m along x and z, > 0.
+    glm::dvec2 center{0.0};           ///< m
+    double min_height = -50.0;        ///< m
+    double max_height = 50.0;         ///< m
     std::shared_ptr<const Gray16Image> image;
     bool operator==(const HeightmapTerrain&) const = default;  ///< The same pixels object, not equal pixels.
 };
@@ -48,9 +47,9 @@ struct HeightmapTerrain {
 /// A rounded mound added to a procedural island where a designer wants one: a rock in a
 /// river, a skerry, a hillock. Its profile is height * (1 - (r/radius)^2)^2.
 struct Knoll {
-    glm::dvec2 at{0.0};   ///< m
-    double radius = 10.0; ///< m, where it meets the ground
-    double height = 3.0;  ///< m above the ground at its centre
+    glm::dvec2 at{0.0};    ///< m
+    double radius = 10.0;  ///< m, where it meets the ground
+    double height = 3.0;   ///< m above the ground at its centre
     bool operator==(const Knoll&) const = default;
 };
 
@@ -58,10 +57,10 @@ struct Knoll {
 /// coast, inland hills and an enclosed lagoon, all from `seed`, and any knolls added.
 struct IslandTerrain {
     std::uint32_t seed = 7;
-    double radius = 600.0;    ///< m, mean distance from the centre to the coast (water level 0)
-    double height = 80.0;     ///< m, typical inland height
-    double seabed = -40.0;    ///< m, depth far offshore (< 0)
-    glm::dvec2 center{0.0};   ///< m
+    double radius = 600.0;   ///< m, mean distance from the centre to the coast (water level 0)
+    double height = 80.0;    ///< m, typical inland height
+    double seabed = -40.0;   ///< m, depth far offshore (< 0)
+    glm::dvec2 center{0.0};  ///< m
     std::vector<Knoll> knolls;
     bool operator==(const IslandTerrain&) const = default;
 };
@@ -78,7 +77,7 @@ struct TerrainCut {
 };
 
 class Terrain {
-public:
+  public:
     using Shape = std::variant<FlatTerrain, PlaneTerrain, HeightmapTerrain, IslandTerrain>;
 
     Terrain() = default;
@@ -102,7 +101,7 @@ public:
     glm::dvec2 extent_center() const;
     double extent_half_size() const;
 
-private:
+  private:
     Shape shape_{FlatTerrain{}};
     std::vector<std::shared_ptr<const TerrainCut>> cuts_;
 };

@@ -21,10 +21,9 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/result.hpp"
 
@@ -41,9 +40,9 @@ struct DisturbancePoint {
     /// Width b of the pressure patch exp(-pi^2 r^2 / b^2), m (> 0): waves shorter than
     /// about b / 2 are not made.
     double source_size = 1.0;
-    double emitted = 0.0;    ///< clock time it was made, s
-    double steepness = 0.5;  ///< Gerstner Q of its waves, [0, 1]
-    double turbulence = 0.0; ///< foam it makes, [0, 1] when made, decaying over 30 s
+    double emitted = 0.0;     ///< clock time it was made, s
+    double steepness = 0.5;   ///< Gerstner Q of its waves, [0, 1]
+    double turbulence = 0.0;  ///< foam it makes, [0, 1] when made, decaying over 30 s
 };
 
 /// Disturbances made one after another by one source (a boat's bow), evaluated segment
@@ -86,10 +85,10 @@ struct BoatHull {
 /// where its filter is e^-4; each segment is integrated with its phase step, so fronts
 /// neither scallop nor alias); the stern's every B / 2.
 struct BoatWakeShape {
-    double bow_size = 0.0;      ///< source size of the bow chains, m
-    double bow_strength = 0.0;  ///< each bow chain's strength, m^4/s^2
-    double bow_spacing = 0.0;   ///< m of track between bow points
-    double stern_spacing = 0.0; ///< m of track between stern points
+    double bow_size = 0.0;                                     ///< source size of the bow chains, m
+    double bow_strength = 0.0;                                 ///< each bow chain's strength, m^4/s^2
+    double bow_spacing = 0.0;                                  ///< m of track between bow points
+    double stern_spacing = 0.0;                                ///< m of track between stern points
     glm::dvec2 port_bow{0.0}, starboard_bow{0.0}, stern{0.0};  ///< body frame (forward, starboard), m
 };
 inline constexpr double kBoatBlockCoefficient = 0.5;
@@ -104,7 +103,7 @@ std::size_t boat_wake_points(const BoatHull& hull, double speed);
 /// fixed distances along the track it sails (positions and times interpolated between
 /// poses), so the wake does not depend on the frame rate.
 class BoatWakeEmitter {
-public:
+  public:
     BoatWakeEmitter(const BoatHull& hull, int emitter);
 
     /// The boat's centre at clock time `time`: world (x, z), heading in radians from +x
@@ -117,7 +116,7 @@ public:
     int emitter() const { return emitter_; }
     const BoatWakeShape& shape() const { return shape_; }
 
-private:
+  private:
     struct Pose {
         glm::dvec2 position;
         double heading, time, track;
@@ -131,7 +130,7 @@ private:
     bool started_ = false;
     Pose last_{};
     double next_bow_ = 0.0, next_stern_ = 0.0;  ///< track distance of the next points
-    WakeChain chains_[3];  ///< port bow, starboard bow, stern
+    WakeChain chains_[3];                       ///< port bow, starboard bow, stern
 };
 
 /// A boat that sails a path at constant speed (Scene::boats, "boats" in scene JSON).
@@ -140,7 +139,7 @@ struct SceneBoat {
     std::vector<glm::dvec2> path;  ///< world (x, z), m; >= 2 points
     double speed = 5.0;            ///< m/s (> 0)
     BoatHull hull;
-    double start = 0.0;            ///< clock time it leaves the first point, s
+    double start = 0.0;  ///< clock time it leaves the first point, s
     /// Where it is at clock time `time` (centre and heading, radians); it stays at the end.
     void pose_at(double time, glm::dvec2& position, double& heading) const;
     double path_length() const;

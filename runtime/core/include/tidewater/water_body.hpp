@@ -33,12 +33,11 @@ struct WaterProfile {
 };
 
 class WaterBody {
-public:
+  public:
     WaterBody() = default;
 
     /// Validates the profile (see WaveSet::create). `context` prefixes messages.
-    static Result<WaterBody> create(const WaterProfile& profile, double level,
-                                    const std::string& context,
+    static Result<WaterBody> create(const WaterProfile& profile, double level, const std::string& context,
                                     std::vector<std::string>* warnings = nullptr);
 
     const WaterProfile& profile() const { return profile_; }
@@ -59,7 +58,7 @@ public:
     /// body's waves (the same count); null gives open water.
     Result<WaterBody> with_shore(std::shared_ptr<const ShoreWaves> shore) const;
 
-private:
+  private:
     WaterProfile profile_;
     WaveSet waves_;
     RippleField ripples_;

@@ -37,14 +37,14 @@ struct Wave {
     double steepness = 0.0;
     double phase = 0.0;
 
-    double period() const;      ///< s
-    double phase_speed() const; ///< m/s
+    double period() const;       ///< s
+    double phase_speed() const;  ///< m/s
     bool operator==(const Wave&) const = default;
 };
 
 /// A validated set of at most kMaxWaves waves that satisfies the fold-free rule.
 class WaveSet {
-public:
+  public:
     WaveSet() = default;
 
     /// Validates each spec (finite values, wavelength > 0, amplitude >= 0,
@@ -52,8 +52,7 @@ public:
     /// messages (e.g. "scene.json: /ocean/waves"). With FoldPolicy::clamp a
     /// violating set is scaled and a warning appended to `warnings`.
     static Result<WaveSet> create(std::span<const WaveSpec> specs, FoldPolicy policy,
-                                  const std::string& context = "waves",
-                                  std::vector<std::string>* warnings = nullptr);
+                                  const std::string& context = "waves", std::vector<std::string>* warnings = nullptr);
 
     std::span<const Wave> waves() const { return waves_; }
     std::size_t size() const { return waves_.size(); }
@@ -71,7 +70,7 @@ public:
     /// (Cox and Munk's total slope variance).
     double mean_square_slope() const;
 
-private:
+  private:
     std::vector<Wave> waves_;
 };
 

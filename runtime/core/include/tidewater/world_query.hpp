@@ -22,10 +22,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <span>
 #include <string_view>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"

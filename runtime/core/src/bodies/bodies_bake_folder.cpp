@@ -1,16 +1,17 @@
 // Loading saved lakes and rivers (the writer is Tidewater::bake's, bodies_bake_write.cpp).
 #include "tidewater/detail/bodies_bake_folder.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
 
-#include "tidewater/detail/bake_files.hpp"
-#include "tidewater/detail/water_bodies.hpp"
+#include <cmath>
+
 #include "host_device.h"
+#include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/bake_files.hpp"
 #include "tidewater/detail/json_reader.hpp"
 #include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/shore_waves.hpp"
-#include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/water_bodies.hpp"
 
 namespace tidewater {
 
@@ -23,7 +24,9 @@ using detail::ObjectReader;
 using detail::RiverBake;
 using nlohmann::json;
 
-bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+bool same(double a, double b) {
+    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
 
 Error stale(const ObjectReader& r, std::string_view key, const std::string& what) {
     return r.error(key, what + ": the bake was made for other lakes or rivers; re-run tidewater bake");
@@ -43,7 +46,8 @@ Result<std::vector<glm::dvec2>> read_points(const ObjectReader& r, std::string_v
     if (!r.has(key) || !r.at(key).is_array()) return r.error(key, "expected an array of [x, z]");
     std::vector<glm::dvec2> out;
     for (const auto& v : r.at(key)) {
-        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) return r.error(key, "expected an array of [x, z]");
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+            return r.error(key, "expected an array of [x, z]");
         out.push_back({v[0].get<double>(), v[1].get<double>()});
     }
     return out;
@@ -68,11 +72,13 @@ Result<FieldGrid> read_grid(const ObjectReader& r) {
 }
 
 /// A field of small integers (texel kinds, masks) decoded exactly.
-Result<std::vector<std::uint8_t>> read_codes(const fs::path& dir, const ObjectReader& fields, std::string_view name, const FieldGrid& g) {
+Result<std::vector<std::uint8_t>> read_codes(const fs::path& dir, const ObjectReader& fields, std::string_view name,
+                                             const FieldGrid& g) {
     auto values = detail::read_field_png(dir, fields, name, g.nx, g.nz);
     if (!values) return values.error();
     std::vector<std::uint8_t> out(values->size());
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(std::clamp(std::lround((*values)[k]), 0L, 255L));
+    for (std::size_t k = 0; k < out.size(); ++k)
+        out[k] = static_cast<std::uint8_t>(std::clamp(std::lround((*values)[k]), 0L, 255L));
     return out;
 }
 
@@ -85,8 +91,10 @@ Result<LakeBake> read_lake(const fs::path& dir, const ObjectReader& r, const Sce
     auto at = read_numbers(r, "at_m");
     if (!at) return at.error();
     if (name != lake.name) return stale(r, "name", fmt::format("\"{}\", the scene's lake is \"{}\"", name, lake.name));
-    if (!same(level, lake.body.level())) return stale(r, "level_m", fmt::format("{} m, the scene's lake is at {} m", level, lake.body.level()));
-    if (at->size() != 2 || !same((*at)[0], lake.at.x) || !same((*at)[1], lake.at.y)) return stale(r, "at_m", "another point");
+    if (!same(level, lake.body.level()))
+        return stale(r, "level_m", fmt::format("{} m, the scene's lake is at {} m", level, lake.body.level()));
+    if (at->size() != 2 || !same((*at)[0], lake.at.x) || !same((*at)[1], lake.at.y))
+        return stale(r, "at_m", "another point");
     auto grid = read_grid(r);
     if (!grid) return grid.error();
     out.name = name;
@@ -106,11 +114,13 @@ Result<LakeBake> read_lake(const fs::path& dir, const ObjectReader& r, const Sce
 Status check_river_inputs(const ObjectReader& r, const SceneRiver& river) {
     std::string name;
     if (auto st = r.string("name", name, true); !st) return st;
-    if (name != river.name) return stale(r, "name", fmt::format("\"{}\", the scene's river is \"{}\"", name, river.name));
+    if (name != river.name)
+        return stale(r, "name", fmt::format("\"{}\", the scene's river is \"{}\"", name, river.name));
     auto path = read_points(r, "path_m");
     if (!path) return path.error();
     bool same_path = path->size() == river.path.size();
-    for (std::size_t k = 0; same_path && k < path->size(); ++k) same_path = same((*path)[k].x, river.path[k].x) && same((*path)[k].y, river.path[k].y);
+    for (std::size_t k = 0; same_path && k < path->size(); ++k)
+        same_path = same((*path)[k].x, river.path[k].x) && same((*path)[k].y, river.path[k].y);
     if (!same_path) return stale(r, "path_m", "another path");
     auto width = read_numbers(r, "width_m");
     if (!width) return width.error();
@@ -119,15 +129,18 @@ Status check_river_inputs(const ObjectReader& r, const SceneRiver& river) {
     if (!same_width) return stale(r, "width_m", "other widths");
     double discharge = 0.0, manning = 0.0;
     if (auto st = r.number("discharge_m3_s", discharge, true); !st) return st;
-    if (!same(discharge, river.discharge)) return stale(r, "discharge_m3_s", fmt::format("{} m^3/s, the scene's is {}", discharge, river.discharge));
+    if (!same(discharge, river.discharge))
+        return stale(r, "discharge_m3_s", fmt::format("{} m^3/s, the scene's is {}", discharge, river.discharge));
     if (auto st = r.number("manning", manning, true); !st) return st;
-    if (!same(manning, river.manning)) return stale(r, "manning", fmt::format("{}, the scene's is {}", manning, river.manning));
+    if (!same(manning, river.manning))
+        return stale(r, "manning", fmt::format("{}, the scene's is {}", manning, river.manning));
     if (!r.has("carve") || !r.at("carve").is_boolean()) return r.error("carve", "expected true or false");
     if (r.at("carve").get<bool>() != river.carve) return stale(r, "carve", "another carving");
     return {};
 }
 
-Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const SceneRiver& river, std::size_t lakes, std::size_t rivers) {
+Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const SceneRiver& river, std::size_t lakes,
+                             std::size_t rivers) {
     if (auto st = check_river_inputs(r, river); !st) return st.error();
     RiverBake out;
     out.name = river.name;
@@ -137,7 +150,8 @@ Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const S
     std::int64_t receiver = -1, islands = 0;
     if (auto st = r.integer("receiver", receiver, -1, 1 << 20, true); !st) return st.error();
     bool known = false;
-    for (const auto kind : {detail::RiverEnd::ocean, detail::RiverEnd::lake, detail::RiverEnd::river, detail::RiverEnd::domain_edge})
+    for (const auto kind :
+         {detail::RiverEnd::ocean, detail::RiverEnd::lake, detail::RiverEnd::river, detail::RiverEnd::domain_edge})
         if (end == detail::river_end_name(kind)) out.end = kind, known = true;
     if (!known) return r.error("end", fmt::format("\"{}\" is not one of ocean, lake, river, domain_edge", end));
     const bool needs_receiver = out.end == detail::RiverEnd::lake || out.end == detail::RiverEnd::river;
@@ -147,20 +161,23 @@ Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const S
     out.receiver = static_cast<int>(receiver);
     if (auto st = r.integer("islands", islands, 0, 1 << 30, true); !st) return st.error();
     out.islands = static_cast<std::size_t>(islands);
-    for (const auto& [key, target] : {std::pair{"baked_discharge_m3_s", &out.discharge}, std::pair{"own_discharge_m3_s", &out.own_discharge},
-                                      std::pair{"mouth_level_m", &out.mouth_level}, std::pair{"mean_speed_m_s", &out.mean_speed}}) {
+    for (const auto& [key, target] :
+         {std::pair{"baked_discharge_m3_s", &out.discharge}, std::pair{"own_discharge_m3_s", &out.own_discharge},
+          std::pair{"mouth_level_m", &out.mouth_level}, std::pair{"mean_speed_m_s", &out.mean_speed}}) {
         if (auto st = r.number(key, *target, true); !st) return st.error();
         if (!std::isfinite(*target)) return r.error(key, "must be finite");
     }
     auto centreline = read_points(r, "centreline_m");
     if (!centreline) return centreline.error();
     out.centreline = std::move(centreline).value();
-    for (const auto& [key, target] : {std::pair{"along_m", &out.along}, std::pair{"section_width_m", &out.width},
-                                      std::pair{"surface_m", &out.surface}, std::pair{"bed_m", &out.bed}, std::pair{"slope", &out.slope}}) {
+    for (const auto& [key, target] :
+         {std::pair{"along_m", &out.along}, std::pair{"section_width_m", &out.width},
+          std::pair{"surface_m", &out.surface}, std::pair{"bed_m", &out.bed}, std::pair{"slope", &out.slope}}) {
         auto values = read_numbers(r, key);
         if (!values) return values.error();
         if (values->size() != out.centreline.size())
-            return r.error(key, fmt::format("{} values for {} centreline points", values->size(), out.centreline.size()));
+            return r.error(key,
+                           fmt::format("{} values for {} centreline points", values->size(), out.centreline.size()));
         *target = std::move(values).value();
     }
     if (out.centreline.size() < 2) return r.error("centreline_m", "needs at least two points");
@@ -174,13 +191,22 @@ Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const S
     if (!texel) return texel.error();
     out.texel = std::move(texel).value();
     for (const std::uint8_t t : out.texel)
-        if (t > static_cast<std::uint8_t>(detail::RiverTexel::mouth)) return fields->error("texel", fmt::format("holds the unknown kind {}", t));
+        if (t > static_cast<std::uint8_t>(detail::RiverTexel::mouth))
+            return fields->error("texel", fmt::format("holds the unknown kind {}", t));
     std::vector<float> wave_weight, still_weight;
-    const std::pair<const char*, std::vector<float>*> floats[] = {
-        {"surface_height", &out.surface_height}, {"depth", &out.depth}, {"psi", &out.psi}, {"discharge_x", &out.discharge_x},
-        {"discharge_z", &out.discharge_z}, {"flow_x", &out.flow_x}, {"flow_z", &out.flow_z}, {"channel_s", &out.channel_s},
-        {"channel_n", &out.channel_n}, {"tangent_x", &out.tangent_x}, {"tangent_z", &out.tangent_z}, {"wave_weight", &wave_weight},
-        {"still_weight", &still_weight}};
+    const std::pair<const char*, std::vector<float>*> floats[] = {{"surface_height", &out.surface_height},
+                                                                  {"depth", &out.depth},
+                                                                  {"psi", &out.psi},
+                                                                  {"discharge_x", &out.discharge_x},
+                                                                  {"discharge_z", &out.discharge_z},
+                                                                  {"flow_x", &out.flow_x},
+                                                                  {"flow_z", &out.flow_z},
+                                                                  {"channel_s", &out.channel_s},
+                                                                  {"channel_n", &out.channel_n},
+                                                                  {"tangent_x", &out.tangent_x},
+                                                                  {"tangent_z", &out.tangent_z},
+                                                                  {"wave_weight", &wave_weight},
+                                                                  {"still_weight", &still_weight}};
     for (const auto& [name, target] : floats) {
         auto values = detail::read_field_png(dir, *fields, name, out.grid.nx, out.grid.nz);
         if (!values) return values.error();
@@ -204,9 +230,10 @@ Result<RiverBake> read_river(const fs::path& dir, const ObjectReader& r, const S
 /// The terrain under a river is the one baked over: shape = surface - depth + cut at
 /// every texel of its water, within the fields' encodings.
 Status check_river_terrain(const ObjectReader& fields, const RiverBake& river, const Terrain& terrain) {
-    const double tolerance = 0.51 * (detail::field_png_step(fields, "surface_height") + detail::field_png_step(fields, "depth") +
-                                     (fields.has("cut_depth") ? detail::field_png_step(fields, "cut_depth") : 0.0)) +
-                             1e-3;
+    const double tolerance =
+        0.51 * (detail::field_png_step(fields, "surface_height") + detail::field_png_step(fields, "depth") +
+                (fields.has("cut_depth") ? detail::field_png_step(fields, "cut_depth") : 0.0)) +
+        1e-3;
     const FieldGrid& g = river.grid;
     for (int j = 0; j < g.nz; ++j)
         for (int i = 0; i < g.nx; ++i) {
@@ -214,12 +241,15 @@ Status check_river_terrain(const ObjectReader& fields, const RiverBake& river, c
             if (river.texel[t] == 0) continue;
             const glm::dvec2 p = g.center(i, j);
             const double cut = river.cut ? static_cast<double>(river.cut->depth[t]) : 0.0;
-            const double stored = static_cast<double>(river.surface_height[t]) - static_cast<double>(river.depth[t]) + cut;
+            const double stored =
+                static_cast<double>(river.surface_height[t]) - static_cast<double>(river.depth[t]) + cut;
             const double shape = terrain.shape_height_at(p);
             if (!(std::abs(shape - stored) <= tolerance))
-                return fields.error("depth", fmt::format("the terrain differs from the one baked under the river ({:.3f} m at x = {:.1f}, "
-                                                         "z = {:.1f}, the bake says {:.3f} m): re-run tidewater bake",
-                                                         shape, p.x, p.y, stored));
+                return fields.error(
+                    "depth",
+                    fmt::format("the terrain differs from the one baked under the river ({:.3f} m at x = {:.1f}, "
+                                "z = {:.1f}, the bake says {:.3f} m): re-run tidewater bake",
+                                shape, p.x, p.y, stored));
         }
     return {};
 }
@@ -235,12 +265,14 @@ FieldGrid detail::saved_lake_grid(const Terrain& terrain, int resolution) {
     return g;
 }
 
-Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, const detail::BodiesBakeOptions& options, bool lake_shores) {
+Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, const detail::BodiesBakeOptions& options,
+                                      bool lake_shores) {
     const fs::path sidecar_path = dir / kBodiesSidecar;
     if (!fs::exists(sidecar_path))
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: missing: the bake in {} holds no lakes or rivers, the scene has them; "
-                                                              "re-run tidewater bake",
-                                                              sidecar_path.string(), dir.string())};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: missing: the bake in {} holds no lakes or rivers, the scene has them; "
+                                 "re-run tidewater bake",
+                                 sidecar_path.string(), dir.string())};
     auto doc = detail::read_sidecar(sidecar_path, kBodiesBakeFormatVersion);
     if (!doc) return doc.error();
     auto root = ObjectReader::open(*doc, sidecar_path.string(), "");
@@ -249,15 +281,19 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
     double level = 0.0, texels_across = 0.0;
     if (auto st = root->number("water_level_m", level, true); !st) return st.error();
     if (!same(level, scene.water_level()))
-        return root->error("water_level_m", fmt::format("the bake was made at water level {} m, the scene's is {} m: re-run tidewater bake", level,
-                                                        scene.water_level()));
-    if (!root->has("has_ocean") || !root->at("has_ocean").is_boolean()) return root->error("has_ocean", "expected true or false");
+        return root->error(
+            "water_level_m",
+            fmt::format("the bake was made at water level {} m, the scene's is {} m: re-run tidewater bake", level,
+                        scene.water_level()));
+    if (!root->has("has_ocean") || !root->at("has_ocean").is_boolean())
+        return root->error("has_ocean", "expected true or false");
     if (root->at("has_ocean").get<bool>() != scene.has_ocean) return stale(*root, "has_ocean", "another ocean");
     // The grid lakes were found on is the bake's (a saved bake fixes the shore resolution).
     if (auto st = root->integer("lake_resolution", lake_resolution, 8, 8192, true); !st) return st.error();
     if (auto st = root->number("texels_across", texels_across, true); !st) return st.error();
     if (!same(texels_across, options.texels_across))
-        return root->error("texels_across", fmt::format("{}, this bake asks for {}: re-run tidewater bake", texels_across, options.texels_across));
+        return root->error("texels_across", fmt::format("{}, this bake asks for {}: re-run tidewater bake",
+                                                        texels_across, options.texels_across));
 
     // The terrain's shape on the lakes' grid.
     const Terrain uncut = scene.terrain.with_cuts({});
@@ -269,7 +305,8 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
     const FieldGrid expected = detail::saved_lake_grid(uncut, static_cast<int>(lake_resolution));
     if (shape_grid->nx != expected.nx || shape_grid->nz != expected.nz || !same(shape_grid->texel, expected.texel) ||
         !same(shape_grid->corner.x, expected.corner.x) || !same(shape_grid->corner.y, expected.corner.y))
-        return terrain->error("grid", "covers another extent: the bake was made for another terrain; re-run tidewater bake");
+        return terrain->error("grid",
+                              "covers another extent: the bake was made for another terrain; re-run tidewater bake");
     if (!terrain->has("fields")) return terrain->error("fields", "is missing");
     auto terrain_fields = ObjectReader::open(terrain->at("fields"), terrain->source(), "/terrain/fields");
     if (!terrain_fields) return terrain_fields.error();
@@ -278,11 +315,13 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
     const double tolerance = 0.51 * detail::field_png_step(*terrain_fields, "shape") + 1e-3;
     for (int j = 0; j < expected.nz; ++j)
         for (int i = 0; i < expected.nx; ++i) {
-            const double h = uncut.shape_height_at(expected.center(i, j)), stored = static_cast<double>((*shape)[expected.index(i, j)]);
+            const double h = uncut.shape_height_at(expected.center(i, j)),
+                         stored = static_cast<double>((*shape)[expected.index(i, j)]);
             if (!(std::abs(h - stored) <= tolerance))
-                return terrain_fields->error("shape", fmt::format("the terrain differs from the one baked ({:.3f} m at x = {:.1f}, z = {:.1f}, "
-                                                                  "the bake says {:.3f} m): re-run tidewater bake",
-                                                                  h, expected.center(i, j).x, expected.center(i, j).y, stored));
+                return terrain_fields->error(
+                    "shape", fmt::format("the terrain differs from the one baked ({:.3f} m at x = {:.1f}, z = {:.1f}, "
+                                         "the bake says {:.3f} m): re-run tidewater bake",
+                                         h, expected.center(i, j).x, expected.center(i, j).y, stored));
         }
 
     LoadedBodies out;
@@ -324,10 +363,11 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
     if (lake_shores)
         for (std::size_t l = 0; l < lakes.size(); ++l) {
             if (lake_shore_folders[l].empty())
-                return root->error(fmt::format("lakes/{}/shore", l), "is missing: the bake holds no shore model for this lake; re-run tidewater bake");
+                return root->error(fmt::format("lakes/{}/shore", l),
+                                   "is missing: the bake holds no shore model for this lake; re-run tidewater bake");
             const SquareRegion region = detail::lake_basin_region(out.bodies.lakes[l]);
-            auto model = load_shore_bake(dir / lake_shore_folders[l], scene.lakes[l].body.waves(), out.bodies.lakes[l].level,
-                                         out.bodies.terrain, &region);
+            auto model = load_shore_bake(dir / lake_shore_folders[l], scene.lakes[l].body.waves(),
+                                         out.bodies.lakes[l].level, out.bodies.terrain, &region);
             if (!model) {
                 Error e = model.error();
                 e.message = fmt::format("lake \"{}\": {}", scene.lakes[l].name, e.message);

@@ -36,12 +36,14 @@ RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
 }
 
 bool cut_touches(const TerrainCut& cut, const FieldGrid& grid) {
-    const glm::dvec2 lo = cut.corner - glm::dvec2(cut.texel), hi = cut.corner + cut.texel * glm::dvec2(cut.nx + 1, cut.nz + 1);
+    const glm::dvec2 lo = cut.corner - glm::dvec2(cut.texel),
+                     hi = cut.corner + cut.texel * glm::dvec2(cut.nx + 1, cut.nz + 1);
     const glm::dvec2 glo = grid.corner, ghi = grid.corner + grid.texel * glm::dvec2(grid.nx, grid.nz);
     return lo.x < ghi.x && glo.x < hi.x && lo.y < ghi.y && glo.y < hi.y;
 }
 
-std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const FieldGrid& grid) {
+std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts,
+                                                          const FieldGrid& grid) {
     std::vector<std::shared_ptr<const TerrainCut>> out;
     for (const auto& c : cuts)
         if (c && cut_touches(*c, grid)) out.push_back(c);
@@ -50,10 +52,14 @@ std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std:
 
 const char* river_end_name(RiverEnd end) {
     switch (end) {
-        case RiverEnd::ocean: return "ocean";
-        case RiverEnd::lake: return "lake";
-        case RiverEnd::river: return "river";
-        case RiverEnd::domain_edge: break;
+        case RiverEnd::ocean:
+            return "ocean";
+        case RiverEnd::lake:
+            return "lake";
+        case RiverEnd::river:
+            return "river";
+        case RiverEnd::domain_edge:
+            break;
     }
     return "domain_edge";
 }
@@ -78,12 +84,14 @@ bool LakeBake::holds(glm::dvec2 p, double terrain_height) const {
     return false;
 }
 
-void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight) {
+void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight,
+                       const std::vector<float>& still_weight) {
     const std::size_t n = river.grid.size();
     river.query_texels.assign(n * gpu::kRiverQueryStride, 0.0f);
     for (std::size_t t = 0; t < n; ++t) {
         float* q = river.query_texels.data() + t * gpu::kRiverQueryStride;
-        q[gpu::kRiverQuerySurface] = static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
+        q[gpu::kRiverQuerySurface] =
+            static_cast<float>(static_cast<double>(river.surface_height[t]) - river.mouth_level);
         q[gpu::kRiverQueryDepth] = river.depth[t];
         q[gpu::kRiverQueryTangentX] = river.tangent_x[t];
         q[gpu::kRiverQueryTangentZ] = river.tangent_z[t];

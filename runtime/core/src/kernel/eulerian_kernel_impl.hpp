@@ -14,10 +14,10 @@
 #endif
 
 #include <immintrin.h>
-#include <xsimd/xsimd.hpp>
 
 #include <cstddef>
 #include <type_traits>
+#include <xsimd/xsimd.hpp>
 
 #include "kernel/kernel_waves.hpp"
 #include "tidewater/detail/newton.hpp"
@@ -33,7 +33,9 @@ using FloatBatch = xsimd::batch<float, Arch>;
 
 /// Square transposes in registers, rows[l][c] -> rows[c][l], for the batch widths the
 /// kernels are built for.
-inline void transpose_registers(__m128 (&rows)[4]) { _MM_TRANSPOSE4_PS(rows[0], rows[1], rows[2], rows[3]); }
+inline void transpose_registers(__m128 (&rows)[4]) {
+    _MM_TRANSPOSE4_PS(rows[0], rows[1], rows[2], rows[3]);
+}
 
 #ifdef __AVX__
 inline void transpose_registers(__m256 (&rows)[8]) {
@@ -97,7 +99,6 @@ struct NumberOps<TIDEWATER_KERNEL_NS::FloatBatch> {
     static T select(const Mask& m, const T& a, const T& b) { return xsimd::select(m, a, b); }
     static bool any(const Mask& m) { return xsimd::any(m); }
     static bool all(const Mask& m) { return xsimd::all(m); }
-
 };
 
 }  // namespace tidewater::detail
@@ -123,8 +124,9 @@ WakeLanes wake_lanes(const Water& water, const PreparedWakes<float>& wakes) {
 /// Writes the first `used` lanes of a solve of `water`. Full results also carry the foam
 /// the particles remember, from the waves' earlier compression at their rest positions.
 template <bool kFull, typename Water>
-void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, Water& water, const ShoreWater<FloatBatch>* shore,
-                   std::size_t used, SurfacePoint* full, double* heights, const WakeLanes* wakes) {
+void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, Water& water,
+                   const ShoreWater<FloatBatch>* shore, std::size_t used, SurfacePoint* full, double* heights,
+                   const WakeLanes* wakes) {
     if constexpr (!kFull) {
         double eta[kLanes];
         store_lanes(point_state(r).eta, eta);
@@ -147,7 +149,8 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, Wat
             o.depth = shore ? depth[l] : kDeepWater;
             o.shore_distance = shore ? distance[l] : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
-            o.foam = surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), in.waves->whitecap_jacobian);
+            o.foam =
+                surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), in.waves->whitecap_jacobian);
             if (wakes) {
                 o.wake = wakes->eta[l];
                 o.foam = o.foam > wakes->foam[l] ? o.foam : wakes->foam[l];
@@ -197,7 +200,8 @@ void solve_points(const KernelInput& in, const glm::dvec2* points, std::size_t n
             const double radius = w.radius + in.wakes->displacement_bound;
             if (in.shore) {
                 ShoreWater<FloatBatch> shore(w, *in.shore, px, pz, base);
-                WakeWater<ShoreWater<FloatBatch>, FloatBatch, float> water(shore, *in.wakes, Ops::load(wx), Ops::load(wz));
+                WakeWater<ShoreWater<FloatBatch>, FloatBatch, float> water(shore, *in.wakes, Ops::load(wx),
+                                                                           Ops::load(wz));
                 const auto r = solve_rest_offset<kFull, FloatBatch>(water, w.tolerance, radius);
                 const WakeLanes lanes = wake_lanes(water, *in.wakes);
                 write_results<kFull>(in, r, water, &shore, used, out_full, out_heights, &lanes);

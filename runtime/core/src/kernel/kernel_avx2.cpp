@@ -4,5 +4,7 @@
 #include "kernel/eulerian_kernel_impl.hpp"
 
 namespace tidewater::detail::kernel_avx2 {
-const char* name() { return Arch::name(); }
+const char* name() {
+    return Arch::name();
+}
 }  // namespace tidewater::detail::kernel_avx2

@@ -3,5 +3,7 @@
 #include "kernel/eulerian_kernel_impl.hpp"
 
 namespace tidewater::detail::kernel_sse2 {
-const char* name() { return Arch::name(); }
+const char* name() {
+    return Arch::name();
+}
 }  // namespace tidewater::detail::kernel_sse2

@@ -2,14 +2,13 @@
 #pragma once
 
 #include <cstddef>
-
 #include <glm/vec2.hpp>
 
-#include "tidewater/query.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/surface_foam.hpp"
-#include "water/prepared_waves.hpp"
 #include "tidewater/detail/wake_water.hpp"
+#include "tidewater/query.hpp"
+#include "water/prepared_waves.hpp"
 
 namespace tidewater::detail {
 

@@ -36,7 +36,8 @@ Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats) {
     boats.clear();
     if (!scene.has("boats")) return {};
     const json& list = scene.at("boats");
-    if (!list.is_array()) return scene.error("boats", fmt::format("expected an array of objects, found {}", json_type_name(list)));
+    if (!list.is_array())
+        return scene.error("boats", fmt::format("expected an array of objects, found {}", json_type_name(list)));
     std::size_t points = 0;
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string at = fmt::format("{}/{}", scene.child_path("boats"), i);
@@ -44,10 +45,11 @@ Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats) {
         if (!boat) return boat.error();
         points += boat_wake_points(boat->hull, boat->speed);
         if (points > gpu::kMaxWakePoints)
-            return scene.error(fmt::format("boats/{}", i),
-                               fmt::format("the boats' wakes would hold {} disturbance points, more than the {} a frame may hold "
-                                           "(a faster or shorter boat lays more: points are every length / 8 of track)",
-                                           points, gpu::kMaxWakePoints));
+            return scene.error(
+                fmt::format("boats/{}", i),
+                fmt::format("the boats' wakes would hold {} disturbance points, more than the {} a frame may hold "
+                            "(a faster or shorter boat lays more: points are every length / 8 of track)",
+                            points, gpu::kMaxWakePoints));
         boats.push_back(std::move(boat).value());
     }
     return {};

@@ -1,6 +1,7 @@
 // The scene's lakes and rivers: JSON -> SceneLake / SceneRiver. Schema: docs/scene-format.md.
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <set>
 
 #include "scene/scene_json_parts.hpp"
@@ -11,7 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kMaxCoordinate = 1e7;   // m, as for camera and terrain centres
+constexpr double kMaxCoordinate = 1e7;  // m, as for camera and terrain centres
 constexpr std::size_t kMaxPathPoints = 4096;
 
 Status read_name(const ObjectReader& r, std::string& name) {
@@ -28,7 +29,9 @@ Result<WaterBody> read_body(const ObjectReader& r, const char* default_preset, d
     return WaterBody::create(*profile, level, r.context("preset"), &warnings);
 }
 
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+double cross(glm::dvec2 a, glm::dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 /// Whether segments ab and cd share a point.
 bool segments_meet(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
@@ -47,7 +50,8 @@ Status check_simple(const ObjectReader& r, const std::vector<glm::dvec2>& path) 
     for (std::size_t i = 0; i + 1 < n; ++i) {
         for (std::size_t j = i + 2; j + 1 < n; ++j) {
             if (segments_meet(path[i], path[i + 1], path[j], path[j + 1]))
-                return r.error("path", fmt::format("crosses itself: segment {}-{} meets segment {}-{}", i, i + 1, j, j + 1));
+                return r.error("path",
+                               fmt::format("crosses itself: segment {}-{} meets segment {}-{}", i, i + 1, j, j + 1));
         }
     }
     return {};
@@ -61,7 +65,8 @@ Status read_width(const ObjectReader& r, std::size_t points, std::vector<double>
         values.assign(points, v.get<double>());
     } else if (v.is_array()) {
         if (v.size() != points)
-            return r.error("width", fmt::format("{} widths for {} path points (give one number or one per point)", v.size(), points));
+            return r.error("width", fmt::format("{} widths for {} path points (give one number or one per point)",
+                                                v.size(), points));
         for (const json& w : v) {
             if (!w.is_number()) return r.error("width", fmt::format("expected numbers, found {}", json_type_name(w)));
             values.push_back(w.get<double>());
@@ -99,7 +104,8 @@ Result<SceneRiver> read_river(const json& value, const std::string& source, cons
                               const std::filesystem::path& base_dir, std::vector<std::string>& warnings) {
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
-    if (auto st = r->allow_only({"name", "path", "width", "discharge", "manning", "preset", "carve"}); !st) return st.error();
+    if (auto st = r->allow_only({"name", "path", "width", "discharge", "manning", "preset", "carve"}); !st)
+        return st.error();
     SceneRiver river;
     if (auto st = read_name(*r, river.name); !st) return st.error();
     if (auto st = read_path(*r, river.path); !st) return st.error();
@@ -125,10 +131,12 @@ Status read_list(const ObjectReader& scene, const char* key, const std::filesyst
     out.clear();
     if (!scene.has(key)) return {};
     const json& list = scene.at(key);
-    if (!list.is_array()) return scene.error(key, fmt::format("expected an array of objects, found {}", json_type_name(list)));
+    if (!list.is_array())
+        return scene.error(key, fmt::format("expected an array of objects, found {}", json_type_name(list)));
     if (list.size() > 255) return scene.error(key, fmt::format("{} given, at most 255 allowed", list.size()));
     for (std::size_t i = 0; i < list.size(); ++i) {
-        auto body = read_one(list[i], scene.source(), fmt::format("{}/{}", scene.child_path(key), i), base_dir, warnings);
+        auto body =
+            read_one(list[i], scene.source(), fmt::format("{}/{}", scene.child_path(key), i), base_dir, warnings);
         if (!body) return body.error();
         out.push_back(std::move(body).value());
     }
@@ -151,7 +159,8 @@ Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path) {
         if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
             return r.error(at, "expected [x, z], two numbers");
         const glm::dvec2 p{v[0].get<double>(), v[1].get<double>()};
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > kMaxCoordinate ||
+            std::abs(p.y) > kMaxCoordinate)
             return r.error(at, fmt::format("[{}, {}] is out of range (allowed: |value| <= 1e7 m)", p.x, p.y));
         if (!path.empty() && std::hypot(p.x - path.back().x, p.y - path.back().y) < 1e-3)
             return r.error(at, "repeats the point before it (points must be at least 1 mm apart)");

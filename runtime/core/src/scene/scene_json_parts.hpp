@@ -2,11 +2,10 @@
 #pragma once
 
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/detail/json_reader.hpp"
 #include "tidewater/scene.hpp"

@@ -1,15 +1,16 @@
 // Loading saved shore bakes (the writer is Tidewater::bake's, shore_bake_write.cpp).
 #include "tidewater/detail/shore_bake_folder.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "tidewater/detail/bake_files.hpp"
-#include "tidewater/detail/json_reader.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/bake_files.hpp"
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/detail/json_reader.hpp"
 
 namespace tidewater {
 
@@ -22,7 +23,9 @@ Result<std::vector<float>> read_field(const fs::path& dir, const ObjectReader& f
     return detail::read_field_png(dir, fields, name, n, n);
 }
 
-bool close(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+bool close(double a, double b) {
+    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
 
 }  // namespace
 
@@ -36,8 +39,10 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     double level = 0.0;
     if (auto st = root->number("water_level_m", level, true); !st) return st.error();
     if (!close(level, water_level))
-        return root->error("water_level_m",
-                           fmt::format("the bake was made at water level {} m, the scene's is {} m: re-run tidewater bake", level, water_level));
+        return root->error(
+            "water_level_m",
+            fmt::format("the bake was made at water level {} m, the scene's is {} m: re-run tidewater bake", level,
+                        water_level));
     if (!root->has("model")) return root->error("model", "is missing");
     auto model = ObjectReader::open(root->at("model"), root->source(), "/model");
     if (!model) return model.error();
@@ -54,10 +59,13 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     // The grid covers the terrain's extent (or the region), as bake_scene's own bake would.
     const double half = region ? region->half_size : terrain.extent_half_size();
     const glm::dvec2 corner = (region ? region->center : terrain.extent_center()) - glm::dvec2(half);
-    if (!close(f.texel * static_cast<double>(n), 2.0 * half) || !close(f.corner.x, corner.x) || !close(f.corner.y, corner.y))
-        return model->error("corner_m", fmt::format("the bake covers {} m from ({}, {}), the terrain {} m from ({}, {}): "
-                                                    "it was made for another terrain; re-run tidewater bake",
-                                                    f.texel * static_cast<double>(n), f.corner.x, f.corner.y, 2.0 * half, corner.x, corner.y));
+    if (!close(f.texel * static_cast<double>(n), 2.0 * half) || !close(f.corner.x, corner.x) ||
+        !close(f.corner.y, corner.y))
+        return model->error(
+            "corner_m",
+            fmt::format("the bake covers {} m from ({}, {}), the terrain {} m from ({}, {}): "
+                        "it was made for another terrain; re-run tidewater bake",
+                        f.texel * static_cast<double>(n), f.corner.x, f.corner.y, 2.0 * half, corner.x, corner.y));
 
     // The waves must be the ones baked for: the fields depend on each one's frequency,
     // direction, amplitude (breaking) and steepness (the fold limit).
@@ -65,7 +73,8 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     const auto& list = model->at("waves");
     const auto set = waves.waves();
     if (list.size() != set.size())
-        return model->error("waves", fmt::format("the bake has {} waves, the scene's ocean {}: re-run tidewater bake", list.size(), set.size()));
+        return model->error("waves", fmt::format("the bake has {} waves, the scene's ocean {}: re-run tidewater bake",
+                                                 list.size(), set.size()));
     for (std::size_t i = 0; i < set.size(); ++i) {
         auto w = ObjectReader::open(list[i], model->source(), fmt::format("/model/waves/{}", i));
         if (!w) return w.error();
@@ -79,12 +88,14 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         const Wave& s = set[i];
         if (!close(omega, s.omega) || !close(amplitude, s.amplitude) || !close(steepness, s.steepness) ||
             !close(dir_json[0].get<double>(), s.dir_x) || !close(dir_json[1].get<double>(), s.dir_z))
-            return w->error("", "differs from the scene's wave " + std::to_string(i) + ": the bake was made for other waves; re-run tidewater bake");
+            return w->error("", "differs from the scene's wave " + std::to_string(i) +
+                                    ": the bake was made for other waves; re-run tidewater bake");
         if (!w->has("fields")) return w->error("fields", "is missing");
         auto fields = ObjectReader::open(w->at("fields"), w->source(), w->child_path("fields"));
         if (!fields) return fields.error();
         std::vector<float>* targets[] = {nullptr, nullptr, nullptr, nullptr};
-        f.phase_residual.emplace_back(), f.amplitude_factor.emplace_back(), f.wavevector_x.emplace_back(), f.wavevector_z.emplace_back();
+        f.phase_residual.emplace_back(), f.amplitude_factor.emplace_back(), f.wavevector_x.emplace_back(),
+            f.wavevector_z.emplace_back();
         targets[0] = &f.phase_residual.back(), targets[1] = &f.amplitude_factor.back();
         targets[2] = &f.wavevector_x.back(), targets[3] = &f.wavevector_z.back();
         const char* names[] = {"phase_residual", "amplitude_factor", "wavevector_x", "wavevector_z"};
@@ -97,8 +108,10 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     if (!model->has("fields")) return model->error("fields", "is missing");
     auto fields = ObjectReader::open(model->at("fields"), model->source(), "/model/fields");
     if (!fields) return fields.error();
-    std::pair<const char*, std::vector<float>*> shared[] = {
-        {"depth", &f.depth}, {"shore_distance", &f.shore_distance}, {"breaking", &f.breaking}, {"steepness_scale", &f.steepness_scale}};
+    std::pair<const char*, std::vector<float>*> shared[] = {{"depth", &f.depth},
+                                                            {"shore_distance", &f.shore_distance},
+                                                            {"breaking", &f.breaking},
+                                                            {"steepness_scale", &f.steepness_scale}};
     for (auto& [name, target] : shared) {
         auto values = read_field(dir, *fields, name, f.resolution);
         if (!values) return values.error();
@@ -110,10 +123,15 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         for (int i = 0; i < f.resolution; ++i) {
             const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
             const double depth = water_level - terrain.height_at(p);
-            const double stored = static_cast<double>(f.depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(f.resolution) + static_cast<std::size_t>(i)]);
+            const double stored =
+                static_cast<double>(f.depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(f.resolution) +
+                                            static_cast<std::size_t>(i)]);
             if (!(std::abs(depth - stored) <= tolerance))
-                return fields->error("depth", fmt::format("the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
-                                                          "the bake says {:.3f} m): re-run tidewater bake", depth, p.x, p.y, stored));
+                return fields->error(
+                    "depth",
+                    fmt::format("the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
+                                "the bake says {:.3f} m): re-run tidewater bake",
+                                depth, p.x, p.y, stored));
         }
     auto made = ShoreWaves::from_fields(std::move(f), set.size());
     if (!made) {

@@ -1,14 +1,15 @@
 #include "tidewater/detail/shore_waves.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include "tidewater/constants.hpp"
-#include "tidewater/dispersion.hpp"
 #include "tidewater/detail/grid_taps.hpp"
+#include "tidewater/dispersion.hpp"
 
 namespace tidewater {
 
@@ -28,29 +29,38 @@ bool all_deep_and_unchanged(const ShoreWaveFields& f) {
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::size_t wave_count) {
     const int n = fields.resolution;
-    if (n < 2 || n > 8192) return Error{ErrorCode::invalid_argument, fmt::format("shore fields: resolution {} is out of range (2 to 8192)", n)};
-    if (!(fields.texel > 0.0) || !std::isfinite(fields.texel) || !std::isfinite(fields.corner.x) || !std::isfinite(fields.corner.y))
+    if (n < 2 || n > 8192)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore fields: resolution {} is out of range (2 to 8192)", n)};
+    if (!(fields.texel > 0.0) || !std::isfinite(fields.texel) || !std::isfinite(fields.corner.x) ||
+        !std::isfinite(fields.corner.y))
         return Error{ErrorCode::invalid_argument, "shore fields: the texel size and corner must be finite (texel > 0)"};
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     auto check = [&](const std::vector<float>& grid, const std::string& name) -> Status {
         if (grid.size() != count)
-            return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} has {} values, expected {}x{}", name, grid.size(), n, n)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("shore fields: {} has {} values, expected {}x{}", name, grid.size(), n, n)};
         for (float v : grid)
-            if (!std::isfinite(v)) return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} has a non-finite value", name)};
+            if (!std::isfinite(v))
+                return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} has a non-finite value", name)};
         return {};
     };
     const std::pair<const std::vector<std::vector<float>>*, const char*> per_wave[] = {
-        {&fields.phase_residual, "phase_residual"}, {&fields.amplitude_factor, "amplitude_factor"},
-        {&fields.wavevector_x, "wavevector_x"}, {&fields.wavevector_z, "wavevector_z"}};
+        {&fields.phase_residual, "phase_residual"},
+        {&fields.amplitude_factor, "amplitude_factor"},
+        {&fields.wavevector_x, "wavevector_x"},
+        {&fields.wavevector_z, "wavevector_z"}};
     for (const auto& [grids, name] : per_wave) {
         if (grids->size() != wave_count)
-            return Error{ErrorCode::invalid_argument, fmt::format("shore fields: {} {} fields for {} waves", grids->size(), name, wave_count)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("shore fields: {} {} fields for {} waves", grids->size(), name, wave_count)};
         for (std::size_t w = 0; w < grids->size(); ++w)
             if (auto st = check((*grids)[w], fmt::format("wave {} {}", w, name)); !st) return st.error();
     }
-    const std::pair<const std::vector<float>*, const char*> shared[] = {
-        {&fields.depth, "depth"}, {&fields.shore_distance, "shore_distance"}, {&fields.breaking, "breaking"},
-        {&fields.steepness_scale, "steepness_scale"}};
+    const std::pair<const std::vector<float>*, const char*> shared[] = {{&fields.depth, "depth"},
+                                                                        {&fields.shore_distance, "shore_distance"},
+                                                                        {&fields.breaking, "breaking"},
+                                                                        {&fields.steepness_scale, "steepness_scale"}};
     for (const auto& [grid, name] : shared)
         if (auto st = check(*grid, name); !st) return st.error();
     auto out = std::make_shared<ShoreWaves>();

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater::detail {
 
@@ -21,7 +21,8 @@ PointBody BodyFinder::find(glm::dvec2 p) const {
                 // Mouth texels blend with the still water: the plume's evaluation answers them.
                 const bool blends = texel == static_cast<std::uint8_t>(RiverTexel::mouth);
                 const RiverSample at = sample_river(river, p);
-                return {{BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, blends)};
+                return {
+                    {BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, blends)};
             }
             if (texel == static_cast<std::uint8_t>(RiverTexel::plume) && plume_river < 0) plume_river = index;
         }
@@ -29,7 +30,8 @@ PointBody BodyFinder::find(glm::dvec2 p) const {
     if (plume_river >= 0) {
         const RiverBake& river = bodies_->rivers[static_cast<std::size_t>(plume_river)];
         const RiverSample at = sample_river(river, p);
-        const BodyRef still = river.end == RiverEnd::lake ? BodyRef{BodyKind::lake, river.receiver} : BodyRef{BodyKind::ocean, -1};
+        const BodyRef still =
+            river.end == RiverEnd::lake ? BodyRef{BodyKind::lake, river.receiver} : BodyRef{BodyKind::ocean, -1};
         return {still, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(plume_river, true)};
     }
     const double ground = (bodies_ != nullptr ? bodies_->terrain : scene_.terrain).height_at(p);
@@ -82,8 +84,9 @@ WorldPoint world_point(const Scene& scene, const EvaluationKey& key, const Point
     out.flow = flow;
     const bool still = key.kind == EvaluationKind::ocean || key.kind == EvaluationKind::lake;
     if (still && !std::isfinite(surface.depth) && !std::isnan(at.ground)) {
-        const double level = key.kind == EvaluationKind::ocean ? scene.water_level()
-                                                               : scene.lakes[static_cast<std::size_t>(key.lake)].body.level();
+        const double level = key.kind == EvaluationKind::ocean
+                                 ? scene.water_level()
+                                 : scene.lakes[static_cast<std::size_t>(key.lake)].body.level();
         out.surface.depth = level - at.ground;
         out.surface.wet = surface_wet(out.surface.height, level, out.surface.depth);
     }
@@ -96,11 +99,13 @@ const WaterBody& still_body(const Scene& scene, const RiverBake& river) {
 }
 
 template <typename Scalar>
-RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake& bodies, const EvaluationKey& key, double time,
-                                       PreparedWaves<Scalar>& river_waves, PreparedWaves<Scalar>& still_waves) {
+RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake& bodies, const EvaluationKey& key,
+                                       double time, PreparedWaves<Scalar>& river_waves,
+                                       PreparedWaves<Scalar>& still_waves) {
     const SceneRiver& river = scene.rivers[static_cast<std::size_t>(key.river)];
     const RiverBake& baked = bodies.rivers[static_cast<std::size_t>(key.river)];
-    river_waves = prepare_river_waves<Scalar>(river.body.waves(), river.body.local_time(time), baked.mouth_level, baked.mean_speed);
+    river_waves = prepare_river_waves<Scalar>(river.body.waves(), river.body.local_time(time), baked.mouth_level,
+                                              baked.mean_speed);
     river_waves.whitecap_jacobian = river.body.whitecap_jacobian();
     RiverInput<Scalar> in;
     in.river = &baked;
@@ -114,9 +119,9 @@ RiverInput<Scalar> prepare_river_input(const Scene& scene, const WaterBodiesBake
     return in;
 }
 
-template RiverInput<float> prepare_river_input<float>(const Scene&, const WaterBodiesBake&, const EvaluationKey&, double,
-                                                      PreparedWaves<float>&, PreparedWaves<float>&);
-template RiverInput<double> prepare_river_input<double>(const Scene&, const WaterBodiesBake&, const EvaluationKey&, double,
-                                                        PreparedWaves<double>&, PreparedWaves<double>&);
+template RiverInput<float> prepare_river_input<float>(const Scene&, const WaterBodiesBake&, const EvaluationKey&,
+                                                      double, PreparedWaves<float>&, PreparedWaves<float>&);
+template RiverInput<double> prepare_river_input<double>(const Scene&, const WaterBodiesBake&, const EvaluationKey&,
+                                                        double, PreparedWaves<double>&, PreparedWaves<double>&);
 
 }  // namespace tidewater::detail

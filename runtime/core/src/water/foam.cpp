@@ -8,14 +8,16 @@
 namespace tidewater {
 
 double crest_foam(double jacobian, double whitecap_jacobian) {
-    const double half_width = 0.5 * static_cast<double>(gpu::kFoamRampFraction) * std::max(1.0 - whitecap_jacobian, 0.0);
+    const double half_width =
+        0.5 * static_cast<double>(gpu::kFoamRampFraction) * std::max(1.0 - whitecap_jacobian, 0.0);
     if (!(half_width > 0.0)) return jacobian < whitecap_jacobian ? 1.0 : 0.0;
     const double t = std::clamp((whitecap_jacobian + half_width - jacobian) / (2.0 * half_width), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
 }
 
 double detail::foam_memory_weight(std::size_t lag) {
-    return std::exp(-static_cast<double>(lag) * static_cast<double>(gpu::kFoamLagStep) / static_cast<double>(gpu::kFoamDecayTime));
+    return std::exp(-static_cast<double>(lag) * static_cast<double>(gpu::kFoamLagStep) /
+                    static_cast<double>(gpu::kFoamDecayTime));
 }
 
 double detail::remembered_foam(const std::array<double, kFoamLags>& lagged_jacobians, double whitecap_jacobian) {

@@ -11,7 +11,7 @@ namespace tidewater::detail {
 /// With kRecordPhases, full evaluations keep their sines in a RecordedPhases for `lagged`.
 template <typename T, bool kRecordPhases = false>
 class OpenSeaWater {
-public:
+  public:
     using Ops = NumberOps<T>;
     using Scalar = typename Ops::Scalar;
 
@@ -33,7 +33,8 @@ public:
             phases_->ez_last = ez;
             return s;
         }
-        each_wave(ex, ez, [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
+        each_wave(ex, ez,
+                  [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
         return s;
     }
 
@@ -58,19 +59,20 @@ public:
         if constexpr (kRecordPhases) phases_->keep(m, w_.count);
     }
 
-private:
+  private:
     /// Calls add(i, wave i's term, its phase) for every wave at rest offset e.
     template <typename Add>
     void each_wave(const T& ex, const T& ez, Add&& add) const {
         for (std::size_t i = 0; i < w_.count; ++i) {
-            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * Ops::kLanes)));
+            const T theta =
+                Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * Ops::kLanes)));
             add(i, broadcast(w_.open_sea[i]), theta);
         }
     }
 
     static WaveTerm<T> broadcast(const WaveTerm<Scalar>& w) {
-        return {T(w.a), T(w.ak_x), T(w.ak_z), T(w.qa_x), T(w.qa_z), T(w.qak_xx), T(w.qak_xz), T(w.qak_zz),
-                T(w.qaw_x), T(w.qaw_z), T(w.aw)};
+        return {T(w.a),      T(w.ak_x),   T(w.ak_z),  T(w.qa_x),  T(w.qa_z), T(w.qak_xx),
+                T(w.qak_xz), T(w.qak_zz), T(w.qaw_x), T(w.qaw_z), T(w.aw)};
     }
 
     const PreparedWaves<Scalar>& w_;

@@ -5,8 +5,8 @@
 #include <array>
 #include <cstddef>
 
-#include "tidewater/query.hpp"
 #include "tidewater/detail/newton.hpp"
+#include "tidewater/query.hpp"
 
 namespace tidewater::detail {
 

@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "host_device.h"
-
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
-#include "tidewater/detail/newton.hpp"
 
 namespace tidewater::detail {
 
@@ -47,8 +46,8 @@ PreparedWaves<Scalar> prepare_waves(const WaveSet& set, double local_time, doubl
         const WaveTerm<double> t = wave_term<double>(kx, kz, w.amplitude, w.steepness, w.omega);
         p.open_sea.push_back({static_cast<Scalar>(t.a), static_cast<Scalar>(t.ak_x), static_cast<Scalar>(t.ak_z),
                               static_cast<Scalar>(t.qa_x), static_cast<Scalar>(t.qa_z), static_cast<Scalar>(t.qak_xx),
-                              static_cast<Scalar>(t.qak_xz), static_cast<Scalar>(t.qak_zz), static_cast<Scalar>(t.qaw_x),
-                              static_cast<Scalar>(t.qaw_z), static_cast<Scalar>(t.aw)});
+                              static_cast<Scalar>(t.qak_xz), static_cast<Scalar>(t.qak_zz),
+                              static_cast<Scalar>(t.qaw_x), static_cast<Scalar>(t.qaw_z), static_cast<Scalar>(t.aw)});
         max_offset += w.steepness * w.amplitude;
     }
     p.max_offset = max_offset;

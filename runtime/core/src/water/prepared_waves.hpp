@@ -17,10 +17,10 @@ namespace tidewater::detail {
 template <typename Scalar>
 struct PreparedWaves {
     std::size_t count = 0;
-    std::vector<double> kx, kz;        ///< k D, rad/m, for the phase at the query point
-    std::vector<double> offset;        ///< phase - omega t, reduced to [-pi, pi)
-    std::vector<Scalar> kx_s, kz_s;    ///< k D for the rest offset
-    std::vector<WaveTerm<Scalar>> open_sea;  ///< each wave's coefficients in open water
+    std::vector<double> kx, kz;                       ///< k D, rad/m, for the phase at the query point
+    std::vector<double> offset;                       ///< phase - omega t, reduced to [-pi, pi)
+    std::vector<Scalar> kx_s, kz_s;                   ///< k D for the rest offset
+    std::vector<WaveTerm<Scalar>> open_sea;           ///< each wave's coefficients in open water
     std::vector<Scalar> amplitude, steepness, omega;  ///< what a shore reshapes
     /// sin and cos of omega tau_l for wave i's lag l at [i * kFoamLags + l] (add_wave_lags)
     std::vector<Scalar> lag_sin, lag_cos;

@@ -4,13 +4,13 @@
 #include <array>
 
 #include "kernel/kernel_waves.hpp"
+#include "tidewater/baked_scene.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/query.hpp"
-#include "tidewater/baked_scene.hpp"
 #include "water/body_at.hpp"
-#include "tidewater/detail/newton.hpp"
-#include "water/river_solve.hpp"
 #include "water/open_sea_water.hpp"
+#include "water/river_solve.hpp"
 #include "water/shore_water.hpp"
 
 namespace tidewater::reference {
@@ -58,8 +58,12 @@ WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) 
     const detail::EvaluationKey key = finder.evaluation_key(at.evaluation);
     SurfacePoint surface;
     switch (key.kind) {
-        case detail::EvaluationKind::land: surface = detail::land_surface(scene, point); break;
-        case detail::EvaluationKind::ocean: surface = reference::query_point(scene.ocean, time, point); break;
+        case detail::EvaluationKind::land:
+            surface = detail::land_surface(scene, point);
+            break;
+        case detail::EvaluationKind::ocean:
+            surface = reference::query_point(scene.ocean, time, point);
+            break;
         case detail::EvaluationKind::lake:
             surface = reference::query_point(scene.lakes[static_cast<std::size_t>(key.lake)].body, time, point);
             break;

@@ -7,15 +7,14 @@
 
 #include <algorithm>
 #include <cstddef>
-
 #include <glm/vec2.hpp>
 
 #include "kernel/kernel_waves.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/newton.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/query.hpp"
-#include "tidewater/detail/newton.hpp"
 #include "water/open_sea_water.hpp"
 #include "water/point_lanes.hpp"
 #include "water/prepared_waves.hpp"
@@ -70,7 +69,8 @@ void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, cons
     RiverWater<T> river(*in.river_waves, *in.river, px, pz, river_base);
     if (!plume) {
         const auto r = solve_rest_offset<true, T>(river, in.river_waves->tolerance, in.river_waves->radius);
-        river_solve_impl::write_points(r, river, in.river_waves->level, in.river_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
+        river_solve_impl::write_points(r, river, in.river_waves->level, in.river_waves->whitecap_jacobian, at, nullptr,
+                                       nullptr, used, out);
         return;
     }
     const double max_offset = in.river_waves->max_offset + in.still_waves->max_offset;
@@ -82,12 +82,14 @@ void solve_river_batch(const RiverInput<typename NumberOps<T>::Scalar>& in, cons
         double breaking[kLanes], distance[kLanes];
         store_lanes(still.breaking, breaking);
         store_lanes(still.shore_distance_at_point, distance);
-        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, breaking, distance, used, out);
+        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, breaking,
+                                       distance, used, out);
     } else {
         OpenSeaWater<T> still(*in.still_waves, still_base);
         PlumeWater<T, OpenSeaWater<T>> water(river, still);
         const auto r = solve_rest_offset<true, T>(water, tolerance, radius);
-        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, nullptr, nullptr, used, out);
+        river_solve_impl::write_points(r, water, in.still_waves->level, in.still_waves->whitecap_jacobian, at, nullptr,
+                                       nullptr, used, out);
     }
 }
 

@@ -30,7 +30,7 @@ namespace tidewater::detail {
 
 template <typename T>
 class RiverWater {
-public:
+  public:
     using Ops = NumberOps<T>;
     using Scalar = typename Ops::Scalar;
     using Mask = typename Ops::Mask;
@@ -49,14 +49,16 @@ public:
         const T len2 = tx_ * tx_ + tz_ * tz_;
         const T inv_len = Ops::inv_sqrt(Ops::select(len2 > constant<T>(kVanishingSquare), len2, one));
         const T tx = tx_ * inv_len, tz = tz_ * inv_len;
-        const T depth_ramp = Ops::select(depth_ > zero, Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, one), zero);
+        const T depth_ramp =
+            Ops::select(depth_ > zero, Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, one), zero);
         const T ramp = depth_ramp * weight_;
         SurfaceSums<T> s;
         for (std::size_t i = 0; i < w_.count; ++i) {
             const T ks(w_.kx_s[i]), kn(w_.kz_s[i]);
             const T kx = ks * tx - kn * tz, kz = ks * tz + kn * tx;
             const T theta = Ops::mul_add(kx, ex, Ops::mul_add(kz, ez, Ops::load(base_ + i * kLanes)));
-            add_wave<kVelocity>(s, wave_term<T>(kx, kz, T(w_.amplitude[i]) * ramp, T(w_.steepness[i]), T(w_.omega[i])), theta);
+            add_wave<kVelocity>(s, wave_term<T>(kx, kz, T(w_.amplitude[i]) * ramp, T(w_.steepness[i]), T(w_.omega[i])),
+                                theta);
         }
         // The surface above the mouth level: it reaches 0 at the mouth and stays 0 through
         // the plume, whose still water is at that level.
@@ -82,7 +84,7 @@ public:
     /// river and on land, rising to 1 over the blend width of still water.
     const T& still_weight() const { return still_weight_; }
 
-private:
+  private:
     /// Samples the fields at every lane's rest position (p + e), in double per lane.
     void sample(const T& ex, const T& ez) {
         alignas(64) Scalar exs[kLanes], ezs[kLanes];
@@ -135,7 +137,7 @@ private:
 /// across the mouth and the shore beside it. A provider for solve_rest_offset.
 template <typename T, typename Still>
 class PlumeWater {
-public:
+  public:
     using Mask = typename NumberOps<T>::Mask;
 
     PlumeWater(RiverWater<T>& river, Still& still) : river_(river), still_(still) {}
@@ -158,7 +160,7 @@ public:
 
     void record(Mask m) { still_.record(m); }
 
-private:
+  private:
     RiverWater<T>& river_;
     Still& still_;
 };

@@ -11,7 +11,9 @@ namespace {
 
 /// Texels per tile side: 4, or more on fine grids so that there are at most 256 tiles
 /// per side (the counting sort's buckets stay small).
-int tile_texels(int resolution) { return std::max(4, (resolution + 255) / 256); }
+int tile_texels(int resolution) {
+    return std::max(4, (resolution + 255) / 256);
+}
 
 std::size_t tile_of(double coordinate, double corner, double texel, int tile, int tiles) {
     const double t = (coordinate - corner) / (texel * tile);

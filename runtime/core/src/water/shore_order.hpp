@@ -6,10 +6,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 namespace tidewater {
 class ShoreWaves;

@@ -16,15 +16,15 @@
 
 #include "host_device.h"
 #include "tidewater/constants.hpp"
-#include "tidewater/detail/water_point.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/water_point.hpp"
 #include "water/prepared_waves.hpp"
 
 namespace tidewater::detail {
 
 template <typename T>
 class ShoreWater {
-public:
+  public:
     using Ops = NumberOps<T>;
     using Scalar = typename Ops::Scalar;
     using Mask = typename Ops::Mask;
@@ -35,8 +35,12 @@ public:
     /// (px, pz) are the query points, world m.
     ShoreWater(const PreparedWaves<Scalar>& waves, const ShoreWaves& shore, const double* px, const double* pz,
                const Scalar* base)
-        : w_(waves), texels_(shore.query_texels().data()), n_(shore.resolution()), inv_texel_(1.0 / shore.texel()),
-          stride_(ShoreWaves::query_texel_stride(waves.count)), base_(base) {
+        : w_(waves),
+          texels_(shore.query_texels().data()),
+          n_(shore.resolution()),
+          inv_texel_(1.0 / shore.texel()),
+          stride_(ShoreWaves::query_texel_stride(waves.count)),
+          base_(base) {
         for (std::size_t l = 0; l < kLanes; ++l) {
             u_[l] = (px[l] - shore.corner().x) * inv_texel_ - 0.5;
             v_[l] = (pz[l] - shore.corner().y) * inv_texel_ - 0.5;
@@ -54,7 +58,8 @@ public:
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) {
         SurfaceSums<T> s;
-        each_wave(ex, ez, [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
+        each_wave(ex, ez,
+                  [&](std::size_t, const WaveTerm<T>& term, const T& theta) { add_wave<kVelocity>(s, term, theta); });
         // A copy, not the named local: the sums stay in registers instead of the caller's
         // memory, which the row loads might alias.
         return SurfaceSums<T>(s);
@@ -77,7 +82,7 @@ public:
     /// Still-water depth (level - terrain) and signed shore distance at the query points, m.
     T depth_at_point = T(0.0), shore_distance_at_point = T(0.0);
 
-private:
+  private:
     /// Calls add(i, wave i's term, its phase) for every wave as the shore shapes it at
     /// rest offset e.
     template <typename Add>
@@ -85,13 +90,16 @@ private:
         locate(ex, ez);
         const std::size_t nw = w_.count;
         // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
-        const T ramp = Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
+        const T ramp =
+            Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
         const T steepness_scale = blend(4 * nw + 2);
         for (std::size_t i = 0; i < nw; ++i) {
             const T residual = blend(i), amplitude = blend(nw + i);
             const T kx = blend(2 * nw + i), kz = blend(3 * nw + i);
             // The phase follows the shore: open-sea phase at p, k0 D.e, and the marched residual.
-            const T theta = Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) + residual;
+            const T theta =
+                Ops::mul_add(T(w_.kx_s[i]), ex, Ops::mul_add(T(w_.kz_s[i]), ez, Ops::load(base_ + i * kLanes))) +
+                residual;
             const T a = amplitude * ramp;
             add(i, wave_term<T>(kx, kz, a, T(w_.steepness[i]) * steepness_scale, T(w_.omega[i])), theta);
         }
@@ -104,7 +112,8 @@ private:
     /// taps are fetched again. Every choice depends on the lane alone, never on its batch
     /// neighbours, so a point's answer does not depend on how points are batched.
     void locate(const T& ex, const T& ez) {
-        const T u = Ops::mul_add(ex, inv_texel_t_, Ops::load(cell_u_)), v = Ops::mul_add(ez, inv_texel_t_, Ops::load(cell_v_));
+        const T u = Ops::mul_add(ex, inv_texel_t_, Ops::load(cell_u_)),
+                v = Ops::mul_add(ez, inv_texel_t_, Ops::load(cell_v_));
         const T zero(0.0), one(1.0);
         const auto inside = u >= zero && u <= one && v >= zero && v <= one;
         if (!edge_ && Ops::all(inside)) {
@@ -124,7 +133,8 @@ private:
         edge_ = false;
         for (std::size_t l = 0; l < kLanes; ++l) {
             cells[l] = cell_[l];
-            const bool keep = !edge_lane_[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) && fv[l] <= Scalar(1);
+            const bool keep =
+                !edge_lane_[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) && fv[l] <= Scalar(1);
             if (keep) continue;
             const double u_raw = u_[l] + static_cast<double>(exs[l]) * inv_texel_;
             const double v_raw = v_[l] + static_cast<double>(ezs[l]) * inv_texel_;
@@ -157,7 +167,8 @@ private:
         const std::array<std::size_t, 4> offsets{0, 1, n, n + 1};
         for (std::size_t t = 0; t < 4; ++t) {
             const float* src[kLanes];
-            for (std::size_t l = 0; l < kLanes; ++l) src[l] = texels_ + (static_cast<std::size_t>(cells[l]) + offsets[t]) * stride_;
+            for (std::size_t l = 0; l < kLanes; ++l)
+                src[l] = texels_ + (static_cast<std::size_t>(cells[l]) + offsets[t]) * stride_;
             Ops::interleave(src, stride_, rows_[t].data());
         }
         // Taps to the bilinear form c0 + c1 u + c2 v + c3 u v: three multiply-adds a value.
@@ -192,7 +203,8 @@ private:
     T blend(std::size_t field) const {
         const std::size_t at = field * kLanes;
         const T c2_uc3 = Ops::mul_add(u_frac_, Ops::load(rows_[3].data() + at), Ops::load(rows_[2].data() + at));
-        return Ops::mul_add(v_frac_, c2_uc3, Ops::mul_add(u_frac_, Ops::load(rows_[1].data() + at), Ops::load(rows_[0].data() + at)));
+        return Ops::mul_add(v_frac_, c2_uc3,
+                            Ops::mul_add(u_frac_, Ops::load(rows_[1].data() + at), Ops::load(rows_[0].data() + at)));
     }
 
     const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "host_device.h"
@@ -77,7 +76,8 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
         if (alive.size() < 2) continue;  // a chain's waves are its segments
         double head = 0.0, speed = 0.0;
         for (std::size_t i = 0; i + 1 < alive.size(); ++i)
-            speed = std::max(speed, glm::length(alive[i + 1]->position - alive[i]->position) / (alive[i + 1]->emitted - alive[i]->emitted));
+            speed = std::max(speed, glm::length(alive[i + 1]->position - alive[i]->position) /
+                                        (alive[i + 1]->emitted - alive[i]->emitted));
         glm::dvec4 box(1e300, 1e300, -1e300, -1e300);
         for (std::size_t i = 0; i < alive.size(); ++i) {
             const DisturbancePoint& p = *alive[i];
@@ -85,15 +85,17 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
             push(p, p.strength * fade, p.turbulence * fade, i + 1 < alive.size());
             if (i + 1 < alive.size()) {
                 const DisturbancePoint& q = *alive[i + 1];
-                push_disc(wake_reach_disc(p.position, time - p.emitted, p.source_size, q.position, time - q.emitted, q.source_size));
+                push_disc(wake_reach_disc(p.position, time - p.emitted, p.source_size, q.position, time - q.emitted,
+                                          q.source_size));
             } else {
                 push_disc({p.position, 0.0});  // a chain's last point opens no segment
             }
-            head = std::max(head, std::abs(p.strength) * kPi / (kGravity * p.source_size * p.source_size) * p.steepness);
+            head =
+                std::max(head, std::abs(p.strength) * kPi / (kGravity * p.source_size * p.source_size) * p.steepness);
             const double reach = wake_reach(time - p.emitted, speed, p.source_size);
             const glm::dvec2 at = p.position - w.origin;
-            box = glm::dvec4(std::min(box.x, at.x - reach), std::min(box.y, at.y - reach), std::max(box.z, at.x + reach),
-                             std::max(box.w, at.y + reach));
+            box = glm::dvec4(std::min(box.x, at.x - reach), std::min(box.y, at.y - reach),
+                             std::max(box.z, at.x + reach), std::max(box.w, at.y + reach));
         }
         w.boxes.push_back(box);
         // A chain's waves stay within a few pressure heads of its source.
@@ -103,7 +105,8 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
     for (std::size_t i = 0; i < wakes.splashes.size(); ++i) {
         const int emitter = wakes.splash_emitters.empty() ? 0 : wakes.splash_emitters[i];
         const DisturbancePoint& p = wakes.splashes[i];
-        if ((emitter == exclude && exclude >= 0) || p.emitted > time || time - p.emitted >= wakes.splash_max_age) continue;
+        if ((emitter == exclude && exclude >= 0) || p.emitted > time || time - p.emitted >= wakes.splash_max_age)
+            continue;
         const double fade = wake_age_fade(time - p.emitted, wakes.splash_max_age);
         push(p, p.strength * fade, p.turbulence * fade, false);
         const double age = time - p.emitted;
@@ -120,8 +123,8 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
 }
 
 template <typename Scalar>
-std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z, const std::vector<Scalar>& r2,
-                                         const std::vector<unsigned char>& linked) {
+std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z,
+                                         const std::vector<Scalar>& r2, const std::vector<unsigned char>& linked) {
     std::vector<glm::dvec3> blocks;
     const std::size_t n = x.size();
     for (std::size_t begin = 0; begin < n; begin += gpu::kWakeBlockPoints) {
@@ -145,10 +148,11 @@ std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std
     return blocks;
 }
 
-template std::vector<glm::dvec3> wake_block_discs<float>(const std::vector<float>&, const std::vector<float>&, const std::vector<float>&,
-                                                        const std::vector<unsigned char>&);
-template std::vector<glm::dvec3> wake_block_discs<double>(const std::vector<double>&, const std::vector<double>&, const std::vector<double>&,
-                                                         const std::vector<unsigned char>&);
+template std::vector<glm::dvec3> wake_block_discs<float>(const std::vector<float>&, const std::vector<float>&,
+                                                         const std::vector<float>&, const std::vector<unsigned char>&);
+template std::vector<glm::dvec3> wake_block_discs<double>(const std::vector<double>&, const std::vector<double>&,
+                                                          const std::vector<double>&,
+                                                          const std::vector<unsigned char>&);
 template PreparedWakes<float> prepare_wakes<float>(const Wakes&, double, int);
 template PreparedWakes<double> prepare_wakes<double>(const Wakes&, double, int);
 

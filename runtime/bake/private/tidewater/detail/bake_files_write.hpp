@@ -13,8 +13,8 @@ namespace tidewater::detail {
 
 /// Writes `values` (nx by nz, rows along +z) as dir/name.png; returns its sidecar entry
 /// (file, unit, zero_pixel, step, max_error).
-Result<nlohmann::json> write_field_png(const std::filesystem::path& dir, const std::string& name, const std::vector<float>& values,
-                                       int nx, int nz, const char* unit);
+Result<nlohmann::json> write_field_png(const std::filesystem::path& dir, const std::string& name,
+                                       const std::vector<float>& values, int nx, int nz, const char* unit);
 
 /// Writes text to a file, failing with the path when it cannot.
 Status write_text_file(const std::filesystem::path& path, const std::string& text);

@@ -10,11 +10,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <glm/vec2.hpp>
 #include <optional>
 #include <stop_token>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/detail/square_region.hpp"
 #include "tidewater/result.hpp"
@@ -23,11 +22,11 @@
 namespace tidewater {
 
 struct BakeOptions {
-    int resolution = 1024;            ///< Texels per side, 8 to 8192.
+    int resolution = 1024;  ///< Texels per side, 8 to 8192.
     /// The square the grid covers; none: the terrain's extent (a lake's shore: its basin).
     std::optional<SquareRegion> region;
-    double simplify_tolerance = 0.0;  ///< m; the contour moves at most this far (0 = half a texel).
-    unsigned threads = 0;             ///< 0 = every hardware thread.
+    double simplify_tolerance = 0.0;       ///< m; the contour moves at most this far (0 = half a texel).
+    unsigned threads = 0;                  ///< 0 = every hardware thread.
     std::function<void(double)> progress;  ///< Called with 0..1 during long bakes (optional).
     std::stop_token cancel;                ///< Requested: the bake stops and returns ErrorCode::cancelled.
 };
@@ -35,21 +34,21 @@ struct BakeOptions {
 /// One closed or open (domain-edge) shoreline, land on its left.
 struct ShoreLine {
     std::vector<glm::dvec2> points;  ///< World xz, m.
-    bool closed = true;               ///< false where the shore leaves the domain.
+    bool closed = true;              ///< false where the shore leaves the domain.
 };
 
 /// Wall-clock seconds per bake stage (for benchmarks and progress reports).
 struct ShoreBakeTimings {
-    double heights = 0.0;    ///< Terrain sampled at every texel centre.
-    double contour = 0.0;    ///< Marching squares and chaining.
-    double simplify = 0.0;   ///< Simplification and CGAL polygons with holes.
-    double tree = 0.0;       ///< CGAL AABB tree over the simplified segments.
-    double distance = 0.0;   ///< Exact signed distance and gradient at every texel.
+    double heights = 0.0;   ///< Terrain sampled at every texel centre.
+    double contour = 0.0;   ///< Marching squares and chaining.
+    double simplify = 0.0;  ///< Simplification and CGAL polygons with holes.
+    double tree = 0.0;      ///< CGAL AABB tree over the simplified segments.
+    double distance = 0.0;  ///< Exact signed distance and gradient at every texel.
 };
 
 struct ShoreField {
-    glm::dvec2 corner{0.0};   ///< World xz of the grid's outer corner, m.
-    double texel = 1.0;       ///< Texel size, m.
+    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+    double texel = 1.0;      ///< Texel size, m.
     int resolution = 0;
     /// Signed distance to the shoreline, m: positive over water, negative on land.
     /// The magnitude is the exact distance to the simplified shoreline; the sign is the
@@ -62,12 +61,14 @@ struct ShoreField {
     std::vector<float> depth;
     std::vector<ShoreLine> shorelines;  ///< The simplified contour the distances are exact to.
     std::size_t segment_count = 0;
-    double simplify_tolerance = 0.0;    ///< m, as used.
-    std::size_t polygons = 0;           ///< Land polygons (CGAL polygons with holes).
-    std::size_t holes = 0;              ///< Water bodies enclosed by land (lakes, lagoons).
+    double simplify_tolerance = 0.0;  ///< m, as used.
+    std::size_t polygons = 0;         ///< Land polygons (CGAL polygons with holes).
+    std::size_t holes = 0;            ///< Water bodies enclosed by land (lakes, lagoons).
     ShoreBakeTimings timings;
 
-    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i); }
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i);
+    }
     glm::dvec2 texel_center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
     /// Bilinear sample of one of this field's grids at a world point (clamped at the edges).
     double sample(const std::vector<float>& grid, glm::dvec2 p) const;
@@ -78,7 +79,6 @@ struct ShoreField {
 /// Bakes the shore of `terrain` at `water_level`. Fails on non-finite terrain heights
 /// (naming where) or out-of-range options, and with ErrorCode::cancelled when cancelled.
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
-
 
 namespace reference {
 /// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and

@@ -12,11 +12,11 @@
 namespace tidewater {
 
 struct ShoreBakeContents {
-    const ShoreWaves* model = nullptr;      ///< Required: the per-wave fields the runtime samples.
-    const WaveSet* waves = nullptr;         ///< Required: the waves `model` was baked for.
-    double water_level = 0.0;               ///< m.
-    double breaking_index = 0.78;           ///< As baked (recorded, not checked when loading).
-    std::string scene_name;                 ///< Recorded for people.
+    const ShoreWaves* model = nullptr;           ///< Required: the per-wave fields the runtime samples.
+    const WaveSet* waves = nullptr;              ///< Required: the waves `model` was baked for.
+    double water_level = 0.0;                    ///< m.
+    double breaking_index = 0.78;                ///< As baked (recorded, not checked when loading).
+    std::string scene_name;                      ///< Recorded for people.
     const ShoreField* distance_field = nullptr;  ///< Optional: a finer signed distance field and its shoreline.
 };
 

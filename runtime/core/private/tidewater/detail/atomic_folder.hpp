@@ -12,6 +12,7 @@ namespace tidewater::detail {
 /// Creates a temporary sibling of `dir`, lets `fill` write into it, and only when that
 /// succeeds renames it onto `dir` (an existing `dir` is replaced, and survives any
 /// failure). The temporary folder is removed on failure.
-Status write_folder_atomically(const std::filesystem::path& dir, const std::function<Status(const std::filesystem::path&)>& fill);
+Status write_folder_atomically(const std::filesystem::path& dir,
+                               const std::function<Status(const std::filesystem::path&)>& fill);
 
 }  // namespace tidewater::detail

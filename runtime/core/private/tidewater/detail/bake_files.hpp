@@ -42,8 +42,8 @@ struct FieldEncoding {
 
 /// Reads and decodes the field `name` of the sidecar object `fields`, checking that its
 /// image is nx by nz. Errors name the sidecar's JSON path or the image file.
-Result<std::vector<float>> read_field_png(const std::filesystem::path& dir, const ObjectReader& fields, std::string_view name, int nx,
-                                          int nz);
+Result<std::vector<float>> read_field_png(const std::filesystem::path& dir, const ObjectReader& fields,
+                                          std::string_view name, int nx, int nz);
 
 /// The step of a field read by read_field_png (for tolerances).
 double field_png_step(const ObjectReader& fields, std::string_view name);

@@ -34,8 +34,8 @@ struct LoadedBodies {
 
 /// Loads the lakes and rivers saved in `dir` for `scene` (parsed, not baked), with its
 /// lakes' shore models when `lake_shores` is set.
-Result<LoadedBodies> load_bodies_bake(const std::filesystem::path& dir, const Scene& scene, const detail::BodiesBakeOptions& options,
-                                      bool lake_shores);
+Result<LoadedBodies> load_bodies_bake(const std::filesystem::path& dir, const Scene& scene,
+                                      const detail::BodiesBakeOptions& options, bool lake_shores);
 
 namespace detail {
 /// The grid lakes are found on, over the terrain's extent: a saved bake stores the

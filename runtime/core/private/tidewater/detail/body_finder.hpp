@@ -7,7 +7,6 @@
 
 #include <cstddef>
 #include <cstdint>
-
 #include <glm/vec2.hpp>
 
 #include "tidewater/detail/water_bodies.hpp"
@@ -36,7 +35,7 @@ struct PointBody {
 };
 
 class BodyFinder {
-public:
+  public:
     /// `bodies` may be null (a scene without lakes and rivers).
     BodyFinder(const Scene& scene, const WaterBodiesBake* bodies) : scene_(scene), bodies_(bodies) {}
 
@@ -46,7 +45,7 @@ public:
     std::size_t evaluation_count() const { return 2 + scene_.lakes.size() + 2 * scene_.rivers.size(); }
     EvaluationKey evaluation_key(std::size_t evaluation) const;
 
-private:
+  private:
     std::size_t lake_evaluation(int lake) const { return 2 + static_cast<std::size_t>(lake); }
     std::size_t river_evaluation(int river, bool plume) const {
         return 2 + scene_.lakes.size() + 2 * static_cast<std::size_t>(river) + (plume ? 1 : 0);

@@ -7,9 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 namespace tidewater::detail {
 
@@ -19,8 +18,8 @@ struct GridTaps {
     double w00 = 1.0, w10 = 0.0, w01 = 0.0, w11 = 0.0;
 
     double operator()(const std::vector<float>& grid) const {
-        return w00 * static_cast<double>(grid[k00]) + w10 * static_cast<double>(grid[k10]) + w01 * static_cast<double>(grid[k01]) +
-               w11 * static_cast<double>(grid[k11]);
+        return w00 * static_cast<double>(grid[k00]) + w10 * static_cast<double>(grid[k10]) +
+               w01 * static_cast<double>(grid[k01]) + w11 * static_cast<double>(grid[k11]);
     }
 };
 
@@ -31,7 +30,8 @@ inline GridTaps grid_taps(glm::dvec2 corner, double texel, int nx, int nz, glm::
     double v = std::clamp((p.y - corner.y) / texel - 0.5, 0.0, nz - 1.0);
     if (std::isnan(u)) u = 0.0;
     if (std::isnan(v)) v = 0.0;
-    const int i = std::min(static_cast<int>(u), std::max(nx - 2, 0)), j = std::min(static_cast<int>(v), std::max(nz - 2, 0));
+    const int i = std::min(static_cast<int>(u), std::max(nx - 2, 0)),
+              j = std::min(static_cast<int>(v), std::max(nz - 2, 0));
     const double fu = u - i, fv = v - j;
     const std::size_t row = static_cast<std::size_t>(nx);
     GridTaps t;

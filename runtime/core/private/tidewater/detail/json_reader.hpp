@@ -19,7 +19,7 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
 Result<std::string> read_text_file(const std::string& path);
 
 class ObjectReader {
-public:
+  public:
     /// Fails unless `value` is a JSON object.
     static Result<ObjectReader> open(const nlohmann::json& value, const std::string& source, std::string path);
 
@@ -41,7 +41,7 @@ public:
     const std::string& source() const { return source_; }
     Error error(std::string_view key, const std::string& message) const;
 
-private:
+  private:
     ObjectReader(const nlohmann::json& v, const std::string& source, std::string path)
         : value_(&v), source_(source), path_(std::move(path)) {}
     const nlohmann::json* value_;

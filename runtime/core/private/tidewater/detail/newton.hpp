@@ -35,11 +35,11 @@ inline double newton_radius(double max_offset) {
 
 template <typename T>
 struct NewtonResult {
-    SurfaceSums<T> sums;      ///< at the point's last evaluation
+    SurfaceSums<T> sums;                 ///< at the point's last evaluation
     T step_x = T(0.0), step_z = T(0.0);  ///< the Newton step from that evaluation
-    T ex = T(0.0), ez = T(0.0);       ///< the rest offset of that evaluation
-    T iterations = T(0.0);        ///< evaluations used
-    T converged = T(0.0);         ///< 1 where the residual met the tolerance
+    T ex = T(0.0), ez = T(0.0);          ///< the rest offset of that evaluation
+    T iterations = T(0.0);               ///< evaluations used
+    T converged = T(0.0);                ///< 1 where the residual met the tolerance
 };
 
 template <typename T>

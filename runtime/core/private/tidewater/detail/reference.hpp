@@ -4,9 +4,8 @@
 // by design. Threading: pure functions of immutable inputs.
 #pragma once
 
-#include <span>
-
 #include <glm/vec2.hpp>
+#include <span>
 
 #include "tidewater/query.hpp"
 #include "tidewater/world_query.hpp"

@@ -12,8 +12,8 @@
 #include <memory>
 #include <string>
 
-#include "tidewater/result.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/waves.hpp"
 

@@ -20,13 +20,12 @@
 #pragma once
 
 #include <functional>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <optional>
 #include <span>
 #include <stop_token>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/detail/square_region.hpp"
 #include "tidewater/gerstner.hpp"
@@ -38,9 +37,9 @@ namespace tidewater {
 
 /// What the shore does to one wave at one place.
 struct LocalWave {
-    double phase_residual = 0.0;     ///< phi - k0 D.x, rad.
-    double amplitude_factor = 1.0;   ///< A / A0.
-    glm::dvec2 wavevector{0.0};      ///< grad phi, rad/m (turns toward the shore, grows with shoaling).
+    double phase_residual = 0.0;    ///< phi - k0 D.x, rad.
+    double amplitude_factor = 1.0;  ///< A / A0.
+    glm::dvec2 wavevector{0.0};     ///< grad phi, rad/m (turns toward the shore, grows with shoaling).
 };
 
 struct LocalShore {
@@ -53,9 +52,9 @@ struct LocalShore {
 /// Everything a shore model holds: grids over the terrain's square extent, values at
 /// texel centres, row-major with rows along +z.
 struct ShoreWaveFields {
-    int resolution = 0;       ///< Texels per side.
-    double texel = 1.0;       ///< m.
-    glm::dvec2 corner{0.0};   ///< World xz of the grid's outer corner, m.
+    int resolution = 0;      ///< Texels per side.
+    double texel = 1.0;      ///< m.
+    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
     /// Per wave, then per texel: phi - k0 D.x (rad), A / A0, and grad phi (rad/m).
     std::vector<std::vector<float>> phase_residual, amplitude_factor, wavevector_x, wavevector_z;
     std::vector<float> depth;            ///< Water level - terrain, m (< 0 on land).
@@ -65,7 +64,7 @@ struct ShoreWaveFields {
 };
 
 class ShoreWaves {
-public:
+  public:
     /// A model from fields made elsewhere (a saved bake). Fails unless every grid is
     /// resolution^2 finite values and there are `wave_count` of each per-wave field.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::size_t wave_count);
@@ -97,7 +96,7 @@ public:
     const std::vector<float>& steepness_scale() const { return f_.steepness_scale; }
     const std::vector<float>& shore_distance() const { return f_.shore_distance; }
 
-private:
+  private:
     void pack_query_texels();
 
     ShoreWaveFields f_;

@@ -38,10 +38,10 @@ namespace tidewater::detail {
 /// The wave a unit pulse (P dt = 1 m^4/s) shows at one point.
 template <typename T>
 struct WakeWave {
-    T kx, kz;   ///< local wavevector, pointing away from the disturbance, rad/m
-    T a;        ///< amplitude per unit impulse, m per m^4/s
-    T omega;    ///< local angular frequency, rad/s
-    T theta;    ///< phase, rad (eta = a sin(theta))
+    T kx, kz;  ///< local wavevector, pointing away from the disturbance, rad/m
+    T a;       ///< amplitude per unit impulse, m per m^4/s
+    T omega;   ///< local angular frequency, rad/s
+    T theta;   ///< phase, rad (eta = a sin(theta))
 };
 
 /// The unit pulse's wave at offset (dx, dz) (m) from a disturbance of source size `size`
@@ -87,7 +87,8 @@ T sinc(const T& x) {
     T s, c;
     Ops::sin_cos(x, s, c);
     const T small = x * x;
-    return Ops::select(small > constant<T>(1e-8), s / Ops::select(small > constant<T>(1e-8), x, T(1.0)), T(1.0) - small * constant<T>(1.0 / 6.0));
+    return Ops::select(small > constant<T>(1e-8), s / Ops::select(small > constant<T>(1e-8), x, T(1.0)),
+                       T(1.0) - small * constant<T>(1.0 / 6.0));
 }
 
 /// Adds the segment of a chain between two disturbances (a, b), as seen from the field

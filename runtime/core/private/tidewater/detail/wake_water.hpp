@@ -4,11 +4,10 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "tidewater/detail/wake_point.hpp"
 #include "tidewater/wakes.hpp"
@@ -71,8 +70,8 @@ PreparedWakes<Scalar> prepare_wakes(const Wakes& wakes, double time, int exclude
 /// it is not felt, the whole run is skipped. (x, z, r2, linked) as PreparedWakes' reach
 /// discs; relative to whatever origin they are.
 template <typename Scalar>
-std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z, const std::vector<Scalar>& r2,
-                                         const std::vector<unsigned char>& linked);
+std::vector<glm::dvec3> wake_block_discs(const std::vector<Scalar>& x, const std::vector<Scalar>& z,
+                                         const std::vector<Scalar>& r2, const std::vector<unsigned char>& linked);
 
 /// How much of a segment's (or lone point's) waves is summed at squared distance `d2`
 /// from the middle of its reach disc of squared radius `r2`: all within
@@ -108,8 +107,8 @@ void add_wakes(SurfaceSums<T>& s, const PreparedWakes<Scalar>& w, const T& x, co
         }
         for (std::size_t i = begin; i < end; ++i) {
             const bool after = i > 0 && w.linked[i - 1];  // i closes a segment from i - 1
-            const bool before = w.linked[i] != 0;          // i opens a segment to i + 1
-            if (!after && before) {                        // a chain's first point: no term of its own
+            const bool before = w.linked[i] != 0;         // i opens a segment to i + 1
+            if (!after && before) {                       // a chain's first point: no term of its own
                 last_made = false;
                 continue;
             }
@@ -171,9 +170,10 @@ T wakes_foam(const PreparedWakes<Scalar>& w, const T& x, const T& z) {
 /// the rest position (for their foam).
 template <typename Inner, typename T, typename Scalar>
 class WakeWater {
-public:
+  public:
     using Ops = NumberOps<T>;
-    WakeWater(Inner& inner, const PreparedWakes<Scalar>& wakes, const T& x, const T& z) : inner_(inner), wakes_(wakes), x_(x), z_(z) {}
+    WakeWater(Inner& inner, const PreparedWakes<Scalar>& wakes, const T& x, const T& z)
+        : inner_(inner), wakes_(wakes), x_(x), z_(z) {}
 
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) {
@@ -197,10 +197,10 @@ public:
         rest_z = Ops::select(m, z_ + last_ez_, rest_z);
     }
 
-    T eta = T(0.0);                   ///< the wakes' share of the height at the finish, m
+    T eta = T(0.0);                      ///< the wakes' share of the height at the finish, m
     T rest_x = T(0.0), rest_z = T(0.0);  ///< the rest position there, relative to the origin
 
-private:
+  private:
     Inner& inner_;
     const PreparedWakes<Scalar>& wakes_;
     T x_, z_;

@@ -10,12 +10,11 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <stop_token>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/detail/square_region.hpp"
 #include "tidewater/result.hpp"
@@ -30,7 +29,9 @@ struct FieldGrid {
     int nx = 0, nz = 0;
 
     std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
-    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i);
+    }
     glm::dvec2 center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
     bool contains(glm::dvec2 p) const {
         return p.x >= corner.x && p.y >= corner.y && p.x < corner.x + texel * nx && p.y < corner.y + texel * nz;
@@ -56,15 +57,16 @@ enum class RiverTexel : std::uint8_t {
 
 /// The river's own water (its channel, mouth included).
 inline bool river_water(std::uint8_t texel) {
-    return texel == static_cast<std::uint8_t>(RiverTexel::river) || texel == static_cast<std::uint8_t>(RiverTexel::mouth);
+    return texel == static_cast<std::uint8_t>(RiverTexel::river) ||
+           texel == static_cast<std::uint8_t>(RiverTexel::mouth);
 }
 
 struct LakeBake {
     std::string name;
     double level = 0.0;
-    FieldGrid grid;                     ///< the lake's bounding box on the scene's body grid
-    std::vector<std::uint8_t> inside;   ///< 1 where the lake is (at its level)
-    std::size_t texels = 0;             ///< lake texels
+    FieldGrid grid;                    ///< the lake's bounding box on the scene's body grid
+    std::vector<std::uint8_t> inside;  ///< 1 where the lake is (at its level)
+    std::size_t texels = 0;            ///< lake texels
     /// Whether p lies in the lake: below its level in or next to one of its texels.
     bool holds(glm::dvec2 p, double terrain_height) const;
 };
@@ -80,7 +82,7 @@ struct RiverBakeKey {
     std::vector<double> width;
     double discharge = 0.0, manning = 0.0, texel = 0.0;
     bool carve = true;
-    std::size_t samples = 0;       ///< centreline samples to its mouth
+    std::size_t samples = 0;  ///< centreline samples to its mouth
     RiverEnd end = RiverEnd::domain_edge;
     int receiver = -1;
     double joins_at = 0.0, total = 0.0, mouth_level = 0.0, psi_left = 0.0, plume_length = 0.0;
@@ -91,38 +93,39 @@ struct RiverBakeKey {
 
 struct RiverBake {
     std::string name;
-    double discharge = 0.0;       ///< Q through every cross-section below all tributaries, m^3/s
-    double own_discharge = 0.0;   ///< Q at the source
+    double discharge = 0.0;      ///< Q through every cross-section below all tributaries, m^3/s
+    double own_discharge = 0.0;  ///< Q at the source
     double manning = 0.035;
     RiverEnd end = RiverEnd::domain_edge;
-    int receiver = -1;            ///< index of the lake or river it runs into
-    double mouth_level = 0.0;     ///< the surface where it ends (a lake's or the ocean's level, the river's at a confluence or the domain's edge), m
-    double mean_speed = 0.0;      ///< Q / mean cross-section area, m/s: the waves ride it
+    int receiver = -1;         ///< index of the lake or river it runs into
+    double mouth_level = 0.0;  ///< the surface where it ends (a lake's or the ocean's level, the river's at a
+                               ///< confluence or the domain's edge), m
+    double mean_speed = 0.0;   ///< Q / mean cross-section area, m/s: the waves ride it
 
     /// Centreline samples from source to mouth.
     std::vector<glm::dvec2> centreline;
-    std::vector<double> along;     ///< distance from the source, m
-    std::vector<double> width;     ///< wetted width, m
-    std::vector<double> surface;   ///< water surface, never rising, m
-    std::vector<double> bed;       ///< deepest bed in the section, m
-    std::vector<double> slope;     ///< energy slope used for Manning
+    std::vector<double> along;    ///< distance from the source, m
+    std::vector<double> width;    ///< wetted width, m
+    std::vector<double> surface;  ///< water surface, never rising, m
+    std::vector<double> bed;      ///< deepest bed in the section, m
+    std::vector<double> slope;    ///< energy slope used for Manning
 
     FieldGrid grid;
-    std::vector<std::uint8_t> texel;     ///< RiverTexel
-    std::vector<float> surface_height;   ///< water surface, m (where texel != none)
-    std::vector<float> depth;            ///< water column: surface - carved terrain, m (<= 0 dry)
-    std::vector<float> psi;              ///< stream function, m^3/s
+    std::vector<std::uint8_t> texel;              ///< RiverTexel
+    std::vector<float> surface_height;            ///< water surface, m (where texel != none)
+    std::vector<float> depth;                     ///< water column: surface - carved terrain, m (<= 0 dry)
+    std::vector<float> psi;                       ///< stream function, m^3/s
     std::vector<float> discharge_x, discharge_z;  ///< h u, m^2/s (half the flux on bank texels)
-    std::vector<float> flow_x, flow_z;   ///< depth-averaged current u, m/s (0 where dry)
+    std::vector<float> flow_x, flow_z;            ///< depth-averaged current u, m/s (0 where dry)
     std::vector<float> channel_s, channel_n;      ///< along and across the centreline, m (n > 0 left)
     std::vector<float> tangent_x, tangent_z;      ///< downstream unit direction of the nearest centreline
     /// What the water evaluation samples, gpu::kRiverQueryStride floats per texel
     /// (host_device.h): surface above mouth_level, depth, tangent x and z, the weights of
     /// the river's waves and of the still water's.
     std::vector<float> query_texels;
-    std::shared_ptr<const TerrainCut> cut;        ///< the carved channel (null: not carved)
-    std::size_t islands = 0;                      ///< dry islands inside the channel
-    RiverBakeKey key;                             ///< what it was baked from
+    std::shared_ptr<const TerrainCut> cut;  ///< the carved channel (null: not carved)
+    std::size_t islands = 0;                ///< dry islands inside the channel
+    RiverBakeKey key;                       ///< what it was baked from
     /// The other rivers' cuts under its grid when it was baked (the terrain it saw).
     std::vector<std::shared_ptr<const TerrainCut>> baked_over;
 };
@@ -142,14 +145,15 @@ RiverSample sample_river(const RiverBake& river, glm::dvec2 p);
 struct RiverWaveAt {
     double k_s = 0.0, k_n = 0.0;  ///< rad/m, downstream and to the left
     double amplitude = 0.0, steepness = 0.0, omega = 0.0;
-    double offset = 0.0;          ///< rad
+    double offset = 0.0;  ///< rad
 };
 /// `waves` of a river's preset at the body's local time.
 std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed);
 
 /// Packs what the water evaluation samples (RiverBake::query_texels) from the river's
 /// surface, depth and tangent fields and the weights of its waves and the still water's.
-void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight, const std::vector<float>& still_weight);
+void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight,
+                       const std::vector<float>& still_weight);
 
 /// Everything lakes and rivers bake to.
 struct WaterBodiesBake {
@@ -162,9 +166,9 @@ struct WaterBodiesBake {
 };
 
 struct BodiesBakeOptions {
-    int lake_resolution = 256;            ///< texels per side of the grid lakes are found on
-    double texels_across = 8.0;           ///< a river grid's texels across its narrowest width
-    std::function<void(double)> progress; ///< 0..1
+    int lake_resolution = 256;             ///< texels per side of the grid lakes are found on
+    double texels_across = 8.0;            ///< a river grid's texels across its narrowest width
+    std::function<void(double)> progress;  ///< 0..1
     std::stop_token cancel;
     /// The bake of the scene this one was edited from (null: none). Rivers whose key, the
     /// cuts under their grid and the terrain's shape there are unchanged are taken from
@@ -175,6 +179,7 @@ struct BodiesBakeOptions {
 /// Whether a cut reaches into a grid (its zero ring of half a texel included).
 bool cut_touches(const TerrainCut& cut, const FieldGrid& grid);
 /// The cuts among `cuts` that reach into `grid`.
-std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts, const FieldGrid& grid);
+std::vector<std::shared_ptr<const TerrainCut>> cuts_under(const std::vector<std::shared_ptr<const TerrainCut>>& cuts,
+                                                          const FieldGrid& grid);
 
 }  // namespace tidewater::detail

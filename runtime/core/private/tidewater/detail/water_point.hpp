@@ -33,7 +33,7 @@ namespace tidewater::detail {
 template <typename T>
 struct NumberOps {
     using Mask = bool;
-    using Scalar = T;                        ///< one lane's type
+    using Scalar = T;  ///< one lane's type
     static constexpr std::size_t kLanes = 1;
     static T load(const Scalar* p) { return *p; }
     static void store(const T& v, Scalar* p) { *p = v; }
@@ -120,10 +120,10 @@ WaveTerm<T> wave_term(const T& kx, const T& kz, const T& a, const T& q, const T&
 /// The sums of one evaluation, at rest position x0.
 template <typename T>
 struct SurfaceSums {
-    T dx = T(0.0), dz = T(0.0), eta = T(0.0);  ///< displacement, m
+    T dx = T(0.0), dz = T(0.0), eta = T(0.0);    ///< displacement, m
     T mxx = T(0.0), mxz = T(0.0), mzz = T(0.0);  ///< sum Q A k D D^T sin: I - (these) is the map's Jacobian
-    T sx = T(0.0), sz = T(0.0);            ///< d eta / d x0
-    T vx = T(0.0), vy = T(0.0), vz = T(0.0);   ///< particle velocity, m/s
+    T sx = T(0.0), sz = T(0.0);                  ///< d eta / d x0
+    T vx = T(0.0), vy = T(0.0), vz = T(0.0);     ///< particle velocity, m/s
 };
 
 /// Adds one wave at phase theta (given as its sine and cosine). `kVelocity` false skips
@@ -197,8 +197,8 @@ struct LaggedCompression {
 /// GpuWave.lag_turn: the same phases, with two values a wave on the GPU, not eight.)
 /// Here theta is given as its sine and cosine.
 template <typename T, typename Scalar>
-void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& sin_theta, const T& cos_theta, const Scalar* lag_sin,
-                   const Scalar* lag_cos) {
+void add_wave_lags(LaggedCompression<T>& c, const WaveTerm<T>& w, const T& sin_theta, const T& cos_theta,
+                   const Scalar* lag_sin, const Scalar* lag_cos) {
     using Ops = NumberOps<T>;
     for (std::size_t l = 0; l < kFoamLags; ++l) {
         const T s = Ops::mul_add(sin_theta, T(lag_cos[l]), cos_theta * T(lag_sin[l]));

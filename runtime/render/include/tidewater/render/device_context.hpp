@@ -10,8 +10,9 @@
 // another thread during those calls.
 #pragma once
 
-#include <cstdint>
 #include <vulkan/vulkan.h>
+
+#include <cstdint>
 
 namespace tidewater::render {
 
@@ -22,8 +23,8 @@ struct DeviceContext {
     std::uint32_t queue_family = 0;    ///< Must support graphics and compute.
     VkQueue queue = VK_NULL_HANDLE;
     std::uint32_t api_version = VK_API_VERSION_1_3;
-    VkPipelineCache pipeline_cache = VK_NULL_HANDLE;  ///< Optional; used, never destroyed.
-    const VkAllocationCallbacks* allocator = nullptr; ///< Optional; must outlive Tidewater's objects.
+    VkPipelineCache pipeline_cache = VK_NULL_HANDLE;   ///< Optional; used, never destroyed.
+    const VkAllocationCallbacks* allocator = nullptr;  ///< Optional; must outlive Tidewater's objects.
     /// The core features the host enabled on `device` (what it gave vkCreateDevice in
     /// pEnabledFeatures or VkPhysicalDeviceFeatures2). The renderer needs
     /// tessellationShader, and fillModeNonSolid for its wireframe view

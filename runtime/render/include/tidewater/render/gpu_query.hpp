@@ -8,10 +8,9 @@
 // Threading: one call at a time; each call submits to the context's queue and waits.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <memory>
 #include <span>
-
-#include <glm/vec2.hpp>
 
 #include "tidewater/query.hpp"
 #include "tidewater/render/device_context.hpp"
@@ -21,7 +20,7 @@
 namespace tidewater::render {
 
 class GpuQuery {
-public:
+  public:
     static Result<std::unique_ptr<GpuQuery>> create(const DeviceContext& context);
     ~GpuQuery();
     GpuQuery(const GpuQuery&) = delete;
@@ -40,7 +39,7 @@ public:
     Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                        std::span<glm::dvec2> detail = {});
 
-private:
+  private:
     struct Impl;
     explicit GpuQuery(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

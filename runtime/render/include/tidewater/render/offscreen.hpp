@@ -19,7 +19,7 @@ struct RgbaImage {
 };
 
 class OffscreenTarget {
-public:
+  public:
     /// Width and height in [16, 8192]; `samples` as the renderer's RendererInitInfo::samples
     /// (multisampled targets are resolved into the picture).
     static Result<std::unique_ptr<OffscreenTarget>> create(const DeviceContext& context, std::uint32_t width,
@@ -35,7 +35,7 @@ public:
     static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-private:
+  private:
     struct Impl;
     explicit OffscreenTarget(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

@@ -22,8 +22,12 @@
 // Units: metres, seconds, radians (camera field of view in degrees).
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <functional>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,21 +36,30 @@
 #include <string_view>
 #include <vector>
 
-#include <glm/gtc/quaternion.hpp>
-#include <glm/vec3.hpp>
-#include <vulkan/vulkan.h>
-
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater {
 struct HullMesh;
 class SceneFloaters;
-}
+}  // namespace tidewater
 
 namespace tidewater::render {
 
-enum class DebugView : std::uint32_t { shaded, height, normals, jacobian, depth, lod, wireframe, shore, breaking, flow, wake, foam };
+enum class DebugView : std::uint32_t {
+    shaded,
+    height,
+    normals,
+    jacobian,
+    depth,
+    lod,
+    wireframe,
+    shore,
+    breaking,
+    flow,
+    wake,
+    foam
+};
 
 /// "shaded", "height", "normals", "jacobian", "depth", "lod", "wireframe", "shore" (signed shore
 /// distance), "breaking" (where waves break), "flow" (a river's current speed), "wake" (the
@@ -64,7 +77,7 @@ struct Camera {
 };
 
 struct RendererInitInfo {
-    DeviceContext device;                          ///< Copied. Needs tessellationShader enabled.
+    DeviceContext device;                              ///< Copied. Needs tessellationShader enabled.
     VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  ///< The host's colour attachment format.
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      ///< The host's depth attachment format.
     /// The targets' sample count: 1, or 2, 4 or 8 for multisampled targets (antialiased
@@ -76,9 +89,9 @@ struct RendererInitInfo {
     /// estimate. Costs about `samples` times the water's shading, and more vertices
     /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled.
     bool shade_water_per_sample = false;
-    std::uint32_t frames_in_flight = 2;            ///< 1 to 4.
-    bool wireframe = true;                         ///< Build the wireframe view (needs fillModeNonSolid).
-    std::function<void(const std::string&)> log;   ///< Copied; default: silent.
+    std::uint32_t frames_in_flight = 2;           ///< 1 to 4.
+    bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
+    std::function<void(const std::string&)> log;  ///< Copied; default: silent.
 };
 
 /// The host's images for one frame (not owned). On entry and on return the colour
@@ -113,8 +126,8 @@ std::vector<FloatDraw> float_draws(const SceneFloaters& floaters);
 
 struct FrameInfo {
     Camera camera;
-    double time = 0.0;                 ///< Clock time, s; each water body adds its own offset.
-    std::uint64_t frame_index = 0;     ///< Host frame counter; selects the in-flight slot.
+    double time = 0.0;              ///< Clock time, s; each water body adds its own offset.
+    std::uint64_t frame_index = 0;  ///< Host frame counter; selects the in-flight slot.
     DebugView view = DebugView::shaded;
     glm::dvec3 sun_direction{0.35, 0.55, -0.75};  ///< Toward the sun; normalised by the renderer.
     /// The air's turbidity for the Preetham sky, in [1.7, 10]: 2 very clear, 3 clear, 6 hazy.
@@ -137,13 +150,13 @@ struct PassTimings {
 struct RendererStats {
     std::uint64_t terrain_vertices = 0;
     std::uint64_t terrain_triangles = 0;
-    std::uint64_t water_patches = 0;   ///< Tessellated patches submitted (before culling).
+    std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
-    double water_patch_size = 0.0;     ///< m
+    double water_patch_size = 0.0;  ///< m
 };
 
 class Renderer {
-public:
+  public:
     static Result<std::unique_ptr<Renderer>> create(const RendererInitInfo& info);
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -183,7 +196,7 @@ public:
     Result<PassTimings> timings(std::uint64_t frame_index);
     RendererStats stats() const;
 
-private:
+  private:
     struct Impl;
     explicit Renderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

@@ -27,7 +27,7 @@ struct StandaloneOptions {
 };
 
 class StandaloneDevice {
-public:
+  public:
     static Result<std::unique_ptr<StandaloneDevice>> create(const StandaloneOptions& options = {});
     ~StandaloneDevice();
     StandaloneDevice(const StandaloneDevice&) = delete;
@@ -38,7 +38,7 @@ public:
     /// Validation warnings and errors reported so far.
     std::size_t validation_messages() const { return validation_messages_.load(); }
 
-private:
+  private:
     StandaloneDevice() = default;
     static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                      VkDebugUtilsMessageTypeFlagsEXT types,
