@@ -499,7 +499,7 @@ TEST(Embedding, AHostsOwnLoaderServesEveryVulkanCall) {
         auto renderer = render::Renderer::create(init);
         ASSERT_TRUE(renderer.ok()) << renderer.error().message;
         EXPECT_GT(g_device_lookups, 50);
-        EXPECT_GT(g_instance_lookups, 5);
+        EXPECT_GE(g_instance_lookups, 5);  // the physical-device queries the renderer makes
         ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
         const render::RgbaImage img = draw_and_read(host, **renderer, *scene);
         EXPECT_GE(g_hooked_draws, 1) << "the terrain draw went through the host's loader";

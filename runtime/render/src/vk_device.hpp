@@ -16,11 +16,6 @@
 
 // Instance-level functions (loaded with vkGetInstanceProcAddr).
 #define TIDEWATER_VK_INSTANCE_FUNCTIONS(X)    \
-    X(CreateDevice)                           \
-    X(DestroyInstance)                        \
-    X(EnumeratePhysicalDevices)               \
-    X(GetPhysicalDeviceFeatures)              \
-    X(GetPhysicalDeviceFeatures2)             \
     X(GetPhysicalDeviceFormatProperties)      \
     X(GetPhysicalDeviceImageFormatProperties) \
     X(GetPhysicalDeviceMemoryProperties)      \
@@ -70,7 +65,6 @@
     X(DestroyCommandPool)                \
     X(DestroyDescriptorPool)             \
     X(DestroyDescriptorSetLayout)        \
-    X(DestroyDevice)                     \
     X(DestroyFence)                      \
     X(DestroyImage)                      \
     X(DestroyImageView)                  \
@@ -84,7 +78,6 @@
     X(FreeCommandBuffers)                \
     X(FreeMemory)                        \
     X(GetBufferMemoryRequirements)       \
-    X(GetDeviceQueue)                    \
     X(GetImageMemoryRequirements)        \
     X(GetQueryPoolResults)               \
     X(MapMemory)                         \
