@@ -21,6 +21,10 @@ PACKAGES=(
 
 log() { printf '==> %s\n' "$*"; }
 
+# ccache (when installed) sees paths relative to the checkout, so that another clone of the
+# same sources hits the cache.
+export CCACHE_BASEDIR="$ROOT" CCACHE_NOHASHDIR=1
+
 install_packages() {
   local missing=()
   for p in "${PACKAGES[@]}"; do

@@ -1,6 +1,7 @@
 #include "descriptor_sets.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace tidewater::render::detail {
 
@@ -36,8 +37,10 @@ VkResult make_descriptor_pool(const Device& device, std::span<const BindingRow> 
 
 void write_set(const Device& device, VkDescriptorSet set, std::span<const BindingRow> rows,
                std::span<const BoundResource> resources) {
-    std::vector<VkWriteDescriptorSet> writes(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) {
+    // Every frame writes its set: no allocation here.
+    std::array<VkWriteDescriptorSet, kMaxSetBindings> writes{};
+    const std::size_t count = std::min(rows.size(), resources.size());
+    for (std::size_t i = 0; i < count; ++i) {
         VkWriteDescriptorSet& w = writes[i];
         w = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = set;
@@ -49,8 +52,7 @@ void write_set(const Device& device, VkDescriptorSet set, std::span<const Bindin
         else
             w.pBufferInfo = &resources[i].buffer;
     }
-    device.vk().UpdateDescriptorSets(device.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0,
-                                     nullptr);
+    device.vk().UpdateDescriptorSets(device.device, static_cast<std::uint32_t>(count), writes.data(), 0, nullptr);
 }
 
 }  // namespace tidewater::render::detail

@@ -59,6 +59,10 @@ inline constexpr std::array<BindingRow, gpu::eQueryBindingCount> kQuerySetRows =
     {gpu::eQueryWakePoints, binding_types::kStorage},
 }};
 
+/// The most bindings a set has (write_set writes a set without allocating).
+inline constexpr std::size_t kMaxSetBindings = 16;
+static_assert(gpu::eFrameBindingCount <= kMaxSetBindings && gpu::eQueryBindingCount <= kMaxSetBindings);
+
 /// Row i describes binding i: what a set's writes index by.
 template <std::size_t N>
 constexpr bool rows_in_binding_order(const std::array<BindingRow, N>& rows) {
