@@ -141,8 +141,15 @@ struct Renderer::Impl {
     void write_descriptors(Slot& slot, bool with_scene_copy);
     /// A frame's recording, in three steps: its inputs checked, its plan (what it draws,
     /// from the frame and the scene), and the plan written into its in-flight slot.
+    struct Planned {
+        detail::FramePlan plan;
+        detail::BodyDraws draws;
+        detail::WakeUpload wakes;
+        detail::FloatUpload floats;
+    };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
-    Result<detail::FramePlan> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot& slot);
+    Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
+    void upload(Slot& slot, Planned& planned, bool scene_copy);
     Slot& take_slot(std::uint64_t frame_index);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
                         detail::FramePlan& plan);
@@ -255,28 +262,36 @@ Renderer::Impl::Slot& Renderer::Impl::take_slot(std::uint64_t frame_index) {
     return slot;
 }
 
-// What the frame draws; the wakes and floats are packed straight into the slot's
-// mapped buffers (their packing is what can fail).
-Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy,
-                                                     Slot& slot) {
+// What the frame draws, from the frame and the scene; nothing is written yet.
+Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent,
+                                                           bool scene_copy) const {
     const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
-    detail::FramePlan plan =
-        detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
-                           color_target->linear_output, water_density);
-    const detail::BodyDraws draws = detail::plan_body_draws(scene, bodies, frame.time, plan, shore);
-    auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, plan.origin);
+    Planned p;
+    p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
+                                color_target->linear_output, water_density);
+    p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore);
+    auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, p.plan.origin);
     if (!wakes) return wakes.error();
-    plan.frame.wakes = glm::vec4(static_cast<float>(wakes->points.size()), static_cast<float>(wakes->turbulent),
-                                 static_cast<float>(wakes->boxes.size()), 0.0f);
-    for (std::size_t b = 0; b < wakes->boxes.size(); ++b) plan.frame.wake_boxes[b] = wakes->boxes[b];
-    auto floats = detail::pack_floats(frame.floats, plan.origin);
+    p.wakes = std::move(wakes).value();
+    p.plan.frame.wakes = glm::vec4(static_cast<float>(p.wakes.points.size()), static_cast<float>(p.wakes.turbulent),
+                                   static_cast<float>(p.wakes.boxes.size()), 0.0f);
+    for (std::size_t b = 0; b < p.wakes.boxes.size(); ++b) p.plan.frame.wake_boxes[b] = p.wakes.boxes[b];
+    auto floats = detail::pack_floats(frame.floats, p.plan.origin);
     if (!floats) return floats.error();
-    // Checked: the slot's buffers are written from here on.
-    detail::write_wake_buffer(*wakes, slot.wake_points.mapped());
-    if (!floats->vertices.empty())
-        std::memcpy(slot.float_vertices.mapped(), floats->vertices.data(),
-                    sizeof(detail::FloatVertex) * floats->vertices.size());
-    slot.float_draws = std::move(floats->draws);
+    p.floats = std::move(floats).value();
+    p.plan.water_draws = p.draws.patch_counts;
+    return p;
+}
+
+// The plan into the slot's mapped buffers and its descriptor set.
+void Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
+    detail::write_wake_buffer(p.wakes, slot.wake_points.mapped());
+    if (!p.floats.vertices.empty())
+        std::memcpy(slot.float_vertices.mapped(), p.floats.vertices.data(),
+                    sizeof(detail::FloatVertex) * p.floats.vertices.size());
+    slot.float_draws = std::move(p.floats.draws);
+    std::memcpy(slot.frame.mapped(), &p.plan.frame, sizeof(p.plan.frame));
+    const detail::BodyDraws& draws = p.draws;
     if (!draws.waves.empty())
         std::memcpy(slot.waves.mapped(), draws.waves.data(), sizeof(gpu::GpuWave) * draws.waves.size());
     if (!draws.draws.empty())
@@ -284,19 +299,17 @@ Result<detail::FramePlan> Renderer::Impl::plan_frame(const FrameInfo& frame, VkE
     if (!draws.river_waves.empty())
         std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(),
                     sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
-    plan.water_draws = draws.patch_counts;
-    return plan;
+    write_descriptors(slot, scene_copy);
 }
 
 Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
                                     detail::FramePlan& plan) {
     if (auto st = validate_frame(frame, extent); !st) return st;
     slot = &take_slot(frame.frame_index);
-    auto planned = plan_frame(frame, extent, scene_copy, *slot);
+    auto planned = plan_frame(frame, extent, scene_copy);
     if (!planned) return planned.error();
-    plan = std::move(planned).value();
-    std::memcpy(slot->frame.mapped(), &plan.frame, sizeof(plan.frame));
-    write_descriptors(*slot, scene_copy);
+    upload(*slot, *planned, scene_copy);
+    plan = std::move(planned->plan);
     return {};
 }
 
