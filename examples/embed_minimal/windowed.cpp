@@ -20,7 +20,7 @@
 #include <tidewater/tidewater.hpp>
 #include <vector>
 
-#include "../common/example_device.hpp"
+#include "../common/example_window.hpp"
 
 namespace {
 
@@ -67,20 +67,9 @@ struct App : tidewater::examples::ExampleDevice {
     }
 
     bool create_device() {
-        std::uint32_t glfw_count = 0;
-        const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&glfw_count);
-        tidewater::examples::ExampleDeviceOptions options;
+        tidewater::examples::ExampleDeviceOptions options = tidewater::examples::window_device_options(window, surface);
         options.application = "embed_minimal_windowed";
         options.on_message = &on_message;
-        options.instance_extensions.assign(glfw_extensions, glfw_extensions + glfw_count);
-        options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-        options.on_instance = [this](VkInstance made) {
-            return glfwCreateWindowSurface(made, window, nullptr, &surface) == VK_SUCCESS;
-        };
-        options.can_present = [this](VkPhysicalDevice d, std::uint32_t f) {
-            VkBool32 present = VK_FALSE;
-            return vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface, &present) == VK_SUCCESS && present;
-        };
         if (!create(options)) {
             std::fprintf(stderr, "%s\n", error().c_str());
             return false;

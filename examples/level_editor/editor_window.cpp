@@ -51,7 +51,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL EditorWindow::on_message(VkDebugUtilsMessageSever
 
 std::uint32_t EditorWindow::memory_type(std::uint32_t bits, VkMemoryPropertyFlags want) const {
     VkPhysicalDeviceMemoryProperties p;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &p);
+    vkGetPhysicalDeviceMemoryProperties(gpu_.physical, &p);
     for (std::uint32_t i = 0; i < p.memoryTypeCount; ++i)
         if ((bits & (1u << i)) && (p.memoryTypes[i].propertyFlags & want) == want) return i;
     return 0;
@@ -63,59 +63,43 @@ Status EditorWindow::create(int width, int height, bool validation) {
     window_ = glfwCreateWindow(width, height, "Tidewater editor", nullptr, nullptr);
     if (!window_) return Error{ErrorCode::no_device, "editor: cannot create the window"};
 
-    std::uint32_t glfw_count = 0;
-    const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&glfw_count);
-    examples::ExampleDeviceOptions options;
+    examples::ExampleDeviceOptions options = examples::window_device_options(window_, surface_);
     options.application = "tidewater-editor";
     options.validation = validation;
     options.on_message = &EditorWindow::on_message;
     options.message_user = this;
-    options.instance_extensions.assign(glfw_extensions, glfw_extensions + glfw_count);
-    options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-    options.on_instance = [this](VkInstance made) {
-        return glfwCreateWindowSurface(made, window_, nullptr, &surface_) == VK_SUCCESS;
-    };
-    options.can_present = [this](VkPhysicalDevice d, std::uint32_t f) {
-        VkBool32 present = VK_FALSE;
-        return vkGetPhysicalDeviceSurfaceSupportKHR(d, f, surface_, &present) == VK_SUCCESS && present;
-    };
     if (!gpu_.create(options)) return Error{ErrorCode::no_device, "editor: " + gpu_.error()};
-    instance_ = gpu_.instance;
-    physical_ = gpu_.physical;
-    device_ = gpu_.device;
-    family_ = gpu_.family;
-    queue_ = gpu_.queue;
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pi.queueFamilyIndex = family_;
-    EDITOR_VK(vkCreateCommandPool(device_, &pi, nullptr, &pool_));
+    pi.queueFamilyIndex = gpu_.family;
+    EDITOR_VK(vkCreateCommandPool(gpu_.device, &pi, nullptr, &pool_));
     VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     ai.commandPool = pool_;
     ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     ai.commandBufferCount = kFramesInFlight;
-    EDITOR_VK(vkAllocateCommandBuffers(device_, &ai, cmds_));
+    EDITOR_VK(vkAllocateCommandBuffers(gpu_.device, &ai, cmds_));
     for (std::uint32_t s = 0; s < kFramesInFlight; ++s) {
         VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         fi.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-        EDITOR_VK(vkCreateFence(device_, &fi, nullptr, &fences_[s]));
+        EDITOR_VK(vkCreateFence(gpu_.device, &fi, nullptr, &fences_[s]));
         VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        EDITOR_VK(vkCreateSemaphore(device_, &si, nullptr, &acquired_[s]));
+        EDITOR_VK(vkCreateSemaphore(gpu_.device, &si, nullptr, &acquired_[s]));
     }
     return create_swapchain();
 }
 
 Status EditorWindow::create_swapchain() {
-    vkDeviceWaitIdle(device_);
+    vkDeviceWaitIdle(gpu_.device);
     destroy_swapchain();
     VkSurfaceCapabilitiesKHR caps;
-    EDITOR_VK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical_, surface_, &caps));
+    EDITOR_VK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu_.physical, surface_, &caps));
     if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
         return Error{ErrorCode::unsupported,
                      "editor: the window's images cannot be TRANSFER_SRC, which the renderer needs"};
     std::uint32_t count = 0;
-    vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface_, &count, nullptr);
+    vkGetPhysicalDeviceSurfaceFormatsKHR(gpu_.physical, surface_, &count, nullptr);
     std::vector<VkSurfaceFormatKHR> formats(count);
-    vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface_, &count, formats.data());
+    vkGetPhysicalDeviceSurfaceFormatsKHR(gpu_.physical, surface_, &count, formats.data());
     format_ = formats.at(0);
     for (const VkSurfaceFormatKHR& f : formats)  // UNORM: the renderer and ImGui write display values
         if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) format_ = f;
@@ -137,7 +121,7 @@ Status EditorWindow::create_swapchain() {
     sc.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     sc.presentMode = VK_PRESENT_MODE_FIFO_KHR;
     sc.clipped = VK_TRUE;
-    EDITOR_VK(vkCreateSwapchainKHR(device_, &sc, nullptr, &swapchain_));
+    EDITOR_VK(vkCreateSwapchainKHR(gpu_.device, &sc, nullptr, &swapchain_));
     if (!ui_pass_) {
         // The UI pass keeps what Tidewater drew and leaves the image ready to present.
         VkAttachmentDescription color{};
@@ -167,11 +151,11 @@ Status EditorWindow::create_swapchain() {
         rp.pSubpasses = &sub;
         rp.dependencyCount = 1;
         rp.pDependencies = &dep;
-        EDITOR_VK(vkCreateRenderPass(device_, &rp, nullptr, &ui_pass_));
+        EDITOR_VK(vkCreateRenderPass(gpu_.device, &rp, nullptr, &ui_pass_));
     }
-    vkGetSwapchainImagesKHR(device_, swapchain_, &count, nullptr);
+    vkGetSwapchainImagesKHR(gpu_.device, swapchain_, &count, nullptr);
     std::vector<VkImage> images(count);
-    vkGetSwapchainImagesKHR(device_, swapchain_, &count, images.data());
+    vkGetSwapchainImagesKHR(gpu_.device, swapchain_, &count, images.data());
     for (VkImage image : images) {
         Target t;
         t.image = image;
@@ -180,7 +164,7 @@ Status EditorWindow::create_swapchain() {
         vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
         vi.format = format_.format;
         vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        EDITOR_VK(vkCreateImageView(device_, &vi, nullptr, &t.view));
+        EDITOR_VK(vkCreateImageView(gpu_.device, &vi, nullptr, &t.view));
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
         info.format = kDepthFormat;
@@ -188,18 +172,18 @@ Status EditorWindow::create_swapchain() {
         info.mipLevels = info.arrayLayers = 1;
         info.samples = VK_SAMPLE_COUNT_1_BIT;
         info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        EDITOR_VK(vkCreateImage(device_, &info, nullptr, &t.depth));
+        EDITOR_VK(vkCreateImage(gpu_.device, &info, nullptr, &t.depth));
         VkMemoryRequirements req;
-        vkGetImageMemoryRequirements(device_, t.depth, &req);
+        vkGetImageMemoryRequirements(gpu_.device, t.depth, &req);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        EDITOR_VK(vkAllocateMemory(device_, &alloc, nullptr, &t.depth_memory));
-        EDITOR_VK(vkBindImageMemory(device_, t.depth, t.depth_memory, 0));
+        EDITOR_VK(vkAllocateMemory(gpu_.device, &alloc, nullptr, &t.depth_memory));
+        EDITOR_VK(vkBindImageMemory(gpu_.device, t.depth, t.depth_memory, 0));
         vi.image = t.depth;
         vi.format = kDepthFormat;
         vi.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        EDITOR_VK(vkCreateImageView(device_, &vi, nullptr, &t.depth_view));
+        EDITOR_VK(vkCreateImageView(gpu_.device, &vi, nullptr, &t.depth_view));
         VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
         fb.renderPass = ui_pass_;
         fb.attachmentCount = 1;
@@ -207,9 +191,9 @@ Status EditorWindow::create_swapchain() {
         fb.width = extent_.width;
         fb.height = extent_.height;
         fb.layers = 1;
-        EDITOR_VK(vkCreateFramebuffer(device_, &fb, nullptr, &t.framebuffer));
+        EDITOR_VK(vkCreateFramebuffer(gpu_.device, &fb, nullptr, &t.framebuffer));
         VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        EDITOR_VK(vkCreateSemaphore(device_, &si, nullptr, &t.rendered));
+        EDITOR_VK(vkCreateSemaphore(gpu_.device, &si, nullptr, &t.rendered));
         images_.push_back(t);
     }
     return {};
@@ -217,15 +201,15 @@ Status EditorWindow::create_swapchain() {
 
 void EditorWindow::destroy_swapchain() {
     for (Target& t : images_) {
-        vkDestroyFramebuffer(device_, t.framebuffer, nullptr);
-        vkDestroyImageView(device_, t.depth_view, nullptr);
-        vkDestroyImage(device_, t.depth, nullptr);
-        vkFreeMemory(device_, t.depth_memory, nullptr);
-        vkDestroyImageView(device_, t.view, nullptr);
-        vkDestroySemaphore(device_, t.rendered, nullptr);
+        vkDestroyFramebuffer(gpu_.device, t.framebuffer, nullptr);
+        vkDestroyImageView(gpu_.device, t.depth_view, nullptr);
+        vkDestroyImage(gpu_.device, t.depth, nullptr);
+        vkFreeMemory(gpu_.device, t.depth_memory, nullptr);
+        vkDestroyImageView(gpu_.device, t.view, nullptr);
+        vkDestroySemaphore(gpu_.device, t.rendered, nullptr);
     }
     images_.clear();
-    if (swapchain_) vkDestroySwapchainKHR(device_, swapchain_, nullptr);
+    if (swapchain_) vkDestroySwapchainKHR(gpu_.device, swapchain_, nullptr);
     swapchain_ = VK_NULL_HANDLE;
 }
 
@@ -235,12 +219,12 @@ render::DeviceContext EditorWindow::context() const {
 
 Result<bool> EditorWindow::begin_frame(Frame& frame, const std::function<Status(VkExtent2D)>& resized) {
     const std::uint32_t s = static_cast<std::uint32_t>(frame_counter_ % kFramesInFlight);
-    vkWaitForFences(device_, 1, &fences_[s], VK_TRUE, UINT64_MAX);
+    vkWaitForFences(gpu_.device, 1, &fences_[s], VK_TRUE, UINT64_MAX);
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
     VkResult r = VK_ERROR_OUT_OF_DATE_KHR;
     if (static_cast<std::uint32_t>(w) == extent_.width && static_cast<std::uint32_t>(h) == extent_.height)
-        r = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, acquired_[s], VK_NULL_HANDLE, &current_image_);
+        r = vkAcquireNextImageKHR(gpu_.device, swapchain_, UINT64_MAX, acquired_[s], VK_NULL_HANDLE, &current_image_);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
         if (w == 0 || h == 0) return false;  // minimised
         if (auto st = create_swapchain(); !st) return st.error();
@@ -248,7 +232,7 @@ Result<bool> EditorWindow::begin_frame(Frame& frame, const std::function<Status(
         return false;
     }
     if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR) return vk_failed("vkAcquireNextImageKHR", r);
-    vkResetFences(device_, 1, &fences_[s]);
+    vkResetFences(gpu_.device, 1, &fences_[s]);
     Target& t = images_[current_image_];
     frame.cmd = cmds_[s];
     frame.color = t.image;
@@ -282,15 +266,15 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
         VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         bi.size = bytes;
         bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-        EDITOR_VK(vkCreateBuffer(device_, &bi, nullptr, &readback));
+        EDITOR_VK(vkCreateBuffer(gpu_.device, &bi, nullptr, &readback));
         VkMemoryRequirements req;
-        vkGetBufferMemoryRequirements(device_, readback, &req);
+        vkGetBufferMemoryRequirements(gpu_.device, readback, &req);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex =
             memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        EDITOR_VK(vkAllocateMemory(device_, &alloc, nullptr, &readback_memory));
-        EDITOR_VK(vkBindBufferMemory(device_, readback, readback_memory, 0));
+        EDITOR_VK(vkAllocateMemory(gpu_.device, &alloc, nullptr, &readback_memory));
+        EDITOR_VK(vkBindBufferMemory(gpu_.device, readback, readback_memory, 0));
         barrier(frame.cmd, t.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
@@ -312,7 +296,7 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
     submit.pCommandBuffers = &frame.cmd;
     submit.signalSemaphoreCount = 1;
     submit.pSignalSemaphores = &t.rendered;
-    EDITOR_VK(vkQueueSubmit(queue_, 1, &submit, fences_[s]));
+    EDITOR_VK(vkQueueSubmit(gpu_.queue, 1, &submit, fences_[s]));
     t.presented = true;
     VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     present.waitSemaphoreCount = 1;
@@ -320,23 +304,23 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
     present.swapchainCount = 1;
     present.pSwapchains = &swapchain_;
     present.pImageIndices = &current_image_;
-    const VkResult presented = vkQueuePresentKHR(queue_, &present);
+    const VkResult presented = vkQueuePresentKHR(gpu_.queue, &present);
     ++frame_counter_;
     Status result;
     if (presented != VK_SUCCESS && presented != VK_SUBOPTIMAL_KHR && presented != VK_ERROR_OUT_OF_DATE_KHR)
         result = vk_failed("vkQueuePresentKHR", presented);
     if (readback) {
-        vkWaitForFences(device_, 1, &fences_[s], VK_TRUE, UINT64_MAX);
+        vkWaitForFences(gpu_.device, 1, &fences_[s], VK_TRUE, UINT64_MAX);
         void* mapped = nullptr;
-        vkMapMemory(device_, readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
+        vkMapMemory(gpu_.device, readback_memory, 0, VK_WHOLE_SIZE, 0, &mapped);
         std::vector<std::uint8_t> rgba(bytes);
         std::memcpy(rgba.data(), mapped, bytes);
-        vkUnmapMemory(device_, readback_memory);
+        vkUnmapMemory(gpu_.device, readback_memory);
         if (format_.format == VK_FORMAT_B8G8R8A8_UNORM || format_.format == VK_FORMAT_B8G8R8A8_SRGB)
             for (std::size_t k = 0; k < rgba.size(); k += 4) std::swap(rgba[k], rgba[k + 2]);
         for (std::size_t k = 3; k < rgba.size(); k += 4) rgba[k] = 255;
-        vkDestroyBuffer(device_, readback, nullptr);
-        vkFreeMemory(device_, readback_memory, nullptr);
+        vkDestroyBuffer(gpu_.device, readback, nullptr);
+        vkFreeMemory(gpu_.device, readback_memory, nullptr);
         if (auto st = detail::write_png_rgba8(screenshot, static_cast<int>(extent_.width),
                                               static_cast<int>(extent_.height), rgba);
             !st)
@@ -346,21 +330,19 @@ Status EditorWindow::end_frame(Frame& frame, const std::string& screenshot) {
 }
 
 void EditorWindow::destroy() {
-    if (device_) {
-        vkDeviceWaitIdle(device_);
+    if (gpu_.device) {
+        vkDeviceWaitIdle(gpu_.device);
         destroy_swapchain();
-        if (ui_pass_) vkDestroyRenderPass(device_, ui_pass_, nullptr);
+        if (ui_pass_) vkDestroyRenderPass(gpu_.device, ui_pass_, nullptr);
         for (std::uint32_t s = 0; s < kFramesInFlight; ++s) {
-            vkDestroyFence(device_, fences_[s], nullptr);
-            vkDestroySemaphore(device_, acquired_[s], nullptr);
+            vkDestroyFence(gpu_.device, fences_[s], nullptr);
+            vkDestroySemaphore(gpu_.device, acquired_[s], nullptr);
         }
-        vkDestroyCommandPool(device_, pool_, nullptr);
-        device_ = VK_NULL_HANDLE;
+        vkDestroyCommandPool(gpu_.device, pool_, nullptr);
     }
-    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+    if (surface_) vkDestroySurfaceKHR(gpu_.instance, surface_, nullptr);
     surface_ = VK_NULL_HANDLE;
     gpu_.destroy();  // the device, the validation messenger and the instance
-    instance_ = VK_NULL_HANDLE;
     if (window_) {
         glfwDestroyWindow(window_);
         glfwTerminate();

@@ -17,7 +17,7 @@
 #include <tidewater/result.hpp>
 #include <vector>
 
-#include "../common/example_device.hpp"
+#include "../common/example_window.hpp"
 
 namespace tidewater::editor {
 
@@ -65,13 +65,7 @@ class EditorWindow {
 
     GLFWwindow* window_ = nullptr;
     examples::ExampleDevice gpu_;  // instance, device and queue (../common/example_device.hpp)
-    // gpu_'s handles, named as this file uses them.
-    VkInstance instance_ = VK_NULL_HANDLE;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
-    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-    VkDevice device_ = VK_NULL_HANDLE;
-    std::uint32_t family_ = 0;
-    VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkSurfaceFormatKHR format_{};
