@@ -277,6 +277,12 @@ JSON
 
     "$TW" bake --resolution 64 --model-resolution 32 --out baked --quiet > /dev/null
     check "re-bake replaces the folder" bash -c "grep -q '\"resolution\": 64' baked/shore.json && grep -q '\"resolution\": 32' baked/shore.json && ! ls -d baked.old-* 2>/dev/null"
+    # Without --resolution the bake follows the scene's resolutions.
+    sed 's|"ocean": "ocean_rolling",|"ocean": "ocean_rolling", "shore": {"resolution": 32, "distance_resolution": 48},|' "$EXAMPLES/scenes/default.json" > own_resolutions.json
+    "$TW" bake --scene own_resolutions.json --out own --quiet > own_log.txt
+    check "bake follows the scene's resolutions" bash -c "grep -q 'shore model 32x32' own_log.txt && grep -q 'signed distance 48x48' own_log.txt"
+    sed 's|"distance_resolution": 48|"distance_resolution": 16|' own_resolutions.json > coarse_distance.json
+    expect_error "scene's distance field coarser than its model" "coarse_distance.json: /shore/distance_resolution" "$TW" bake --scene coarse_distance.json --out b5
     expect_error "bad resolution" "resolution" "$TW" bake --resolution 4 --out b2
     expect_error "distance field coarser than the model" "coarser than the shore model" "$TW" bake --resolution 128 --out b4
     check "no folder after a refused bake" test ! -e b4

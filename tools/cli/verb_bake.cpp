@@ -21,7 +21,7 @@ namespace {
 struct BakeArgs {
     std::string scene;
     std::string out;
-    int resolution = 1024;
+    int resolution = 0;  // 0: the scene's
     int model_resolution = 0;
     double tolerance = 0.0;
     unsigned threads = 0;
@@ -58,12 +58,16 @@ int run_bake(const BakeArgs& a) {
                                 scene->name));
     // This verb makes the scene's bake: a saved one it names is not loaded but redone.
     scene->shore.bake_folder.clear();
+    // The scene's resolutions unless the command line overrides them.
     if (a.model_resolution != 0) scene->shore.resolution = a.model_resolution;
+    if (a.resolution != 0) scene->shore.distance_resolution = a.resolution;
+    const int distance =
+        scene->shore.distance_resolution != 0 ? scene->shore.distance_resolution : scene->shore.resolution;
     if (!a.quiet)
         std::fprintf(stderr, "bake: shore model %dx%d over a %dx%d shoreline, %zu waves\n", scene->shore.resolution,
-                     scene->shore.resolution, a.resolution, a.resolution, scene->ocean.waves().size());
+                     scene->shore.resolution, distance, distance, scene->ocean.waves().size());
     SceneBakeOptions options;
-    options.distance_resolution = a.resolution;
+    options.distance_resolution = distance;
     options.threads = a.threads;
     Progress progress(a.quiet);
     options.progress = [&](std::string_view stage, double f) { progress(stage, f); };
@@ -101,8 +105,9 @@ Verb add_bake_verb(CLI::App& app) {
                            "to a folder a scene can load");
     cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--out", args->out, "Output folder (written whole or not at all)")->required();
-    cmd->add_option("--resolution", args->resolution, "Texels per side of the signed distance field (8 to 8192)")
-        ->capture_default_str();
+    cmd->add_option("--resolution", args->resolution,
+                    "Texels per side of the signed distance field (8 to 8192; default: the scene's "
+                    "shore.distance_resolution, else its shore.resolution)");
     cmd->add_option("--model-resolution", args->model_resolution,
                     "Texels per side of the per-wave shore model (16 to 4096; default: the scene's shore.resolution)");
     cmd->add_option("--tolerance", args->tolerance, "Shoreline simplification tolerance, m (0 = half a texel)");

@@ -120,8 +120,9 @@ bool unchanged_ocean_shore(const Scene& scene, const Terrain& terrain, int dista
 Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneBakeOptions& options,
                         BakeProgress& progress, double begin, SceneBake& bake) {
     if (!(scene.shore.enabled && scene.has_ocean)) return {};
-    const int distance_resolution =
-        options.distance_resolution != 0 ? options.distance_resolution : scene.shore.resolution;
+    const int distance_resolution = options.distance_resolution != 0       ? options.distance_resolution
+                                    : scene.shore.distance_resolution != 0 ? scene.shore.distance_resolution
+                                                                           : scene.shore.resolution;
     if (unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
         bake.ocean_shore = options.previous->bake->ocean_shore;
         bake.shoreline = options.previous->bake->shoreline;

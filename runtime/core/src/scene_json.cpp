@@ -300,7 +300,8 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
     if (!scene.has("shore")) return shore;
     auto r = ObjectReader::open(scene.at("shore"), scene.source(), "/shore");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"enabled", "resolution", "breaking_index", "bake"}); !st) return st.error();
+    if (auto st = r->allow_only({"enabled", "resolution", "distance_resolution", "breaking_index", "bake"}); !st)
+        return st.error();
     if (r->has("enabled")) {
         if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
         shore.enabled = r->at("enabled").get<bool>();
@@ -308,11 +309,18 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
     std::int64_t resolution = shore.resolution;
     if (auto st = r->integer("resolution", resolution, 16, 4096); !st) return st.error();
     shore.resolution = static_cast<int>(resolution);
+    std::int64_t distance_resolution = shore.distance_resolution;
+    if (auto st = r->integer("distance_resolution", distance_resolution, 8, 8192); !st) return st.error();
+    if (r->has("distance_resolution") && distance_resolution < shore.resolution)
+        return r->error("distance_resolution",
+                        fmt::format("{} is coarser than the shore model's grid ({}), which samples it",
+                                    distance_resolution, shore.resolution));
+    shore.distance_resolution = static_cast<int>(distance_resolution);
     if (auto st = r->number("breaking_index", shore.breaking_index); !st) return st.error();
     if (auto st = check_range(*r, "breaking_index", shore.breaking_index, 0.3, 1.2, ""); !st) return st.error();
     if (r->has("bake")) {
-        if (r->has("resolution") || r->has("breaking_index"))
-            return r->error("bake", "a saved bake fixes the resolution and breaking index: give either bake or those");
+        if (r->has("resolution") || r->has("distance_resolution") || r->has("breaking_index"))
+            return r->error("bake", "a saved bake fixes the resolutions and breaking index: give either bake or those");
         std::string folder;
         if (auto st = r->string("bake", folder); !st) return st.error();
         if (folder.empty()) return r->error("bake", "expected a folder written by tidewater bake");

@@ -34,7 +34,10 @@ struct SceneCamera {
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {
     bool enabled = true;
-    int resolution = 256;               ///< Texels per side of the shore model, 16 to 4096.
+    int resolution = 256;  ///< Texels per side of the shore model, 16 to 4096.
+    /// Texels per side of the signed distance field the model samples, 8 to 8192 and at
+    /// least `resolution`; 0 = `resolution`.
+    int distance_resolution = 0;
     double breaking_index = 0.78;       ///< Breaker height / depth (McCowan), 0.3 to 1.2.
     std::filesystem::path bake_folder;  ///< A saved bake for bake_scene to load (empty: bake).
 };
