@@ -14,7 +14,7 @@ JOBS="$(nproc 2>/dev/null || echo 2)"
 PACKAGES=(
   cmake ninja-build g++ pkg-config ccache git libtbb-dev
   libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
-  libgtest-dev libbenchmark-dev libstb-dev libpng-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
+  libgtest-dev libbenchmark-dev libstb-dev libpng-dev libgdal-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools glslang-dev
   clang-format
 )

@@ -7,7 +7,6 @@
 #include "embedded_text.hpp"
 #include "scene/scene_json_parts.hpp"
 #include "tidewater/constants.hpp"
-#include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/json_reader.hpp"
 #include "tidewater/scene.hpp"
 
@@ -16,11 +15,10 @@ namespace tidewater {
 namespace {
 
 using detail::check_range;
+using detail::kMaxAbsHeight;
 using detail::ObjectReader;
 using detail::read_pair;
 using nlohmann::json;
-
-constexpr double kMaxAbsHeight = 1e5;
 
 Status read_version(const ObjectReader& r) {
     std::int64_t version = 0;
@@ -168,108 +166,6 @@ Status read_profile_settings(const ObjectReader& r, WaterProfile& p) {
     }
     if (auto st = read_fold_policy(r, p.fold_policy); !st) return st;
     return r.number("time_offset", p.time_offset);
-}
-
-Result<Terrain> read_heightmap(const ObjectReader& r, const std::filesystem::path& base_dir) {
-    if (auto st = r.allow_only({"file", "size", "height_range", "center"}); !st) return st.error();
-    HeightmapTerrain t;
-    if (auto st = r.string("file", t.file, true); !st) return st.error();
-    if (auto st = read_pair(r, "size", t.size, true, 1e6); !st) return st.error();
-    if (t.size.x <= 0.0 || t.size.y <= 0.0) return r.error("size", "both sizes must be > 0 m");
-    glm::dvec2 range{0.0};
-    if (auto st = read_pair(r, "height_range", range, true, kMaxAbsHeight); !st) return st.error();
-    if (!(range.x < range.y)) return r.error("height_range", "expected [lowest, highest] with lowest < highest");
-    t.min_height = range.x;
-    t.max_height = range.y;
-    if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
-    std::filesystem::path path = t.file;
-    if (path.is_relative() && !base_dir.empty()) path = base_dir / path;
-    auto image = detail::read_png_gray16(path);
-    if (!image) {
-        Error e = std::move(image).error();
-        e.message = fmt::format("{}: {}", r.context("file"), e.message);
-        return e;
-    }
-    if (image->width < 2 || image->height < 2)
-        return r.error("file", fmt::format("{}: {}x{} pixels: a heightmap needs at least 2x2", path.string(),
-                                           image->width, image->height));
-    t.file = path.string();
-    t.image = std::make_shared<const Gray16Image>(std::move(image).value());
-    return Terrain(t);
-}
-
-Status read_knolls(const ObjectReader& r, std::vector<Knoll>& out) {
-    if (!r.has("knolls")) return {};
-    const nlohmann::json& list = r.at("knolls");
-    if (!list.is_array())
-        return r.error("knolls", fmt::format("expected an array of objects, found {}", detail::json_type_name(list)));
-    if (list.size() > 256) return r.error("knolls", fmt::format("{} knolls: at most 256", list.size()));
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        auto k = ObjectReader::open(list[i], r.source(), r.child_path("knolls") + "/" + std::to_string(i));
-        if (!k) return k.error();
-        if (auto st = k->allow_only({"at", "radius", "height"}); !st) return st;
-        Knoll knoll;
-        if (auto st = read_pair(*k, "at", knoll.at, true, 1e7); !st) return st;
-        if (auto st = k->number("radius", knoll.radius, true); !st) return st;
-        if (auto st = check_range(*k, "radius", knoll.radius, 1.0, 10000.0, " m"); !st) return st;
-        if (auto st = k->number("height", knoll.height, true); !st) return st;
-        if (auto st = check_range(*k, "height", knoll.height, 0.1, 2000.0, " m"); !st) return st;
-        out.push_back(knoll);
-    }
-    return {};
-}
-
-Result<Terrain> read_island(const ObjectReader& r) {
-    if (auto st = r.allow_only({"seed", "radius", "height", "seabed", "center", "knolls"}); !st) return st.error();
-    IslandTerrain t;
-    std::int64_t seed = t.seed;
-    if (auto st = r.integer("seed", seed, 0, 0xffffffffLL); !st) return st.error();
-    t.seed = static_cast<std::uint32_t>(seed);
-    if (auto st = r.number("radius", t.radius); !st) return st.error();
-    if (auto st = check_range(r, "radius", t.radius, 50.0, 50000.0, " m"); !st) return st.error();
-    if (auto st = r.number("height", t.height); !st) return st.error();
-    if (auto st = check_range(r, "height", t.height, 1.0, 2000.0, " m"); !st) return st.error();
-    if (auto st = r.number("seabed", t.seabed); !st) return st.error();
-    if (auto st = check_range(r, "seabed", t.seabed, -10000.0, -1.0, " m"); !st) return st.error();
-    if (auto st = read_pair(r, "center", t.center, false, 1e7); !st) return st.error();
-    if (auto st = read_knolls(r, t.knolls); !st) return st.error();
-    return Terrain(t);
-}
-
-Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::path& base_dir) {
-    auto r = ObjectReader::open(scene.at("terrain"), scene.source(), "/terrain");
-    if (!r) return r.error();
-    if (auto st = r->allow_only({"flat", "plane", "heightmap", "island"}); !st) return st.error();
-    const int shapes = int(r->has("flat")) + int(r->has("plane")) + int(r->has("heightmap")) + int(r->has("island"));
-    if (shapes != 1) {
-        return Error{
-            ErrorCode::schema_error,
-            fmt::format("{}: give exactly one of \"flat\", \"plane\", \"heightmap\" and \"island\"", r->context())};
-    }
-    for (const char* key : {"flat", "plane", "heightmap", "island"}) {
-        if (!r->has(key)) continue;
-        auto shape = ObjectReader::open(r->at(key), r->source(), r->child_path(key));
-        if (!shape) return shape.error();
-        const std::string k = key;
-        if (k == "heightmap") return read_heightmap(*shape, base_dir);
-        if (k == "island") return read_island(*shape);
-        if (k == "flat") {
-            if (auto st = shape->allow_only({"height"}); !st) return st.error();
-            FlatTerrain flat;
-            if (auto st = shape->number("height", flat.height, true); !st) return st.error();
-            if (auto st = check_range(*shape, "height", flat.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
-                return st.error();
-            return Terrain(flat);
-        }
-        if (auto st = shape->allow_only({"height", "slope"}); !st) return st.error();
-        PlaneTerrain plane;
-        if (auto st = shape->number("height", plane.height, true); !st) return st.error();
-        if (auto st = check_range(*shape, "height", plane.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
-            return st.error();
-        if (auto st = read_pair(*shape, "slope", plane.slope, true, 10.0); !st) return st.error();
-        return Terrain(plane);
-    }
-    return Error{ErrorCode::schema_error, fmt::format("{}: no terrain shape", r->context())};
 }
 
 Result<SceneCamera> read_camera(const ObjectReader& scene) {
@@ -456,7 +352,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
         }
     }
     if (!r->has("terrain")) return r->error("terrain", "required terrain is missing");
-    auto terrain = read_terrain(*r, base_dir);
+    auto terrain = detail::read_terrain(*r, base_dir);
     if (!terrain) return terrain.error();
     scene.terrain = std::move(terrain).value();
     if (r->has("ocean")) {

@@ -12,6 +12,9 @@
 
 namespace tidewater::detail {
 
+/// The largest |height| or |level| a scene may give, m.
+inline constexpr double kMaxAbsHeight = 1e5;
+
 /// Reads [a, b] at `key` into `out`; each value within |v| <= limit.
 Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit);
 
@@ -36,6 +39,9 @@ Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats);
 Status read_floats(const ObjectReader& scene, std::vector<SceneFloat>& floats);
 /// Points (x, z) at "path": at least two, finite, consecutive points apart.
 Status read_path(const ObjectReader& r, std::vector<glm::dvec2>& path);
+/// The scene's "terrain": one of flat, plane, heightmap (a PNG, a raw file or a raster
+/// GDAL reads) and island (scene_terrain_json.cpp).
+Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::path& base_dir);
 /// Every body name once, none called "ocean" but the ocean.
 Status check_body_names(const ObjectReader& scene, const Scene& parsed);
 
