@@ -33,8 +33,10 @@ void Editor::panels() {
         const auto names = bundled_preset_names();
         std::vector<const char*> items;
         for (const auto& n : names) items.push_back(n.c_str());
-        if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running())
+        if (ImGui::Combo("ocean preset", &preset_, items.data(), static_cast<int>(items.size())) && !bake_.running() &&
+            preset_ >= 0)
             choose_preset(names[static_cast<std::size_t>(preset_)]);
+        if (preset_ < 0) ImGui::TextUnformatted("the scene's own waves (pick a preset to replace them)");
         ImGui::Text("%zu waves, Hs %.2f m", scene_->ocean.waves().size(),
                     scene_->ocean.waves().significant_wave_height());
     }

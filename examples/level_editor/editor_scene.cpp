@@ -22,7 +22,7 @@ Status Editor::load(const std::string& path) {
     breaking_index_ = static_cast<float>(scene_->shore.breaking_index);
     const auto presets = bundled_preset_names();
     const auto at = std::find(presets.begin(), presets.end(), scene_->ocean.profile().name);
-    preset_ = at == presets.end() ? 0 : static_cast<int>(at - presets.begin());
+    preset_ = at == presets.end() ? -1 : static_cast<int>(at - presets.begin());  // -1: the scene's own waves
     if (scene_->camera)
         camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
     if (renderer_)

@@ -412,6 +412,28 @@ JSON
     expect_error "nothing to write" "--export" "$TW" inspect --time 0
     check "no partial export" bash -c "! ls -d e1 e2 e3 e1.tmp-* e2.tmp-* e3.tmp-* plain/sub 2>/dev/null"
     ;;
+  hilo_bay)
+    # The real coast in the box: Hilo Bay's depth grid bakes, renders, queries and inspects.
+    HILO="$EXAMPLES/scenes/hilo_bay.json"
+    "$TW" bake --scene "$HILO" --out hilo --quiet > bake.txt
+    check "Hilo Bay bakes at the scene's resolutions" grep -q "shore model 512x512 .* signed distance 1024x1024" bake.txt
+    check "its coast has land polygons and shoreline segments" grep -qE "[0-9]+ shoreline segments, [1-9][0-9]* land polygons" bake.txt
+    # Points across the breakwater and the harbour (the breakwater runs from about (150, -820) to (1000, -230)).
+    printf 'x,z\n2500,-2200\n600,-1200\n700,-300\n-200,200\n-2000,2000\n' > hilo_points.csv
+    "$TW" query --scene "$HILO" --points hilo_points.csv --time 30 --out hilo.csv 2>/dev/null
+    check "query exits 0 with a row per point" test "$(wc -l < hilo.csv)" -eq 6
+    check "the open sea is deep and the hills are land" awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+      NR == 2 { deep = $c["depth"] > 20 } NR == 6 { land = $c["depth"] < 0 && $c["wet"] == 0 } END { exit !(deep && land) }' hilo.csv
+    if [ -e /usr/share/vulkan/icd.d/lvp_icd.x86_64.json ]; then
+      "$TW" render --scene "$HILO" --time 30 --size 160x90 --out hilo.png --validate > /dev/null
+      check "Hilo Bay renders under validation" test -s hilo.png
+    fi
+    "$TW" inspect --scene "$HILO" --resolution 40x30 --extent=-1500:2500,-2500:500 --time 30 --export hilo_vts --quiet > /dev/null
+    check "Hilo Bay exports for ParaView" test -s hilo_vts/surface_0000.vts
+    printf 'not a raster\n' > bad.tif
+    echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "bad.tif"}}, "ocean": "pool_calm"}' > bad_raster.json
+    expect_error "a file that is not a raster" "bad.tif: not a raster GDAL can read" "$TW" query --scene bad_raster.json --points points.csv --time 0
+    ;;
   *)
     echo "unknown case $CASE"; exit 2 ;;
 esac

@@ -173,6 +173,27 @@ TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
 }
 
+// A real coast opens in the editor: Hilo Bay's depth grid, baked in the background, drawn
+// with water and land under the validation layer.
+TEST(Editor, OpensHiloBay) {
+    const fs::path shot = fs::temp_directory_path() / ("tidewater_editor_hilo_" + std::to_string(::getpid()) + ".png");
+    const EditorRun r = run_editor(std::string("--frames 4 --size 640x400 --scene ") + TIDEWATER_EXAMPLES_DIR +
+                                   "/scenes/hilo_bay.json --screenshot " + shot.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    auto img = detail::read_png_rgba8(shot);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    int water = 0, land = 0;
+    for (std::size_t k = 0; k < img->pixels.size(); k += 4) {
+        const int r8 = img->pixels[k], g8 = img->pixels[k + 1], b8 = img->pixels[k + 2];
+        water += b8 > r8 + 20 && b8 >= g8 ? 1 : 0;
+        land += g8 > r8 + 10 && g8 > b8 + 10 ? 1 : 0;
+    }
+    EXPECT_GT(water, img->width * img->height / 20) << "water";
+    EXPECT_GT(land, img->width * img->height / 100) << "the hills behind the bay";
+    fs::remove(shot);
+}
+
 TEST(Editor, ABadSceneIsReportedWithItsFile) {
     const EditorRun r = run_editor("--frames 2 --scene /no/such/scene.json");
     EXPECT_NE(r.status, 0);
