@@ -155,7 +155,7 @@ TW_CONST uint kFrameSet = 0u;
 TW_BINDINGS(FrameBinding)
     eFrameConstants = 0u,     // uniform GpuFrame
     eFrameWaves = 1u,         // GpuWave[] of every draw
-    eFrameTerrainHeight = 2u, // sampler2D, R32F metres
+    eFrameTerrainHeight = 2u, // sampler2D, R16 unorm heights (GpuFrame.terrain_heights decodes them)
     eFrameSceneColor = 3u,    // sampler2D, the opaque scene's colour copy
     eFrameSceneDepth = 4u,    // sampler2D, its depth copy
     eFrameShoreWaves = 5u,    // vec4[] shore fields per wave and texel
@@ -229,7 +229,10 @@ struct GpuFrame {
     vec4 sun;                // xyz: unit direction toward the sun; w: intensity
     vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
     vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
-    vec4 terrain_heights;    // x: the texture's highest ground (m); yzw: unused
+    vec4 terrain_heights;    // x: the highest ground (m); y: the height of texel value 0 (m); z: metres per unit
+                             // texel value; w: the seabed the terrain fades to beyond its edge (m)
+    vec4 terrain_lod;        // x: how far beyond its outermost texel centres the terrain fades to the seabed
+                             // (m; 0: the edge extends); y, z: texel size along x, z (m); w: the lowest ground (m)
     vec4 viewport;           // xy: size (px); zw: 1 / size
     vec4 options;            // x: has scene copy (0/1); y: the target wants linear colour (sRGB or float formats, 0/1);
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
@@ -307,6 +310,15 @@ struct GpuQueryParams {
 // same bilinear weights as the CPU:
 //   per wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
 //   per texel:          (depth m, breaking 0..1, steepness scale, shore distance m)
+// Terrain level of detail (CDLOD, Strugar 2009): each node the CPU selects draws one
+// patch of kTerrainPatchQuads x kTerrainPatchQuads quads; as its distance (terrain_lod.glsl)
+// nears the end of its level's range, its odd vertices slide onto the next level's grid.
+TW_CONST uint kTerrainPatchQuads = 32u;
+struct GpuTerrainNode {
+    vec4 rect;   // xy: corner relative to O (m); z: side (m); w: level (0 the finest)
+    vec4 morph;  // x: distance where the morph starts (m); y: 1 / the distance it takes (1/m); zw: unused
+};
+
 struct GpuShoreTexel {
     vec4 values;
 };
@@ -321,7 +333,8 @@ static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 17 * 16 + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 18 * 16 + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST
 #endif

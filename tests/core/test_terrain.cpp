@@ -55,6 +55,31 @@ TEST(Terrain, HeightmapRoundTripsThroughPng) {
     fs::remove_all(dir);
 }
 
+// Beyond its pixel centres a heightmap's edge value eases down to its lowest height over
+// a quarter of its larger side, so that land at the edge of the data does not stand as a
+// wall or a plateau to the horizon.
+TEST(Terrain, AHeightmapFadesToItsSeabedBeyondItsEdge) {
+    auto image = std::make_shared<Gray16Image>();
+    image->width = image->height = 3;
+    image->pixels.assign(9, 65535);  // all at the highest: 30 m
+    image->pixels[4] = 0;            // the centre at the lowest: -10 m
+    HeightmapTerrain map;
+    map.size = {400.0, 200.0};
+    map.min_height = -10.0;
+    map.max_height = 30.0;
+    map.image = image;
+    const Terrain t(map);
+    EXPECT_NEAR(t.height_at({200.0, 0.0}), 30.0, 1e-9);  // the east edge's centre pixel
+    const HeightmapEdgeFade fade = heightmap_edge_fade(map);
+    EXPECT_DOUBLE_EQ(fade.distance, 100.0);
+    EXPECT_DOUBLE_EQ(fade.seabed, -10.0);
+    EXPECT_NEAR(t.height_at({250.0, 0.0}), 30.0 - 40.0 * 0.5, 1e-9);  // half way: smoothstep(0.5) = 0.5
+    EXPECT_NEAR(t.height_at({300.0, 0.0}), -10.0, 1e-9);
+    EXPECT_NEAR(t.height_at({5000.0, -3000.0}), -10.0, 1e-9);
+    // Continuous at the edge, and easing in: 1 m beyond it the ground has dropped 1.2 cm.
+    EXPECT_NEAR(t.height_at({201.0, 0.0}), 30.0 - 40.0 * (3e-4 - 2e-6), 1e-9);
+}
+
 TEST(Terrain, BadHeightmapsNameTheFile) {
     const fs::path dir = temp_dir("tidewater_bad_heightmap_test");
     std::ofstream(dir / "garbage.png") << "this is not a png";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/ripples.hpp"
@@ -34,8 +35,23 @@ double sample_heightmap(const HeightmapTerrain& t, glm::dvec2 p) {
     };
     const double raw = (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) +
                        fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
-    return t.min_height + (t.max_height - t.min_height) * raw / 65535.0;
+    const double h = t.min_height + (t.max_height - t.min_height) * raw / 65535.0;
+    // Beyond the pixel centres: the edge value eased to the seabed.
+    const glm::dvec2 outside = glm::max(glm::abs(p - t.center) - 0.5 * t.size, glm::dvec2(0.0));
+    const double beyond = std::sqrt(outside.x * outside.x + outside.y * outside.y);
+    if (beyond <= 0.0) return h;
+    const HeightmapEdgeFade fade = heightmap_edge_fade(t);
+    const double s = std::clamp(beyond / fade.distance, 0.0, 1.0);
+    return h + (fade.seabed - h) * s * s * (3.0 - 2.0 * s);
 }
+
+}  // namespace
+
+HeightmapEdgeFade heightmap_edge_fade(const HeightmapTerrain& t) {
+    return {0.25 * std::max(t.size.x, t.size.y), t.min_height};
+}
+
+namespace {
 
 double fbm(glm::dvec2 p, std::uint32_t seed, int octaves) {
     double sum = 0.0, amp = 0.5;

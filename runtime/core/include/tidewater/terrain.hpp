@@ -32,8 +32,9 @@ struct PlaneTerrain {
 };
 
 /// A 16-bit greyscale heightmap: pixel value 0 is min_height, 65535 is max_height.
-/// Image column i maps to x, row j to z, spanning `size` centred on `center`;
-/// outside it the edge pixels extend. Sampled bilinearly between pixel centres.
+/// Image column i maps to x, row j to z, its pixel centres spanning `size` centred on
+/// `center`. Sampled bilinearly between pixel centres; beyond them the edge value
+/// fades to min_height (heightmap_edge_fade), so that a world goes on to the horizon.
 struct HeightmapTerrain {
     std::string file;                 ///< Where it came from (for messages).
     glm::dvec2 size{1000.0, 1000.0};  ///< m along x and z, > 0.
@@ -43,6 +44,15 @@ struct HeightmapTerrain {
     std::shared_ptr<const Gray16Image> image;
     bool operator==(const HeightmapTerrain&) const = default;  ///< The same pixels object, not equal pixels.
 };
+
+/// How a heightmap goes on beyond its outermost pixel centres: its edge value eased
+/// (smoothstep of the distance from them) to `seabed` over `distance`. One rule for the
+/// CPU (Terrain::height_at) and the renderer (frame.glsl's terrain_height_at).
+struct HeightmapEdgeFade {
+    double distance = 0.0;  ///< m: a quarter of the heightmap's larger side
+    double seabed = 0.0;    ///< m: its min_height
+};
+HeightmapEdgeFade heightmap_edge_fade(const HeightmapTerrain& t);
 
 /// A rounded mound added to a procedural island where a designer wants one: a rock in a
 /// river, a skerry, a hillock. Its profile is height * (1 - (r/radius)^2)^2.
