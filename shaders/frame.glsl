@@ -7,15 +7,34 @@
 
 layout(std140, set = kFrameSet, binding = eFrameConstants) uniform Frame { GpuFrame frame; };
 layout(std430, set = kFrameSet, binding = eFrameWaves) readonly buffer Waves { GpuWave waves[]; };
-layout(set = kFrameSet, binding = eFrameTerrainHeight) uniform sampler2D terrain_height;  // R32F, metres
+layout(set = kFrameSet, binding = eFrameTerrainHeight) uniform sampler2D terrain_height;  // R16 unorm
 layout(set = kFrameSet, binding = eFrameSceneColor) uniform sampler2D scene_color;
 layout(set = kFrameSet, binding = eFrameSceneDepth) uniform sampler2D scene_depth;
 layout(std430, set = kFrameSet, binding = eFrameShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
 layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
 
+// The ground's height (m) at xz relative to O: the height texture between its texel
+// centres, and beyond them the edge value eased to the seabed (the GLSL twin of
+// tidewater::heightmap_edge_fade in Terrain::height_at).
 float terrain_height_at(vec2 xz) {
     vec2 uv = (xz - frame.terrain_rect.xy) / frame.terrain_rect.zw;
-    return textureLod(terrain_height, uv, 0.0).r;
+    float h = frame.terrain_heights.y + frame.terrain_heights.z * textureLod(terrain_height, uv, 0.0).r;
+    float fade = frame.terrain_lod.x;
+    if (fade > 0.0) {
+        vec2 half_texel = 0.5 * frame.terrain_lod.yz;
+        vec2 outside = max(max(frame.terrain_rect.xy + half_texel - xz, xz - (frame.terrain_rect.xy + frame.terrain_rect.zw - half_texel)), 0.0);
+        h = mix(h, frame.terrain_heights.w, smoothstep(0.0, fade, length(outside)));
+    }
+    return h;
+}
+
+// The ground's normal from central differences `step` metres apart (at least a texel):
+// the heightmap's own detail, whatever the mesh's level of detail.
+vec3 terrain_normal_at(vec2 xz, float step) {
+    vec2 e = max(vec2(step), frame.terrain_lod.yz);
+    float dx = terrain_height_at(xz + vec2(e.x, 0.0)) - terrain_height_at(xz - vec2(e.x, 0.0));
+    float dz = terrain_height_at(xz + vec2(0.0, e.y)) - terrain_height_at(xz - vec2(0.0, e.y));
+    return normalize(vec3(-dx / (2.0 * e.x), 1.0, -dz / (2.0 * e.y)));
 }
 
 vec3 srgb_to_linear(vec3 c) {

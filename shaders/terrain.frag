@@ -8,7 +8,6 @@
 #include "host_device.h"
 #include "frame.glsl"
 layout(location = 0) in vec3 world_pos;
-layout(location = 1) in vec3 normal;
 layout(location = 0) out vec4 out_color;
 
 // Distance to the nearest of jittered cell points (Voronoi), animated in time.
@@ -41,13 +40,15 @@ vec3 ground_detail(vec2 xz, float footprint) {
 }
 
 void main() {
-    vec3 geo_n = normalize(normal);
     float h = world_pos.y;
     float level = frame.params.x;
     uint view = uint(frame.params.w);
     vec3 to_camera = frame.camera.xyz - world_pos;
     float distance = length(to_camera);
     vec3 v = to_camera / distance;
+    // The ground's normal from the height texture over about a pixel's footprint: every
+    // texel's detail near by, whatever the mesh's level, and no aliasing far away.
+    vec3 geo_n = terrain_normal_at(world_pos.xz, distance / (3.0 * frame.params.z));
     // The pixel's footprint on the ground, stretched at grazing angles.
     // (A pixel spans distance / (3 * tessellation scale) metres, see GpuFrame.params.)
     float footprint = distance / (3.0 * frame.params.z) / max(abs(dot(v, geo_n)), 0.1);

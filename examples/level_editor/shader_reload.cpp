@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 
 /// The renderer's graphics shaders and their stages.
 constexpr std::pair<const char*, EShLanguage> kShaders[] = {
-    {"sky.vert", EShLangVertex},           {"sky.frag", EShLangFragment},  {"terrain.vert", EShLangVertex},
-    {"terrain.frag", EShLangFragment},     {"water.vert", EShLangVertex},  {"water.tesc", EShLangTessControl},
-    {"water.tese", EShLangTessEvaluation}, {"water.frag", EShLangFragment}};
+    {"sky.vert", EShLangVertex},        {"sky.frag", EShLangFragment},         {"terrain.vert", EShLangVertex},
+    {"mesh.vert", EShLangVertex},       {"terrain.frag", EShLangFragment},     {"water.vert", EShLangVertex},
+    {"water.tesc", EShLangTessControl}, {"water.tese", EShLangTessEvaluation}, {"water.frag", EShLangFragment}};
 
 std::string read_file(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);

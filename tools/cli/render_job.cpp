@@ -106,6 +106,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                     {"counts",
                      {{"terrain_vertices", s.terrain_vertices},
                       {"terrain_triangles", s.terrain_triangles},
+                      {"terrain_bytes", s.terrain_bytes},
                       {"water_patches", s.water_patches},
                       {"waves", s.waves}}},
                     {"units", "milliseconds of GPU time from timestamp queries"}};

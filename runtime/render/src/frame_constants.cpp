@@ -94,8 +94,12 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.terrain_rect =
         glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
                   static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
-                  static_cast<float>(terrain.height_rect_size), static_cast<float>(terrain.height_rect_size));
-    f.terrain_heights = glm::vec4(static_cast<float>(terrain.highest_ground), 0.0f, 0.0f, 0.0f);
+                  static_cast<float>(terrain.height_rect_size.x), static_cast<float>(terrain.height_rect_size.y));
+    f.terrain_heights = glm::vec4(static_cast<float>(terrain.highest_ground), static_cast<float>(terrain.lowest_ground),
+                                  static_cast<float>(terrain.highest_ground - terrain.lowest_ground),
+                                  static_cast<float>(terrain.seabed));
+    f.terrain_lod = glm::vec4(static_cast<float>(terrain.fade), static_cast<float>(terrain.texel.x),
+                              static_cast<float>(terrain.texel.y), static_cast<float>(terrain.lowest_ground));
     f.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
                            1.0f / static_cast<float>(extent.width), 1.0f / static_cast<float>(extent.height));
 
@@ -138,8 +142,6 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     }
 
     plan.waves = waves_at_origin(water, info.time, plan.origin);
-    plan.terrain_mesh_offset = glm::vec4(static_cast<float>(terrain.mesh_origin.x - plan.origin.x), 0.0f,
-                                         static_cast<float>(terrain.mesh_origin.y - plan.origin.y), 0.0f);
     return plan;
 }
 

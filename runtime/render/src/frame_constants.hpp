@@ -12,17 +12,19 @@
 namespace tidewater::render::detail {
 
 struct TerrainPlacement {
-    glm::dvec2 height_rect_corner{0.0};  ///< World xz of the height texture's corner, m.
-    double height_rect_size = 1.0;       ///< m
-    double highest_ground = 0.0;         ///< The height texture's highest sample, m.
-    glm::dvec2 mesh_origin{0.0};         ///< World xz the terrain mesh is relative to, m.
+    glm::dvec2 height_rect_corner{0.0};  ///< World xz of the height texture's outer corner, m.
+    glm::dvec2 height_rect_size{1.0};    ///< m along x and z
+    glm::dvec2 texel{1.0};               ///< m along x and z
+    double lowest_ground = 0.0;          ///< m: texel value 0
+    double highest_ground = 0.0;         ///< m: texel value 65535
+    double fade = 0.0;                   ///< m beyond the outermost texel centres (0: the edge extends)
+    double seabed = 0.0;                 ///< m: where the fade ends
 };
 
 struct FramePlan {
     gpu::GpuFrame frame{};
     std::vector<gpu::GpuWave> waves;
-    glm::dvec2 origin{0.0};               ///< The render origin O, world xz, m.
-    glm::vec4 terrain_mesh_offset{0.0f};  ///< Mesh origin relative to O.
+    glm::dvec2 origin{0.0};  ///< The render origin O, world xz, m.
     std::uint32_t patches_per_side = 0;
     /// The open sea beyond the patch grid, out to the horizon: squares of coarser patches
     /// round it, each with a hole where the one inside draws. x, y: corner relative to O

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cstddef>
 #include <vector>
 
 #include "descriptor_sets.hpp"
 #include "embedded_shaders.hpp"
+#include "host_device.h"
 #include "vk_util.hpp"
 
 namespace tidewater::render::detail {
@@ -52,15 +54,27 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
         stages.push_back(info);
     }
 
-    VkVertexInputBindingDescription binding{0, 24, VK_VERTEX_INPUT_RATE_VERTEX};
-    VkVertexInputAttributeDescription attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                                       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+    const VkVertexInputBindingDescription mesh_binding{0, 24, VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription mesh_attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                                                  {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+    const VkVertexInputBindingDescription patch_bindings[2] = {
+        {0, sizeof(float) * 2, VK_VERTEX_INPUT_RATE_VERTEX},
+        {1, sizeof(gpu::GpuTerrainNode), VK_VERTEX_INPUT_RATE_INSTANCE}};
+    const VkVertexInputAttributeDescription patch_attributes[3] = {
+        {0, 0, VK_FORMAT_R32G32_SFLOAT, 0},
+        {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::GpuTerrainNode, rect)},
+        {2, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::GpuTerrainNode, morph)}};
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (d.terrain_vertices) {
+    if (d.vertices == PipelineDesc::Vertices::mesh) {
         vertex_input.vertexBindingDescriptionCount = 1;
-        vertex_input.pVertexBindingDescriptions = &binding;
+        vertex_input.pVertexBindingDescriptions = &mesh_binding;
         vertex_input.vertexAttributeDescriptionCount = 2;
-        vertex_input.pVertexAttributeDescriptions = attributes;
+        vertex_input.pVertexAttributeDescriptions = mesh_attributes;
+    } else if (d.vertices == PipelineDesc::Vertices::terrain_patch) {
+        vertex_input.vertexBindingDescriptionCount = 2;
+        vertex_input.pVertexBindingDescriptions = patch_bindings;
+        vertex_input.vertexAttributeDescriptionCount = 3;
+        vertex_input.pVertexAttributeDescriptions = patch_attributes;
     }
     const bool tessellated = !d.tess_control.empty();
     VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
@@ -184,10 +198,12 @@ Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, VkFormat col
     PipelineDesc terrain = base;
     terrain.vertex = "terrain.vert";
     terrain.fragment = "terrain.frag";
-    terrain.terrain_vertices = true;
+    terrain.vertices = PipelineDesc::Vertices::terrain_patch;
     if (auto st = make(p.terrain, terrain); !st) return st.error();
-    PipelineDesc floats = terrain;  // the terrain's vertices, one paint per body
+    PipelineDesc floats = base;  // hull meshes, one paint per body
+    floats.vertex = "mesh.vert";
     floats.fragment = "float.frag";
+    floats.vertices = PipelineDesc::Vertices::mesh;
     if (auto st = make(p.floats, floats); !st) return st.error();
     PipelineDesc water = base;
     water.vertex = "water.vert";

@@ -24,7 +24,9 @@ struct PipelineDesc {
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;       // the targets' (multisampling)
     std::string_view vertex, tess_control, tess_eval, fragment;  // embedded shader names; tess ones optional
-    bool terrain_vertices = false;                               // position + normal, 24-byte stride
+    /// mesh: position + normal, 24-byte stride (floating bodies); terrain_patch: the patch's
+    /// grid vertices (vec2) and, per instance, a GpuTerrainNode.
+    enum class Vertices { none, mesh, terrain_patch } vertices = Vertices::none;
     bool depth_write = true;
     VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
     ShaderLookup shaders;  ///< overrides of the embedded SPIR-V (hot reload); null: none

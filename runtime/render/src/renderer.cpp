@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "scene_copies.hpp"
 #include "scene_uploads.hpp"
 #include "target_formats.hpp"
+#include "terrain_lod.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "vk_util.hpp"
@@ -108,8 +110,9 @@ struct Renderer::Impl {
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
-        GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices;
-        std::vector<detail::FloatUpload::Draw> float_draws;  // this frame's, into float_vertices
+        GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices, terrain_nodes;
+        std::vector<detail::FloatUpload::Draw> float_draws;             // this frame's, into float_vertices
+        std::array<std::uint32_t, 5> terrain_first{}, terrain_count{};  // this frame's, into terrain_nodes
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
@@ -120,6 +123,7 @@ struct Renderer::Impl {
     detail::BodyBuffers bodies;  // lakes and rivers (placeholders without)
     Scene scene;                 // as set; its ocean is replaced by set_water
     std::uint64_t last_patches = 0;
+    std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -146,6 +150,7 @@ struct Renderer::Impl {
         detail::BodyDraws draws;
         detail::WakeUpload wakes;
         detail::FloatUpload floats;
+        detail::TerrainSelection terrain;
     };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
     Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
@@ -153,8 +158,7 @@ struct Renderer::Impl {
     Slot& take_slot(std::uint64_t frame_index);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
                         detail::FramePlan& plan);
-    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
-                     DebugView view);
+    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkExtent2D extent, DebugView view);
     void draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
                     DebugView view);
 };
@@ -176,6 +180,10 @@ Status Renderer::Impl::create_slots() {
                                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         if (!float_vertices) return float_vertices.error();
         s.float_vertices = std::move(float_vertices).value();
+        auto terrain_nodes = GpuBuffer::create(ctx(), sizeof(gpu::GpuTerrainNode) * detail::kMaxTerrainNodes,
+                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        if (!terrain_nodes) return terrain_nodes.error();
+        s.terrain_nodes = std::move(terrain_nodes).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         alloc.descriptorPool = descriptor_pool.get();
         alloc.descriptorSetCount = 1;
@@ -280,6 +288,13 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     if (!floats) return floats.error();
     p.floats = std::move(floats).value();
     p.plan.water_draws = p.draws.patch_counts;
+    detail::TerrainLodView lod_view;
+    lod_view.camera = frame.camera.position;
+    lod_view.origin = p.plan.origin;
+    lod_view.view_proj = p.plan.frame.view_proj;
+    lod_view.pixel_angle =
+        2.0 * std::tan(0.5 * frame.camera.fov_y_deg * std::numbers::pi / 180.0) / static_cast<double>(extent.height);
+    p.terrain = detail::select_terrain_nodes(terrain->lod, lod_view);
     return p;
 }
 
@@ -290,6 +305,18 @@ void Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
         std::memcpy(slot.float_vertices.mapped(), p.floats.vertices.data(),
                     sizeof(detail::FloatVertex) * p.floats.vertices.size());
     slot.float_draws = std::move(p.floats.draws);
+    if (!p.terrain.nodes.empty())
+        std::memcpy(slot.terrain_nodes.mapped(), p.terrain.nodes.data(),
+                    sizeof(gpu::GpuTerrainNode) * p.terrain.nodes.size());
+    slot.terrain_first = p.terrain.first;
+    slot.terrain_count = p.terrain.count;
+    const std::uint64_t patch_vertices = (gpu::kTerrainPatchQuads + 1) * (gpu::kTerrainPatchQuads + 1);
+    last_terrain_vertices = last_terrain_triangles = 0;
+    for (std::size_t g = 0; g < 5; ++g) {
+        last_terrain_vertices += slot.terrain_count[g] * patch_vertices;
+        last_terrain_triangles +=
+            slot.terrain_count[g] * (g == 0 ? terrain->index_count : terrain->quadrant_index_count) / 3;
+    }
     std::memcpy(slot.frame.mapped(), &p.plan.frame, sizeof(p.plan.frame));
     const detail::BodyDraws& draws = p.draws;
     if (!draws.waves.empty())
@@ -313,21 +340,25 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     return {};
 }
 
-void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan,
-                                 VkExtent2D extent, DebugView view) {
+void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkExtent2D extent, DebugView view) {
     const detail::VulkanFunctions& vk = this->vk();
     detail::set_viewport(vk, cmd, extent);
     const VkPipelineLayout layout = pipelines.layout.get();
     vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
-    vk.CmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, gpu::kPushMeshOrigin, sizeof(glm::vec4),
-                        &plan.terrain_mesh_offset);
     vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                        (view == DebugView::wireframe ? pipelines.draws.terrain_wire : pipelines.draws.terrain).get());
-    const VkDeviceSize offset = 0;
-    const VkBuffer vb = terrain->vertices.handle();
-    vk.CmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    // The terrain's nodes: whole patches, then the patches drawn by one quadrant each.
+    const VkBuffer terrain_buffers[2] = {terrain->vertices.handle(), slot.terrain_nodes.handle()};
+    const VkDeviceSize terrain_offsets[2] = {0, 0};
+    vk.CmdBindVertexBuffers(cmd, 0, 2, terrain_buffers, terrain_offsets);
     vk.CmdBindIndexBuffer(cmd, terrain->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vk.CmdDrawIndexed(cmd, terrain->index_count, 1, 0, 0, 0);
+    for (std::uint32_t g = 0; g < 5; ++g) {
+        if (slot.terrain_count[g] == 0) continue;
+        const std::uint32_t count = g == 0 ? terrain->index_count : terrain->quadrant_index_count;
+        const std::uint32_t first_index = g == 0 ? 0 : (g - 1) * terrain->quadrant_index_count;
+        vk.CmdDrawIndexed(cmd, count, slot.terrain_count[g], first_index, 0, slot.terrain_first[g]);
+    }
+    const VkDeviceSize offset = 0;
     if (!slot.float_draws.empty()) {
         vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.floats.get());
         const VkBuffer fb = slot.float_vertices.handle();
@@ -400,6 +431,10 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     if (info.frames_in_flight < 1 || info.frames_in_flight > 4)
         return Error{ErrorCode::invalid_argument,
                      fmt::format("renderer: frames_in_flight {} is out of range (1 to 4)", info.frames_in_flight)};
+    if (info.gpu_memory_budget < (std::uint64_t{16} << 20))
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("renderer: gpu_memory_budget {} bytes is under the 16 MiB minimum", info.gpu_memory_budget)};
     auto device = detail::load_device(info.device);
     if (!device) return device.error();
     const detail::Device& c = *device;
@@ -494,7 +529,9 @@ Status Renderer::set_scene(const Scene& scene) {
     for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
     for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();
     TW_VK_TRY(m.vk().DeviceWaitIdle(m.ctx().device));  // the old terrain may be in use by frames in flight
-    auto terrain = detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain);
+    // The height texture may take half the budget; the shore fields and bodies the rest.
+    auto terrain =
+        detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain, m.info.gpu_memory_budget / 2);
     if (!terrain) return terrain.error();
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
@@ -505,9 +542,11 @@ Status Renderer::set_scene(const Scene& scene) {
     m.terrain = std::move(terrain).value();
     m.bodies = std::move(bodies).value();
     m.scene = scene;
-    m.log(fmt::format("tidewater: scene \"{}\" uploaded: {} terrain vertices, {} waves, {} lakes, {} rivers",
-                      scene.name, m.terrain->vertex_count, scene.ocean.waves().size(), scene.lakes.size(),
-                      scene.rivers.size()));
+    m.log(
+        fmt::format("tidewater: scene \"{}\" uploaded: a {}x{} terrain height texture ({:.2f} m texels), {} waves, "
+                    "{} lakes, {} rivers",
+                    scene.name, m.terrain->heights.extent().width, m.terrain->heights.extent().height,
+                    m.terrain->lod.finest_quad, scene.ocean.waves().size(), scene.lakes.size(), scene.rivers.size()));
     return {};
 }
 
@@ -580,7 +619,7 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
                                msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
     if (msaa) m.copies.depth_to_resolve(vk, cmd);
     vk.CmdBeginRendering(cmd, &passes.rendering);
-    m.draw_opaque(cmd, *slot, plan, t.extent, frame.view);
+    m.draw_opaque(cmd, *slot, t.extent, frame.view);
     vk.CmdEndRendering(cmd);
     if (msaa) m.copies.depth_resolved(vk, cmd);
     m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
@@ -602,7 +641,7 @@ Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkE
     Impl::Slot* slot = nullptr;
     detail::FramePlan plan;
     if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
-    m.draw_opaque(cmd, *slot, plan, extent, frame.view);
+    m.draw_opaque(cmd, *slot, extent, frame.view);
     m.draw_water(cmd, *slot, plan, extent, frame.view);
     return {};
 }
@@ -636,8 +675,9 @@ Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
 
 RendererStats Renderer::stats() const {
     RendererStats s;
-    s.terrain_vertices = impl_->terrain ? impl_->terrain->vertex_count : 0;
-    s.terrain_triangles = impl_->terrain ? impl_->terrain->index_count / 3 : 0;
+    s.terrain_vertices = impl_->last_terrain_vertices;
+    s.terrain_triangles = impl_->last_terrain_triangles;
+    s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;

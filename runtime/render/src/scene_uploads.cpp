@@ -11,11 +11,6 @@
 
 namespace tidewater::render::detail {
 
-namespace {
-constexpr std::uint32_t kTerrainCells = 384;
-constexpr std::uint32_t kHeightTextureSize = 1024;
-}  // namespace
-
 PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements) {
     PackedShore p;
     placements.assign(models.size(), ShorePlacement{});
@@ -94,38 +89,46 @@ Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, cons
     });
 }
 
-Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool pool, const Terrain& terrain) {
+Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool pool, const Terrain& terrain,
+                                            std::uint64_t max_bytes) {
     TerrainUpload t;
-    const TerrainMesh mesh = build_terrain_mesh(terrain, kTerrainCells);
-    const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(float),
-                       ibytes = mesh.indices.size() * sizeof(std::uint32_t);
+    const TerrainPatch patch = build_terrain_patch();
+    const VkDeviceSize vbytes = patch.vertices.size() * sizeof(glm::vec2),
+                       ibytes = patch.indices.size() * sizeof(std::uint32_t);
     auto vb = GpuBuffer::create(ctx, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     if (!vb) return vb.error();
     auto ib = GpuBuffer::create(ctx, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     if (!ib) return ib.error();
-    std::memcpy(vb->mapped(), mesh.vertices.data(), vbytes);
-    std::memcpy(ib->mapped(), mesh.indices.data(), ibytes);
+    std::memcpy(vb->mapped(), patch.vertices.data(), vbytes);
+    std::memcpy(ib->mapped(), patch.indices.data(), ibytes);
+    const TerrainHeights sampled = sample_terrain_heights(terrain, max_bytes);
     auto heights =
-        GpuImage::create(ctx, {kHeightTextureSize, kHeightTextureSize}, VK_FORMAT_R32_SFLOAT,
+        GpuImage::create(ctx, {sampled.width, sampled.height}, VK_FORMAT_R16_UNORM,
                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!heights) return heights.error();
-    const std::vector<float> samples = sample_height_texture(terrain, kHeightTextureSize);
-    if (auto st = upload_image(ctx, pool, *heights, samples.data(), samples.size() * sizeof(float),
-                               VK_IMAGE_ASPECT_COLOR_BIT);
+    if (auto st = upload_image(ctx, pool, *heights, sampled.texels.data(), sampled.bytes(), VK_IMAGE_ASPECT_COLOR_BIT);
         !st)
         return st.error();
     t.vertices = std::move(vb).value();
     t.indices = std::move(ib).value();
-    t.index_count = static_cast<std::uint32_t>(mesh.indices.size());
-    t.vertex_count = mesh.vertices.size() / 6;
+    t.index_count = static_cast<std::uint32_t>(patch.indices.size());
+    t.quadrant_index_count = patch.quadrant_indices;
     t.heights = std::move(heights).value();
-    const double half = terrain.extent_half_size();
-    t.placement.mesh_origin = mesh.origin;
-    t.placement.height_rect_corner = terrain.extent_center() - glm::dvec2(half);
-    t.placement.height_rect_size = 2.0 * half;
-    t.placement.highest_ground =
-        samples.empty() ? 0.0 : static_cast<double>(*std::max_element(samples.begin(), samples.end()));
-    t.water_half_size = std::max(3000.0, half);
+    t.resident_bytes = sampled.bytes() + vbytes + ibytes;
+    TerrainPlacement& p = t.placement;
+    p.height_rect_corner = sampled.corner;
+    p.height_rect_size = sampled.texel * glm::dvec2(sampled.width, sampled.height);
+    p.texel = sampled.texel;
+    p.lowest_ground = sampled.lowest;
+    p.highest_ground = sampled.highest;
+    p.fade = sampled.fade;
+    p.seabed = sampled.seabed;
+    t.lod.finest_quad = std::min(sampled.texel.x, sampled.texel.y);
+    t.lod.region_min = sampled.region_min;
+    t.lod.region_max = sampled.region_max;
+    t.lod.lowest = sampled.lowest;
+    t.lod.highest = sampled.highest;
+    t.water_half_size = std::max(3000.0, terrain.extent_half_size());
     return t;
 }
 

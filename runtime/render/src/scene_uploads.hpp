@@ -1,5 +1,5 @@
 // A scene's data on the GPU (private), shared by the renderer and the GPU queries:
-// the shore fields (shaders/shore_fields.glsl), and the terrain's mesh and height
+// the shore fields (shaders/shore_fields.glsl), and the terrain's patch and height
 // texture. Uploads submit and wait: they are the explicit, blocking calls.
 #pragma once
 
@@ -12,6 +12,7 @@
 
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
+#include "terrain_lod.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/terrain.hpp"
@@ -75,15 +76,19 @@ Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, cons
                     VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects = 0);
 
 /// The terrain on the GPU: its mesh and the height texture the water reads for depth.
+/// The terrain on the device: the patch its level-of-detail nodes draw (terrain_lod.hpp)
+/// and its height texture, at most `max_bytes` (a heightmap beyond it is drawn coarser).
 struct TerrainUpload {
-    GpuBuffer vertices, indices;
-    std::uint32_t index_count = 0;
-    std::uint64_t vertex_count = 0;
-    GpuImage heights;
+    GpuBuffer vertices, indices;  ///< the patch (terrain_mesh.hpp)
+    std::uint32_t index_count = 0, quadrant_index_count = 0;
+    GpuImage heights;  ///< R16 unorm over [lowest, highest]
     TerrainPlacement placement;
-    double water_half_size = 3000.0;  ///< m, half the side of the water grid.
+    TerrainLodGrid lod;                ///< what the node selection needs
+    double water_half_size = 3000.0;   ///< m, half the side of the water grid.
+    std::uint64_t resident_bytes = 0;  ///< the texture and the patch
 
-    static Result<TerrainUpload> create(const Device& ctx, VkCommandPool pool, const Terrain& terrain);
+    static Result<TerrainUpload> create(const Device& ctx, VkCommandPool pool, const Terrain& terrain,
+                                        std::uint64_t max_bytes);
 };
 
 }  // namespace tidewater::render::detail

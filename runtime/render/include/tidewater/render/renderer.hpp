@@ -89,7 +89,11 @@ struct RendererInitInfo {
     /// estimate. Costs about `samples` times the water's shading, and more vertices
     /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled.
     bool shade_water_per_sample = false;
-    std::uint32_t frames_in_flight = 2;           ///< 1 to 4.
+    std::uint32_t frames_in_flight = 2;  ///< 1 to 4.
+    /// Device memory the scene's data may take, bytes (at least 16 MiB). The terrain's
+    /// height texture takes at most half: a heightmap that needs more is drawn from every
+    /// k-th pixel (RendererStats::terrain_bytes says what it took).
+    std::uint64_t gpu_memory_budget = std::uint64_t{1} << 30;
     bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;  ///< Copied; default: silent.
 };
@@ -148,9 +152,10 @@ struct PassTimings {
 };
 
 struct RendererStats {
-    std::uint64_t terrain_vertices = 0;
-    std::uint64_t terrain_triangles = 0;
-    std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
+    std::uint64_t terrain_vertices = 0;   ///< Drawn by the last frame recorded (its level-of-detail nodes).
+    std::uint64_t terrain_triangles = 0;  ///< Drawn by the last frame recorded.
+    std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
+    std::uint64_t water_patches = 0;      ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
     double water_patch_size = 0.0;  ///< m
 };
@@ -180,7 +185,7 @@ class Renderer {
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
     Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
 
-    /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag",
+    /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag", "mesh.vert",
     /// "water.vert", "water.tesc", "water.tese", "water.frag", and "water_per_sample.frag":
     /// water.frag compiled with TW_WATER_PER_SAMPLE, drawn when shade_water_per_sample); a
     /// name left out keeps the built-in shader.

@@ -1,0 +1,168 @@
+// The terrain's level of detail without a device: the CDLOD selection covers what is in
+// view once, neighbours meet without cracks (their shared edges morph to the same grid),
+// quads stay under kTerrainQuadPixels at the end of their range, and an 8 km world at
+// 1 m texels stays within the node budget at 1080p.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
+
+#include "frame_constants.hpp"
+#include "terrain_lod.hpp"
+#include "terrain_mesh.hpp"
+
+namespace tidewater::render::detail {
+namespace {
+
+struct Drawn {
+    glm::dvec2 lo, hi;  // world xz
+    int level;
+    double quad;  // m
+    double morph_start, morph_scale;
+};
+
+TerrainLodView view_of(glm::dvec3 eye, glm::dvec3 at, double fov_deg, int width, int height) {
+    TerrainLodView v;
+    v.camera = eye;
+    v.origin = {std::floor(eye.x / 64.0) * 64.0, std::floor(eye.z / 64.0) * 64.0};
+    const glm::dvec3 o{v.origin.x, 0.0, v.origin.y};
+    const glm::mat4 view = glm::lookAt(glm::vec3(eye - o), glm::vec3(at - o), glm::vec3(0, 1, 0));
+    v.view_proj = reversed_z_projection(fov_deg, double(width) / height, 0.5) * view;
+    v.pixel_angle = 2.0 * std::tan(0.5 * fov_deg * std::numbers::pi / 180.0) / height;
+    return v;
+}
+
+std::vector<Drawn> drawn_of(const TerrainSelection& s, const TerrainLodView& v) {
+    std::vector<Drawn> out;
+    for (std::size_t g = 0; g < 5; ++g)
+        for (std::uint32_t k = 0; k < s.count[g]; ++k) {
+            const gpu::GpuTerrainNode& n = s.nodes[s.first[g] + k];
+            Drawn d;
+            const double side = n.rect.z;
+            d.lo = v.origin + glm::dvec2(n.rect.x, n.rect.y);
+            d.hi = d.lo + side;
+            if (g > 0) {  // one quadrant of the node
+                const int q = static_cast<int>(g) - 1;
+                d.lo += glm::dvec2((q & 1) * side / 2, (q >> 1) * side / 2);
+                d.hi = d.lo + side / 2;
+            }
+            d.level = static_cast<int>(n.rect.w);
+            d.quad = side / gpu::kTerrainPatchQuads;
+            d.morph_start = n.morph.x;
+            d.morph_scale = n.morph.y;
+            out.push_back(d);
+        }
+    return out;
+}
+
+double morph_of(const Drawn& d, const TerrainLodGrid& grid, const TerrainLodView& v, glm::dvec2 p) {
+    return std::clamp((terrain_lod_distance(grid, v, p) - d.morph_start) * d.morph_scale, 0.0, 1.0);
+}
+
+TerrainLodGrid island_grid() {
+    TerrainLodGrid g;
+    g.finest_quad = 1.0;
+    g.region_min = {-3000.0, -3000.0};
+    g.region_max = {3000.0, 3000.0};
+    g.lowest = -40.0;
+    g.highest = 120.0;
+    return g;
+}
+
+// No two drawn rectangles overlap, levels of neighbours differ by at most one, and along
+// every edge two neighbours share, the vertices of the finer one have fully morphed onto
+// the coarser grid while the coarser one's have not started to morph: no crack can open.
+TEST(TerrainLod, NeighboursMeetWithoutCracks) {
+    const TerrainLodGrid grid = island_grid();
+    for (const auto& [eye, at] : {std::pair{glm::dvec3(0, 30, 0), glm::dvec3(500, 0, 200)},
+                                  std::pair{glm::dvec3(-1200, 300, 900), glm::dvec3(0, 0, 0)},
+                                  std::pair{glm::dvec3(400, 8, -700), glm::dvec3(420, 5, -600)}}) {
+        const TerrainLodView v = view_of(eye, at, 55.0, 640, 360);
+        const TerrainSelection s = select_terrain_nodes(grid, v);
+        ASSERT_FALSE(s.truncated);
+        const std::vector<Drawn> d = drawn_of(s, v);
+        ASSERT_GT(d.size(), 10u);
+        int shared_edges = 0, level_steps = 0;
+        for (std::size_t a = 0; a < d.size(); ++a)
+            for (std::size_t b = a + 1; b < d.size(); ++b) {
+                const glm::dvec2 lo = glm::max(d[a].lo, d[b].lo), hi = glm::min(d[a].hi, d[b].hi);
+                const double ox = hi.x - lo.x, oz = hi.y - lo.y;
+                ASSERT_FALSE(ox > 1e-6 && oz > 1e-6) << "overlap";
+                if (!((std::abs(ox) < 1e-6 && oz > 1e-6) || (std::abs(oz) < 1e-6 && ox > 1e-6))) continue;
+                ++shared_edges;
+                ASSERT_LE(std::abs(d[a].level - d[b].level), 1);
+                if (d[a].level == d[b].level) continue;
+                ++level_steps;
+                const Drawn& fine = d[a].level < d[b].level ? d[a] : d[b];
+                const Drawn& coarse = d[a].level < d[b].level ? d[b] : d[a];
+                const glm::dvec2 along = ox > 1e-6 ? glm::dvec2(1, 0) : glm::dvec2(0, 1);
+                const double length = std::max(ox, oz);
+                for (double t = 0.0; t <= length + 1e-9; t += fine.quad) {
+                    const glm::dvec2 p = lo + along * t;
+                    EXPECT_NEAR(morph_of(fine, grid, v, p), 1.0, 1e-9)
+                        << "finer side not morphed at " << p.x << "," << p.y;
+                    EXPECT_NEAR(morph_of(coarse, grid, v, p), 0.0, 1e-9)
+                        << "coarser side morphing at " << p.x << "," << p.y;
+                }
+            }
+        EXPECT_GT(shared_edges, 10);
+        EXPECT_GT(level_steps, 0) << "the view spans several levels";
+    }
+}
+
+// At the end of its range a level's quad spans at most kTerrainQuadPixels on screen, and a
+// level's range covers at least kTerrainRangeOverNode of its nodes.
+TEST(TerrainLod, QuadsStaySmallOnScreen) {
+    const TerrainLodGrid grid = island_grid();
+    const double pixel_angle = 2.0 * std::tan(0.5 * 55.0 * std::numbers::pi / 180.0) / 1080.0;
+    for (int level = 0; level < 12; ++level) {
+        const double quad = std::ldexp(grid.finest_quad, level);
+        const double range = terrain_lod_range(grid, pixel_angle, level);
+        EXPECT_LE(quad / (range * pixel_angle), kTerrainQuadPixels * (1 + 1e-12));
+        EXPECT_GE(range, kTerrainRangeOverNode * gpu::kTerrainPatchQuads * quad);
+    }
+}
+
+// An 8 km world at 1 m texels, seen at 1080p from low and from high up, stays within the
+// node budget and draws under 2 million vertices.
+TEST(TerrainLod, ARealSizedWorldFitsTheNodeBudget) {
+    TerrainLodGrid grid;
+    grid.finest_quad = 1.0;
+    grid.region_min = {-6000.0, -6000.0};
+    grid.region_max = {6000.0, 6000.0};
+    grid.lowest = -60.0;
+    grid.highest = 100.0;
+    for (const auto& [eye, at] : {std::pair{glm::dvec3(0, 5, 0), glm::dvec3(1000, 0, 0)},
+                                  std::pair{glm::dvec3(-3000, 1500, -3000), glm::dvec3(0, 0, 0)},
+                                  std::pair{glm::dvec3(0, 120, 0), glm::dvec3(0, 0, 1)}}) {
+        const TerrainSelection s = select_terrain_nodes(grid, view_of(eye, at, 55.0, 1920, 1080));
+        EXPECT_FALSE(s.truncated);
+        std::size_t nodes = 0;
+        for (std::uint32_t c : s.count) nodes += c;
+        EXPECT_LT(nodes * (gpu::kTerrainPatchQuads + 1) * (gpu::kTerrainPatchQuads + 1), 2'000'000u)
+            << nodes << " nodes";
+        EXPECT_GE(s.levels, 3);
+    }
+}
+
+// The patch lists its triangles quadrant by quadrant: a quarter draw covers exactly its
+// quarter of the grid.
+TEST(TerrainLod, ThePatchDrawsByQuadrant) {
+    const TerrainPatch patch = build_terrain_patch();
+    constexpr std::uint32_t p = gpu::kTerrainPatchQuads;
+    ASSERT_EQ(patch.vertices.size(), std::size_t{(p + 1) * (p + 1)});
+    ASSERT_EQ(patch.indices.size(), std::size_t{6 * p * p});
+    ASSERT_EQ(patch.quadrant_indices * 4, patch.indices.size());
+    for (std::uint32_t q = 0; q < 4; ++q)
+        for (std::uint32_t k = q * patch.quadrant_indices; k < (q + 1) * patch.quadrant_indices; ++k) {
+            const glm::vec2 g = patch.vertices[patch.indices[k]];
+            EXPECT_GE(g.x, (q & 1) * p / 2.0f);
+            EXPECT_LE(g.x, ((q & 1) + 1) * p / 2.0f);
+            EXPECT_GE(g.y, (q >> 1) * p / 2.0f);
+            EXPECT_LE(g.y, ((q >> 1) + 1) * p / 2.0f);
+        }
+}
+
+}  // namespace
+}  // namespace tidewater::render::detail
