@@ -315,8 +315,9 @@ struct GpuQueryParams {
 // nears the end of its level's range, its odd vertices slide onto the next level's grid.
 TW_CONST uint kTerrainPatchQuads = 32u;
 struct GpuTerrainNode {
-    vec4 rect;   // xy: corner relative to O (m); z: side (m); w: level (0 the finest)
-    vec4 morph;  // x: distance where the morph starts (m); y: 1 / the distance it takes (1/m); zw: unused
+    vec4 rect;   // xy: corner relative to O (m); z: side along x (m); w: level (0 the finest)
+    vec4 morph;  // x: distance where the morph starts (m); y: 1 / the distance it takes (1/m);
+                 // z: the camera's height above or below the ground's band, squared (m^2); w: side along z (m)
 };
 
 struct GpuShoreTexel {

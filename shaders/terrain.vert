@@ -11,7 +11,7 @@ layout(location = 1) in vec4 in_node;  // GpuTerrainNode.rect
 layout(location = 2) in vec4 in_morph; // GpuTerrainNode.morph
 layout(location = 0) out vec3 world_pos;
 void main() {
-    float quad = in_node.z / float(kTerrainPatchQuads);
+    vec2 quad = vec2(in_node.z, in_morph.w) / float(kTerrainPatchQuads);
     vec2 xz = in_node.xy + in_grid * quad;
     // The selection's distance: horizontal, with the camera's height above the ground's band.
     vec2 d = xz - frame.camera.xz;

@@ -7,10 +7,12 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
+#include <random>
 
 #include "frame_constants.hpp"
 #include "terrain_lod.hpp"
 #include "terrain_mesh.hpp"
+#include "tidewater/terrain.hpp"
 
 namespace tidewater::render::detail {
 namespace {
@@ -39,16 +41,16 @@ std::vector<Drawn> drawn_of(const TerrainSelection& s, const TerrainLodView& v) 
         for (std::uint32_t k = 0; k < s.count[g]; ++k) {
             const gpu::GpuTerrainNode& n = s.nodes[s.first[g] + k];
             Drawn d;
-            const double side = n.rect.z;
+            const glm::dvec2 side(n.rect.z, n.morph.w);
             d.lo = v.origin + glm::dvec2(n.rect.x, n.rect.y);
             d.hi = d.lo + side;
             if (g > 0) {  // one quadrant of the node
                 const int q = static_cast<int>(g) - 1;
-                d.lo += glm::dvec2((q & 1) * side / 2, (q >> 1) * side / 2);
-                d.hi = d.lo + side / 2;
+                d.lo += glm::dvec2((q & 1) * side.x / 2, (q >> 1) * side.y / 2);
+                d.hi = d.lo + side / 2.0;
             }
             d.level = static_cast<int>(n.rect.w);
-            d.quad = side / gpu::kTerrainPatchQuads;
+            d.quad = side.x / gpu::kTerrainPatchQuads;
             d.morph_start = n.morph.x;
             d.morph_scale = n.morph.y;
             out.push_back(d);
@@ -62,7 +64,7 @@ double morph_of(const Drawn& d, const TerrainLodGrid& grid, const TerrainLodView
 
 TerrainLodGrid island_grid() {
     TerrainLodGrid g;
-    g.finest_quad = 1.0;
+    g.finest_quad = glm::dvec2(1.0);
     g.region_min = {-3000.0, -3000.0};
     g.region_max = {3000.0, 3000.0};
     g.lowest = -40.0;
@@ -117,7 +119,7 @@ TEST(TerrainLod, QuadsStaySmallOnScreen) {
     const TerrainLodGrid grid = island_grid();
     const double pixel_angle = 2.0 * std::tan(0.5 * 55.0 * std::numbers::pi / 180.0) / 1080.0;
     for (int level = 0; level < 12; ++level) {
-        const double quad = std::ldexp(grid.finest_quad, level);
+        const double quad = std::ldexp(grid.finest_quad.x, level);
         const double range = terrain_lod_range(grid, pixel_angle, level);
         EXPECT_LE(quad / (range * pixel_angle), kTerrainQuadPixels * (1 + 1e-12));
         EXPECT_GE(range, kTerrainRangeOverNode * gpu::kTerrainPatchQuads * quad);
@@ -128,7 +130,7 @@ TEST(TerrainLod, QuadsStaySmallOnScreen) {
 // node budget and draws under 2 million vertices.
 TEST(TerrainLod, ARealSizedWorldFitsTheNodeBudget) {
     TerrainLodGrid grid;
-    grid.finest_quad = 1.0;
+    grid.finest_quad = glm::dvec2(1.0);
     grid.region_min = {-6000.0, -6000.0};
     grid.region_max = {6000.0, 6000.0};
     grid.lowest = -60.0;
@@ -143,6 +145,91 @@ TEST(TerrainLod, ARealSizedWorldFitsTheNodeBudget) {
         EXPECT_LT(nodes * (gpu::kTerrainPatchQuads + 1) * (gpu::kTerrainPatchQuads + 1), 2'000'000u)
             << nodes << " nodes";
         EXPECT_GE(s.levels, 3);
+    }
+}
+
+/// A 4 km plain at 1 m with 2 m wide, 1.5 m deep ditches every 40 m and rolling hills to
+/// the north (the GPU tests' terrain, test_render_terrain_lod.cpp).
+Terrain ditch_terrain() {
+    constexpr int n = 4096;
+    auto image = std::make_shared<Gray16Image>();
+    image->width = image->height = n;
+    image->pixels.resize(static_cast<std::size_t>(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double x = i - 0.5 * (n - 1), z = j - 0.5 * (n - 1);
+            double h = 5.0;
+            const double along = std::abs(std::remainder(x - 20.0, 40.0));
+            if (along < 1.0) h -= 1.5 * 0.5 * (1.0 + std::cos(M_PI * along));
+            if (z < -300.0)
+                h += 12.0 * std::min(1.0, (-300.0 - z) / 400.0) * (1.0 + std::sin(x / 90.0) * std::cos(z / 70.0));
+            image->pixels[static_cast<std::size_t>(j) * n + i] =
+                static_cast<std::uint16_t>(std::lround((h + 5.0) / 50.0 * 65535.0));
+        }
+    HeightmapTerrain map;
+    map.size = glm::dvec2(n - 1);
+    map.min_height = -5.0;
+    map.max_height = 45.0;
+    map.image = image;
+    return Terrain(map);
+}
+
+// The drawn surface against the heightmap in screen space: at random points of every
+// node's triangles (vertices where terrain.vert puts them, heights from the terrain), the
+// mesh's point and the terrain's point at the same x, z project within kMaxError pixels of
+// each other, over views low along the ditches, across them, over the hills and from high.
+TEST(TerrainLod, TheDrawnSurfaceIsWithinAPixelOfTheHeightmap) {
+    const Terrain terrain = ditch_terrain();
+    TerrainLodGrid grid;
+    grid.finest_quad = glm::dvec2(1.0);
+    grid.region_min = glm::dvec2(-2047.5 - 1023.75);
+    grid.region_max = glm::dvec2(2047.5 + 1023.75);
+    grid.grid_origin = glm::dvec2(-2047.5);  // the first pixel centre
+    grid.lowest = -5.0;
+    grid.highest = 29.0;
+    constexpr int width = 960, height = 540;  // 1080p's pixel angle halved: the same ranges in pixels
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const auto& [eye, at] : {std::pair{glm::dvec3(3, 7, 0), glm::dvec3(300, 4, 10)},
+                                  std::pair{glm::dvec3(0, 3, 5), glm::dvec3(10, 4, 300)},
+                                  std::pair{glm::dvec3(0, 40, 200), glm::dvec3(0, 10, -600)},
+                                  std::pair{glm::dvec3(-300, 400, 300), glm::dvec3(0, 0, 0)}}) {
+        const TerrainLodView v = view_of(eye, at, 55.0, width, height);
+        const TerrainSelection s = select_terrain_nodes(grid, v);
+        const glm::dvec2 cam = glm::dvec2(eye.x, eye.z) - v.origin;
+        auto vertex = [&](const gpu::GpuTerrainNode& node, glm::dvec2 g) {
+            const glm::dvec2 xz = terrain_vertex_xz(node, g, cam);
+            return glm::dvec3(xz.x, terrain.height_at(v.origin + xz), xz.y);
+        };
+        auto screen = [&](glm::dvec3 p) {
+            const glm::dvec4 c = glm::dmat4(v.view_proj) * glm::dvec4(p, 1.0);
+            return std::pair{c.w > 0.1, glm::dvec2(c.x / c.w * 0.5 * width, c.y / c.w * 0.5 * height)};
+        };
+        std::vector<double> errors;
+        for (const gpu::GpuTerrainNode& node : s.nodes)
+            for (int k = 0; k < 24; ++k) {
+                const double gi = std::floor(unit(rng) * gpu::kTerrainPatchQuads),
+                             gj = std::floor(unit(rng) * gpu::kTerrainPatchQuads);
+                double u = unit(rng), w = unit(rng);
+                glm::dvec3 a = vertex(node, {gi, gj}), b = vertex(node, {gi + 1, gj}), c = vertex(node, {gi, gj + 1});
+                if (u + w > 1.0) {  // the quad's other triangle (b, c, d)
+                    a = vertex(node, {gi + 1, gj + 1});
+                    u = 1.0 - u;
+                    w = 1.0 - w;
+                }
+                const glm::dvec3 drawn = a + u * (b - a) + w * (c - a);
+                const glm::dvec3 truth(drawn.x, terrain.height_at(v.origin + glm::dvec2(drawn.x, drawn.z)), drawn.z);
+                const auto [front_d, pd] = screen(drawn);
+                const auto [front_t, pt] = screen(truth);
+                if (!front_d || !front_t || std::abs(pd.x) > width / 2 || std::abs(pd.y) > height / 2) continue;
+                errors.push_back(glm::length(pd - pt));
+            }
+        ASSERT_GT(errors.size(), 1000u);
+        std::sort(errors.begin(), errors.end());
+        const double p99 = errors[errors.size() * 99 / 100], worst = errors.back();
+        std::printf("view from (%.0f, %.0f, %.0f): %zu points, screen error 99%% %.3f px, worst %.3f px\n", eye.x,
+                    eye.y, eye.z, errors.size(), p99, worst);
+        EXPECT_LT(worst, 1.0);
     }
 }
 

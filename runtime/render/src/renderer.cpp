@@ -546,7 +546,7 @@ Status Renderer::set_scene(const Scene& scene) {
         fmt::format("tidewater: scene \"{}\" uploaded: a {}x{} terrain height texture ({:.2f} m texels), {} waves, "
                     "{} lakes, {} rivers",
                     scene.name, m.terrain->heights.extent().width, m.terrain->heights.extent().height,
-                    m.terrain->lod.finest_quad, scene.ocean.waves().size(), scene.lakes.size(), scene.rivers.size()));
+                    m.terrain->lod.finest_quad.x, scene.ocean.waves().size(), scene.lakes.size(), scene.rivers.size()));
     return {};
 }
 

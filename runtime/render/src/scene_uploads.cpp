@@ -123,7 +123,8 @@ Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool poo
     p.highest_ground = sampled.highest;
     p.fade = sampled.fade;
     p.seabed = sampled.seabed;
-    t.lod.finest_quad = std::min(sampled.texel.x, sampled.texel.y);
+    t.lod.finest_quad = sampled.texel;
+    t.lod.grid_origin = sampled.corner + 0.5 * sampled.texel;
     t.lod.region_min = sampled.region_min;
     t.lod.region_max = sampled.region_max;
     t.lod.lowest = sampled.lowest;

@@ -32,23 +32,23 @@ class Selector {
 
     /// Strugar's LODSelect: false when the node lies beyond its level's range (its parent
     /// draws the area instead).
-    bool select(int level, glm::dvec2 corner, double side) {
+    bool select(int level, glm::dvec2 corner, glm::dvec2 side) {
         if (min_distance(corner, side) > range(level)) return false;
         if (!visible(corner, side)) return true;
         if (level == 0 || min_distance(corner, side) > range(level - 1)) {
             add(0, level, corner, side);
             return true;
         }
-        const double half = 0.5 * side;
+        const glm::dvec2 half = 0.5 * side;
         for (int q = 0; q < 4; ++q) {
-            const glm::dvec2 c = corner + glm::dvec2((q & 1) * half, (q >> 1) * half);
+            const glm::dvec2 c = corner + glm::dvec2((q & 1) * half.x, (q >> 1) * half.y);
             if (!select(level - 1, c, half)) add(1 + q, level, corner, side);
         }
         return true;
     }
 
     /// A root beyond the last level's range: drawn whole at that level if it is in view.
-    void add_whole(int level, glm::dvec2 corner, double side) {
+    void add_whole(int level, glm::dvec2 corner, glm::dvec2 side) {
         if (visible(corner, side)) add(0, level, corner, side);
     }
 
@@ -66,17 +66,18 @@ class Selector {
   private:
     double range(int level) const { return range_[static_cast<std::size_t>(level)]; }
 
-    double min_distance(glm::dvec2 corner, double side) const {
+    double min_distance(glm::dvec2 corner, glm::dvec2 side) const {
         const glm::dvec2 cam{view_.camera.x, view_.camera.z};
         const glm::dvec2 d = glm::max(glm::max(corner - cam, cam - (corner + side)), glm::dvec2(0.0));
         return std::sqrt(d.x * d.x + d.y * d.y + dy_ * dy_);
     }
 
-    bool visible(glm::dvec2 corner, double side) const {
+    bool visible(glm::dvec2 corner, glm::dvec2 side) const {
         const glm::vec3 lo(static_cast<float>(corner.x - view_.origin.x), static_cast<float>(grid_.lowest),
                            static_cast<float>(corner.y - view_.origin.y));
-        const glm::vec3 hi = lo + glm::vec3(static_cast<float>(side), static_cast<float>(grid_.highest - grid_.lowest),
-                                            static_cast<float>(side));
+        const glm::vec3 hi =
+            lo + glm::vec3(static_cast<float>(side.x), static_cast<float>(grid_.highest - grid_.lowest),
+                           static_cast<float>(side.y));
         for (const glm::vec4& p : planes_) {
             // The box's corner farthest along the plane's normal.
             const glm::vec3 v(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
@@ -85,7 +86,7 @@ class Selector {
         return true;
     }
 
-    void add(int group, int level, glm::dvec2 corner, double side) {
+    void add(int group, int level, glm::dvec2 corner, glm::dvec2 side) {
         if (count_ >= kMaxTerrainNodes) {
             truncated_ = true;
             return;
@@ -97,9 +98,9 @@ class Selector {
         const double start = previous + kTerrainMorphStart * (end - previous);
         gpu::GpuTerrainNode n;
         n.rect = glm::vec4(static_cast<float>(corner.x - view_.origin.x), static_cast<float>(corner.y - view_.origin.y),
-                           static_cast<float>(side), static_cast<float>(level));
+                           static_cast<float>(side.x), static_cast<float>(level));
         n.morph = glm::vec4(static_cast<float>(start), static_cast<float>(1.0 / (end - start)),
-                            static_cast<float>(dy_ * dy_), 0.0f);
+                            static_cast<float>(dy_ * dy_), static_cast<float>(side.y));
         groups_[static_cast<std::size_t>(group)].push_back(n);
     }
 
@@ -116,7 +117,7 @@ class Selector {
 }  // namespace
 
 double terrain_lod_range(const TerrainLodGrid& grid, double pixel_angle, int level) {
-    const double quad = grid.finest_quad * std::ldexp(1.0, level);
+    const double quad = std::max(grid.finest_quad.x, grid.finest_quad.y) * std::ldexp(1.0, level);
     return std::max(quad / (kTerrainQuadPixels * pixel_angle), kTerrainRangeOverNode * kPatchQuads * quad);
 }
 
@@ -124,6 +125,16 @@ double terrain_lod_distance(const TerrainLodGrid& grid, const TerrainLodView& vi
     const double dy = band_gap(grid, view.camera.y);
     const glm::dvec2 d = xz - glm::dvec2(view.camera.x, view.camera.z);
     return std::sqrt(d.x * d.x + d.y * d.y + dy * dy);
+}
+
+glm::dvec2 terrain_vertex_xz(const gpu::GpuTerrainNode& node, glm::dvec2 grid, glm::dvec2 camera_xz) {
+    const glm::dvec2 quad = glm::dvec2(node.rect.z, node.morph.w) / kPatchQuads;
+    const glm::dvec2 xz = glm::dvec2(node.rect.x, node.rect.y) + grid * quad;
+    const glm::dvec2 d = xz - camera_xz;
+    const double distance = std::sqrt(d.x * d.x + d.y * d.y + static_cast<double>(node.morph.z));
+    const double morph =
+        std::clamp((distance - static_cast<double>(node.morph.x)) * static_cast<double>(node.morph.y), 0.0, 1.0);
+    return xz - glm::fract(grid * 0.5) * 2.0 * quad * morph;
 }
 
 TerrainSelection select_terrain_nodes(const TerrainLodGrid& grid, const TerrainLodView& view) {
@@ -135,10 +146,11 @@ TerrainSelection select_terrain_nodes(const TerrainLodGrid& grid, const TerrainL
     while (top + 1 < kMaxTerrainLevels && terrain_lod_range(grid, view.pixel_angle, top) < reach) ++top;
     Selector selector(grid, view, top + 1);
     // Root nodes of the top level, on a world-aligned grid over the region.
-    const double side = kPatchQuads * grid.finest_quad * std::ldexp(1.0, top);
-    const double x0 = std::floor(grid.region_min.x / side) * side, z0 = std::floor(grid.region_min.y / side) * side;
-    for (double z = z0; z < grid.region_max.y; z += side)
-        for (double x = x0; x < grid.region_max.x; x += side)
+    // Level 0's vertices sit on the height texture's texel centres (grid_origin + k texels).
+    const glm::dvec2 side = kPatchQuads * grid.finest_quad * std::ldexp(1.0, top);
+    const glm::dvec2 first = grid.grid_origin + glm::floor((grid.region_min - grid.grid_origin) / side) * side;
+    for (double z = first.y; z < grid.region_max.y; z += side.y)
+        for (double x = first.x; x < grid.region_max.x; x += side.x)
             if (!selector.select(top, {x, z}, side)) selector.add_whole(top, {x, z}, side);  // no coarser level
     TerrainSelection s = selector.finish();
     s.levels = top + 1;

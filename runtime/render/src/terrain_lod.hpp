@@ -1,7 +1,7 @@
 // The terrain's level of detail (private): CDLOD (Strugar 2009, "Continuous
 // Distance-Dependent Level of Detail for Rendering Heightmaps"). An implicit quadtree over
 // the region the terrain is drawn on; a node of level L is a patch of kTerrainPatchQuads²
-// quads of side finest_quad * 2^L. Each level is used out to a range that keeps a quad
+// quads of finest_quad * 2^L. Each level is used out to a range that keeps a quad
 // under kTerrainQuadPixels on screen, and its vertices slide onto the next level's grid
 // over the last part of it (terrain.vert), so levels meet without cracks or pops.
 // Threading: pure functions.
@@ -32,8 +32,9 @@ inline constexpr int kMaxTerrainLevels = 24;
 
 /// What the selection needs of the terrain (TerrainUpload).
 struct TerrainLodGrid {
-    double finest_quad = 1.0;    ///< m: level 0's quad side (the height texture's texel)
-    glm::dvec2 region_min{0.0};  ///< world xz the terrain is drawn over, m
+    glm::dvec2 finest_quad{1.0};  ///< m along x and z: level 0's quad (the height texture's texel)
+    glm::dvec2 grid_origin{0.0};  ///< world xz of a texel centre: level 0's vertices sit on them
+    glm::dvec2 region_min{0.0};   ///< world xz the terrain is drawn over, m
     glm::dvec2 region_max{0.0};
     double lowest = 0.0;  ///< m: the band the ground lies in
     double highest = 0.0;
@@ -65,5 +66,10 @@ double terrain_lod_range(const TerrainLodGrid& grid, double pixel_angle, int lev
 double terrain_lod_distance(const TerrainLodGrid& grid, const TerrainLodView& view, glm::dvec2 xz);
 
 TerrainSelection select_terrain_nodes(const TerrainLodGrid& grid, const TerrainLodView& view);
+
+/// Where terrain.vert puts vertex `grid` (0 to kTerrainPatchQuads along x and z) of
+/// `node`: slid toward the next level's grid by its morph. xz relative to O, like the
+/// node and `camera_xz` (the C++ twin of terrain.vert, for tests and tools).
+glm::dvec2 terrain_vertex_xz(const gpu::GpuTerrainNode& node, glm::dvec2 grid, glm::dvec2 camera_xz);
 
 }  // namespace tidewater::render::detail

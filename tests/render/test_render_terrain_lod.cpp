@@ -1,0 +1,139 @@
+// The terrain's level of detail on the device (lavapipe, validation on): a 4 km heightmap
+// at 1 m shows its 2 m ditches from 100 m, a low view across it shows no crack between
+// levels, and a small memory budget draws it coarser instead of failing.
+#include <cmath>
+
+#include "render_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+constexpr int kSide = 4096;                                                 // pixels, 1 m apart
+constexpr double kDitchEvery = 40.0, kDitchWidth = 2.0, kDitchDepth = 1.5;  // m
+
+/// A 4 km plain 5 m above the sea with rolling hills to the north (z < -300 m) and 2 m
+/// ditches along z every 40 m (centred on x = 20 + 40k).
+Scene ditch_scene() {
+    auto image = std::make_shared<Gray16Image>();
+    image->width = image->height = kSide;
+    image->pixels.resize(static_cast<std::size_t>(kSide) * kSide);
+    const double lo = -5.0, hi = 45.0;
+    for (int j = 0; j < kSide; ++j)
+        for (int i = 0; i < kSide; ++i) {
+            const double x = i - 0.5 * (kSide - 1), z = j - 0.5 * (kSide - 1);
+            double h = 5.0;
+            const double along = std::abs(std::remainder(x - 20.0, kDitchEvery));
+            if (along < 0.5 * kDitchWidth) h -= kDitchDepth * 0.5 * (1.0 + std::cos(2.0 * M_PI * along / kDitchWidth));
+            if (z < -300.0)
+                h += 12.0 * std::min(1.0, (-300.0 - z) / 400.0) * (1.0 + std::sin(x / 90.0) * std::cos(z / 70.0));
+            image->pixels[static_cast<std::size_t>(j) * kSide + i] =
+                static_cast<std::uint16_t>(std::lround((h - lo) / (hi - lo) * 65535.0));
+        }
+    auto parsed = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}},
+        "ocean": "pool_calm", "shore": {"enabled": false}})",
+                              "ditches");
+    EXPECT_TRUE(parsed.ok()) << parsed.error().message;
+    Scene scene = std::move(parsed).value();
+    HeightmapTerrain map;
+    map.size = glm::dvec2(kSide - 1);
+    map.min_height = lo;
+    map.max_height = hi;
+    map.image = image;
+    scene.terrain = Terrain(map);
+    return scene;
+}
+
+render::FrameInfo frame_at(glm::dvec3 eye, glm::dvec3 at, render::DebugView view) {
+    render::FrameInfo frame;
+    frame.camera.position = eye;
+    frame.camera.target = at;
+    frame.camera.fov_y_deg = 55.0;
+    frame.view = view;
+    frame.time = 1.0;
+    return frame;
+}
+
+// From 100 m up, every 2 m ditch in the middle of the view shows in the terrain's normals
+// (its walls tilt the normal's x), and the plain between them is flat: the heightmap is
+// drawn at its own 1 m, not at the 10 m a whole-extent mesh of 384 cells would give.
+TEST_F(RenderTest, TwoMetreDitchesShowFromAHundredMetres) {
+    const Scene scene = ditch_scene();
+    const auto frame = frame_at({0.0, 100.0, 0.0}, {0.0, 0.0, 1.0}, render::DebugView::normals);
+    const render::RgbaImage img = render(scene, frame, 640, 360);
+    ASSERT_EQ(img.width, 640u);
+    const int row = 180;
+    int ditches = 0, shown = 0, flats = 0, flat_ok = 0;
+    for (double x = -260.0; x <= 260.0; x += kDitchEvery / 2) {
+        const bool ditch = std::abs(std::remainder(x - 20.0, kDitchEvery)) < 1.0;
+        const auto p = test::project(frame.camera, 640, 360, {x, 5.0, 0.0});
+        if (!p || p->x < 8 || p->x > 631) continue;
+        double strongest = 0.0;
+        for (int dx = -6; dx <= 6; ++dx)
+            strongest = std::max(strongest, std::abs(test::pixel(img, p->x + dx, row).r - 0.5));  // n.x * 0.5
+        if (ditch) {
+            ++ditches;
+            shown += strongest > 0.15 ? 1 : 0;
+        } else {
+            ++flats;
+            flat_ok += strongest < 0.03 ? 1 : 0;
+        }
+    }
+    EXPECT_GE(ditches, 4);
+    EXPECT_EQ(shown, ditches) << "ditches seen in the normals";
+    EXPECT_EQ(flat_ok, flats) << "flat plain between them";
+}
+
+// Low over the plain, looking at the hills: many levels meet in view, and below the
+// horizon every pixel is ground (a crack between levels would show the sky through it).
+TEST_F(RenderTest, TerrainLevelsMeetWithoutCracks) {
+    const Scene scene = ditch_scene();
+    for (const auto& [eye, at] : {std::pair{glm::dvec3(30.0, 12.0, 400.0), glm::dvec3(0.0, 10.0, -800.0)},
+                                  std::pair{glm::dvec3(-500.0, 60.0, 300.0), glm::dvec3(200.0, 0.0, -600.0)}}) {
+        const auto frame = frame_at(eye, at, render::DebugView::shaded);
+        const render::RgbaImage img = render(scene, frame, 480, 270);
+        int sky_below = 0;
+        for (int j = 170; j < 270; ++j)
+            for (int i = 0; i < 480; ++i) sky_below += is_sky(test::pixel(img, i, j)) ? 1 : 0;
+        EXPECT_EQ(sky_below, 0) << "sky showing through the ground";
+        const render::RendererStats stats = renderer_->stats();
+        EXPECT_GT(stats.terrain_triangles, 20000u);
+    }
+}
+
+// A budget of 16 MiB leaves 8 MiB for the height texture: the 4096² heightmap (32 MiB) is
+// drawn from every other pixel, without a validation message, and the stats say so.
+TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
+    const Scene scene = ditch_scene();
+    const auto frame = frame_at({0.0, 100.0, 300.0}, {0.0, 0.0, 0.0}, render::DebugView::shaded);
+    render(scene, frame, 160, 90);
+    EXPECT_GE(renderer_->stats().terrain_bytes, 2ull * kSide * kSide);
+
+    render::RendererInitInfo init;
+    init.device = context();
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.wireframe = false;
+    init.gpu_memory_budget = 16ull << 20;
+    auto small = render::Renderer::create(init);
+    ASSERT_TRUE(small.ok()) << small.error().message;
+    ASSERT_TRUE((*small)->set_scene(scene).ok());
+    auto target = render::OffscreenTarget::create(context(), 160, 90);
+    ASSERT_TRUE(target.ok());
+    auto img = (*target)->render(**small, frame);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    const render::RendererStats stats = (*small)->stats();
+    EXPECT_LE(stats.terrain_bytes, 8ull << 20);
+    EXPECT_GT(stats.terrain_bytes, 2ull << 20);
+    int land = 0;
+    for (int j = 45; j < 90; ++j)
+        for (int i = 0; i < 160; ++i) land += is_land(test::pixel(*img, i, j)) ? 1 : 0;
+    EXPECT_GT(land, 160 * 45 / 2) << "the coarser terrain is drawn";
+
+    init.gpu_memory_budget = 1ull << 20;
+    auto refused = render::Renderer::create(init);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("gpu_memory_budget"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tidewater
