@@ -11,19 +11,23 @@ namespace {
 constexpr int kSide = 4096;                                                 // pixels, 1 m apart
 constexpr double kDitchEvery = 40.0, kDitchWidth = 2.0, kDitchDepth = 1.5;  // m
 
-/// A 4 km plain 5 m above the sea with rolling hills to the north (z < -300 m) and 2 m
-/// ditches along z every 40 m (centred on x = 20 + 40k).
+/// A 4 km plain 5 m above the sea with rolling hills to the north (z < -300 m), rough
+/// ground to the south-east (x > 300 m, z > 300 m: bumps of 3 to 16 m) and 2 m ditches along
+/// z every 40 m (centred on x = 20 + 40k).
 Scene ditch_scene() {
     auto image = std::make_shared<Gray16Image>();
     image->width = image->height = kSide;
     image->pixels.resize(static_cast<std::size_t>(kSide) * kSide);
-    const double lo = -5.0, hi = 45.0;
+    const double lo = -5.0, hi = 45.0;  // up to 5 + 14 m on the rough ground, 5 + 24 m on the hills
     for (int j = 0; j < kSide; ++j)
         for (int i = 0; i < kSide; ++i) {
             const double x = i - 0.5 * (kSide - 1), z = j - 0.5 * (kSide - 1);
             double h = 5.0;
             const double along = std::abs(std::remainder(x - 20.0, kDitchEvery));
             if (along < 0.5 * kDitchWidth) h -= kDitchDepth * 0.5 * (1.0 + std::cos(2.0 * M_PI * along / kDitchWidth));
+            if (x > 300.0 && z > 300.0)
+                h += 3.0 * (std::sin(x / 2.3) * std::sin(z / 1.7) + 1.0) +
+                     4.0 * (std::sin(x / 7.9 + 1.0) * std::cos(z / 11.3) + 1.0);
             if (z < -300.0)
                 h += 12.0 * std::min(1.0, (-300.0 - z) / 400.0) * (1.0 + std::sin(x / 90.0) * std::cos(z / 70.0));
             image->pixels[static_cast<std::size_t>(j) * kSide + i] =

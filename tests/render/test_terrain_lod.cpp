@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <map>
 #include <numbers>
 #include <random>
+#include <tuple>
 
 #include "frame_constants.hpp"
 #include "terrain_lod.hpp"
@@ -231,6 +233,54 @@ TEST(TerrainLod, TheDrawnSurfaceIsWithinAPixelOfTheHeightmap) {
                     eye.y, eye.z, errors.size(), p99, worst);
         EXPECT_LT(worst, 1.0);
     }
+}
+
+// No popping: as the camera moves 0.5 m (1/60 s at 30 m/s), every vertex of the nodes
+// drawn in both frames moves, by the level of detail alone (both seen through the first
+// frame's view), less than a pixel. The morph spreads each level's switch over the last
+// third of its range; a switch without it moves odd vertices a whole quad (2 px).
+TEST(TerrainLod, VerticesGlideAsTheCameraMoves) {
+    const Terrain terrain = ditch_terrain();
+    TerrainLodGrid grid;
+    grid.finest_quad = glm::dvec2(1.0);
+    grid.region_min = glm::dvec2(-3071.25);
+    grid.region_max = glm::dvec2(3071.25);
+    grid.grid_origin = glm::dvec2(-2047.5);
+    grid.lowest = -5.0;
+    grid.highest = 29.0;
+    constexpr int width = 960, height = 540;
+    const glm::dvec3 eye(0, 20, 500), step(0, 0, -0.5), ahead(0, -15, -1000);
+    const TerrainLodView a = view_of(eye, eye + ahead, 55.0, width, height);
+    TerrainLodView b = view_of(eye + step, eye + step + ahead, 55.0, width, height);
+    b.origin = a.origin;  // the same frame of reference for both
+    b.view_proj = a.view_proj;
+    const TerrainSelection sa = select_terrain_nodes(grid, a), sb = select_terrain_nodes(grid, b);
+    auto key = [](const gpu::GpuTerrainNode& n) { return std::tuple(n.rect.x, n.rect.y, n.rect.z, n.rect.w); };
+    std::map<std::tuple<float, float, float, float>, const gpu::GpuTerrainNode*> in_b;
+    for (const auto& n : sb.nodes) in_b[key(n)] = &n;
+    double worst = 0.0;
+    int compared = 0;
+    for (const auto& na : sa.nodes) {
+        const auto found = in_b.find(key(na));
+        if (found == in_b.end()) continue;
+        for (int j = 0; j <= static_cast<int>(gpu::kTerrainPatchQuads); ++j)
+            for (int i = 0; i <= static_cast<int>(gpu::kTerrainPatchQuads); ++i) {
+                auto place = [&](const gpu::GpuTerrainNode& n, const TerrainLodView& v) {
+                    const glm::dvec2 xz = terrain_vertex_xz(n, {i, j}, glm::dvec2(v.camera.x, v.camera.z) - v.origin);
+                    const glm::dvec4 c =
+                        glm::dmat4(a.view_proj) * glm::dvec4(xz.x, terrain.height_at(a.origin + xz), xz.y, 1.0);
+                    return std::pair{c.w > 1.0, glm::dvec2(c.x / c.w * 0.5 * width, c.y / c.w * 0.5 * height)};
+                };
+                const auto [front_a, pa] = place(na, a);
+                const auto [front_b, pb] = place(*found->second, b);
+                if (!front_a || !front_b || std::abs(pa.x) > width / 2 || std::abs(pa.y) > height / 2) continue;
+                worst = std::max(worst, glm::length(pb - pa));
+                ++compared;
+            }
+    }
+    std::printf("%d vertices in both frames: the level of detail moves them at most %.3f px\n", compared, worst);
+    EXPECT_GT(compared, 10000);
+    EXPECT_LT(worst, 1.0);
 }
 
 // The patch lists its triangles quadrant by quadrant: a quarter draw covers exactly its
