@@ -139,5 +139,42 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
     EXPECT_NE(refused.error().message.find("gpu_memory_budget"), std::string::npos);
 }
 
+// The shore fields take the other half of the budget: the default island's (24 waves at
+// 256², with its tarn's) need about 26 MiB, so under a 16 MiB budget they are drawn from
+// every other texel. The surf is still there, and the frame stays close to the full one.
+TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    render::FrameInfo frame;
+    frame.camera.position = scene->camera->position;
+    frame.camera.target = scene->camera->target;
+    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+    frame.time = 3.0;
+    const render::RgbaImage full = render(*scene, frame, 320, 180);
+    EXPECT_EQ(renderer_->stats().shore_stride, 1u);
+    EXPECT_GT(renderer_->stats().shore_bytes, 16ull << 20);
+
+    render::RendererInitInfo init;
+    init.device = context();
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.wireframe = false;
+    init.gpu_memory_budget = 16ull << 20;
+    auto small = render::Renderer::create(init);
+    ASSERT_TRUE(small.ok()) << small.error().message;
+    ASSERT_TRUE((*small)->set_scene(*scene).ok());
+    auto target = render::OffscreenTarget::create(context(), 320, 180);
+    ASSERT_TRUE(target.ok());
+    auto coarse = (*target)->render(**small, frame);
+    ASSERT_TRUE(coarse.ok()) << coarse.error().message;
+    const render::RendererStats stats = (*small)->stats();
+    EXPECT_EQ(stats.shore_stride, 2u);
+    EXPECT_LE(stats.shore_bytes, 8ull << 20);
+    const double diff = test::mean_difference(full, *coarse);
+    std::printf("shore fields from every other texel: mean difference %.4f\n", diff);
+    EXPECT_GT(diff, 0.0);
+    EXPECT_LT(diff, 0.03);
+}
+
 }  // namespace
 }  // namespace tidewater

@@ -107,6 +107,8 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                      {{"terrain_vertices", s.terrain_vertices},
                       {"terrain_triangles", s.terrain_triangles},
                       {"terrain_bytes", s.terrain_bytes},
+                      {"shore_bytes", s.shore_bytes},
+                      {"shore_stride", s.shore_stride},
                       {"water_patches", s.water_patches},
                       {"waves", s.waves}}},
                     {"units", "milliseconds of GPU time from timestamp queries"}};

@@ -214,7 +214,8 @@ Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<Scen
     for (const SceneLake& lake : lakes) models.push_back(lake.body.shore());
     if (shore.holds(models)) return {};
     TW_VK_TRY(vk().DeviceWaitIdle(ctx().device));  // frames in flight may read the old fields
-    auto uploaded = shore.upload(ctx(), models);
+    // The shore fields may take the half of the budget the terrain does not.
+    auto uploaded = shore.upload(ctx(), models, info.gpu_memory_budget / 2);
     if (!uploaded) return uploaded.error();
     return {};
 }
@@ -678,6 +679,8 @@ RendererStats Renderer::stats() const {
     s.terrain_vertices = impl_->last_terrain_vertices;
     s.terrain_triangles = impl_->last_terrain_triangles;
     s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
+    s.shore_bytes = impl_->shore.bytes();
+    s.shore_stride = static_cast<std::uint32_t>(impl_->shore.stride());
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;

@@ -11,7 +11,14 @@
 
 namespace tidewater::render::detail {
 
-PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements) {
+namespace {
+int strided(int resolution, int stride) {
+    return (resolution - 1) / stride + 1;
+}
+}  // namespace
+
+PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
+                        int stride) {
     PackedShore p;
     placements.assign(models.size(), ShorePlacement{});
     bool any = false;
@@ -19,20 +26,45 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         const ShoreWaves* shore = models[m];
         if (!shore) continue;
         if (!any) p.per_wave.clear(), p.shared.clear(), any = true;
-        const std::size_t texels =
-            static_cast<std::size_t>(shore->resolution()) * static_cast<std::size_t>(shore->resolution());
-        placements[m] = {shore, static_cast<std::uint32_t>(p.per_wave.size()),
-                         static_cast<std::uint32_t>(p.shared.size())};
+        const int n = shore->resolution(), packed = strided(n, stride);
+        // The first texel centre stays where it was; the texel grows `stride` times.
+        ShorePlacement& place = placements[m];
+        place = {shore, static_cast<std::uint32_t>(p.per_wave.size()), static_cast<std::uint32_t>(p.shared.size())};
+        place.texel = shore->texel() * stride;
+        place.corner = shore->corner() + glm::dvec2(0.5 * shore->texel() - 0.5 * place.texel);
+        place.resolution = packed;
+        auto source = [&](int i, int j) {
+            return static_cast<std::size_t>(j) * static_cast<std::size_t>(stride) * static_cast<std::size_t>(n) +
+                   static_cast<std::size_t>(i) * static_cast<std::size_t>(stride);
+        };
         for (std::size_t w = 0; w < shore->wave_count(); ++w)
-            for (std::size_t k = 0; k < texels; ++k)
-                p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k],
-                                      shore->wavevector_x(w)[k], shore->wavevector_z(w)[k]});
-        for (std::size_t k = 0; k < texels; ++k)
-            p.shared.push_back(
-                {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
+            for (int j = 0; j < packed; ++j)
+                for (int i = 0; i < packed; ++i) {
+                    const std::size_t k = source(i, j);
+                    p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k],
+                                          shore->wavevector_x(w)[k], shore->wavevector_z(w)[k]});
+                }
+        for (int j = 0; j < packed; ++j)
+            for (int i = 0; i < packed; ++i) {
+                const std::size_t k = source(i, j);
+                p.shared.push_back(
+                    {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
+            }
     }
     if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // a model without waves
     return p;
+}
+
+int shore_stride_for(const std::vector<const ShoreWaves*>& models, std::uint64_t max_bytes) {
+    for (int stride = 1;; ++stride) {
+        std::uint64_t bytes = 0;
+        for (const ShoreWaves* m : models)
+            if (m) {
+                const auto texels = static_cast<std::uint64_t>(strided(m->resolution(), stride));
+                bytes += texels * texels * (m->wave_count() + 1) * sizeof(glm::vec4);
+            }
+        if (bytes <= max_bytes || stride == 64) return stride;
+    }
 }
 
 bool ShoreBuffers::holds(const Models& models) const {
@@ -42,12 +74,13 @@ bool ShoreBuffers::holds(const Models& models) const {
     return true;
 }
 
-Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models) {
-    if (holds(models)) return false;
+Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
+    const int stride = shore_stride_for(wanted_models, max_bytes);
+    if (holds(models) && stride == stride_) return false;
     std::vector<ShorePlacement> placements;
-    const PackedShore packed = pack_shores(wanted_models, placements);
+    const PackedShore packed = pack_shores(wanted_models, placements, stride);
     // The offsets are 32-bit element indices in the shaders.
     if (packed.per_wave.size() > std::numeric_limits<std::uint32_t>::max())
         return Error{ErrorCode::invalid_argument,
@@ -62,6 +95,7 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models) {
     per_wave_ = std::move(fresh[0]);
     shared_ = std::move(fresh[1]);
     placements_ = std::move(placements);
+    stride_ = stride;
     alive_.clear();
     for (std::size_t m = 0; m < models.size(); ++m)
         if (placements_[m].model) alive_.push_back(models[m]);

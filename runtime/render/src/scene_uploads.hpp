@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <glm/vec4.hpp>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -27,15 +28,23 @@ struct PackedShore {
     std::vector<glm::vec4> shared{glm::vec4(0.0f)};
 };
 
-/// Where one model's fields start in the packed buffers (vec4 elements); model null: none.
+/// Where one model's fields start in the packed buffers (vec4 elements) and the grid they
+/// were packed on: the model's own, or every `stride`-th texel of it; model null: none.
 struct ShorePlacement {
     const ShoreWaves* model = nullptr;
     std::uint32_t per_wave = 0, shared = 0;
+    glm::dvec2 corner{0.0};  ///< world xz of the packed grid's outer corner, m
+    double texel = 1.0;      ///< m
+    int resolution = 0;      ///< texels per side
 };
 
 /// Packs `models` (null or all-deep ones get no fields) one after the other and says
-/// where each starts.
-PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements);
+/// where each starts: every `stride`-th texel of each (1: all), the first texel centre kept.
+PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
+                        int stride = 1);
+
+/// The smallest stride at which `models` pack into `max_bytes` (at most 64).
+int shore_stride_for(const std::vector<const ShoreWaves*>& models, std::uint64_t max_bytes);
 
 /// The shore fields of a list of models on the GPU (the ocean's and each lake's for the
 /// renderer, one for a GPU query), or placeholders, so that their bindings are always
@@ -48,10 +57,17 @@ class ShoreBuffers {
     /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
     /// Returns true when the buffers were replaced and descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
-    Result<bool> upload(const Device& ctx, const Models& models);
+    /// Over `max_bytes` the fields are packed on every k-th texel (the smallest k that
+    /// fits): coarser, never out of memory.
+    Result<bool> upload(const Device& ctx, const Models& models,
+                        std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max());
     Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
         return upload(ctx, Models{shore});
     }
+    /// Bytes of the two buffers.
+    std::uint64_t bytes() const { return per_wave_.size() + shared_.size(); }
+    /// Texels skipped per texel kept (1: the models' own grids).
+    int stride() const { return stride_; }
 
     /// The first model uploaded (null: none).
     const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }
@@ -66,6 +82,7 @@ class ShoreBuffers {
     }
 
     GpuBuffer per_wave_, shared_;
+    int stride_ = 1;
     std::vector<ShorePlacement> placements_;
     Models alive_;
 };

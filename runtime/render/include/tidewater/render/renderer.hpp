@@ -91,8 +91,9 @@ struct RendererInitInfo {
     bool shade_water_per_sample = false;
     std::uint32_t frames_in_flight = 2;  ///< 1 to 4.
     /// Device memory the scene's data may take, bytes (at least 16 MiB). The terrain's
-    /// height texture takes at most half: a heightmap that needs more is drawn from every
-    /// k-th pixel (RendererStats::terrain_bytes says what it took).
+    /// height texture takes at most half, the shore models' fields the other half: over
+    /// it they are drawn from every k-th pixel or texel, never refused for memory
+    /// (RendererStats::terrain_bytes, shore_bytes and shore_stride say what they took).
     std::uint64_t gpu_memory_budget = std::uint64_t{1} << 30;
     bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;  ///< Copied; default: silent.
@@ -155,6 +156,8 @@ struct RendererStats {
     std::uint64_t terrain_vertices = 0;   ///< Drawn by the last frame recorded (its level-of-detail nodes).
     std::uint64_t terrain_triangles = 0;  ///< Drawn by the last frame recorded.
     std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
+    std::uint64_t shore_bytes = 0;        ///< Resident: the shore models' fields.
+    std::uint32_t shore_stride = 1;       ///< The shore fields are drawn from every k-th texel (1: all).
     std::uint64_t water_patches = 0;      ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
     double water_patch_size = 0.0;  ///< m
