@@ -51,12 +51,12 @@ TEST(Terrain, HeightmapRoundTripsThroughPng) {
     EXPECT_NEAR(t.height_at({100.0 + 320.0, 0.0}), -20.0, 1e-3);                // edge
     EXPECT_NEAR(t.height_at({100.0 + 160.0, 0.0}), 0.0, 1e-3);                  // half way: 20 - 40 * 0.5
     EXPECT_NEAR(t.height_at({5000.0, 0.0}), t.height_at({420.0, 0.0}), 1e-12);  // edge extends
-    EXPECT_DOUBLE_EQ(t.extent_half_size(), 320.0);
+    EXPECT_DOUBLE_EQ(t.extent_half_size(), 320.0 + 40.0);  // with its fade to the seabed
     fs::remove_all(dir);
 }
 
 // Beyond its pixel centres a heightmap's edge value eases down to its lowest height over
-// a quarter of its larger side, so that land at the edge of the data does not stand as a
+// a sixteenth of its larger side, so that land at the edge of the data does not stand as a
 // wall or a plateau to the horizon.
 TEST(Terrain, AHeightmapFadesToItsSeabedBeyondItsEdge) {
     auto image = std::make_shared<Gray16Image>();
@@ -71,13 +71,14 @@ TEST(Terrain, AHeightmapFadesToItsSeabedBeyondItsEdge) {
     const Terrain t(map);
     EXPECT_NEAR(t.height_at({200.0, 0.0}), 30.0, 1e-9);  // the east edge's centre pixel
     const HeightmapEdgeFade fade = heightmap_edge_fade(map);
-    EXPECT_DOUBLE_EQ(fade.distance, 100.0);
+    EXPECT_DOUBLE_EQ(fade.distance, 25.0);
     EXPECT_DOUBLE_EQ(fade.seabed, -10.0);
-    EXPECT_NEAR(t.height_at({250.0, 0.0}), 30.0 - 40.0 * 0.5, 1e-9);  // half way: smoothstep(0.5) = 0.5
-    EXPECT_NEAR(t.height_at({300.0, 0.0}), -10.0, 1e-9);
+    EXPECT_DOUBLE_EQ(t.extent_half_size(), 225.0);
+    EXPECT_NEAR(t.height_at({212.5, 0.0}), 30.0 - 40.0 * 0.5, 1e-9);  // half way: smoothstep(0.5) = 0.5
+    EXPECT_NEAR(t.height_at({225.0, 0.0}), -10.0, 1e-9);
     EXPECT_NEAR(t.height_at({5000.0, -3000.0}), -10.0, 1e-9);
-    // Continuous at the edge, and easing in: 1 m beyond it the ground has dropped 1.2 cm.
-    EXPECT_NEAR(t.height_at({201.0, 0.0}), 30.0 - 40.0 * (3e-4 - 2e-6), 1e-9);
+    // Continuous at the edge, and easing in: 0.25 m beyond it the ground has dropped 1.2 cm.
+    EXPECT_NEAR(t.height_at({200.25, 0.0}), 30.0 - 40.0 * (3e-4 - 2e-6), 1e-9);
 }
 
 TEST(Terrain, BadHeightmapsNameTheFile) {

@@ -184,8 +184,8 @@ TEST(TerrainLod, TheDrawnSurfaceIsWithinAPixelOfTheHeightmap) {
     const Terrain terrain = ditch_terrain();
     TerrainLodGrid grid;
     grid.finest_quad = glm::dvec2(1.0);
-    grid.region_min = glm::dvec2(-2047.5 - 1023.75);
-    grid.region_max = glm::dvec2(2047.5 + 1023.75);
+    grid.region_min = glm::dvec2(-2047.5 - 255.9375);
+    grid.region_max = glm::dvec2(2047.5 + 255.9375);
     grid.grid_origin = glm::dvec2(-2047.5);  // the first pixel centre
     grid.lowest = -5.0;
     grid.highest = 29.0;
@@ -243,8 +243,8 @@ TEST(TerrainLod, VerticesGlideAsTheCameraMoves) {
     const Terrain terrain = ditch_terrain();
     TerrainLodGrid grid;
     grid.finest_quad = glm::dvec2(1.0);
-    grid.region_min = glm::dvec2(-3071.25);
-    grid.region_max = glm::dvec2(3071.25);
+    grid.region_min = glm::dvec2(-2047.5 - 255.9375);
+    grid.region_max = glm::dvec2(2047.5 + 255.9375);
     grid.grid_origin = glm::dvec2(-2047.5);
     grid.lowest = -5.0;
     grid.highest = 29.0;

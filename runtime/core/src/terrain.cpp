@@ -48,7 +48,7 @@ double sample_heightmap(const HeightmapTerrain& t, glm::dvec2 p) {
 }  // namespace
 
 HeightmapEdgeFade heightmap_edge_fade(const HeightmapTerrain& t) {
-    return {0.25 * std::max(t.size.x, t.size.y), t.min_height};
+    return {std::max(t.size.x, t.size.y) / 16.0, t.min_height};
 }
 
 namespace {
@@ -158,7 +158,10 @@ glm::dvec2 Terrain::extent_center() const {
 double Terrain::extent_half_size() const {
     return std::visit(Overloaded{[](const FlatTerrain&) { return kUnboundedHalfSize; },
                                  [](const PlaneTerrain&) { return kUnboundedHalfSize; },
-                                 [](const HeightmapTerrain& h) { return 0.5 * std::max(h.size.x, h.size.y); },
+                                 [](const HeightmapTerrain& h) {
+                                     // The heightmap and its fade to the seabed: the ground a bake must see.
+                                     return 0.5 * std::max(h.size.x, h.size.y) + heightmap_edge_fade(h).distance;
+                                 },
                                  [](const IslandTerrain& i) { return 2.5 * i.radius; }},
                       shape_);
 }

@@ -49,7 +49,7 @@ struct HeightmapTerrain {
 /// (smoothstep of the distance from them) to `seabed` over `distance`. One rule for the
 /// CPU (Terrain::height_at) and the renderer (frame.glsl's terrain_height_at).
 struct HeightmapEdgeFade {
-    double distance = 0.0;  ///< m: a quarter of the heightmap's larger side
+    double distance = 0.0;  ///< m: a sixteenth of the heightmap's larger side
     double seabed = 0.0;    ///< m: its min_height
 };
 HeightmapEdgeFade heightmap_edge_fade(const HeightmapTerrain& t);
@@ -106,7 +106,8 @@ class Terrain {
     /// the same cut objects.
     bool operator==(const Terrain&) const = default;
     const char* kind_name() const;
-    /// Centre and half-size (m) of the square region worth drawing; unbounded
+    /// Centre and half-size (m) of the square region worth drawing and baking: a
+    /// heightmap's with its fade to the seabed (heightmap_edge_fade); unbounded
     /// shapes (flat, plane) report a 3 km half-size around the origin.
     glm::dvec2 extent_center() const;
     double extent_half_size() const;
