@@ -51,7 +51,7 @@ TEST(Terrain, HeightmapRoundTripsThroughPng) {
     EXPECT_NEAR(t.height_at({100.0 + 320.0, 0.0}), -20.0, 1e-3);                // edge
     EXPECT_NEAR(t.height_at({100.0 + 160.0, 0.0}), 0.0, 1e-3);                  // half way: 20 - 40 * 0.5
     EXPECT_NEAR(t.height_at({5000.0, 0.0}), t.height_at({420.0, 0.0}), 1e-12);  // edge extends
-    EXPECT_DOUBLE_EQ(t.extent_half_size(), 320.0 + 40.0);  // with its fade to the seabed
+    EXPECT_DOUBLE_EQ(t.extent_half_size(), 320.0 + 40.0);                       // with its fade to the seabed
     fs::remove_all(dir);
 }
 

@@ -104,6 +104,36 @@ TEST_F(RenderTest, TerrainLevelsMeetWithoutCracks) {
     }
 }
 
+/// One frame through a renderer of its own whose memory budget is `budget` bytes.
+struct BudgetFrame {
+    render::RgbaImage image;
+    render::RendererStats stats;
+};
+BudgetFrame render_within_budget(const render::DeviceContext& device, const Scene& scene,
+                                 const render::FrameInfo& frame, std::uint64_t budget, std::uint32_t w,
+                                 std::uint32_t h) {
+    BudgetFrame out;
+    render::RendererInitInfo init;
+    init.device = device;
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.wireframe = false;
+    init.gpu_memory_budget = budget;
+    auto renderer = render::Renderer::create(init);
+    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
+    if (!renderer.ok()) return out;
+    EXPECT_TRUE((*renderer)->set_scene(scene).ok());
+    auto target = render::OffscreenTarget::create(device, w, h);
+    EXPECT_TRUE(target.ok());
+    if (!target.ok()) return out;
+    auto img = (*target)->render(**renderer, frame);
+    EXPECT_TRUE(img.ok()) << img.error().message;
+    if (!img.ok()) return out;
+    out.image = std::move(img).value();
+    out.stats = (*renderer)->stats();
+    return out;
+}
+
 // A budget of 16 MiB leaves 8 MiB for the height texture: the 4096² heightmap (32 MiB) is
 // drawn from every other pixel, without a validation message, and the stats say so.
 TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
@@ -112,27 +142,17 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
     render(scene, frame, 160, 90);
     EXPECT_GE(renderer_->stats().terrain_bytes, 2ull * kSide * kSide);
 
-    render::RendererInitInfo init;
-    init.device = context();
-    init.color_format = render::OffscreenTarget::kColorFormat;
-    init.depth_format = render::OffscreenTarget::kDepthFormat;
-    init.wireframe = false;
-    init.gpu_memory_budget = 16ull << 20;
-    auto small = render::Renderer::create(init);
-    ASSERT_TRUE(small.ok()) << small.error().message;
-    ASSERT_TRUE((*small)->set_scene(scene).ok());
-    auto target = render::OffscreenTarget::create(context(), 160, 90);
-    ASSERT_TRUE(target.ok());
-    auto img = (*target)->render(**small, frame);
-    ASSERT_TRUE(img.ok()) << img.error().message;
-    const render::RendererStats stats = (*small)->stats();
-    EXPECT_LE(stats.terrain_bytes, 8ull << 20);
-    EXPECT_GT(stats.terrain_bytes, 2ull << 20);
+    const BudgetFrame small = render_within_budget(context(), scene, frame, 16ull << 20, 160, 90);
+    ASSERT_EQ(small.image.width, 160);
+    EXPECT_LE(small.stats.terrain_bytes, 8ull << 20);
+    EXPECT_GT(small.stats.terrain_bytes, 2ull << 20);
     int land = 0;
     for (int j = 45; j < 90; ++j)
-        for (int i = 0; i < 160; ++i) land += is_land(test::pixel(*img, i, j)) ? 1 : 0;
+        for (int i = 0; i < 160; ++i) land += is_land(test::pixel(small.image, i, j)) ? 1 : 0;
     EXPECT_GT(land, 160 * 45 / 2) << "the coarser terrain is drawn";
 
+    render::RendererInitInfo init;
+    init.device = context();
     init.gpu_memory_budget = 1ull << 20;
     auto refused = render::Renderer::create(init);
     ASSERT_FALSE(refused.ok());
@@ -154,23 +174,12 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
     EXPECT_EQ(renderer_->stats().shore_stride, 1u);
     EXPECT_GT(renderer_->stats().shore_bytes, 16ull << 20);
 
-    render::RendererInitInfo init;
-    init.device = context();
-    init.color_format = render::OffscreenTarget::kColorFormat;
-    init.depth_format = render::OffscreenTarget::kDepthFormat;
-    init.wireframe = false;
-    init.gpu_memory_budget = 16ull << 20;
-    auto small = render::Renderer::create(init);
-    ASSERT_TRUE(small.ok()) << small.error().message;
-    ASSERT_TRUE((*small)->set_scene(*scene).ok());
-    auto target = render::OffscreenTarget::create(context(), 320, 180);
-    ASSERT_TRUE(target.ok());
-    auto coarse = (*target)->render(**small, frame);
-    ASSERT_TRUE(coarse.ok()) << coarse.error().message;
-    const render::RendererStats stats = (*small)->stats();
+    const BudgetFrame small = render_within_budget(context(), *scene, frame, 16ull << 20, 320, 180);
+    ASSERT_EQ(small.image.width, 320);
+    const render::RendererStats& stats = small.stats;
     EXPECT_EQ(stats.shore_stride, 2u);
     EXPECT_LE(stats.shore_bytes, 8ull << 20);
-    const double diff = test::mean_difference(full, *coarse);
+    const double diff = test::mean_difference(full, small.image);
     std::printf("shore fields from every other texel: mean difference %.4f\n", diff);
     EXPECT_GT(diff, 0.0);
     EXPECT_LT(diff, 0.03);

@@ -64,14 +64,21 @@ double morph_of(const Drawn& d, const TerrainLodGrid& grid, const TerrainLodView
     return std::clamp((terrain_lod_distance(grid, v, p) - d.morph_start) * d.morph_scale, 0.0, 1.0);
 }
 
-TerrainLodGrid island_grid() {
+/// A square region of half side `half` (m) at 1 m texels, the first texel centre at
+/// `first_centre`, the ground between `lowest` and `highest` (m).
+TerrainLodGrid metre_grid(double half, double lowest, double highest, double first_centre = 0.0) {
     TerrainLodGrid g;
     g.finest_quad = glm::dvec2(1.0);
-    g.region_min = {-3000.0, -3000.0};
-    g.region_max = {3000.0, 3000.0};
-    g.lowest = -40.0;
-    g.highest = 120.0;
+    g.region_min = glm::dvec2(-half);
+    g.region_max = glm::dvec2(half);
+    g.grid_origin = glm::dvec2(first_centre);
+    g.lowest = lowest;
+    g.highest = highest;
     return g;
+}
+
+TerrainLodGrid island_grid() {
+    return metre_grid(3000.0, -40.0, 120.0);
 }
 
 // No two drawn rectangles overlap, levels of neighbours differ by at most one, and along
@@ -131,12 +138,7 @@ TEST(TerrainLod, QuadsStaySmallOnScreen) {
 // An 8 km world at 1 m texels, seen at 1080p from low and from high up, stays within the
 // node budget and draws under 2 million vertices.
 TEST(TerrainLod, ARealSizedWorldFitsTheNodeBudget) {
-    TerrainLodGrid grid;
-    grid.finest_quad = glm::dvec2(1.0);
-    grid.region_min = {-6000.0, -6000.0};
-    grid.region_max = {6000.0, 6000.0};
-    grid.lowest = -60.0;
-    grid.highest = 100.0;
+    const TerrainLodGrid grid = metre_grid(6000.0, -60.0, 100.0);
     for (const auto& [eye, at] : {std::pair{glm::dvec3(0, 5, 0), glm::dvec3(1000, 0, 0)},
                                   std::pair{glm::dvec3(-3000, 1500, -3000), glm::dvec3(0, 0, 0)},
                                   std::pair{glm::dvec3(0, 120, 0), glm::dvec3(0, 0, 1)}}) {
@@ -182,13 +184,8 @@ Terrain ditch_terrain() {
 // each other, over views low along the ditches, across them, over the hills and from high.
 TEST(TerrainLod, TheDrawnSurfaceIsWithinAPixelOfTheHeightmap) {
     const Terrain terrain = ditch_terrain();
-    TerrainLodGrid grid;
-    grid.finest_quad = glm::dvec2(1.0);
-    grid.region_min = glm::dvec2(-2047.5 - 255.9375);
-    grid.region_max = glm::dvec2(2047.5 + 255.9375);
-    grid.grid_origin = glm::dvec2(-2047.5);  // the first pixel centre
-    grid.lowest = -5.0;
-    grid.highest = 29.0;
+    // The ditch terrain's pixel centres, with its fade to the seabed.
+    const TerrainLodGrid grid = metre_grid(2047.5 + 255.9375, -5.0, 29.0, -2047.5);
     constexpr int width = 960, height = 540;  // 1080p's pixel angle halved: the same ranges in pixels
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -241,13 +238,8 @@ TEST(TerrainLod, TheDrawnSurfaceIsWithinAPixelOfTheHeightmap) {
 // third of its range; a switch without it moves odd vertices a whole quad (2 px).
 TEST(TerrainLod, VerticesGlideAsTheCameraMoves) {
     const Terrain terrain = ditch_terrain();
-    TerrainLodGrid grid;
-    grid.finest_quad = glm::dvec2(1.0);
-    grid.region_min = glm::dvec2(-2047.5 - 255.9375);
-    grid.region_max = glm::dvec2(2047.5 + 255.9375);
-    grid.grid_origin = glm::dvec2(-2047.5);
-    grid.lowest = -5.0;
-    grid.highest = 29.0;
+    // The ditch terrain's pixel centres, with its fade to the seabed.
+    const TerrainLodGrid grid = metre_grid(2047.5 + 255.9375, -5.0, 29.0, -2047.5);
     constexpr int width = 960, height = 540;
     const glm::dvec3 eye(0, 20, 500), step(0, 0, -0.5), ahead(0, -15, -1000);
     const TerrainLodView a = view_of(eye, eye + ahead, 55.0, width, height);

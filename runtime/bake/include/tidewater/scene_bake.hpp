@@ -34,8 +34,8 @@ namespace tidewater {
 struct SceneBakeOptions {
     unsigned threads = 0;  ///< Worker threads, 0 = all.
     /// Texels per side of the signed distance field, 8 to 8192 and at least the shore
-    /// model's grid; 0 = the scene's `shore.distance_resolution` (itself 0 = the model's grid). The model samples this one field: the
-    /// shoreline is baked once, and a finer field makes a slightly better model.
+    /// model's grid; 0 = the scene's `shore.distance_resolution` (itself 0 = the model's grid). The model samples this
+    /// one field: the shoreline is baked once, and a finer field makes a slightly better model.
     int distance_resolution = 0;
     /// Told the stage ("water bodies", "lake shores", "shoreline", "shore waves" or "loading") and the fraction of the
     /// whole bake done, 0 to 1, never decreasing. One call at a time, from a baking thread.
