@@ -259,6 +259,14 @@ TEST(ElevationRasters, BadRastersAreRefusedByName) {
     auto ranged = scene_with_heightmap(dir.path, R"({"file": "t.asc", "height_range": [0, 1]})");
     ASSERT_FALSE(ranged.ok());
     EXPECT_NE(ranged.error().message.find("/terrain/heightmap/height_range"), std::string::npos);
+    auto bad_format = scene_with_heightmap(dir.path, R"({"file": "t.asc", "format": "dem"})");
+    ASSERT_FALSE(bad_format.ok());
+    EXPECT_NE(bad_format.error().message.find("/terrain/heightmap/format"), std::string::npos);
+    // "format" overrides the name: an ASCII grid read as a PNG is refused as one.
+    auto as_png = scene_with_heightmap(
+        dir.path, R"({"file": "t.asc", "format": "png16", "size": [10, 10], "height_range": [0, 1]})");
+    ASSERT_FALSE(as_png.ok());
+    EXPECT_NE(as_png.error().message.find("t.asc: not a readable image"), std::string::npos) << as_png.error().message;
     auto bad_values = scene_with_heightmap(dir.path, R"({"file": "t.asc", "values": "altitude"})");
     ASSERT_FALSE(bad_values.ok());
     EXPECT_NE(bad_values.error().message.find("/terrain/heightmap/values"), std::string::npos);
