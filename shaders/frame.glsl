@@ -12,6 +12,7 @@ layout(set = kFrameSet, binding = eFrameSceneColor) uniform sampler2D scene_colo
 layout(set = kFrameSet, binding = eFrameSceneDepth) uniform sampler2D scene_depth;
 layout(std430, set = kFrameSet, binding = eFrameShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
 layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
+layout(std430, set = kFrameSet, binding = eFrameShorePages) readonly buffer ShorePagesBuf { uint shore_pages[]; };
 
 // The ground's height (m) at xz relative to O: the height texture between its texel
 // centres, and beyond them the edge value eased to the seabed (the GLSL twin of

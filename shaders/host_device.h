@@ -39,6 +39,21 @@ TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
 // continuous across the waterline (the Eulerian solve has a root there) and rests on land.
 TW_CONST float kWaterlineRampDepth = 0.5f;  // m
 
+// The shore model in tiles (tidewater::ShoreTiles): the grid is cut into tiles of
+// kShoreTileTexels texels a side, and a page per tile names the slot that holds it.
+// A slot stores kShoreSlotSide^2 texels: its tile's and one more row and column
+// (the apron), so the four taps of a bilinear sample always lie in one slot. Tiles
+// where the waves do not feel the bottom are not stored: their page names slot
+// kShoreOpenSlot (the open sea's values) or kShoreDrySlot (dry land's), where depth
+// and shore distance read +-kShoreFarValue (the queries report them as infinite).
+TW_CONST uint kShoreTileTexels = 32u;
+TW_CONST uint kShoreSlotSide = kShoreTileTexels + 1u;
+TW_CONST uint kShoreSlotTexels = kShoreSlotSide * kShoreSlotSide;
+TW_CONST uint kShoreOpenSlot = 0u;
+TW_CONST uint kShoreDrySlot = 1u;
+TW_CONST uint kShoreFirstStoredSlot = 2u;
+TW_CONST float kShoreFarValue = 1.0e9f;  // m
+
 // A river's fields as the water evaluation samples them: kRiverQueryStride floats per
 // texel of its grid, bilinear between texel centres. The surface is relative to the
 // river's mouth level; the tangent points downstream (normalised after sampling); the
@@ -158,8 +173,8 @@ TW_BINDINGS(FrameBinding)
     eFrameTerrainHeight = 2u, // sampler2D, R16 unorm heights (GpuFrame.terrain_heights decodes them)
     eFrameSceneColor = 3u,    // sampler2D, the opaque scene's colour copy
     eFrameSceneDepth = 4u,    // sampler2D, its depth copy
-    eFrameShoreWaves = 5u,    // vec4[] shore fields per wave and texel
-    eFrameShoreShared = 6u,   // vec4[] shore fields per texel
+    eFrameShoreWaves = 5u,    // vec4[] shore fields per slot, wave and texel
+    eFrameShoreShared = 6u,   // vec4[] shore fields per slot and texel
     eFrameBodyDraws = 7u,     // GpuBodyDraw[]
     eFrameRiverTexels = 8u,   // float[] river query texels
     eFrameRiverChannel = 9u,  // vec4[] river channel coordinates and current
@@ -167,7 +182,8 @@ TW_BINDINGS(FrameBinding)
     eFrameRiverWaves = 11u,   // GpuRiverWave[]
     eFramePatchList = 12u,    // uint[] water patches
     eFrameWakePoints = 13u,   // wake blocks, then GpuWakePoint[]
-    eFrameBindingCount = 14u
+    eFrameShorePages = 14u,   // uint[] shore slot per tile, model after model
+    eFrameBindingCount = 15u
 TW_BINDINGS_END();
 
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
@@ -185,14 +201,15 @@ TW_BINDINGS(QueryBinding)
     eQueryBasePhases = 1u,    // float[cell * wave_count + i]
     eQueryPoints = 2u,        // GpuQueryPoint[]
     eQueryResults = 3u,       // GpuQueryResult[]
-    eQueryShoreWaves = 4u,    // vec4[wave * texels + texel]
-    eQueryShoreShared = 5u,   // vec4[texel]
+    eQueryShoreWaves = 4u,    // vec4[(slot * waves + wave) * kShoreSlotTexels + texel]
+    eQueryShoreShared = 5u,   // vec4[slot * kShoreSlotTexels + texel]
     eQueryCellOrigins = 6u,   // vec2[]
     eQueryRiverTexels = 7u,   // float[]
     eQueryRiverChannel = 8u,  // vec4[]
     eQueryRiverWaves = 9u,    // GpuRiverWave[]
     eQueryWakePoints = 10u,   // wake blocks, then GpuWakePoint[]
-    eQueryBindingCount = 11u
+    eQueryShorePages = 11u,   // uint[tile]: its slot
+    eQueryBindingCount = 12u
 TW_BINDINGS_END();
 #undef TW_BINDINGS
 #undef TW_BINDINGS_END
@@ -281,7 +298,7 @@ struct GpuBodyDraw {
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
     // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
     vec4 shore;       // xy: its grid corner relative to O (m); z: texel (m); w: resolution (0 = none)
-    uvec4 shore_base; // x: its first element in shore_waves[], y: in shore_shared[]
+    uvec4 shore_base; // x: its first element in shore_waves[], y: in shore_shared[], z: in shore_pages[]
     // The ocean's or a lake's ripples (tidewater::RippleField):
     vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
     vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)
@@ -307,9 +324,9 @@ struct GpuQueryParams {
 };
 
 // The shore fields (tidewater::ShoreWaves), as storage buffers read with the
-// same bilinear weights as the CPU:
-//   per wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
-//   per texel:          (depth m, breaking 0..1, steepness scale, shore distance m)
+// same bilinear weights as the CPU, slot after slot (kShoreSlotTexels texels each):
+//   per slot, wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
+//   per slot and texel:       (depth m, breaking 0..1, steepness scale, shore distance m)
 // Terrain level of detail (CDLOD, Strugar 2009): each node the CPU selects draws one
 // patch of kTerrainPatchQuads x kTerrainPatchQuads quads; as its distance (terrain_lod.glsl)
 // nears the end of its level's range, its odd vertices slide onto the next level's grid.
@@ -318,10 +335,6 @@ struct GpuTerrainNode {
     vec4 rect;   // xy: corner relative to O (m); z: side along x (m); w: level (0 the finest)
     vec4 morph;  // x: distance where the morph starts (m); y: 1 / the distance it takes (1/m);
                  // z: the camera's height above or below the ground's band, squared (m^2); w: side along z (m)
-};
-
-struct GpuShoreTexel {
-    vec4 values;
 };
 
 #ifdef __cplusplus

@@ -1,21 +1,31 @@
 // Sampling the shore fields (tidewater::ShoreWaves) exactly as the CPU does:
-// bilinear between texel centres, clamped at the edges. The including shader
-// declares the buffers `shore_waves` ([wave * texels + texel]: residual phase,
-// amplitude factor, wavevector x, z) and `shore_shared` ([texel]: depth,
+// bilinear between texel centres, clamped at the edges, from the slot that holds the
+// cell's tile (tidewater::ShoreTiles; kShoreTileTexels in host_device.h). The including
+// shader declares the buffers `shore_pages` ([tile]: its slot), `shore_waves`
+// ([(slot * waves + wave) * kShoreSlotTexels + texel]: residual phase, amplitude factor,
+// wavevector x, z) and `shore_shared` ([slot * kShoreSlotTexels + texel]: depth,
 // breaking, steepness scale, shore distance), and defines SHORE_RESOLUTION and
-// SHORE_TEXEL; it may define SHORE_WAVE_BASE and SHORE_SHARED_BASE, where the model
-// starts in those buffers when they hold several (default 0).
+// SHORE_TEXEL; it may define SHORE_WAVE_COUNT (default WAVE_COUNT) and SHORE_PAGE_BASE,
+// SHORE_WAVE_BASE and SHORE_SHARED_BASE, where the model starts in those buffers when
+// they hold several (default 0).
 #ifndef TIDEWATER_SHORE_FIELDS_GLSL
 #define TIDEWATER_SHORE_FIELDS_GLSL
+#ifndef SHORE_PAGE_BASE
+#define SHORE_PAGE_BASE 0u
+#endif
 #ifndef SHORE_WAVE_BASE
 #define SHORE_WAVE_BASE 0u
 #endif
 #ifndef SHORE_SHARED_BASE
 #define SHORE_SHARED_BASE 0u
 #endif
+#ifndef SHORE_WAVE_COUNT
+#define SHORE_WAVE_COUNT WAVE_COUNT
+#endif
 
 struct ShoreTap {
-    uint k00, k10, k01, k11;
+    uint slot;  // the slot holding the cell's tile
+    uint k00;   // the first tap's texel in its slot; the others at +1, +kShoreSlotSide, +kShoreSlotSide + 1
     vec4 w;
 };
 
@@ -25,23 +35,24 @@ ShoreTap shore_tap(vec2 rel) {
     vec2 uv = clamp(rel / SHORE_TEXEL - 0.5, vec2(0.0), vec2(float(n - 1)));
     ivec2 ij = min(ivec2(uv), ivec2(n - 2));
     vec2 f = uv - vec2(ij);
+    int tiles = (n + int(kShoreTileTexels) - 1) / int(kShoreTileTexels);
+    ivec2 tile = ij / int(kShoreTileTexels);
+    ivec2 local = ij - tile * int(kShoreTileTexels);
     ShoreTap t;
-    t.k00 = uint(ij.y * n + ij.x);
-    t.k10 = t.k00 + 1u;
-    t.k01 = t.k00 + uint(n);
-    t.k11 = t.k01 + 1u;
+    t.slot = shore_pages[SHORE_PAGE_BASE + uint(tile.y * tiles + tile.x)];
+    t.k00 = uint(local.y) * kShoreSlotSide + uint(local.x);
     t.w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
     return t;
 }
-vec4 tap_waves(ShoreTap t, uint wave_offset) {
-    uint base = SHORE_WAVE_BASE + wave_offset;
-    return t.w.x * shore_waves[base + t.k00] + t.w.y * shore_waves[base + t.k10] + t.w.z * shore_waves[base + t.k01] +
-           t.w.w * shore_waves[base + t.k11];
+vec4 tap_waves(ShoreTap t, uint wave) {
+    uint k = SHORE_WAVE_BASE + (t.slot * SHORE_WAVE_COUNT + wave) * kShoreSlotTexels + t.k00;
+    return t.w.x * shore_waves[k] + t.w.y * shore_waves[k + 1u] + t.w.z * shore_waves[k + kShoreSlotSide] +
+           t.w.w * shore_waves[k + kShoreSlotSide + 1u];
 }
 vec4 tap_shared(ShoreTap t) {
-    uint base = SHORE_SHARED_BASE;
-    return t.w.x * shore_shared[base + t.k00] + t.w.y * shore_shared[base + t.k10] + t.w.z * shore_shared[base + t.k01] +
-           t.w.w * shore_shared[base + t.k11];
+    uint k = SHORE_SHARED_BASE + t.slot * kShoreSlotTexels + t.k00;
+    return t.w.x * shore_shared[k] + t.w.y * shore_shared[k + 1u] + t.w.z * shore_shared[k + kShoreSlotSide] +
+           t.w.w * shore_shared[k + kShoreSlotSide + 1u];
 }
 
 #endif

@@ -9,8 +9,9 @@
 #define WAVE_FIRST 0u
 #endif
 
-// The shared shore fields of open water: deep, no breaking, full steepness, no shore.
-const vec4 kOpenWaterShore = vec4(1e9, 0.0, 1.0, 1e9);
+// The shared shore fields of open water: deep, no breaking, full steepness, no shore
+// (what the shore model's open-sea slot holds).
+const vec4 kOpenWaterShore = vec4(kShoreFarValue, 0.0, 1.0, kShoreFarValue);
 
 // What the shore fields hold at the last evaluated position: depth (m), breaking,
 // steepness scale, shore distance (m).
@@ -27,7 +28,6 @@ LaggedCompression g_lagged;
 SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
     SurfaceSums s = surface_zero();
     ShoreTap tap;
-    uint texels = SHORE_RESOLUTION * SHORE_RESOLUTION;
     g_shore_fields = kOpenWaterShore;
     g_lagged = lagged_zero();
     if (shore) {
@@ -43,7 +43,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         float q = w.steep_omega.x;
         if (shore) {
             // The wave as the shore shapes it: marched phase, local wavevector, shoaled amplitude.
-            vec4 local = tap_waves(tap, i * texels);
+            vec4 local = tap_waves(tap, i);
             theta += local.x;
             kvec = local.zw;
             a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);

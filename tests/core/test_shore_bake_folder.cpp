@@ -139,14 +139,15 @@ TEST(ShoreBakeFolder, ModelFromFieldsChecksSizesAndValues) {
     const std::vector<float> grid(16, 1.0f);
     f.depth = f.shore_distance = f.breaking = f.steepness_scale = grid;
     f.phase_residual = f.amplitude_factor = f.wavevector_x = f.wavevector_z = {grid};
-    EXPECT_TRUE(ShoreWaves::from_fields(f, 1).ok());
-    EXPECT_FALSE(ShoreWaves::from_fields(f, 2).ok());
+    const std::vector<Wave> one(1), two(2);
+    EXPECT_TRUE(ShoreWaves::from_fields(f, one).ok());
+    EXPECT_FALSE(ShoreWaves::from_fields(f, two).ok());
     ShoreWaveFields short_grid = f;
     short_grid.depth.resize(15);
-    EXPECT_NE(ShoreWaves::from_fields(short_grid, 1).error().message.find("depth"), std::string::npos);
+    EXPECT_NE(ShoreWaves::from_fields(short_grid, one).error().message.find("depth"), std::string::npos);
     ShoreWaveFields nan = f;
     nan.phase_residual[0][3] = std::nanf("");
-    EXPECT_NE(ShoreWaves::from_fields(nan, 1).error().message.find("non-finite"), std::string::npos);
+    EXPECT_NE(ShoreWaves::from_fields(nan, one).error().message.find("non-finite"), std::string::npos);
 }
 
 }  // namespace

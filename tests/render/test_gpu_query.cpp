@@ -9,7 +9,9 @@
 
 #include "../baked_scene.hpp"
 #include "../core/test_helpers.hpp"
+#include "../tiled_coast.hpp"
 #include "host_device.h"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/render/gpu_query.hpp"
 #include "tidewater/wakes.hpp"
 #include "vulkan_fixture.hpp"
@@ -159,6 +161,52 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
     EXPECT_LE(worst.height, 1e-3);
     EXPECT_LE(worst.normal_deg, 0.5);
     EXPECT_LE(worst.depth, 1e-3) << "depth and shore distance at the query point";
+    EXPECT_EQ(worst.wet_mismatch, 0u);
+}
+
+// The tiled shore model on a 2048² heightmap coast: points across the island's heart
+// (dry land's slot), the band of stored tiles and the open sea beyond it read the same
+// slots on both sides, within the same tolerances as the default island.
+TEST_F(GpuQueryTest, MatchesCpuQueriesOverATiledCoast) {
+    auto q = render::GpuQuery::create(context());
+    ASSERT_TRUE(q.ok()) << q.error().message;
+    query_ = std::move(q).value();
+    auto scene = test::baked(test::tiled_coast_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ASSERT_NE(scene->ocean.shore(), nullptr);
+    ASSERT_GT(scene->ocean.shore()->tiles().stored_tiles(), 0u);
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> radius(300.0, 2100.0), angle(0.0, 2.0 * kPi);
+    std::vector<glm::dvec2> pts(6000);
+    std::size_t infinite = 0;
+    for (auto& p : pts) {
+        const double r = radius(rng), a = angle(rng);
+        p = {r * std::cos(a), r * std::sin(a)};
+    }
+    Parity worst;
+    for (double t : {0.0, 611.0}) {
+        const Parity p = compare(*query_, scene->ocean, t, pts, /*require_converged=*/false);
+        worst.height = std::max(worst.height, p.height);
+        worst.normal_deg = std::max(worst.normal_deg, p.normal_deg);
+        worst.unconverged += p.unconverged;
+        worst.depth = std::max(worst.depth, p.depth);
+        worst.wet_mismatch += p.wet_mismatch;
+        worst.foam = std::max(worst.foam, p.foam);
+    }
+    std::vector<SurfacePoint> cpu(pts.size());
+    ASSERT_TRUE(query_surface(scene->ocean, 0.0, pts, cpu).ok());
+    for (const SurfacePoint& s : cpu) infinite += std::isinf(s.depth) ? 1 : 0;
+    std::printf(
+        "tiled coast parity over %zu points x 2 times (%zu beyond the stored band): max |dh| = %.3g m, "
+        "max normal angle = %.3g deg, max |dfoam| = %.3g, %zu unconverged\n",
+        pts.size(), infinite, worst.height, worst.normal_deg, worst.foam, worst.unconverged);
+    EXPECT_GT(infinite, pts.size() / 10) << "the open sea and the island's heart are not stored";
+    EXPECT_LT(infinite, pts.size() * 9 / 10);
+    EXPECT_LT(worst.unconverged, pts.size() * 2 / 100);
+    EXPECT_LE(worst.height, 1e-3);
+    EXPECT_LE(worst.normal_deg, 0.5);
+    EXPECT_LE(worst.foam, 0.01);
+    EXPECT_LE(worst.depth, 1e-3);
     EXPECT_EQ(worst.wet_mismatch, 0u);
 }
 

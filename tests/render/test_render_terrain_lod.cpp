@@ -2,6 +2,7 @@
 // at 1 m shows its 2 m ditches from 100 m, a low view across it shows no crack between
 // levels, and a small memory budget draws it coarser instead of failing.
 #include <cmath>
+#include <cstdio>
 
 #include "render_fixture.hpp"
 
@@ -160,8 +161,8 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
 }
 
 // The shore fields take the other half of the budget: the default island's (24 waves at
-// 256², with its tarn's) need about 26 MiB, so under a 16 MiB budget they are drawn from
-// every other texel. The surf is still there, and the frame stays close to the full one.
+// 256², its tiles and its tarn's) need more than 16 MiB, so under a 16 MiB budget they are
+// drawn from every k-th texel. The surf is still there, and the frame stays close to the full one.
 TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -173,14 +174,17 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
     const render::RgbaImage full = render(*scene, frame, 320, 180);
     EXPECT_EQ(renderer_->stats().shore_stride, 1u);
     EXPECT_GT(renderer_->stats().shore_bytes, 16ull << 20);
+    std::printf("shore fields: %.1f MiB\n", renderer_->stats().shore_bytes / 1048576.0);
 
     const BudgetFrame small = render_within_budget(context(), *scene, frame, 16ull << 20, 320, 180);
     ASSERT_EQ(small.image.width, 320);
     const render::RendererStats& stats = small.stats;
-    EXPECT_EQ(stats.shore_stride, 2u);
+    EXPECT_GE(stats.shore_stride, 2u);
+    EXPECT_LE(stats.shore_stride, 4u);
     EXPECT_LE(stats.shore_bytes, 8ull << 20);
     const double diff = test::mean_difference(full, small.image);
-    std::printf("shore fields from every other texel: mean difference %.4f\n", diff);
+    std::printf("shore fields at stride %u (%.1f MiB): mean difference %.4f\n", stats.shore_stride,
+                stats.shore_bytes / 1048576.0, diff);
     EXPECT_GT(diff, 0.0);
     EXPECT_LT(diff, 0.03);
 }

@@ -42,6 +42,7 @@ inline constexpr std::array<BindingRow, gpu::eFrameBindingCount> kFrameSetRows =
     {gpu::eFrameRiverWaves, binding_types::kStorage},
     {gpu::eFramePatchList, binding_types::kStorage},
     {gpu::eFrameWakePoints, binding_types::kStorage},
+    {gpu::eFrameShorePages, binding_types::kStorage},
 }};
 
 /// Set gpu::kQuerySet of the GPU query pipeline (query.comp).
@@ -57,6 +58,7 @@ inline constexpr std::array<BindingRow, gpu::eQueryBindingCount> kQuerySetRows =
     {gpu::eQueryRiverChannel, binding_types::kStorage},
     {gpu::eQueryRiverWaves, binding_types::kStorage},
     {gpu::eQueryWakePoints, binding_types::kStorage},
+    {gpu::eQueryShorePages, binding_types::kStorage},
 }};
 
 /// The most bindings a set has (write_set writes a set without allocating).

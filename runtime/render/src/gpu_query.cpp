@@ -70,6 +70,7 @@ struct GpuQuery::Impl {
         r[gpu::eQueryResults] = detail::bound_buffer(results.handle());
         r[gpu::eQueryShoreWaves] = detail::bound_buffer(shore.per_wave());
         r[gpu::eQueryShoreShared] = detail::bound_buffer(shore.shared());
+        r[gpu::eQueryShorePages] = detail::bound_buffer(shore.pages());
         r[gpu::eQueryCellOrigins] = detail::bound_buffer(cell_origins.handle());
         r[gpu::eQueryRiverTexels] = detail::bound_buffer(river_texels.handle());
         r[gpu::eQueryRiverChannel] = detail::bound_buffer(river_channel.handle());
@@ -202,8 +203,9 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     if (!river_uploaded) return river_uploaded.error();
     rebind = rebind || *river_uploaded;
     const ShoreWaves* model = shore.model();
+    const detail::ShorePlacement placed = shore.placement(0);  // the grid the fields were packed on
     // Cell origins are relative to the river grid's corner in river mode, else to the shore's.
-    const glm::dvec2 zero = river_mode ? river->river->grid.corner : (model ? model->corner() : glm::dvec2(0.0));
+    const glm::dvec2 zero = river_mode ? river->river->grid.corner : (model ? placed.corner : glm::dvec2(0.0));
     std::vector<glm::vec2> origins(std::max<std::size_t>(1, cells.origins.size()), glm::vec2(0.0f));
     for (std::size_t c = 0; c < cells.origins.size(); ++c) {
         const glm::dvec2 rel = cells.origins[c] - zero;
@@ -239,10 +241,10 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     params.max_offset =
         static_cast<float>((still_waves ? still_set.max_horizontal_displacement() : 0.0) + river_max_offset);
     params.river_wave_count = static_cast<std::uint32_t>(channel_waves.size());
-    params.shore_resolution = model ? static_cast<std::uint32_t>(model->resolution()) : 0u;
-    params.shore_texel = model ? static_cast<float>(model->texel()) : 1.0f;
+    params.shore_resolution = model ? static_cast<std::uint32_t>(placed.resolution) : 0u;
+    params.shore_texel = model ? static_cast<float>(placed.texel) : 1.0f;
     if (model && river_mode) {
-        const glm::dvec2 offset = model->corner() - zero;
+        const glm::dvec2 offset = placed.corner - zero;
         params.shore_offset = glm::vec2(static_cast<float>(offset.x), static_cast<float>(offset.y));
     }
     if (river_mode) {
@@ -283,8 +285,8 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         o.displacement = {r[i].disp_iter.x, r[i].disp_iter.y};
         o.iterations = static_cast<int>(r[i].disp_iter.z);
         o.converged = r[i].disp_iter.w != 0.0f;
-        o.depth = model || river_mode ? static_cast<double>(r[i].shore.x) : kDeepWater;
-        o.shore_distance = model ? static_cast<double>(r[i].shore.y) : kDeepWater;
+        o.depth = model || river_mode ? shore_far_to_infinite(static_cast<double>(r[i].shore.x)) : kDeepWater;
+        o.shore_distance = model ? shore_far_to_infinite(static_cast<double>(r[i].shore.y)) : kDeepWater;
         const double rest_surface = river_mode ? level + static_cast<double>(r[i].shore.w) : still.level();
         o.wet = tidewater::detail::surface_wet(o.height, rest_surface, o.depth);
         const std::array<double, tidewater::detail::kFoamLags> lagged{r[i].lagged_jac.x, r[i].lagged_jac.y,

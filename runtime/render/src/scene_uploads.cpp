@@ -11,60 +11,51 @@
 
 namespace tidewater::render::detail {
 
-namespace {
-int strided(int resolution, int stride) {
-    return (resolution - 1) / stride + 1;
-}
-}  // namespace
-
 PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
-                        int stride) {
+                        const std::vector<const ShoreWaves*>& placed_as) {
     PackedShore p;
     placements.assign(models.size(), ShorePlacement{});
     bool any = false;
     for (std::size_t m = 0; m < models.size(); ++m) {
         const ShoreWaves* shore = models[m];
         if (!shore) continue;
-        if (!any) p.per_wave.clear(), p.shared.clear(), any = true;
-        const int n = shore->resolution(), packed = strided(n, stride);
-        // The first texel centre stays where it was; the texel grows `stride` times.
+        if (!any) p.per_wave.clear(), p.shared.clear(), p.pages.clear(), any = true;
+        const ShoreTiles& tiles = shore->tiles();
         ShorePlacement& place = placements[m];
-        place = {shore, static_cast<std::uint32_t>(p.per_wave.size()), static_cast<std::uint32_t>(p.shared.size())};
-        place.texel = shore->texel() * stride;
-        place.corner = shore->corner() + glm::dvec2(0.5 * shore->texel() - 0.5 * place.texel);
-        place.resolution = packed;
-        auto source = [&](int i, int j) {
-            return static_cast<std::size_t>(j) * static_cast<std::size_t>(stride) * static_cast<std::size_t>(n) +
-                   static_cast<std::size_t>(i) * static_cast<std::size_t>(stride);
-        };
-        for (std::size_t w = 0; w < shore->wave_count(); ++w)
-            for (int j = 0; j < packed; ++j)
-                for (int i = 0; i < packed; ++i) {
-                    const std::size_t k = source(i, j);
-                    p.per_wave.push_back({shore->phase_residual(w)[k], shore->amplitude_factor(w)[k],
-                                          shore->wavevector_x(w)[k], shore->wavevector_z(w)[k]});
+        place = {m < placed_as.size() ? placed_as[m] : shore, static_cast<std::uint32_t>(p.per_wave.size()),
+                 static_cast<std::uint32_t>(p.shared.size()), static_cast<std::uint32_t>(p.pages.size())};
+        place.texel = shore->texel();
+        place.corner = shore->corner();
+        place.resolution = shore->resolution();
+        p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());
+        const std::size_t nw = shore->wave_count(), stride = tiles.stride;
+        for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot) {
+            const float* texels = tiles.texels.data() + slot * ShoreTiles::kSlotTexels * stride;
+            for (std::size_t w = 0; w < nw; ++w)
+                for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+                    const float* t = texels + k * stride;
+                    p.per_wave.push_back({t[w], t[nw + w], t[2 * nw + w], t[3 * nw + w]});
                 }
-        for (int j = 0; j < packed; ++j)
-            for (int i = 0; i < packed; ++i) {
-                const std::size_t k = source(i, j);
-                p.shared.push_back(
-                    {shore->depth()[k], shore->breaking()[k], shore->steepness_scale()[k], shore->shore_distance()[k]});
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+                const float* t = texels + k * stride + 4 * nw;
+                p.shared.push_back({t[0], t[1], t[2], t[3]});
             }
+        }
     }
     if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // a model without waves
     return p;
 }
 
-int shore_stride_for(const std::vector<const ShoreWaves*>& models, std::uint64_t max_bytes) {
-    for (int stride = 1;; ++stride) {
-        std::uint64_t bytes = 0;
-        for (const ShoreWaves* m : models)
-            if (m) {
-                const auto texels = static_cast<std::uint64_t>(strided(m->resolution(), stride));
-                bytes += texels * texels * (m->wave_count() + 1) * sizeof(glm::vec4);
-            }
-        if (bytes <= max_bytes || stride == 64) return stride;
-    }
+std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models) {
+    std::uint64_t bytes = 0;
+    for (const ShoreWaves* m : models)
+        if (m) {
+            const ShoreTiles& tiles = m->tiles();
+            bytes += static_cast<std::uint64_t>(tiles.slot_count()) * ShoreTiles::kSlotTexels * (m->wave_count() + 1) *
+                         sizeof(glm::vec4) +
+                     tiles.pages.size() * sizeof(std::uint32_t);
+        }
+    return bytes;
 }
 
 bool ShoreBuffers::holds(const Models& models) const {
@@ -75,27 +66,44 @@ bool ShoreBuffers::holds(const Models& models) const {
 }
 
 Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
+    if (holds(models) && max_bytes == max_bytes_) return false;
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
-    const int stride = shore_stride_for(wanted_models, max_bytes);
-    if (holds(models) && stride == stride_) return false;
+    // Over the budget, every k-th texel of each model (the smallest k that fits, at most 64).
+    int stride = 1;
+    Models coarse;
+    std::vector<const ShoreWaves*> drawn = wanted_models;
+    while (packed_shore_bytes(drawn) > max_bytes && stride < 64) {
+        ++stride;
+        coarse.clear();
+        for (std::size_t m = 0; m < drawn.size(); ++m) {
+            coarse.push_back(wanted_models[m] ? wanted_models[m]->coarsened(stride) : nullptr);
+            drawn[m] = coarse.back().get();
+        }
+    }
     std::vector<ShorePlacement> placements;
-    const PackedShore packed = pack_shores(wanted_models, placements, stride);
+    const PackedShore packed = pack_shores(drawn, placements, wanted_models);
     // The offsets are 32-bit element indices in the shaders.
     if (packed.per_wave.size() > std::numeric_limits<std::uint32_t>::max())
         return Error{ErrorCode::invalid_argument,
                      fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
-    GpuBuffer fresh[2];
-    const std::vector<glm::vec4>* data[2] = {&packed.per_wave, &packed.shared};
-    for (int i = 0; i < 2; ++i) {
-        auto made = GpuBuffer::storage_with(ctx, data[i]->data(), data[i]->size() * sizeof(glm::vec4));
+    GpuBuffer fresh[3];
+    const std::pair<const void*, std::size_t> data[3] = {
+        {packed.per_wave.data(), packed.per_wave.size() * sizeof(glm::vec4)},
+        {packed.shared.data(), packed.shared.size() * sizeof(glm::vec4)},
+        {packed.pages.data(), packed.pages.size() * sizeof(std::uint32_t)}};
+    for (int i = 0; i < 3; ++i) {
+        auto made = GpuBuffer::storage_with(ctx, data[i].first, data[i].second);
         if (!made) return made.error();
         fresh[i] = std::move(made).value();
     }
     per_wave_ = std::move(fresh[0]);
     shared_ = std::move(fresh[1]);
+    pages_ = std::move(fresh[2]);
     placements_ = std::move(placements);
     stride_ = stride;
+    max_bytes_ = max_bytes;
+    coarse_ = std::move(coarse);
     alive_.clear();
     for (std::size_t m = 0; m < models.size(); ++m)
         if (placements_[m].model) alive_.push_back(models[m]);

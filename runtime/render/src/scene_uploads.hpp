@@ -20,31 +20,35 @@
 
 namespace tidewater::render::detail {
 
-/// The shore fields packed for the shaders: one vec4 per wave and texel (phase residual,
-/// amplitude factor, wavevector x, z) and one per texel (depth, breaking, steepness
-/// scale, shore distance), model after model; one zero placeholder each without any.
+/// The shore fields packed for the shaders (shore_fields.glsl), model after model, each
+/// model's tiles slot after slot: one vec4 per slot, wave and texel (phase residual,
+/// amplitude factor, wavevector x, z), one per slot and texel (depth, breaking,
+/// steepness scale, shore distance) and its pages (a slot per tile); one zero
+/// placeholder each without any.
 struct PackedShore {
     std::vector<glm::vec4> per_wave{glm::vec4(0.0f)};
     std::vector<glm::vec4> shared{glm::vec4(0.0f)};
+    std::vector<std::uint32_t> pages{0u};
 };
 
-/// Where one model's fields start in the packed buffers (vec4 elements) and the grid they
+/// Where one model's fields start in the packed buffers (elements) and the grid they
 /// were packed on: the model's own, or every `stride`-th texel of it; model null: none.
 struct ShorePlacement {
     const ShoreWaves* model = nullptr;
-    std::uint32_t per_wave = 0, shared = 0;
+    std::uint32_t per_wave = 0, shared = 0, pages = 0;
     glm::dvec2 corner{0.0};  ///< world xz of the packed grid's outer corner, m
     double texel = 1.0;      ///< m
     int resolution = 0;      ///< texels per side
 };
 
-/// Packs `models` (null or all-deep ones get no fields) one after the other and says
-/// where each starts: every `stride`-th texel of each (1: all), the first texel centre kept.
+/// Packs `models` (null ones get no fields) one after the other, each on the grid it
+/// has, and says where each starts; placements name `placed_as` (the models the caller
+/// knows: a coarsened model is placed as its original).
 PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
-                        int stride = 1);
+                        const std::vector<const ShoreWaves*>& placed_as = {});
 
-/// The smallest stride at which `models` pack into `max_bytes` (at most 64).
-int shore_stride_for(const std::vector<const ShoreWaves*>& models, std::uint64_t max_bytes);
+/// Bytes `models` take on the GPU as pack_shores packs them.
+std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models);
 
 /// The shore fields of a list of models on the GPU (the ocean's and each lake's for the
 /// renderer, one for a GPU query), or placeholders, so that their bindings are always
@@ -64,8 +68,8 @@ class ShoreBuffers {
     Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
         return upload(ctx, Models{shore});
     }
-    /// Bytes of the two buffers.
-    std::uint64_t bytes() const { return per_wave_.size() + shared_.size(); }
+    /// Bytes of the three buffers.
+    std::uint64_t bytes() const { return per_wave_.size() + shared_.size() + pages_.size(); }
     /// Texels skipped per texel kept (1: the models' own grids).
     int stride() const { return stride_; }
 
@@ -75,16 +79,19 @@ class ShoreBuffers {
     ShorePlacement placement(std::size_t i) const { return i < placements_.size() ? placements_[i] : ShorePlacement{}; }
     VkBuffer per_wave() const { return per_wave_.handle(); }
     VkBuffer shared() const { return shared_.handle(); }
+    VkBuffer pages() const { return pages_.handle(); }
 
   private:
     static const ShoreWaves* wanted(const std::shared_ptr<const ShoreWaves>& shore) {
         return shore && !shore->trivial() ? shore.get() : nullptr;
     }
 
-    GpuBuffer per_wave_, shared_;
+    GpuBuffer per_wave_, shared_, pages_;
     int stride_ = 1;
+    std::uint64_t max_bytes_ = 0;
     std::vector<ShorePlacement> placements_;
     Models alive_;
+    Models coarse_;  ///< the coarsened models drawn over budget
 };
 
 /// Uploads `bytes` of pixels into `image`'s `aspect` and leaves it SHADER_READ_ONLY_OPTIMAL;

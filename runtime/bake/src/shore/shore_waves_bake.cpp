@@ -273,7 +273,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         });
         if (options.cancel.stop_requested()) return cancelled();
         cap_breaking(waves, options.breaking_index, f);
-        return ShoreWaves::from_baked_fields(std::move(f));
+        return ShoreWaves::from_baked_fields(std::move(f), waves);
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};
     }

@@ -146,8 +146,8 @@ void write_results(const KernelInput& in, const NewtonResult<FloatBatch>& r, Wat
         for (std::size_t l = 0; l < used; ++l) {
             SurfacePoint& o = full[l];
             lanes.fill(l, in.waves->level, o);
-            o.depth = shore ? depth[l] : kDeepWater;
-            o.shore_distance = shore ? distance[l] : kDeepWater;
+            o.depth = shore ? shore_far_to_infinite(depth[l]) : kDeepWater;
+            o.shore_distance = shore ? shore_far_to_infinite(distance[l]) : kDeepWater;
             o.wet = surface_wet(o.height, in.waves->level, o.depth);
             o.foam =
                 surface_foam(shore ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), in.waves->whitecap_jacobian);

@@ -133,7 +133,7 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
                                 "the bake says {:.3f} m): re-run tidewater bake",
                                 depth, p.x, p.y, stored));
         }
-    auto made = ShoreWaves::from_fields(std::move(f), set.size());
+    auto made = ShoreWaves::from_fields(std::move(f), set);
     if (!made) {
         Error e = std::move(made).error();
         e.message = fmt::format("{}: {}", dir.string(), e.message);

@@ -15,19 +15,17 @@ namespace tidewater {
 
 namespace {
 
-/// Deep everywhere with nothing changed: the waves are exactly the open-ocean ones.
-bool all_deep_and_unchanged(const ShoreWaveFields& f) {
-    for (std::size_t k = 0; k < f.depth.size(); ++k) {
-        if (!(f.depth[k] > 0.0f && f.steepness_scale[k] == 1.0f && f.breaking[k] == 0.0f)) return false;
-        for (std::size_t w = 0; w < f.phase_residual.size(); ++w)
-            if (f.phase_residual[w][k] != 0.0f || std::abs(f.amplitude_factor[w][k] - 1.0f) >= 1e-3f) return false;
-    }
-    return true;
+std::vector<glm::dvec2> open_wavevectors(std::span<const Wave> waves) {
+    std::vector<glm::dvec2> out;
+    out.reserve(waves.size());
+    for (const Wave& w : waves) out.push_back(w.k * glm::dvec2(w.dir_x, w.dir_z));
+    return out;
 }
 
 }  // namespace
 
-Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::size_t wave_count) {
+Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::span<const Wave> waves) {
+    const std::size_t wave_count = waves.size();
     const int n = fields.resolution;
     if (n < 2 || n > 8192)
         return Error{ErrorCode::invalid_argument,
@@ -63,50 +61,78 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveField
                                                                         {&fields.steepness_scale, "steepness_scale"}};
     for (const auto& [grid, name] : shared)
         if (auto st = check(*grid, name); !st) return st.error();
-    auto out = std::make_shared<ShoreWaves>();
-    out->trivial_ = all_deep_and_unchanged(fields);
-    out->f_ = std::move(fields);
-    out->pack_query_texels();
-    return std::shared_ptr<const ShoreWaves>(std::move(out));
+    return std::shared_ptr<const ShoreWaves>(made(std::move(fields), open_wavevectors(waves)));
 }
 
-std::shared_ptr<const ShoreWaves> ShoreWaves::from_baked_fields(ShoreWaveFields fields) {
+std::shared_ptr<const ShoreWaves> ShoreWaves::from_baked_fields(ShoreWaveFields fields, std::span<const Wave> waves) {
+    return made(std::move(fields), open_wavevectors(waves));
+}
+
+std::shared_ptr<ShoreWaves> ShoreWaves::made(ShoreWaveFields fields, std::vector<glm::dvec2> open) {
     auto out = std::make_shared<ShoreWaves>();
-    out->trivial_ = all_deep_and_unchanged(fields);
+    out->tiles_ = cut_shore_tiles(fields, open);
+    out->trivial_ = std::all_of(out->tiles_.pages.begin(), out->tiles_.pages.end(),
+                                [](std::uint32_t slot) { return slot == gpu::kShoreOpenSlot; });
     out->f_ = std::move(fields);
-    out->pack_query_texels();
+    out->open_wavevectors_ = std::move(open);
     return out;
 }
 
-void ShoreWaves::pack_query_texels() {
-    const std::size_t nw = wave_count(), stride = query_texel_stride(nw), texels = f_.depth.size();
-    query_texels_.assign(texels * stride, 0.0f);
-    for (std::size_t k = 0; k < texels; ++k) {
-        float* t = query_texels_.data() + k * stride;
-        for (std::size_t w = 0; w < nw; ++w) {
-            t[w] = f_.phase_residual[w][k];
-            t[nw + w] = f_.amplitude_factor[w][k];
-            t[2 * nw + w] = f_.wavevector_x[w][k];
-            t[3 * nw + w] = f_.wavevector_z[w][k];
-        }
-        t[4 * nw] = f_.depth[k];
-        t[4 * nw + 1] = f_.breaking[k];
-        t[4 * nw + 2] = f_.steepness_scale[k];
-        t[4 * nw + 3] = f_.shore_distance[k];
+std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
+    stride = std::max(stride, 1);
+    const int n = f_.resolution, packed = (n - 1) / stride + 1;
+    ShoreWaveFields c;
+    c.resolution = packed;
+    c.texel = f_.texel * stride;
+    c.corner = f_.corner + glm::dvec2(0.5 * f_.texel - 0.5 * c.texel);
+    auto pick = [&](const std::vector<float>& grid) {
+        std::vector<float> out;
+        out.reserve(static_cast<std::size_t>(packed) * static_cast<std::size_t>(packed));
+        for (int j = 0; j < packed; ++j)
+            for (int i = 0; i < packed; ++i)
+                out.push_back(
+                    grid[static_cast<std::size_t>(j) * static_cast<std::size_t>(stride) * static_cast<std::size_t>(n) +
+                         static_cast<std::size_t>(i) * static_cast<std::size_t>(stride)]);
+        return out;
+    };
+    for (std::size_t w = 0; w < wave_count(); ++w) {
+        c.phase_residual.push_back(pick(f_.phase_residual[w]));
+        c.amplitude_factor.push_back(pick(f_.amplitude_factor[w]));
+        c.wavevector_x.push_back(pick(f_.wavevector_x[w]));
+        c.wavevector_z.push_back(pick(f_.wavevector_z[w]));
     }
+    c.depth = pick(f_.depth);
+    c.breaking = pick(f_.breaking);
+    c.steepness_scale = pick(f_.steepness_scale);
+    c.shore_distance = pick(f_.shore_distance);
+    return made(std::move(c), open_wavevectors_);
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
-    const detail::GridTaps lerp = detail::grid_taps(f_.corner, f_.texel, f_.resolution, p);
+    // The taps of grid_taps, read from the cell's slot.
+    const int n = f_.resolution;
+    const detail::GridTaps taps = detail::grid_taps(f_.corner, f_.texel, n, p);
+    const int i = static_cast<int>(taps.k00 % static_cast<std::size_t>(n));
+    const int j = static_cast<int>(taps.k00 / static_cast<std::size_t>(n));
+    const float* t00 = tiles_.cell(i, j);
+    const std::size_t stride = tiles_.stride, row = ShoreTiles::kSide * stride;
+    const float* t10 = t00 + (taps.k10 != taps.k00 ? stride : 0);
+    const float* t01 = t00 + (taps.k01 != taps.k00 ? row : 0);
+    const float* t11 = t01 + (taps.k11 != taps.k01 ? stride : 0);
+    auto lerp = [&](std::size_t field) {
+        return taps.w00 * static_cast<double>(t00[field]) + taps.w10 * static_cast<double>(t10[field]) +
+               taps.w01 * static_cast<double>(t01[field]) + taps.w11 * static_cast<double>(t11[field]);
+    };
+    const std::size_t nw = wave_count();
     LocalShore s;
-    s.depth = lerp(f_.depth);
-    s.shore_distance = lerp(f_.shore_distance);
-    s.breaking = lerp(f_.breaking);
-    s.steepness_scale = lerp(f_.steepness_scale);
-    for (std::size_t w = 0; w < waves.size() && w < f_.phase_residual.size(); ++w) {
-        waves[w].phase_residual = lerp(f_.phase_residual[w]);
-        waves[w].amplitude_factor = s.depth > 0.0 ? lerp(f_.amplitude_factor[w]) : 0.0;
-        waves[w].wavevector = {lerp(f_.wavevector_x[w]), lerp(f_.wavevector_z[w])};
+    s.depth = lerp(4 * nw);
+    s.breaking = lerp(4 * nw + 1);
+    s.steepness_scale = lerp(4 * nw + 2);
+    s.shore_distance = lerp(4 * nw + 3);
+    for (std::size_t w = 0; w < waves.size() && w < nw; ++w) {
+        waves[w].phase_residual = lerp(w);
+        waves[w].amplitude_factor = s.depth > 0.0 ? lerp(nw + w) : 0.0;
+        waves[w].wavevector = {lerp(2 * nw + w), lerp(3 * nw + w)};
     }
     return s;
 }

@@ -27,8 +27,8 @@ SurfacePoint query_point(const WaterBody& body, double time, glm::dvec2 point) {
     if (shore) {
         detail::ShoreWater<double> water(waves, *shore, &point.x, &point.y, base.data());
         r = detail::solve_rest_offset<true, double>(water, waves.tolerance, waves.radius);
-        o.depth = water.depth_at_point;
-        o.shore_distance = water.shore_distance_at_point;
+        o.depth = shore_far_to_infinite(water.depth_at_point);
+        o.shore_distance = shore_far_to_infinite(water.shore_distance_at_point);
         breaking = water.breaking;
         lagged = detail::lagged_jacobians(water.lagged(r.ex, r.ez));
     } else {

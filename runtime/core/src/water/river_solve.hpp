@@ -37,7 +37,7 @@ void write_points(const NewtonResult<T>& r, Water& water, double level, double w
         lanes.fill(l, level, o);
         o.velocity += glm::dvec3(at[l].flow_x, 0.0, at[l].flow_z);
         o.depth = at[l].depth;
-        o.shore_distance = shore_distance ? shore_distance[l] : kDeepWater;
+        o.shore_distance = shore_distance ? shore_far_to_infinite(shore_distance[l]) : kDeepWater;
         o.wet = surface_wet(o.height, at[l].surface, at[l].depth);
         o.foam = surface_foam(breaking ? breaking[l] : 0.0, lanes.jacobian[l], lags.lane(l), whitecap_jacobian);
     }

@@ -3,9 +3,9 @@
 // the rest position, sampled bilinearly between texel centres and clamped at the
 // edges (as ShoreWaves::sample does in double). A provider for solve_rest_offset.
 //
-// The fields come from ShoreWaves::query_texels(): per texel, kQueryTexelStride(W)
-// floats: W phase residuals, W amplitude factors, W wavevector x, W wavevector z, then
-// depth, breaking, steepness scale and shore distance. The four texels around each
+// The fields come from ShoreWaves::tiles(): per texel, query_texel_stride(W) floats:
+// W phase residuals, W amplitude factors, W wavevector x, W wavevector z, then depth,
+// breaking, steepness scale and shore distance; a cell's four taps lie in one slot. The four texels around each
 // lane's rest position are transposed once into lane-major rows, in the bilinear form
 // c0 + c1 u + c2 v + c3 u v, and reused until the rest position leaves that cell
 // (Newton moves it by far less than a texel).
@@ -36,7 +36,7 @@ class ShoreWater {
     ShoreWater(const PreparedWaves<Scalar>& waves, const ShoreWaves& shore, const double* px, const double* pz,
                const Scalar* base)
         : w_(waves),
-          texels_(shore.query_texels().data()),
+          tiles_(shore.tiles()),
           n_(shore.resolution()),
           inv_texel_(1.0 / shore.texel()),
           stride_(ShoreWaves::query_texel_stride(waves.count)),
@@ -128,11 +128,13 @@ class ShoreWater {
         Ops::store(u, fu);
         Ops::store(v, fv);
         long cells[kLanes];
+        const float* firsts[kLanes];
         bool moved = false;
         const double top = n_ - 1.0;
         edge_ = false;
         for (std::size_t l = 0; l < kLanes; ++l) {
             cells[l] = cell_[l];
+            firsts[l] = first_[l];
             const bool keep =
                 !edge_lane_[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) && fv[l] <= Scalar(1);
             if (keep) continue;
@@ -148,9 +150,10 @@ class ShoreWater {
             cell_u_[l] = static_cast<Scalar>(u_[l] - i);
             cell_v_[l] = static_cast<Scalar>(v_[l] - j);
             cells[l] = static_cast<long>(j) * n_ + i;
+            firsts[l] = tiles_.cell(i, j);
             moved = moved || cells[l] != cell_[l];
         }
-        if (moved) fetch(cells);
+        if (moved) fetch(cells, firsts);
         u_frac_ = Ops::load(fu);
         v_frac_ = Ops::load(fv);
         depth_ = blend(4 * w_.count);
@@ -160,15 +163,15 @@ class ShoreWater {
     /// an out-of-range cell.
     static double clamp_texel(double u, double top) { return u >= 0.0 ? (u <= top ? u : top) : 0.0; }
 
-    /// Copies the four taps of every lane's cell into the lane-major rows (all lanes at
-    /// once: a transpose costs about what two single-lane copies do).
-    void fetch(const long* cells) {
-        const std::size_t n = static_cast<std::size_t>(n_);
-        const std::array<std::size_t, 4> offsets{0, 1, n, n + 1};
+    /// Copies the four taps of every lane's cell (whose first tap's floats are `firsts`)
+    /// into the lane-major rows (all lanes at once: a transpose costs about what two
+    /// single-lane copies do).
+    void fetch(const long* cells, const float* const* firsts) {
+        constexpr std::size_t side = ShoreTiles::kSide;
+        const std::array<std::size_t, 4> offsets{0, 1, side, side + 1};
         for (std::size_t t = 0; t < 4; ++t) {
             const float* src[kLanes];
-            for (std::size_t l = 0; l < kLanes; ++l)
-                src[l] = texels_ + (static_cast<std::size_t>(cells[l]) + offsets[t]) * stride_;
+            for (std::size_t l = 0; l < kLanes; ++l) src[l] = firsts[l] + offsets[t] * stride_;
             Ops::interleave(src, stride_, rows_[t].data());
         }
         // Taps to the bilinear form c0 + c1 u + c2 v + c3 u v: three multiply-adds a value.
@@ -198,6 +201,7 @@ class ShoreWater {
             }
         }
         std::copy(cells, cells + kLanes, cell_);
+        std::copy(firsts, firsts + kLanes, first_);
     }
 
     T blend(std::size_t field) const {
@@ -210,13 +214,14 @@ class ShoreWater {
     const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));
     const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kWaterlineRampDepth));
     const PreparedWaves<Scalar>& w_;
-    const float* texels_;
+    const ShoreTiles& tiles_;
     int n_;
     double inv_texel_;
     std::size_t stride_;
     const Scalar* base_;
     double u_[kLanes], v_[kLanes];  // query points in texel units from the first texel centre
     long cell_[kLanes];
+    const float* first_[kLanes];                          // the floats of each lane's cached cell's first tap
     alignas(64) Scalar cell_u_[kLanes], cell_v_[kLanes];  // query points relative to their cached cell, texels
     bool edge_lane_[kLanes];  // the lane was clamped at the grid's edge (or nothing is cached yet)
     bool edge_ = true;        // any lane is

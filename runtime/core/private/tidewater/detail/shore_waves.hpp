@@ -14,6 +14,8 @@
 // - steepness: Q is scaled so that sum(Q k A) stays <= 0.95 (no folding).
 // Local fields vary slowly against a wavelength, so derivatives use the local
 // wavevector and treat amplitude and direction as constant over a wave.
+// The model keeps its fields in tiles (shore_tiles.hpp): only where the waves feel
+// the bottom; elsewhere it reads the open sea's or dry land's values.
 // Internal: hosts get a model through bake_scene (scene_bake.hpp) and use it through
 // WaterBody::shore(); the raw grids are for the renderer, saved bakes and tests.
 // Threading: immutable after bake; share it freely.
@@ -27,6 +29,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "tidewater/detail/shore_tiles.hpp"
 #include "tidewater/detail/square_region.hpp"
 #include "tidewater/gerstner.hpp"
 #include "tidewater/result.hpp"
@@ -43,8 +46,10 @@ struct LocalWave {
 };
 
 struct LocalShore {
-    double depth = 0.0;            ///< Water level - terrain, m (< 0 on land).
-    double shore_distance = 0.0;   ///< Signed distance to the shoreline, m (+ over water).
+    /// Water level - terrain, m (< 0 on land); +-kShoreFarValue in a tile not stored.
+    double depth = 0.0;
+    /// Signed distance to the shoreline, m (+ over water); +-kShoreFarValue in a tile not stored.
+    double shore_distance = 0.0;
     double breaking = 0.0;         ///< 0..1 foam from breaking.
     double steepness_scale = 1.0;  ///< Multiplies every Q here.
 };
@@ -65,13 +70,17 @@ struct ShoreWaveFields {
 
 class ShoreWaves {
   public:
-    /// A model from fields made elsewhere (a saved bake). Fails unless every grid is
-    /// resolution^2 finite values and there are `wave_count` of each per-wave field.
-    static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::size_t wave_count);
-    /// A model from fields its bake made (bake_shore_waves): trusted, not checked again.
-    static std::shared_ptr<const ShoreWaves> from_baked_fields(ShoreWaveFields fields);
+    /// A model from fields made elsewhere (a saved bake) for `waves`. Fails unless every
+    /// grid is resolution^2 finite values and there is one of each per-wave field per wave.
+    static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::span<const Wave> waves);
+    /// A model from fields its bake made for `waves` (bake_shore_waves): trusted, not checked again.
+    static std::shared_ptr<const ShoreWaves> from_baked_fields(ShoreWaveFields fields, std::span<const Wave> waves);
 
-    /// Bilinear sample at world xz; `waves` must have one entry per wave of the set.
+    /// The same model on every `stride`-th texel (the first texel centre kept): what a
+    /// renderer over its memory budget draws. `stride` 1: a copy.
+    std::shared_ptr<const ShoreWaves> coarsened(int stride) const;
+
+    /// Bilinear sample at world xz from the tiles; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
 
     const ShoreWaveFields& fields() const { return f_; }
@@ -79,12 +88,11 @@ class ShoreWaves {
     double texel() const { return f_.texel; }
     glm::dvec2 corner() const { return f_.corner; }
     std::size_t wave_count() const { return f_.phase_residual.size(); }
-    /// True when every texel is deep water: the waves are unchanged and queries may skip the shore.
+    /// True when every tile is open sea: the waves are unchanged and queries may skip the shore.
     bool trivial() const { return trivial_; }
-    /// The fields interleaved per texel for the query kernel: query_texel_stride(wave_count())
-    /// floats each, W phase residuals, W amplitude factors, W wavevector x, W wavevector z,
-    /// then depth, breaking, steepness scale and shore distance.
-    const std::vector<float>& query_texels() const { return query_texels_; }
+    /// The fields in tiles, interleaved per texel for the query kernel and the GPU:
+    /// query_texel_stride(wave_count()) floats each (ShoreTiles::texels).
+    const ShoreTiles& tiles() const { return tiles_; }
     static std::size_t query_texel_stride(std::size_t waves) { return 4 * waves + 4; }
     /// Raw fields for upload to the GPU.
     const std::vector<float>& phase_residual(std::size_t wave) const { return f_.phase_residual[wave]; }
@@ -97,10 +105,11 @@ class ShoreWaves {
     const std::vector<float>& shore_distance() const { return f_.shore_distance; }
 
   private:
-    void pack_query_texels();
+    static std::shared_ptr<ShoreWaves> made(ShoreWaveFields fields, std::vector<glm::dvec2> open_wavevectors);
 
     ShoreWaveFields f_;
-    std::vector<float> query_texels_;
+    std::vector<glm::dvec2> open_wavevectors_;  ///< each wave's k0 D, rad/m
+    ShoreTiles tiles_;
     bool trivial_ = false;
 };
 

@@ -1,0 +1,72 @@
+// The shore model in tiles: only where the waves feel the bottom are its fields
+// stored (DESIGN.md, "Worlds at real scale"). The grid is cut into tiles of
+// gpu::kShoreTileTexels texels a side; a page per tile names the slot that holds it.
+// Tiles where every wave is as it is in the open sea, and tiles of dry land a tile
+// or more from the shoreline, are not stored: their pages name the shared open-sea
+// and dry-land slots. The CPU queries and the GPU (shaders/shore_fields.glsl) read
+// the same slots with the same taps.
+// Internal to ShoreWaves. Threading: immutable once cut.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <span>
+#include <vector>
+
+#include "host_device.h"
+
+namespace tidewater {
+
+struct ShoreWaveFields;
+
+/// A tile is left out as open sea when, at each of its texels (apron included), every
+/// wave's phase residual is within this many radians of 0 ...
+inline constexpr double kOpenSeaPhaseTolerance = 1e-3;
+/// ... its amplitude factor within this of 1 and its wavevector within this fraction of
+/// k0 of k0 D, with no breaking and full steepness. At the deep-water edge of the marched
+/// phase (k h = pi) shoaling leaves 0.4 %: the band kept is where depth is under about half
+/// the longest wave's length.
+inline constexpr double kOpenSeaRelativeTolerance = 0.01;
+
+struct ShoreTiles {
+    static constexpr int kTile = static_cast<int>(gpu::kShoreTileTexels);
+    static constexpr std::size_t kSide = gpu::kShoreSlotSide;
+    static constexpr std::size_t kSlotTexels = gpu::kShoreSlotTexels;
+
+    int resolution = 0;      ///< Texels per side of the whole grid.
+    int tiles_per_side = 0;  ///< ceil(resolution / kTile).
+    std::size_t stride = 0;  ///< Floats per texel: ShoreWaves::query_texel_stride(waves).
+    /// Per tile, rows along +z: the slot that holds it.
+    std::vector<std::uint32_t> pages;
+    /// Slot after slot, kSlotTexels texels of `stride` floats each (the query layout:
+    /// W phase residuals, W amplitude factors, W wavevector x, W wavevector z, then depth,
+    /// breaking, steepness scale and shore distance). Slots 0 and 1: open sea, dry land.
+    std::vector<float> texels;
+
+    std::size_t slot_count() const { return stride ? texels.size() / (stride * kSlotTexels) : 0; }
+    /// Tiles whose fields are stored (not open sea or dry land).
+    std::size_t stored_tiles() const { return slot_count() - gpu::kShoreFirstStoredSlot; }
+    /// The floats of the first of cell (i, j)'s four taps (0 <= i, j <= resolution - 2, or 0
+    /// on a grid of one texel); the others follow at +1, +kSide and +kSide + 1 texels.
+    const float* cell(int i, int j) const {
+        const int ti = i / kTile, tj = j / kTile;
+        const std::size_t slot = pages[static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) +
+                                       static_cast<std::size_t>(ti)];
+        const std::size_t local =
+            static_cast<std::size_t>(j - tj * kTile) * kSide + static_cast<std::size_t>(i - ti * kTile);
+        return texels.data() + (slot * kSlotTexels + local) * stride;
+    }
+    /// Every slot's bytes on the CPU (the pages included).
+    std::size_t bytes() const { return texels.size() * sizeof(float) + pages.size() * sizeof(std::uint32_t); }
+};
+
+/// Cuts `fields` into tiles. `open_wavevectors` holds each wave's k0 D (rad/m): the
+/// open sea's wavevectors, and what a tile must match to be left out as open sea.
+ShoreTiles cut_shore_tiles(const ShoreWaveFields& fields, std::span<const glm::dvec2> open_wavevectors);
+
+/// What the fields' depth or shore distance means to a query: kShoreFarValue and beyond
+/// (a tile not stored) reads as infinitely deep or far, +-kDeepWater.
+double shore_far_to_infinite(double value);
+
+}  // namespace tidewater
