@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "../baked_scene.hpp"
 #include "test_helpers.hpp"
@@ -23,16 +24,28 @@ constexpr const char* kIslandScene = R"({"version": 1, "water_level": 0,
     "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
     "ocean": "ocean_rolling", "shore": {"resolution": 96}})";
 
-/// Largest |a - b| over a grid, and where it is relative to the grid's range.
-double worst_difference(const std::vector<float>& a, const std::vector<float>& b) {
-    double worst = 0.0;
-    for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(double(a[k]) - double(b[k])));
-    return worst;
-}
-
-double half_step(const std::vector<float>& v) {
-    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    return 0.5 * (double(*hi) - double(*lo)) / 65534.0 + 1e-6 * std::max(std::abs(double(*lo)), std::abs(double(*hi)));
+/// Per field row: half the 16-bit step over the row's range across the stored slots
+/// (plus float rounding), and the largest difference between two models' stored slots.
+struct RowCheck {
+    std::vector<double> half_step, worst;
+    std::size_t zeros_kept = 0, zeros_lost = 0;  // offshore residuals exactly 0 before: after?
+};
+RowCheck compare_stored_slots(const ShoreTiles& a, const ShoreTiles& b, std::size_t nw) {
+    RowCheck c;
+    const std::size_t rows = a.stride, first = gpu::kShoreFirstStoredSlot * ShoreTiles::kSlotTexels;
+    const std::size_t texels = a.texels.size() / rows;
+    std::vector<double> lo(rows, 1e300), hi(rows, -1e300);
+    c.worst.assign(rows, 0.0);
+    for (std::size_t k = first; k < texels; ++k)
+        for (std::size_t r = 0; r < rows; ++r) {
+            const double va = a.texels[k * rows + r], vb = b.texels[k * rows + r];
+            lo[r] = std::min(lo[r], va), hi[r] = std::max(hi[r], va);
+            c.worst[r] = std::max(c.worst[r], std::abs(va - vb));
+            if (r < nw && va == 0.0) (vb == 0.0 ? c.zeros_kept : c.zeros_lost) += 1;
+        }
+    for (std::size_t r = 0; r < rows; ++r)
+        c.half_step.push_back(0.5 * (hi[r] - lo[r]) / 65534.0 + 1e-6 * std::max(std::abs(lo[r]), std::abs(hi[r])));
+    return c;
 }
 
 TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
@@ -56,22 +69,19 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     const ShoreWaves& back = **loaded;
     ASSERT_EQ(back.resolution(), model.resolution());
     EXPECT_DOUBLE_EQ(back.texel(), model.texel());
-    EXPECT_LE(worst_difference(back.depth(), model.depth()), half_step(model.depth()));
-    EXPECT_LE(worst_difference(back.breaking(), model.breaking()), half_step(model.breaking()));
-    for (std::size_t w = 0; w < model.wave_count(); ++w) {
-        EXPECT_LE(worst_difference(back.phase_residual(w), model.phase_residual(w)), half_step(model.phase_residual(w)))
-            << w;
-        EXPECT_LE(worst_difference(back.amplitude_factor(w), model.amplitude_factor(w)),
-                  half_step(model.amplitude_factor(w)))
-            << w;
-        EXPECT_LE(worst_difference(back.wavevector_x(w), model.wavevector_x(w)), half_step(model.wavevector_x(w))) << w;
-        // Offshore the residual is exactly 0 before and after: no seam where the fields end.
-        for (std::size_t k = 0; k < model.phase_residual(w).size(); ++k) {
-            if (model.phase_residual(w)[k] == 0.0f) {
-                ASSERT_EQ(back.phase_residual(w)[k], 0.0f) << w << " " << k;
-            }
-        }
-    }
+    // The same tiles stored, every stored value within half its row's 16-bit step.
+    ASSERT_EQ(back.tiles().pages, model.tiles().pages);
+    ASSERT_EQ(back.tiles().texels.size(), model.tiles().texels.size());
+    ASSERT_GT(model.tiles().stored_tiles(), 0u);
+    const RowCheck rows = compare_stored_slots(model.tiles(), back.tiles(), model.wave_count());
+    for (std::size_t r = 0; r < rows.worst.size(); ++r) EXPECT_LE(rows.worst[r], rows.half_step[r]) << "row " << r;
+    // Offshore the residual is exactly 0 before and after: no seam where the fields end.
+    EXPECT_GT(rows.zeros_kept, 0u);
+    EXPECT_EQ(rows.zeros_lost, 0u);
+    // The slots not stored are the open sea's and dry land's, the same on both sides.
+    const std::size_t constant = gpu::kShoreFirstStoredSlot * ShoreTiles::kSlotTexels * model.tiles().stride;
+    EXPECT_TRUE(
+        std::equal(model.tiles().texels.begin(), model.tiles().texels.begin() + constant, back.tiles().texels.begin()));
 
     // Queries over the island and its beaches agree within millimetres.
     auto body = scene->ocean.with_shore(*loaded);
@@ -111,18 +121,39 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     edited.height = 45.0;  // an edit inside the same extent
     EXPECT_NE(message(scene->ocean.waves(), 0.0, Terrain(edited)).find("the terrain differs"), std::string::npos);
 
-    // A truncated sidecar, a missing field and an image of the wrong size name the file.
+    // A truncated sidecar, a bake of the previous format, a missing tile and a tile of the
+    // wrong size name the file; a kind of tile that does not exist names the field.
     fs::copy_file(folder / "shore.json", dir.path / "shore.json.good");
-    { std::ofstream(folder / "shore.json") << R"({"version": 1, "water_level_m": )"; }
+    { std::ofstream(folder / "shore.json") << R"({"version": 2, "water_level_m": )"; }
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("shore.json"), std::string::npos);
+    { std::ofstream(folder / "shore.json") << R"({"version": 1, "water_level_m": 0})"; }
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("version"), std::string::npos);
     fs::copy_file(dir.path / "shore.json.good", folder / "shore.json", fs::copy_options::overwrite_existing);
-    fs::remove(folder / "breaking.png");
-    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("breaking.png"), std::string::npos);
+    const ShoreTiles& tiles = scene->ocean.shore()->tiles();
+    const std::size_t first_stored =
+        static_cast<std::size_t>(std::find_if(tiles.pages.begin(), tiles.pages.end(),
+                                              [](std::uint32_t p) { return p >= gpu::kShoreFirstStoredSlot; }) -
+                                 tiles.pages.begin());
+    const std::string tile_file = shore_tile_file(static_cast<int>(first_stored % tiles.tiles_per_side),
+                                                  static_cast<int>(first_stored / tiles.tiles_per_side));
+    fs::remove(folder / tile_file);
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find(fs::path(tile_file).filename().string()),
+              std::string::npos);
     Gray16Image small;
     small.width = small.height = 8;
     small.pixels.assign(64, 0);
-    ASSERT_TRUE(detail::write_png_gray16(folder / "breaking.png", small).ok());
+    ASSERT_TRUE(detail::write_png_gray16(folder / tile_file, small).ok());
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("8x8"), std::string::npos);
+    {
+        std::string text((std::istreambuf_iterator<char>(std::ifstream(dir.path / "shore.json.good").rdbuf())),
+                         std::istreambuf_iterator<char>());
+        auto doc = nlohmann::json::parse(text);
+        std::string kinds = doc["model"]["tiles"]["kinds"];
+        kinds[0] = 'x';
+        doc["model"]["tiles"]["kinds"] = kinds;
+        std::ofstream(folder / "shore.json") << doc.dump();
+    }
+    EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("/model/tiles/kinds"), std::string::npos);
     EXPECT_FALSE(load_shore_bake(dir.path / "nowhere", scene->ocean.waves(), 0.0, scene->terrain).ok());
 
     // Saving where no folder can be made fails and leaves nothing behind.

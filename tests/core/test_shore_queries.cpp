@@ -41,7 +41,7 @@ std::vector<glm::dvec2> band(double lo, double hi, std::size_t count, unsigned k
     std::uint64_t h = 12345;
     for (int j = 0; j < n && pts.size() < count; j += 1)
         for (int i = 0; i < n && pts.size() < count; i += 1) {
-            const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
+            const double d = shore.texel_values(i, j).shore_distance();
             h = h * 6364136223846793005ull + 1442695040888963407ull;
             if (d < lo || d > hi || (h >> 60) >= keep_in_16) continue;
             const double jx = static_cast<double>((h >> 20) & 1023) / 1024.0 - 0.5,

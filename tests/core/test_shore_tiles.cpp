@@ -12,19 +12,33 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/detail/shore_waves_bake.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/world_query.hpp"
 
 namespace tidewater {
 namespace {
 
-const ShoreWaves& coast_model() {
-    static const Scene scene = [] {
-        auto baked = test::baked(test::tiled_coast_scene());
+/// The tiled coast's fields over the whole extent, as its bake makes them before cutting.
+const ShoreWaveFields& coast_fields() {
+    static const ShoreWaveFields fields = [] {
+        auto scene = test::tiled_coast_scene();
+        EXPECT_TRUE(scene.ok());
+        ShoreWaveOptions options;
+        options.resolution = 512;
+        auto baked = bake_shore_wave_fields(scene->ocean.waves(), scene->terrain, 0.0, options);
         EXPECT_TRUE(baked.ok()) << baked.error().message;
-        return baked.ok() ? std::move(baked).value() : Scene{};
+        return baked.ok() ? std::move(baked).value() : ShoreWaveFields{};
     }();
-    return *scene.ocean.shore();
+    return fields;
+}
+
+const ShoreWaves& coast_model() {
+    static const std::shared_ptr<const ShoreWaves> model = [] {
+        auto scene = test::tiled_coast_scene();
+        return ShoreWaves::from_baked_fields(coast_fields(), scene->ocean.waves().waves());
+    }();
+    return *model;
 }
 
 std::uint32_t page_of(const ShoreWaves& model, int ti, int tj) {
@@ -44,7 +58,7 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
     const ShoreWaves& model = coast_model();
-    const ShoreWaveFields& f = model.fields();
+    const ShoreWaveFields& f = coast_fields();
     const ShoreTiles& tiles = model.tiles();
     const double k_long = longest_wavenumber(scene->ocean.waves());
     const int n = f.resolution, m = tiles.tiles_per_side, tile = ShoreTiles::kTile;
@@ -90,7 +104,7 @@ TEST(ShoreTiles, SamplesMatchTheBakedGrid) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
     const ShoreWaves& model = coast_model();
-    const ShoreWaveFields& f = model.fields();
+    const ShoreWaveFields& f = coast_fields();
     const auto waves = scene->ocean.waves().waves();
     const std::size_t nw = waves.size();
     std::vector<LocalWave> local(nw);

@@ -83,7 +83,7 @@ std::vector<glm::dvec2> harbour_points(const ShoreWaves& shore) {
     const int n = shore.resolution();
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const double d = shore.shore_distance()[static_cast<std::size_t>(j * n + i)];
+            const double d = shore.texel_values(i, j).shore_distance();
             if (d >= 2.0 && d <= 120.0)
                 centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
         }

@@ -37,8 +37,7 @@ std::vector<glm::dvec2> shore_band(const ShoreWaves& shore, double lo, double hi
     const int n = shore.resolution();
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const double d = shore.shore_distance()[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
-                                                    static_cast<std::size_t>(i)];
+            const double d = shore.texel_values(i, j).shore_distance();
             if (d >= lo && d <= hi) centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
         }
     std::vector<glm::dvec2> pts;

@@ -54,7 +54,9 @@ Result<nlohmann::json> read_sidecar(const fs::path& path, int version) {
     std::int64_t found = 0;
     if (auto st = root->integer("version", found, 1, 1000, true); !st) return st.error();
     if (found != version)
-        return root->error("version", fmt::format("{} is not supported (this build reads version {})", found, version));
+        return root->error(
+            "version",
+            fmt::format("{} is not supported (this build reads version {}): re-run tidewater bake", found, version));
     return doc;
 }
 

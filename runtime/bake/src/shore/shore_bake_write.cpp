@@ -11,6 +11,8 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/detail/bake_files_write.hpp"
+#include "tidewater/detail/image_write.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater {
 
@@ -23,43 +25,108 @@ Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name,
     return detail::write_field_png(dir, name, values, n, n, unit);
 }
 
+/// Field row r of a texel (ShoreTiles::texels): its name, wave (-1: shared) and unit.
+struct RowName {
+    const char* field;
+    int wave;
+    const char* unit;
+};
+RowName row_name(std::size_t r, std::size_t nw) {
+    static constexpr std::pair<const char*, const char*> per_wave[] = {
+        {"phase_residual", "rad"}, {"amplitude_factor", "1"}, {"wavevector_x", "rad/m"}, {"wavevector_z", "rad/m"}};
+    static constexpr std::pair<const char*, const char*> shared[] = {
+        {"depth", "m"}, {"breaking", "1"}, {"steepness_scale", "1"}, {"shore_distance", "m"}};
+    if (r < 4 * nw) return {per_wave[r / nw].first, static_cast<int>(r % nw), per_wave[r / nw].second};
+    return {shared[r - 4 * nw].first, -1, shared[r - 4 * nw].second};
+}
+
+/// The model's tiles: which tiles are stored, and a 16-bit grey PNG per stored tile whose
+/// row r holds field row r at the slot's texels, each row encoded over its range across
+/// every stored tile.
+Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
+    const ShoreTiles& t = m.tiles();
+    const std::size_t rows = t.stride, nw = m.wave_count(), slots = t.slot_count();
+    std::vector<double> lo(rows, 0.0), hi(rows, 0.0);
+    for (std::size_t slot = gpu::kShoreFirstStoredSlot; slot < slots; ++slot)
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+            const float* v = t.texels.data() + (slot * ShoreTiles::kSlotTexels + k) * rows;
+            const bool first = slot == gpu::kShoreFirstStoredSlot && k == 0;
+            for (std::size_t r = 0; r < rows; ++r) {
+                const double value = static_cast<double>(v[r]);
+                lo[r] = first ? value : std::min(lo[r], value);
+                hi[r] = first ? value : std::max(hi[r], value);
+            }
+        }
+    std::vector<detail::FieldEncoding> encodings(rows);
+    nlohmann::json row_list = nlohmann::json::array();
+    for (std::size_t r = 0; r < rows; ++r) {
+        encodings[r] = detail::FieldEncoding::covering(lo[r], hi[r]);
+        const RowName name = row_name(r, nw);
+        nlohmann::json row = {
+            {"field", name.field}, {"unit", name.unit}, {"zero_pixel", encodings[r].zero}, {"step", encodings[r].step}};
+        if (name.wave >= 0) row["wave"] = name.wave;
+        row_list.push_back(row);
+    }
+    std::string kinds;
+    kinds.reserve(t.pages.size());
+    for (std::uint32_t page : t.pages)
+        kinds.push_back(page == gpu::kShoreOpenSlot ? 'o' : page == gpu::kShoreDrySlot ? 'd' : 's');
+    std::error_code ec;
+    fs::create_directories(temp / "tiles", ec);
+    if (ec)
+        return Error{ErrorCode::io_error,
+                     fmt::format("{}: cannot create the folder: {}", (temp / "tiles").string(), ec.message())};
+    const int side = t.tiles_per_side;
+    std::vector<std::size_t> stored;
+    for (std::size_t k = 0; k < t.pages.size(); ++k)
+        if (t.pages[k] >= gpu::kShoreFirstStoredSlot) stored.push_back(k);
+    std::vector<Status> written(stored.size());
+    detail::parallel_for_each(stored.size(), 0, [&](std::size_t s) {
+        const std::size_t k = stored[s];
+        Gray16Image img;
+        img.width = static_cast<int>(ShoreTiles::kSlotTexels);
+        img.height = static_cast<int>(rows);
+        img.pixels.resize(ShoreTiles::kSlotTexels * rows);
+        const float* slot = t.texels.data() + t.pages[k] * ShoreTiles::kSlotTexels * rows;
+        for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
+            for (std::size_t r = 0; r < rows; ++r)
+                img.pixels[r * ShoreTiles::kSlotTexels + texel] = encodings[r].encode(slot[texel * rows + r]);
+        written[s] =
+            detail::write_png_gray16(temp / shore_tile_file(static_cast<int>(k % static_cast<std::size_t>(side)),
+                                                            static_cast<int>(k / static_cast<std::size_t>(side))),
+                                     img);
+    });
+    for (const Status& st : written)
+        if (!st) return st.error();
+    return nlohmann::json{{"tile_texels", ShoreTiles::kTile},
+                          {"tiles_per_side", side},
+                          {"kinds", kinds},
+                          {"stored", stored.size()},
+                          {"rows", row_list}};
+}
+
 /// Fills `temp` with the bake.
 Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
-    const ShoreWaveFields& f = c.model->fields();
-    const int n = f.resolution;
+    const ShoreWaves& m = *c.model;
+    const int n = m.resolution();
     nlohmann::json model = {{"resolution", n},
-                            {"texel_m", f.texel},
-                            {"corner_m", {f.corner.x, f.corner.y}},
-                            {"size_m", f.texel * n},
+                            {"texel_m", m.texel()},
+                            {"corner_m", {m.corner().x, m.corner().y}},
+                            {"size_m", m.texel() * n},
                             {"breaking_index", c.breaking_index}};
-    const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> shared[] = {
-        {"depth", {&f.depth, "m"}},
-        {"shore_distance", {&f.shore_distance, "m"}},
-        {"breaking", {&f.breaking, "1"}},
-        {"steepness_scale", {&f.steepness_scale, "1"}}};
-    for (const auto& [name, field] : shared) {
-        auto entry = write_field(temp, name, *field.first, n, field.second);
-        if (!entry) return entry.error();
-        model["fields"][name] = *entry;
-    }
+    auto tiles = write_tiles(temp, m);
+    if (!tiles) return tiles.error();
+    model["tiles"] = std::move(tiles).value();
     const auto waves = c.waves->waves();
     model["waves"] = nlohmann::json::array();
     for (std::size_t i = 0; i < waves.size(); ++i) {
         const Wave& w = waves[i];
-        nlohmann::json entry = {
-            {"deep_water_wavelength_m", kTwoPi / w.k}, {"omega_rad_s", w.omega},     {"period_s", w.period()},
-            {"direction", {w.dir_x, w.dir_z}},         {"amplitude_m", w.amplitude}, {"steepness", w.steepness}};
-        const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> per_wave[] = {
-            {"phase_residual", {&f.phase_residual[i], "rad"}},
-            {"amplitude_factor", {&f.amplitude_factor[i], "1"}},
-            {"wavevector_x", {&f.wavevector_x[i], "rad/m"}},
-            {"wavevector_z", {&f.wavevector_z[i], "rad/m"}}};
-        for (const auto& [name, field] : per_wave) {
-            auto e = write_field(temp, fmt::format("wave_{:02}_{}", i, name), *field.first, n, field.second);
-            if (!e) return e.error();
-            entry["fields"][name] = *e;
-        }
-        model["waves"].push_back(entry);
+        model["waves"].push_back({{"deep_water_wavelength_m", kTwoPi / w.k},
+                                  {"omega_rad_s", w.omega},
+                                  {"period_s", w.period()},
+                                  {"direction", {w.dir_x, w.dir_z}},
+                                  {"amplitude_m", w.amplitude},
+                                  {"steepness", w.steepness}});
     }
     nlohmann::json sidecar = {{"version", kShoreBakeFormatVersion},
                               {"scene", c.scene_name},

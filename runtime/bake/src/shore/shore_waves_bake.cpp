@@ -233,6 +233,17 @@ void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveF
 Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain,
                                                            double water_level, const ShoreWaveOptions& options,
                                                            const ShoreField* shoreline) {
+    auto fields = bake_shore_wave_fields(set, terrain, water_level, options, shoreline);
+    if (!fields) return fields.error();
+    try {
+        return ShoreWaves::from_baked_fields(*fields, set.waves());
+    } catch (const std::exception& e) {
+        return Error{ErrorCode::internal, fmt::format("shore waves: cutting the tiles failed: {}", e.what())};
+    }
+}
+
+Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain& terrain, double water_level,
+                                               const ShoreWaveOptions& options, const ShoreField* shoreline) {
     if (options.resolution < 16 || options.resolution > 4096)
         return Error{ErrorCode::invalid_argument,
                      fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
@@ -273,7 +284,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         });
         if (options.cancel.stop_requested()) return cancelled();
         cap_breaking(waves, options.breaking_index, f);
-        return ShoreWaves::from_baked_fields(std::move(f), waves);
+        return f;
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};
     }

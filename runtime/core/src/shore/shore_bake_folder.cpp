@@ -11,6 +11,7 @@
 #include "tidewater/detail/bake_files.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/json_reader.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater {
 
@@ -19,8 +20,104 @@ namespace {
 namespace fs = std::filesystem;
 using detail::ObjectReader;
 
-Result<std::vector<float>> read_field(const fs::path& dir, const ObjectReader& fields, std::string_view name, int n) {
-    return detail::read_field_png(dir, fields, name, n, n);
+/// What a texel's field rows must be, in order (ShoreTiles::texels).
+std::pair<std::string, int> expected_row(std::size_t r, std::size_t nw) {
+    static constexpr const char* per_wave[] = {"phase_residual", "amplitude_factor", "wavevector_x", "wavevector_z"};
+    static constexpr const char* shared[] = {"depth", "breaking", "steepness_scale", "shore_distance"};
+    if (r < 4 * nw) return {per_wave[r / nw], static_cast<int>(r % nw)};
+    return {shared[r - 4 * nw], -1};
+}
+
+/// The tiles of /model/tiles: which are stored, each row's encoding, and every stored
+/// tile's PNG decoded into its slot (slots in tile order, after the open-sea and dry-land ones).
+Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, int n, std::size_t nw,
+                              double& depth_step) {
+    if (!model.has("tiles")) return model.error("tiles", "is missing");
+    auto tiles = ObjectReader::open(model.at("tiles"), model.source(), "/model/tiles");
+    if (!tiles) return tiles.error();
+    std::int64_t tile_texels = 0, per_side = 0;
+    if (auto st = tiles->integer("tile_texels", tile_texels, 1, 4096, true); !st) return st.error();
+    if (tile_texels != ShoreTiles::kTile)
+        return tiles->error("tile_texels", fmt::format("is {}, this version reads tiles of {}: re-run tidewater bake",
+                                                       tile_texels, ShoreTiles::kTile));
+    const int m = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
+    if (auto st = tiles->integer("tiles_per_side", per_side, m, m, true); !st) return st.error();
+    std::string kinds;
+    if (auto st = tiles->string("kinds", kinds, true); !st) return st.error();
+    const std::size_t count = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
+    if (kinds.size() != count)
+        return tiles->error("kinds", fmt::format("has {} tiles, expected {}x{}", kinds.size(), m, m));
+    if (!tiles->has("rows") || !tiles->at("rows").is_array() || tiles->at("rows").size() != 4 * nw + 4)
+        return tiles->error("rows", fmt::format("expected {} rows (4 per wave and 4 shared)", 4 * nw + 4));
+    std::vector<detail::FieldEncoding> rows(4 * nw + 4);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        auto row = ObjectReader::open(tiles->at("rows")[r], tiles->source(), fmt::format("/model/tiles/rows/{}", r));
+        if (!row) return row.error();
+        const auto [field, wave] = expected_row(r, nw);
+        std::string name;
+        std::int64_t row_wave = -1;
+        if (auto st = row->string("field", name, true); !st) return st.error();
+        if (wave >= 0)
+            if (auto st = row->integer("wave", row_wave, 0, static_cast<std::int64_t>(nw) - 1, true); !st)
+                return st.error();
+        if (name != field || row_wave != wave)
+            return row->error("field", fmt::format("expected {}{}", field,
+                                                   wave >= 0 ? fmt::format(" of wave {}", wave) : std::string()));
+        double step = 0.0, zero = 0.0;
+        if (auto st = row->number("step", step, true); !st) return st.error();
+        if (auto st = row->number("zero_pixel", zero, true); !st) return st.error();
+        if (!(step > 0.0) || !std::isfinite(step)) return row->error("step", "must be a finite number > 0");
+        if (zero != std::floor(zero) || std::abs(zero) > 1e15) return row->error("zero_pixel", "must be an integer");
+        rows[r].step = step;
+        rows[r].zero = static_cast<std::int64_t>(zero);
+    }
+    depth_step = rows[4 * nw].step;
+    ShoreTiles t;
+    t.resolution = n;
+    t.tiles_per_side = m;
+    t.stride = ShoreWaves::query_texel_stride(nw);
+    t.pages.assign(count, gpu::kShoreOpenSlot);
+    std::vector<std::size_t> stored;
+    for (std::size_t k = 0; k < count; ++k) {
+        if (kinds[k] == 'o') continue;
+        if (kinds[k] == 'd') {
+            t.pages[k] = gpu::kShoreDrySlot;
+        } else if (kinds[k] == 's') {
+            t.pages[k] = static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot + stored.size());
+            stored.push_back(k);
+        } else {
+            return tiles->error(
+                "kinds",
+                fmt::format("tile {} is '{}': expected o (open sea), d (dry land) or s (stored)", k, kinds[k]));
+        }
+    }
+    const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
+    t.texels.assign((gpu::kShoreFirstStoredSlot + stored.size()) * slot_floats, 0.0f);
+    std::vector<Status> read(stored.size());
+    detail::parallel_for_each(stored.size(), 0, [&](std::size_t s) {
+        const std::size_t k = stored[s];
+        const fs::path file = dir / shore_tile_file(static_cast<int>(k % static_cast<std::size_t>(m)),
+                                                    static_cast<int>(k / static_cast<std::size_t>(m)));
+        auto img = detail::read_png_gray16(file);
+        if (!img) {
+            read[s] = img.error();
+            return;
+        }
+        if (img->width != static_cast<int>(ShoreTiles::kSlotTexels) || img->height != static_cast<int>(t.stride)) {
+            read[s] = Error{ErrorCode::invalid_argument,
+                            fmt::format("{}: the image is {}x{}, a tile of this bake is {}x{}", file.string(),
+                                        img->width, img->height, ShoreTiles::kSlotTexels, t.stride)};
+            return;
+        }
+        float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * slot_floats;
+        for (std::size_t r = 0; r < t.stride; ++r)
+            for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
+                slot[texel * t.stride + r] =
+                    static_cast<float>(rows[r].decode(img->pixels[r * ShoreTiles::kSlotTexels + texel]));
+    });
+    for (const Status& st : read)
+        if (!st) return st.error();
+    return t;
 }
 
 bool close(double a, double b) {
@@ -47,9 +144,9 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     auto model = ObjectReader::open(root->at("model"), root->source(), "/model");
     if (!model) return model.error();
 
-    ShoreWaveFields f;
+    ShoreGrid f;
     std::int64_t n = 0;
-    if (auto st = model->integer("resolution", n, 2, 8192, true); !st) return st.error();
+    if (auto st = model->integer("resolution", n, 2, 65536, true); !st) return st.error();
     f.resolution = static_cast<int>(n);
     if (auto st = model->number("texel_m", f.texel, true); !st) return st.error();
     if (!model->has("corner_m") || !model->at("corner_m").is_array() || model->at("corner_m").size() != 2 ||
@@ -90,56 +187,44 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
             !close(dir_json[0].get<double>(), s.dir_x) || !close(dir_json[1].get<double>(), s.dir_z))
             return w->error("", "differs from the scene's wave " + std::to_string(i) +
                                     ": the bake was made for other waves; re-run tidewater bake");
-        if (!w->has("fields")) return w->error("fields", "is missing");
-        auto fields = ObjectReader::open(w->at("fields"), w->source(), w->child_path("fields"));
-        if (!fields) return fields.error();
-        std::vector<float>* targets[] = {nullptr, nullptr, nullptr, nullptr};
-        f.phase_residual.emplace_back(), f.amplitude_factor.emplace_back(), f.wavevector_x.emplace_back(),
-            f.wavevector_z.emplace_back();
-        targets[0] = &f.phase_residual.back(), targets[1] = &f.amplitude_factor.back();
-        targets[2] = &f.wavevector_x.back(), targets[3] = &f.wavevector_z.back();
-        const char* names[] = {"phase_residual", "amplitude_factor", "wavevector_x", "wavevector_z"};
-        for (int k = 0; k < 4; ++k) {
-            auto values = read_field(dir, *fields, names[k], f.resolution);
-            if (!values) return values.error();
-            *targets[k] = std::move(values).value();
-        }
     }
-    if (!model->has("fields")) return model->error("fields", "is missing");
-    auto fields = ObjectReader::open(model->at("fields"), model->source(), "/model/fields");
-    if (!fields) return fields.error();
-    std::pair<const char*, std::vector<float>*> shared[] = {{"depth", &f.depth},
-                                                            {"shore_distance", &f.shore_distance},
-                                                            {"breaking", &f.breaking},
-                                                            {"steepness_scale", &f.steepness_scale}};
-    for (auto& [name, target] : shared) {
-        auto values = read_field(dir, *fields, name, f.resolution);
-        if (!values) return values.error();
-        *target = std::move(values).value();
-    }
-    // The terrain must be the one baked over: its depth at every texel, within the encoding.
-    const double tolerance = 0.51 * detail::field_png_step(*fields, "depth") + 1e-3;
+    double depth_step = 0.0;
+    auto tiles = read_tiles(dir, *model, f.resolution, set.size(), depth_step);
+    if (!tiles) return tiles.error();
+    // The terrain must be the one baked over: its depth at every stored texel within the
+    // encoding, water under every open-sea tile and land under every dry one.
+    const double tolerance = 0.51 * depth_step + 1e-3;
+    const std::size_t nw = set.size();
     for (int j = 0; j < f.resolution; ++j)
         for (int i = 0; i < f.resolution; ++i) {
             const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
             const double depth = water_level - terrain.height_at(p);
-            const double stored =
-                static_cast<double>(f.depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(f.resolution) +
-                                            static_cast<std::size_t>(i)]);
-            if (!(std::abs(depth - stored) <= tolerance))
-                return fields->error(
-                    "depth",
+            const std::uint32_t page = tiles->page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
+            const double stored = static_cast<double>(tiles->texel(i, j)[4 * nw]);
+            const bool fits = page == gpu::kShoreOpenSlot  ? depth > -tolerance
+                              : page == gpu::kShoreDrySlot ? depth <= tolerance
+                                                           : std::abs(depth - stored) <= tolerance;
+            if (!fits)
+                return model->error(
+                    "tiles",
                     fmt::format("the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
-                                "the bake says {:.3f} m): re-run tidewater bake",
-                                depth, p.x, p.y, stored));
+                                "the bake says {}): re-run tidewater bake",
+                                depth, p.x, p.y,
+                                page == gpu::kShoreOpenSlot  ? std::string("open sea")
+                                : page == gpu::kShoreDrySlot ? std::string("dry land")
+                                                             : fmt::format("{:.3f} m", stored)));
         }
-    auto made = ShoreWaves::from_fields(std::move(f), set);
+    auto made = ShoreWaves::from_tiles(f, std::move(tiles).value(), set);
     if (!made) {
         Error e = std::move(made).error();
         e.message = fmt::format("{}: {}", dir.string(), e.message);
         return e;
     }
     return made;
+}
+
+std::string shore_tile_file(int ti, int tj) {
+    return fmt::format("tiles/x{:03}_z{:03}.png", ti, tj);
 }
 
 }  // namespace tidewater

@@ -110,8 +110,7 @@ ShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2>
     }
     const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
     t.texels.assign(static_cast<std::size_t>(next) * slot_floats, 0.0f);
-    fill_constant_slot(t.texels.data() + gpu::kShoreOpenSlot * slot_floats, open, false, t.stride);
-    fill_constant_slot(t.texels.data() + gpu::kShoreDrySlot * slot_floats, open, true, t.stride);
+    fill_constant_slots(t, open);
     detail::parallel_for_each(m, 0, [&](std::size_t tj) {
         for (std::size_t ti = 0; ti < m; ++ti) {
             const std::uint32_t slot = t.pages[tj * m + ti];
@@ -124,6 +123,12 @@ ShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2>
         }
     });
     return t;
+}
+
+void fill_constant_slots(ShoreTiles& tiles, std::span<const glm::dvec2> open) {
+    const std::size_t slot_floats = ShoreTiles::kSlotTexels * tiles.stride;
+    fill_constant_slot(tiles.texels.data() + gpu::kShoreOpenSlot * slot_floats, open, false, tiles.stride);
+    fill_constant_slot(tiles.texels.data() + gpu::kShoreDrySlot * slot_floats, open, true, tiles.stride);
 }
 
 double shore_far_to_infinite(double value) {

@@ -61,57 +61,98 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveField
                                                                         {&fields.steepness_scale, "steepness_scale"}};
     for (const auto& [grid, name] : shared)
         if (auto st = check(*grid, name); !st) return st.error();
-    return std::shared_ptr<const ShoreWaves>(made(std::move(fields), open_wavevectors(waves)));
+    return from_baked_fields(fields, waves);
 }
 
-std::shared_ptr<const ShoreWaves> ShoreWaves::from_baked_fields(ShoreWaveFields fields, std::span<const Wave> waves) {
-    return made(std::move(fields), open_wavevectors(waves));
+std::shared_ptr<const ShoreWaves> ShoreWaves::from_baked_fields(const ShoreWaveFields& fields,
+                                                                std::span<const Wave> waves) {
+    auto open = open_wavevectors(waves);
+    ShoreTiles tiles = cut_shore_tiles(fields, open);
+    return made({fields.resolution, fields.texel, fields.corner}, std::move(tiles), std::move(open));
 }
 
-std::shared_ptr<ShoreWaves> ShoreWaves::made(ShoreWaveFields fields, std::vector<glm::dvec2> open) {
+Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_tiles(const ShoreGrid& grid, ShoreTiles tiles,
+                                                                 std::span<const Wave> waves) {
+    const int n = grid.resolution;
+    if (n < 2 || n > 65536)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: resolution {} is out of range (2 to 65536)", n)};
+    if (!(grid.texel > 0.0) || !std::isfinite(grid.texel) || !std::isfinite(grid.corner.x) ||
+        !std::isfinite(grid.corner.y))
+        return Error{ErrorCode::invalid_argument, "shore tiles: the texel size and corner must be finite (texel > 0)"};
+    const int m = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
+    if (tiles.resolution != n || tiles.tiles_per_side != m ||
+        tiles.pages.size() != static_cast<std::size_t>(m) * static_cast<std::size_t>(m))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} pages for a {}² grid, expected {}²", tiles.pages.size(), n, m)};
+    if (tiles.stride != query_texel_stride(waves.size()) ||
+        tiles.texels.size() % (tiles.stride * ShoreTiles::kSlotTexels) != 0 ||
+        tiles.slot_count() < gpu::kShoreFirstStoredSlot)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: the slots do not hold {} waves", waves.size())};
+    const std::size_t slots = tiles.slot_count();
+    for (std::size_t k = 0; k < tiles.pages.size(); ++k)
+        if (tiles.pages[k] >= slots)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("shore tiles: tile {} names slot {} of {}", k, tiles.pages[k], slots)};
+    for (float v : tiles.texels)
+        if (!std::isfinite(v)) return Error{ErrorCode::invalid_argument, "shore tiles: a stored value is not finite"};
+    auto open = open_wavevectors(waves);
+    fill_constant_slots(tiles, open);
+    return std::shared_ptr<const ShoreWaves>(made(grid, std::move(tiles), std::move(open)));
+}
+
+std::shared_ptr<ShoreWaves> ShoreWaves::made(const ShoreGrid& grid, ShoreTiles tiles, std::vector<glm::dvec2> open) {
     auto out = std::make_shared<ShoreWaves>();
-    out->tiles_ = cut_shore_tiles(fields, open);
+    out->grid_ = grid;
+    out->tiles_ = std::move(tiles);
     out->trivial_ = std::all_of(out->tiles_.pages.begin(), out->tiles_.pages.end(),
                                 [](std::uint32_t slot) { return slot == gpu::kShoreOpenSlot; });
-    out->f_ = std::move(fields);
     out->open_wavevectors_ = std::move(open);
     return out;
 }
 
 std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
     stride = std::max(stride, 1);
-    const int n = f_.resolution, packed = (n - 1) / stride + 1;
+    const int n = grid_.resolution, packed = (n - 1) / stride + 1;
+    const std::size_t nw = wave_count(), count = static_cast<std::size_t>(packed) * static_cast<std::size_t>(packed);
     ShoreWaveFields c;
     c.resolution = packed;
-    c.texel = f_.texel * stride;
-    c.corner = f_.corner + glm::dvec2(0.5 * f_.texel - 0.5 * c.texel);
-    auto pick = [&](const std::vector<float>& grid) {
-        std::vector<float> out;
-        out.reserve(static_cast<std::size_t>(packed) * static_cast<std::size_t>(packed));
-        for (int j = 0; j < packed; ++j)
-            for (int i = 0; i < packed; ++i)
-                out.push_back(
-                    grid[static_cast<std::size_t>(j) * static_cast<std::size_t>(stride) * static_cast<std::size_t>(n) +
-                         static_cast<std::size_t>(i) * static_cast<std::size_t>(stride)]);
-        return out;
-    };
-    for (std::size_t w = 0; w < wave_count(); ++w) {
-        c.phase_residual.push_back(pick(f_.phase_residual[w]));
-        c.amplitude_factor.push_back(pick(f_.amplitude_factor[w]));
-        c.wavevector_x.push_back(pick(f_.wavevector_x[w]));
-        c.wavevector_z.push_back(pick(f_.wavevector_z[w]));
-    }
-    c.depth = pick(f_.depth);
-    c.breaking = pick(f_.breaking);
-    c.steepness_scale = pick(f_.steepness_scale);
-    c.shore_distance = pick(f_.shore_distance);
-    return made(std::move(c), open_wavevectors_);
+    c.texel = grid_.texel * stride;
+    c.corner = grid_.corner + glm::dvec2(0.5 * grid_.texel - 0.5 * c.texel);
+    c.phase_residual.assign(nw, std::vector<float>(count));
+    c.amplitude_factor.assign(nw, std::vector<float>(count));
+    c.wavevector_x.assign(nw, std::vector<float>(count));
+    c.wavevector_z.assign(nw, std::vector<float>(count));
+    c.depth.resize(count);
+    c.breaking.resize(count);
+    c.steepness_scale.resize(count);
+    c.shore_distance.resize(count);
+    for (int j = 0; j < packed; ++j)
+        for (int i = 0; i < packed; ++i) {
+            const std::size_t k =
+                static_cast<std::size_t>(j) * static_cast<std::size_t>(packed) + static_cast<std::size_t>(i);
+            const ShoreTexelView t = texel_values(i * stride, j * stride);
+            for (std::size_t w = 0; w < nw; ++w) {
+                c.phase_residual[w][k] = t.phase_residual(w);
+                c.amplitude_factor[w][k] = t.amplitude_factor(w);
+                c.wavevector_x[w][k] = t.wavevector_x(w);
+                c.wavevector_z[w][k] = t.wavevector_z(w);
+            }
+            c.depth[k] = t.depth();
+            c.breaking[k] = t.breaking();
+            c.steepness_scale[k] = t.steepness_scale();
+            c.shore_distance[k] = t.shore_distance();
+        }
+    auto open = open_wavevectors_;
+    ShoreTiles tiles = cut_shore_tiles(c, open);
+    return made({c.resolution, c.texel, c.corner}, std::move(tiles), std::move(open));
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
     // The taps of grid_taps, read from the cell's slot.
-    const int n = f_.resolution;
-    const detail::GridTaps taps = detail::grid_taps(f_.corner, f_.texel, n, p);
+    const int n = grid_.resolution;
+    const detail::GridTaps taps = detail::grid_taps(grid_.corner, grid_.texel, n, p);
     const int i = static_cast<int>(taps.k00 % static_cast<std::size_t>(n));
     const int j = static_cast<int>(taps.k00 / static_cast<std::size_t>(n));
     const float* t00 = tiles_.cell(i, j);

@@ -31,4 +31,10 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                                                            double water_level, const ShoreWaveOptions& options = {},
                                                            const ShoreField* shoreline = nullptr);
 
+/// The whole-extent fields bake_shore_waves cuts into the model's tiles (for tests and
+/// tools that look at what the tiles leave out).
+Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain& terrain, double water_level,
+                                               const ShoreWaveOptions& options = {},
+                                               const ShoreField* shoreline = nullptr);
+
 }  // namespace tidewater

@@ -1,9 +1,10 @@
-// Saved shore bakes: a folder of 16-bit grey PNG fields with a JSON sidecar
-// (`shore.json`), written by `tidewater bake` (Tidewater::bake's shore_bake_write.hpp)
-// and loaded here for scenes that name it (`"shore": {"bake": "folder"}`). The format
-// is in docs/scene-format.md.
+// Saved shore bakes: a JSON sidecar (`shore.json`) and the shore model's stored tiles
+// (`tiles/`, one 16-bit grey PNG each: row r holds field row r at the slot's texels),
+// with the distance field as whole-grid PNGs; written by `tidewater bake`
+// (Tidewater::bake's shore_bake_write.hpp) and loaded here for scenes that name it
+// (`"shore": {"bake": "folder"}`). The format is in docs/scene-format.md.
 //
-// Each field decodes as value = (pixel - zero_pixel) * step, so 0 (the offshore
+// Each row decodes as value = (pixel - zero_pixel) * step, so 0 (the offshore
 // phase residual) is exact and every value is within step / 2 of the bake.
 // Threading: reentrant. Units: metres, radians, seconds.
 #pragma once
@@ -19,8 +20,11 @@
 
 namespace tidewater {
 
-inline constexpr int kShoreBakeFormatVersion = 1;
+inline constexpr int kShoreBakeFormatVersion = 2;
 inline constexpr const char* kShoreSidecar = "shore.json";
+
+/// The file of stored tile (ti, tj) inside a bake folder.
+std::string shore_tile_file(int ti, int tj);
 
 /// Loads the model saved in `dir` for `waves` over `terrain` at `water_level`. Fails,
 /// naming the file and field, on a missing or corrupt file, and when the bake was made

@@ -29,6 +29,21 @@ inline constexpr double kOpenSeaPhaseTolerance = 1e-3;
 /// the longest wave's length.
 inline constexpr double kOpenSeaRelativeTolerance = 0.01;
 
+/// One texel's floats in the query layout (ShoreTiles::texels), by name.
+struct ShoreTexelView {
+    const float* t = nullptr;
+    std::size_t waves = 0;
+
+    float phase_residual(std::size_t w) const { return t[w]; }
+    float amplitude_factor(std::size_t w) const { return t[waves + w]; }
+    float wavevector_x(std::size_t w) const { return t[2 * waves + w]; }
+    float wavevector_z(std::size_t w) const { return t[3 * waves + w]; }
+    float depth() const { return t[4 * waves]; }
+    float breaking() const { return t[4 * waves + 1]; }
+    float steepness_scale() const { return t[4 * waves + 2]; }
+    float shore_distance() const { return t[4 * waves + 3]; }
+};
+
 struct ShoreTiles {
     static constexpr int kTile = static_cast<int>(gpu::kShoreTileTexels);
     static constexpr std::size_t kSide = gpu::kShoreSlotSide;
@@ -57,9 +72,21 @@ struct ShoreTiles {
             static_cast<std::size_t>(j - tj * kTile) * kSide + static_cast<std::size_t>(i - ti * kTile);
         return texels.data() + (slot * kSlotTexels + local) * stride;
     }
+    /// The floats of texel (i, j), 0 <= i, j < resolution, from the slot of its tile.
+    const float* texel(int i, int j) const { return cell(i, j); }
+    /// The slot that holds tile (ti, tj).
+    std::uint32_t page(int ti, int tj) const {
+        return pages[static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) +
+                     static_cast<std::size_t>(ti)];
+    }
     /// Every slot's bytes on the CPU (the pages included).
     std::size_t bytes() const { return texels.size() * sizeof(float) + pages.size() * sizeof(std::uint32_t); }
 };
+
+/// Writes the open-sea slot (each wave as it is: residual 0, amplitude factor 1,
+/// wavevector k0 D; depth and shore distance +kShoreFarValue) and the dry-land slot (no
+/// wave; -kShoreFarValue) into slots 0 and 1 of `tiles`, which must hold them.
+void fill_constant_slots(ShoreTiles& tiles, std::span<const glm::dvec2> open_wavevectors);
 
 /// Cuts `fields` into tiles. `open_wavevectors` holds each wave's k0 D (rad/m): the
 /// open sea's wavevectors, and what a tile must match to be left out as open sea.

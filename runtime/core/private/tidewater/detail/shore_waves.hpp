@@ -54,8 +54,8 @@ struct LocalShore {
     double steepness_scale = 1.0;  ///< Multiplies every Q here.
 };
 
-/// Everything a shore model holds: grids over the terrain's square extent, values at
-/// texel centres, row-major with rows along +z.
+/// The fields a bake makes: grids over the terrain's square extent, values at texel
+/// centres, row-major with rows along +z. A model keeps them in tiles (ShoreTiles).
 struct ShoreWaveFields {
     int resolution = 0;      ///< Texels per side.
     double texel = 1.0;      ///< m.
@@ -68,13 +68,26 @@ struct ShoreWaveFields {
     std::vector<float> steepness_scale;  ///< Multiplies every Q, 0..1.
 };
 
+/// Where a model's grid lies.
+struct ShoreGrid {
+    int resolution = 0;      ///< Texels per side.
+    double texel = 1.0;      ///< m.
+    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+};
+
 class ShoreWaves {
   public:
-    /// A model from fields made elsewhere (a saved bake) for `waves`. Fails unless every
-    /// grid is resolution^2 finite values and there is one of each per-wave field per wave.
+    /// A model from fields made elsewhere for `waves`. Fails unless every grid is
+    /// resolution^2 finite values and there is one of each per-wave field per wave.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::span<const Wave> waves);
     /// A model from fields its bake made for `waves` (bake_shore_waves): trusted, not checked again.
-    static std::shared_ptr<const ShoreWaves> from_baked_fields(ShoreWaveFields fields, std::span<const Wave> waves);
+    static std::shared_ptr<const ShoreWaves> from_baked_fields(const ShoreWaveFields& fields,
+                                                               std::span<const Wave> waves);
+    /// A model from tiles read elsewhere (a saved bake) for `waves`; slots 0 and 1 are
+    /// written here. Fails unless the tiles fit the grid and the waves and every stored
+    /// value is finite.
+    static Result<std::shared_ptr<const ShoreWaves>> from_tiles(const ShoreGrid& grid, ShoreTiles tiles,
+                                                                std::span<const Wave> waves);
 
     /// The same model on every `stride`-th texel (the first texel centre kept): what a
     /// renderer over its memory budget draws. `stride` 1: a copy.
@@ -83,31 +96,27 @@ class ShoreWaves {
     /// Bilinear sample at world xz from the tiles; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
 
-    const ShoreWaveFields& fields() const { return f_; }
-    int resolution() const { return f_.resolution; }
-    double texel() const { return f_.texel; }
-    glm::dvec2 corner() const { return f_.corner; }
-    std::size_t wave_count() const { return f_.phase_residual.size(); }
+    const ShoreGrid& grid() const { return grid_; }
+    int resolution() const { return grid_.resolution; }
+    double texel() const { return grid_.texel; }
+    glm::dvec2 corner() const { return grid_.corner; }
+    glm::dvec2 texel_center(int i, int j) const { return grid_.corner + grid_.texel * glm::dvec2(i + 0.5, j + 0.5); }
+    std::size_t wave_count() const { return open_wavevectors_.size(); }
     /// True when every tile is open sea: the waves are unchanged and queries may skip the shore.
     bool trivial() const { return trivial_; }
     /// The fields in tiles, interleaved per texel for the query kernel and the GPU:
     /// query_texel_stride(wave_count()) floats each (ShoreTiles::texels).
     const ShoreTiles& tiles() const { return tiles_; }
     static std::size_t query_texel_stride(std::size_t waves) { return 4 * waves + 4; }
-    /// Raw fields for upload to the GPU.
-    const std::vector<float>& phase_residual(std::size_t wave) const { return f_.phase_residual[wave]; }
-    const std::vector<float>& amplitude_factor(std::size_t wave) const { return f_.amplitude_factor[wave]; }
-    const std::vector<float>& wavevector_x(std::size_t wave) const { return f_.wavevector_x[wave]; }
-    const std::vector<float>& wavevector_z(std::size_t wave) const { return f_.wavevector_z[wave]; }
-    const std::vector<float>& depth() const { return f_.depth; }
-    const std::vector<float>& breaking() const { return f_.breaking; }
-    const std::vector<float>& steepness_scale() const { return f_.steepness_scale; }
-    const std::vector<float>& shore_distance() const { return f_.shore_distance; }
+    /// Texel (i, j)'s values (0 <= i, j < resolution()): from its tile's slot, the open
+    /// sea's or dry land's where its tile is not stored.
+    ShoreTexelView texel_values(int i, int j) const { return {tiles_.texel(i, j), wave_count()}; }
 
   private:
-    static std::shared_ptr<ShoreWaves> made(ShoreWaveFields fields, std::vector<glm::dvec2> open_wavevectors);
+    static std::shared_ptr<ShoreWaves> made(const ShoreGrid& grid, ShoreTiles tiles,
+                                            std::vector<glm::dvec2> open_wavevectors);
 
-    ShoreWaveFields f_;
+    ShoreGrid grid_;
     std::vector<glm::dvec2> open_wavevectors_;  ///< each wave's k0 D, rad/m
     ShoreTiles tiles_;
     bool trivial_ = false;
