@@ -19,26 +19,27 @@
 namespace tidewater {
 namespace {
 
-/// The tiled coast's fields over the whole extent, as its bake makes them before cutting.
-const ShoreWaveFields& coast_fields() {
-    static const ShoreWaveFields fields = [] {
+/// The tiled coast's model baked twice: as a scene bakes it (the band), and with every
+/// tile stored (the open sea's and dry land's too), which the band is checked against.
+struct CoastModels {
+    std::shared_ptr<const ShoreWaves> band, every;
+};
+const CoastModels& coast_models() {
+    static const CoastModels models = [] {
+        CoastModels out;
         auto scene = test::tiled_coast_scene();
         EXPECT_TRUE(scene.ok());
-        ShoreWaveOptions options;
-        options.resolution = 512;
-        auto baked = bake_shore_wave_fields(scene->ocean.waves(), scene->terrain, 0.0, options);
-        EXPECT_TRUE(baked.ok()) << baked.error().message;
-        return baked.ok() ? std::move(baked).value() : ShoreWaveFields{};
+        for (bool every : {false, true}) {
+            ShoreWaveOptions options;
+            options.resolution = 512;
+            options.store_every_tile = every;
+            auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
+            EXPECT_TRUE(baked.ok()) << baked.error().message;
+            if (baked.ok()) (every ? out.every : out.band) = *baked;
+        }
+        return out;
     }();
-    return fields;
-}
-
-const ShoreWaves& coast_model() {
-    static const std::shared_ptr<const ShoreWaves> model = [] {
-        auto scene = test::tiled_coast_scene();
-        return ShoreWaves::from_baked_fields(coast_fields(), scene->ocean.waves().waves());
-    }();
-    return *model;
+    return models;
 }
 
 std::uint32_t page_of(const ShoreWaves& model, int ti, int tj) {
@@ -57,11 +58,12 @@ double longest_wavenumber(const WaveSet& set) {
 TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
-    const ShoreWaves& model = coast_model();
-    const ShoreWaveFields& f = coast_fields();
+    const ShoreWaves& model = *coast_models().band;
+    const ShoreWaves& every = *coast_models().every;
     const ShoreTiles& tiles = model.tiles();
     const double k_long = longest_wavenumber(scene->ocean.waves());
-    const int n = f.resolution, m = tiles.tiles_per_side, tile = ShoreTiles::kTile;
+    const int n = model.resolution(), m = tiles.tiles_per_side, tile = ShoreTiles::kTile;
+    EXPECT_EQ(every.tiles().stored_tiles(), static_cast<std::size_t>(m * m));
     ASSERT_EQ(m, (n + tile - 1) / tile);
     std::size_t stored = 0, open = 0, dry = 0;
     for (int tj = 0; tj < m; ++tj)
@@ -70,12 +72,12 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
             // The tile and a tile around it.
             for (int j = std::max(0, (tj - 1) * tile); j < std::min(n, (tj + 2) * tile); ++j)
                 for (int i = std::max(0, (ti - 1) * tile); i < std::min(n, (ti + 2) * tile); ++i) {
-                    const std::size_t k = static_cast<std::size_t>(j) * n + i;
-                    const double h = f.depth[k];
+                    const ShoreTexelView t = every.texel_values(i, j);
+                    const double h = t.depth();
                     const bool inside =
                         i >= ti * tile && i <= (ti + 1) * tile && j >= tj * tile && j <= (tj + 1) * tile;
                     if (inside && h > 0.0 && k_long * h < 0.9 * kPi) feels = true;
-                    if ((h > 0.0 && k_long * h < 1.1 * kPi) || std::abs(f.shore_distance[k]) < tile * f.texel)
+                    if ((h > 0.0 && k_long * h < 1.1 * kPi) || std::abs(t.shore_distance()) < tile * model.texel())
                         near_coast = true;
                 }
             const std::uint32_t page = page_of(model, ti, tj);
@@ -89,69 +91,75 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
             }
         }
     const double share = static_cast<double>(stored) / static_cast<double>(m * m);
-    std::printf("tiled coast: %zu of %d tiles stored (%.0f %%), %zu open sea, %zu dry land; %.1f of %.1f MB\n", stored,
-                m * m, 100.0 * share, open, dry, tiles.bytes() / 1e6,
-                static_cast<double>(n) * n * ShoreWaves::query_texel_stride(model.wave_count()) * 4.0 / 1e6);
+    std::printf(
+        "tiled coast: %zu of %d tiles stored (%.0f %%), %zu open sea, %zu dry land; %.1f MB (%.1f MB with every "
+        "tile)\n",
+        stored, m * m, 100.0 * share, open, dry, tiles.bytes() / 1e6, every.tiles().bytes() / 1e6);
     EXPECT_EQ(tiles.stored_tiles(), stored);
     EXPECT_GT(open, 0u);
     EXPECT_GT(dry, 0u);
     EXPECT_LT(share, 0.6);
 }
 
-// In a stored tile a sample is the baked grid's bilinear sample, bit for bit; in the open
-// sea within kOpenSea*Tolerance of the waves as they are; on dry land no wave at all.
+// In a stored tile a sample is the same as with every tile stored, bit for bit; in the open
+// sea within kOpenSea*Tolerance of it; on dry land no wave at all.
 TEST(ShoreTiles, SamplesMatchTheBakedGrid) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
-    const ShoreWaves& model = coast_model();
-    const ShoreWaveFields& f = coast_fields();
+    const ShoreWaves& model = *coast_models().band;
+    const ShoreWaves& every = *coast_models().every;
     const auto waves = scene->ocean.waves().waves();
     const std::size_t nw = waves.size();
-    std::vector<LocalWave> local(nw);
+    std::vector<LocalWave> local(nw), full(nw);
     std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> across(f.corner.x - 50.0, f.corner.x + f.resolution * f.texel + 50.0);
+    const double lo = model.corner().x, hi = lo + model.resolution() * model.texel();
+    std::uniform_real_distribution<double> across(lo - 50.0, hi + 50.0);
     std::size_t counts[3] = {0, 0, 0};
     for (int s = 0; s < 40000; ++s) {
         const glm::dvec2 p{across(rng), across(rng)};
-        const detail::GridTaps taps = detail::grid_taps(f.corner, f.texel, f.resolution, p);
-        const int i = static_cast<int>(taps.k00 % f.resolution), j = static_cast<int>(taps.k00 / f.resolution);
+        const int n = model.resolution();
+        const detail::GridTaps taps = detail::grid_taps(model.corner(), model.texel(), n, p);
+        const int i = static_cast<int>(taps.k00 % n), j = static_cast<int>(taps.k00 / n);
         const std::uint32_t page = page_of(model, i / ShoreTiles::kTile, j / ShoreTiles::kTile);
         const LocalShore got = model.sample(p, local);
+        const LocalShore want = every.sample(p, full);
         if (page >= gpu::kShoreFirstStoredSlot) {
             ++counts[0];
-            ASSERT_EQ(got.depth, taps(f.depth)) << p.x << "," << p.y;
-            ASSERT_EQ(got.shore_distance, taps(f.shore_distance));
-            ASSERT_EQ(got.breaking, taps(f.breaking));
-            ASSERT_EQ(got.steepness_scale, taps(f.steepness_scale));
+            ASSERT_EQ(got.depth, want.depth) << p.x << "," << p.y;
+            ASSERT_EQ(got.shore_distance, want.shore_distance);
+            ASSERT_EQ(got.breaking, want.breaking);
+            ASSERT_EQ(got.steepness_scale, want.steepness_scale);
             for (std::size_t w = 0; w < nw; ++w) {
-                ASSERT_EQ(local[w].phase_residual, taps(f.phase_residual[w]));
-                ASSERT_EQ(local[w].wavevector.x, taps(f.wavevector_x[w]));
-                ASSERT_EQ(local[w].wavevector.y, taps(f.wavevector_z[w]));
-                if (got.depth > 0.0) {
-                    ASSERT_EQ(local[w].amplitude_factor, taps(f.amplitude_factor[w]));
-                }
+                ASSERT_EQ(local[w].phase_residual, full[w].phase_residual);
+                ASSERT_EQ(local[w].wavevector, full[w].wavevector);
+                ASSERT_EQ(local[w].amplitude_factor, full[w].amplitude_factor);
             }
         } else if (page == gpu::kShoreOpenSlot) {
             ++counts[1];
-            ASSERT_GT(taps(f.depth), 0.0);
+            ASSERT_GT(want.depth, 0.0);
+            EXPECT_EQ(want.breaking, 0.0);
+            EXPECT_NEAR(want.steepness_scale, 1.0, 1e-12);
             EXPECT_EQ(shore_far_to_infinite(got.depth), kDeepWater);
             EXPECT_EQ(shore_far_to_infinite(got.shore_distance), kDeepWater);
             EXPECT_EQ(got.breaking, 0.0);
             EXPECT_NEAR(got.steepness_scale, 1.0, 1e-12);
             for (std::size_t w = 0; w < nw; ++w) {
                 const glm::dvec2 open = waves[w].k * glm::dvec2(waves[w].dir_x, waves[w].dir_z);
-                ASSERT_NEAR(taps(f.phase_residual[w]), local[w].phase_residual, kOpenSeaPhaseTolerance);
-                ASSERT_NEAR(taps(f.amplitude_factor[w]), local[w].amplitude_factor, kOpenSeaRelativeTolerance);
-                ASSERT_NEAR(taps(f.wavevector_x[w]), open.x, kOpenSeaRelativeTolerance * waves[w].k);
-                ASSERT_NEAR(taps(f.wavevector_z[w]), open.y, kOpenSeaRelativeTolerance * waves[w].k);
+                ASSERT_NEAR(full[w].phase_residual, local[w].phase_residual, kOpenSeaPhaseTolerance);
+                ASSERT_NEAR(full[w].amplitude_factor, local[w].amplitude_factor, kOpenSeaRelativeTolerance);
+                ASSERT_NEAR(full[w].wavevector.x, open.x, kOpenSeaRelativeTolerance * waves[w].k);
+                ASSERT_NEAR(full[w].wavevector.y, open.y, kOpenSeaRelativeTolerance * waves[w].k);
                 ASSERT_NEAR(local[w].wavevector.x, open.x, 1e-6 * waves[w].k) << "k0 D in float";
                 ASSERT_NEAR(local[w].wavevector.y, open.y, 1e-6 * waves[w].k);
             }
         } else {
             ++counts[2];
-            ASSERT_LE(taps(f.depth), 0.0);
+            ASSERT_LE(want.depth, 0.0);
             EXPECT_EQ(shore_far_to_infinite(got.depth), -kDeepWater);
-            for (std::size_t w = 0; w < nw; ++w) ASSERT_EQ(local[w].amplitude_factor, 0.0);
+            for (std::size_t w = 0; w < nw; ++w) {
+                ASSERT_EQ(local[w].amplitude_factor, 0.0);
+                ASSERT_EQ(full[w].amplitude_factor, 0.0);
+            }
         }
     }
     std::printf("samples: %zu in stored tiles, %zu open sea, %zu dry land\n", counts[0], counts[1], counts[2]);

@@ -138,94 +138,168 @@ MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
     return m;
 }
 
-/// Wave w's fields from its marched phase: the phase residual, the local wavevector
-/// (k0 D + grad residual, of length exactly k(h)) and the amplitude factor from shoaling
-/// (energy flux) and refraction (rays against the shore normal).
-void wave_fields(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, ShoreWaveFields& f) {
+/// The tiles the bake stores, and the grid tile behind each stored slot.
+struct TilePlan {
+    ShoreTiles tiles;               ///< pages set, texels sized; slots 0 and 1 filled
+    std::vector<std::size_t> tile;  ///< per stored slot (from kShoreFirstStoredSlot): its tile
+};
+
+/// The grid index of texel k (0 .. kSlotTexels) of tile `tile`'s slot (the apron clamped at the grid's edge).
+std::size_t slot_texel_index(const ShoreField& field, int tiles_per_side, std::size_t tile, std::size_t k) {
     const int n = field.resolution;
+    const int ti = static_cast<int>(tile % static_cast<std::size_t>(tiles_per_side));
+    const int tj = static_cast<int>(tile / static_cast<std::size_t>(tiles_per_side));
+    const int i = std::min(ti * ShoreTiles::kTile + static_cast<int>(k % ShoreTiles::kSide), n - 1);
+    const int j = std::min(tj * ShoreTiles::kTile + static_cast<int>(k / ShoreTiles::kSide), n - 1);
+    return field.index(i, j);
+}
+
+/// Which tiles to store, known before any wave is marched: a tile is open sea when the
+/// longest wave is in deep water (k h >= pi) at every texel of its slot, so that every wave
+/// keeps its open-sea phase there and shoaling changes its amplitude and wavevector by
+/// under 0.4 %, and the open sea's waves neither break nor fold anywhere in it; dry land
+/// when every texel is dry and a tile or more from the shoreline. The rest is stored.
+TilePlan plan_tiles(std::span<const Wave> waves, const ShoreField& field, double breaking_index, bool every_tile,
+                    unsigned threads) {
+    TilePlan plan;
+    ShoreTiles& t = plan.tiles;
+    const int n = field.resolution;
+    t.resolution = n;
+    t.tiles_per_side = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
+    t.stride = ShoreWaves::query_texel_stride(waves.size());
+    const std::size_t m = static_cast<std::size_t>(t.tiles_per_side);
+    double longest = 0.0, energy = 0.0, fold = 0.0;
+    for (const Wave& w : waves) {
+        longest = longest == 0.0 ? w.omega : std::min(longest, w.omega);
+        energy += w.amplitude * w.amplitude;
+        fold += w.steepness * w.k * w.amplitude;
+    }
+    // Deep water shortens a wave by at most 0.4 % (k h >= pi): the fold with that margin.
+    const bool open_folds = fold * 1.01 > kMaxFold;
+    const double inland = ShoreTiles::kTile * field.texel;
+    std::vector<char> kinds(m * m, 's');
+    detail::parallel_for_each(m, threads, [&](std::size_t tj) {
+        for (std::size_t ti = 0; ti < m; ++ti) {
+            const std::size_t tile = tj * m + ti;
+            bool open = !every_tile && !open_folds && !waves.empty(), dry = !every_tile;
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && (open || dry); ++k) {
+                const std::size_t g = slot_texel_index(field, t.tiles_per_side, tile, k);
+                const double h = static_cast<double>(field.depth[g]);
+                dry = dry && h <= 0.0 && static_cast<double>(field.signed_distance[g]) <= -inland;
+                // Breaking starts at 0.85 of the cap (cap_breaking); shoaling in deep water stays under 1.
+                open = open && h > 0.0 && wavenumber_at_depth(longest, h) * h >= kDeepKh &&
+                       std::sqrt(energy) < 0.8 * 0.5 * breaking_index * h;
+            }
+            kinds[tile] = open ? 'o' : dry ? 'd' : 's';
+        }
+    });
+    t.pages.assign(m * m, gpu::kShoreOpenSlot);
+    for (std::size_t tile = 0; tile < kinds.size(); ++tile) {
+        if (kinds[tile] == 'd') t.pages[tile] = gpu::kShoreDrySlot;
+        if (kinds[tile] != 's') continue;
+        t.pages[tile] = static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot + plan.tile.size());
+        plan.tile.push_back(tile);
+    }
+    t.texels.assign((gpu::kShoreFirstStoredSlot + plan.tile.size()) * ShoreTiles::kSlotTexels * t.stride, 0.0f);
+    return plan;
+}
+
+/// Calls visit(slot texel's floats, grid index) for every texel of every stored slot, slots spread over workers.
+template <typename Visit>
+void each_stored_texel(const ShoreField& field, TilePlan& plan, unsigned threads, const Visit& visit) {
+    ShoreTiles& t = plan.tiles;
+    detail::parallel_for_each(plan.tile.size(), threads, [&](std::size_t s) {
+        float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * ShoreTiles::kSlotTexels * t.stride;
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k)
+            visit(slot + k * t.stride, slot_texel_index(field, t.tiles_per_side, plan.tile[s], k));
+    });
+}
+
+/// Wave w's rows of every stored texel from its marched phase: the phase residual, the
+/// local wavevector (k0 D + grad residual, of length exactly k(h)) and the amplitude factor
+/// from shoaling (energy flux) and refraction (rays against the shore normal).
+void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, TilePlan& plan) {
+    const int n = field.resolution;
+    const std::size_t nw = plan.tiles.stride / 4 - 1;
     const double k0 = wave.k;
     const glm::dvec2 dir{wave.dir_x, wave.dir_z};
     const std::vector<double>& phase = m.phase;
-    auto& residual = f.phase_residual[w];
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::size_t k = field.index(i, j);
-            if (!std::isfinite(phase[k])) continue;  // unreached: no wave
-            if (m.any_deep && m.deep[k]) continue;   // a source: the open-ocean phase, residual exactly 0
-            residual[k] = static_cast<float>(phase[k] + m.base - k0 * glm::dot(dir, field.texel_center(i, j)));
+    each_stored_texel(field, plan, 1, [&](float* t, std::size_t k) {
+        const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
+                  j = static_cast<int>(k / static_cast<std::size_t>(n));
+        t[w] = t[nw + w] = t[2 * nw + w] = t[3 * nw + w] = 0.0f;
+        if (!std::isfinite(phase[k])) return;  // unreached: no wave
+        // A source keeps the open-ocean phase: residual exactly 0.
+        const bool source = m.any_deep && m.deep[k] != 0;
+        if (!source) t[w] = static_cast<float>(phase[k] + m.base - k0 * glm::dot(dir, field.texel_center(i, j)));
+        const double h = field.depth[k];
+        if (h <= 0.0) return;
+        // Local wavevector = k0 D + grad(residual), central differences over reached water.
+        auto diff = [&](int a0, int b0, int a1, int b1) {
+            const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field.index(a0, b0)]);
+            const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field.index(a1, b1)]);
+            const double v0 = ok0 ? phase[field.index(a0, b0)] : phase[k];
+            const double v1 = ok1 ? phase[field.index(a1, b1)] : phase[k];
+            const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
+            return span > 0.0 ? (v1 - v0) / (span * field.texel) : 0.0;
+        };
+        // In deep water the wave travels as offshore: no turn, so no refraction either.
+        glm::dvec2 kvec = source ? dir : glm::dvec2{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
+        const double kl = m.slowness[k];  // k(h), solved once in march_phase
+        const double len = glm::length(kvec);
+        kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
+        t[2 * nw + w] = static_cast<float>(kvec.x);
+        t[3 * nw + w] = static_cast<float>(kvec.y);
+        // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
+        const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
+        const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
+        double kr = 1.0;
+        if (!source && glm::length(normal) > 0.5) {
+            const double cos0 = std::abs(glm::dot(dir, normal));
+            const double cos1 = std::abs(glm::dot(kvec / kl, normal));
+            if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
         }
-    // Local wavevector = k0 D + grad(residual), central differences over reached water.
-    auto& kx = f.wavevector_x[w];
-    auto& kz = f.wavevector_z[w];
-    auto& amp = f.amplitude_factor[w];
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::size_t k = field.index(i, j);
-            const double h = field.depth[k];
-            if (h <= 0.0 || !std::isfinite(phase[k])) continue;
-            auto diff = [&](int a0, int b0, int a1, int b1) {
-                const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field.index(a0, b0)]);
-                const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field.index(a1, b1)]);
-                const double v0 = ok0 ? phase[field.index(a0, b0)] : phase[k];
-                const double v1 = ok1 ? phase[field.index(a1, b1)] : phase[k];
-                const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
-                return span > 0.0 ? (v1 - v0) / (span * field.texel) : 0.0;
-            };
-            glm::dvec2 kvec{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
-            const double kl = m.slowness[k];  // k(h), solved once in march_phase
-            const double len = glm::length(kvec);
-            kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
-            kx[k] = static_cast<float>(kvec.x);
-            kz[k] = static_cast<float>(kvec.y);
-            // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
-            const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
-            const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
-            double kr = 1.0;
-            if (glm::length(normal) > 0.5) {
-                const double cos0 = std::abs(glm::dot(dir, normal));
-                const double cos1 = std::abs(glm::dot(kvec / kl, normal));
-                if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
-            }
-            amp[k] = static_cast<float>(ks * kr);
-        }
+        t[nw + w] = static_cast<float>(ks * kr);
+    });
 }
 
-/// Breaking (all waves together) and steepness, per texel: the amplitudes are capped at
-/// breaking_index * h / 2 of local height, the foam rises toward the cap, and Q is scaled
-/// where the waves together would fold.
-void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveFields& f) {
-    const std::size_t count = f.depth.size(), nw = waves.size();
-    f.breaking.assign(count, 0.0f);
-    f.steepness_scale.assign(count, 1.0f);
+/// The shared rows of every stored texel, then breaking (all waves together) and
+/// steepness: the amplitudes are capped at breaking_index * h / 2 of local height, the
+/// foam rises toward the cap, and Q is scaled where the waves together would fold.
+void shared_rows(std::span<const Wave> waves, double breaking_index, const ShoreField& field, TilePlan& plan,
+                 unsigned threads) {
+    const std::size_t nw = waves.size();
     const double cap_ratio = 0.5 * breaking_index;  // amplitude cap = index * h / 2
-    for (std::size_t k = 0; k < count; ++k) {
-        const double h = static_cast<double>(f.depth[k]);
+    each_stored_texel(field, plan, threads, [&](float* t, std::size_t k) {
+        const double h = static_cast<double>(field.depth[k]);
+        t[4 * nw] = field.depth[k];
+        t[4 * nw + 1] = 0.0f;
+        t[4 * nw + 2] = 1.0f;
+        t[4 * nw + 3] = field.signed_distance[k];
         // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
         // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
         double energy = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-            const double a = waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+            const double a = waves[w].amplitude * static_cast<double>(t[nw + w]);
             energy += a * a;
         }
         const double total = std::sqrt(energy);
         if (h <= 0.0) {
-            for (std::size_t w = 0; w < nw; ++w) f.amplitude_factor[w][k] = 0.0f;
-            continue;
+            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = 0.0f;
+            return;
         }
         const double cap = cap_ratio * h;
         const double ratio = total > 0.0 ? total / cap : 0.0;
-        f.breaking[k] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+        t[4 * nw + 1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
         if (ratio > 1.0)
-            for (std::size_t w = 0; w < nw; ++w)
-                f.amplitude_factor[w][k] = static_cast<float>(static_cast<double>(f.amplitude_factor[w][k]) / ratio);
+            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = static_cast<float>(static_cast<double>(t[nw + w]) / ratio);
         double fold = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-            const double kl =
-                std::hypot(static_cast<double>(f.wavevector_x[w][k]), static_cast<double>(f.wavevector_z[w][k]));
-            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(f.amplitude_factor[w][k]);
+            const double kl = std::hypot(static_cast<double>(t[2 * nw + w]), static_cast<double>(t[3 * nw + w]));
+            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(t[nw + w]);
         }
-        if (fold > kMaxFold) f.steepness_scale[k] = static_cast<float>(kMaxFold / fold);
-    }
+        if (fold > kMaxFold) t[4 * nw + 2] = static_cast<float>(kMaxFold / fold);
+    });
 }
 
 }  // namespace
@@ -233,20 +307,9 @@ void cap_breaking(std::span<const Wave> waves, double breaking_index, ShoreWaveF
 Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain,
                                                            double water_level, const ShoreWaveOptions& options,
                                                            const ShoreField* shoreline) {
-    auto fields = bake_shore_wave_fields(set, terrain, water_level, options, shoreline);
-    if (!fields) return fields.error();
-    try {
-        return ShoreWaves::from_baked_fields(*fields, set.waves());
-    } catch (const std::exception& e) {
-        return Error{ErrorCode::internal, fmt::format("shore waves: cutting the tiles failed: {}", e.what())};
-    }
-}
-
-Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain& terrain, double water_level,
-                                               const ShoreWaveOptions& options, const ShoreField* shoreline) {
-    if (options.resolution < 16 || options.resolution > 4096)
+    if (options.resolution < 16 || options.resolution > 8192)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("shore waves: resolution {} is out of range (16 to 4096)", options.resolution)};
+                     fmt::format("shore waves: resolution {} is out of range (16 to 8192)", options.resolution)};
     if (!(options.breaking_index > 0.0 && options.breaking_index <= 1.2))
         return Error{ErrorCode::invalid_argument, "shore waves: breaking_index must be in (0, 1.2]"};
     try {
@@ -256,26 +319,14 @@ Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain
         if (!field) return field.error();
         if (options.cancel.stop_requested()) return cancelled();
 
-        const int n = field->resolution;
-        ShoreWaveFields f;
-        f.resolution = n;
-        f.texel = field->texel;
-        f.corner = field->corner;
-        const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-        f.depth = field->depth;
-        f.shore_distance = field->signed_distance;
         const auto waves = set.waves();
         const std::size_t nw = waves.size();
-        f.phase_residual.assign(nw, std::vector<float>(count, 0.0f));
-        f.amplitude_factor.assign(nw, std::vector<float>(count, 0.0f));
-        f.wavevector_x.assign(nw, std::vector<float>(count, 0.0f));
-        f.wavevector_z.assign(nw, std::vector<float>(count, 0.0f));
-
+        TilePlan plan = plan_tiles(waves, *field, options.breaking_index, options.store_every_tile, options.threads);
         std::atomic<std::size_t> waves_done{0};
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
         detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
-            wave_fields(waves[w], *field, march_phase(waves[w], *field), w, f);
+            if (!plan.tile.empty()) wave_rows(waves[w], *field, march_phase(waves[w], *field), w, plan);
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);
@@ -283,8 +334,8 @@ Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain
             }
         });
         if (options.cancel.stop_requested()) return cancelled();
-        cap_breaking(waves, options.breaking_index, f);
-        return f;
+        shared_rows(waves, options.breaking_index, *field, plan, options.threads);
+        return ShoreWaves::from_tiles({field->resolution, field->texel, field->corner}, std::move(plan.tiles), waves);
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};
     }

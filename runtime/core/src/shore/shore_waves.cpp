@@ -61,14 +61,10 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveField
                                                                         {&fields.steepness_scale, "steepness_scale"}};
     for (const auto& [grid, name] : shared)
         if (auto st = check(*grid, name); !st) return st.error();
-    return from_baked_fields(fields, waves);
-}
-
-std::shared_ptr<const ShoreWaves> ShoreWaves::from_baked_fields(const ShoreWaveFields& fields,
-                                                                std::span<const Wave> waves) {
     auto open = open_wavevectors(waves);
     ShoreTiles tiles = cut_shore_tiles(fields, open);
-    return made({fields.resolution, fields.texel, fields.corner}, std::move(tiles), std::move(open));
+    return std::shared_ptr<const ShoreWaves>(
+        made({fields.resolution, fields.texel, fields.corner}, std::move(tiles), std::move(open)));
 }
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_tiles(const ShoreGrid& grid, ShoreTiles tiles,

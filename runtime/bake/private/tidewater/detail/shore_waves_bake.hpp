@@ -1,5 +1,7 @@
 // The shore model's bake (internal to Tidewater::bake): the per-wave fields that make
-// Gerstner waves feel the bottom (tidewater/detail/shore_waves.hpp says what they mean).
+// Gerstner waves feel the bottom (tidewater/detail/shore_waves.hpp says what they mean),
+// computed and kept only in the tiles where they differ from the open sea's and dry
+// land's (shore_tiles.hpp): the model's memory grows with the coast, not the area.
 // Threading: reentrant; `threads` workers; cancellable through ShoreWaveOptions::cancel.
 #pragma once
 
@@ -14,7 +16,7 @@
 namespace tidewater {
 
 struct ShoreWaveOptions {
-    int resolution = 256;  ///< Texels per side over the terrain's extent, 16 to 4096.
+    int resolution = 256;  ///< Texels per side over the terrain's extent, 16 to 8192.
     /// The square the model covers; none: the terrain's extent (a lake's: its basin). Not
     /// with a shoreline baked elsewhere.
     std::optional<SquareRegion> region;
@@ -22,6 +24,8 @@ struct ShoreWaveOptions {
     double breaking_index = 0.78;          ///< Breaker height / depth (McCowan), in (0, 1.2].
     std::function<void(double)> progress;  ///< Called with 0..1, one call at a time (optional).
     std::stop_token cancel;                ///< Requested: the bake returns ErrorCode::cancelled.
+    /// Store every tile, the open sea and dry land too (tests compare the band with it).
+    bool store_every_tile = false;
 };
 
 /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed
@@ -30,11 +34,5 @@ struct ShoreWaveOptions {
 Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, const Terrain& terrain,
                                                            double water_level, const ShoreWaveOptions& options = {},
                                                            const ShoreField* shoreline = nullptr);
-
-/// The whole-extent fields bake_shore_waves cuts into the model's tiles (for tests and
-/// tools that look at what the tiles leave out).
-Result<ShoreWaveFields> bake_shore_wave_fields(const WaveSet& set, const Terrain& terrain, double water_level,
-                                               const ShoreWaveOptions& options = {},
-                                               const ShoreField* shoreline = nullptr);
 
 }  // namespace tidewater

@@ -80,9 +80,6 @@ class ShoreWaves {
     /// A model from fields made elsewhere for `waves`. Fails unless every grid is
     /// resolution^2 finite values and there is one of each per-wave field per wave.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::span<const Wave> waves);
-    /// A model from fields its bake made for `waves` (bake_shore_waves): trusted, not checked again.
-    static std::shared_ptr<const ShoreWaves> from_baked_fields(const ShoreWaveFields& fields,
-                                                               std::span<const Wave> waves);
     /// A model from tiles read elsewhere (a saved bake) for `waves`; slots 0 and 1 are
     /// written here. Fails unless the tiles fit the grid and the waves and every stored
     /// value is finite.
