@@ -1,0 +1,141 @@
+// Baking a world at real scale: a procedural island on a square heightmap at 1 m pixels
+// (hills to 100 m with 2 m ditches every 40 m, a wavy coast about a fifth of the side from
+// the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
+// `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
+// object: bake and save seconds, the process's peak memory, the folder's size and the
+// shore model's tiles. One world per process, so that the peak is this world's:
+//   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]
+// docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene.hpp"
+#include "tidewater/scene_bake.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Ground height (m) at xz on an island in a square of side `side` m centred on the origin.
+double island_height(double x, double z, double side, double seabed) {
+    const double r = std::hypot(x, z), a = std::atan2(z, x);
+    const double coast =
+        0.2 * side *
+        (1.0 + 0.12 * std::sin(3.0 * a) + 0.06 * std::sin(7.0 * a + 1.0) + 0.03 * std::sin(17.0 * a + 2.0));
+    if (r > coast) return std::max(seabed, -0.05 * (r - coast));
+    const double inland = coast - r;
+    double h =
+        2.0 + 98.0 * std::min(1.0, inland / (0.15 * side)) * (0.75 + 0.25 * std::sin(x / 310.0) * std::cos(z / 270.0));
+    const double along = std::abs(std::remainder(x - 20.0, 40.0));
+    if (inland > 30.0 && along < 1.0) h -= 1.5 * 0.5 * (1.0 + std::cos(std::numbers::pi * along));
+    return h;
+}
+
+tidewater::Terrain island(int side, double seabed) {
+    auto image = std::make_shared<tidewater::Gray16Image>();
+    image->width = image->height = side;
+    image->pixels.resize(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
+    const double lo = seabed, hi = 110.0;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            const double h = island_height(i - 0.5 * (side - 1), j - 0.5 * (side - 1), side, seabed);
+            image->pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) + static_cast<std::size_t>(i)] =
+                static_cast<std::uint16_t>(std::lround((h - lo) / (hi - lo) * 65535.0));
+        }
+    tidewater::HeightmapTerrain map;
+    map.file = fmt::format("island_{}.raw", side);
+    map.size = glm::dvec2(side - 1);
+    map.min_height = lo;
+    map.max_height = hi;
+    map.image = std::move(image);
+    return tidewater::Terrain(map);
+}
+
+std::uintmax_t folder_bytes(const fs::path& dir) {
+    std::uintmax_t bytes = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) bytes += e.file_size();
+    return bytes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]\n", argv[0]);
+        return 2;
+    }
+    const int side = std::atoi(argv[1]);
+    const int waves = argc > 2 ? std::atoi(argv[2]) : 24;
+    const double seabed = argc > 3 ? std::atof(argv[3]) : -60.0;
+    const double texel = argc > 4 ? std::atof(argv[4]) : 2.0;
+    if (side < 256 || side > 32768 || waves < 1 || waves > 64 || !(seabed < -1.0) || !(texel > 0.0)) {
+        std::fprintf(stderr, "out of range: SIDE_M 256..32768, WAVES 1..64, SEABED_M < -1, TEXEL_M > 0\n");
+        return 2;
+    }
+    const auto t0 = Clock::now();
+    auto parsed = tidewater::parse_scene(
+        fmt::format(R"({{"version": 1, "name": "island {0}", "water_level": 0, "terrain": {{"flat": {{"height": -1}}}},
+            "ocean": {{"spectrum": {{"type": "jonswap", "wind_speed": 12.0, "fetch": 200000.0, "peak_enhancement": 3.3,
+                                    "direction": 20.0, "spreading": 8.0, "wave_count": {1}, "seed": 11, "steepness": 0.6}}}}}})",
+                    side, waves),
+        "world_bake_benchmark");
+    if (!parsed) {
+        std::fprintf(stderr, "%s\n", parsed.error().message.c_str());
+        return 1;
+    }
+    tidewater::Scene scene = std::move(parsed).value();
+    scene.terrain = island(side, seabed);
+    const int resolution =
+        std::min(8192, static_cast<int>(std::lround(2.0 * scene.terrain.extent_half_size() / texel)));
+    scene.shore.resolution = resolution;
+    scene.shore.distance_resolution = resolution;
+    const double make = seconds_since(t0);
+
+    const auto t1 = Clock::now();
+    auto baked = tidewater::bake_scene(scene);
+    if (!baked) {
+        std::fprintf(stderr, "%s\n", baked.error().message.c_str());
+        return 1;
+    }
+    const double bake = seconds_since(t1);
+    const fs::path dir = fs::temp_directory_path() / fmt::format("tidewater_world_{}_{}", side, ::getpid());
+    const auto t2 = Clock::now();
+    if (auto st = tidewater::save_scene_bake(dir, **baked); !st) {
+        std::fprintf(stderr, "%s\n", st.error().message.c_str());
+        return 1;
+    }
+    const double save = seconds_since(t2);
+    const std::uintmax_t bytes = folder_bytes(dir);
+    fs::remove_all(dir);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const tidewater::ShoreWaves& model = *(*baked)->ocean.shore();
+    const tidewater::ShoreTiles& tiles = model.tiles();
+    // On the GPU a slot is one vec4 per wave and texel and one shared vec4 per texel.
+    const double gpu_bytes = static_cast<double>(tiles.slot_count()) * tidewater::ShoreTiles::kSlotTexels *
+                                 static_cast<double>(model.wave_count() + 1) * 16.0 +
+                             static_cast<double>(tiles.pages.size()) * 4.0;
+    std::printf(
+        "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
+        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"peak_rss_mb\": %.0f, \"folder_mb\": %.1f, "
+        "\"tiles\": %zu, \"stored_tiles\": %zu, \"model_mb\": %.1f, \"gpu_shore_mb\": %.1f}\n",
+        side, waves, seabed, resolution, model.texel(), make, bake, save, static_cast<double>(usage.ru_maxrss) / 1024.0,
+        static_cast<double>(bytes) / 1e6, tiles.pages.size(), tiles.stored_tiles(),
+        static_cast<double>(tiles.bytes()) / 1e6, gpu_bytes / 1e6);
+    return 0;
+}
