@@ -103,7 +103,7 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
 
 // In a stored tile a sample is the same as with every tile stored, bit for bit; in the open
 // sea within kOpenSea*Tolerance of it; on dry land no wave at all.
-TEST(ShoreTiles, SamplesMatchTheBakedGrid) {
+TEST(ShoreTiles, SamplesMatchTheModelWithEveryTileStored) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
     const ShoreWaves& model = *coast_models().band;
@@ -185,6 +185,37 @@ TEST(ShoreTiles, QueriesBeyondTheBandReportTheGround) {
     ASSERT_TRUE(query_world(*scene, 0.0, points, world).ok());
     EXPECT_NEAR(world[0].surface.depth, -test::tiled_coast_height(1900.0), 0.5);
     EXPECT_NEAR(world[2].surface.depth, body[2].depth, 1e-9);
+}
+
+// Tiles read elsewhere are refused when they do not fit their grid, their waves or hold a
+// value that is not finite; the shared slots are written by the model, not trusted.
+TEST(ShoreTiles, TilesFromElsewhereAreChecked) {
+    const ShoreWaves& model = *coast_models().band;
+    auto scene = test::tiled_coast_scene();
+    ASSERT_TRUE(scene.ok());
+    const auto waves = scene->ocean.waves().waves();
+    auto rebuilt = ShoreWaves::from_tiles(model.grid(), model.tiles(), waves);
+    ASSERT_TRUE(rebuilt.ok()) << rebuilt.error().message;
+    EXPECT_EQ((*rebuilt)->tiles().texels, model.tiles().texels);
+
+    ShoreTiles bad_page = model.tiles();
+    bad_page.pages[3] = static_cast<std::uint32_t>(bad_page.slot_count());
+    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), bad_page, waves).error().message.find("names slot"),
+              std::string::npos);
+    ShoreTiles short_pages = model.tiles();
+    short_pages.pages.pop_back();
+    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), short_pages, waves).error().message.find("pages"),
+              std::string::npos);
+    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), model.tiles(), waves.subspan(1)).error().message.find("waves"),
+              std::string::npos);
+    ShoreTiles nan = model.tiles();
+    nan.texels.back() = std::nanf("");
+    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), nan, waves).error().message.find("not finite"), std::string::npos);
+    ShoreTiles constant = model.tiles();
+    std::fill(constant.texels.begin(), constant.texels.begin() + 100, 7.0f);  // the open sea's slot
+    auto refilled = ShoreWaves::from_tiles(model.grid(), constant, waves);
+    ASSERT_TRUE(refilled.ok());
+    EXPECT_EQ((*refilled)->tiles().texels, model.tiles().texels);
 }
 
 }  // namespace

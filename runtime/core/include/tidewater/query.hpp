@@ -33,10 +33,11 @@ struct SurfacePoint {
     double jacobian = 1.0;             ///< Horizontal-map determinant; -> 0 where crests fold (foam).
     /// Still-water depth at the query point: the body's level minus the terrain there, m
     /// (< 0 on land), from the shore model's grid. +infinity where the body has no shore
-    /// model (open water: no bottom is known).
+    /// model or the point lies beyond its coastal band in open water (no bottom is known:
+    /// query_world fills it in from the terrain), -infinity a tile or more inland.
     double depth = kDeepWater;
     /// Signed distance from the query point to the shoreline, m (+ over water, - on land),
-    /// from the shore model; +infinity without one.
+    /// from the shore model; +-infinity without one or beyond its coastal band, as `depth`.
     double shore_distance = kDeepWater;
     /// The surface stands above the terrain at the query point: height > level - depth.
     bool wet = true;

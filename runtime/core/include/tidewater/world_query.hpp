@@ -17,7 +17,7 @@
 //
 // Units: metres, seconds; heights are world y. SurfacePoint::depth is the still water
 // column at the point: its body's rest surface minus the terrain (carved by the rivers),
-// from the shore model where the body has one, else from the terrain (< 0 on land).
+// from the shore model within its coastal band, else from the terrain (< 0 on land).
 // Threading: reentrant and deterministic, as query_surface; the scene is only read.
 #pragma once
 
