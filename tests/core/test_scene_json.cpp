@@ -247,5 +247,18 @@ TEST(Presets, PresetFileErrorsNameTheFile) {
     EXPECT_EQ(p.error().code, ErrorCode::fold_violation);
 }
 
+// The shore model's grid goes to 8192 texels a side (2 m over an 8 km world), no further.
+TEST(SceneJson, ShoreResolutionGoesTo8192) {
+    const std::string base = R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -20}},
+        "ocean": "ocean_rolling", "shore": {"resolution": )";
+    auto fine = parse_scene(base + "8192}}", "fine.json");
+    ASSERT_TRUE(fine.ok()) << fine.error().message;
+    EXPECT_EQ(fine->shore.resolution, 8192);
+    auto over = parse_scene(base + "8193}}", "over.json");
+    ASSERT_FALSE(over.ok());
+    EXPECT_NE(over.error().message.find("over.json"), std::string::npos);
+    EXPECT_NE(over.error().message.find("/shore/resolution"), std::string::npos) << over.error().message;
+}
+
 }  // namespace
 }  // namespace tidewater

@@ -109,7 +109,7 @@ Verb add_bake_verb(CLI::App& app) {
                     "Texels per side of the signed distance field (8 to 8192; default: the scene's "
                     "shore.distance_resolution, else its shore.resolution)");
     cmd->add_option("--model-resolution", args->model_resolution,
-                    "Texels per side of the per-wave shore model (16 to 4096; default: the scene's shore.resolution)");
+                    "Texels per side of the per-wave shore model (16 to 8192; default: the scene's shore.resolution)");
     cmd->add_option("--tolerance", args->tolerance, "Shoreline simplification tolerance, m (0 = half a texel)");
     cmd->add_option("--threads", args->threads, "Worker threads (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines");

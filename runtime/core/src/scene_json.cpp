@@ -203,7 +203,7 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
         shore.enabled = r->at("enabled").get<bool>();
     }
     std::int64_t resolution = shore.resolution;
-    if (auto st = r->integer("resolution", resolution, 16, 4096); !st) return st.error();
+    if (auto st = r->integer("resolution", resolution, 16, 8192); !st) return st.error();
     shore.resolution = static_cast<int>(resolution);
     std::int64_t distance_resolution = shore.distance_resolution;
     if (auto st = r->integer("distance_resolution", distance_resolution, 8, 8192); !st) return st.error();

@@ -34,7 +34,7 @@ struct SceneCamera {
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {
     bool enabled = true;
-    int resolution = 256;  ///< Texels per side of the shore model, 16 to 4096.
+    int resolution = 256;  ///< Texels per side of the shore model, 16 to 8192.
     /// Texels per side of the signed distance field the model samples, 8 to 8192 and at
     /// least `resolution`; 0 = `resolution`.
     int distance_resolution = 0;
