@@ -221,7 +221,7 @@ class ShoreWater {
     const Scalar* base_;
     double u_[kLanes], v_[kLanes];  // query points in texel units from the first texel centre
     long cell_[kLanes];
-    const float* first_[kLanes];                          // the floats of each lane's cached cell's first tap
+    const float* first_[kLanes] = {};                     // the floats of each lane's cached cell's first tap
     alignas(64) Scalar cell_u_[kLanes], cell_v_[kLanes];  // query points relative to their cached cell, texels
     bool edge_lane_[kLanes];  // the lane was clamped at the grid's edge (or nothing is cached yet)
     bool edge_ = true;        // any lane is
