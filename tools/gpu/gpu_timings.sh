@@ -3,7 +3,8 @@
 # on a machine with a real GPU, from a bundle made by tools/gpu/make_bundle.sh:
 #   tools/gpu/gpu_timings.sh BUNDLE_DIR OUT_DIR
 # Writes OUT_DIR/gpu_timings.log (device, driver, medians) and OUT_DIR/gpu_stats.tar.gz
-# (every frame's figures), plus one 1080p still of the default view.
+# (every frame's figures), plus stills of the default view. Run from the repository root
+# (the Hilo Bay view reads examples/scenes/hilo_bay.json).
 set -uo pipefail
 B="$(cd "$1" && pwd)"; OUT="$2"; mkdir -p "$OUT"
 export LD_LIBRARY_PATH="$B/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
@@ -30,6 +31,7 @@ for size in 1920x1080 3840x2160; do
   run horizon "$size" --camera 1800 400 -1900 --target 0 0 0 --fov 50
   run grazing "$size" --camera 2500 6 0 --target 3500 -20 0 --fov 50 --sun 1 0.35 0.1
   run surf "$size" --camera 500 20 -700 --target 200 5 -450 --fov 50
+  run hilo "$size" --scene examples/scenes/hilo_bay.json
 done
 run default_msaa4 1920x1080 --samples 4
 python3 - "$W/stats" >>"$LOG" 2>&1 <<'PY'
@@ -41,9 +43,11 @@ for f in sorted(glob.glob(sys.argv[1] + "/*.json")):
     lo, hi = min(x["total_ms"] for x in fr), max(x["total_ms"] for x in fr)
     print(f'{os.path.basename(f)[:-5]:24s} {d["device"]}: opaque {med["sky_and_terrain_ms"]:.3f} copy {med["scene_copy_ms"]:.3f} '
           f'water {med["water_ms"]:.3f} total {med["total_ms"]:.3f} ms (min {lo:.3f} max {hi:.3f}, {len(fr)} frames) '
-          f'patches {d["counts"]["water_patches"]} terrain_tris {d["counts"]["terrain_triangles"]}')
+          f'patches {d["counts"]["water_patches"]} terrain_tris {d["counts"]["terrain_triangles"]} '
+          f'resident terrain {d["counts"]["terrain_bytes"] / 2**20:.1f} MiB shore {d["counts"]["shore_bytes"] / 2**20:.1f} MiB')
 PY
 tar czf "$OUT/gpu_stats.tar.gz" -C "$W" stats
 cp "$W/default-1920x1080/frame_0000.png" "$OUT/default_1080.png" 2>/dev/null
 cp "$W/default-3840x2160/frame_0000.png" "$OUT/default_4k.png" 2>/dev/null
+cp "$W/hilo-1920x1080/frame_0000.png" "$OUT/hilo_1080.png" 2>/dev/null
 exit 0

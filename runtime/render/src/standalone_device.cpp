@@ -126,7 +126,8 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     const VkResult created = vkCreateInstance(&info, nullptr, &self->context_.instance);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER) {
         return Error{ErrorCode::no_device,
-                     "No Vulkan device: no Vulkan 1.3 driver is installed (Debian: mesa-vulkan-drivers)"};
+                     "No Vulkan device: no installed driver could create a Vulkan 1.3 instance "
+                     "(VK_ERROR_INCOMPATIBLE_DRIVER; none installed? Debian: mesa-vulkan-drivers)"};
     }
     if (created != VK_SUCCESS) return detail::vk_error(created, "vkCreateInstance");
     if (options.validation) {
