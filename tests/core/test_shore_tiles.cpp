@@ -218,5 +218,42 @@ TEST(ShoreTiles, TilesFromElsewhereAreChecked) {
     EXPECT_EQ((*refilled)->tiles().texels, model.tiles().texels);
 }
 
+// Over a renderer's budget the model is drawn on every k-th texel: each coarse texel holds
+// the fine texel it stands on, coarse tiles are stored only where a fine one under them is,
+// and the bytes the renderer sizes the budget by are those of the model it then makes.
+TEST(ShoreTiles, ACoarsenedModelHoldsEveryKthTexel) {
+    const ShoreWaves& fine = *coast_models().band;
+    const std::size_t floats = fine.tiles().stride;
+    for (int stride : {2, 3, 5}) {
+        const auto coarse = fine.coarsened(stride);
+        ASSERT_TRUE(coarse);
+        EXPECT_EQ(coarse->resolution(), (fine.resolution() - 1) / stride + 1);
+        EXPECT_NEAR(coarse->texel(), fine.texel() * stride, 1e-12);
+        EXPECT_EQ(coarse->coarsened_device_bytes(1), coarse->tiles().device_bytes());
+        EXPECT_EQ(fine.coarsened_device_bytes(stride), coarse->tiles().device_bytes()) << "stride " << stride;
+        std::size_t differing = 0;
+        for (int j = 0; j < coarse->resolution(); ++j)
+            for (int i = 0; i < coarse->resolution(); ++i) {
+                const float* c = coarse->texel_values(i, j).t;
+                const float* f = fine.texel_values(i * stride, j * stride).t;
+                differing += !std::equal(c, c + floats, f);
+                EXPECT_NEAR(glm::length(coarse->texel_center(i, j) - fine.texel_center(i * stride, j * stride)), 0.0,
+                            1e-9);
+            }
+        EXPECT_EQ(differing, 0u) << "stride " << stride;
+        const double fine_share = static_cast<double>(fine.tiles().stored_tiles()) /
+                                  static_cast<double>(fine.tiles().pages.size()),
+                     coarse_share = static_cast<double>(coarse->tiles().stored_tiles()) /
+                                    static_cast<double>(coarse->tiles().pages.size());
+        std::printf("stride %d: %zu of %zu tiles stored (%.0f %%; %.0f %% at full resolution), %.1f MiB\n", stride,
+                    coarse->tiles().stored_tiles(), coarse->tiles().pages.size(), 100.0 * coarse_share,
+                    100.0 * fine_share, static_cast<double>(coarse->tiles().device_bytes()) / 1048576.0);
+        EXPECT_LT(coarse->tiles().device_bytes(), fine.tiles().device_bytes());
+        EXPECT_GT(coarse->tiles().stored_tiles(), 0u);
+        EXPECT_LT(coarse->tiles().stored_tiles(), coarse->tiles().pages.size()) << "open sea and dry land left out";
+    }
+    EXPECT_EQ(fine.coarsened(1)->tiles().texels, fine.tiles().texels);
+}
+
 }  // namespace
 }  // namespace tidewater

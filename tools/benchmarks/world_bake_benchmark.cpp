@@ -126,10 +126,7 @@ int main(int argc, char** argv) {
     getrusage(RUSAGE_SELF, &usage);
     const tidewater::ShoreWaves& model = *(*baked)->ocean.shore();
     const tidewater::ShoreTiles& tiles = model.tiles();
-    // On the GPU a slot is one vec4 per wave and texel and one shared vec4 per texel.
-    const double gpu_bytes = static_cast<double>(tiles.slot_count()) * tidewater::ShoreTiles::kSlotTexels *
-                                 static_cast<double>(model.wave_count() + 1) * 16.0 +
-                             static_cast<double>(tiles.pages.size()) * 4.0;
+    const double gpu_bytes = static_cast<double>(tiles.device_bytes());
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
         "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"peak_rss_mb\": %.0f, \"folder_mb\": %.1f, "

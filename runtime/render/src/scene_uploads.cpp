@@ -46,15 +46,10 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
     return p;
 }
 
-std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models) {
+std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models, int stride) {
     std::uint64_t bytes = 0;
     for (const ShoreWaves* m : models)
-        if (m) {
-            const ShoreTiles& tiles = m->tiles();
-            bytes += static_cast<std::uint64_t>(tiles.slot_count()) * ShoreTiles::kSlotTexels * (m->wave_count() + 1) *
-                         sizeof(glm::vec4) +
-                     tiles.pages.size() * sizeof(std::uint32_t);
-        }
+        if (m) bytes += m->coarsened_device_bytes(stride);
     return bytes;
 }
 
@@ -69,18 +64,17 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     if (holds(models) && max_bytes == max_bytes_) return false;
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
-    // Over the budget, every k-th texel of each model (the smallest k that fits, at most 64).
+    // Over the budget, every k-th texel of each model (the smallest k that fits, at most
+    // 64), sized from the tiles' pages before anything is coarsened.
     int stride = 1;
+    while (packed_shore_bytes(wanted_models, stride) > max_bytes && stride < 64) ++stride;
     Models coarse;
     std::vector<const ShoreWaves*> drawn = wanted_models;
-    while (packed_shore_bytes(drawn) > max_bytes && stride < 64) {
-        ++stride;
-        coarse.clear();
+    if (stride > 1)
         for (std::size_t m = 0; m < drawn.size(); ++m) {
             coarse.push_back(wanted_models[m] ? wanted_models[m]->coarsened(stride) : nullptr);
             drawn[m] = coarse.back().get();
         }
-    }
     std::vector<ShorePlacement> placements;
     const PackedShore packed = pack_shores(drawn, placements, wanted_models);
     // The offsets are 32-bit element indices in the shaders.

@@ -48,7 +48,7 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
                         const std::vector<const ShoreWaves*>& placed_as = {});
 
 /// Bytes `models` take on the GPU as pack_shores packs them.
-std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models);
+std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models, int stride);
 
 /// The shore fields of a list of models on the GPU (the ocean's and each lake's for the
 /// renderer, one for a GPU query), or placeholders, so that their bindings are always

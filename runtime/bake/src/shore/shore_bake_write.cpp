@@ -25,21 +25,6 @@ Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name,
     return detail::write_field_png(dir, name, values, n, n, unit);
 }
 
-/// Field row r of a texel (ShoreTiles::texels): its name, wave (-1: shared) and unit.
-struct RowName {
-    const char* field;
-    int wave;
-    const char* unit;
-};
-RowName row_name(std::size_t r, std::size_t nw) {
-    static constexpr std::pair<const char*, const char*> per_wave[] = {
-        {"phase_residual", "rad"}, {"amplitude_factor", "1"}, {"wavevector_x", "rad/m"}, {"wavevector_z", "rad/m"}};
-    static constexpr std::pair<const char*, const char*> shared[] = {
-        {"depth", "m"}, {"breaking", "1"}, {"steepness_scale", "1"}, {"shore_distance", "m"}};
-    if (r < 4 * nw) return {per_wave[r / nw].first, static_cast<int>(r % nw), per_wave[r / nw].second};
-    return {shared[r - 4 * nw].first, -1, shared[r - 4 * nw].second};
-}
-
 /// The model's tiles: which tiles are stored, and a 16-bit grey PNG per stored tile whose
 /// row r holds field row r at the slot's texels, each row encoded over its range across
 /// every stored tile.
@@ -61,7 +46,7 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
     nlohmann::json row_list = nlohmann::json::array();
     for (std::size_t r = 0; r < rows; ++r) {
         encodings[r] = detail::FieldEncoding::covering(lo[r], hi[r]);
-        const RowName name = row_name(r, nw);
+        const ShoreRowName name = shore_row_name(r, nw);
         nlohmann::json row = {
             {"field", name.field}, {"unit", name.unit}, {"zero_pixel", encodings[r].zero}, {"step", encodings[r].step}};
         if (name.wave >= 0) row["wave"] = name.wave;

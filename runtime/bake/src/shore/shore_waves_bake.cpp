@@ -144,16 +144,6 @@ struct TilePlan {
     std::vector<std::size_t> tile;  ///< per stored slot (from kShoreFirstStoredSlot): its tile
 };
 
-/// The grid index of texel k (0 .. kSlotTexels) of tile `tile`'s slot (the apron clamped at the grid's edge).
-std::size_t slot_texel_index(const ShoreField& field, int tiles_per_side, std::size_t tile, std::size_t k) {
-    const int n = field.resolution;
-    const int ti = static_cast<int>(tile % static_cast<std::size_t>(tiles_per_side));
-    const int tj = static_cast<int>(tile / static_cast<std::size_t>(tiles_per_side));
-    const int i = std::min(ti * ShoreTiles::kTile + static_cast<int>(k % ShoreTiles::kSide), n - 1);
-    const int j = std::min(tj * ShoreTiles::kTile + static_cast<int>(k / ShoreTiles::kSide), n - 1);
-    return field.index(i, j);
-}
-
 /// Which tiles to store, known before any wave is marched: a tile is open sea when the
 /// longest wave is in deep water (k h >= pi) at every texel of its slot, so that every wave
 /// keeps its open-sea phase there and shoaling changes its amplitude and wavevector by
@@ -176,16 +166,15 @@ TilePlan plan_tiles(std::span<const Wave> waves, const ShoreField& field, double
     }
     // Deep water shortens a wave by at most 0.4 % (k h >= pi): the fold with that margin.
     const bool open_folds = fold * 1.01 > kMaxFold;
-    const double inland = ShoreTiles::kTile * field.texel;
     std::vector<char> kinds(m * m, 's');
     detail::parallel_for_each(m, threads, [&](std::size_t tj) {
         for (std::size_t ti = 0; ti < m; ++ti) {
             const std::size_t tile = tj * m + ti;
             bool open = !every_tile && !open_folds && !waves.empty(), dry = !every_tile;
             for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && (open || dry); ++k) {
-                const std::size_t g = slot_texel_index(field, t.tiles_per_side, tile, k);
+                const std::size_t g = t.grid_index(tile, k);
                 const double h = static_cast<double>(field.depth[g]);
-                dry = dry && h <= 0.0 && static_cast<double>(field.signed_distance[g]) <= -inland;
+                dry = dry && far_dry_land(h, static_cast<double>(field.signed_distance[g]), field.texel);
                 // Breaking starts at 0.85 of the cap (cap_breaking); shoaling in deep water stays under 1.
                 open = open && h > 0.0 && wavenumber_at_depth(longest, h) * h >= kDeepKh &&
                        std::sqrt(energy) < 0.8 * 0.5 * breaking_index * h;
@@ -206,12 +195,12 @@ TilePlan plan_tiles(std::span<const Wave> waves, const ShoreField& field, double
 
 /// Calls visit(slot texel's floats, grid index) for every texel of every stored slot, slots spread over workers.
 template <typename Visit>
-void each_stored_texel(const ShoreField& field, TilePlan& plan, unsigned threads, const Visit& visit) {
+void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
     ShoreTiles& t = plan.tiles;
     detail::parallel_for_each(plan.tile.size(), threads, [&](std::size_t s) {
         float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * ShoreTiles::kSlotTexels * t.stride;
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k)
-            visit(slot + k * t.stride, slot_texel_index(field, t.tiles_per_side, plan.tile[s], k));
+            visit(slot + k * t.stride, t.grid_index(plan.tile[s], k));
     });
 }
 
@@ -224,7 +213,7 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
     const double k0 = wave.k;
     const glm::dvec2 dir{wave.dir_x, wave.dir_z};
     const std::vector<double>& phase = m.phase;
-    each_stored_texel(field, plan, 1, [&](float* t, std::size_t k) {
+    each_stored_texel(plan, 1, [&](float* t, std::size_t k) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         t[w] = t[nw + w] = t[2 * nw + w] = t[3 * nw + w] = 0.0f;
@@ -270,7 +259,7 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
                  unsigned threads) {
     const std::size_t nw = waves.size();
     const double cap_ratio = 0.5 * breaking_index;  // amplitude cap = index * h / 2
-    each_stored_texel(field, plan, threads, [&](float* t, std::size_t k) {
+    each_stored_texel(plan, threads, [&](float* t, std::size_t k) {
         const double h = static_cast<double>(field.depth[k]);
         t[4 * nw] = field.depth[k];
         t[4 * nw + 1] = 0.0f;

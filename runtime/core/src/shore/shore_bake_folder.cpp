@@ -20,14 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using detail::ObjectReader;
 
-/// What a texel's field rows must be, in order (ShoreTiles::texels).
-std::pair<std::string, int> expected_row(std::size_t r, std::size_t nw) {
-    static constexpr const char* per_wave[] = {"phase_residual", "amplitude_factor", "wavevector_x", "wavevector_z"};
-    static constexpr const char* shared[] = {"depth", "breaking", "steepness_scale", "shore_distance"};
-    if (r < 4 * nw) return {per_wave[r / nw], static_cast<int>(r % nw)};
-    return {shared[r - 4 * nw], -1};
-}
-
 /// The tiles of /model/tiles: which are stored, each row's encoding, and every stored
 /// tile's PNG decoded into its slot (slots in tile order, after the open-sea and dry-land ones).
 Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, int n, std::size_t nw,
@@ -53,7 +45,7 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, in
     for (std::size_t r = 0; r < rows.size(); ++r) {
         auto row = ObjectReader::open(tiles->at("rows")[r], tiles->source(), fmt::format("/model/tiles/rows/{}", r));
         if (!row) return row.error();
-        const auto [field, wave] = expected_row(r, nw);
+        const auto [field, wave, unit] = shore_row_name(r, nw);  // the unit is the writer's, not checked
         std::string name;
         std::int64_t row_wave = -1;
         if (auto st = row->string("field", name, true); !st) return st.error();

@@ -14,14 +14,6 @@ namespace {
 
 enum class TileKind : unsigned char { stored, open_sea, dry_land };
 
-/// The grid index of texel (a, b) of tile (ti, tj)'s slot: the apron's last row and
-/// column repeat the grid's edge where the tile ends there.
-std::size_t grid_index(int n, int ti, int tj, std::size_t a, std::size_t b) {
-    const int i = std::min(ti * ShoreTiles::kTile + static_cast<int>(a), n - 1);
-    const int j = std::min(tj * ShoreTiles::kTile + static_cast<int>(b), n - 1);
-    return static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
-}
-
 bool open_sea_texel(const ShoreWaveFields& f, std::span<const glm::dvec2> open, std::size_t k) {
     if (!(f.depth[k] > 0.0f && f.breaking[k] == 0.0f && f.steepness_scale[k] == 1.0f)) return false;
     for (std::size_t w = 0; w < open.size(); ++w) {
@@ -35,21 +27,13 @@ bool open_sea_texel(const ShoreWaveFields& f, std::span<const glm::dvec2> open, 
     return true;
 }
 
-/// Dry land a tile or more inland: nothing a wave or the waterline's foam reads.
-bool far_dry_texel(const ShoreWaveFields& f, double inland, std::size_t k) {
-    return f.depth[k] <= 0.0f && static_cast<double>(f.shore_distance[k]) <= -inland;
-}
-
-TileKind classify(const ShoreWaveFields& f, std::span<const glm::dvec2> open, int ti, int tj) {
-    const int n = f.resolution;
-    const double inland = ShoreTiles::kTile * f.texel;
+TileKind classify(const ShoreWaveFields& f, std::span<const glm::dvec2> open, const ShoreTiles& t, std::size_t tile) {
     bool is_open = true, is_dry = true;
-    for (std::size_t b = 0; b < ShoreTiles::kSide && (is_open || is_dry); ++b)
-        for (std::size_t a = 0; a < ShoreTiles::kSide && (is_open || is_dry); ++a) {
-            const std::size_t k = grid_index(n, ti, tj, a, b);
-            is_open = is_open && open_sea_texel(f, open, k);
-            is_dry = is_dry && far_dry_texel(f, inland, k);
-        }
+    for (std::size_t s = 0; s < ShoreTiles::kSlotTexels && (is_open || is_dry); ++s) {
+        const std::size_t k = t.grid_index(tile, s);
+        is_open = is_open && open_sea_texel(f, open, k);
+        is_dry = is_dry && far_dry_land(f.depth[k], f.shore_distance[k], f.texel);
+    }
     return is_open ? TileKind::open_sea : is_dry ? TileKind::dry_land : TileKind::stored;
 }
 
@@ -98,8 +82,7 @@ ShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2>
     const std::size_t m = static_cast<std::size_t>(t.tiles_per_side);
     std::vector<TileKind> kinds(m * m);
     detail::parallel_for_each(m, 0, [&](std::size_t tj) {
-        for (std::size_t ti = 0; ti < m; ++ti)
-            kinds[tj * m + ti] = classify(f, open, static_cast<int>(ti), static_cast<int>(tj));
+        for (std::size_t ti = 0; ti < m; ++ti) kinds[tj * m + ti] = classify(f, open, t, tj * m + ti);
     });
     // Slots in tile order: the same fields always cut to the same slots.
     t.pages.assign(m * m, gpu::kShoreOpenSlot);
@@ -111,16 +94,12 @@ ShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2>
     const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
     t.texels.assign(static_cast<std::size_t>(next) * slot_floats, 0.0f);
     fill_constant_slots(t, open);
-    detail::parallel_for_each(m, 0, [&](std::size_t tj) {
-        for (std::size_t ti = 0; ti < m; ++ti) {
-            const std::uint32_t slot = t.pages[tj * m + ti];
-            if (slot < gpu::kShoreFirstStoredSlot) continue;
-            float* out = t.texels.data() + slot * slot_floats;
-            for (std::size_t b = 0; b < ShoreTiles::kSide; ++b)
-                for (std::size_t a = 0; a < ShoreTiles::kSide; ++a)
-                    write_texel(f, nw, grid_index(n, static_cast<int>(ti), static_cast<int>(tj), a, b),
-                                out + (b * ShoreTiles::kSide + a) * t.stride);
-        }
+    detail::parallel_for_each(m * m, 0, [&](std::size_t tile) {
+        const std::uint32_t slot = t.pages[tile];
+        if (slot < gpu::kShoreFirstStoredSlot) return;
+        float* out = t.texels.data() + slot * slot_floats;
+        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s)
+            write_texel(f, nw, t.grid_index(tile, s), out + s * t.stride);
     });
     return t;
 }
@@ -129,6 +108,16 @@ void fill_constant_slots(ShoreTiles& tiles, std::span<const glm::dvec2> open) {
     const std::size_t slot_floats = ShoreTiles::kSlotTexels * tiles.stride;
     fill_constant_slot(tiles.texels.data() + gpu::kShoreOpenSlot * slot_floats, open, false, tiles.stride);
     fill_constant_slot(tiles.texels.data() + gpu::kShoreDrySlot * slot_floats, open, true, tiles.stride);
+}
+
+ShoreRowName shore_row_name(std::size_t row, std::size_t waves) {
+    static constexpr std::pair<const char*, const char*> per_wave[] = {
+        {"phase_residual", "rad"}, {"amplitude_factor", "1"}, {"wavevector_x", "rad/m"}, {"wavevector_z", "rad/m"}};
+    static constexpr std::pair<const char*, const char*> shared[] = {
+        {"depth", "m"}, {"breaking", "1"}, {"steepness_scale", "1"}, {"shore_distance", "m"}};
+    if (row < 4 * waves)
+        return {per_wave[row / waves].first, static_cast<int>(row % waves), per_wave[row / waves].second};
+    return {shared[row - 4 * waves].first, -1, shared[row - 4 * waves].second};
 }
 
 double shore_far_to_infinite(double value) {

@@ -9,11 +9,52 @@
 
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
+#include "tidewater/detail/parallel.hpp"
 #include "tidewater/dispersion.hpp"
 
 namespace tidewater {
 
 namespace {
+
+/// The pages of the model on every `stride`-th texel, slots numbered in tile order (no
+/// texels yet): a coarse tile whose texels all come from open-sea (dry-land) tiles holds
+/// exactly the open sea's (dry land's) values and is not stored.
+ShoreTiles coarse_pages(const ShoreTiles& fine, int stride) {
+    ShoreTiles c;
+    c.resolution = (fine.resolution - 1) / stride + 1;
+    c.tiles_per_side = (c.resolution + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
+    c.stride = fine.stride;
+    const int m = c.tiles_per_side;
+    c.pages.assign(static_cast<std::size_t>(m) * static_cast<std::size_t>(m), gpu::kShoreOpenSlot);
+    std::uint32_t next = gpu::kShoreFirstStoredSlot;
+    const int last = static_cast<int>(ShoreTiles::kSide) - 1;
+    for (int cj = 0; cj < m; ++cj)
+        for (int ci = 0; ci < m; ++ci) {
+            // The fine tiles under the coarse slot's texels, its apron included.
+            const int i0 = ci * ShoreTiles::kTile * stride / ShoreTiles::kTile;
+            const int j0 = cj * ShoreTiles::kTile * stride / ShoreTiles::kTile;
+            const int i1 = std::min(ci * ShoreTiles::kTile + last, c.resolution - 1) * stride / ShoreTiles::kTile;
+            const int j1 = std::min(cj * ShoreTiles::kTile + last, c.resolution - 1) * stride / ShoreTiles::kTile;
+            bool open = true, dry = true;
+            for (int tj = j0; tj <= j1; ++tj)
+                for (int ti = i0; ti <= i1; ++ti) {
+                    const std::uint32_t page = fine.page(ti, tj);
+                    open = open && page == gpu::kShoreOpenSlot;
+                    dry = dry && page == gpu::kShoreDrySlot;
+                }
+            c.pages[static_cast<std::size_t>(cj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ci)] =
+                open  ? gpu::kShoreOpenSlot
+                : dry ? gpu::kShoreDrySlot
+                      : next++;
+        }
+    return c;
+}
+
+std::size_t slots_named(const ShoreTiles& t) {
+    std::uint32_t most = gpu::kShoreFirstStoredSlot - 1;
+    for (std::uint32_t page : t.pages) most = std::max(most, page);
+    return static_cast<std::size_t>(most) + 1;
+}
 
 std::vector<glm::dvec2> open_wavevectors(std::span<const Wave> waves) {
     std::vector<glm::dvec2> out;
@@ -109,40 +150,32 @@ std::shared_ptr<ShoreWaves> ShoreWaves::made(const ShoreGrid& grid, ShoreTiles t
 }
 
 std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
-    stride = std::max(stride, 1);
-    const int n = grid_.resolution, packed = (n - 1) / stride + 1;
-    const std::size_t nw = wave_count(), count = static_cast<std::size_t>(packed) * static_cast<std::size_t>(packed);
-    ShoreWaveFields c;
-    c.resolution = packed;
-    c.texel = grid_.texel * stride;
-    c.corner = grid_.corner + glm::dvec2(0.5 * grid_.texel - 0.5 * c.texel);
-    c.phase_residual.assign(nw, std::vector<float>(count));
-    c.amplitude_factor.assign(nw, std::vector<float>(count));
-    c.wavevector_x.assign(nw, std::vector<float>(count));
-    c.wavevector_z.assign(nw, std::vector<float>(count));
-    c.depth.resize(count);
-    c.breaking.resize(count);
-    c.steepness_scale.resize(count);
-    c.shore_distance.resize(count);
-    for (int j = 0; j < packed; ++j)
-        for (int i = 0; i < packed; ++i) {
-            const std::size_t k =
-                static_cast<std::size_t>(j) * static_cast<std::size_t>(packed) + static_cast<std::size_t>(i);
-            const ShoreTexelView t = texel_values(i * stride, j * stride);
-            for (std::size_t w = 0; w < nw; ++w) {
-                c.phase_residual[w][k] = t.phase_residual(w);
-                c.amplitude_factor[w][k] = t.amplitude_factor(w);
-                c.wavevector_x[w][k] = t.wavevector_x(w);
-                c.wavevector_z[w][k] = t.wavevector_z(w);
-            }
-            c.depth[k] = t.depth();
-            c.breaking[k] = t.breaking();
-            c.steepness_scale[k] = t.steepness_scale();
-            c.shore_distance[k] = t.shore_distance();
+    if (stride <= 1) return made(grid_, tiles_, open_wavevectors_);
+    ShoreTiles c = coarse_pages(tiles_, stride);
+    const std::size_t floats = c.stride, slot_floats = ShoreTiles::kSlotTexels * floats;
+    c.texels.assign(slots_named(c) * slot_floats, 0.0f);
+    fill_constant_slots(c, open_wavevectors_);
+    const auto packed = static_cast<std::size_t>(c.resolution);
+    detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
+        const std::uint32_t slot = c.pages[tile];
+        if (slot < gpu::kShoreFirstStoredSlot) return;
+        float* out = c.texels.data() + slot * slot_floats;
+        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
+            const std::size_t g = c.grid_index(tile, s);
+            const float* in =
+                tiles_.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
+            std::copy(in, in + floats, out + s * floats);
         }
-    auto open = open_wavevectors_;
-    ShoreTiles tiles = cut_shore_tiles(c, open);
-    return made({c.resolution, c.texel, c.corner}, std::move(tiles), std::move(open));
+    });
+    const double texel = grid_.texel * stride;
+    return made({c.resolution, texel, grid_.corner + glm::dvec2(0.5 * grid_.texel - 0.5 * texel)}, std::move(c),
+                open_wavevectors_);
+}
+
+std::uint64_t ShoreWaves::coarsened_device_bytes(int stride) const {
+    if (stride <= 1) return tiles_.device_bytes();
+    const ShoreTiles c = coarse_pages(tiles_, stride);
+    return ShoreTiles::device_bytes_for(slots_named(c), c.stride, c.pages.size());
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {

@@ -8,6 +8,7 @@
 // Internal to ShoreWaves. Threading: immutable once cut.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -44,6 +45,21 @@ struct ShoreTexelView {
     float shore_distance() const { return t[4 * waves + 3]; }
 };
 
+/// Field row `row` of a texel in the query layout, as saved bakes name it
+/// (shore.json, model.tiles.rows): its field, its wave (-1: a row all waves share) and unit.
+struct ShoreRowName {
+    const char* field;
+    int wave;
+    const char* unit;
+};
+ShoreRowName shore_row_name(std::size_t row, std::size_t waves);
+
+/// Dry land a tile or more inland (`texel` m a texel): nothing a wave or the waterline's
+/// foam reads there, so a tile of such texels is not stored.
+inline bool far_dry_land(double depth, double shore_distance, double texel) {
+    return depth <= 0.0 && shore_distance <= -static_cast<double>(gpu::kShoreTileTexels) * texel;
+}
+
 struct ShoreTiles {
     static constexpr int kTile = static_cast<int>(gpu::kShoreTileTexels);
     static constexpr std::size_t kSide = gpu::kShoreSlotSide;
@@ -79,8 +95,23 @@ struct ShoreTiles {
         return pages[static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) +
                      static_cast<std::size_t>(ti)];
     }
+    /// The grid texel behind texel k (0 .. kSlotTexels) of tile `tile`'s slot: the apron's
+    /// last row and column repeat the grid's edge where the tile ends there.
+    std::size_t grid_index(std::size_t tile, std::size_t k) const {
+        const std::size_t m = static_cast<std::size_t>(tiles_per_side);
+        const int i = std::min(static_cast<int>(tile % m) * kTile + static_cast<int>(k % kSide), resolution - 1);
+        const int j = std::min(static_cast<int>(tile / m) * kTile + static_cast<int>(k / kSide), resolution - 1);
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i);
+    }
     /// Every slot's bytes on the CPU (the pages included).
     std::size_t bytes() const { return texels.size() * sizeof(float) + pages.size() * sizeof(std::uint32_t); }
+    /// The same slots' bytes on the GPU (shaders/shore_fields.glsl): per texel a vec4 per
+    /// wave and one shared vec4, and a uint per page.
+    std::uint64_t device_bytes() const { return device_bytes_for(slot_count(), stride, pages.size()); }
+    static std::uint64_t device_bytes_for(std::size_t slots, std::size_t floats_per_texel, std::size_t page_count) {
+        return static_cast<std::uint64_t>(slots) * kSlotTexels * (floats_per_texel / 4) * 4 * sizeof(float) +
+               page_count * sizeof(std::uint32_t);
+    }
 };
 
 /// Writes the open-sea slot (each wave as it is: residual 0, amplitude factor 1,

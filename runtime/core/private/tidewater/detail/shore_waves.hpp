@@ -87,8 +87,11 @@ class ShoreWaves {
                                                                 std::span<const Wave> waves);
 
     /// The same model on every `stride`-th texel (the first texel centre kept): what a
-    /// renderer over its memory budget draws. `stride` 1: a copy.
+    /// renderer over its memory budget draws. A coarse tile is open sea (dry land) where
+    /// every tile its texels come from is; the rest are stored. `stride` 1: a copy.
     std::shared_ptr<const ShoreWaves> coarsened(int stride) const;
+    /// What coarsened(stride) takes on the GPU (ShoreTiles::device_bytes), without making it.
+    std::uint64_t coarsened_device_bytes(int stride) const;
 
     /// Bilinear sample at world xz from the tiles; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
