@@ -2,7 +2,7 @@
 // (hills to 100 m with 2 m ditches every 40 m, a wavy coast about a fifth of the side from
 // the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
-// object: bake and save seconds, the process's peak memory, the folder's size and the
+// object: bake, save and load seconds, the process's peak memory (before the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
@@ -17,6 +17,7 @@
 #include <numbers>
 #include <string>
 
+#include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
@@ -121,18 +122,32 @@ int main(int argc, char** argv) {
     }
     const double save = seconds_since(t2);
     const std::uintmax_t bytes = folder_bytes(dir);
-    fs::remove_all(dir);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const tidewater::ShoreWaves& model = *(*baked)->ocean.shore();
-    const tidewater::ShoreTiles& tiles = model.tiles();
-    const double gpu_bytes = static_cast<double>(tiles.device_bytes());
+    const double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
+    const tidewater::ShoreTiles& tiles = (*baked)->ocean.shore()->tiles();
+    const double model_texel = (*baked)->ocean.shore()->texel();
+    const std::size_t pages = tiles.pages.size(), stored = tiles.stored_tiles();
+    const double model_mb = static_cast<double>(tiles.bytes()) / 1e6;
+    const double gpu_mb = static_cast<double>(tiles.device_bytes()) / 1e6;
+    baked->reset();
+    // Loading the saved bake as a scene naming it does (an editor opening the world), with
+    // the bake itself released.
+    tidewater::Scene named = scene;
+    named.shore.bake_folder = dir;
+    const auto t3 = Clock::now();
+    auto loaded = tidewater::load_scene_bake(named);
+    if (!loaded) {
+        std::fprintf(stderr, "%s\n", loaded.error().message.c_str());
+        return 1;
+    }
+    const double load = seconds_since(t3);
+    fs::remove_all(dir);
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
-        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"peak_rss_mb\": %.0f, \"folder_mb\": %.1f, "
-        "\"tiles\": %zu, \"stored_tiles\": %zu, \"model_mb\": %.1f, \"gpu_shore_mb\": %.1f}\n",
-        side, waves, seabed, resolution, model.texel(), make, bake, save, static_cast<double>(usage.ru_maxrss) / 1024.0,
-        static_cast<double>(bytes) / 1e6, tiles.pages.size(), tiles.stored_tiles(),
-        static_cast<double>(tiles.bytes()) / 1e6, gpu_bytes / 1e6);
+        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"peak_rss_mb\": %.0f, "
+        "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"model_mb\": %.1f, \"gpu_shore_mb\": %.1f}\n",
+        side, waves, seabed, resolution, model_texel, make, bake, save, load, peak, static_cast<double>(bytes) / 1e6,
+        pages, stored, model_mb, gpu_mb);
     return 0;
 }

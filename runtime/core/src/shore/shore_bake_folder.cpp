@@ -187,7 +187,10 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     // encoding, water under every open-sea tile and land under every dry one.
     const double tolerance = 0.51 * depth_step + 1e-3;
     const std::size_t nw = set.size();
-    for (int j = 0; j < f.resolution; ++j)
+    // Rows in parallel; the first row (in grid order) that does not fit is reported.
+    std::vector<std::string> misfit(static_cast<std::size_t>(f.resolution));
+    detail::parallel_for_each(misfit.size(), 0, [&](std::size_t row) {
+        const int j = static_cast<int>(row);
         for (int i = 0; i < f.resolution; ++i) {
             const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
             const double depth = water_level - terrain.height_at(p);
@@ -196,16 +199,19 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
             const bool fits = page == gpu::kShoreOpenSlot  ? depth > -tolerance
                               : page == gpu::kShoreDrySlot ? depth <= tolerance
                                                            : std::abs(depth - stored) <= tolerance;
-            if (!fits)
-                return model->error(
-                    "tiles",
-                    fmt::format("the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
-                                "the bake says {}): re-run tidewater bake",
-                                depth, p.x, p.y,
-                                page == gpu::kShoreOpenSlot  ? std::string("open sea")
-                                : page == gpu::kShoreDrySlot ? std::string("dry land")
-                                                             : fmt::format("{:.3f} m", stored)));
+            if (fits) continue;
+            misfit[row] = fmt::format(
+                "the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
+                "the bake says {}): re-run tidewater bake",
+                depth, p.x, p.y,
+                page == gpu::kShoreOpenSlot  ? std::string("open sea")
+                : page == gpu::kShoreDrySlot ? std::string("dry land")
+                                             : fmt::format("{:.3f} m", stored));
+            return;
         }
+    });
+    for (const std::string& m : misfit)
+        if (!m.empty()) return model->error("tiles", m);
     auto made = ShoreWaves::from_tiles(f, std::move(tiles).value(), set);
     if (!made) {
         Error e = std::move(made).error();
