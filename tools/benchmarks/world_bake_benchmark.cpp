@@ -2,8 +2,8 @@
 // (hills to 100 m with 2 m ditches every 40 m, a wavy coast about a fifth of the side from
 // the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
-// object: bake, save and load seconds, the process's peak memory (before the load), the folder's size and the
-// shore model's tiles. One world per process, so that the peak is this world's:
+// object: bake, save and load seconds, a brush stroke's re-bake, the process's peak memory (before the load), the
+// folder's size and the shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
 #include <fmt/format.h>
@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <variant>
 
 #include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -114,6 +115,37 @@ int main(int argc, char** argv) {
         return 1;
     }
     const double bake = seconds_since(t1);
+    // A brush stroke on the hills (2 m up over 25 m, a tenth of the side from the centre,
+    // inland): re-baked from the bake just made, as an editor does.
+    double land_edit = 0.0;
+    bool land_edit_local = false;
+    {
+        tidewater::Scene stroke = scene;
+        auto map = std::get<tidewater::HeightmapTerrain>(scene.terrain.shape());
+        auto pixels = std::make_shared<tidewater::Gray16Image>(*map.image);
+        const double per_metre = 65535.0 / (map.max_height - map.min_height);
+        const int ci = static_cast<int>(0.6 * side), cj = side / 2;
+        for (int j = cj - 25; j <= cj + 25; ++j)
+            for (int i = ci - 25; i <= ci + 25; ++i) {
+                const double r = std::hypot(i - ci, j - cj) / 25.0;
+                if (r >= 1.0) continue;
+                auto& px = pixels->pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                                          static_cast<std::size_t>(i)];
+                px = static_cast<std::uint16_t>(std::min(65535.0, px + 2.0 * per_metre * (1.0 - r * r)));
+            }
+        map.image = std::move(pixels);
+        stroke.terrain = tidewater::Terrain(map);
+        tidewater::SceneBakeOptions options;
+        options.previous = *baked;
+        const auto te = Clock::now();
+        auto edited = tidewater::bake_scene(stroke, options);
+        if (!edited) {
+            std::fprintf(stderr, "%s\n", edited.error().message.c_str());
+            return 1;
+        }
+        land_edit = seconds_since(te);
+        land_edit_local = (*edited)->bake->reused.ocean_shore_land_edit;
+    }
     const fs::path dir = fs::temp_directory_path() / fmt::format("tidewater_world_{}_{}", side, ::getpid());
     const auto t2 = Clock::now();
     if (auto st = tidewater::save_scene_bake(dir, **baked); !st) {
@@ -145,9 +177,10 @@ int main(int argc, char** argv) {
     fs::remove_all(dir);
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
-        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"peak_rss_mb\": %.0f, "
+        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"land_edit_s\": %.3f, "
+        "\"land_edit_local\": %s, \"peak_rss_mb\": %.0f, "
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"model_mb\": %.1f, \"gpu_shore_mb\": %.1f}\n",
-        side, waves, seabed, resolution, model_texel, make, bake, save, load, peak, static_cast<double>(bytes) / 1e6,
-        pages, stored, model_mb, gpu_mb);
+        side, waves, seabed, resolution, model_texel, make, bake, save, load, land_edit,
+        land_edit_local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, model_mb, gpu_mb);
     return 0;
 }

@@ -13,6 +13,7 @@
 #include "tidewater/detail/scene_bake_parts.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_bake_write.hpp"
+#include "tidewater/detail/shore_land_edit.hpp"
 #include "tidewater/detail/shore_waves_bake.hpp"
 #include "tidewater/detail/water_bodies_bake.hpp"
 
@@ -102,16 +103,16 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
     return models;
 }
 
-/// Whether the previous bake's ocean shore model is this scene's: the same carved
-/// terrain (shape and cut objects), waves, level, shore settings and distance field.
-bool unchanged_ocean_shore(const Scene& scene, const Terrain& terrain, int distance_resolution, const Scene* previous) {
+/// Whether the previous bake's ocean shore model was baked with this scene's waves, level,
+/// shore settings and distance field (over whatever terrain).
+bool same_ocean_shore_inputs(const Scene& scene, int distance_resolution, const Scene* previous) {
     if (!previous || !previous->bake || !previous->bake->ocean_shore || !previous->bake->shoreline ||
         previous->bake->loaded)
         return false;
     const SceneBake& old = *previous->bake;
-    return old.terrain == terrain && old.water_level == scene.water_level() &&
-           old.shore.resolution == scene.shore.resolution && old.shore.breaking_index == scene.shore.breaking_index &&
-           old.distance_resolution == distance_resolution && same_waves(previous->ocean.waves(), scene.ocean.waves());
+    return old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
+           old.shore.breaking_index == scene.shore.breaking_index && old.distance_resolution == distance_resolution &&
+           same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
 /// The ocean's shore model and the distance field it samples: the previous bake's when
@@ -123,13 +124,26 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     const int distance_resolution = options.distance_resolution != 0       ? options.distance_resolution
                                     : scene.shore.distance_resolution != 0 ? scene.shore.distance_resolution
                                                                            : scene.shore.resolution;
-    if (unchanged_ocean_shore(scene, terrain, distance_resolution, options.previous.get())) {
-        bake.ocean_shore = options.previous->bake->ocean_shore;
-        bake.shoreline = options.previous->bake->shoreline;
-        bake.distance_resolution = distance_resolution;
-        bake.reused.ocean_shore = true;
-        progress.report("shore waves", begin, 1.0, 1.0);
-        return {};
+    if (same_ocean_shore_inputs(scene, distance_resolution, options.previous.get())) {
+        const SceneBake& old = *options.previous->bake;
+        if (old.terrain == terrain) {
+            bake.ocean_shore = old.ocean_shore;
+            bake.shoreline = old.shoreline;
+            bake.distance_resolution = distance_resolution;
+            bake.reused.ocean_shore = true;
+            progress.report("shore waves", begin, 1.0, 1.0);
+            return {};
+        }
+        // An edit of dry land, away from the water: only the ground's height under it.
+        if (auto edit =
+                detail::rebake_land_edit(old.terrain, terrain, scene.water_level(), old.shoreline, old.ocean_shore)) {
+            bake.ocean_shore = std::move(edit->model);
+            bake.shoreline = std::move(edit->shoreline);
+            bake.distance_resolution = distance_resolution;
+            bake.reused.ocean_shore_land_edit = true;
+            progress.report("shore waves", begin, 1.0, 1.0);
+            return {};
+        }
     }
     // One shoreline bake serves the distance field and the shore model, which samples
     // it: it may be finer than the model's grid, never coarser.

@@ -47,7 +47,9 @@ struct SceneBakeOptions {
     /// What the edit leaves unchanged is taken from it instead of baked again: rivers with
     /// the same inputs over the same terrain, lakes' shore models whose basin, waves and
     /// shore settings are the same, and the ocean's shore model when the carved terrain,
-    /// its waves, level and shore settings are. The result is the same as a full bake.
+    /// its waves, level and shore settings are; when only a heightmap's pixels changed,
+    /// on dry land a texel or more from water, the ocean's shore model keeps everything but
+    /// the ground's height there (SceneBake::Reused). The result is the same as a full bake.
     std::shared_ptr<const Scene> previous;
 };
 

@@ -49,6 +49,10 @@ struct SceneBake {
     struct Reused {
         std::size_t rivers = 0, lake_shores = 0;
         bool ocean_shore = false;
+        /// The ocean's shore model and distance field taken from the previous bake with
+        /// only the ground's height re-baked under an edit of dry land (a heightmap's
+        /// pixels changed where no water is within a texel): the same as a full bake.
+        bool ocean_shore_land_edit = false;
     } reused;
     int distance_resolution = 0;  ///< texels per side of the shoreline's distance field (0: none baked)
     /// What it was made from, so that Scene::baked() can tell an edited copy: the terrain

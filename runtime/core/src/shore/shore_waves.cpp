@@ -178,6 +178,30 @@ std::uint64_t ShoreWaves::coarsened_device_bytes(int stride) const {
     return ShoreTiles::device_bytes_for(slots_named(c), c.stride, c.pages.size());
 }
 
+std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w, int h,
+                                                          std::span<const float> depths) const {
+    ShoreTiles t = tiles_;
+    const int n = grid_.resolution, m = t.tiles_per_side, kTile = ShoreTiles::kTile;
+    const std::size_t depth_row = 4 * wave_count(), slot_floats = ShoreTiles::kSlotTexels * t.stride;
+    // A texel lies in its own tile's slot and in the aprons of the tiles before it.
+    for (int tj = std::max(0, (j0 - 1) / kTile); tj <= std::min(m - 1, (j0 + h - 1) / kTile); ++tj)
+        for (int ti = std::max(0, (i0 - 1) / kTile); ti <= std::min(m - 1, (i0 + w - 1) / kTile); ++ti) {
+            const std::size_t tile =
+                static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
+            if (t.pages[tile] < gpu::kShoreFirstStoredSlot) continue;
+            float* slot = t.texels.data() + t.pages[tile] * slot_floats;
+            for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
+                const std::size_t g = t.grid_index(tile, s);
+                const int i = static_cast<int>(g % static_cast<std::size_t>(n)) - i0;
+                const int j = static_cast<int>(g / static_cast<std::size_t>(n)) - j0;
+                if (i < 0 || j < 0 || i >= w || j >= h) continue;
+                slot[s * t.stride + depth_row] =
+                    depths[static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i)];
+            }
+        }
+    return made(grid_, std::move(t), open_wavevectors_);
+}
+
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
     // The taps of grid_taps, read from the cell's slot.
     const int n = grid_.resolution;

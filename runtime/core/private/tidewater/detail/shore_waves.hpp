@@ -92,6 +92,11 @@ class ShoreWaves {
     std::shared_ptr<const ShoreWaves> coarsened(int stride) const;
     /// What coarsened(stride) takes on the GPU (ShoreTiles::device_bytes), without making it.
     std::uint64_t coarsened_device_bytes(int stride) const;
+    /// This model with the still-water depth of grid texels [i0, i0 + w) x [j0, j0 + h)
+    /// replaced by `depths` (row-major, w * h values), in every stored slot that holds one,
+    /// aprons included; every other value stays bit for bit. For an edit of dry land that
+    /// leaves the waves and the shoreline as they were (the caller checks that).
+    std::shared_ptr<const ShoreWaves> with_depths(int i0, int j0, int w, int h, std::span<const float> depths) const;
 
     /// Bilinear sample at world xz from the tiles; `waves` must have one entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;

@@ -1,0 +1,133 @@
+#include "tidewater/detail/shore_land_edit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <variant>
+#include <vector>
+
+namespace tidewater::detail {
+
+namespace {
+
+/// World xz from lo to hi (either may be infinite).
+struct WorldRect {
+    glm::dvec2 lo, hi;
+};
+
+/// Where `after`'s height may differ from `before`'s: the bilinear support of the
+/// heightmap pixels that changed (reaching to infinity beyond an edge whose pixels
+/// changed, where the edge value fades to the seabed). An empty optional inside: no pixel
+/// changed. nullopt: not the same heightmap with other pixels.
+std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
+    const auto* a = std::get_if<HeightmapTerrain>(&before.shape());
+    const auto* b = std::get_if<HeightmapTerrain>(&after.shape());
+    if (!a || !b || !a->image || !b->image || before.cuts() != after.cuts() || a->size != b->size ||
+        a->center != b->center || a->min_height != b->min_height || a->max_height != b->max_height)
+        return std::nullopt;
+    const Gray16Image &x = *a->image, &y = *b->image;
+    if (x.width != y.width || x.height != y.height || x.pixels.size() != y.pixels.size() || x.width < 2 || x.height < 2)
+        return std::nullopt;
+    const auto w = static_cast<std::size_t>(x.width);
+    int i0 = x.width, i1 = -1, j0 = x.height, j1 = -1;
+    for (int j = 0; j < x.height; ++j) {
+        const std::uint16_t* p = x.pixels.data() + static_cast<std::size_t>(j) * w;
+        const std::uint16_t* q = y.pixels.data() + static_cast<std::size_t>(j) * w;
+        if (std::memcmp(p, q, w * sizeof(std::uint16_t)) == 0) continue;
+        for (int i = 0; i < x.width; ++i)
+            if (p[i] != q[i]) {
+                i0 = std::min(i0, i);
+                i1 = std::max(i1, i);
+            }
+        j0 = std::min(j0, j);
+        j1 = std::max(j1, j);
+    }
+    if (i1 < 0) return std::optional<WorldRect>{};
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    auto along = [&](double pixel, int count, double center, double size) {
+        return center + (pixel / (count - 1) - 0.5) * size;
+    };
+    WorldRect r;
+    r.lo.x = i0 == 0 ? -inf : along(i0 - 1, x.width, a->center.x, a->size.x);
+    r.hi.x = i1 == x.width - 1 ? inf : along(i1 + 1, x.width, a->center.x, a->size.x);
+    r.lo.y = j0 == 0 ? -inf : along(j0 - 1, x.height, a->center.y, a->size.y);
+    r.hi.y = j1 == x.height - 1 ? inf : along(j1 + 1, x.height, a->center.y, a->size.y);
+    return std::optional<WorldRect>{r};
+}
+
+/// The texels of a grid whose centres lie in `r` (i1 < i0 when none do).
+struct TexelRange {
+    int i0 = 0, j0 = 0, i1 = -1, j1 = -1;
+    int width() const { return i1 - i0 + 1; }
+    int height() const { return j1 - j0 + 1; }
+    bool empty() const { return i1 < i0 || j1 < j0; }
+};
+TexelRange texels_in(int n, double texel, glm::dvec2 corner, const WorldRect& r) {
+    auto first = [&](double lo, double c) {
+        return static_cast<int>(std::clamp(std::ceil((lo - c) / texel - 0.5), 0.0, static_cast<double>(n)));
+    };
+    auto last = [&](double hi, double c) {
+        return static_cast<int>(std::clamp(std::floor((hi - c) / texel - 0.5), -1.0, static_cast<double>(n - 1)));
+    };
+    return {first(r.lo.x, corner.x), first(r.lo.y, corner.y), last(r.hi.x, corner.x), last(r.hi.y, corner.y)};
+}
+
+/// The new depths of the texels in `range`, as the bake computes them (level - height,
+/// in float), when they and every texel a step around them stay dry; else nullopt.
+template <typename OldDepth>
+std::optional<std::vector<float>> dry_depths(const TexelRange& range, int n, double texel, glm::dvec2 corner,
+                                             const Terrain& after, double water_level, const OldDepth& old_depth) {
+    for (int j = std::max(0, range.j0 - 1); j <= std::min(n - 1, range.j1 + 1); ++j)
+        for (int i = std::max(0, range.i0 - 1); i <= std::min(n - 1, range.i1 + 1); ++i)
+            if (!(old_depth(i, j) < 0.0f)) return std::nullopt;
+    ShoreField grid;  // its texel centres, the bake's own expression
+    grid.resolution = n;
+    grid.texel = texel;
+    grid.corner = corner;
+    std::vector<float> depths(static_cast<std::size_t>(range.width()) * static_cast<std::size_t>(range.height()));
+    for (int j = range.j0; j <= range.j1; ++j)
+        for (int i = range.i0; i <= range.i1; ++i) {
+            const float d = static_cast<float>(water_level - after.height_at(grid.texel_center(i, j)));
+            if (!(d < 0.0f)) return std::nullopt;
+            depths[static_cast<std::size_t>(j - range.j0) * static_cast<std::size_t>(range.width()) +
+                   static_cast<std::size_t>(i - range.i0)] = d;
+        }
+    return depths;
+}
+
+}  // namespace
+
+std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& after, double water_level,
+                                         const std::shared_ptr<const ShoreField>& shoreline_ptr,
+                                         const std::shared_ptr<const ShoreWaves>& model_ptr) {
+    const auto change = heightmap_change(before, after);
+    if (!change) return std::nullopt;
+    if (!*change) return LandEdit{shoreline_ptr, model_ptr, 0};  // the same pixels in another image
+    const WorldRect& rect = **change;
+    const ShoreField& shoreline = *shoreline_ptr;
+    const ShoreWaves& model = *model_ptr;
+    auto field = std::make_shared<ShoreField>(shoreline);
+
+    const int nd = shoreline.resolution;
+    const TexelRange d = texels_in(nd, shoreline.texel, shoreline.corner, rect);
+    if (!d.empty()) {
+        const auto depths = dry_depths(d, nd, shoreline.texel, shoreline.corner, after, water_level,
+                                       [&](int i, int j) { return shoreline.depth[shoreline.index(i, j)]; });
+        if (!depths) return std::nullopt;
+        for (int j = d.j0; j <= d.j1; ++j)
+            std::copy_n(depths->data() + static_cast<std::size_t>(j - d.j0) * static_cast<std::size_t>(d.width()),
+                        d.width(), field->depth.data() + field->index(d.i0, j));
+    }
+
+    const int nm = model.resolution();
+    const TexelRange m = texels_in(nm, model.texel(), model.corner(), rect);
+    if (m.empty()) return LandEdit{std::move(field), model_ptr, 0};
+    const auto depths = dry_depths(m, nm, model.texel(), model.corner(), after, water_level,
+                                   [&](int i, int j) { return model.texel_values(i, j).depth(); });
+    if (!depths) return std::nullopt;
+    return LandEdit{std::move(field), model.with_depths(m.i0, m.j0, m.width(), m.height(), *depths),
+                    m.width() * m.height()};
+}
+
+}  // namespace tidewater::detail

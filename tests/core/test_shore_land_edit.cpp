@@ -1,0 +1,135 @@
+// A terrain edit on dry land, re-baked where it is: the previous bake's shore model and
+// distance field with only the ground's height under the edit baked again, bit for bit
+// what a full bake of the edited terrain gives; an edit that reaches the water is baked
+// in full.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene_bake.hpp"
+
+namespace tidewater {
+namespace {
+
+constexpr int kPixels = 257;  // 4 m apart over 1024 m
+constexpr double kLo = -40.0, kHi = 30.0;
+
+/// An island: 20 m at its centre falling 1 m in 20 to the sea (shoreline at r = 400 m),
+/// on to the -40 m floor; `bump` adds a mound of 3 m and 40 m radius at `at`.
+std::shared_ptr<Gray16Image> island_pixels(glm::dvec2 at = {0.0, 0.0}, double bump = 0.0) {
+    auto image = std::make_shared<Gray16Image>();
+    image->width = image->height = kPixels;
+    image->pixels.resize(static_cast<std::size_t>(kPixels) * kPixels);
+    for (int j = 0; j < kPixels; ++j)
+        for (int i = 0; i < kPixels; ++i) {
+            const glm::dvec2 p{4.0 * i - 512.0, 4.0 * j - 512.0};
+            double h = std::max(kLo, 20.0 - 0.05 * glm::length(p));
+            const double r = glm::length(p - at) / 40.0;
+            if (r < 1.0) h += bump * (1.0 - r * r) * (1.0 - r * r);
+            image->pixels[static_cast<std::size_t>(j) * kPixels + i] =
+                static_cast<std::uint16_t>(std::lround((h - kLo) / (kHi - kLo) * 65535.0));
+        }
+    return image;
+}
+
+Scene island_scene(std::shared_ptr<Gray16Image> pixels) {
+    auto parsed = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}},
+        "ocean": "ocean_rolling", "shore": {"resolution": 256}})",
+                              "land edit");
+    EXPECT_TRUE(parsed.ok()) << parsed.error().message;
+    Scene scene = std::move(parsed).value();
+    HeightmapTerrain map;
+    map.size = glm::dvec2(4.0 * (kPixels - 1));
+    map.min_height = kLo;
+    map.max_height = kHi;
+    map.image = std::move(pixels);
+    scene.terrain = Terrain(map);
+    return scene;
+}
+
+void expect_same_shore(const SceneBake& a, const SceneBake& b) {
+    ASSERT_TRUE(a.ocean_shore && b.ocean_shore && a.shoreline && b.shoreline);
+    EXPECT_EQ(a.ocean_shore->tiles().pages, b.ocean_shore->tiles().pages);
+    EXPECT_TRUE(a.ocean_shore->tiles().texels == b.ocean_shore->tiles().texels) << "the model's slots, bit for bit";
+    EXPECT_TRUE(a.shoreline->depth == b.shoreline->depth);
+    EXPECT_TRUE(a.shoreline->signed_distance == b.shoreline->signed_distance);
+    EXPECT_TRUE(a.shoreline->gradient_x == b.shoreline->gradient_x);
+    EXPECT_TRUE(a.shoreline->gradient_z == b.shoreline->gradient_z);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+TEST(ShoreLandEdit, AnEditOfDryLandIsTheFullBakeBitForBit) {
+    const Scene scene = island_scene(island_pixels());
+    auto first = bake_scene(scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+
+    // A mound 250 m from the centre: 150 m inland, in the stored band, dry before and after.
+    const Scene mound = island_scene(island_pixels({250.0, 0.0}, 3.0));
+    const auto t0 = std::chrono::steady_clock::now();
+    auto local = bake_scene(mound, options);
+    const double local_s = seconds_since(t0);
+    ASSERT_TRUE(local.ok()) << local.error().message;
+    EXPECT_TRUE((*local)->bake->reused.ocean_shore_land_edit);
+    EXPECT_FALSE((*local)->bake->reused.ocean_shore);
+    const auto t1 = std::chrono::steady_clock::now();
+    auto full = bake_scene(mound);
+    const double full_s = seconds_since(t1);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    expect_same_shore(*(*local)->bake, *(*full)->bake);
+    // The edit shows: some stored depth differs from the first bake's.
+    const auto& before = (*first)->bake->ocean_shore->tiles().texels;
+    const auto& after = (*local)->bake->ocean_shore->tiles().texels;
+    ASSERT_EQ(before.size(), after.size());
+    std::size_t changed = 0;
+    for (std::size_t k = 0; k < before.size(); ++k) changed += before[k] != after[k];
+    std::printf("dry-land edit: %zu stored values changed; %.3f s re-baked where it is, %.3f s in full\n", changed,
+                local_s, full_s);
+    EXPECT_GT(changed, 50u);
+
+    // The same pixels in another image object: nothing is baked again.
+    auto same = bake_scene(island_scene(island_pixels()), options);
+    ASSERT_TRUE(same.ok());
+    EXPECT_TRUE((*same)->bake->reused.ocean_shore_land_edit);
+    EXPECT_EQ((*same)->bake->ocean_shore, (*first)->bake->ocean_shore);
+}
+
+TEST(ShoreLandEdit, AnEditThatReachesTheWaterIsBakedInFull) {
+    const Scene scene = island_scene(island_pixels());
+    auto first = bake_scene(scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+    // A mound on the beach (r = 400 m): the shoreline moves.
+    const Scene beach = island_scene(island_pixels({400.0, 0.0}, 3.0));
+    auto edited = bake_scene(beach, options);
+    ASSERT_TRUE(edited.ok()) << edited.error().message;
+    EXPECT_FALSE((*edited)->bake->reused.ocean_shore_land_edit);
+    EXPECT_FALSE((*edited)->bake->reused.ocean_shore);
+    auto full = bake_scene(beach);
+    ASSERT_TRUE(full.ok());
+    expect_same_shore(*(*edited)->bake, *(*full)->bake);
+    // A mound whose foot reaches the water (r = 365 m, 40 m wide: to 405 m): baked in full.
+    auto touching = bake_scene(island_scene(island_pixels({365.0, 0.0}, 3.0)), options);
+    ASSERT_TRUE(touching.ok());
+    EXPECT_FALSE((*touching)->bake->reused.ocean_shore_land_edit) << "the mound's foot reaches the water";
+    // One that stops 30 m short of it (r = 330 m): re-baked where it is, still the full bake.
+    const Scene near = island_scene(island_pixels({330.0, 0.0}, 3.0));
+    auto near_edit = bake_scene(near, options);
+    ASSERT_TRUE(near_edit.ok());
+    EXPECT_TRUE((*near_edit)->bake->reused.ocean_shore_land_edit);
+    auto near_full = bake_scene(near);
+    ASSERT_TRUE(near_full.ok());
+    expect_same_shore(*(*near_edit)->bake, *(*near_full)->bake);
+}
+
+}  // namespace
+}  // namespace tidewater
