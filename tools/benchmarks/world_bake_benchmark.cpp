@@ -2,8 +2,9 @@
 // (hills to 100 m with 2 m ditches every 40 m, a wavy coast about a fifth of the side from
 // the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
-// object: bake, save and load seconds, a brush stroke's re-bake, the process's peak memory (before the load), the
-// folder's size and the shore model's tiles. One world per process, so that the peak is this world's:
+// object: bake, save and load seconds, a brush stroke's re-bake, the process's peak
+// memory (after the save, before the stroke and the load), the folder's size and the
+// shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
 #include <fmt/format.h>
@@ -115,6 +116,22 @@ int main(int argc, char** argv) {
         return 1;
     }
     const double bake = seconds_since(t1);
+    const fs::path dir = fs::temp_directory_path() / fmt::format("tidewater_world_{}_{}", side, ::getpid());
+    const auto t2 = Clock::now();
+    if (auto st = tidewater::save_scene_bake(dir, **baked); !st) {
+        std::fprintf(stderr, "%s\n", st.error().message.c_str());
+        return 1;
+    }
+    const double save = seconds_since(t2);
+    const std::uintmax_t bytes = folder_bytes(dir);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
+    const tidewater::ShoreTiles& tiles = (*baked)->ocean.shore()->tiles();
+    const double model_texel = (*baked)->ocean.shore()->texel();
+    const std::size_t pages = tiles.pages.size(), stored = tiles.stored_tiles();
+    const double model_mb = static_cast<double>(tiles.bytes()) / 1e6;
+    const double gpu_mb = static_cast<double>(tiles.device_bytes()) / 1e6;
     // A brush stroke on the hills (2 m up over 25 m, a tenth of the side from the centre,
     // inland): re-baked from the bake just made, as an editor does.
     double land_edit = 0.0;
@@ -141,27 +158,12 @@ int main(int argc, char** argv) {
         auto edited = tidewater::bake_scene(stroke, options);
         if (!edited) {
             std::fprintf(stderr, "%s\n", edited.error().message.c_str());
+            fs::remove_all(dir);
             return 1;
         }
         land_edit = seconds_since(te);
         land_edit_local = (*edited)->bake->reused.ocean_shore_land_edit;
     }
-    const fs::path dir = fs::temp_directory_path() / fmt::format("tidewater_world_{}_{}", side, ::getpid());
-    const auto t2 = Clock::now();
-    if (auto st = tidewater::save_scene_bake(dir, **baked); !st) {
-        std::fprintf(stderr, "%s\n", st.error().message.c_str());
-        return 1;
-    }
-    const double save = seconds_since(t2);
-    const std::uintmax_t bytes = folder_bytes(dir);
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    const double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
-    const tidewater::ShoreTiles& tiles = (*baked)->ocean.shore()->tiles();
-    const double model_texel = (*baked)->ocean.shore()->texel();
-    const std::size_t pages = tiles.pages.size(), stored = tiles.stored_tiles();
-    const double model_mb = static_cast<double>(tiles.bytes()) / 1e6;
-    const double gpu_mb = static_cast<double>(tiles.device_bytes()) / 1e6;
     baked->reset();
     // Loading the saved bake as a scene naming it does (an editor opening the world), with
     // the bake itself released.
@@ -171,6 +173,7 @@ int main(int argc, char** argv) {
     auto loaded = tidewater::load_scene_bake(named);
     if (!loaded) {
         std::fprintf(stderr, "%s\n", loaded.error().message.c_str());
+        fs::remove_all(dir);
         return 1;
     }
     const double load = seconds_since(t3);
