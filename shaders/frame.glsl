@@ -13,6 +13,7 @@ layout(set = kFrameSet, binding = eFrameSceneDepth) uniform sampler2D scene_dept
 layout(std430, set = kFrameSet, binding = eFrameShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };
 layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
 layout(std430, set = kFrameSet, binding = eFrameShorePages) readonly buffer ShorePagesBuf { uint shore_pages[]; };
+layout(std430, set = kFrameSet, binding = eFrameShoreLayers) readonly buffer ShoreLayersBuf { GpuShoreLayer shore_layers[]; };
 
 // The ground's height (m) at xz relative to O: the height texture between its texel
 // centres, and beyond them the edge value eased to the seabed (the GLSL twin of

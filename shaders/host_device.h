@@ -53,6 +53,17 @@ TW_CONST uint kShoreOpenSlot = 0u;
 TW_CONST uint kShoreDrySlot = 1u;
 TW_CONST uint kShoreFirstStoredSlot = 2u;
 TW_CONST float kShoreFarValue = 1.0e9f;  // m
+// The model keeps its fields in layers, each a grid of such tiles: the shared fields
+// (depth, breaking, steepness scale, shore distance) at the model's texel, and the
+// waves in runs of consecutive waves, each run at the texel its shortest wave needs
+// (a power of two times the model's). At most kShoreMaxLayers runs; the runs of one
+// model lie one after another in shore_layers[] and cover its waves in order.
+TW_CONST uint kShoreMaxLayers = 4u;
+struct GpuShoreLayer {
+    vec4 grid;    // xy: its grid's outer corner from the shared grid's (m); z: texel (m); w: resolution (texels a side)
+    uvec4 waves;  // x: first wave of the run; y: its wave count; z: its first page in shore_pages[];
+                  // w: its first element in shore_waves[]
+};
 
 // A river's fields as the water evaluation samples them: kRiverQueryStride floats per
 // texel of its grid, bilinear between texel centres. The surface is relative to the
@@ -173,7 +184,7 @@ TW_BINDINGS(FrameBinding)
     eFrameTerrainHeight = 2u, // sampler2D, R16 unorm heights (GpuFrame.terrain_heights decodes them)
     eFrameSceneColor = 3u,    // sampler2D, the opaque scene's colour copy
     eFrameSceneDepth = 4u,    // sampler2D, its depth copy
-    eFrameShoreWaves = 5u,    // vec4[] shore fields per slot, wave and texel
+    eFrameShoreWaves = 5u,    // vec4[] shore fields of the wave runs, per slot, wave and texel
     eFrameShoreShared = 6u,   // vec4[] shore fields per slot and texel
     eFrameBodyDraws = 7u,     // GpuBodyDraw[]
     eFrameRiverTexels = 8u,   // float[] river query texels
@@ -182,8 +193,9 @@ TW_BINDINGS(FrameBinding)
     eFrameRiverWaves = 11u,   // GpuRiverWave[]
     eFramePatchList = 12u,    // uint[] water patches
     eFrameWakePoints = 13u,   // wake blocks, then GpuWakePoint[]
-    eFrameShorePages = 14u,   // uint[] shore slot per tile, model after model
-    eFrameBindingCount = 15u
+    eFrameShorePages = 14u,   // uint[] shore slot per tile, grid after grid
+    eFrameShoreLayers = 15u,  // GpuShoreLayer[], model after model
+    eFrameBindingCount = 16u
 TW_BINDINGS_END();
 
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
@@ -201,15 +213,16 @@ TW_BINDINGS(QueryBinding)
     eQueryBasePhases = 1u,    // float[cell * wave_count + i]
     eQueryPoints = 2u,        // GpuQueryPoint[]
     eQueryResults = 3u,       // GpuQueryResult[]
-    eQueryShoreWaves = 4u,    // vec4[(slot * waves + wave) * kShoreSlotTexels + texel]
+    eQueryShoreWaves = 4u,    // a run's vec4[(slot * run waves + wave) * kShoreSlotTexels + texel]
     eQueryShoreShared = 5u,   // vec4[slot * kShoreSlotTexels + texel]
     eQueryCellOrigins = 6u,   // vec2[]
     eQueryRiverTexels = 7u,   // float[]
     eQueryRiverChannel = 8u,  // vec4[]
     eQueryRiverWaves = 9u,    // GpuRiverWave[]
     eQueryWakePoints = 10u,   // wake blocks, then GpuWakePoint[]
-    eQueryShorePages = 11u,   // uint[tile]: its slot
-    eQueryBindingCount = 12u
+    eQueryShorePages = 11u,   // uint[tile]: its slot, grid after grid
+    eQueryShoreLayers = 12u,  // GpuShoreLayer[]: the model's runs of waves
+    eQueryBindingCount = 13u
 TW_BINDINGS_END();
 #undef TW_BINDINGS
 #undef TW_BINDINGS_END
@@ -297,8 +310,8 @@ struct GpuBodyDraw {
     vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own)
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
     // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
-    vec4 shore;       // xy: its grid corner relative to O (m); z: texel (m); w: resolution (0 = none)
-    uvec4 shore_base; // x: its first element in shore_waves[], y: in shore_shared[], z: in shore_pages[]
+    vec4 shore;       // xy: its shared grid's corner relative to O (m); z: texel (m); w: resolution (0 = none)
+    uvec4 shore_base; // x: its first wave run in shore_layers[]; y: its first element in shore_shared[]; z: its shared grid's first page in shore_pages[]
     // The ocean's or a lake's ripples (tidewater::RippleField):
     vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
     vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)
@@ -310,9 +323,9 @@ struct GpuQueryParams {
     uint point_count;
     float max_offset;       // sum(Q*A) of every wave that can move the point: how far a rest position can lie from it, m
     uint river_wave_count;
-    uint shore_resolution;  // texels per side of the shore fields; 0 = open water
+    uint shore_resolution;  // texels per side of the shared shore fields; 0 = open water
     float shore_texel;      // m
-    vec2 shore_offset;      // the shore grid's corner seen from the cell origins' zero, m (subtracted)
+    vec2 shore_offset;      // the shared shore grid's corner seen from the cell origins' zero, m (subtracted)
     uint river_nx, river_nz;  // the river grid; 0 = no river (plain still water)
     float river_texel;      // m
     float still;            // 1: the still water's waves join the river's (mouth, plume); 0: not
@@ -325,8 +338,8 @@ struct GpuQueryParams {
 
 // The shore fields (tidewater::ShoreWaves), as storage buffers read with the
 // same bilinear weights as the CPU, slot after slot (kShoreSlotTexels texels each):
-//   per slot, wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
-//   per slot and texel:       (depth m, breaking 0..1, steepness scale, shore distance m)
+//   a wave run's, per slot, wave and texel: (phase residual rad, amplitude factor, wavevector x, z rad/m)
+//   the shared, per slot and texel:         (depth m, breaking 0..1, steepness scale, shore distance m)
 // Terrain level of detail (CDLOD, Strugar 2009): each node the CPU selects draws one
 // patch of kTerrainPatchQuads x kTerrainPatchQuads quads; as its distance (terrain_lod.glsl)
 // nears the end of its level's range, its odd vertices slide onto the next level's grid.

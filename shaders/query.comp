@@ -14,9 +14,10 @@ layout(std430, set = kQuerySet, binding = eQueryBasePhases) readonly buffer Base
 layout(std430, set = kQuerySet, binding = eQueryPoints) readonly buffer Points { GpuQueryPoint points[]; };
 layout(std430, set = kQuerySet, binding = eQueryResults) writeonly buffer Results { GpuQueryResult results[]; };
 // Shore fields; cell origins relative to the shore grid's corner plus params.shore_offset (m).
-layout(std430, set = kQuerySet, binding = eQueryShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // [(slot * waves + wave) * kShoreSlotTexels + texel]
+layout(std430, set = kQuerySet, binding = eQueryShoreWaves) readonly buffer ShoreWavesBuf { vec4 shore_waves[]; };   // a run's [(slot * run waves + wave) * kShoreSlotTexels + texel]
 layout(std430, set = kQuerySet, binding = eQueryShoreShared) readonly buffer ShoreShared { vec4 shore_shared[]; };     // [slot * kShoreSlotTexels + texel]
-layout(std430, set = kQuerySet, binding = eQueryShorePages) readonly buffer ShorePages { uint shore_pages[]; };        // [tile]: its slot
+layout(std430, set = kQuerySet, binding = eQueryShorePages) readonly buffer ShorePages { uint shore_pages[]; };        // [tile]: its slot, grid after grid
+layout(std430, set = kQuerySet, binding = eQueryShoreLayers) readonly buffer ShoreLayers { GpuShoreLayer shore_layers[]; };  // the runs of waves
 layout(std430, set = kQuerySet, binding = eQueryCellOrigins) readonly buffer CellOrigins { vec2 cell_origin[]; };
 // A river: its query texels, its channel coordinates and current per texel, its waves.
 layout(std430, set = kQuerySet, binding = eQueryRiverTexels) readonly buffer RiverTexels { float river_texels[]; };

@@ -27,13 +27,13 @@ LaggedCompression g_lagged;
 // resolve (render LOD; queries pass no_wave_lod()).
 SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
     SurfaceSums s = surface_zero();
-    ShoreTap tap;
     g_shore_fields = kOpenWaterShore;
     g_lagged = lagged_zero();
-    if (shore) {
-        tap = shore_tap(shore_rel);
-        g_shore_fields = tap_shared(tap);
-    }
+    if (shore) g_shore_fields = tap_shared(shore_tap(shore_rel));
+    // The runs of waves in order: the next one's tap is taken where its first wave comes.
+    ShoreTap tap;
+    GpuShoreLayer layer;
+    uint next_layer = 0u, layer_end = 0u;
     for (uint i = 0u; i < WAVE_COUNT; ++i) {
         GpuWave w = waves[WAVE_FIRST + i];
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
@@ -43,7 +43,12 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         float q = w.steep_omega.x;
         if (shore) {
             // The wave as the shore shapes it: marched phase, local wavevector, shoaled amplitude.
-            vec4 local = tap_waves(tap, i);
+            if (i == layer_end) {
+                layer = shore_layer(next_layer++);
+                tap = shore_layer_tap(layer, shore_rel);
+                layer_end = layer.waves.x + layer.waves.y;
+            }
+            vec4 local = tap_waves(tap, layer, i - layer.waves.x);
             theta += local.x;
             kvec = local.zw;
             a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);

@@ -21,7 +21,8 @@ inline double tiled_coast_height(double r) {
     return std::clamp(20.0 - 0.15 * (r - (kCoastBeachRadius - 20.0 / 0.15)), -160.0, 40.0);
 }
 
-inline Result<Scene> tiled_coast_scene() {
+/// `texels_per_wavelength`: the scene's shore.texels_per_wavelength (SceneShore).
+inline Result<Scene> tiled_coast_scene(double texels_per_wavelength = kDefaultShoreTexelsPerWavelength) {
     constexpr int kPixels = 2048;
     constexpr double kSize = 4000.0, lo = -160.0, hi = 40.0;
     auto image = std::make_shared<Gray16Image>();
@@ -46,6 +47,7 @@ inline Result<Scene> tiled_coast_scene() {
     map.max_height = hi;
     map.image = std::move(image);
     scene.terrain = Terrain(map);
+    scene.shore.texels_per_wavelength = texels_per_wavelength;
     return scene;
 }
 

@@ -260,7 +260,8 @@ JSON
     done
     check "sidecar names extent, encoding and units" bash -c "grep -q '\"texel_m\"' baked/shore.json && grep -q '\"zero_pixel\"' baked/shore.json && grep -q '\"unit\": \"m\"' baked/shore.json"
     check "sidecar lists the waves" grep -q '"omega_rad_s"' baked/shore.json
-    check "the model's stored tiles, one PNG each" bash -c "n=\$(ls baked/tiles/x*_z*.png | wc -l) && test \$n -gt 0 && grep -q \"\\\"stored\\\": \$n,\" baked/shore.json"
+    check "the model's stored shared tiles, one PNG each" bash -c "n=\$(ls baked/tiles/shared/x*_z*.png | wc -l) && test \$n -gt 0 && grep -q \"\\\"stored\\\": \$n,\" baked/shore.json"
+    check "each run of waves' stored tiles" bash -c "ls -d baked/tiles/run0 && grep -q '\"first_wave\": 0' baked/shore.json"
     check "no temporary folder left" bash -c "! ls -d baked.tmp-* 2>/dev/null"
     check "the lakes and rivers are saved beside the shore" bash -c "test -s baked/bodies.json && test -s baked/river_00_psi.png && test -s baked/lake_00/shore.json"
     check "bake prints the bodies" grep -q 'river "brook": .* m to ocean' log.txt

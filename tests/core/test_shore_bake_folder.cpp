@@ -22,7 +22,7 @@ using test::TempDir;
 
 constexpr const char* kIslandScene = R"({"version": 1, "water_level": 0,
     "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
-    "ocean": "ocean_rolling", "shore": {"resolution": 96}})";
+    "ocean": "ocean_rolling", "shore": {"resolution": 96, "texels_per_wavelength": 4}})";
 
 /// Per field row: half the 16-bit step over the row's range across the stored slots
 /// (plus float rounding), and the largest difference between two models' stored slots.
@@ -69,19 +69,34 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     const ShoreWaves& back = **loaded;
     ASSERT_EQ(back.resolution(), model.resolution());
     EXPECT_DOUBLE_EQ(back.texel(), model.texel());
-    // The same tiles stored, every stored value within half its row's 16-bit step.
-    ASSERT_EQ(back.tiles().pages, model.tiles().pages);
-    ASSERT_EQ(back.tiles().texels.size(), model.tiles().texels.size());
-    ASSERT_GT(model.tiles().stored_tiles(), 0u);
-    const RowCheck rows = compare_stored_slots(model.tiles(), back.tiles(), model.wave_count());
-    for (std::size_t r = 0; r < rows.worst.size(); ++r) EXPECT_LE(rows.worst[r], rows.half_step[r]) << "row " << r;
+    // The same layers and tiles stored, every stored value within half its row's 16-bit step.
+    ASSERT_EQ(back.layers().size(), model.layers().size());
+    ASSERT_GT(model.shared().stored_tiles(), 0u);
+    std::size_t zeros_kept = 0, zeros_lost = 0;
+    auto compare = [&](const ShoreTiles& a, const ShoreTiles& b, std::size_t residual_rows, const char* what) {
+        ASSERT_EQ(b.pages, a.pages) << what;
+        ASSERT_EQ(b.texels.size(), a.texels.size()) << what;
+        const RowCheck rows = compare_stored_slots(a, b, residual_rows);
+        for (std::size_t r = 0; r < rows.worst.size(); ++r)
+            EXPECT_LE(rows.worst[r], rows.half_step[r]) << what << " row " << r;
+        zeros_kept += rows.zeros_kept;
+        zeros_lost += rows.zeros_lost;
+        // The slots not stored are the open sea's and dry land's, the same on both sides.
+        const std::size_t constant = gpu::kShoreFirstStoredSlot * ShoreTiles::kSlotTexels * a.stride;
+        EXPECT_TRUE(std::equal(a.texels.begin(), a.texels.begin() + constant, b.texels.begin())) << what;
+    };
+    compare(model.shared(), back.shared(), 0, "shared");
+    for (std::size_t l = 0; l < model.layers().size(); ++l) {
+        const ShoreWaveLayer &a = model.layers()[l], &b = back.layers()[l];
+        EXPECT_EQ(b.first, a.first);
+        EXPECT_EQ(b.count, a.count);
+        EXPECT_EQ(b.grid.resolution, a.grid.resolution);
+        EXPECT_DOUBLE_EQ(b.grid.texel, a.grid.texel);
+        compare(a.tiles, b.tiles, a.count, "run");
+    }
     // Offshore the residual is exactly 0 before and after: no seam where the fields end.
-    EXPECT_GT(rows.zeros_kept, 0u);
-    EXPECT_EQ(rows.zeros_lost, 0u);
-    // The slots not stored are the open sea's and dry land's, the same on both sides.
-    const std::size_t constant = gpu::kShoreFirstStoredSlot * ShoreTiles::kSlotTexels * model.tiles().stride;
-    EXPECT_TRUE(
-        std::equal(model.tiles().texels.begin(), model.tiles().texels.begin() + constant, back.tiles().texels.begin()));
+    EXPECT_GT(zeros_kept, 0u);
+    EXPECT_EQ(zeros_lost, 0u);
 
     // Queries over the island and its beaches agree within millimetres.
     auto body = scene->ocean.with_shore(*loaded);
@@ -124,18 +139,19 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     // A truncated sidecar, a bake of the previous format, a missing tile and a tile of the
     // wrong size name the file; a kind of tile that does not exist names the field.
     fs::copy_file(folder / "shore.json", dir.path / "shore.json.good");
-    { std::ofstream(folder / "shore.json") << R"({"version": 2, "water_level_m": )"; }
+    { std::ofstream(folder / "shore.json") << R"({"version": 3, "water_level_m": )"; }
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("shore.json"), std::string::npos);
-    { std::ofstream(folder / "shore.json") << R"({"version": 1, "water_level_m": 0})"; }
+    { std::ofstream(folder / "shore.json") << R"({"version": 2, "water_level_m": 0})"; }
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find("version"), std::string::npos);
     fs::copy_file(dir.path / "shore.json.good", folder / "shore.json", fs::copy_options::overwrite_existing);
-    const ShoreTiles& tiles = scene->ocean.shore()->tiles();
+    const ShoreTiles& tiles = scene->ocean.shore()->layers().back().tiles;
     const std::size_t first_stored =
         static_cast<std::size_t>(std::find_if(tiles.pages.begin(), tiles.pages.end(),
                                               [](std::uint32_t p) { return p >= gpu::kShoreFirstStoredSlot; }) -
                                  tiles.pages.begin());
-    const std::string tile_file = shore_tile_file(static_cast<int>(first_stored % tiles.tiles_per_side),
-                                                  static_cast<int>(first_stored / tiles.tiles_per_side));
+    const std::string tile_file = shore_tile_file(
+        shore_layer_folder(static_cast<int>(scene->ocean.shore()->layers().size()) - 1),
+        static_cast<int>(first_stored % tiles.tiles_per_side), static_cast<int>(first_stored / tiles.tiles_per_side));
     fs::remove(folder / tile_file);
     EXPECT_NE(message(scene->ocean.waves(), 0.0, scene->terrain).find(fs::path(tile_file).filename().string()),
               std::string::npos);

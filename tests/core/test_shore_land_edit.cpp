@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../shore_model_compare.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/scene_bake.hpp"
@@ -53,8 +54,7 @@ Scene island_scene(std::shared_ptr<Gray16Image> pixels) {
 
 void expect_same_shore(const SceneBake& a, const SceneBake& b) {
     ASSERT_TRUE(a.ocean_shore && b.ocean_shore && a.shoreline && b.shoreline);
-    EXPECT_EQ(a.ocean_shore->tiles().pages, b.ocean_shore->tiles().pages);
-    EXPECT_TRUE(a.ocean_shore->tiles().texels == b.ocean_shore->tiles().texels) << "the model's slots, bit for bit";
+    EXPECT_TRUE(test::same_tiles(*a.ocean_shore, *b.ocean_shore)) << "the model's layers and slots, bit for bit";
     EXPECT_TRUE(a.shoreline->depth == b.shoreline->depth);
     EXPECT_TRUE(a.shoreline->signed_distance == b.shoreline->signed_distance);
     EXPECT_TRUE(a.shoreline->gradient_x == b.shoreline->gradient_x);
@@ -86,8 +86,8 @@ TEST(ShoreLandEdit, AnEditOfDryLandIsTheFullBakeBitForBit) {
     ASSERT_TRUE(full.ok()) << full.error().message;
     expect_same_shore(*(*local)->bake, *(*full)->bake);
     // The edit shows: some stored depth differs from the first bake's.
-    const auto& before = (*first)->bake->ocean_shore->tiles().texels;
-    const auto& after = (*local)->bake->ocean_shore->tiles().texels;
+    const auto& before = (*first)->bake->ocean_shore->shared().texels;
+    const auto& after = (*local)->bake->ocean_shore->shared().texels;
     ASSERT_EQ(before.size(), after.size());
     std::size_t changed = 0;
     for (std::size_t k = 0; k < before.size(); ++k) changed += before[k] != after[k];

@@ -1,5 +1,6 @@
 // Shore queries through the SIMD kernel against the scalar double path of the same
-// evaluation, on the default island: the waterline, the surf zone and dry land, at
+// evaluation, on the default island (its waves on the model's grid, and in runs on
+// coarser grids): the waterline, the surf zone and dry land, at
 // three times. Tolerances: height 0.1 mm, normal 0.05 degrees, and exactly no motion
 // on dry land; at most 3% (waterline) and 1% (surf zone) of the points may stall
 // unconverged at kinks of the bilinear shore fields. Then determinism across thread counts, and queries while another
@@ -33,6 +34,20 @@ const Scene& island() {
     return scene;
 }
 
+/// The default island with its longer waves in runs on grids of 2 and 4 times the model's
+/// texel (4 texels a deep-water wavelength).
+const Scene& layered_island() {
+    static const Scene scene = [] {
+        auto plain = default_scene();
+        EXPECT_TRUE(plain.ok());
+        plain->shore.texels_per_wavelength = 4.0;
+        auto s = test::baked(std::move(plain));
+        EXPECT_TRUE(s.ok()) << (s ? "" : s.error().message);
+        return std::move(s).value();
+    }();
+    return scene;
+}
+
 /// Some (keep_in_16 in 16) of the texel centres whose shore distance lies in [lo, hi] m, jittered inside the texel.
 std::vector<glm::dvec2> band(double lo, double hi, std::size_t count, unsigned keep_in_16) {
     const ShoreWaves& shore = *island().ocean.shore();
@@ -59,8 +74,13 @@ struct Band {
 };
 
 TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
-    const WaterBody& body = island().ocean;
+  for (const Scene* scene : {&island(), &layered_island()}) {
+    const WaterBody& body = scene->ocean;
     ASSERT_TRUE(body.shore() && !body.shore()->trivial());
+    std::printf("%zu run(s) of waves\n", body.shore()->layers().size());
+    if (scene == &layered_island()) {
+        ASSERT_GE(body.shore()->layers().size(), 2u);
+    }
     for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01},
                           Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
         const std::vector<glm::dvec2> pts = band(b.lo, b.hi, 1500, b.keep_in_16);
@@ -103,6 +123,7 @@ TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
             }
         }
     }
+  }
 }
 
 // Depth and shore distance are properties of the query point: the shore model's grids

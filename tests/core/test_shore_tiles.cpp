@@ -8,6 +8,7 @@
 #include <random>
 
 #include "../baked_scene.hpp"
+#include "../shore_model_compare.hpp"
 #include "../tiled_coast.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -19,8 +20,9 @@
 namespace tidewater {
 namespace {
 
-/// The tiled coast's model baked twice: as a scene bakes it (the band), and with every
-/// tile stored (the open sea's and dry land's too), which the band is checked against.
+/// The tiled coast's model, every wave on the model's grid, baked twice: as a scene bakes
+/// it (the band), and with every tile stored (the open sea's and dry land's too), which
+/// the band is checked against.
 struct CoastModels {
     std::shared_ptr<const ShoreWaves> band, every;
 };
@@ -33,6 +35,7 @@ const CoastModels& coast_models() {
             ShoreWaveOptions options;
             options.resolution = 512;
             options.store_every_tile = every;
+            options.texels_per_wavelength = 0.0;
             auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
             EXPECT_TRUE(baked.ok()) << baked.error().message;
             if (baked.ok()) (every ? out.every : out.band) = *baked;
@@ -42,8 +45,24 @@ const CoastModels& coast_models() {
     return models;
 }
 
-std::uint32_t page_of(const ShoreWaves& model, int ti, int tj) {
-    return model.tiles().pages[static_cast<std::size_t>(tj) * model.tiles().tiles_per_side + ti];
+/// The tiled coast's model with its waves in runs: 8 texels a deep-water wavelength (half
+/// the default) puts the preset's longest waves on a grid of twice the model's texel.
+std::shared_ptr<const ShoreWaves> layered_coast() {
+    static const std::shared_ptr<const ShoreWaves> model = [] {
+        auto scene = test::tiled_coast_scene();
+        EXPECT_TRUE(scene.ok());
+        ShoreWaveOptions options;
+        options.resolution = 512;
+        options.texels_per_wavelength = 8.0;
+        auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
+        EXPECT_TRUE(baked.ok()) << baked.error().message;
+        return baked.ok() ? *baked : nullptr;
+    }();
+    return model;
+}
+
+std::uint32_t page_of(const ShoreTiles& tiles, int ti, int tj) {
+    return tiles.pages[static_cast<std::size_t>(tj) * tiles.tiles_per_side + ti];
 }
 
 /// The longest wave's wavenumber: where k h < pi for it, some wave feels the bottom.
@@ -60,10 +79,12 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
     ASSERT_TRUE(scene.ok());
     const ShoreWaves& model = *coast_models().band;
     const ShoreWaves& every = *coast_models().every;
-    const ShoreTiles& tiles = model.tiles();
+    ASSERT_EQ(model.layers().size(), 1u) << "every wave on the model's grid";
+    const ShoreTiles& tiles = model.shared();
+    EXPECT_EQ(model.layers()[0].tiles.pages, tiles.pages) << "the waves are stored where the shared fields are";
     const double k_long = longest_wavenumber(scene->ocean.waves());
     const int n = model.resolution(), m = tiles.tiles_per_side, tile = ShoreTiles::kTile;
-    EXPECT_EQ(every.tiles().stored_tiles(), static_cast<std::size_t>(m * m));
+    EXPECT_EQ(every.shared().stored_tiles(), static_cast<std::size_t>(m * m));
     ASSERT_EQ(m, (n + tile - 1) / tile);
     std::size_t stored = 0, open = 0, dry = 0;
     for (int tj = 0; tj < m; ++tj)
@@ -80,7 +101,7 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
                     if ((h > 0.0 && k_long * h < 1.1 * kPi) || std::abs(t.shore_distance()) < tile * model.texel())
                         near_coast = true;
                 }
-            const std::uint32_t page = page_of(model, ti, tj);
+            const std::uint32_t page = page_of(tiles, ti, tj);
             const bool is_stored = page >= gpu::kShoreFirstStoredSlot;
             stored += is_stored, open += page == gpu::kShoreOpenSlot, dry += page == gpu::kShoreDrySlot;
             if (feels) {
@@ -94,7 +115,7 @@ TEST(ShoreTiles, OnlyTheCoastalBandIsStored) {
     std::printf(
         "tiled coast: %zu of %d tiles stored (%.0f %%), %zu open sea, %zu dry land; %.1f MB (%.1f MB with every "
         "tile)\n",
-        stored, m * m, 100.0 * share, open, dry, tiles.bytes() / 1e6, every.tiles().bytes() / 1e6);
+        stored, m * m, 100.0 * share, open, dry, model.bytes() / 1e6, every.bytes() / 1e6);
     EXPECT_EQ(tiles.stored_tiles(), stored);
     EXPECT_GT(open, 0u);
     EXPECT_GT(dry, 0u);
@@ -120,7 +141,7 @@ TEST(ShoreTiles, SamplesMatchTheModelWithEveryTileStored) {
         const int n = model.resolution();
         const detail::GridTaps taps = detail::grid_taps(model.corner(), model.texel(), n, p);
         const int i = static_cast<int>(taps.k00 % n), j = static_cast<int>(taps.k00 / n);
-        const std::uint32_t page = page_of(model, i / ShoreTiles::kTile, j / ShoreTiles::kTile);
+        const std::uint32_t page = page_of(model.shared(), i / ShoreTiles::kTile, j / ShoreTiles::kTile);
         const LocalShore got = model.sample(p, local);
         const LocalShore want = every.sample(p, full);
         if (page >= gpu::kShoreFirstStoredSlot) {
@@ -194,65 +215,180 @@ TEST(ShoreTiles, TilesFromElsewhereAreChecked) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
     const auto waves = scene->ocean.waves().waves();
-    auto rebuilt = ShoreWaves::from_tiles(model.grid(), model.tiles(), waves);
+    const std::vector<ShoreWaveLayer> runs(model.layers().begin(), model.layers().end());
+    auto rebuilt = ShoreWaves::from_tiles(model.grid(), model.shared(), runs, waves);
     ASSERT_TRUE(rebuilt.ok()) << rebuilt.error().message;
-    EXPECT_EQ((*rebuilt)->tiles().texels, model.tiles().texels);
+    EXPECT_TRUE(test::same_tiles(**rebuilt, model));
+    auto refused = [&](const ShoreTiles& shared, const std::vector<ShoreWaveLayer>& layers, std::span<const Wave> w) {
+        auto r = ShoreWaves::from_tiles(model.grid(), shared, layers, w);
+        return r.ok() ? std::string("accepted") : r.error().message;
+    };
 
-    ShoreTiles bad_page = model.tiles();
+    ShoreTiles bad_page = model.shared();
     bad_page.pages[3] = static_cast<std::uint32_t>(bad_page.slot_count());
-    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), bad_page, waves).error().message.find("names slot"),
-              std::string::npos);
-    ShoreTiles short_pages = model.tiles();
+    EXPECT_NE(refused(bad_page, runs, waves).find("names slot"), std::string::npos);
+    ShoreTiles short_pages = model.shared();
     short_pages.pages.pop_back();
-    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), short_pages, waves).error().message.find("pages"),
-              std::string::npos);
-    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), model.tiles(), waves.subspan(1)).error().message.find("waves"),
-              std::string::npos);
-    ShoreTiles nan = model.tiles();
-    nan.texels.back() = std::nanf("");
-    EXPECT_NE(ShoreWaves::from_tiles(model.grid(), nan, waves).error().message.find("not finite"), std::string::npos);
-    ShoreTiles constant = model.tiles();
+    EXPECT_NE(refused(short_pages, runs, waves).find("pages"), std::string::npos);
+    EXPECT_NE(refused(model.shared(), runs, waves.subspan(1)).find("waves"), std::string::npos);
+    std::vector<ShoreWaveLayer> nan = runs;
+    nan[0].tiles.texels.back() = std::nanf("");
+    EXPECT_NE(refused(model.shared(), nan, waves).find("not finite"), std::string::npos);
+    std::vector<ShoreWaveLayer> gap = runs;
+    gap[0].first = 1;
+    EXPECT_NE(refused(model.shared(), gap, waves).find("expected a run from wave 0"), std::string::npos);
+    std::vector<ShoreWaveLayer> wrong_grid = runs;
+    wrong_grid[0].grid.resolution /= 2;
+    EXPECT_NE(refused(model.shared(), wrong_grid, waves).find("pages"), std::string::npos);
+    ShoreTiles constant = model.shared();
     std::fill(constant.texels.begin(), constant.texels.begin() + 100, 7.0f);  // the open sea's slot
-    auto refilled = ShoreWaves::from_tiles(model.grid(), constant, waves);
+    std::vector<ShoreWaveLayer> constant_runs = runs;
+    std::fill(constant_runs[0].tiles.texels.begin(), constant_runs[0].tiles.texels.begin() + 100, 7.0f);
+    auto refilled = ShoreWaves::from_tiles(model.grid(), constant, constant_runs, waves);
     ASSERT_TRUE(refilled.ok());
-    EXPECT_EQ((*refilled)->tiles().texels, model.tiles().texels);
+    EXPECT_TRUE(test::same_tiles(**refilled, model));
 }
 
 // Over a renderer's budget the model is drawn on every k-th texel: each coarse texel holds
 // the fine texel it stands on, coarse tiles are stored only where a fine one under them is,
 // and the bytes the renderer sizes the budget by are those of the model it then makes.
 TEST(ShoreTiles, ACoarsenedModelHoldsEveryKthTexel) {
-    const ShoreWaves& fine = *coast_models().band;
-    const std::size_t floats = fine.tiles().stride;
+    const ShoreWaves& fine = *layered_coast();
+    ASSERT_GE(fine.layers().size(), 2u);
+    // Each layer's grid and tiles coarsened alike.
+    auto layers_of = [](const ShoreWaves& m) {
+        std::vector<std::pair<ShoreGrid, const ShoreTiles*>> out{{m.grid(), &m.shared()}};
+        for (const ShoreWaveLayer& l : m.layers()) out.push_back({l.grid, &l.tiles});
+        return out;
+    };
     for (int stride : {2, 3, 5}) {
         const auto coarse = fine.coarsened(stride);
         ASSERT_TRUE(coarse);
-        EXPECT_EQ(coarse->resolution(), (fine.resolution() - 1) / stride + 1);
-        EXPECT_NEAR(coarse->texel(), fine.texel() * stride, 1e-12);
-        EXPECT_EQ(coarse->coarsened_device_bytes(1), coarse->tiles().device_bytes());
-        EXPECT_EQ(fine.coarsened_device_bytes(stride), coarse->tiles().device_bytes()) << "stride " << stride;
-        std::size_t differing = 0;
-        for (int j = 0; j < coarse->resolution(); ++j)
-            for (int i = 0; i < coarse->resolution(); ++i) {
-                const float* c = coarse->texel_values(i, j).t;
-                const float* f = fine.texel_values(i * stride, j * stride).t;
-                differing += !std::equal(c, c + floats, f);
-                EXPECT_NEAR(glm::length(coarse->texel_center(i, j) - fine.texel_center(i * stride, j * stride)), 0.0,
-                            1e-9);
-            }
+        EXPECT_EQ(coarse->coarsened_device_bytes(1), coarse->device_bytes());
+        EXPECT_EQ(fine.coarsened_device_bytes(stride), coarse->device_bytes()) << "stride " << stride;
+        const auto f = layers_of(fine), c = layers_of(*coarse);
+        ASSERT_EQ(c.size(), f.size());
+        std::size_t differing = 0, stored = 0, pages = 0;
+        for (std::size_t l = 0; l < f.size(); ++l) {
+            const auto& [fg, ft] = f[l];
+            const auto& [cg, ct] = c[l];
+            EXPECT_EQ(cg.resolution, (fg.resolution - 1) / stride + 1);
+            EXPECT_NEAR(cg.texel, fg.texel * stride, 1e-12);
+            for (int j = 0; j < cg.resolution; ++j)
+                for (int i = 0; i < cg.resolution; ++i) {
+                    const float* cv = ct->texel(i, j);
+                    const float* fv = ft->texel(i * stride, j * stride);
+                    differing += !std::equal(cv, cv + ft->stride, fv);
+                    const glm::dvec2 cc = cg.corner + cg.texel * glm::dvec2(i + 0.5, j + 0.5);
+                    const glm::dvec2 fc = fg.corner + fg.texel * glm::dvec2(i * stride + 0.5, j * stride + 0.5);
+                    EXPECT_NEAR(glm::length(cc - fc), 0.0, 1e-9);
+                }
+            stored += ct->stored_tiles();
+            pages += ct->pages.size();
+        }
         EXPECT_EQ(differing, 0u) << "stride " << stride;
-        const double fine_share = static_cast<double>(fine.tiles().stored_tiles()) /
-                                  static_cast<double>(fine.tiles().pages.size()),
-                     coarse_share = static_cast<double>(coarse->tiles().stored_tiles()) /
-                                    static_cast<double>(coarse->tiles().pages.size());
-        std::printf("stride %d: %zu of %zu tiles stored (%.0f %%; %.0f %% at full resolution), %.1f MiB\n", stride,
-                    coarse->tiles().stored_tiles(), coarse->tiles().pages.size(), 100.0 * coarse_share,
-                    100.0 * fine_share, static_cast<double>(coarse->tiles().device_bytes()) / 1048576.0);
-        EXPECT_LT(coarse->tiles().device_bytes(), fine.tiles().device_bytes());
-        EXPECT_GT(coarse->tiles().stored_tiles(), 0u);
-        EXPECT_LT(coarse->tiles().stored_tiles(), coarse->tiles().pages.size()) << "open sea and dry land left out";
+        std::printf("stride %d: %zu of %zu tiles stored over %zu layers, %.1f MiB (%.1f MiB at full resolution)\n",
+                    stride, stored, pages, f.size(), static_cast<double>(coarse->device_bytes()) / 1048576.0,
+                    static_cast<double>(fine.device_bytes()) / 1048576.0);
+        EXPECT_LT(coarse->device_bytes(), fine.device_bytes());
+        EXPECT_GT(stored, 0u);
+        EXPECT_LT(stored, pages) << "open sea and dry land left out";
     }
-    EXPECT_EQ(fine.coarsened(1)->tiles().texels, fine.tiles().texels);
+    EXPECT_TRUE(test::same_tiles(*fine.coarsened(1), fine));
+}
+
+
+// The preset's longer waves lie on coarser grids: each run's texel keeps at least the
+// asked texels a deep-water wavelength for its shortest wave (and twice that texel would
+// not, unless the run's grid would shrink under a tile), the runs cover the waves in order,
+// and the model takes less memory than with every wave on the model's grid. Depth and shore
+// distance stay the one-grid model's, bit for bit.
+TEST(ShoreLayers, LongWavesLieOnCoarserGrids) {
+    auto scene = test::tiled_coast_scene();
+    ASSERT_TRUE(scene.ok());
+    const ShoreWaves& layered = *layered_coast();
+    const ShoreWaves& one = *coast_models().band;
+    const auto waves = scene->ocean.waves().waves();
+    std::size_t next = 0;
+    for (const ShoreWaveLayer& run : layered.layers()) {
+        EXPECT_EQ(run.first, next);
+        next += run.count;
+        const double scale = run.grid.texel / layered.texel();
+        EXPECT_NEAR(scale, std::exp2(std::round(std::log2(scale))), 1e-9) << "a power of two";
+        EXPECT_EQ(run.grid.corner, layered.corner());
+        EXPECT_EQ(run.grid.resolution, (layered.resolution() + static_cast<int>(scale) - 1) / static_cast<int>(scale));
+        double shortest = 1e300;
+        for (std::size_t w = run.first; w < run.first + run.count; ++w) shortest = std::min(shortest, kTwoPi / waves[w].k);
+        if (scale > 1.0) {
+            EXPECT_LE(8.0 * run.grid.texel, shortest + 1e-9) << "8 texels to its shortest wave";
+        }
+        const bool finer_grid_small = (layered.resolution() + 2 * static_cast<int>(scale) - 1) /
+                                          (2 * static_cast<int>(scale)) < ShoreTiles::kTile;
+        EXPECT_TRUE(finer_grid_small || 16.0 * run.grid.texel > shortest) << "as coarse as keeps 8 texels";
+        std::printf("run of waves %zu to %zu: %.1f m texels (shortest wave %.1f m), %zu of %zu tiles stored\n",
+                    run.first, run.first + run.count - 1, run.grid.texel, shortest, run.tiles.stored_tiles(),
+                    run.tiles.pages.size());
+    }
+    EXPECT_EQ(next, waves.size());
+    EXPECT_GE(layered.layers().size(), 2u);
+    EXPECT_GT(layered.layers().front().grid.texel, layered.texel()) << "the spectrum's longest waves come first";
+    std::printf("layered: %.1f MiB on the GPU, %.1f MiB with every wave on the model's grid\n",
+                static_cast<double>(layered.device_bytes()) / 1048576.0,
+                static_cast<double>(one.device_bytes()) / 1048576.0);
+    EXPECT_LT(layered.device_bytes(), one.device_bytes() * 3 / 4);
+    for (int j = 0; j < layered.resolution(); j += 3)
+        for (int i = 0; i < layered.resolution(); i += 3) {
+            ASSERT_EQ(layered.texel_values(i, j).depth(), one.texel_values(i, j).depth());
+            ASSERT_EQ(layered.texel_values(i, j).shore_distance(), one.texel_values(i, j).shore_distance());
+        }
+}
+
+// The waves from coarser grids are the waves from the model's grid: against the same coast
+// on a grid twice as fine, the surface from the runs differs no more (within 10 %) than the
+// one-grid model's own does, over the coast's water at three times (the model's texel is
+// what limits it: the preset's shortest waves are 2.3 texels long on it).
+TEST(ShoreLayers, CoarserGridsKeepTheSurface) {
+    auto scene = test::tiled_coast_scene();
+    ASSERT_TRUE(scene.ok());
+    ShoreWaveOptions options;
+    options.resolution = 1024;
+    options.texels_per_wavelength = 0.0;
+    auto fine_model = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
+    ASSERT_TRUE(fine_model.ok()) << fine_model.error().message;
+    auto layered = scene->ocean.with_shore(layered_coast());
+    auto one = scene->ocean.with_shore(coast_models().band);
+    auto fine = scene->ocean.with_shore(*fine_model);
+    ASSERT_TRUE(layered.ok() && one.ok() && fine.ok());
+    std::vector<glm::dvec2> points;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> radius(test::kCoastBeachRadius, 1400.0), angle(0.0, kTwoPi);
+    for (int k = 0; k < 4000; ++k) {
+        const double r = radius(rng), a = angle(rng);
+        points.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    std::vector<SurfacePoint> a(points.size()), b(points.size()), f(points.size());
+    double sum2 = 0.0, layered2 = 0.0, one2 = 0.0;
+    std::size_t wet = 0;
+    for (double t : {0.0, 3.7, 11.2}) {
+        ASSERT_TRUE(query_surface(*layered, t, points, a).ok());
+        ASSERT_TRUE(query_surface(*one, t, points, b).ok());
+        ASSERT_TRUE(query_surface(*fine, t, points, f).ok());
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            if (!(a[k].wet && b[k].wet && f[k].wet)) continue;
+            ++wet;
+            sum2 += f[k].height * f[k].height;
+            layered2 += (a[k].height - f[k].height) * (a[k].height - f[k].height);
+            one2 += (b[k].height - f[k].height) * (b[k].height - f[k].height);
+        }
+    }
+    const double count = static_cast<double>(wet);
+    const double rms = std::sqrt(sum2 / count), rms_layered = std::sqrt(layered2 / count),
+                 rms_one = std::sqrt(one2 / count);
+    std::printf(
+        "surface over %zu wet points against a grid twice as fine (rms height %.3f m): runs %.3f m, one grid %.3f m\n",
+        wet, rms, rms_layered, rms_one);
+    EXPECT_GT(wet, 5000u);
+    EXPECT_LE(rms_layered, 1.1 * rms_one);
 }
 
 }  // namespace

@@ -164,17 +164,19 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverTheShore) {
     EXPECT_EQ(worst.wet_mismatch, 0u);
 }
 
-// The tiled shore model on a 2048² heightmap coast: points across the island's heart
-// (dry land's slot), the band of stored tiles and the open sea beyond it read the same
-// slots on both sides, within the same tolerances as the default island.
+// The tiled shore model on a 2048² heightmap coast, its longer waves in runs on coarser
+// grids: points across the island's heart (dry land's slot), the band of stored tiles and
+// the open sea beyond it read the same slots of every layer on both sides, within the same
+// tolerances as the default island.
 TEST_F(GpuQueryTest, MatchesCpuQueriesOverATiledCoast) {
     auto q = render::GpuQuery::create(context());
     ASSERT_TRUE(q.ok()) << q.error().message;
     query_ = std::move(q).value();
-    auto scene = test::baked(test::tiled_coast_scene());
+    auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     ASSERT_NE(scene->ocean.shore(), nullptr);
-    ASSERT_GT(scene->ocean.shore()->tiles().stored_tiles(), 0u);
+    ASSERT_GT(scene->ocean.shore()->shared().stored_tiles(), 0u);
+    ASSERT_GE(scene->ocean.shore()->layers().size(), 2u) << "runs of waves on their own grids";
     std::mt19937_64 rng(9);
     std::uniform_real_distribution<double> radius(300.0, 2100.0), angle(0.0, 2.0 * kPi);
     std::vector<glm::dvec2> pts(6000);

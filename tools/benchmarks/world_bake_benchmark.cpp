@@ -127,11 +127,18 @@ int main(int argc, char** argv) {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
-    const tidewater::ShoreTiles& tiles = (*baked)->ocean.shore()->tiles();
-    const double model_texel = (*baked)->ocean.shore()->texel();
-    const std::size_t pages = tiles.pages.size(), stored = tiles.stored_tiles();
-    const double model_mb = static_cast<double>(tiles.bytes()) / 1e6;
-    const double gpu_mb = static_cast<double>(tiles.device_bytes()) / 1e6;
+    const tidewater::ShoreWaves& model = *(*baked)->ocean.shore();
+    const double model_texel = model.texel();
+    const std::size_t pages = model.shared().pages.size(), stored = model.shared().stored_tiles();
+    const double model_mb = static_cast<double>(model.bytes()) / 1e6;
+    const double gpu_mb = static_cast<double>(model.device_bytes()) / 1e6;
+    // Each run of waves: its waves, texel and stored tiles.
+    std::string runs = "[";
+    for (const tidewater::ShoreWaveLayer& run : model.layers())
+        runs += (runs.size() > 1 ? ", " : "") + std::string("{\"waves\": ") + std::to_string(run.count) +
+                ", \"texel_m\": " + std::to_string(run.grid.texel) +
+                ", \"stored_tiles\": " + std::to_string(run.tiles.stored_tiles()) + "}";
+    runs += "]";
     // A brush stroke on the hills (2 m up over 25 m, a tenth of the side from the centre,
     // inland): re-baked from the bake just made, as an editor does.
     double land_edit = 0.0;
@@ -182,8 +189,10 @@ int main(int argc, char** argv) {
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
         "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"land_edit_s\": %.3f, "
         "\"land_edit_local\": %s, \"peak_rss_mb\": %.0f, "
-        "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"model_mb\": %.1f, \"gpu_shore_mb\": %.1f}\n",
+        "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
+        "\"gpu_shore_mb\": %.1f}\n",
         side, waves, seabed, resolution, model_texel, make, bake, save, load, land_edit,
-        land_edit_local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, model_mb, gpu_mb);
+        land_edit_local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(),
+        model_mb, gpu_mb);
     return 0;
 }

@@ -56,7 +56,8 @@ std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const
     const SceneBake& old = *previous->bake;
     const detail::LakeBake &now = bodies.lakes[l], &then = old.bodies->lakes[l];
     if (!old.lake_shores[l] || old.shore.resolution != scene.shore.resolution ||
-        old.shore.breaking_index != scene.shore.breaking_index || now.level != then.level ||
+        old.shore.breaking_index != scene.shore.breaking_index ||
+        old.shore.texels_per_wavelength != scene.shore.texels_per_wavelength || now.level != then.level ||
         now.inside != then.inside || !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
         !same_waves(scene.lakes[l].body.waves(), previous->lakes[l].body.waves()))
         return nullptr;
@@ -88,6 +89,7 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
         model_options.resolution = scene.shore.resolution;
         model_options.region = detail::lake_basin_region(bodies.lakes[l]);
         model_options.breaking_index = scene.shore.breaking_index;
+        model_options.texels_per_wavelength = scene.shore.texels_per_wavelength;
         model_options.threads = options.threads;
         model_options.cancel = options.cancel;
         model_options.progress = [&](double f) { progress((static_cast<double>(l) + f) / static_cast<double>(count)); };
@@ -111,7 +113,9 @@ bool same_ocean_shore_inputs(const Scene& scene, int distance_resolution, const 
         return false;
     const SceneBake& old = *previous->bake;
     return old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
-           old.shore.breaking_index == scene.shore.breaking_index && old.distance_resolution == distance_resolution &&
+           old.shore.breaking_index == scene.shore.breaking_index &&
+           old.shore.texels_per_wavelength == scene.shore.texels_per_wavelength &&
+           old.distance_resolution == distance_resolution &&
            same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
@@ -167,6 +171,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     ShoreWaveOptions model_options;
     model_options.resolution = scene.shore.resolution;
     model_options.breaking_index = scene.shore.breaking_index;
+    model_options.texels_per_wavelength = scene.shore.texels_per_wavelength;
     model_options.threads = options.threads;
     model_options.cancel = options.cancel;
     model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };

@@ -196,7 +196,9 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
     if (!scene.has("shore")) return shore;
     auto r = ObjectReader::open(scene.at("shore"), scene.source(), "/shore");
     if (!r) return r.error();
-    if (auto st = r->allow_only({"enabled", "resolution", "distance_resolution", "breaking_index", "bake"}); !st)
+    if (auto st = r->allow_only(
+            {"enabled", "resolution", "distance_resolution", "breaking_index", "texels_per_wavelength", "bake"});
+        !st)
         return st.error();
     if (r->has("enabled")) {
         if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
@@ -214,9 +216,16 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
     shore.distance_resolution = static_cast<int>(distance_resolution);
     if (auto st = r->number("breaking_index", shore.breaking_index); !st) return st.error();
     if (auto st = check_range(*r, "breaking_index", shore.breaking_index, 0.3, 1.2, ""); !st) return st.error();
+    if (auto st = r->number("texels_per_wavelength", shore.texels_per_wavelength); !st) return st.error();
+    if (shore.texels_per_wavelength != 0.0)
+        if (auto st = check_range(*r, "texels_per_wavelength", shore.texels_per_wavelength, 4.0, 64.0, " (or 0)"); !st)
+            return st.error();
     if (r->has("bake")) {
-        if (r->has("resolution") || r->has("distance_resolution") || r->has("breaking_index"))
-            return r->error("bake", "a saved bake fixes the resolutions and breaking index: give either bake or those");
+        if (r->has("resolution") || r->has("distance_resolution") || r->has("breaking_index") ||
+            r->has("texels_per_wavelength"))
+            return r->error("bake",
+                            "a saved bake fixes the resolutions, breaking index and texels per wavelength: give "
+                            "either bake or those");
         std::string folder;
         if (auto st = r->string("bake", folder); !st) return st.error();
         if (folder.empty()) return r->error("bake", "expected a folder written by tidewater bake");

@@ -43,6 +43,7 @@ inline constexpr std::array<BindingRow, gpu::eFrameBindingCount> kFrameSetRows =
     {gpu::eFramePatchList, binding_types::kStorage},
     {gpu::eFrameWakePoints, binding_types::kStorage},
     {gpu::eFrameShorePages, binding_types::kStorage},
+    {gpu::eFrameShoreLayers, binding_types::kStorage},
 }};
 
 /// Set gpu::kQuerySet of the GPU query pipeline (query.comp).
@@ -59,6 +60,7 @@ inline constexpr std::array<BindingRow, gpu::eQueryBindingCount> kQuerySetRows =
     {gpu::eQueryRiverWaves, binding_types::kStorage},
     {gpu::eQueryWakePoints, binding_types::kStorage},
     {gpu::eQueryShorePages, binding_types::kStorage},
+    {gpu::eQueryShoreLayers, binding_types::kStorage},
 }};
 
 /// The most bindings a set has (write_set writes a set without allocating).

@@ -71,6 +71,7 @@ struct GpuQuery::Impl {
         r[gpu::eQueryShoreWaves] = detail::bound_buffer(shore.per_wave());
         r[gpu::eQueryShoreShared] = detail::bound_buffer(shore.shared());
         r[gpu::eQueryShorePages] = detail::bound_buffer(shore.pages());
+        r[gpu::eQueryShoreLayers] = detail::bound_buffer(shore.layers());
         r[gpu::eQueryCellOrigins] = detail::bound_buffer(cell_origins.handle());
         r[gpu::eQueryRiverTexels] = detail::bound_buffer(river_texels.handle());
         r[gpu::eQueryRiverChannel] = detail::bound_buffer(river_channel.handle());

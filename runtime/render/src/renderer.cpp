@@ -232,6 +232,7 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     r[gpu::eFrameShoreWaves] = bound_buffer(shore.per_wave());
     r[gpu::eFrameShoreShared] = bound_buffer(shore.shared());
     r[gpu::eFrameShorePages] = bound_buffer(shore.pages());
+    r[gpu::eFrameShoreLayers] = bound_buffer(shore.layers());
     r[gpu::eFrameBodyDraws] = bound_buffer(slot.draws.handle());
     r[gpu::eFrameRiverTexels] = bound_buffer(bodies.river_texels.handle());
     r[gpu::eFrameRiverChannel] = bound_buffer(bodies.river_channel.handle());

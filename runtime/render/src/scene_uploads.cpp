@@ -19,30 +19,43 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
     for (std::size_t m = 0; m < models.size(); ++m) {
         const ShoreWaves* shore = models[m];
         if (!shore) continue;
-        if (!any) p.per_wave.clear(), p.shared.clear(), p.pages.clear(), any = true;
-        const ShoreTiles& tiles = shore->tiles();
+        if (!any) p.per_wave.clear(), p.shared.clear(), p.pages.clear(), p.layers.clear(), any = true;
+        const ShoreTiles& shared = shore->shared();
         ShorePlacement& place = placements[m];
-        place = {m < placed_as.size() ? placed_as[m] : shore, static_cast<std::uint32_t>(p.per_wave.size()),
+        place = {m < placed_as.size() ? placed_as[m] : shore, static_cast<std::uint32_t>(p.layers.size()),
                  static_cast<std::uint32_t>(p.shared.size()), static_cast<std::uint32_t>(p.pages.size())};
         place.texel = shore->texel();
         place.corner = shore->corner();
         place.resolution = shore->resolution();
-        p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());
-        const std::size_t nw = shore->wave_count(), stride = tiles.stride;
-        for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot) {
-            const float* texels = tiles.texels.data() + slot * ShoreTiles::kSlotTexels * stride;
-            for (std::size_t w = 0; w < nw; ++w)
-                for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
-                    const float* t = texels + k * stride;
-                    p.per_wave.push_back({t[w], t[nw + w], t[2 * nw + w], t[3 * nw + w]});
-                }
-            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
-                const float* t = texels + k * stride + 4 * nw;
-                p.shared.push_back({t[0], t[1], t[2], t[3]});
+        p.pages.insert(p.pages.end(), shared.pages.begin(), shared.pages.end());
+        for (std::size_t k = 0; k < shared.slot_count() * ShoreTiles::kSlotTexels; ++k) {
+            const float* t = shared.texels.data() + k * shared.stride;
+            p.shared.push_back({t[0], t[1], t[2], t[3]});
+        }
+        for (const ShoreWaveLayer& layer : shore->layers()) {
+            const glm::dvec2 offset = layer.grid.corner - shore->corner();
+            gpu::GpuShoreLayer record;
+            record.grid = glm::vec4(static_cast<float>(offset.x), static_cast<float>(offset.y),
+                                    static_cast<float>(layer.grid.texel), static_cast<float>(layer.grid.resolution));
+            record.waves = glm::uvec4(static_cast<std::uint32_t>(layer.first), static_cast<std::uint32_t>(layer.count),
+                                      static_cast<std::uint32_t>(p.pages.size()),
+                                      static_cast<std::uint32_t>(p.per_wave.size()));
+            p.layers.push_back(record);
+            const ShoreTiles& tiles = layer.tiles;
+            p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());
+            const std::size_t nw = layer.count, stride = tiles.stride;
+            for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot) {
+                const float* texels = tiles.texels.data() + slot * ShoreTiles::kSlotTexels * stride;
+                for (std::size_t w = 0; w < nw; ++w)
+                    for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+                        const float* t = texels + k * stride;
+                        p.per_wave.push_back({t[w], t[nw + w], t[2 * nw + w], t[3 * nw + w]});
+                    }
             }
         }
     }
-    if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // a model without waves
+    if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // models without waves
+    if (p.layers.empty()) p.layers.push_back(gpu::GpuShoreLayer{});
     return p;
 }
 
@@ -81,12 +94,13 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     if (packed.per_wave.size() > std::numeric_limits<std::uint32_t>::max())
         return Error{ErrorCode::invalid_argument,
                      fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
-    GpuBuffer fresh[3];
-    const std::pair<const void*, std::size_t> data[3] = {
+    GpuBuffer fresh[4];
+    const std::pair<const void*, std::size_t> data[4] = {
         {packed.per_wave.data(), packed.per_wave.size() * sizeof(glm::vec4)},
         {packed.shared.data(), packed.shared.size() * sizeof(glm::vec4)},
-        {packed.pages.data(), packed.pages.size() * sizeof(std::uint32_t)}};
-    for (int i = 0; i < 3; ++i) {
+        {packed.pages.data(), packed.pages.size() * sizeof(std::uint32_t)},
+        {packed.layers.data(), packed.layers.size() * sizeof(gpu::GpuShoreLayer)}};
+    for (int i = 0; i < 4; ++i) {
         auto made = GpuBuffer::storage_with(ctx, data[i].first, data[i].second);
         if (!made) return made.error();
         fresh[i] = std::move(made).value();
@@ -94,6 +108,7 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     per_wave_ = std::move(fresh[0]);
     shared_ = std::move(fresh[1]);
     pages_ = std::move(fresh[2]);
+    layers_ = std::move(fresh[3]);
     placements_ = std::move(placements);
     stride_ = stride;
     max_bytes_ = max_bytes;

@@ -20,23 +20,25 @@
 
 namespace tidewater::render::detail {
 
-/// The shore fields packed for the shaders (shore_fields.glsl), model after model, each
-/// model's tiles slot after slot: one vec4 per slot, wave and texel (phase residual,
-/// amplitude factor, wavevector x, z), one per slot and texel (depth, breaking,
-/// steepness scale, shore distance) and its pages (a slot per tile); one zero
+/// The shore fields packed for the shaders (shore_fields.glsl), model after model: each
+/// model's shared layer slot after slot (one vec4 per slot and texel: depth, breaking,
+/// steepness scale, shore distance), its runs of waves (one vec4 per slot, wave and texel:
+/// phase residual, amplitude factor, wavevector x, z), a record per run (GpuShoreLayer),
+/// and the pages of its shared grid and of each run's (a slot per tile); one zero
 /// placeholder each without any.
 struct PackedShore {
     std::vector<glm::vec4> per_wave{glm::vec4(0.0f)};
     std::vector<glm::vec4> shared{glm::vec4(0.0f)};
     std::vector<std::uint32_t> pages{0u};
+    std::vector<gpu::GpuShoreLayer> layers{gpu::GpuShoreLayer{}};
 };
 
-/// Where one model's fields start in the packed buffers (elements) and the grid they
-/// were packed on: the model's own, or every `stride`-th texel of it; model null: none.
+/// Where one model's fields start in the packed buffers (elements) and the shared grid
+/// they were packed on: the model's own, or every `stride`-th texel of it; model null: none.
 struct ShorePlacement {
     const ShoreWaves* model = nullptr;
-    std::uint32_t per_wave = 0, shared = 0, pages = 0;
-    glm::dvec2 corner{0.0};  ///< world xz of the packed grid's outer corner, m
+    std::uint32_t layers = 0, shared = 0, pages = 0;  ///< its first run record, shared vec4, shared page
+    glm::dvec2 corner{0.0};  ///< world xz of the packed shared grid's outer corner, m
     double texel = 1.0;      ///< m
     int resolution = 0;      ///< texels per side
 };
@@ -68,8 +70,8 @@ class ShoreBuffers {
     Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
         return upload(ctx, Models{shore});
     }
-    /// Bytes of the three buffers.
-    std::uint64_t bytes() const { return per_wave_.size() + shared_.size() + pages_.size(); }
+    /// Bytes of the four buffers.
+    std::uint64_t bytes() const { return per_wave_.size() + shared_.size() + pages_.size() + layers_.size(); }
     /// Texels skipped per texel kept (1: the models' own grids).
     int stride() const { return stride_; }
 
@@ -80,13 +82,14 @@ class ShoreBuffers {
     VkBuffer per_wave() const { return per_wave_.handle(); }
     VkBuffer shared() const { return shared_.handle(); }
     VkBuffer pages() const { return pages_.handle(); }
+    VkBuffer layers() const { return layers_.handle(); }
 
   private:
     static const ShoreWaves* wanted(const std::shared_ptr<const ShoreWaves>& shore) {
         return shore && !shore->trivial() ? shore.get() : nullptr;
     }
 
-    GpuBuffer per_wave_, shared_, pages_;
+    GpuBuffer per_wave_, shared_, pages_, layers_;
     int stride_ = 1;
     std::uint64_t max_bytes_ = 0;
     std::vector<ShorePlacement> placements_;

@@ -25,31 +25,32 @@ Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name,
     return detail::write_field_png(dir, name, values, n, n, unit);
 }
 
-/// The model's tiles: which tiles are stored, and a 16-bit grey PNG per stored tile whose
-/// row r holds field row r at the slot's texels, each row encoded over its range across
-/// every stored tile.
-Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
-    const ShoreTiles& t = m.tiles();
-    const std::size_t rows = t.stride, nw = m.wave_count(), slots = t.slot_count();
+/// One layer's tiles: which tiles are stored, and a 16-bit grey PNG per stored tile (in
+/// tiles/`layer`/) whose row r holds field row r at the slot's texels, each row encoded over
+/// its range across every stored tile. `first` and `waves`: the layer's run of waves (0
+/// waves: the shared layer).
+Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreTiles& t, const std::string& layer,
+                                   std::size_t first, std::size_t waves) {
+    const std::size_t rows = t.stride, slots = t.slot_count();
     std::vector<double> lo(rows, 0.0), hi(rows, 0.0);
     for (std::size_t slot = gpu::kShoreFirstStoredSlot; slot < slots; ++slot)
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
             const float* v = t.texels.data() + (slot * ShoreTiles::kSlotTexels + k) * rows;
-            const bool first = slot == gpu::kShoreFirstStoredSlot && k == 0;
+            const bool first_value = slot == gpu::kShoreFirstStoredSlot && k == 0;
             for (std::size_t r = 0; r < rows; ++r) {
                 const double value = static_cast<double>(v[r]);
-                lo[r] = first ? value : std::min(lo[r], value);
-                hi[r] = first ? value : std::max(hi[r], value);
+                lo[r] = first_value ? value : std::min(lo[r], value);
+                hi[r] = first_value ? value : std::max(hi[r], value);
             }
         }
     std::vector<detail::FieldEncoding> encodings(rows);
     nlohmann::json row_list = nlohmann::json::array();
     for (std::size_t r = 0; r < rows; ++r) {
         encodings[r] = detail::FieldEncoding::covering(lo[r], hi[r]);
-        const ShoreRowName name = shore_row_name(r, nw);
+        const ShoreRowName name = shore_row_name(r, waves);
         nlohmann::json row = {
             {"field", name.field}, {"unit", name.unit}, {"zero_pixel", encodings[r].zero}, {"step", encodings[r].step}};
-        if (name.wave >= 0) row["wave"] = name.wave;
+        if (name.wave >= 0) row["wave"] = first + static_cast<std::size_t>(name.wave);
         row_list.push_back(row);
     }
     std::string kinds;
@@ -57,10 +58,9 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
     for (std::uint32_t page : t.pages)
         kinds.push_back(page == gpu::kShoreOpenSlot ? 'o' : page == gpu::kShoreDrySlot ? 'd' : 's');
     std::error_code ec;
-    fs::create_directories(temp / "tiles", ec);
-    if (ec)
-        return Error{ErrorCode::io_error,
-                     fmt::format("{}: cannot create the folder: {}", (temp / "tiles").string(), ec.message())};
+    const fs::path folder = temp / "tiles" / layer;
+    fs::create_directories(folder, ec);
+    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create the folder: {}", folder.string(), ec.message())};
     const int side = t.tiles_per_side;
     std::vector<std::size_t> stored;
     for (std::size_t k = 0; k < t.pages.size(); ++k)
@@ -76,10 +76,10 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
         for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
             for (std::size_t r = 0; r < rows; ++r)
                 img.pixels[r * ShoreTiles::kSlotTexels + texel] = encodings[r].encode(slot[texel * rows + r]);
-        written[s] =
-            detail::write_png_gray16(temp / shore_tile_file(static_cast<int>(k % static_cast<std::size_t>(side)),
-                                                            static_cast<int>(k / static_cast<std::size_t>(side))),
-                                     img);
+        written[s] = detail::write_png_gray16(
+            temp / shore_tile_file(layer, static_cast<int>(k % static_cast<std::size_t>(side)),
+                                   static_cast<int>(k / static_cast<std::size_t>(side))),
+            img);
     });
     for (const Status& st : written)
         if (!st) return st.error();
@@ -90,18 +90,33 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreWaves& m) {
                           {"rows", row_list}};
 }
 
+nlohmann::json grid_json(const ShoreGrid& g) {
+    return {{"resolution", g.resolution},
+            {"texel_m", g.texel},
+            {"corner_m", {g.corner.x, g.corner.y}},
+            {"size_m", g.texel * g.resolution}};
+}
+
 /// Fills `temp` with the bake.
 Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
     const ShoreWaves& m = *c.model;
-    const int n = m.resolution();
-    nlohmann::json model = {{"resolution", n},
-                            {"texel_m", m.texel()},
-                            {"corner_m", {m.corner().x, m.corner().y}},
-                            {"size_m", m.texel() * n},
-                            {"breaking_index", c.breaking_index}};
-    auto tiles = write_tiles(temp, m);
+    nlohmann::json model = grid_json(m.grid());
+    model["breaking_index"] = c.breaking_index;
+    auto tiles = write_tiles(temp, m.shared(), shore_layer_folder(-1), 0, 0);
     if (!tiles) return tiles.error();
     model["tiles"] = std::move(tiles).value();
+    model["runs"] = nlohmann::json::array();
+    for (std::size_t r = 0; r < m.layers().size(); ++r) {
+        const ShoreWaveLayer& layer = m.layers()[r];
+        nlohmann::json run = grid_json(layer.grid);
+        run["first_wave"] = layer.first;
+        run["waves"] = layer.count;
+        auto run_tiles =
+            write_tiles(temp, layer.tiles, shore_layer_folder(static_cast<int>(r)), layer.first, layer.count);
+        if (!run_tiles) return run_tiles.error();
+        run["tiles"] = std::move(run_tiles).value();
+        model["runs"].push_back(std::move(run));
+    }
     const auto waves = c.waves->waves();
     model["waves"] = nlohmann::json::array();
     for (std::size_t i = 0; i < waves.size(); ++i) {

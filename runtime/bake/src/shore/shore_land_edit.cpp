@@ -120,6 +120,19 @@ std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& a
                         d.width(), field->depth.data() + field->index(d.i0, j));
     }
 
+    // A run of waves on a coarser grid stores no depth: its texel centres under the edit
+    // (and a step around) must be dry before and after too, so that its fields stay as they were.
+    for (const ShoreWaveLayer& layer : model.layers()) {
+        const ShoreGrid& g = layer.grid;
+        if (g.resolution == model.resolution() && g.texel == model.texel() && g.corner == model.corner()) continue;
+        const TexelRange r = texels_in(g.resolution, g.texel, g.corner, rect);
+        if (r.empty()) continue;
+        auto before_depth = [&](int i, int j) {
+            return static_cast<float>(water_level - before.height_at(g.corner + g.texel * glm::dvec2(i + 0.5, j + 0.5)));
+        };
+        if (!dry_depths(r, g.resolution, g.texel, g.corner, after, water_level, before_depth)) return std::nullopt;
+    }
+
     const int nm = model.resolution();
     const TexelRange m = texels_in(nm, model.texel(), model.corner(), rect);
     if (m.empty()) return LandEdit{std::move(field), model_ptr, 0};

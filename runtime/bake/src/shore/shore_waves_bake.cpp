@@ -9,6 +9,8 @@
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <memory>
 #include <mutex>
 #include <span>
 
@@ -26,20 +28,16 @@ namespace {
 constexpr double kDeepKh = kPi;
 constexpr double kMaxFold = 0.95;
 
-/// The model's own grid from a shoreline baked at another resolution: depth from the
-/// terrain at this grid's texel centres; distance and gradient sampled from `shoreline`,
+/// `target`'s grid over the terrain: depth from the terrain at its texel centres;
+/// distance and gradient sampled from `from` (a shoreline field at another resolution),
 /// the distance signed by the texel's own depth so that it agrees with `depth`.
-Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level, int n, const ShoreField& shoreline,
-                                      unsigned threads) {
+Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, const ShoreGrid& target,
+                                  const ShoreField& from, unsigned threads) {
     ShoreField g;
+    const int n = target.resolution;
     g.resolution = n;
-    const double half = terrain.extent_half_size();
-    g.texel = 2.0 * half / n;
-    g.corner = terrain.extent_center() - glm::dvec2(half);
-    if (std::abs(shoreline.texel * shoreline.resolution - 2.0 * half) > 1e-6 * half ||
-        glm::length(shoreline.corner - g.corner) > 1e-6 * half)
-        return Error{ErrorCode::invalid_argument,
-                     "shore waves: the shoreline field covers another extent than the terrain"};
+    g.texel = target.texel;
+    g.corner = target.corner;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     g.depth.resize(count);
     g.signed_distance.resize(count);
@@ -55,8 +53,8 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
             if (!std::isfinite(depth)) finite = false;
             g.depth[k] = static_cast<float>(depth);
             g.signed_distance[k] =
-                static_cast<float>(std::copysign(std::abs(shoreline.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
-            glm::dvec2 grad{shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)};
+                static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+            glm::dvec2 grad{from.sample(from.gradient_x, p), from.sample(from.gradient_z, p)};
             const double len = glm::length(grad);
             grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
             g.gradient_x[k] = static_cast<float>(grad.x);
@@ -67,6 +65,18 @@ Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level
         return Error{ErrorCode::invalid_argument,
                      "shore waves: the terrain height is not finite somewhere on the model grid"};
     return g;
+}
+
+/// The model's own grid from a shoreline baked at another resolution over the terrain's extent.
+Result<ShoreField> resample_shoreline(const Terrain& terrain, double water_level, int n, const ShoreField& shoreline,
+                                      unsigned threads) {
+    const double half = terrain.extent_half_size();
+    const ShoreGrid target{n, 2.0 * half / n, terrain.extent_center() - glm::dvec2(half)};
+    if (std::abs(shoreline.texel * shoreline.resolution - 2.0 * half) > 1e-6 * half ||
+        glm::length(shoreline.corner - target.corner) > 1e-6 * half)
+        return Error{ErrorCode::invalid_argument,
+                     "shore waves: the shoreline field covers another extent than the terrain"};
+    return resampled_grid(terrain, water_level, target, shoreline, threads);
 }
 
 Error cancelled() {
@@ -138,51 +148,68 @@ MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
     return m;
 }
 
-/// The tiles the bake stores, and the grid tile behind each stored slot.
+/// A grid's tiles as the bake fills them, and the grid tile behind each stored slot.
 struct TilePlan {
-    ShoreTiles tiles;               ///< pages set, texels sized; slots 0 and 1 filled
+    ShoreGrid grid;
+    ShoreTiles tiles;               ///< pages set, texels sized, slots 0 and 1 filled
     std::vector<std::size_t> tile;  ///< per stored slot (from kShoreFirstStoredSlot): its tile
 };
 
-/// Which tiles to store, known before any wave is marched: a tile is open sea when the
-/// longest wave is in deep water (k h >= pi) at every texel of its slot, so that every wave
-/// keeps its open-sea phase there and shoaling changes its amplitude and wavevector by
-/// under 0.4 %, and the open sea's waves neither break nor fold anywhere in it; dry land
-/// when every texel is dry and a tile or more from the shoreline. The rest is stored.
-TilePlan plan_tiles(std::span<const Wave> waves, const ShoreField& field, double breaking_index, bool every_tile,
-                    unsigned threads) {
-    TilePlan plan;
-    ShoreTiles& t = plan.tiles;
-    const int n = field.resolution;
-    t.resolution = n;
-    t.tiles_per_side = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
-    t.stride = ShoreWaves::query_texel_stride(waves.size());
-    const std::size_t m = static_cast<std::size_t>(t.tiles_per_side);
-    double longest = 0.0, energy = 0.0, fold = 0.0;
-    for (const Wave& w : waves) {
-        longest = longest == 0.0 ? w.omega : std::min(longest, w.omega);
-        energy += w.amplitude * w.amplitude;
+/// What decides which tiles of a layer are left out as open sea: its longest wave
+/// (lowest frequency), and the energy and fold of every wave (breaking and folding are
+/// the waves' together).
+struct OpenSeaTest {
+    double longest_omega = 0.0;
+    double energy = 0.0;      ///< sum of A^2, m^2
+    bool open_folds = false;  ///< the open sea's waves fold: no tile is open sea
+};
+/// `layer` is waves [first, first + count) of `all`. Where the layer's waves are deep the
+/// others may not be: their amplitudes count twice (the most refraction raises one), so
+/// that the layer is stored wherever the waves together may break.
+OpenSeaTest open_sea_test(std::span<const Wave> all, std::size_t first, std::size_t count) {
+    OpenSeaTest t;
+    double fold = 0.0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const Wave& w = all[i];
+        const bool own = i >= first && i < first + count;
+        t.energy += (own ? 1.0 : 4.0) * w.amplitude * w.amplitude;
         fold += w.steepness * w.k * w.amplitude;
+        if (own) t.longest_omega = t.longest_omega == 0.0 ? w.omega : std::min(t.longest_omega, w.omega);
     }
     // Deep water shortens a wave by at most 0.4 % (k h >= pi): the fold with that margin.
-    const bool open_folds = fold * 1.01 > kMaxFold;
+    t.open_folds = fold * 1.01 > kMaxFold || all.empty();
+    return t;
+}
+
+/// Which tiles of `field`'s grid to store, known before any wave is marched: a tile is
+/// open sea when the layer's longest wave is in deep water (k h >= pi) at every texel of
+/// its slot, so that each of its waves keeps its open-sea phase there and shoaling changes
+/// its amplitude and wavevector by under 0.4 %, and the open sea's waves neither break nor
+/// fold anywhere in it; dry land when every texel is dry and a tile or more from the
+/// shoreline. The rest is stored. `open` is the layer's waves' k0 D (none: the shared layer).
+TilePlan plan_tiles(const OpenSeaTest& test, std::span<const glm::dvec2> open, const ShoreField& field,
+                    double breaking_index, bool every_tile, unsigned threads) {
+    TilePlan plan;
+    plan.grid = {field.resolution, field.texel, field.corner};
+    ShoreTiles& t = plan.tiles;
+    t = ShoreTiles::open_grid(field.resolution, open.empty() ? kShoreSharedRows : 4 * open.size());
+    const std::size_t m = static_cast<std::size_t>(t.tiles_per_side);
     std::vector<char> kinds(m * m, 's');
     detail::parallel_for_each(m, threads, [&](std::size_t tj) {
         for (std::size_t ti = 0; ti < m; ++ti) {
             const std::size_t tile = tj * m + ti;
-            bool open = !every_tile && !open_folds && !waves.empty(), dry = !every_tile;
-            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && (open || dry); ++k) {
+            bool is_open = !every_tile && !test.open_folds, dry = !every_tile;
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && (is_open || dry); ++k) {
                 const std::size_t g = t.grid_index(tile, k);
                 const double h = static_cast<double>(field.depth[g]);
                 dry = dry && far_dry_land(h, static_cast<double>(field.signed_distance[g]), field.texel);
                 // Breaking starts at 0.85 of the cap (cap_breaking); shoaling in deep water stays under 1.
-                open = open && h > 0.0 && wavenumber_at_depth(longest, h) * h >= kDeepKh &&
-                       std::sqrt(energy) < 0.8 * 0.5 * breaking_index * h;
+                is_open = is_open && h > 0.0 && wavenumber_at_depth(test.longest_omega, h) * h >= kDeepKh &&
+                          std::sqrt(test.energy) < 0.8 * 0.5 * breaking_index * h;
             }
-            kinds[tile] = open ? 'o' : dry ? 'd' : 's';
+            kinds[tile] = is_open ? 'o' : dry ? 'd' : 's';
         }
     });
-    t.pages.assign(m * m, gpu::kShoreOpenSlot);
     for (std::size_t tile = 0; tile < kinds.size(); ++tile) {
         if (kinds[tile] == 'd') t.pages[tile] = gpu::kShoreDrySlot;
         if (kinds[tile] != 's') continue;
@@ -190,30 +217,32 @@ TilePlan plan_tiles(std::span<const Wave> waves, const ShoreField& field, double
         plan.tile.push_back(tile);
     }
     t.texels.assign((gpu::kShoreFirstStoredSlot + plan.tile.size()) * ShoreTiles::kSlotTexels * t.stride, 0.0f);
+    fill_constant_slots(t, open);
     return plan;
 }
 
-/// Calls visit(slot texel's floats, grid index) for every texel of every stored slot, slots spread over workers.
+/// Calls visit(slot texel's floats, grid index, stored slot texel) for every texel of every
+/// stored slot, slots spread over workers.
 template <typename Visit>
 void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
     ShoreTiles& t = plan.tiles;
     detail::parallel_for_each(plan.tile.size(), threads, [&](std::size_t s) {
         float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * ShoreTiles::kSlotTexels * t.stride;
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k)
-            visit(slot + k * t.stride, t.grid_index(plan.tile[s], k));
+            visit(slot + k * t.stride, t.grid_index(plan.tile[s], k), s * ShoreTiles::kSlotTexels + k);
     });
 }
 
-/// Wave w's rows of every stored texel from its marched phase: the phase residual, the
-/// local wavevector (k0 D + grad residual, of length exactly k(h)) and the amplitude factor
-/// from shoaling (energy flux) and refraction (rays against the shore normal).
+/// Wave w of a run's rows of every stored texel from its marched phase: the phase residual,
+/// the local wavevector (k0 D + grad residual, of length exactly k(h)) and the amplitude
+/// factor from shoaling (energy flux) and refraction (rays against the shore normal).
 void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, TilePlan& plan) {
     const int n = field.resolution;
-    const std::size_t nw = plan.tiles.stride / 4 - 1;
+    const std::size_t nw = plan.tiles.stride / 4;
     const double k0 = wave.k;
     const glm::dvec2 dir{wave.dir_x, wave.dir_z};
     const std::vector<double>& phase = m.phase;
-    each_stored_texel(plan, 1, [&](float* t, std::size_t k) {
+    each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         t[w] = t[nw + w] = t[2 * nw + w] = t[3 * nw + w] = 0.0f;
@@ -252,43 +281,186 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
     });
 }
 
-/// The shared rows of every stored texel, then breaking (all waves together) and
-/// steepness: the amplitudes are capped at breaking_index * h / 2 of local height, the
-/// foam rises toward the cap, and Q is scaled where the waves together would fold.
-void shared_rows(std::span<const Wave> waves, double breaking_index, const ShoreField& field, TilePlan& plan,
-                 unsigned threads) {
-    const std::size_t nw = waves.size();
-    const double cap_ratio = 0.5 * breaking_index;  // amplitude cap = index * h / 2
-    each_stored_texel(plan, threads, [&](float* t, std::size_t k) {
+/// One run of waves being baked: its waves, its grid, and its tiles.
+struct RunBake {
+    std::size_t first = 0, count = 0;
+    std::shared_ptr<const ShoreField> field;  ///< its grid: the model's (not owned), or its own
+    TilePlan plan;
+};
+
+/// The runs' amplitude factors and wavevectors at world xz `p`, texel (i, j) of `grid`:
+/// read from the texel where a run lies on that grid, sampled bilinearly elsewhere.
+/// Calls each(wave, amplitude factor, wavevector x, z).
+template <typename Each>
+void each_run_wave(const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j, glm::dvec2 p,
+                   const Each& each) {
+    for (const RunBake& r : runs) {
+        const std::size_t nw = r.count;
+        const ShoreGrid& g = r.plan.grid;
+        if (g.resolution == grid.resolution && g.texel == grid.texel && g.corner == grid.corner) {
+            const float* t = r.plan.tiles.texel(i, j);
+            for (std::size_t w = 0; w < nw; ++w)
+                each(r.first + w, static_cast<double>(t[nw + w]), static_cast<double>(t[2 * nw + w]),
+                     static_cast<double>(t[3 * nw + w]));
+            continue;
+        }
+        const ShoreTaps taps = shore_taps(g, r.plan.tiles, p);
+        for (std::size_t w = 0; w < nw; ++w) each(r.first + w, taps.lerp(nw + w), taps.lerp(2 * nw + w), taps.lerp(3 * nw + w));
+    }
+}
+
+/// The local height over the breaking cap at texel (i, j) of `grid` (depth h > 0): the
+/// local wave height 2 sqrt(sum A^2) over breaking_index * h (exactly 2A for one wave, the
+/// rms-based height, about 0.71 Hs, for a spectrum, whose occasional peaks a cap on sum(A)
+/// would overstate).
+double cap_ratio(std::span<const Wave> waves, const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j,
+                 double h, double breaking_index) {
+    double energy = 0.0;
+    each_run_wave(runs, grid, i, j, grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5),
+                  [&](std::size_t w, double factor, double, double) {
+                      const double a = waves[w].amplitude * factor;
+                      energy += a * a;
+                  });
+    return std::sqrt(energy) / (0.5 * breaking_index * h);
+}
+
+/// The shared layer's rows of every stored texel: depth and shore distance, breaking (all
+/// waves together: the foam rises toward the cap) and steepness (Q is scaled where the
+/// waves together, capped, would fold). Reads the runs before their caps.
+void shared_rows(std::span<const Wave> waves, double breaking_index, const ShoreField& field,
+                 const std::vector<RunBake>& runs, TilePlan& plan, unsigned threads) {
+    const int n = field.resolution;
+    each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t) {
         const double h = static_cast<double>(field.depth[k]);
-        t[4 * nw] = field.depth[k];
-        t[4 * nw + 1] = 0.0f;
-        t[4 * nw + 2] = 1.0f;
-        t[4 * nw + 3] = field.signed_distance[k];
-        // The local wave height 2 sqrt(sum A^2): exactly 2A for one wave, the rms-based
-        // height (about 0.71 Hs) for a spectrum, whose occasional peaks a cap on sum(A) would overstate.
-        double energy = 0.0;
-        for (std::size_t w = 0; w < nw; ++w) {
-            const double a = waves[w].amplitude * static_cast<double>(t[nw + w]);
-            energy += a * a;
-        }
-        const double total = std::sqrt(energy);
-        if (h <= 0.0) {
-            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = 0.0f;
-            return;
-        }
-        const double cap = cap_ratio * h;
-        const double ratio = total > 0.0 ? total / cap : 0.0;
-        t[4 * nw + 1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
-        if (ratio > 1.0)
-            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = static_cast<float>(static_cast<double>(t[nw + w]) / ratio);
+        t[0] = field.depth[k];
+        t[1] = 0.0f;
+        t[2] = 1.0f;
+        t[3] = field.signed_distance[k];
+        if (h <= 0.0) return;
+        const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
+                  j = static_cast<int>(k / static_cast<std::size_t>(n));
+        const double ratio = cap_ratio(waves, runs, plan.grid, i, j, h, breaking_index);
+        t[1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+        const double scale = ratio > 1.0 ? 1.0 / ratio : 1.0;
         double fold = 0.0;
-        for (std::size_t w = 0; w < nw; ++w) {
-            const double kl = std::hypot(static_cast<double>(t[2 * nw + w]), static_cast<double>(t[3 * nw + w]));
-            fold += waves[w].steepness * kl * waves[w].amplitude * static_cast<double>(t[nw + w]);
-        }
-        if (fold > kMaxFold) t[4 * nw + 2] = static_cast<float>(kMaxFold / fold);
+        each_run_wave(runs, plan.grid, i, j, field.texel_center(i, j),
+                      [&](std::size_t w, double factor, double kx, double kz) {
+                          fold += waves[w].steepness * std::hypot(kx, kz) * waves[w].amplitude * factor * scale;
+                      });
+        if (fold > kMaxFold) t[2] = static_cast<float>(kMaxFold / fold);
     });
+}
+
+/// Caps every run's amplitudes where the local height exceeds breaking_index * h / 2 of
+/// amplitude: all waves scaled down together (each run on its own grid; no wave on land).
+void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<RunBake>& runs, unsigned threads) {
+    std::vector<std::vector<float>> ratios(runs.size());
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        RunBake& run = runs[r];
+        const int n = run.field->resolution;
+        ratios[r].assign(run.plan.tile.size() * ShoreTiles::kSlotTexels, 1.0f);
+        each_stored_texel(run.plan, threads, [&](float*, std::size_t k, std::size_t at) {
+            const double h = static_cast<double>(run.field->depth[k]);
+            if (h <= 0.0) return;
+            const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
+                      j = static_cast<int>(k / static_cast<std::size_t>(n));
+            ratios[r][at] = static_cast<float>(cap_ratio(waves, runs, run.plan.grid, i, j, h, breaking_index));
+        });
+    }
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const std::size_t nw = runs[r].count;
+        each_stored_texel(runs[r].plan, threads, [&](float* t, std::size_t k, std::size_t at) {
+            const double h = static_cast<double>(runs[r].field->depth[k]);
+            const double ratio = static_cast<double>(ratios[r][at]);
+            for (std::size_t w = 0; w < nw; ++w)
+                if (h <= 0.0)
+                    t[nw + w] = 0.0f;
+                else if (ratio > 1.0)
+                    t[nw + w] = static_cast<float>(static_cast<double>(t[nw + w]) / ratio);
+        });
+    }
+}
+
+/// Carries a coarse run's phase residual and wavevector two texels onto land from the
+/// water next to it (the residual along the neighbour's own wavevector), the amplitude
+/// left at 0: between its last wet texel and the shore a coarse run's waves then keep
+/// their phase and direction, and the model's grid (the waterline ramp on its depth)
+/// ends them at the shoreline. On the model's own grid the last texel is a fraction of
+/// a wavelength and the fields stop there.
+void extend_onto_land(std::span<const Wave> waves, RunBake& run, unsigned threads) {
+    const ShoreGrid& g = run.plan.grid;
+    const int n = g.resolution;
+    const std::size_t nw = run.count;
+    for (int ring = 0; ring < 2; ++ring) {
+        const ShoreTiles before = run.plan.tiles;
+        each_stored_texel(run.plan, threads, [&](float* t, std::size_t k, std::size_t) {
+            const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
+                      j = static_cast<int>(k / static_cast<std::size_t>(n));
+            for (std::size_t w = 0; w < nw; ++w) {
+                if (t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f) continue;  // a wave is here
+                const Wave& wave = waves[run.first + w];
+                const glm::dvec2 k0{wave.k * wave.dir_x, wave.k * wave.dir_z};
+                double residual = 0.0;
+                glm::dvec2 kvec{0.0};
+                int from = 0;
+                for (const glm::ivec2 d : {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
+                    const int a = i + d.x, b = j + d.y;
+                    if (a < 0 || b < 0 || a >= n || b >= n) continue;
+                    const float* v = before.texel(a, b);
+                    const glm::dvec2 kn{static_cast<double>(v[2 * nw + w]), static_cast<double>(v[3 * nw + w])};
+                    if (kn == glm::dvec2(0.0)) continue;
+                    // The residual grows by (k - k0 D) . step from the neighbour to here.
+                    residual += static_cast<double>(v[w]) - glm::dot(kn - k0, glm::dvec2(d)) * g.texel;
+                    kvec += kn;
+                    ++from;
+                }
+                if (from == 0) continue;
+                t[w] = static_cast<float>(residual / from);
+                t[2 * nw + w] = static_cast<float>(kvec.x / from);
+                t[3 * nw + w] = static_cast<float>(kvec.y / from);
+            }
+        });
+    }
+}
+
+/// The runs of consecutive waves and each one's texel, a power of two times the model's:
+/// the largest whose shortest wave keeps `texels_per_wavelength` texels a deep-water
+/// wavelength (0: every wave on the model's grid), while the run's grid keeps at least a
+/// tile a side. Neighbouring runs merge (on the finer texel) until there are at most
+/// kShoreMaxLayers.
+struct Run {
+    std::size_t first = 0, count = 0;
+    int scale = 1;
+};
+std::vector<Run> plan_runs(std::span<const Wave> waves, double texel, int resolution, double texels_per_wavelength) {
+    std::vector<Run> runs;
+    for (std::size_t w = 0; w < waves.size(); ++w) {
+        int scale = 1;
+        if (texels_per_wavelength > 0.0)
+            while ((resolution + 2 * scale - 1) / (2 * scale) >= ShoreTiles::kTile &&
+                   2.0 * scale * texel * texels_per_wavelength <= kTwoPi / waves[w].k)
+                scale *= 2;
+        if (!runs.empty() && runs.back().scale == scale)
+            ++runs.back().count;
+        else
+            runs.push_back({w, 1, scale});
+    }
+    while (runs.size() > gpu::kShoreMaxLayers) {
+        // Merge the neighbours whose texels differ least (the first such pair).
+        std::size_t best = 0;
+        double best_gap = 1e300;
+        for (std::size_t r = 0; r + 1 < runs.size(); ++r) {
+            const double gap = std::abs(std::log2(static_cast<double>(runs[r].scale) / runs[r + 1].scale));
+            if (gap < best_gap) {
+                best_gap = gap;
+                best = r;
+            }
+        }
+        runs[best].count += runs[best + 1].count;
+        runs[best].scale = std::min(runs[best].scale, runs[best + 1].scale);
+        runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(best) + 1);
+    }
+    return runs;
 }
 
 }  // namespace
@@ -301,6 +473,8 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                      fmt::format("shore waves: resolution {} is out of range (16 to 8192)", options.resolution)};
     if (!(options.breaking_index > 0.0 && options.breaking_index <= 1.2))
         return Error{ErrorCode::invalid_argument, "shore waves: breaking_index must be in (0, 1.2]"};
+    if (!(options.texels_per_wavelength >= 0.0) || !std::isfinite(options.texels_per_wavelength))
+        return Error{ErrorCode::invalid_argument, "shore waves: texels_per_wavelength must be finite and >= 0"};
     try {
         // The grid: 0..30% of the progress when the shoreline is baked here, then the waves.
         const double grid_share = shoreline ? 0.0 : 0.3;
@@ -310,12 +484,35 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
 
         const auto waves = set.waves();
         const std::size_t nw = waves.size();
-        TilePlan plan = plan_tiles(waves, *field, options.breaking_index, options.store_every_tile, options.threads);
+        std::vector<glm::dvec2> open;
+        for (const Wave& w : waves) open.push_back(w.k * glm::dvec2(w.dir_x, w.dir_z));
+        // Each run on its own grid: the model's, or every scale-th texel's size from the same corner.
+        std::vector<RunBake> runs;
+        for (const Run& r : plan_runs(waves, field->texel, field->resolution, options.texels_per_wavelength)) {
+            RunBake run{r.first, r.count, nullptr, {}};
+            if (r.scale == 1) {
+                run.field = std::shared_ptr<const ShoreField>(std::shared_ptr<void>(), &*field);
+            } else {
+                const ShoreGrid g{(field->resolution + r.scale - 1) / r.scale, field->texel * r.scale, field->corner};
+                auto coarse = resampled_grid(terrain, water_level, g, *field, options.threads);
+                if (!coarse) return coarse.error();
+                run.field = std::make_shared<const ShoreField>(std::move(coarse).value());
+            }
+            run.plan = plan_tiles(open_sea_test(waves, r.first, r.count),
+                                  std::span<const glm::dvec2>(open).subspan(r.first, r.count), *run.field,
+                                  options.breaking_index, options.store_every_tile, options.threads);
+            runs.push_back(std::move(run));
+        }
+        std::vector<std::size_t> run_of(nw);
+        for (std::size_t r = 0; r < runs.size(); ++r)
+            for (std::size_t w = runs[r].first; w < runs[r].first + runs[r].count; ++w) run_of[w] = r;
         std::atomic<std::size_t> waves_done{0};
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
         detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
-            if (!plan.tile.empty()) wave_rows(waves[w], *field, march_phase(waves[w], *field), w, plan);
+            RunBake& run = runs[run_of[w]];
+            if (!run.plan.tile.empty())
+                wave_rows(waves[w], *run.field, march_phase(waves[w], *run.field), w - run.first, run.plan);
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);
@@ -323,8 +520,15 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             }
         });
         if (options.cancel.stop_requested()) return cancelled();
-        shared_rows(waves, options.breaking_index, *field, plan, options.threads);
-        return ShoreWaves::from_tiles({field->resolution, field->texel, field->corner}, std::move(plan.tiles), waves);
+        TilePlan shared = plan_tiles(open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
+                                     options.store_every_tile, options.threads);
+        shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads);
+        cap_runs(waves, options.breaking_index, runs, options.threads);
+        for (RunBake& r : runs)
+            if (r.plan.grid.texel != field->texel) extend_onto_land(waves, r, options.threads);
+        std::vector<ShoreWaveLayer> layers;
+        for (RunBake& r : runs) layers.push_back({r.plan.grid, r.first, r.count, std::move(r.plan.tiles)});
+        return ShoreWaves::from_tiles(shared.grid, std::move(shared.tiles), std::move(layers), waves);
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("shore waves: the bake failed: {}", e.what())};
     }

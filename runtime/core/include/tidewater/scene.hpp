@@ -31,6 +31,9 @@ struct SceneCamera {
     double fov_y_deg = 55.0;                ///< degrees, in (1, 179)
 };
 
+/// SceneShore::texels_per_wavelength by default.
+inline constexpr double kDefaultShoreTexelsPerWavelength = 16.0;
+
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {
     bool enabled = true;
@@ -39,6 +42,10 @@ struct SceneShore {
     /// least `resolution`; 0 = `resolution`.
     int distance_resolution = 0;
     double breaking_index = 0.78;       ///< Breaker height / depth (McCowan), 0.3 to 1.2.
+    /// Texels a deep-water wavelength each wave's fields keep at least, 0 or 4 to 64: runs of
+    /// long waves are baked on grids of 2, 4, 8 ... times the model's texel (depth, breaking
+    /// and shore distance stay on the model's). 0: every wave on the model's grid.
+    double texels_per_wavelength = kDefaultShoreTexelsPerWavelength;
     std::filesystem::path bake_folder;  ///< A saved bake for bake_scene to load (empty: bake).
 };
 

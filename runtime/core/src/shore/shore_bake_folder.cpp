@@ -20,12 +20,14 @@ namespace {
 namespace fs = std::filesystem;
 using detail::ObjectReader;
 
-/// The tiles of /model/tiles: which are stored, each row's encoding, and every stored
-/// tile's PNG decoded into its slot (slots in tile order, after the open-sea and dry-land ones).
-Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, int n, std::size_t nw,
-                              double& depth_step) {
-    if (!model.has("tiles")) return model.error("tiles", "is missing");
-    auto tiles = ObjectReader::open(model.at("tiles"), model.source(), "/model/tiles");
+/// One layer's tiles (`at`: /model/tiles, or /model/runs/R/tiles): which are stored, each
+/// row's encoding, and every stored tile's PNG from tiles/`layer`/ decoded into its slot
+/// (slots in tile order, after the open-sea and dry-land ones). `waves` and `first`: the
+/// layer's run of waves (0 waves: the shared layer).
+Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, const std::string& at, int n,
+                              const std::string& layer, std::size_t first, std::size_t waves, double& first_step) {
+    if (!owner.has("tiles")) return owner.error("tiles", "is missing");
+    auto tiles = ObjectReader::open(owner.at("tiles"), owner.source(), at);
     if (!tiles) return tiles.error();
     std::int64_t tile_texels = 0, per_side = 0;
     if (auto st = tiles->integer("tile_texels", tile_texels, 1, 4096, true); !st) return st.error();
@@ -39,19 +41,21 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, in
     const std::size_t count = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
     if (kinds.size() != count)
         return tiles->error("kinds", fmt::format("has {} tiles, expected {}x{}", kinds.size(), m, m));
-    if (!tiles->has("rows") || !tiles->at("rows").is_array() || tiles->at("rows").size() != 4 * nw + 4)
-        return tiles->error("rows", fmt::format("expected {} rows (4 per wave and 4 shared)", 4 * nw + 4));
-    std::vector<detail::FieldEncoding> rows(4 * nw + 4);
+    const std::size_t row_count = waves > 0 ? 4 * waves : kShoreSharedRows;
+    if (!tiles->has("rows") || !tiles->at("rows").is_array() || tiles->at("rows").size() != row_count)
+        return tiles->error("rows", waves > 0 ? fmt::format("expected {} rows (4 per wave)", row_count)
+                                              : fmt::format("expected {} shared rows", row_count));
+    std::vector<detail::FieldEncoding> rows(row_count);
     for (std::size_t r = 0; r < rows.size(); ++r) {
-        auto row = ObjectReader::open(tiles->at("rows")[r], tiles->source(), fmt::format("/model/tiles/rows/{}", r));
+        auto row = ObjectReader::open(tiles->at("rows")[r], tiles->source(), fmt::format("{}/rows/{}", at, r));
         if (!row) return row.error();
-        const auto [field, wave, unit] = shore_row_name(r, nw);  // the unit is the writer's, not checked
+        const auto [field, local_wave, unit] = shore_row_name(r, waves);  // the unit is the writer's, not checked
+        const std::int64_t wave = local_wave >= 0 ? static_cast<std::int64_t>(first) + local_wave : -1;
         std::string name;
         std::int64_t row_wave = -1;
         if (auto st = row->string("field", name, true); !st) return st.error();
         if (wave >= 0)
-            if (auto st = row->integer("wave", row_wave, 0, static_cast<std::int64_t>(nw) - 1, true); !st)
-                return st.error();
+            if (auto st = row->integer("wave", row_wave, 0, 1 << 20, true); !st) return st.error();
         if (name != field || row_wave != wave)
             return row->error("field", fmt::format("expected {}{}", field,
                                                    wave >= 0 ? fmt::format(" of wave {}", wave) : std::string()));
@@ -63,12 +67,8 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, in
         rows[r].step = step;
         rows[r].zero = static_cast<std::int64_t>(zero);
     }
-    depth_step = rows[4 * nw].step;
-    ShoreTiles t;
-    t.resolution = n;
-    t.tiles_per_side = m;
-    t.stride = ShoreWaves::query_texel_stride(nw);
-    t.pages.assign(count, gpu::kShoreOpenSlot);
+    first_step = rows[0].step;
+    ShoreTiles t = ShoreTiles::open_grid(n, row_count);
     std::vector<std::size_t> stored;
     for (std::size_t k = 0; k < count; ++k) {
         if (kinds[k] == 'o') continue;
@@ -88,7 +88,7 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, in
     std::vector<Status> read(stored.size());
     detail::parallel_for_each(stored.size(), 0, [&](std::size_t s) {
         const std::size_t k = stored[s];
-        const fs::path file = dir / shore_tile_file(static_cast<int>(k % static_cast<std::size_t>(m)),
+        const fs::path file = dir / shore_tile_file(layer, static_cast<int>(k % static_cast<std::size_t>(m)),
                                                     static_cast<int>(k / static_cast<std::size_t>(m)));
         auto img = detail::read_png_gray16(file);
         if (!img) {
@@ -110,6 +110,60 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& model, in
     for (const Status& st : read)
         if (!st) return st.error();
     return t;
+}
+
+/// A layer's grid: resolution, texel_m and corner_m of `reader`.
+Result<ShoreGrid> read_grid(const ObjectReader& reader) {
+    ShoreGrid g;
+    std::int64_t n = 0;
+    if (auto st = reader.integer("resolution", n, 2, 65536, true); !st) return st.error();
+    g.resolution = static_cast<int>(n);
+    if (auto st = reader.number("texel_m", g.texel, true); !st) return st.error();
+    if (!(g.texel > 0.0) || !std::isfinite(g.texel)) return reader.error("texel_m", "must be a finite number > 0");
+    if (!reader.has("corner_m") || !reader.at("corner_m").is_array() || reader.at("corner_m").size() != 2 ||
+        !reader.at("corner_m")[0].is_number() || !reader.at("corner_m")[1].is_number())
+        return reader.error("corner_m", "expected [x, z] in metres");
+    g.corner = {reader.at("corner_m")[0].get<double>(), reader.at("corner_m")[1].get<double>()};
+    if (!std::isfinite(g.corner.x) || !std::isfinite(g.corner.y)) return reader.error("corner_m", "must be finite");
+    return g;
+}
+
+/// The runs of waves of /model/runs: each one's grid and tiles, covering `waves` in order.
+Result<std::vector<ShoreWaveLayer>> read_runs(const fs::path& dir, const ObjectReader& model, std::size_t waves) {
+    if (!model.has("runs") || !model.at("runs").is_array()) return model.error("runs", "expected an array");
+    const auto& list = model.at("runs");
+    if (list.size() > gpu::kShoreMaxLayers)
+        return model.error("runs", fmt::format("has {} runs, at most {}", list.size(), gpu::kShoreMaxLayers));
+    std::vector<ShoreWaveLayer> layers;
+    std::size_t next = 0;
+    for (std::size_t r = 0; r < list.size(); ++r) {
+        const std::string at = fmt::format("/model/runs/{}", r);
+        auto run = ObjectReader::open(list[r], model.source(), at);
+        if (!run) return run.error();
+        ShoreWaveLayer layer;
+        std::int64_t first = 0, count = 0;
+        if (auto st = run->integer("first_wave", first, static_cast<std::int64_t>(next),
+                                   static_cast<std::int64_t>(next), true);
+            !st)
+            return st.error();
+        if (auto st = run->integer("waves", count, 1, static_cast<std::int64_t>(waves - next), true); !st)
+            return st.error();
+        auto grid = read_grid(*run);
+        if (!grid) return grid.error();
+        layer.grid = *grid;
+        layer.first = next;
+        layer.count = static_cast<std::size_t>(count);
+        double step = 0.0;
+        auto tiles = read_tiles(dir, *run, at + "/tiles", layer.grid.resolution, shore_layer_folder(static_cast<int>(r)),
+                                layer.first, layer.count, step);
+        if (!tiles) return tiles.error();
+        layer.tiles = std::move(tiles).value();
+        next += layer.count;
+        layers.push_back(std::move(layer));
+    }
+    if (next != waves)
+        return model.error("runs", fmt::format("hold {} waves, the bake {}: re-run tidewater bake", next, waves));
+    return layers;
 }
 
 bool close(double a, double b) {
@@ -136,15 +190,10 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     auto model = ObjectReader::open(root->at("model"), root->source(), "/model");
     if (!model) return model.error();
 
-    ShoreGrid f;
-    std::int64_t n = 0;
-    if (auto st = model->integer("resolution", n, 2, 65536, true); !st) return st.error();
-    f.resolution = static_cast<int>(n);
-    if (auto st = model->number("texel_m", f.texel, true); !st) return st.error();
-    if (!model->has("corner_m") || !model->at("corner_m").is_array() || model->at("corner_m").size() != 2 ||
-        !model->at("corner_m")[0].is_number() || !model->at("corner_m")[1].is_number())
-        return model->error("corner_m", "expected [x, z] in metres");
-    f.corner = {model->at("corner_m")[0].get<double>(), model->at("corner_m")[1].get<double>()};
+    auto grid = read_grid(*model);
+    if (!grid) return grid.error();
+    const ShoreGrid f = *grid;
+    const std::int64_t n = f.resolution;
     // The grid covers the terrain's extent (or the region), as bake_scene's own bake would.
     const double half = region ? region->half_size : terrain.extent_half_size();
     const glm::dvec2 corner = (region ? region->center : terrain.extent_center()) - glm::dvec2(half);
@@ -181,12 +230,13 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
                                     ": the bake was made for other waves; re-run tidewater bake");
     }
     double depth_step = 0.0;
-    auto tiles = read_tiles(dir, *model, f.resolution, set.size(), depth_step);
+    auto tiles = read_tiles(dir, *model, "/model/tiles", f.resolution, shore_layer_folder(-1), 0, 0, depth_step);
     if (!tiles) return tiles.error();
+    auto runs = read_runs(dir, *model, set.size());
+    if (!runs) return runs.error();
     // The terrain must be the one baked over: its depth at every stored texel within the
     // encoding, water under every open-sea tile and land under every dry one.
     const double tolerance = 0.51 * depth_step + 1e-3;
-    const std::size_t nw = set.size();
     // Rows in parallel; the first row (in grid order) that does not fit is reported.
     std::vector<std::string> misfit(static_cast<std::size_t>(f.resolution));
     detail::parallel_for_each(misfit.size(), 0, [&](std::size_t row) {
@@ -195,7 +245,7 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
             const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
             const double depth = water_level - terrain.height_at(p);
             const std::uint32_t page = tiles->page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
-            const double stored = static_cast<double>(tiles->texel(i, j)[4 * nw]);
+            const double stored = static_cast<double>(tiles->texel(i, j)[0]);
             const bool fits = page == gpu::kShoreOpenSlot  ? depth > -tolerance
                               : page == gpu::kShoreDrySlot ? depth <= tolerance
                                                            : std::abs(depth - stored) <= tolerance;
@@ -212,7 +262,7 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     });
     for (const std::string& m : misfit)
         if (!m.empty()) return model->error("tiles", m);
-    auto made = ShoreWaves::from_tiles(f, std::move(tiles).value(), set);
+    auto made = ShoreWaves::from_tiles(f, std::move(tiles).value(), std::move(runs).value(), set);
     if (!made) {
         Error e = std::move(made).error();
         e.message = fmt::format("{}: {}", dir.string(), e.message);
@@ -221,8 +271,12 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
     return made;
 }
 
-std::string shore_tile_file(int ti, int tj) {
-    return fmt::format("tiles/x{:03}_z{:03}.png", ti, tj);
+std::string shore_tile_file(const std::string& layer, int ti, int tj) {
+    return fmt::format("tiles/{}/x{:03}_z{:03}.png", layer, ti, tj);
+}
+
+std::string shore_layer_folder(int run) {
+    return run < 0 ? std::string("shared") : fmt::format("run{}", run);
 }
 
 }  // namespace tidewater

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/parallel.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/query.hpp"
@@ -37,70 +38,102 @@ TileKind classify(const ShoreWaveFields& f, std::span<const glm::dvec2> open, co
     return is_open ? TileKind::open_sea : is_dry ? TileKind::dry_land : TileKind::stored;
 }
 
-/// Writes one texel in the query layout (ShoreTiles::texels).
-void write_texel(const ShoreWaveFields& f, std::size_t nw, std::size_t k, float* t) {
+/// Writes one texel of the wave layer and of the shared layer.
+void write_texel(const ShoreWaveFields& f, std::size_t nw, std::size_t k, float* waves, float* shared) {
     for (std::size_t w = 0; w < nw; ++w) {
-        t[w] = f.phase_residual[w][k];
-        t[nw + w] = f.amplitude_factor[w][k];
-        t[2 * nw + w] = f.wavevector_x[w][k];
-        t[3 * nw + w] = f.wavevector_z[w][k];
+        waves[w] = f.phase_residual[w][k];
+        waves[nw + w] = f.amplitude_factor[w][k];
+        waves[2 * nw + w] = f.wavevector_x[w][k];
+        waves[3 * nw + w] = f.wavevector_z[w][k];
     }
-    t[4 * nw] = f.depth[k];
-    t[4 * nw + 1] = f.breaking[k];
-    t[4 * nw + 2] = f.steepness_scale[k];
-    t[4 * nw + 3] = f.shore_distance[k];
+    shared[0] = f.depth[k];
+    shared[1] = f.breaking[k];
+    shared[2] = f.steepness_scale[k];
+    shared[3] = f.shore_distance[k];
 }
 
 /// The open sea's slot (waves as they are, deep, no shore) or dry land's (no waves).
 void fill_constant_slot(float* slot, std::span<const glm::dvec2> open, bool dry, std::size_t stride) {
     const std::size_t nw = open.size();
+    const float far = dry ? -gpu::kShoreFarValue : gpu::kShoreFarValue;
     for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
         float* t = slot + s * stride;
+        if (nw == 0) {
+            t[0] = far;
+            t[1] = 0.0f;
+            t[2] = 1.0f;
+            t[3] = far;
+            continue;
+        }
         for (std::size_t w = 0; w < nw; ++w) {
             t[w] = 0.0f;
             t[nw + w] = dry ? 0.0f : 1.0f;
             t[2 * nw + w] = dry ? 0.0f : static_cast<float>(open[w].x);
             t[3 * nw + w] = dry ? 0.0f : static_cast<float>(open[w].y);
         }
-        const float far = dry ? -gpu::kShoreFarValue : gpu::kShoreFarValue;
-        t[4 * nw] = far;
-        t[4 * nw + 1] = 0.0f;
-        t[4 * nw + 2] = 1.0f;
-        t[4 * nw + 3] = far;
     }
 }
 
 }  // namespace
 
-ShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2> open) {
-    ShoreTiles t;
+CutShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dvec2> open) {
     const int n = f.resolution;
     const std::size_t nw = open.size();
-    t.resolution = n;
-    t.tiles_per_side = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
-    t.stride = ShoreWaves::query_texel_stride(nw);
+    CutShoreTiles cut{ShoreTiles::open_grid(n, kShoreSharedRows), ShoreTiles::open_grid(n, 4 * nw)};
+    ShoreTiles& t = cut.shared;
     const std::size_t m = static_cast<std::size_t>(t.tiles_per_side);
     std::vector<TileKind> kinds(m * m);
     detail::parallel_for_each(m, 0, [&](std::size_t tj) {
         for (std::size_t ti = 0; ti < m; ++ti) kinds[tj * m + ti] = classify(f, open, t, tj * m + ti);
     });
     // Slots in tile order: the same fields always cut to the same slots.
-    t.pages.assign(m * m, gpu::kShoreOpenSlot);
     std::uint32_t next = gpu::kShoreFirstStoredSlot;
     for (std::size_t k = 0; k < kinds.size(); ++k) {
         if (kinds[k] == TileKind::dry_land) t.pages[k] = gpu::kShoreDrySlot;
         if (kinds[k] == TileKind::stored) t.pages[k] = next++;
     }
-    const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
-    t.texels.assign(static_cast<std::size_t>(next) * slot_floats, 0.0f);
-    fill_constant_slots(t, open);
+    cut.waves.pages = t.pages;
+    for (ShoreTiles* layer : {&cut.shared, &cut.waves}) {
+        layer->texels.assign(static_cast<std::size_t>(next) * ShoreTiles::kSlotTexels * layer->stride, 0.0f);
+        fill_constant_slots(*layer, layer == &cut.shared ? std::span<const glm::dvec2>() : open);
+    }
     detail::parallel_for_each(m * m, 0, [&](std::size_t tile) {
         const std::uint32_t slot = t.pages[tile];
         if (slot < gpu::kShoreFirstStoredSlot) return;
-        float* out = t.texels.data() + slot * slot_floats;
-        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s)
-            write_texel(f, nw, t.grid_index(tile, s), out + s * t.stride);
+        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
+            const std::size_t k = slot * ShoreTiles::kSlotTexels + s;
+            write_texel(f, nw, t.grid_index(tile, s), cut.waves.texels.data() + k * cut.waves.stride,
+                        t.texels.data() + k * t.stride);
+        }
     });
+    return cut;
+}
+
+ShoreTiles ShoreTiles::open_grid(int n, std::size_t stride) {
+    ShoreTiles t;
+    t.resolution = n;
+    t.tiles_per_side = (n + kTile - 1) / kTile;
+    t.stride = stride;
+    t.pages.assign(static_cast<std::size_t>(t.tiles_per_side) * static_cast<std::size_t>(t.tiles_per_side),
+                   gpu::kShoreOpenSlot);
+    return t;
+}
+
+ShoreTaps shore_taps(const ShoreGrid& grid, const ShoreTiles& tiles, glm::dvec2 p) {
+    const int n = grid.resolution;
+    const detail::GridTaps taps = detail::grid_taps(grid.corner, grid.texel, n, p);
+    const int i = static_cast<int>(taps.k00 % static_cast<std::size_t>(n));
+    const int j = static_cast<int>(taps.k00 / static_cast<std::size_t>(n));
+    const std::size_t stride = tiles.stride, row = ShoreTiles::kSide * stride;
+    ShoreTaps t{};
+    t.t00 = tiles.cell(i, j);
+    t.t10 = t.t00 + (taps.k10 != taps.k00 ? stride : 0);
+    t.t01 = t.t00 + (taps.k01 != taps.k00 ? row : 0);
+    t.t11 = t.t01 + (taps.k11 != taps.k01 ? stride : 0);
+    t.w00 = taps.w00;
+    t.w10 = taps.w10;
+    t.w01 = taps.w01;
+    t.w11 = taps.w11;
     return t;
 }
 
@@ -115,9 +148,8 @@ ShoreRowName shore_row_name(std::size_t row, std::size_t waves) {
         {"phase_residual", "rad"}, {"amplitude_factor", "1"}, {"wavevector_x", "rad/m"}, {"wavevector_z", "rad/m"}};
     static constexpr std::pair<const char*, const char*> shared[] = {
         {"depth", "m"}, {"breaking", "1"}, {"steepness_scale", "1"}, {"shore_distance", "m"}};
-    if (row < 4 * waves)
-        return {per_wave[row / waves].first, static_cast<int>(row % waves), per_wave[row / waves].second};
-    return {shared[row - 4 * waves].first, -1, shared[row - 4 * waves].second};
+    if (waves == 0) return {shared[row].first, -1, shared[row].second};
+    return {per_wave[row / waves].first, static_cast<int>(row % waves), per_wave[row / waves].second};
 }
 
 double shore_far_to_infinite(double value) {

@@ -63,6 +63,66 @@ std::vector<glm::dvec2> open_wavevectors(std::span<const Wave> waves) {
     return out;
 }
 
+Status check_grid(const ShoreGrid& g, const std::string& what) {
+    if (g.resolution < 2 || g.resolution > 65536)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} resolution {} is out of range (2 to 65536)", what, g.resolution)};
+    if (!(g.texel > 0.0) || !std::isfinite(g.texel) || !std::isfinite(g.corner.x) || !std::isfinite(g.corner.y))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} texel size and corner must be finite (texel > 0)", what)};
+    return {};
+}
+
+/// Fails unless `t` cuts a grid of `n` texels into pages that name its slots of `stride`
+/// finite floats.
+Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::string& what) {
+    const int m = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
+    if (t.resolution != n || t.tiles_per_side != m ||
+        t.pages.size() != static_cast<std::size_t>(m) * static_cast<std::size_t>(m))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} has {} pages for a {}² grid, expected {}²", what, t.pages.size(), n, m)};
+    if (t.stride != stride || stride == 0 || t.texels.size() % (t.stride * ShoreTiles::kSlotTexels) != 0 ||
+        t.slot_count() < gpu::kShoreFirstStoredSlot)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} slots do not hold {} floats a texel", what, stride)};
+    const std::size_t slots = t.slot_count();
+    for (std::size_t k = 0; k < t.pages.size(); ++k)
+        if (t.pages[k] >= slots)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("shore tiles: {} tile {} names slot {} of {}", what, k, t.pages[k], slots)};
+    for (float v : t.texels)
+        if (!std::isfinite(v))
+            return Error{ErrorCode::invalid_argument, fmt::format("shore tiles: {} has a value that is not finite", what)};
+    return {};
+}
+
+/// `tiles` on every `stride`-th texel of `grid`: the pages (coarse_pages), each stored
+/// slot's texels copied from the fine texel under it, and the constant slots.
+ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const glm::dvec2> open) {
+    ShoreTiles c = coarse_pages(fine, stride);
+    const std::size_t floats = c.stride, slot_floats = ShoreTiles::kSlotTexels * floats;
+    c.texels.assign(slots_named(c) * slot_floats, 0.0f);
+    fill_constant_slots(c, open);
+    const auto packed = static_cast<std::size_t>(c.resolution);
+    detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
+        const std::uint32_t slot = c.pages[tile];
+        if (slot < gpu::kShoreFirstStoredSlot) return;
+        float* out = c.texels.data() + slot * slot_floats;
+        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
+            const std::size_t g = c.grid_index(tile, s);
+            const float* in = fine.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
+            std::copy(in, in + floats, out + s * floats);
+        }
+    });
+    return c;
+}
+
+/// `grid` on every `stride`-th texel, its first texel centre kept.
+ShoreGrid coarsened_grid(const ShoreGrid& g, int stride) {
+    const double texel = g.texel * stride;
+    return {(g.resolution - 1) / stride + 1, texel, g.corner + glm::dvec2(0.5 * g.texel - 0.5 * texel)};
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveFields fields, std::span<const Wave> waves) {
@@ -103,86 +163,105 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_fields(ShoreWaveField
     for (const auto& [grid, name] : shared)
         if (auto st = check(*grid, name); !st) return st.error();
     auto open = open_wavevectors(waves);
-    ShoreTiles tiles = cut_shore_tiles(fields, open);
-    return std::shared_ptr<const ShoreWaves>(
-        made({fields.resolution, fields.texel, fields.corner}, std::move(tiles), std::move(open)));
+    CutShoreTiles cut = cut_shore_tiles(fields, open);
+    const ShoreGrid grid{fields.resolution, fields.texel, fields.corner};
+    auto layers = std::make_shared<Layers>();
+    if (wave_count > 0) layers->push_back({grid, 0, wave_count, std::move(cut.waves)});
+    return std::shared_ptr<const ShoreWaves>(made(grid, std::move(cut.shared), std::move(layers), std::move(open)));
 }
 
-Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_tiles(const ShoreGrid& grid, ShoreTiles tiles,
+Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_tiles(const ShoreGrid& grid, ShoreTiles shared,
+                                                                 std::vector<ShoreWaveLayer> layers,
                                                                  std::span<const Wave> waves) {
-    const int n = grid.resolution;
-    if (n < 2 || n > 65536)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("shore tiles: resolution {} is out of range (2 to 65536)", n)};
-    if (!(grid.texel > 0.0) || !std::isfinite(grid.texel) || !std::isfinite(grid.corner.x) ||
-        !std::isfinite(grid.corner.y))
-        return Error{ErrorCode::invalid_argument, "shore tiles: the texel size and corner must be finite (texel > 0)"};
-    const int m = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
-    if (tiles.resolution != n || tiles.tiles_per_side != m ||
-        tiles.pages.size() != static_cast<std::size_t>(m) * static_cast<std::size_t>(m))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("shore tiles: {} pages for a {}² grid, expected {}²", tiles.pages.size(), n, m)};
-    if (tiles.stride != query_texel_stride(waves.size()) ||
-        tiles.texels.size() % (tiles.stride * ShoreTiles::kSlotTexels) != 0 ||
-        tiles.slot_count() < gpu::kShoreFirstStoredSlot)
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("shore tiles: the slots do not hold {} waves", waves.size())};
-    const std::size_t slots = tiles.slot_count();
-    for (std::size_t k = 0; k < tiles.pages.size(); ++k)
-        if (tiles.pages[k] >= slots)
+    if (auto st = check_grid(grid, "the shared grid's"); !st) return st.error();
+    if (auto st = check_tiles(shared, grid.resolution, kShoreSharedRows, "the shared layer"); !st) return st.error();
+    if (layers.size() > gpu::kShoreMaxLayers)
+        return Error{ErrorCode::invalid_argument, fmt::format("shore tiles: {} runs of waves, at most {}",
+                                                              layers.size(), gpu::kShoreMaxLayers)};
+    std::size_t next = 0;
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        const ShoreWaveLayer& layer = layers[l];
+        const std::string what = fmt::format("wave run {}", l);
+        if (layer.first != next || layer.count == 0 || layer.count > waves.size() - next)
             return Error{ErrorCode::invalid_argument,
-                         fmt::format("shore tiles: tile {} names slot {} of {}", k, tiles.pages[k], slots)};
-    for (float v : tiles.texels)
-        if (!std::isfinite(v)) return Error{ErrorCode::invalid_argument, "shore tiles: a stored value is not finite"};
+                         fmt::format("shore tiles: {} holds waves {} to {}, expected a run from wave {} of {}", what,
+                                     layer.first, layer.first + layer.count, next, waves.size())};
+        next += layer.count;
+        if (auto st = check_grid(layer.grid, what + "'s"); !st) return st.error();
+        if (auto st = check_tiles(layer.tiles, layer.grid.resolution, 4 * layer.count, what); !st) return st.error();
+    }
+    if (next != waves.size())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: the runs hold {} waves, the set {}", next, waves.size())};
     auto open = open_wavevectors(waves);
-    fill_constant_slots(tiles, open);
-    return std::shared_ptr<const ShoreWaves>(made(grid, std::move(tiles), std::move(open)));
+    fill_constant_slots(shared, {});
+    for (ShoreWaveLayer& layer : layers)
+        fill_constant_slots(layer.tiles, std::span<const glm::dvec2>(open).subspan(layer.first, layer.count));
+    return std::shared_ptr<const ShoreWaves>(
+        made(grid, std::move(shared), std::make_shared<const Layers>(std::move(layers)), std::move(open)));
 }
 
-std::shared_ptr<ShoreWaves> ShoreWaves::made(const ShoreGrid& grid, ShoreTiles tiles, std::vector<glm::dvec2> open) {
+std::shared_ptr<ShoreWaves> ShoreWaves::made(const ShoreGrid& grid, ShoreTiles shared,
+                                             std::shared_ptr<const Layers> layers, std::vector<glm::dvec2> open) {
     auto out = std::make_shared<ShoreWaves>();
     out->grid_ = grid;
-    out->tiles_ = std::move(tiles);
-    out->trivial_ = std::all_of(out->tiles_.pages.begin(), out->tiles_.pages.end(),
-                                [](std::uint32_t slot) { return slot == gpu::kShoreOpenSlot; });
+    out->shared_ = std::move(shared);
+    out->layers_ = std::move(layers);
+    auto all_open = [](const ShoreTiles& t) {
+        return std::all_of(t.pages.begin(), t.pages.end(),
+                           [](std::uint32_t slot) { return slot == gpu::kShoreOpenSlot; });
+    };
+    out->trivial_ = all_open(out->shared_) && std::all_of(out->layers_->begin(), out->layers_->end(),
+                                                          [&](const ShoreWaveLayer& l) { return all_open(l.tiles); });
     out->open_wavevectors_ = std::move(open);
     return out;
 }
 
 std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
-    if (stride <= 1) return made(grid_, tiles_, open_wavevectors_);
-    ShoreTiles c = coarse_pages(tiles_, stride);
-    const std::size_t floats = c.stride, slot_floats = ShoreTiles::kSlotTexels * floats;
-    c.texels.assign(slots_named(c) * slot_floats, 0.0f);
-    fill_constant_slots(c, open_wavevectors_);
-    const auto packed = static_cast<std::size_t>(c.resolution);
-    detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
-        const std::uint32_t slot = c.pages[tile];
-        if (slot < gpu::kShoreFirstStoredSlot) return;
-        float* out = c.texels.data() + slot * slot_floats;
-        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
-            const std::size_t g = c.grid_index(tile, s);
-            const float* in =
-                tiles_.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
-            std::copy(in, in + floats, out + s * floats);
-        }
-    });
-    const double texel = grid_.texel * stride;
-    return made({c.resolution, texel, grid_.corner + glm::dvec2(0.5 * grid_.texel - 0.5 * texel)}, std::move(c),
+    if (stride <= 1) return made(grid_, shared_, layers_, open_wavevectors_);
+    auto layers = std::make_shared<Layers>();
+    for (const ShoreWaveLayer& l : *layers_)
+        layers->push_back(
+            {coarsened_grid(l.grid, stride), l.first, l.count,
+             coarsened_tiles(l.tiles, stride, std::span<const glm::dvec2>(open_wavevectors_).subspan(l.first, l.count))});
+    return made(coarsened_grid(grid_, stride), coarsened_tiles(shared_, stride, {}), std::move(layers),
                 open_wavevectors_);
 }
 
 std::uint64_t ShoreWaves::coarsened_device_bytes(int stride) const {
-    if (stride <= 1) return tiles_.device_bytes();
-    const ShoreTiles c = coarse_pages(tiles_, stride);
-    return ShoreTiles::device_bytes_for(slots_named(c), c.stride, c.pages.size());
+    if (stride <= 1) return device_bytes();
+    auto bytes = [&](const ShoreTiles& t) {
+        const ShoreTiles c = coarse_pages(t, stride);
+        return ShoreTiles::device_bytes_for(slots_named(c), c.stride, c.pages.size());
+    };
+    std::uint64_t total = bytes(shared_);
+    for (const ShoreWaveLayer& l : *layers_) total += bytes(l.tiles);
+    return total;
+}
+
+std::size_t ShoreWaves::bytes() const {
+    std::size_t total = shared_.bytes();
+    for (const ShoreWaveLayer& l : *layers_) total += l.tiles.bytes();
+    return total;
+}
+
+std::uint64_t ShoreWaves::device_bytes() const {
+    std::uint64_t total = shared_.device_bytes();
+    for (const ShoreWaveLayer& l : *layers_) total += l.tiles.device_bytes();
+    return total;
+}
+
+std::size_t ShoreWaves::stored_tiles() const {
+    std::size_t total = shared_.stored_tiles();
+    for (const ShoreWaveLayer& l : *layers_) total += l.tiles.stored_tiles();
+    return total;
 }
 
 std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w, int h,
                                                           std::span<const float> depths) const {
-    ShoreTiles t = tiles_;
+    ShoreTiles t = shared_;
     const int n = grid_.resolution, m = t.tiles_per_side, kTile = ShoreTiles::kTile;
-    const std::size_t depth_row = 4 * wave_count(), slot_floats = ShoreTiles::kSlotTexels * t.stride;
+    const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
     // A texel lies in its own tile's slot and in the aprons of the tiles before it.
     for (int tj = std::max(0, (j0 - 1) / kTile); tj <= std::min(m - 1, (j0 + h - 1) / kTile); ++tj)
         for (int ti = std::max(0, (i0 - 1) / kTile); ti <= std::min(m - 1, (i0 + w - 1) / kTile); ++ti) {
@@ -195,38 +274,30 @@ std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w,
                 const int i = static_cast<int>(g % static_cast<std::size_t>(n)) - i0;
                 const int j = static_cast<int>(g / static_cast<std::size_t>(n)) - j0;
                 if (i < 0 || j < 0 || i >= w || j >= h) continue;
-                slot[s * t.stride + depth_row] =
+                slot[s * t.stride] =
                     depths[static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i)];
             }
         }
-    return made(grid_, std::move(t), open_wavevectors_);
+    return made(grid_, std::move(t), layers_, open_wavevectors_);
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {
-    // The taps of grid_taps, read from the cell's slot.
-    const int n = grid_.resolution;
-    const detail::GridTaps taps = detail::grid_taps(grid_.corner, grid_.texel, n, p);
-    const int i = static_cast<int>(taps.k00 % static_cast<std::size_t>(n));
-    const int j = static_cast<int>(taps.k00 / static_cast<std::size_t>(n));
-    const float* t00 = tiles_.cell(i, j);
-    const std::size_t stride = tiles_.stride, row = ShoreTiles::kSide * stride;
-    const float* t10 = t00 + (taps.k10 != taps.k00 ? stride : 0);
-    const float* t01 = t00 + (taps.k01 != taps.k00 ? row : 0);
-    const float* t11 = t01 + (taps.k11 != taps.k01 ? stride : 0);
-    auto lerp = [&](std::size_t field) {
-        return taps.w00 * static_cast<double>(t00[field]) + taps.w10 * static_cast<double>(t10[field]) +
-               taps.w01 * static_cast<double>(t01[field]) + taps.w11 * static_cast<double>(t11[field]);
-    };
-    const std::size_t nw = wave_count();
+    const ShoreTaps shared = shore_taps(grid_, shared_, p);
     LocalShore s;
-    s.depth = lerp(4 * nw);
-    s.breaking = lerp(4 * nw + 1);
-    s.steepness_scale = lerp(4 * nw + 2);
-    s.shore_distance = lerp(4 * nw + 3);
-    for (std::size_t w = 0; w < waves.size() && w < nw; ++w) {
-        waves[w].phase_residual = lerp(w);
-        waves[w].amplitude_factor = s.depth > 0.0 ? lerp(nw + w) : 0.0;
-        waves[w].wavevector = {lerp(2 * nw + w), lerp(3 * nw + w)};
+    s.depth = shared.lerp(0);
+    s.breaking = shared.lerp(1);
+    s.steepness_scale = shared.lerp(2);
+    s.shore_distance = shared.lerp(3);
+    for (const ShoreWaveLayer& layer : *layers_) {
+        if (layer.first >= waves.size()) break;
+        const ShoreTaps taps = shore_taps(layer.grid, layer.tiles, p);
+        const std::size_t nw = layer.count;
+        for (std::size_t w = 0; w < nw && layer.first + w < waves.size(); ++w) {
+            LocalWave& out = waves[layer.first + w];
+            out.phase_residual = taps.lerp(w);
+            out.amplitude_factor = s.depth > 0.0 ? taps.lerp(nw + w) : 0.0;
+            out.wavevector = {taps.lerp(2 * nw + w), taps.lerp(3 * nw + w)};
+        }
     }
     return s;
 }

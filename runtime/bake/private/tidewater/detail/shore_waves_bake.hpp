@@ -12,6 +12,7 @@
 
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene.hpp"
 
 namespace tidewater {
 
@@ -26,6 +27,11 @@ struct ShoreWaveOptions {
     std::stop_token cancel;                ///< Requested: the bake returns ErrorCode::cancelled.
     /// Store every tile, the open sea and dry land too (tests compare the band with it).
     bool store_every_tile = false;
+    /// Texels a deep-water wavelength that each wave's fields keep at least: a run of waves
+    /// whose shortest is long enough is baked and stored on a grid of 2, 4, 8 ... times the
+    /// model's texel (the breaking, depth and shore distance stay on the model's grid).
+    /// 0: every wave on the model's grid.
+    double texels_per_wavelength = kDefaultShoreTexelsPerWavelength;
 };
 
 /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed

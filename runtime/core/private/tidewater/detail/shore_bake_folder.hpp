@@ -20,11 +20,13 @@
 
 namespace tidewater {
 
-inline constexpr int kShoreBakeFormatVersion = 2;
+inline constexpr int kShoreBakeFormatVersion = 3;
 inline constexpr const char* kShoreSidecar = "shore.json";
 
-/// The file of stored tile (ti, tj) inside a bake folder.
-std::string shore_tile_file(int ti, int tj);
+/// The file of stored tile (ti, tj) of the layer in folder tiles/`layer` inside a bake folder.
+std::string shore_tile_file(const std::string& layer, int ti, int tj);
+/// The folder (under tiles/) of the shared layer's tiles, and of wave run `run`'s.
+std::string shore_layer_folder(int run);
 
 /// Loads the model saved in `dir` for `waves` over `terrain` at `water_level`. Fails,
 /// naming the file and field, on a missing or corrupt file, and when the bake was made

@@ -21,6 +21,13 @@ namespace tidewater {
 
 struct ShoreWaveFields;
 
+/// Where a grid of the model lies.
+struct ShoreGrid {
+    int resolution = 0;      ///< Texels per side.
+    double texel = 1.0;      ///< m.
+    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+};
+
 /// A tile is left out as open sea when, at each of its texels (apron included), every
 /// wave's phase residual is within this many radians of 0 ...
 inline constexpr double kOpenSeaPhaseTolerance = 1e-3;
@@ -30,8 +37,22 @@ inline constexpr double kOpenSeaPhaseTolerance = 1e-3;
 /// the longest wave's length.
 inline constexpr double kOpenSeaRelativeTolerance = 0.01;
 
-/// One texel's floats in the query layout (ShoreTiles::texels), by name.
+/// The shared fields' floats per texel (ShoreTiles of the shared layer): depth, breaking,
+/// steepness scale and shore distance.
+inline constexpr std::size_t kShoreSharedRows = 4;
+
+/// One shared texel's floats (the shared layer's ShoreTiles::texels), by name.
 struct ShoreTexelView {
+    const float* t = nullptr;
+
+    float depth() const { return t[0]; }
+    float breaking() const { return t[1]; }
+    float steepness_scale() const { return t[2]; }
+    float shore_distance() const { return t[3]; }
+};
+
+/// One texel's floats of a run of `waves` waves (a wave layer's ShoreTiles::texels), by name.
+struct ShoreWaveTexelView {
     const float* t = nullptr;
     std::size_t waves = 0;
 
@@ -39,14 +60,11 @@ struct ShoreTexelView {
     float amplitude_factor(std::size_t w) const { return t[waves + w]; }
     float wavevector_x(std::size_t w) const { return t[2 * waves + w]; }
     float wavevector_z(std::size_t w) const { return t[3 * waves + w]; }
-    float depth() const { return t[4 * waves]; }
-    float breaking() const { return t[4 * waves + 1]; }
-    float steepness_scale() const { return t[4 * waves + 2]; }
-    float shore_distance() const { return t[4 * waves + 3]; }
 };
 
-/// Field row `row` of a texel in the query layout, as saved bakes name it
-/// (shore.json, model.tiles.rows): its field, its wave (-1: a row all waves share) and unit.
+/// Field row `row` of a texel, as saved bakes name it (shore.json, the tiles' rows): its
+/// field, its wave within the run (-1: a shared row) and unit. `waves` is the run's wave
+/// count, 0 for the shared layer.
 struct ShoreRowName {
     const char* field;
     int wave;
@@ -67,13 +85,17 @@ struct ShoreTiles {
 
     int resolution = 0;      ///< Texels per side of the whole grid.
     int tiles_per_side = 0;  ///< ceil(resolution / kTile).
-    std::size_t stride = 0;  ///< Floats per texel: ShoreWaves::query_texel_stride(waves).
+    std::size_t stride = 0;  ///< Floats per texel: 4 per wave of a wave layer, kShoreSharedRows shared.
     /// Per tile, rows along +z: the slot that holds it.
     std::vector<std::uint32_t> pages;
-    /// Slot after slot, kSlotTexels texels of `stride` floats each (the query layout:
-    /// W phase residuals, W amplitude factors, W wavevector x, W wavevector z, then depth,
-    /// breaking, steepness scale and shore distance). Slots 0 and 1: open sea, dry land.
+    /// Slot after slot, kSlotTexels texels of `stride` floats each (a wave layer's: its W
+    /// phase residuals, W amplitude factors, W wavevector x, W wavevector z; the shared
+    /// layer's: depth, breaking, steepness scale and shore distance). Slots 0 and 1: open
+    /// sea, dry land.
     std::vector<float> texels;
+
+    /// Pages for a grid of `n` texels a side, every tile open sea, no slots yet.
+    static ShoreTiles open_grid(int n, std::size_t stride);
 
     std::size_t slot_count() const { return stride ? texels.size() / (stride * kSlotTexels) : 0; }
     /// Tiles whose fields are stored (not open sea or dry land).
@@ -106,7 +128,7 @@ struct ShoreTiles {
     /// Every slot's bytes on the CPU (the pages included).
     std::size_t bytes() const { return texels.size() * sizeof(float) + pages.size() * sizeof(std::uint32_t); }
     /// The same slots' bytes on the GPU (shaders/shore_fields.glsl): per texel a vec4 per
-    /// wave and one shared vec4, and a uint per page.
+    /// wave (a wave layer) or one vec4 (the shared layer), and a uint per page.
     std::uint64_t device_bytes() const { return device_bytes_for(slot_count(), stride, pages.size()); }
     static std::uint64_t device_bytes_for(std::size_t slots, std::size_t floats_per_texel, std::size_t page_count) {
         return static_cast<std::uint64_t>(slots) * kSlotTexels * (floats_per_texel / 4) * 4 * sizeof(float) +
@@ -114,14 +136,33 @@ struct ShoreTiles {
     }
 };
 
-/// Writes the open-sea slot (each wave as it is: residual 0, amplitude factor 1,
-/// wavevector k0 D; depth and shore distance +kShoreFarValue) and the dry-land slot (no
-/// wave; -kShoreFarValue) into slots 0 and 1 of `tiles`, which must hold them.
+/// The four taps around a world point on a grid cut into `tiles` (grid_taps' cell and
+/// weights: bilinear between texel centres, clamped at the edges), read from the cell's slot.
+struct ShoreTaps {
+    const float *t00, *t10, *t01, *t11;
+    double w00, w10, w01, w11;
+
+    double lerp(std::size_t field) const {
+        return w00 * static_cast<double>(t00[field]) + w10 * static_cast<double>(t10[field]) +
+               w01 * static_cast<double>(t01[field]) + w11 * static_cast<double>(t11[field]);
+    }
+};
+ShoreTaps shore_taps(const ShoreGrid& grid, const ShoreTiles& tiles, glm::dvec2 p);
+
+/// Writes the open-sea slot and the dry-land slot into slots 0 and 1 of `tiles`, which
+/// must hold them. A wave layer's (`open_wavevectors` holds its waves' k0 D): the open sea
+/// each wave as it is (residual 0, amplitude factor 1, wavevector k0 D), dry land no wave.
+/// The shared layer's (no wavevectors, stride kShoreSharedRows): depth and shore distance
+/// +kShoreFarValue in the open sea, -kShoreFarValue on dry land, no breaking, full steepness.
 void fill_constant_slots(ShoreTiles& tiles, std::span<const glm::dvec2> open_wavevectors);
 
-/// Cuts `fields` into tiles. `open_wavevectors` holds each wave's k0 D (rad/m): the
-/// open sea's wavevectors, and what a tile must match to be left out as open sea.
-ShoreTiles cut_shore_tiles(const ShoreWaveFields& fields, std::span<const glm::dvec2> open_wavevectors);
+/// Cuts `fields` into tiles: the shared layer and one wave layer on the fields' grid, both
+/// with the same pages. `open_wavevectors` holds each wave's k0 D (rad/m): the open sea's
+/// wavevectors, and what a tile must match to be left out as open sea.
+struct CutShoreTiles {
+    ShoreTiles shared, waves;
+};
+CutShoreTiles cut_shore_tiles(const ShoreWaveFields& fields, std::span<const glm::dvec2> open_wavevectors);
 
 /// What the fields' depth or shore distance means to a query: kShoreFarValue and beyond
 /// (a tile not stored) reads as infinitely deep or far, +-kDeepWater.

@@ -15,7 +15,11 @@
 // Local fields vary slowly against a wavelength, so derivatives use the local
 // wavevector and treat amplitude and direction as constant over a wave.
 // The model keeps its fields in tiles (shore_tiles.hpp): only where the waves feel
-// the bottom; elsewhere it reads the open sea's or dry land's values.
+// the bottom; elsewhere it reads the open sea's or dry land's values. The tiles form
+// layers: the shared fields (depth, breaking, steepness scale, shore distance) on the
+// model's grid, and the waves in runs of consecutive waves, each run on a grid whose
+// texel its shortest wave needs (a power of two times the model's: a 200 m swell does
+// not need 2 m texels for its phase).
 // Internal: hosts get a model through bake_scene (scene_bake.hpp) and use it through
 // WaterBody::shore(); the raw grids are for the renderer, saved bakes and tests.
 // Threading: immutable after bake; share it freely.
@@ -68,37 +72,44 @@ struct ShoreWaveFields {
     std::vector<float> steepness_scale;  ///< Multiplies every Q, 0..1.
 };
 
-/// Where a model's grid lies.
-struct ShoreGrid {
-    int resolution = 0;      ///< Texels per side.
-    double texel = 1.0;      ///< m.
-    glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+/// Waves [first, first + count) of the set on a grid of their own: per texel (ShoreTiles,
+/// stride 4 * count) count phase residuals, amplitude factors, wavevectors x and z.
+struct ShoreWaveLayer {
+    ShoreGrid grid;
+    std::size_t first = 0, count = 0;
+    ShoreTiles tiles;
 };
 
 class ShoreWaves {
   public:
-    /// A model from fields made elsewhere for `waves`. Fails unless every grid is
-    /// resolution^2 finite values and there is one of each per-wave field per wave.
+    /// A model from fields made elsewhere for `waves`, every wave on the fields' grid (one
+    /// run). Fails unless every grid is resolution^2 finite values and there is one of each
+    /// per-wave field per wave.
     static Result<std::shared_ptr<const ShoreWaves>> from_fields(ShoreWaveFields fields, std::span<const Wave> waves);
-    /// A model from tiles read elsewhere (a saved bake) for `waves`; slots 0 and 1 are
-    /// written here. Fails unless the tiles fit the grid and the waves and every stored
-    /// value is finite.
-    static Result<std::shared_ptr<const ShoreWaves>> from_tiles(const ShoreGrid& grid, ShoreTiles tiles,
+    /// A model from tiles made or read elsewhere (a bake, a saved bake) for `waves`: the
+    /// shared layer on `grid` and the runs of waves in order, together covering every
+    /// wave (none for an empty set); slots 0 and 1 of each are written here. Fails unless
+    /// the tiles fit their grids and the waves, every run's grid covers `grid`, and every
+    /// stored value is finite.
+    static Result<std::shared_ptr<const ShoreWaves>> from_tiles(const ShoreGrid& grid, ShoreTiles shared,
+                                                                std::vector<ShoreWaveLayer> layers,
                                                                 std::span<const Wave> waves);
 
-    /// The same model on every `stride`-th texel (the first texel centre kept): what a
-    /// renderer over its memory budget draws. A coarse tile is open sea (dry land) where
-    /// every tile its texels come from is; the rest are stored. `stride` 1: a copy.
+    /// The same model on every `stride`-th texel of each layer (each layer's first texel
+    /// centre kept): what a renderer over its memory budget draws. A coarse tile is open sea
+    /// (dry land) where every tile its texels come from is; the rest are stored. `stride` 1: a copy.
     std::shared_ptr<const ShoreWaves> coarsened(int stride) const;
     /// What coarsened(stride) takes on the GPU (ShoreTiles::device_bytes), without making it.
     std::uint64_t coarsened_device_bytes(int stride) const;
-    /// This model with the still-water depth of grid texels [i0, i0 + w) x [j0, j0 + h)
+    /// This model with the still-water depth of shared grid texels [i0, i0 + w) x [j0, j0 + h)
     /// replaced by `depths` (row-major, w * h values), in every stored slot that holds one,
-    /// aprons included; every other value stays bit for bit. For an edit of dry land that
-    /// leaves the waves and the shoreline as they were (the caller checks that).
+    /// aprons included; every other value stays bit for bit, and the wave runs are shared,
+    /// not copied. For an edit of dry land that leaves the waves and the shoreline as they
+    /// were (the caller checks that).
     std::shared_ptr<const ShoreWaves> with_depths(int i0, int j0, int w, int h, std::span<const float> depths) const;
 
-    /// Bilinear sample at world xz from the tiles; `waves` must have one entry per wave of the set.
+    /// Bilinear sample at world xz from the tiles (each layer's own); `waves` must have one
+    /// entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;
 
     const ShoreGrid& grid() const { return grid_; }
@@ -109,21 +120,31 @@ class ShoreWaves {
     std::size_t wave_count() const { return open_wavevectors_.size(); }
     /// True when every tile is open sea: the waves are unchanged and queries may skip the shore.
     bool trivial() const { return trivial_; }
-    /// The fields in tiles, interleaved per texel for the query kernel and the GPU:
-    /// query_texel_stride(wave_count()) floats each (ShoreTiles::texels).
-    const ShoreTiles& tiles() const { return tiles_; }
-    static std::size_t query_texel_stride(std::size_t waves) { return 4 * waves + 4; }
-    /// Texel (i, j)'s values (0 <= i, j < resolution()): from its tile's slot, the open
-    /// sea's or dry land's where its tile is not stored.
-    ShoreTexelView texel_values(int i, int j) const { return {tiles_.texel(i, j), wave_count()}; }
+    /// The shared fields in tiles on grid(): kShoreSharedRows floats a texel.
+    const ShoreTiles& shared() const { return shared_; }
+    /// The runs of waves, in order: each wave's fields on its run's grid, interleaved per
+    /// texel for the query kernel and the GPU (ShoreWaveLayer).
+    std::span<const ShoreWaveLayer> layers() const { return *layers_; }
+    /// Shared texel (i, j)'s values (0 <= i, j < resolution()): from its tile's slot, the
+    /// open sea's or dry land's where its tile is not stored.
+    ShoreTexelView texel_values(int i, int j) const { return {shared_.texel(i, j)}; }
+    /// The floats every tile takes on the CPU, every layer's.
+    std::size_t bytes() const;
+    /// What the tiles take on the GPU (ShoreTiles::device_bytes of every layer).
+    std::uint64_t device_bytes() const;
+    /// Tiles stored, over every layer (the shared one's and every run's).
+    std::size_t stored_tiles() const;
 
   private:
-    static std::shared_ptr<ShoreWaves> made(const ShoreGrid& grid, ShoreTiles tiles,
+    using Layers = std::vector<ShoreWaveLayer>;
+    static std::shared_ptr<ShoreWaves> made(const ShoreGrid& grid, ShoreTiles shared,
+                                            std::shared_ptr<const Layers> layers,
                                             std::vector<glm::dvec2> open_wavevectors);
 
     ShoreGrid grid_;
     std::vector<glm::dvec2> open_wavevectors_;  ///< each wave's k0 D, rad/m
-    ShoreTiles tiles_;
+    ShoreTiles shared_;
+    std::shared_ptr<const Layers> layers_;  ///< shared between a model and its with_depths edits
     bool trivial_ = false;
 };
 
