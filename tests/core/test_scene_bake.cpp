@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "test_helpers.hpp"
 #include "../shore_model_compare.hpp"
+#include "test_helpers.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/detail/water_bodies.hpp"

@@ -74,56 +74,56 @@ struct Band {
 };
 
 TEST(ShoreQuery, SimdMatchesTheDoublePathAtTheWaterlineSurfAndLand) {
-  for (const Scene* scene : {&island(), &layered_island()}) {
-    const WaterBody& body = scene->ocean;
-    ASSERT_TRUE(body.shore() && !body.shore()->trivial());
-    std::printf("%zu run(s) of waves\n", body.shore()->layers().size());
-    if (scene == &layered_island()) {
-        ASSERT_GE(body.shore()->layers().size(), 2u);
-    }
-    for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01},
-                          Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
-        const std::vector<glm::dvec2> pts = band(b.lo, b.hi, 1500, b.keep_in_16);
-        ASSERT_GT(pts.size(), 200u) << b.name;
-        for (double t : {0.0, 37.5, 1000.25}) {
-            std::vector<SurfacePoint> simd(pts.size());
-            ASSERT_TRUE(query_surface(body, t, pts, simd).ok());
-            double worst_h = 0.0, worst_n = 0.0;
-            int dry = 0, unconverged = 0;
-            for (std::size_t i = 0; i < pts.size(); ++i) {
-                const SurfacePoint ref = reference::query_point(body, t, pts[i]);
-                if (!simd[i].converged || !ref.converged) {
-                    // Within a texel of the waterline the shore fields have kinks that the
-                    // damped Newton step (local waves taken as constant) can stall at.
-                    ++unconverged;
-                    continue;
+    for (const Scene* scene : {&island(), &layered_island()}) {
+        const WaterBody& body = scene->ocean;
+        ASSERT_TRUE(body.shore() && !body.shore()->trivial());
+        std::printf("%zu run(s) of waves\n", body.shore()->layers().size());
+        if (scene == &layered_island()) {
+            ASSERT_GE(body.shore()->layers().size(), 2u);
+        }
+        for (const Band& b : {Band{"waterline", -6.0, 6.0, 16, 0.03}, Band{"surf zone", 6.0, 150.0, 1, 0.01},
+                              Band{"dry land", -400.0, -6.0, 1, 0.0}}) {
+            const std::vector<glm::dvec2> pts = band(b.lo, b.hi, 1500, b.keep_in_16);
+            ASSERT_GT(pts.size(), 200u) << b.name;
+            for (double t : {0.0, 37.5, 1000.25}) {
+                std::vector<SurfacePoint> simd(pts.size());
+                ASSERT_TRUE(query_surface(body, t, pts, simd).ok());
+                double worst_h = 0.0, worst_n = 0.0;
+                int dry = 0, unconverged = 0;
+                for (std::size_t i = 0; i < pts.size(); ++i) {
+                    const SurfacePoint ref = reference::query_point(body, t, pts[i]);
+                    if (!simd[i].converged || !ref.converged) {
+                        // Within a texel of the waterline the shore fields have kinks that the
+                        // damped Newton step (local waves taken as constant) can stall at.
+                        ++unconverged;
+                        continue;
+                    }
+                    worst_h = std::max(worst_h, std::abs(simd[i].height - ref.height));
+                    worst_n = std::max(
+                        worst_n, std::acos(std::clamp(glm::dot(simd[i].normal, ref.normal), -1.0, 1.0)) * 180.0 / kPi);
+                    EXPECT_NEAR(simd[i].depth, ref.depth, 1e-3) << b.name;
+                    EXPECT_NEAR(simd[i].shore_distance, ref.shore_distance, 1e-2) << b.name;
+                    if (ref.depth < -0.5) {
+                        // Every tap around a point this far up the beach is dry: the water rests.
+                        ++dry;
+                        EXPECT_EQ(simd[i].height, body.level()) << b.name << " point " << i;
+                        EXPECT_EQ(glm::length(simd[i].displacement), 0.0);
+                        EXPECT_EQ(glm::length(simd[i].velocity), 0.0);
+                        EXPECT_EQ(simd[i].normal, glm::dvec3(0.0, 1.0, 0.0));
+                    }
                 }
-                worst_h = std::max(worst_h, std::abs(simd[i].height - ref.height));
-                worst_n = std::max(
-                    worst_n, std::acos(std::clamp(glm::dot(simd[i].normal, ref.normal), -1.0, 1.0)) * 180.0 / kPi);
-                EXPECT_NEAR(simd[i].depth, ref.depth, 1e-3) << b.name;
-                EXPECT_NEAR(simd[i].shore_distance, ref.shore_distance, 1e-2) << b.name;
-                if (ref.depth < -0.5) {
-                    // Every tap around a point this far up the beach is dry: the water rests.
-                    ++dry;
-                    EXPECT_EQ(simd[i].height, body.level()) << b.name << " point " << i;
-                    EXPECT_EQ(glm::length(simd[i].displacement), 0.0);
-                    EXPECT_EQ(glm::length(simd[i].velocity), 0.0);
-                    EXPECT_EQ(simd[i].normal, glm::dvec3(0.0, 1.0, 0.0));
+                const double stalled = static_cast<double>(unconverged) / static_cast<double>(pts.size());
+                std::printf("%s, t = %g s: %zu points, %.1f%% unconverged, worst height %.2e m, normal %.3f deg\n",
+                            b.name, t, pts.size(), 100.0 * stalled, worst_h, worst_n);
+                EXPECT_LT(worst_h, 1e-4) << b.name << " at t = " << t;
+                EXPECT_LT(worst_n, 0.05) << b.name << " at t = " << t;
+                EXPECT_LE(stalled, b.stall_allowance) << b.name << " at t = " << t;
+                if (std::string(b.name) == "dry land") {
+                    EXPECT_GT(dry, 200) << "dry points checked";
                 }
-            }
-            const double stalled = static_cast<double>(unconverged) / static_cast<double>(pts.size());
-            std::printf("%s, t = %g s: %zu points, %.1f%% unconverged, worst height %.2e m, normal %.3f deg\n", b.name,
-                        t, pts.size(), 100.0 * stalled, worst_h, worst_n);
-            EXPECT_LT(worst_h, 1e-4) << b.name << " at t = " << t;
-            EXPECT_LT(worst_n, 0.05) << b.name << " at t = " << t;
-            EXPECT_LE(stalled, b.stall_allowance) << b.name << " at t = " << t;
-            if (std::string(b.name) == "dry land") {
-                EXPECT_GT(dry, 200) << "dry points checked";
             }
         }
     }
-  }
 }
 
 // Depth and shore distance are properties of the query point: the shore model's grids

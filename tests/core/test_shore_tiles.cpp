@@ -20,6 +20,20 @@
 namespace tidewater {
 namespace {
 
+/// The tiled coast's shore model at `resolution`² with `texels_per_wavelength`, every tile
+/// stored or only the band.
+std::shared_ptr<const ShoreWaves> bake_coast(int resolution, double texels_per_wavelength, bool every_tile = false) {
+    auto scene = test::tiled_coast_scene();
+    EXPECT_TRUE(scene.ok());
+    ShoreWaveOptions options;
+    options.resolution = resolution;
+    options.store_every_tile = every_tile;
+    options.texels_per_wavelength = texels_per_wavelength;
+    auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
+    EXPECT_TRUE(baked.ok()) << baked.error().message;
+    return baked.ok() ? *baked : nullptr;
+}
+
 /// The tiled coast's model, every wave on the model's grid, baked twice: as a scene bakes
 /// it (the band), and with every tile stored (the open sea's and dry land's too), which
 /// the band is checked against.
@@ -27,37 +41,14 @@ struct CoastModels {
     std::shared_ptr<const ShoreWaves> band, every;
 };
 const CoastModels& coast_models() {
-    static const CoastModels models = [] {
-        CoastModels out;
-        auto scene = test::tiled_coast_scene();
-        EXPECT_TRUE(scene.ok());
-        for (bool every : {false, true}) {
-            ShoreWaveOptions options;
-            options.resolution = 512;
-            options.store_every_tile = every;
-            options.texels_per_wavelength = 0.0;
-            auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
-            EXPECT_TRUE(baked.ok()) << baked.error().message;
-            if (baked.ok()) (every ? out.every : out.band) = *baked;
-        }
-        return out;
-    }();
+    static const CoastModels models{bake_coast(512, 0.0), bake_coast(512, 0.0, true)};
     return models;
 }
 
 /// The tiled coast's model with its waves in runs: 8 texels a deep-water wavelength (half
 /// the default) puts the preset's longest waves on a grid of twice the model's texel.
 std::shared_ptr<const ShoreWaves> layered_coast() {
-    static const std::shared_ptr<const ShoreWaves> model = [] {
-        auto scene = test::tiled_coast_scene();
-        EXPECT_TRUE(scene.ok());
-        ShoreWaveOptions options;
-        options.resolution = 512;
-        options.texels_per_wavelength = 8.0;
-        auto baked = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
-        EXPECT_TRUE(baked.ok()) << baked.error().message;
-        return baked.ok() ? *baked : nullptr;
-    }();
+    static const std::shared_ptr<const ShoreWaves> model = bake_coast(512, 8.0);
     return model;
 }
 
@@ -297,7 +288,6 @@ TEST(ShoreTiles, ACoarsenedModelHoldsEveryKthTexel) {
     EXPECT_TRUE(test::same_tiles(*fine.coarsened(1), fine));
 }
 
-
 // The preset's longer waves lie on coarser grids: each run's texel keeps at least the
 // asked texels a deep-water wavelength for its shortest wave (and twice that texel would
 // not, unless the run's grid would shrink under a tile), the runs cover the waves in order,
@@ -318,12 +308,14 @@ TEST(ShoreLayers, LongWavesLieOnCoarserGrids) {
         EXPECT_EQ(run.grid.corner, layered.corner());
         EXPECT_EQ(run.grid.resolution, (layered.resolution() + static_cast<int>(scale) - 1) / static_cast<int>(scale));
         double shortest = 1e300;
-        for (std::size_t w = run.first; w < run.first + run.count; ++w) shortest = std::min(shortest, kTwoPi / waves[w].k);
+        for (std::size_t w = run.first; w < run.first + run.count; ++w)
+            shortest = std::min(shortest, kTwoPi / waves[w].k);
         if (scale > 1.0) {
             EXPECT_LE(8.0 * run.grid.texel, shortest + 1e-9) << "8 texels to its shortest wave";
         }
-        const bool finer_grid_small = (layered.resolution() + 2 * static_cast<int>(scale) - 1) /
-                                          (2 * static_cast<int>(scale)) < ShoreTiles::kTile;
+        const bool finer_grid_small =
+            (layered.resolution() + 2 * static_cast<int>(scale) - 1) / (2 * static_cast<int>(scale)) <
+            ShoreTiles::kTile;
         EXPECT_TRUE(finer_grid_small || 16.0 * run.grid.texel > shortest) << "as coarse as keeps 8 texels";
         std::printf("run of waves %zu to %zu: %.1f m texels (shortest wave %.1f m), %zu of %zu tiles stored\n",
                     run.first, run.first + run.count - 1, run.grid.texel, shortest, run.tiles.stored_tiles(),
@@ -350,14 +342,11 @@ TEST(ShoreLayers, LongWavesLieOnCoarserGrids) {
 TEST(ShoreLayers, CoarserGridsKeepTheSurface) {
     auto scene = test::tiled_coast_scene();
     ASSERT_TRUE(scene.ok());
-    ShoreWaveOptions options;
-    options.resolution = 1024;
-    options.texels_per_wavelength = 0.0;
-    auto fine_model = bake_shore_waves(scene->ocean.waves(), scene->terrain, 0.0, options);
-    ASSERT_TRUE(fine_model.ok()) << fine_model.error().message;
+    const auto fine_model = bake_coast(1024, 0.0);
+    ASSERT_TRUE(fine_model);
     auto layered = scene->ocean.with_shore(layered_coast());
     auto one = scene->ocean.with_shore(coast_models().band);
-    auto fine = scene->ocean.with_shore(*fine_model);
+    auto fine = scene->ocean.with_shore(fine_model);
     ASSERT_TRUE(layered.ok() && one.ok() && fine.ok());
     std::vector<glm::dvec2> points;
     std::mt19937_64 rng(5);

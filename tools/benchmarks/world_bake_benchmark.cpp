@@ -5,7 +5,7 @@
 // object: bake, save and load seconds, a brush stroke's re-bake, the process's peak
 // memory (after the save, before the stroke and the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
-//   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]
+//   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=16]
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -79,15 +79,20 @@ std::uintmax_t folder_bytes(const fs::path& dir) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=16]\n",
+                     argv[0]);
         return 2;
     }
     const int side = std::atoi(argv[1]);
     const int waves = argc > 2 ? std::atoi(argv[2]) : 24;
     const double seabed = argc > 3 ? std::atof(argv[3]) : -60.0;
     const double texel = argc > 4 ? std::atof(argv[4]) : 2.0;
-    if (side < 256 || side > 32768 || waves < 1 || waves > 64 || !(seabed < -1.0) || !(texel > 0.0)) {
-        std::fprintf(stderr, "out of range: SIDE_M 256..32768, WAVES 1..64, SEABED_M < -1, TEXEL_M > 0\n");
+    const double per_wavelength = argc > 5 ? std::atof(argv[5]) : tidewater::kDefaultShoreTexelsPerWavelength;
+    if (side < 256 || side > 32768 || waves < 1 || waves > 64 || !(seabed < -1.0) || !(texel > 0.0) ||
+        !(per_wavelength == 0.0 || (per_wavelength >= 4.0 && per_wavelength <= 64.0))) {
+        std::fprintf(stderr,
+                     "out of range: SIDE_M 256..32768, WAVES 1..64, SEABED_M < -1, TEXEL_M > 0, "
+                     "TEXELS_PER_WAVELENGTH 0 or 4..64\n");
         return 2;
     }
     const auto t0 = Clock::now();
@@ -107,6 +112,7 @@ int main(int argc, char** argv) {
         std::min(8192, static_cast<int>(std::lround(2.0 * scene.terrain.extent_half_size() / texel)));
     scene.shore.resolution = resolution;
     scene.shore.distance_resolution = resolution;
+    scene.shore.texels_per_wavelength = per_wavelength;
     const double make = seconds_since(t0);
 
     const auto t1 = Clock::now();

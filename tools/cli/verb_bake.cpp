@@ -84,6 +84,13 @@ int run_bake(const BakeArgs& a) {
             "segments, %zu land polygons, %zu enclosed waters\n",
             model.resolution(), model.resolution(), model.texel(), model.wave_count(), field.resolution,
             field.resolution, field.texel, field.segment_count, field.polygons, field.holes);
+        std::printf("    shared fields: %zu of %zu tiles stored\n", model.shared().stored_tiles(),
+                    model.shared().pages.size());
+        for (const ShoreWaveLayer& run : model.layers())
+            std::printf("    waves %zu to %zu: %dx%d at %.2f m texels, %zu of %zu tiles stored\n", run.first,
+                        run.first + run.count - 1, run.grid.resolution, run.grid.resolution, run.grid.texel,
+                        run.tiles.stored_tiles(), run.tiles.pages.size());
+        std::printf("    %.1f MB of tiles\n", static_cast<double>(model.bytes()) / 1e6);
     }
     const BodySummary summary = summarize_bodies(**baked);
     for (const LakeSummary& l : summary.lakes)

@@ -115,8 +115,7 @@ bool same_ocean_shore_inputs(const Scene& scene, int distance_resolution, const 
     return old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
            old.shore.breaking_index == scene.shore.breaking_index &&
            old.shore.texels_per_wavelength == scene.shore.texels_per_wavelength &&
-           old.distance_resolution == distance_resolution &&
-           same_waves(previous->ocean.waves(), scene.ocean.waves());
+           old.distance_resolution == distance_resolution && same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
 /// The ocean's shore model and the distance field it samples: the previous bake's when

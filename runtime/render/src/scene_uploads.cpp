@@ -37,9 +37,9 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
             gpu::GpuShoreLayer record;
             record.grid = glm::vec4(static_cast<float>(offset.x), static_cast<float>(offset.y),
                                     static_cast<float>(layer.grid.texel), static_cast<float>(layer.grid.resolution));
-            record.waves = glm::uvec4(static_cast<std::uint32_t>(layer.first), static_cast<std::uint32_t>(layer.count),
-                                      static_cast<std::uint32_t>(p.pages.size()),
-                                      static_cast<std::uint32_t>(p.per_wave.size()));
+            record.waves =
+                glm::uvec4(static_cast<std::uint32_t>(layer.first), static_cast<std::uint32_t>(layer.count),
+                           static_cast<std::uint32_t>(p.pages.size()), static_cast<std::uint32_t>(p.per_wave.size()));
             p.layers.push_back(record);
             const ShoreTiles& tiles = layer.tiles;
             p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());

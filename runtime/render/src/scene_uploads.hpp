@@ -38,9 +38,9 @@ struct PackedShore {
 struct ShorePlacement {
     const ShoreWaves* model = nullptr;
     std::uint32_t layers = 0, shared = 0, pages = 0;  ///< its first run record, shared vec4, shared page
-    glm::dvec2 corner{0.0};  ///< world xz of the packed shared grid's outer corner, m
-    double texel = 1.0;      ///< m
-    int resolution = 0;      ///< texels per side
+    glm::dvec2 corner{0.0};                           ///< world xz of the packed shared grid's outer corner, m
+    double texel = 1.0;                               ///< m
+    int resolution = 0;                               ///< texels per side
 };
 
 /// Packs `models` (null ones get no fields) one after the other, each on the grid it

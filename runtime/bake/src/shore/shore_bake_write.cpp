@@ -60,7 +60,9 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreTiles& t, co
     std::error_code ec;
     const fs::path folder = temp / "tiles" / layer;
     fs::create_directories(folder, ec);
-    if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot create the folder: {}", folder.string(), ec.message())};
+    if (ec)
+        return Error{ErrorCode::io_error,
+                     fmt::format("{}: cannot create the folder: {}", folder.string(), ec.message())};
     const int side = t.tiles_per_side;
     std::vector<std::size_t> stored;
     for (std::size_t k = 0; k < t.pages.size(); ++k)
@@ -76,10 +78,10 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreTiles& t, co
         for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
             for (std::size_t r = 0; r < rows; ++r)
                 img.pixels[r * ShoreTiles::kSlotTexels + texel] = encodings[r].encode(slot[texel * rows + r]);
-        written[s] = detail::write_png_gray16(
-            temp / shore_tile_file(layer, static_cast<int>(k % static_cast<std::size_t>(side)),
-                                   static_cast<int>(k / static_cast<std::size_t>(side))),
-            img);
+        written[s] =
+            detail::write_png_gray16(temp / shore_tile_file(layer, static_cast<int>(k % static_cast<std::size_t>(side)),
+                                                            static_cast<int>(k / static_cast<std::size_t>(side))),
+                                     img);
     });
     for (const Status& st : written)
         if (!st) return st.error();

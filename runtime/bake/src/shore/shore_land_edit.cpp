@@ -128,7 +128,8 @@ std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& a
         const TexelRange r = texels_in(g.resolution, g.texel, g.corner, rect);
         if (r.empty()) continue;
         auto before_depth = [&](int i, int j) {
-            return static_cast<float>(water_level - before.height_at(g.corner + g.texel * glm::dvec2(i + 0.5, j + 0.5)));
+            return static_cast<float>(water_level -
+                                      before.height_at(g.corner + g.texel * glm::dvec2(i + 0.5, j + 0.5)));
         };
         if (!dry_depths(r, g.resolution, g.texel, g.corner, after, water_level, before_depth)) return std::nullopt;
     }

@@ -305,7 +305,8 @@ void each_run_wave(const std::vector<RunBake>& runs, const ShoreGrid& grid, int 
             continue;
         }
         const ShoreTaps taps = shore_taps(g, r.plan.tiles, p);
-        for (std::size_t w = 0; w < nw; ++w) each(r.first + w, taps.lerp(nw + w), taps.lerp(2 * nw + w), taps.lerp(3 * nw + w));
+        for (std::size_t w = 0; w < nw; ++w)
+            each(r.first + w, taps.lerp(nw + w), taps.lerp(2 * nw + w), taps.lerp(3 * nw + w));
     }
 }
 

@@ -41,7 +41,7 @@ struct SceneShore {
     /// Texels per side of the signed distance field the model samples, 8 to 8192 and at
     /// least `resolution`; 0 = `resolution`.
     int distance_resolution = 0;
-    double breaking_index = 0.78;       ///< Breaker height / depth (McCowan), 0.3 to 1.2.
+    double breaking_index = 0.78;  ///< Breaker height / depth (McCowan), 0.3 to 1.2.
     /// Texels a deep-water wavelength each wave's fields keep at least, 0 or 4 to 64: runs of
     /// long waves are baked on grids of 2, 4, 8 ... times the model's texel (depth, breaking
     /// and shore distance stay on the model's). 0: every wave on the model's grid.

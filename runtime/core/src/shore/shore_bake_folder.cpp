@@ -154,8 +154,8 @@ Result<std::vector<ShoreWaveLayer>> read_runs(const fs::path& dir, const ObjectR
         layer.first = next;
         layer.count = static_cast<std::size_t>(count);
         double step = 0.0;
-        auto tiles = read_tiles(dir, *run, at + "/tiles", layer.grid.resolution, shore_layer_folder(static_cast<int>(r)),
-                                layer.first, layer.count, step);
+        auto tiles = read_tiles(dir, *run, at + "/tiles", layer.grid.resolution,
+                                shore_layer_folder(static_cast<int>(r)), layer.first, layer.count, step);
         if (!tiles) return tiles.error();
         layer.tiles = std::move(tiles).value();
         next += layer.count;

@@ -79,8 +79,9 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
     const int m = (n + ShoreTiles::kTile - 1) / ShoreTiles::kTile;
     if (t.resolution != n || t.tiles_per_side != m ||
         t.pages.size() != static_cast<std::size_t>(m) * static_cast<std::size_t>(m))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("shore tiles: {} has {} pages for a {}² grid, expected {}²", what, t.pages.size(), n, m)};
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("shore tiles: {} has {} pages for a {}² grid, expected {}²", what, t.pages.size(), n, m)};
     if (t.stride != stride || stride == 0 || t.texels.size() % (t.stride * ShoreTiles::kSlotTexels) != 0 ||
         t.slot_count() < gpu::kShoreFirstStoredSlot)
         return Error{ErrorCode::invalid_argument,
@@ -92,7 +93,8 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
                          fmt::format("shore tiles: {} tile {} names slot {} of {}", what, k, t.pages[k], slots)};
     for (float v : t.texels)
         if (!std::isfinite(v))
-            return Error{ErrorCode::invalid_argument, fmt::format("shore tiles: {} has a value that is not finite", what)};
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("shore tiles: {} has a value that is not finite", what)};
     return {};
 }
 
@@ -176,8 +178,8 @@ Result<std::shared_ptr<const ShoreWaves>> ShoreWaves::from_tiles(const ShoreGrid
     if (auto st = check_grid(grid, "the shared grid's"); !st) return st.error();
     if (auto st = check_tiles(shared, grid.resolution, kShoreSharedRows, "the shared layer"); !st) return st.error();
     if (layers.size() > gpu::kShoreMaxLayers)
-        return Error{ErrorCode::invalid_argument, fmt::format("shore tiles: {} runs of waves, at most {}",
-                                                              layers.size(), gpu::kShoreMaxLayers)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("shore tiles: {} runs of waves, at most {}", layers.size(), gpu::kShoreMaxLayers)};
     std::size_t next = 0;
     for (std::size_t l = 0; l < layers.size(); ++l) {
         const ShoreWaveLayer& layer = layers[l];
@@ -221,9 +223,9 @@ std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
     if (stride <= 1) return made(grid_, shared_, layers_, open_wavevectors_);
     auto layers = std::make_shared<Layers>();
     for (const ShoreWaveLayer& l : *layers_)
-        layers->push_back(
-            {coarsened_grid(l.grid, stride), l.first, l.count,
-             coarsened_tiles(l.tiles, stride, std::span<const glm::dvec2>(open_wavevectors_).subspan(l.first, l.count))});
+        layers->push_back({coarsened_grid(l.grid, stride), l.first, l.count,
+                           coarsened_tiles(l.tiles, stride,
+                                           std::span<const glm::dvec2>(open_wavevectors_).subspan(l.first, l.count))});
     return made(coarsened_grid(grid_, stride), coarsened_tiles(shared_, stride, {}), std::move(layers),
                 open_wavevectors_);
 }

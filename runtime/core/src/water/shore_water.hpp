@@ -87,7 +87,7 @@ class ShoreWater {
         std::size_t row = 0;                    // its first field's row
         double u[kLanes], v[kLanes];            // query points in texel units from the first texel centre
         long cell[kLanes];
-        const float* first[kLanes] = {};                  // the floats of each lane's cached cell's first tap
+        const float* first[kLanes] = {};                    // the floats of each lane's cached cell's first tap
         alignas(64) Scalar cell_u[kLanes], cell_v[kLanes];  // query points relative to their cached cell, texels
         bool edge_lane[kLanes];  // the lane was clamped at the grid's edge (or nothing is cached yet)
         bool edge = true;        // any lane is
@@ -173,8 +173,8 @@ class ShoreWater {
         for (std::size_t l = 0; l < kLanes; ++l) {
             cells[l] = c.cell[l];
             firsts[l] = c.first[l];
-            const bool keep = !c.edge_lane[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) &&
-                              fv[l] <= Scalar(1);
+            const bool keep =
+                !c.edge_lane[l] && fu[l] >= Scalar(0) && fu[l] <= Scalar(1) && fv[l] >= Scalar(0) && fv[l] <= Scalar(1);
             if (keep) continue;
             const double u_raw = c.u[l] + static_cast<double>(exs[l]) * c.inv_texel;
             const double v_raw = c.v[l] + static_cast<double>(ezs[l]) * c.inv_texel;
@@ -255,7 +255,7 @@ class ShoreWater {
     const PreparedWaves<Scalar>& w_;
     const Scalar* base_;
     std::array<Cursor, 1 + gpu::kShoreMaxLayers> cursors_;  // the shared layer's, then each run's
-    std::size_t layers_ = 0;                                 // runs of waves
+    std::size_t layers_ = 0;                                // runs of waves
     T depth_ = T(0.0);
     alignas(64) std::array<std::array<Scalar, kMaxRows * kLanes>, 4> rows_;
 };
