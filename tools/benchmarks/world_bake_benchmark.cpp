@@ -5,7 +5,9 @@
 // object: bake, save and load seconds, a brush stroke's re-bake, the process's peak
 // memory (after the save, before the stroke and the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
-//   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=16]
+//   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]
+// With KEEP_DIR the world stays there to be drawn: island.raw (the heightmap), bake/ (the
+// saved bake) and island.json (a scene naming both: `tidewater render --scene`).
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -68,6 +70,39 @@ tidewater::Terrain island(int side, double seabed) {
     return tidewater::Terrain(map);
 }
 
+/// Keeps the world in `keep`: its heightmap as raw 16-bit, the bake folder `bake` moved to
+/// keep/bake, and a scene naming both. Returns what failed (empty: nothing).
+std::string keep_world(const fs::path& keep, const fs::path& bake, const tidewater::Scene& scene, int side, int waves) {
+    std::error_code ec;
+    fs::create_directories(keep, ec);
+    fs::remove_all(keep / "bake", ec);
+    fs::copy(bake, keep / "bake", fs::copy_options::recursive, ec);
+    if (ec) return fmt::format("{}: cannot keep the bake: {}", keep.string(), ec.message());
+    const auto& map = std::get<tidewater::HeightmapTerrain>(scene.terrain.shape());
+    {
+        std::FILE* raw = std::fopen((keep / "island.raw").c_str(), "wb");
+        if (!raw) return fmt::format("{}: cannot write", (keep / "island.raw").string());
+        for (std::uint16_t v : map.image->pixels) {
+            const unsigned char bytes[2] = {static_cast<unsigned char>(v & 0xff), static_cast<unsigned char>(v >> 8)};
+            std::fwrite(bytes, 1, 2, raw);
+        }
+        if (std::fclose(raw) != 0) return fmt::format("{}: cannot write", (keep / "island.raw").string());
+    }
+    std::FILE* json = std::fopen((keep / "island.json").c_str(), "w");
+    if (!json) return fmt::format("{}: cannot write", (keep / "island.json").string());
+    std::fprintf(json,
+                 R"({"version": 1, "name": "island %d", "water_level": 0,
+ "terrain": {"heightmap": {"file": "island.raw", "size": [%d, %d], "height_range": [%.17g, %.17g],
+                           "raw": {"width": %d, "height": %d}}},
+ "ocean": {"spectrum": {"type": "jonswap", "wind_speed": 12.0, "fetch": 200000.0, "peak_enhancement": 3.3,
+                        "direction": 20.0, "spreading": 8.0, "wave_count": %d, "seed": 11, "steepness": 0.6}},
+ "shore": {"bake": "bake"}}
+)",
+                 side, side - 1, side - 1, map.min_height, map.max_height, side, side, waves);
+    if (std::fclose(json) != 0) return fmt::format("{}: cannot write", (keep / "island.json").string());
+    return {};
+}
+
 std::uintmax_t folder_bytes(const fs::path& dir) {
     std::uintmax_t bytes = 0;
     for (const auto& e : fs::recursive_directory_iterator(dir))
@@ -79,7 +114,8 @@ std::uintmax_t folder_bytes(const fs::path& dir) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=16]\n",
+        std::fprintf(stderr,
+                     "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]\n",
                      argv[0]);
         return 2;
     }
@@ -190,6 +226,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     const double load = seconds_since(t3);
+    if (argc > 6) {
+        if (auto st = keep_world(fs::path(argv[6]), dir, scene, side, waves); !st.empty()) {
+            std::fprintf(stderr, "%s\n", st.c_str());
+            fs::remove_all(dir);
+            return 1;
+        }
+    }
     fs::remove_all(dir);
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "

@@ -140,8 +140,9 @@ struct Renderer::Impl {
     }
     Status create_slots();
     Status size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves);
-    /// Uploads the ocean's shore model (slot 0; null without an ocean) and each lake's after it.
-    Status use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes);
+    /// Uploads the ocean's shore model (slot 0; null without an ocean) and each lake's after
+    /// it, within the budget the terrain's `terrain_bytes` leave.
+    Status use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes, std::uint64_t terrain_bytes);
     void write_descriptors(Slot& slot, bool with_scene_copy);
     /// A frame's recording, in three steps: its inputs checked, its plan (what it draws,
     /// from the frame and the scene), and the plan written into its in-flight slot.
@@ -209,13 +210,15 @@ Status Renderer::Impl::size_slots(std::size_t draws, std::size_t waves, std::siz
     return {};
 }
 
-Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes) {
+Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes,
+                                  std::uint64_t terrain_bytes) {
     detail::ShoreBuffers::Models models{ocean ? ocean->shore() : nullptr};
     for (const SceneLake& lake : lakes) models.push_back(lake.body.shore());
     if (shore.holds(models)) return {};
     TW_VK_TRY(vk().DeviceWaitIdle(ctx().device));  // frames in flight may read the old fields
-    // The shore fields may take the half of the budget the terrain does not.
-    auto uploaded = shore.upload(ctx(), models, info.gpu_memory_budget / 2);
+    // The shore fields may take what the terrain leaves (at least half the budget).
+    const std::uint64_t budget = info.gpu_memory_budget - std::min(terrain_bytes, info.gpu_memory_budget / 2);
+    auto uploaded = shore.upload(ctx(), models, budget);
     if (!uploaded) return uploaded.error();
     return {};
 }
@@ -541,7 +544,8 @@ Status Renderer::set_scene(const Scene& scene) {
     if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves);
         !st)
         return st;
-    if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes); !st) return st;
+    if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes, terrain->resident_bytes); !st)
+        return st;
     m.terrain = std::move(terrain).value();
     m.bodies = std::move(bodies).value();
     m.scene = scene;
@@ -583,7 +587,9 @@ Status Renderer::set_water(const WaterBody& water) {
             "(SceneBakeOptions::previous = the current scene re-bakes only the shore) and call set_scene; or give a "
             "body whose with_shore() model was baked for these waves"};
     // Wave data is written per frame into the in-flight slot; only a new shore model is uploaded.
-    if (auto st = impl_->use_shores(&water, impl_->scene.lakes); !st) return st;
+    if (auto st = impl_->use_shores(&water, impl_->scene.lakes, impl_->terrain ? impl_->terrain->resident_bytes : 0);
+        !st)
+        return st;
     if (water.waves().size() > impl_->scene.ocean.waves().size()) {
         // The frame's wave buffers hold the ocean's waves first: make room.
         std::size_t waves = water.waves().size();

@@ -83,15 +83,26 @@ Error cancelled() {
     return Error{ErrorCode::cancelled, "shore waves: cancelled"};
 }
 
-/// The model's grid: the shoreline baked elsewhere (resampled to the model's resolution
-/// where it differs), or baked here over `options.region` with progress 0..`share`.
-Result<ShoreField> model_grid(const Terrain& terrain, double water_level, const ShoreWaveOptions& options,
-                              const ShoreField* shoreline, double share) {
+/// Owns a grid made here; null when not.
+std::shared_ptr<const ShoreField> owned(Result<ShoreField> made) {
+    return made ? std::make_shared<const ShoreField>(std::move(made).value()) : nullptr;
+}
+
+/// The model's grid: the shoreline baked elsewhere (not copied; resampled to the model's
+/// resolution where it differs), or baked here over `options.region` with progress 0..`share`.
+Result<std::shared_ptr<const ShoreField>> model_grid(const Terrain& terrain, double water_level,
+                                                     const ShoreWaveOptions& options, const ShoreField* shoreline,
+                                                     double share) {
     if (shoreline && options.region)
         return Error{ErrorCode::invalid_argument,
                      "shore waves: a region is baked with its own shoreline, not one baked elsewhere"};
-    if (shoreline && shoreline->resolution == options.resolution) return *shoreline;
-    if (shoreline) return resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
+    if (shoreline && shoreline->resolution == options.resolution)
+        return std::shared_ptr<const ShoreField>(std::shared_ptr<void>(), shoreline);
+    if (shoreline) {
+        auto made = resample_shoreline(terrain, water_level, options.resolution, *shoreline, options.threads);
+        if (!made) return made.error();
+        return owned(std::move(made));
+    }
     BakeOptions bake;
     bake.resolution = options.resolution;
     bake.region = options.region;
@@ -100,7 +111,9 @@ Result<ShoreField> model_grid(const Terrain& terrain, double water_level, const 
     bake.progress = [&](double f) {
         if (options.progress) options.progress(share * f);
     };
-    return bake_shore(terrain, water_level, bake);
+    auto made = bake_shore(terrain, water_level, bake);
+    if (!made) return made.error();
+    return owned(std::move(made));
 }
 
 /// One wave's phase over the grid by fast marching from deep water (or from the edges it
@@ -479,8 +492,9 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
     try {
         // The grid: 0..30% of the progress when the shoreline is baked here, then the waves.
         const double grid_share = shoreline ? 0.0 : 0.3;
-        auto field = model_grid(terrain, water_level, options, shoreline, grid_share);
-        if (!field) return field.error();
+        auto grid = model_grid(terrain, water_level, options, shoreline, grid_share);
+        if (!grid) return grid.error();
+        const std::shared_ptr<const ShoreField> field = std::move(grid).value();
         if (options.cancel.stop_requested()) return cancelled();
 
         const auto waves = set.waves();
@@ -492,7 +506,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         for (const Run& r : plan_runs(waves, field->texel, field->resolution, options.texels_per_wavelength)) {
             RunBake run{r.first, r.count, nullptr, {}};
             if (r.scale == 1) {
-                run.field = std::shared_ptr<const ShoreField>(std::shared_ptr<void>(), &*field);
+                run.field = field;
             } else {
                 const ShoreGrid g{(field->resolution + r.scale - 1) / r.scale, field->texel * r.scale, field->corner};
                 auto coarse = resampled_grid(terrain, water_level, g, *field, options.threads);

@@ -32,7 +32,7 @@ struct SceneCamera {
 };
 
 /// SceneShore::texels_per_wavelength by default.
-inline constexpr double kDefaultShoreTexelsPerWavelength = 16.0;
+inline constexpr double kDefaultShoreTexelsPerWavelength = 8.0;
 
 /// How a scene's waves feel its shore (the scene's "shore" object).
 struct SceneShore {

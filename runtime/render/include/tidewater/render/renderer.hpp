@@ -91,8 +91,8 @@ struct RendererInitInfo {
     bool shade_water_per_sample = false;
     std::uint32_t frames_in_flight = 2;  ///< 1 to 4.
     /// Device memory the scene's data may take, bytes (at least 16 MiB). The terrain's
-    /// height texture takes at most half, the shore models' fields the other half: over
-    /// it they are drawn from every k-th pixel or texel, never refused for memory
+    /// height texture takes at most half, the shore models' fields what it leaves: over
+    /// their share they are drawn from every k-th pixel or texel, never refused for memory
     /// (RendererStats::terrain_bytes, shore_bytes and shore_stride say what they took).
     std::uint64_t gpu_memory_budget = std::uint64_t{1} << 30;
     bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
