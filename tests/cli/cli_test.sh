@@ -300,8 +300,8 @@ JSON
     expect_error "bake for other waves" "re-run tidewater bake" "$TW" query --scene other_waves.json --points points.csv --time 0
     sed 's|"seabed": -40|"seabed": -42|' loads_bake.json > other_terrain.json
     expect_error "bake over another terrain" "the terrain differs" "$TW" query --scene other_terrain.json --points points.csv --time 0
-    first_tile=$(ls baked/tiles | head -1)
-    rm "baked/tiles/$first_tile"
+    first_tile=$(ls baked/tiles/shared | head -1)
+    rm "baked/tiles/shared/$first_tile"
     expect_error "bake with a missing tile" "$first_tile" "$TW" query --scene loads_bake.json --points points.csv --time 0
     echo '{"version": 2, "water_level_m": 0' > baked/shore.json
     expect_error "corrupt sidecar" "shore.json" "$TW" query --scene loads_bake.json --points points.csv --time 0
