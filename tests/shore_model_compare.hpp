@@ -14,12 +14,12 @@ inline bool same_tiles(const ShoreWaves& a, const ShoreWaves& b) {
         return x.resolution == y.resolution && x.texel == y.texel && x.corner == y.corner;
     };
     if (!same_grid(a.grid(), b.grid()) || a.shared().pages != b.shared().pages ||
-        a.shared().texels != b.shared().texels || a.layers().size() != b.layers().size())
+        a.shared().floats() != b.shared().floats() || a.layers().size() != b.layers().size())
         return false;
     for (std::size_t l = 0; l < a.layers().size(); ++l) {
         const ShoreWaveLayer &x = a.layers()[l], &y = b.layers()[l];
         if (!same_grid(x.grid, y.grid) || x.first != y.first || x.count != y.count || x.tiles.pages != y.tiles.pages ||
-            x.tiles.texels != y.tiles.texels)
+            x.tiles.floats() != y.tiles.floats())
             return false;
     }
     return true;

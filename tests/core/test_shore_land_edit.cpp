@@ -86,14 +86,28 @@ TEST(ShoreLandEdit, AnEditOfDryLandIsTheFullBakeBitForBit) {
     ASSERT_TRUE(full.ok()) << full.error().message;
     expect_same_shore(*(*local)->bake, *(*full)->bake);
     // The edit shows: some stored depth differs from the first bake's.
-    const auto& before = (*first)->bake->ocean_shore->shared().texels;
-    const auto& after = (*local)->bake->ocean_shore->shared().texels;
+    const std::vector<float> before = (*first)->bake->ocean_shore->shared().floats();
+    const std::vector<float> after = (*local)->bake->ocean_shore->shared().floats();
     ASSERT_EQ(before.size(), after.size());
     std::size_t changed = 0;
     for (std::size_t k = 0; k < before.size(); ++k) changed += before[k] != after[k];
     std::printf("dry-land edit: %zu stored values changed; %.3f s re-baked where it is, %.3f s in full\n", changed,
                 local_s, full_s);
     EXPECT_GT(changed, 50u);
+    // Only the slots under the mound are new; the rest are the first bake's memory, and so
+    // are the runs' tiles and the distance field's distances.
+    const ShoreTiles &old_tiles = (*first)->bake->ocean_shore->shared(),
+                     &new_tiles = (*local)->bake->ocean_shore->shared();
+    ASSERT_EQ(old_tiles.slot_count(), new_tiles.slot_count());
+    std::size_t copied = 0;
+    for (std::size_t s = 0; s < old_tiles.slot_count(); ++s) copied += old_tiles.slot(s) != new_tiles.slot(s);
+    std::printf("dry-land edit: %zu of %zu shared slots copied\n", copied, old_tiles.slot_count());
+    EXPECT_GE(copied, 1u);
+    EXPECT_LE(copied, 4u);
+    EXPECT_EQ((*first)->bake->ocean_shore->layers().data(), (*local)->bake->ocean_shore->layers().data());
+    EXPECT_EQ(&(*first)->bake->shoreline->signed_distance.values(),
+              &(*local)->bake->shoreline->signed_distance.values());
+    EXPECT_NE(&(*first)->bake->shoreline->depth.values(), &(*local)->bake->shoreline->depth.values());
 
     // The same pixels in another image object: nothing is baked again.
     auto same = bake_scene(island_scene(island_pixels()), options);

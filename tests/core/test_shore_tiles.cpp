@@ -223,7 +223,7 @@ TEST(ShoreTiles, TilesFromElsewhereAreChecked) {
     EXPECT_NE(refused(short_pages, runs, waves).find("pages"), std::string::npos);
     EXPECT_NE(refused(model.shared(), runs, waves.subspan(1)).find("waves"), std::string::npos);
     std::vector<ShoreWaveLayer> nan = runs;
-    nan[0].tiles.texels.back() = std::nanf("");
+    nan[0].tiles.slot_for_writing(nan[0].tiles.slot_count() - 1)[nan[0].tiles.slot_floats() - 1] = std::nanf("");
     EXPECT_NE(refused(model.shared(), nan, waves).find("not finite"), std::string::npos);
     std::vector<ShoreWaveLayer> gap = runs;
     gap[0].first = 1;
@@ -232,9 +232,9 @@ TEST(ShoreTiles, TilesFromElsewhereAreChecked) {
     wrong_grid[0].grid.resolution /= 2;
     EXPECT_NE(refused(model.shared(), wrong_grid, waves).find("pages"), std::string::npos);
     ShoreTiles constant = model.shared();
-    std::fill(constant.texels.begin(), constant.texels.begin() + 100, 7.0f);  // the open sea's slot
+    std::fill_n(constant.slot_for_writing(gpu::kShoreOpenSlot), 100, 7.0f);
     std::vector<ShoreWaveLayer> constant_runs = runs;
-    std::fill(constant_runs[0].tiles.texels.begin(), constant_runs[0].tiles.texels.begin() + 100, 7.0f);
+    std::fill_n(constant_runs[0].tiles.slot_for_writing(gpu::kShoreOpenSlot), 100, 7.0f);
     auto refilled = ShoreWaves::from_tiles(model.grid(), constant, constant_runs, waves);
     ASSERT_TRUE(refilled.ok());
     EXPECT_TRUE(test::same_tiles(**refilled, model));

@@ -28,10 +28,11 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         place.corner = shore->corner();
         place.resolution = shore->resolution();
         p.pages.insert(p.pages.end(), shared.pages.begin(), shared.pages.end());
-        for (std::size_t k = 0; k < shared.slot_count() * ShoreTiles::kSlotTexels; ++k) {
-            const float* t = shared.texels.data() + k * shared.stride;
-            p.shared.push_back({t[0], t[1], t[2], t[3]});
-        }
+        for (std::size_t slot = 0; slot < shared.slot_count(); ++slot)
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+                const float* t = shared.slot(slot) + k * shared.stride;
+                p.shared.push_back({t[0], t[1], t[2], t[3]});
+            }
         for (const ShoreWaveLayer& layer : shore->layers()) {
             const glm::dvec2 offset = layer.grid.corner - shore->corner();
             gpu::GpuShoreLayer record;
@@ -45,7 +46,7 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
             p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());
             const std::size_t nw = layer.count, stride = tiles.stride;
             for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot) {
-                const float* texels = tiles.texels.data() + slot * ShoreTiles::kSlotTexels * stride;
+                const float* texels = tiles.slot(slot);
                 for (std::size_t w = 0; w < nw; ++w)
                     for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
                         const float* t = texels + k * stride;

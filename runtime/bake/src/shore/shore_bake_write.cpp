@@ -35,7 +35,7 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreTiles& t, co
     std::vector<double> lo(rows, 0.0), hi(rows, 0.0);
     for (std::size_t slot = gpu::kShoreFirstStoredSlot; slot < slots; ++slot)
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
-            const float* v = t.texels.data() + (slot * ShoreTiles::kSlotTexels + k) * rows;
+            const float* v = t.slot(slot) + k * rows;
             const bool first_value = slot == gpu::kShoreFirstStoredSlot && k == 0;
             for (std::size_t r = 0; r < rows; ++r) {
                 const double value = static_cast<double>(v[r]);
@@ -74,7 +74,7 @@ Result<nlohmann::json> write_tiles(const fs::path& temp, const ShoreTiles& t, co
         img.width = static_cast<int>(ShoreTiles::kSlotTexels);
         img.height = static_cast<int>(rows);
         img.pixels.resize(ShoreTiles::kSlotTexels * rows);
-        const float* slot = t.texels.data() + t.pages[k] * ShoreTiles::kSlotTexels * rows;
+        const float* slot = t.slot(t.pages[k]);
         for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
             for (std::size_t r = 0; r < rows; ++r)
                 img.pixels[r * ShoreTiles::kSlotTexels + texel] = encodings[r].encode(slot[texel * rows + r]);
@@ -148,10 +148,10 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
                                  {"simplify_tolerance_m", d->simplify_tolerance}}},
                                {"notes", "exact distance to the simplified shoreline (CGAL): positive over water"}};
         const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> fields[] = {
-            {"signed_distance", {&d->signed_distance, "m"}},
-            {"gradient_x", {&d->gradient_x, "1"}},
-            {"gradient_z", {&d->gradient_z, "1"}},
-            {"depth", {&d->depth, "m"}}};
+            {"signed_distance", {&d->signed_distance.values(), "m"}},
+            {"gradient_x", {&d->gradient_x.values(), "1"}},
+            {"gradient_z", {&d->gradient_z.values(), "1"}},
+            {"depth", {&d->depth.values(), "m"}}};
         for (const auto& [name, field] : fields) {
             auto e = write_field(temp, fmt::format("distance_{}", name), *field.first, d->resolution, field.second);
             if (!e) return e.error();

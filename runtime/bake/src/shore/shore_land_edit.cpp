@@ -115,9 +115,10 @@ std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& a
         const auto depths = dry_depths(d, nd, shoreline.texel, shoreline.corner, after, water_level,
                                        [&](int i, int j) { return shoreline.depth[shoreline.index(i, j)]; });
         if (!depths) return std::nullopt;
+        float* depth = field->depth.write().data();  // the distances stay shared with `shoreline`
         for (int j = d.j0; j <= d.j1; ++j)
             std::copy_n(depths->data() + static_cast<std::size_t>(j - d.j0) * static_cast<std::size_t>(d.width()),
-                        d.width(), field->depth.data() + field->index(d.i0, j));
+                        d.width(), depth + field->index(d.i0, j));
     }
 
     // A run of waves on a coarser grid stores no depth: its texel centres under the edit

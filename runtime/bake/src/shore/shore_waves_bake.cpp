@@ -39,10 +39,13 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
     g.texel = target.texel;
     g.corner = target.corner;
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-    g.depth.resize(count);
-    g.signed_distance.resize(count);
-    g.gradient_x.resize(count);
-    g.gradient_z.resize(count);
+    auto sized = [count](SharedFloats& grid) {
+        std::vector<float>& v = grid.write();
+        v.resize(count);
+        return v.data();
+    };
+    float *depths = sized(g.depth), *distances = sized(g.signed_distance);
+    float *gradient_x = sized(g.gradient_x), *gradient_z = sized(g.gradient_z);
     std::atomic<bool> finite{true};
     detail::parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
         const int j = static_cast<int>(row);
@@ -51,14 +54,13 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
             const glm::dvec2 p = g.texel_center(i, j);
             const double depth = water_level - terrain.height_at(p);
             if (!std::isfinite(depth)) finite = false;
-            g.depth[k] = static_cast<float>(depth);
-            g.signed_distance[k] =
-                static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+            depths[k] = static_cast<float>(depth);
+            distances[k] = static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
             glm::dvec2 grad{from.sample(from.gradient_x, p), from.sample(from.gradient_z, p)};
             const double len = glm::length(grad);
             grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
-            g.gradient_x[k] = static_cast<float>(grad.x);
-            g.gradient_z[k] = static_cast<float>(grad.y);
+            gradient_x[k] = static_cast<float>(grad.x);
+            gradient_z[k] = static_cast<float>(grad.y);
         }
     });
     if (!finite)
@@ -229,7 +231,7 @@ TilePlan plan_tiles(const OpenSeaTest& test, std::span<const glm::dvec2> open, c
         t.pages[tile] = static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot + plan.tile.size());
         plan.tile.push_back(tile);
     }
-    t.texels.assign((gpu::kShoreFirstStoredSlot + plan.tile.size()) * ShoreTiles::kSlotTexels * t.stride, 0.0f);
+    t.assign_slots(gpu::kShoreFirstStoredSlot + plan.tile.size());
     fill_constant_slots(t, open);
     return plan;
 }
@@ -240,7 +242,7 @@ template <typename Visit>
 void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
     ShoreTiles& t = plan.tiles;
     detail::parallel_for_each(plan.tile.size(), threads, [&](std::size_t s) {
-        float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * ShoreTiles::kSlotTexels * t.stride;
+        float* slot = t.slot_for_writing(gpu::kShoreFirstStoredSlot + s);
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k)
             visit(slot + k * t.stride, t.grid_index(plan.tile[s], k), s * ShoreTiles::kSlotTexels + k);
     });
@@ -405,34 +407,55 @@ void extend_onto_land(std::span<const Wave> waves, RunBake& run, unsigned thread
     const ShoreGrid& g = run.plan.grid;
     const int n = g.resolution;
     const std::size_t nw = run.count;
+    // A ring's values, found from the tiles as they were and written after: per stored
+    // slot, (float index in the slot, value).
+    struct Update {
+        std::size_t at;
+        float value;
+    };
+    const ShoreTiles& tiles = run.plan.tiles;
+    std::vector<std::vector<Update>> updates(run.plan.tile.size());
     for (int ring = 0; ring < 2; ++ring) {
-        const ShoreTiles before = run.plan.tiles;
-        each_stored_texel(run.plan, threads, [&](float* t, std::size_t k, std::size_t) {
-            const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
-                      j = static_cast<int>(k / static_cast<std::size_t>(n));
-            for (std::size_t w = 0; w < nw; ++w) {
-                if (t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f) continue;  // a wave is here
-                const Wave& wave = waves[run.first + w];
-                const glm::dvec2 k0{wave.k * wave.dir_x, wave.k * wave.dir_z};
-                double residual = 0.0;
-                glm::dvec2 kvec{0.0};
-                int from = 0;
-                for (const glm::ivec2 d : {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
-                    const int a = i + d.x, b = j + d.y;
-                    if (a < 0 || b < 0 || a >= n || b >= n) continue;
-                    const float* v = before.texel(a, b);
-                    const glm::dvec2 kn{static_cast<double>(v[2 * nw + w]), static_cast<double>(v[3 * nw + w])};
-                    if (kn == glm::dvec2(0.0)) continue;
-                    // The residual grows by (k - k0 D) . step from the neighbour to here.
-                    residual += static_cast<double>(v[w]) - glm::dot(kn - k0, glm::dvec2(d)) * g.texel;
-                    kvec += kn;
-                    ++from;
+        detail::parallel_for_each(run.plan.tile.size(), threads, [&](std::size_t s) {
+            const float* slot = tiles.slot(gpu::kShoreFirstStoredSlot + s);
+            std::vector<Update>& out = updates[s];
+            out.clear();
+            for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel) {
+                const float* t = slot + texel * tiles.stride;
+                const std::size_t k = tiles.grid_index(run.plan.tile[s], texel);
+                const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
+                          j = static_cast<int>(k / static_cast<std::size_t>(n));
+                for (std::size_t w = 0; w < nw; ++w) {
+                    if (t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f) continue;  // a wave is here
+                    const Wave& wave = waves[run.first + w];
+                    const glm::dvec2 k0{wave.k * wave.dir_x, wave.k * wave.dir_z};
+                    double residual = 0.0;
+                    glm::dvec2 kvec{0.0};
+                    int from = 0;
+                    for (const glm::ivec2 d :
+                         {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
+                        const int a = i + d.x, b = j + d.y;
+                        if (a < 0 || b < 0 || a >= n || b >= n) continue;
+                        const float* v = tiles.texel(a, b);
+                        const glm::dvec2 kn{static_cast<double>(v[2 * nw + w]), static_cast<double>(v[3 * nw + w])};
+                        if (kn == glm::dvec2(0.0)) continue;
+                        // The residual grows by (k - k0 D) . step from the neighbour to here.
+                        residual += static_cast<double>(v[w]) - glm::dot(kn - k0, glm::dvec2(d)) * g.texel;
+                        kvec += kn;
+                        ++from;
+                    }
+                    if (from == 0) continue;
+                    const std::size_t at = texel * tiles.stride;
+                    out.push_back({at + w, static_cast<float>(residual / from)});
+                    out.push_back({at + 2 * nw + w, static_cast<float>(kvec.x / from)});
+                    out.push_back({at + 3 * nw + w, static_cast<float>(kvec.y / from)});
                 }
-                if (from == 0) continue;
-                t[w] = static_cast<float>(residual / from);
-                t[2 * nw + w] = static_cast<float>(kvec.x / from);
-                t[3 * nw + w] = static_cast<float>(kvec.y / from);
             }
+        });
+        detail::parallel_for_each(run.plan.tile.size(), threads, [&](std::size_t s) {
+            if (updates[s].empty()) return;
+            float* slot = run.plan.tiles.slot_for_writing(gpu::kShoreFirstStoredSlot + s);
+            for (const Update& u : updates[s]) slot[u.at] = u.value;
         });
     }
 }

@@ -149,14 +149,18 @@ class BlockFiller {
                     if (d2[k] < d2[arg]) arg = k;
                 const std::size_t t = field_.index(i, j);
                 const auto hit = distance_.hit_on(p, cand.id[arg], field_.depth[t] > 0.0f);
-                field_.signed_distance[t] = static_cast<float>(hit.signed_distance);
-                field_.gradient_x[t] = static_cast<float>(hit.gradient.x);
-                field_.gradient_z[t] = static_cast<float>(hit.gradient.y);
+                signed_distance_[t] = static_cast<float>(hit.signed_distance);
+                gradient_x_[t] = static_cast<float>(hit.gradient.x);
+                gradient_z_[t] = static_cast<float>(hit.gradient.y);
             }
     }
 
     const ShoreDistance& distance_;
     ShoreField& field_;
+    // The field's grids to write, taken once: the workers write distinct texels.
+    float* signed_distance_ = field_.signed_distance.write().data();
+    float* gradient_x_ = field_.gradient_x.write().data();
+    float* gradient_z_ = field_.gradient_z.write().data();
 };
 
 }  // namespace

@@ -44,9 +44,9 @@ class StageClock {
 
 }  // namespace
 
-double ShoreField::sample(const std::vector<float>& grid, glm::dvec2 p) const {
+double ShoreField::sample(const SharedFloats& grid, glm::dvec2 p) const {
     if (resolution < 2) return resolution == 1 ? static_cast<double>(grid[0]) : 0.0;
-    return detail::grid_taps(corner, texel, resolution, p)(grid);
+    return detail::grid_taps(corner, texel, resolution, p)(grid.values());
 }
 
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options) {
@@ -80,7 +80,8 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
 
     // Terrain height relative to the water level at every texel centre.
     std::vector<double> above(count);
-    field.depth.resize(count);
+    std::vector<float>& depth = field.depth.write();
+    depth.resize(count);
     std::atomic<bool> finite{true};
     std::atomic<std::size_t> bad_index{0};
     parallel_rows(n, threads, [&](int j) {
@@ -88,7 +89,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
             const double h = terrain.height_at(field.texel_center(i, j));
             if (!std::isfinite(h) && finite.exchange(false)) bad_index = field.index(i, j);
             above[field.index(i, j)] = h - water_level;
-            field.depth[field.index(i, j)] = static_cast<float>(water_level - h);
+            depth[field.index(i, j)] = static_cast<float>(water_level - h);
         }
     });
     if (!finite) {
@@ -154,9 +155,9 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     if (options.cancel.stop_requested()) return cancelled();
     report(0.3);
 
-    field.signed_distance.assign(count, 0.0f);
-    field.gradient_x.assign(count, 0.0f);
-    field.gradient_z.assign(count, 0.0f);
+    field.signed_distance.write().assign(count, 0.0f);
+    field.gradient_x.write().assign(count, 0.0f);
+    field.gradient_z.write().assign(count, 0.0f);
     const auto distance = detail::ShoreDistance::build(field.shorelines);
     field.segment_count = distance->segment_count();
     field.timings.tree = clock.lap();
@@ -164,7 +165,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
         // No shoreline: all water or all land. The distance is the domain diagonal, signed.
         const bool water = above[0] < 0.0;
         const float far = static_cast<float>((water ? 1.0 : -1.0) * 2.0 * std::sqrt(2.0) * half);
-        std::fill(field.signed_distance.begin(), field.signed_distance.end(), far);
+        std::fill(field.signed_distance.write().begin(), field.signed_distance.write().end(), far);
         report(1.0);
         return field;
     }

@@ -83,8 +83,7 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, co
                 fmt::format("tile {} is '{}': expected o (open sea), d (dry land) or s (stored)", k, kinds[k]));
         }
     }
-    const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
-    t.texels.assign((gpu::kShoreFirstStoredSlot + stored.size()) * slot_floats, 0.0f);
+    t.assign_slots(gpu::kShoreFirstStoredSlot + stored.size());
     std::vector<Status> read(stored.size());
     detail::parallel_for_each(stored.size(), 0, [&](std::size_t s) {
         const std::size_t k = stored[s];
@@ -101,7 +100,7 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, co
                                         img->width, img->height, ShoreTiles::kSlotTexels, t.stride)};
             return;
         }
-        float* slot = t.texels.data() + (gpu::kShoreFirstStoredSlot + s) * slot_floats;
+        float* slot = t.slot_for_writing(gpu::kShoreFirstStoredSlot + s);
         for (std::size_t r = 0; r < t.stride; ++r)
             for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
                 slot[texel * t.stride + r] =

@@ -94,17 +94,16 @@ CutShoreTiles cut_shore_tiles(const ShoreWaveFields& f, std::span<const glm::dve
     }
     cut.waves.pages = t.pages;
     for (ShoreTiles* layer : {&cut.shared, &cut.waves}) {
-        layer->texels.assign(static_cast<std::size_t>(next) * ShoreTiles::kSlotTexels * layer->stride, 0.0f);
+        layer->assign_slots(next);
         fill_constant_slots(*layer, layer == &cut.shared ? std::span<const glm::dvec2>() : open);
     }
     detail::parallel_for_each(m * m, 0, [&](std::size_t tile) {
         const std::uint32_t slot = t.pages[tile];
         if (slot < gpu::kShoreFirstStoredSlot) return;
-        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
-            const std::size_t k = slot * ShoreTiles::kSlotTexels + s;
-            write_texel(f, nw, t.grid_index(tile, s), cut.waves.texels.data() + k * cut.waves.stride,
-                        t.texels.data() + k * t.stride);
-        }
+        float* waves = cut.waves.slot_for_writing(slot);
+        float* shared = t.slot_for_writing(slot);
+        for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s)
+            write_texel(f, nw, t.grid_index(tile, s), waves + s * cut.waves.stride, shared + s * t.stride);
     });
     return cut;
 }
@@ -117,6 +116,28 @@ ShoreTiles ShoreTiles::open_grid(int n, std::size_t stride) {
     t.pages.assign(static_cast<std::size_t>(t.tiles_per_side) * static_cast<std::size_t>(t.tiles_per_side),
                    gpu::kShoreOpenSlot);
     return t;
+}
+
+void ShoreTiles::assign_slots(std::size_t count) {
+    slots.assign(count, nullptr);
+    for (auto& slot : slots) slot = std::make_shared<float[]>(slot_floats());
+}
+
+float* ShoreTiles::slot_for_writing(std::size_t s) {
+    std::shared_ptr<float[]>& slot = slots[s];
+    if (slot.use_count() > 1) {
+        auto copy = std::make_shared_for_overwrite<float[]>(slot_floats());
+        std::copy_n(slot.get(), slot_floats(), copy.get());
+        slot = std::move(copy);
+    }
+    return slot.get();
+}
+
+std::vector<float> ShoreTiles::floats() const {
+    std::vector<float> all;
+    all.reserve(slots.size() * slot_floats());
+    for (const auto& slot : slots) all.insert(all.end(), slot.get(), slot.get() + slot_floats());
+    return all;
 }
 
 ShoreTaps shore_taps(const ShoreGrid& grid, const ShoreTiles& tiles, glm::dvec2 p) {
@@ -138,9 +159,8 @@ ShoreTaps shore_taps(const ShoreGrid& grid, const ShoreTiles& tiles, glm::dvec2 
 }
 
 void fill_constant_slots(ShoreTiles& tiles, std::span<const glm::dvec2> open) {
-    const std::size_t slot_floats = ShoreTiles::kSlotTexels * tiles.stride;
-    fill_constant_slot(tiles.texels.data() + gpu::kShoreOpenSlot * slot_floats, open, false, tiles.stride);
-    fill_constant_slot(tiles.texels.data() + gpu::kShoreDrySlot * slot_floats, open, true, tiles.stride);
+    fill_constant_slot(tiles.slot_for_writing(gpu::kShoreOpenSlot), open, false, tiles.stride);
+    fill_constant_slot(tiles.slot_for_writing(gpu::kShoreDrySlot), open, true, tiles.stride);
 }
 
 ShoreRowName shore_row_name(std::size_t row, std::size_t waves) {

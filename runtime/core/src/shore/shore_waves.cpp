@@ -82,8 +82,8 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
         return Error{
             ErrorCode::invalid_argument,
             fmt::format("shore tiles: {} has {} pages for a {}² grid, expected {}²", what, t.pages.size(), n, m)};
-    if (t.stride != stride || stride == 0 || t.texels.size() % (t.stride * ShoreTiles::kSlotTexels) != 0 ||
-        t.slot_count() < gpu::kShoreFirstStoredSlot)
+    if (t.stride != stride || stride == 0 || t.slot_count() < gpu::kShoreFirstStoredSlot ||
+        std::any_of(t.slots.begin(), t.slots.end(), [](const auto& slot) { return !slot; }))
         return Error{ErrorCode::invalid_argument,
                      fmt::format("shore tiles: {} slots do not hold {} floats a texel", what, stride)};
     const std::size_t slots = t.slot_count();
@@ -91,8 +91,8 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
         if (t.pages[k] >= slots)
             return Error{ErrorCode::invalid_argument,
                          fmt::format("shore tiles: {} tile {} names slot {} of {}", what, k, t.pages[k], slots)};
-    for (float v : t.texels)
-        if (!std::isfinite(v))
+    for (const auto& slot : t.slots)
+        if (!std::all_of(slot.get(), slot.get() + t.slot_floats(), [](float v) { return std::isfinite(v); }))
             return Error{ErrorCode::invalid_argument,
                          fmt::format("shore tiles: {} has a value that is not finite", what)};
     return {};
@@ -102,14 +102,14 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
 /// slot's texels copied from the fine texel under it, and the constant slots.
 ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const glm::dvec2> open) {
     ShoreTiles c = coarse_pages(fine, stride);
-    const std::size_t floats = c.stride, slot_floats = ShoreTiles::kSlotTexels * floats;
-    c.texels.assign(slots_named(c) * slot_floats, 0.0f);
+    const std::size_t floats = c.stride;
+    c.assign_slots(slots_named(c));
     fill_constant_slots(c, open);
     const auto packed = static_cast<std::size_t>(c.resolution);
     detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
         const std::uint32_t slot = c.pages[tile];
         if (slot < gpu::kShoreFirstStoredSlot) return;
-        float* out = c.texels.data() + slot * slot_floats;
+        float* out = c.slot_for_writing(slot);
         for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
             const std::size_t g = c.grid_index(tile, s);
             const float* in = fine.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
@@ -263,14 +263,13 @@ std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w,
                                                           std::span<const float> depths) const {
     ShoreTiles t = shared_;
     const int n = grid_.resolution, m = t.tiles_per_side, kTile = ShoreTiles::kTile;
-    const std::size_t slot_floats = ShoreTiles::kSlotTexels * t.stride;
     // A texel lies in its own tile's slot and in the aprons of the tiles before it.
     for (int tj = std::max(0, (j0 - 1) / kTile); tj <= std::min(m - 1, (j0 + h - 1) / kTile); ++tj)
         for (int ti = std::max(0, (i0 - 1) / kTile); ti <= std::min(m - 1, (i0 + w - 1) / kTile); ++ti) {
             const std::size_t tile =
                 static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
             if (t.pages[tile] < gpu::kShoreFirstStoredSlot) continue;
-            float* slot = t.texels.data() + t.pages[tile] * slot_floats;
+            float* slot = t.slot_for_writing(t.pages[tile]);
             for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
                 const std::size_t g = t.grid_index(tile, s);
                 const int i = static_cast<int>(g % static_cast<std::size_t>(n)) - i0;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <optional>
 #include <stop_token>
 #include <vector>
@@ -46,6 +47,29 @@ struct ShoreBakeTimings {
     double distance = 0.0;  ///< Exact signed distance and gradient at every texel.
 };
 
+/// A grid's floats, shared between copies of the field that holds them until one of the
+/// copies writes (write()): a field copied to change its depth copies the depth alone.
+class SharedFloats {
+  public:
+    std::size_t size() const { return values_->size(); }
+    bool empty() const { return values_->empty(); }
+    const float* data() const { return values_->data(); }
+    const float& operator[](std::size_t k) const { return (*values_)[k]; }
+    auto begin() const { return values_->cbegin(); }
+    auto end() const { return values_->cend(); }
+    const std::vector<float>& values() const { return *values_; }
+    /// The floats to write, copied first when another field shares them. Not to be called
+    /// from two threads at once; the vector returned may be written from many.
+    std::vector<float>& write() {
+        if (values_.use_count() > 1) values_ = std::make_shared<std::vector<float>>(*values_);
+        return *values_;
+    }
+    bool operator==(const SharedFloats& o) const { return values_ == o.values_ || *values_ == *o.values_; }
+
+  private:
+    std::shared_ptr<std::vector<float>> values_ = std::make_shared<std::vector<float>>();
+};
+
 struct ShoreField {
     glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
     double texel = 1.0;      ///< Texel size, m.
@@ -54,11 +78,11 @@ struct ShoreField {
     /// The magnitude is the exact distance to the simplified shoreline; the sign is the
     /// texel's side of the water level, so it always agrees with `depth`.
     /// With no shoreline at all it is +-(domain diagonal): all water or all land.
-    std::vector<float> signed_distance;
+    SharedFloats signed_distance;
     /// Unit gradient of the signed distance (points offshore over water), x and z.
-    std::vector<float> gradient_x, gradient_z;
+    SharedFloats gradient_x, gradient_z;
     /// Water depth = level - terrain height, m (negative on land).
-    std::vector<float> depth;
+    SharedFloats depth;
     std::vector<ShoreLine> shorelines;  ///< The simplified contour the distances are exact to.
     std::size_t segment_count = 0;
     double simplify_tolerance = 0.0;  ///< m, as used.
@@ -71,7 +95,7 @@ struct ShoreField {
     }
     glm::dvec2 texel_center(int i, int j) const { return corner + texel * glm::dvec2(i + 0.5, j + 0.5); }
     /// Bilinear sample of one of this field's grids at a world point (clamped at the edges).
-    double sample(const std::vector<float>& grid, glm::dvec2 p) const;
+    double sample(const SharedFloats& grid, glm::dvec2 p) const;
     /// Bilinear sample of the signed distance at a world point (clamped at the edges).
     double distance_at(glm::dvec2 p) const { return sample(signed_distance, p); }
 };

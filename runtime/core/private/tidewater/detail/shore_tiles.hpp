@@ -5,13 +5,17 @@
 // or more from the shoreline, are not stored: their pages name the shared open-sea
 // and dry-land slots. The CPU queries and the GPU (shaders/shore_fields.glsl) read
 // the same slots with the same taps.
-// Internal to ShoreWaves. Threading: immutable once cut.
+// Each slot is its own allocation, shared between copies of the tiles until one of them
+// writes it (slot_for_writing): a model edited in a few tiles copies only those slots.
+// Internal to ShoreWaves. Threading: immutable once cut; distinct slots of a ShoreTiles
+// being filled may be written from distinct threads.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -88,16 +92,27 @@ struct ShoreTiles {
     std::size_t stride = 0;  ///< Floats per texel: 4 per wave of a wave layer, kShoreSharedRows shared.
     /// Per tile, rows along +z: the slot that holds it.
     std::vector<std::uint32_t> pages;
-    /// Slot after slot, kSlotTexels texels of `stride` floats each (a wave layer's: its W
-    /// phase residuals, W amplitude factors, W wavevector x, W wavevector z; the shared
-    /// layer's: depth, breaking, steepness scale and shore distance). Slots 0 and 1: open
-    /// sea, dry land.
-    std::vector<float> texels;
+    /// Per slot, kSlotTexels texels of `stride` floats each (a wave layer's: its W phase
+    /// residuals, W amplitude factors, W wavevector x, W wavevector z; the shared layer's:
+    /// depth, breaking, steepness scale and shore distance). Slots 0 and 1: open sea, dry
+    /// land. Copies of the tiles share the slots; write through slot_for_writing.
+    std::vector<std::shared_ptr<float[]>> slots;
 
     /// Pages for a grid of `n` texels a side, every tile open sea, no slots yet.
     static ShoreTiles open_grid(int n, std::size_t stride);
 
-    std::size_t slot_count() const { return stride ? texels.size() / (stride * kSlotTexels) : 0; }
+    /// Replaces the slots with `count` slots of zeros.
+    void assign_slots(std::size_t count);
+    /// Slot s's floats.
+    const float* slot(std::size_t s) const { return slots[s].get(); }
+    /// Slot s's floats to write: copied first when another ShoreTiles shares the slot.
+    float* slot_for_writing(std::size_t s);
+    /// Every slot's floats, slot after slot (tests and checks).
+    std::vector<float> floats() const;
+    /// Floats a slot holds.
+    std::size_t slot_floats() const { return kSlotTexels * stride; }
+
+    std::size_t slot_count() const { return slots.size(); }
     /// Tiles whose fields are stored (not open sea or dry land).
     std::size_t stored_tiles() const { return slot_count() - gpu::kShoreFirstStoredSlot; }
     /// The floats of the first of cell (i, j)'s four taps (0 <= i, j <= resolution - 2, or 0
@@ -108,7 +123,7 @@ struct ShoreTiles {
                                        static_cast<std::size_t>(ti)];
         const std::size_t local =
             static_cast<std::size_t>(j - tj * kTile) * kSide + static_cast<std::size_t>(i - ti * kTile);
-        return texels.data() + (slot * kSlotTexels + local) * stride;
+        return slots[slot].get() + local * stride;
     }
     /// The floats of texel (i, j), 0 <= i, j < resolution, from the slot of its tile.
     const float* texel(int i, int j) const { return cell(i, j); }
@@ -126,7 +141,9 @@ struct ShoreTiles {
         return static_cast<std::size_t>(j) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(i);
     }
     /// Every slot's bytes on the CPU (the pages included).
-    std::size_t bytes() const { return texels.size() * sizeof(float) + pages.size() * sizeof(std::uint32_t); }
+    std::size_t bytes() const {
+        return slots.size() * slot_floats() * sizeof(float) + pages.size() * sizeof(std::uint32_t);
+    }
     /// The same slots' bytes on the GPU (shaders/shore_fields.glsl): per texel a vec4 per
     /// wave (a wave layer) or one vec4 (the shared layer), and a uint per page.
     std::uint64_t device_bytes() const { return device_bytes_for(slot_count(), stride, pages.size()); }
