@@ -10,15 +10,12 @@ namespace tidewater::test {
 /// True when `a` and `b` hold the same layers on the same grids with the same pages and
 /// every slot bit for bit.
 inline bool same_tiles(const ShoreWaves& a, const ShoreWaves& b) {
-    auto same_grid = [](const ShoreGrid& x, const ShoreGrid& y) {
-        return x.resolution == y.resolution && x.texel == y.texel && x.corner == y.corner;
-    };
-    if (!same_grid(a.grid(), b.grid()) || a.shared().pages != b.shared().pages ||
-        a.shared().floats() != b.shared().floats() || a.layers().size() != b.layers().size())
+    if (!(a.grid() == b.grid()) || a.shared().pages != b.shared().pages || a.shared().floats() != b.shared().floats() ||
+        a.layers().size() != b.layers().size())
         return false;
     for (std::size_t l = 0; l < a.layers().size(); ++l) {
         const ShoreWaveLayer &x = a.layers()[l], &y = b.layers()[l];
-        if (!same_grid(x.grid, y.grid) || x.first != y.first || x.count != y.count || x.tiles.pages != y.tiles.pages ||
+        if (!(x.grid == y.grid) || x.first != y.first || x.count != y.count || x.tiles.pages != y.tiles.pages ||
             x.tiles.floats() != y.tiles.floats())
             return false;
     }

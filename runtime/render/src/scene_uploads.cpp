@@ -11,6 +11,59 @@
 
 namespace tidewater::render::detail {
 
+namespace {
+
+/// Vec4s a slot packs to: one per texel of the shared layer, one per wave and texel of a run.
+std::size_t packed_slot_vec4s(const ShoreTiles& tiles, bool shared) {
+    return ShoreTiles::kSlotTexels * (shared ? 1 : tiles.stride / 4);
+}
+
+/// One slot as the shaders read it (shore_fields.glsl): a shared slot's texels (depth,
+/// breaking, steepness scale, shore distance), or a run's waves one after the other, each
+/// wave's texels (phase residual, amplitude factor, wavevector x, z).
+void pack_slot(const ShoreTiles& tiles, std::size_t slot, bool shared, glm::vec4* out) {
+    const float* texels = tiles.slot(slot);
+    const std::size_t stride = tiles.stride;
+    if (shared) {
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+            const float* t = texels + k * stride;
+            *out++ = {t[0], t[1], t[2], t[3]};
+        }
+        return;
+    }
+    const std::size_t nw = stride / 4;
+    for (std::size_t w = 0; w < nw; ++w)
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+            const float* t = texels + k * stride;
+            *out++ = {t[w], t[nw + w], t[2 * nw + w], t[3 * nw + w]};
+        }
+}
+
+/// Packs every slot of `tiles` at the end of `out`.
+void pack_slots(const ShoreTiles& tiles, bool shared, std::vector<glm::vec4>& out) {
+    const std::size_t per_slot = packed_slot_vec4s(tiles, shared), at = out.size();
+    out.resize(at + per_slot * tiles.slot_count());
+    for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot)
+        pack_slot(tiles, slot, shared, out.data() + at + slot * per_slot);
+}
+
+/// Whether `b` packs to the same places as `a`: the same grids, pages and slot counts.
+bool same_layout(const ShoreWaves& a, const ShoreWaves& b) {
+    auto same_tiles = [](const ShoreTiles& x, const ShoreTiles& y) {
+        return x.stride == y.stride && x.slot_count() == y.slot_count() && x.pages == y.pages;
+    };
+    if (!(a.grid() == b.grid()) || !same_tiles(a.shared(), b.shared()) || a.layers().size() != b.layers().size())
+        return false;
+    for (std::size_t l = 0; l < a.layers().size(); ++l) {
+        const ShoreWaveLayer &x = a.layers()[l], &y = b.layers()[l];
+        if (!(x.grid == y.grid) || x.first != y.first || x.count != y.count || !same_tiles(x.tiles, y.tiles))
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
                         const std::vector<const ShoreWaves*>& placed_as) {
     PackedShore p;
@@ -28,11 +81,7 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         place.corner = shore->corner();
         place.resolution = shore->resolution();
         p.pages.insert(p.pages.end(), shared.pages.begin(), shared.pages.end());
-        for (std::size_t slot = 0; slot < shared.slot_count(); ++slot)
-            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
-                const float* t = shared.slot(slot) + k * shared.stride;
-                p.shared.push_back({t[0], t[1], t[2], t[3]});
-            }
+        pack_slots(shared, true, p.shared);
         for (const ShoreWaveLayer& layer : shore->layers()) {
             const glm::dvec2 offset = layer.grid.corner - shore->corner();
             gpu::GpuShoreLayer record;
@@ -44,15 +93,7 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
             p.layers.push_back(record);
             const ShoreTiles& tiles = layer.tiles;
             p.pages.insert(p.pages.end(), tiles.pages.begin(), tiles.pages.end());
-            const std::size_t nw = layer.count, stride = tiles.stride;
-            for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot) {
-                const float* texels = tiles.slot(slot);
-                for (std::size_t w = 0; w < nw; ++w)
-                    for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
-                        const float* t = texels + k * stride;
-                        p.per_wave.push_back({t[w], t[nw + w], t[2 * nw + w], t[3 * nw + w]});
-                    }
-            }
+            pack_slots(tiles, false, p.per_wave);
         }
     }
     if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // models without waves
@@ -74,8 +115,43 @@ bool ShoreBuffers::holds(const Models& models) const {
     return true;
 }
 
+bool ShoreBuffers::rewrite_in_place(const Models& models) {
+    if (!per_wave_.handle() || stride_ != 1 || models.size() != uploaded_.size()) return false;
+    for (std::size_t m = 0; m < models.size(); ++m) {
+        const ShoreWaves *now = wanted(models[m]), *then = uploaded_[m].get();
+        if ((now == nullptr) != (then == nullptr) || (now && !same_layout(*then, *now))) return false;
+    }
+    // The slots the new models do not share with the uploaded ones, written where they are.
+    std::size_t written = 0;
+    auto rewrite = [&](const ShoreTiles& before, const ShoreTiles& after, bool shared, GpuBuffer& buffer,
+                       std::size_t first) {
+        const std::size_t per_slot = packed_slot_vec4s(after, shared);
+        auto* out = static_cast<glm::vec4*>(buffer.mapped()) + first;
+        for (std::size_t slot = 0; slot < after.slot_count(); ++slot) {
+            if (after.slot(slot) == before.slot(slot)) continue;
+            pack_slot(after, slot, shared, out + slot * per_slot);
+            written += per_slot * sizeof(glm::vec4);
+        }
+    };
+    for (std::size_t m = 0; m < models.size(); ++m) {
+        const ShoreWaves *now = wanted(models[m]), *then = uploaded_[m].get();
+        if (!now) continue;
+        const ShorePlacement& place = placements_[m];
+        rewrite(then->shared(), now->shared(), true, shared_, place.shared);
+        for (std::size_t l = 0; l < now->layers().size(); ++l)
+            rewrite(then->layers()[l].tiles, now->layers()[l].tiles, false, per_wave_,
+                    layer_records_[place.layers + l].waves.w);
+        placements_[m].model = now;
+        uploaded_[m] = models[m];
+    }
+    rewritten_bytes_ = written;
+    return true;
+}
+
 Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
     if (holds(models) && max_bytes == max_bytes_) return false;
+    // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
+    if (max_bytes == max_bytes_ && rewrite_in_place(models)) return false;
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
     // Over the budget, every k-th texel of each model (the smallest k that fits, at most
@@ -114,9 +190,10 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     stride_ = stride;
     max_bytes_ = max_bytes;
     coarse_ = std::move(coarse);
-    alive_.clear();
-    for (std::size_t m = 0; m < models.size(); ++m)
-        if (placements_[m].model) alive_.push_back(models[m]);
+    layer_records_ = packed.layers;
+    rewritten_bytes_ = bytes();
+    uploaded_.clear();
+    for (std::size_t m = 0; m < models.size(); ++m) uploaded_.push_back(placements_[m].model ? models[m] : nullptr);
     return true;
 }
 

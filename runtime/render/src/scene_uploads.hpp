@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "frame_constants.hpp"
@@ -61,7 +62,10 @@ class ShoreBuffers {
     /// True when `models` are what the buffers hold already (no upload needed).
     bool holds(const Models& models) const;
     /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
-    /// Returns true when the buffers were replaced and descriptors must be rewritten.
+    /// Models laid out as the ones uploaded (the same grids, pages and slot counts, drawn
+    /// at full resolution: a re-bake after an edit) are written in place, only the slots
+    /// they do not share with them. Returns true when the buffers were replaced and
+    /// descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
     /// Over `max_bytes` the fields are packed on every k-th texel (the smallest k that
     /// fits): coarser, never out of memory.
@@ -74,27 +78,40 @@ class ShoreBuffers {
     std::uint64_t bytes() const { return per_wave_.size() + shared_.size() + pages_.size() + layers_.size(); }
     /// Texels skipped per texel kept (1: the models' own grids).
     int stride() const { return stride_; }
+    /// Bytes the last upload wrote: every buffer's, or the slots rewritten in place.
+    std::uint64_t rewritten_bytes() const { return rewritten_bytes_; }
 
     /// The first model uploaded (null: none).
     const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }
     /// Where models[i] of the last upload starts (model null: it has no fields).
     ShorePlacement placement(std::size_t i) const { return i < placements_.size() ? placements_[i] : ShorePlacement{}; }
+    /// What the shaders read of the runs' and the shared fields (the mapped buffers).
+    std::span<const glm::vec4> per_wave_values() const { return mapped_vec4s(per_wave_); }
+    std::span<const glm::vec4> shared_values() const { return mapped_vec4s(shared_); }
     VkBuffer per_wave() const { return per_wave_.handle(); }
     VkBuffer shared() const { return shared_.handle(); }
     VkBuffer pages() const { return pages_.handle(); }
     VkBuffer layers() const { return layers_.handle(); }
 
   private:
+    static std::span<const glm::vec4> mapped_vec4s(const GpuBuffer& b) {
+        return {static_cast<const glm::vec4*>(b.mapped()), b.handle() ? b.size() / sizeof(glm::vec4) : 0};
+    }
     static const ShoreWaves* wanted(const std::shared_ptr<const ShoreWaves>& shore) {
         return shore && !shore->trivial() ? shore.get() : nullptr;
     }
 
+    /// Writes the slots of `models` that differ from the uploaded ones' into the buffers,
+    /// when they are laid out alike; false (nothing written) when not.
+    bool rewrite_in_place(const Models& models);
+
     GpuBuffer per_wave_, shared_, pages_, layers_;
     int stride_ = 1;
-    std::uint64_t max_bytes_ = 0;
+    std::uint64_t max_bytes_ = 0, rewritten_bytes_ = 0;
     std::vector<ShorePlacement> placements_;
-    Models alive_;
-    Models coarse_;  ///< the coarsened models drawn over budget
+    std::vector<gpu::GpuShoreLayer> layer_records_;  ///< as uploaded: where each run's slots start
+    Models uploaded_;                                ///< per placement, the model uploaded (kept alive) or null
+    Models coarse_;                                  ///< the coarsened models drawn over budget
 };
 
 /// Uploads `bytes` of pixels into `image`'s `aspect` and leaves it SHADER_READ_ONLY_OPTIMAL;

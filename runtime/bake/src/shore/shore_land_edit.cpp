@@ -125,7 +125,7 @@ std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& a
     // (and a step around) must be dry before and after too, so that its fields stay as they were.
     for (const ShoreWaveLayer& layer : model.layers()) {
         const ShoreGrid& g = layer.grid;
-        if (g.resolution == model.resolution() && g.texel == model.texel() && g.corner == model.corner()) continue;
+        if (g == model.grid()) continue;
         const TexelRange r = texels_in(g.resolution, g.texel, g.corner, rect);
         if (r.empty()) continue;
         auto before_depth = [&](int i, int j) {

@@ -312,7 +312,7 @@ void each_run_wave(const std::vector<RunBake>& runs, const ShoreGrid& grid, int 
     for (const RunBake& r : runs) {
         const std::size_t nw = r.count;
         const ShoreGrid& g = r.plan.grid;
-        if (g.resolution == grid.resolution && g.texel == grid.texel && g.corner == grid.corner) {
+        if (g == grid) {
             const float* t = r.plan.tiles.texel(i, j);
             for (std::size_t w = 0; w < nw; ++w)
                 each(r.first + w, static_cast<double>(t[nw + w]), static_cast<double>(t[2 * nw + w]),

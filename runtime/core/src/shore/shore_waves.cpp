@@ -98,7 +98,7 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
     return {};
 }
 
-/// `tiles` on every `stride`-th texel of `grid`: the pages (coarse_pages), each stored
+/// `fine` on every `stride`-th texel of its grid: the pages (coarse_pages), each stored
 /// slot's texels copied from the fine texel under it, and the constant slots.
 ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const glm::dvec2> open) {
     ShoreTiles c = coarse_pages(fine, stride);

@@ -30,6 +30,8 @@ struct ShoreGrid {
     int resolution = 0;      ///< Texels per side.
     double texel = 1.0;      ///< m.
     glm::dvec2 corner{0.0};  ///< World xz of the grid's outer corner, m.
+
+    bool operator==(const ShoreGrid&) const = default;
 };
 
 /// A tile is left out as open sea when, at each of its texels (apron included), every

@@ -1,0 +1,83 @@
+// The shore fields on the GPU after an edit: a model that shares all but a few slots with
+// the one uploaded is written in place, those slots alone, and the buffers then hold what
+// a fresh upload of it would, value for value.
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "../baked_scene.hpp"
+#include "../tiled_coast.hpp"
+#include "scene_uploads.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "vk_device.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+using render::detail::ShoreBuffers;
+
+class ShoreBuffersTest : public test::VulkanTest {
+  protected:
+    void release() override { buffers_.reset(); }
+    std::unique_ptr<ShoreBuffers> buffers_;
+};
+
+bool same_values(std::span<const glm::vec4> a, const std::vector<glm::vec4>& b) {
+    return a.size() >= b.size() && std::equal(b.begin(), b.end(), a.begin());
+}
+
+TEST_F(ShoreBuffersTest, AnEditedModelIsWrittenInPlace) {
+    auto device = render::detail::load_device(context());
+    ASSERT_TRUE(device.ok()) << device.error().message;
+    auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const auto model = scene->ocean.shore();
+    ASSERT_NE(model, nullptr);
+    buffers_ = std::make_unique<ShoreBuffers>();
+    auto first = buffers_->upload(*device, model);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    EXPECT_TRUE(*first);
+    const VkBuffer shared_buffer = buffers_->shared();
+
+    // Depths 1 m shallower over 40 x 40 texels of a stored tile: the tiles under them change.
+    const ShoreTiles& tiles = model->shared();
+    std::size_t stored = 0;
+    while (stored < tiles.pages.size() && tiles.pages[stored] < gpu::kShoreFirstStoredSlot) ++stored;
+    ASSERT_LT(stored, tiles.pages.size());
+    const int i0 = static_cast<int>(stored % static_cast<std::size_t>(tiles.tiles_per_side)) * ShoreTiles::kTile + 8;
+    const int j0 = static_cast<int>(stored / static_cast<std::size_t>(tiles.tiles_per_side)) * ShoreTiles::kTile + 8;
+    std::vector<float> depths;
+    for (int j = j0; j < j0 + 40; ++j)
+        for (int i = i0; i < i0 + 40; ++i) depths.push_back(model->texel_values(i, j).depth() - 1.0f);
+    const auto edited = model->with_depths(i0, j0, 40, 40, depths);
+    std::size_t copied = 0;
+    for (std::size_t s = 0; s < tiles.slot_count(); ++s) copied += tiles.slot(s) != edited->shared().slot(s);
+    ASSERT_GE(copied, 1u);
+
+    auto second = buffers_->upload(*device, edited);
+    ASSERT_TRUE(second.ok()) << second.error().message;
+    EXPECT_FALSE(*second) << "the buffers are kept";
+    EXPECT_EQ(buffers_->shared(), shared_buffer);
+    EXPECT_EQ(buffers_->rewritten_bytes(), copied * ShoreTiles::kSlotTexels * sizeof(glm::vec4));
+    std::printf("an edit of %zu slots rewrote %llu bytes of %llu\n", copied,
+                static_cast<unsigned long long>(buffers_->rewritten_bytes()),
+                static_cast<unsigned long long>(buffers_->bytes()));
+    std::vector<render::detail::ShorePlacement> placements;
+    const render::detail::PackedShore fresh = render::detail::pack_shores({edited.get()}, placements);
+    EXPECT_TRUE(same_values(buffers_->shared_values(), fresh.shared));
+    EXPECT_TRUE(same_values(buffers_->per_wave_values(), fresh.per_wave));
+    EXPECT_FALSE(same_values(buffers_->shared_values(), render::detail::pack_shores({model.get()}, placements).shared));
+
+    // A model laid out otherwise (another scene's) replaces the buffers.
+    auto other = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/0.0));
+    ASSERT_TRUE(other.ok()) << other.error().message;
+    auto third = buffers_->upload(*device, other->ocean.shore());
+    ASSERT_TRUE(third.ok()) << third.error().message;
+    EXPECT_TRUE(*third);
+    EXPECT_TRUE(same_values(buffers_->shared_values(),
+                            render::detail::pack_shores({other->ocean.shore().get()}, placements).shared));
+}
+
+}  // namespace
+}  // namespace tidewater
