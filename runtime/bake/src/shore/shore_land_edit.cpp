@@ -16,22 +16,15 @@ struct WorldRect {
     glm::dvec2 lo, hi;
 };
 
-/// The smallest rectangle holding both (either may be none).
-std::optional<WorldRect> united(const std::optional<WorldRect>& a, const std::optional<WorldRect>& b) {
-    if (!a || !b) return a ? a : b;
-    return WorldRect{glm::min(a->lo, b->lo), glm::max(a->hi, b->hi)};
-}
-
-/// Where `after`'s shape may differ from `before`'s: the bilinear support of the
+/// Where `after`'s height may differ from `before`'s: the bilinear support of the
 /// heightmap pixels that changed (reaching to infinity beyond an edge whose pixels
-/// changed, where the edge value fades to the seabed). An empty optional inside: the same
-/// shape. nullopt: neither the same shape nor the same heightmap with other pixels.
-std::optional<std::optional<WorldRect>> shape_change(const Terrain& before, const Terrain& after) {
-    if (before.shape() == after.shape()) return std::optional<WorldRect>{};
+/// changed, where the edge value fades to the seabed). An empty optional inside: no pixel
+/// changed. nullopt: not the same heightmap with other pixels.
+std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
     const auto* a = std::get_if<HeightmapTerrain>(&before.shape());
     const auto* b = std::get_if<HeightmapTerrain>(&after.shape());
-    if (!a || !b || !a->image || !b->image || a->size != b->size || a->center != b->center ||
-        a->min_height != b->min_height || a->max_height != b->max_height)
+    if (!a || !b || !a->image || !b->image || before.cuts() != after.cuts() || a->size != b->size ||
+        a->center != b->center || a->min_height != b->min_height || a->max_height != b->max_height)
         return std::nullopt;
     const Gray16Image &x = *a->image, &y = *b->image;
     if (x.width != y.width || x.height != y.height || x.pixels.size() != y.pixels.size() || x.width < 2 || x.height < 2)
@@ -61,59 +54,6 @@ std::optional<std::optional<WorldRect>> shape_change(const Terrain& before, cons
     r.lo.y = j0 == 0 ? -inf : along(j0 - 1, x.height, a->center.y, a->size.y);
     r.hi.y = j1 == x.height - 1 ? inf : along(j1 + 1, x.height, a->center.y, a->size.y);
     return std::optional<WorldRect>{r};
-}
-
-/// The world rectangle a cut's texels from (i0, j0) to (i1, j1) reach with their bilinear
-/// support: a texel beyond them on every side.
-WorldRect cut_texels_reach(const TerrainCut& c, int i0, int j0, int i1, int j1) {
-    return {c.corner + c.texel * glm::dvec2(i0 - 0.5, j0 - 0.5), c.corner + c.texel * glm::dvec2(i1 + 1.5, j1 + 1.5)};
-}
-
-/// Where `after`'s cuts may lower the ground otherwise than `before`'s (a river baked
-/// again leaves its old cut and brings a new one): a cut on the same grid as the one it
-/// replaces, where their depths differ; any other cut either side has that the other has
-/// not, wherever it reaches. None: the same cut objects.
-std::optional<WorldRect> cuts_change(const Terrain& before, const Terrain& after) {
-    using Cuts = std::vector<std::shared_ptr<const TerrainCut>>;
-    auto missing_from = [](const Cuts& cuts, const Cuts& others) {
-        Cuts missing;
-        for (const auto& c : cuts)
-            if (std::find(others.begin(), others.end(), c) == others.end()) missing.push_back(c);
-        return missing;
-    };
-    const Cuts gone = missing_from(before.cuts(), after.cuts());
-    Cuts added = missing_from(after.cuts(), before.cuts());
-    std::optional<WorldRect> rect;
-    for (const auto& old : gone) {
-        const auto same_grid = std::find_if(added.begin(), added.end(), [&](const auto& c) {
-            return c->corner == old->corner && c->texel == old->texel && c->nx == old->nx && c->nz == old->nz &&
-                   c->depth.size() == old->depth.size();
-        });
-        if (same_grid == added.end()) {
-            rect = united(rect, cut_texels_reach(*old, 0, 0, old->nx - 1, old->nz - 1));
-            continue;
-        }
-        int i0 = old->nx, j0 = old->nz, i1 = -1, j1 = -1;
-        for (int j = 0; j < old->nz; ++j)
-            for (int i = 0; i < old->nx; ++i) {
-                const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(old->nx) +
-                                      static_cast<std::size_t>(i);
-                if (old->depth[k] == (*same_grid)->depth[k]) continue;
-                i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
-            }
-        if (i1 >= 0) rect = united(rect, cut_texels_reach(*old, i0, j0, i1, j1));
-        added.erase(same_grid);
-    }
-    for (const auto& c : added) rect = united(rect, cut_texels_reach(*c, 0, 0, c->nx - 1, c->nz - 1));
-    return rect;
-}
-
-/// Where `after`'s height may differ from `before`'s (shape_change and cuts_change). An
-/// empty optional inside: nowhere. nullopt: not the same shape or heightmap.
-std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
-    const auto shape = shape_change(before, after);
-    if (!shape) return std::nullopt;
-    return united(*shape, cuts_change(before, after));
 }
 
 /// The texels of a grid whose centres lie in `r` (i1 < i0 when none do).
