@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../island_heightmap.hpp"
 #include "../shore_model_compare.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -16,41 +17,8 @@
 namespace tidewater {
 namespace {
 
-constexpr int kPixels = 257;  // 4 m apart over 1024 m
-constexpr double kLo = -40.0, kHi = 30.0;
-
-/// An island: 20 m at its centre falling 1 m in 20 to the sea (shoreline at r = 400 m),
-/// on to the -40 m floor; `bump` adds a mound of 3 m and 40 m radius at `at`.
-std::shared_ptr<Gray16Image> island_pixels(glm::dvec2 at = {0.0, 0.0}, double bump = 0.0) {
-    auto image = std::make_shared<Gray16Image>();
-    image->width = image->height = kPixels;
-    image->pixels.resize(static_cast<std::size_t>(kPixels) * kPixels);
-    for (int j = 0; j < kPixels; ++j)
-        for (int i = 0; i < kPixels; ++i) {
-            const glm::dvec2 p{4.0 * i - 512.0, 4.0 * j - 512.0};
-            double h = std::max(kLo, 20.0 - 0.05 * glm::length(p));
-            const double r = glm::length(p - at) / 40.0;
-            if (r < 1.0) h += bump * (1.0 - r * r) * (1.0 - r * r);
-            image->pixels[static_cast<std::size_t>(j) * kPixels + i] =
-                static_cast<std::uint16_t>(std::lround((h - kLo) / (kHi - kLo) * 65535.0));
-        }
-    return image;
-}
-
-Scene island_scene(std::shared_ptr<Gray16Image> pixels) {
-    auto parsed = parse_scene(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -5}},
-        "ocean": "ocean_rolling", "shore": {"resolution": 256}})",
-                              "land edit");
-    EXPECT_TRUE(parsed.ok()) << parsed.error().message;
-    Scene scene = std::move(parsed).value();
-    HeightmapTerrain map;
-    map.size = glm::dvec2(4.0 * (kPixels - 1));
-    map.min_height = kLo;
-    map.max_height = kHi;
-    map.image = std::move(pixels);
-    scene.terrain = Terrain(map);
-    return scene;
-}
+using test::island_pixels;
+using test::island_scene;
 
 void expect_same_shore(const SceneBake& a, const SceneBake& b) {
     ASSERT_TRUE(a.ocean_shore && b.ocean_shore && a.shoreline && b.shoreline);

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../island_heightmap.hpp"
 #include "render_fixture.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -187,6 +189,83 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
                 stats.shore_bytes / 1048576.0, diff);
     EXPECT_GT(diff, 0.0);
     EXPECT_LT(diff, 0.03);
+}
+
+/// `scene` with its heightmap raised by up to `height` m over a disc of `radius` m at xz.
+Scene with_mound(const Scene& scene, glm::dvec2 at, double radius, double height) {
+    auto map = std::get<HeightmapTerrain>(scene.terrain.shape());
+    auto image = std::make_shared<Gray16Image>(*map.image);
+    const glm::dvec2 pixel = map.size / glm::dvec2(image->width - 1, image->height - 1);
+    const glm::dvec2 origin = map.center - 0.5 * map.size;
+    for (int j = 0; j < image->height; ++j)
+        for (int i = 0; i < image->width; ++i) {
+            const double r = glm::length(origin + pixel * glm::dvec2(i, j) - at) / radius;
+            if (r >= 1.0) continue;
+            auto& px = image->pixels[static_cast<std::size_t>(j) * image->width + i];
+            px = static_cast<std::uint16_t>(
+                std::min(65535.0, px + height * (1.0 - r * r) * 65535.0 / (map.max_height - map.min_height)));
+        }
+    map.image = std::move(image);
+    Scene edited = scene;
+    edited.terrain = Terrain(map);
+    return edited;
+}
+
+// A brush stroke on a 4 km heightmap drawn: set_scene writes the texels under it alone
+// (a few kB of the 32 MiB texture), and the frame is the one a renderer given the edited
+// scene afresh draws, pixel for pixel.
+TEST_F(RenderTest, ABrushStrokeIsWrittenWhereItChanged) {
+    const Scene scene = ditch_scene();
+    const auto frame = frame_at({0.0, 60.0, -60.0}, {0.0, 0.0, 60.0}, render::DebugView::shaded);
+    const render::RgbaImage before = render(scene, frame, 160, 90);
+    const std::uint64_t whole = renderer_->stats().scene_upload_bytes;
+    EXPECT_GE(whole, 2ull * kSide * kSide) << "the first upload writes the whole texture";
+
+    const Scene stroke = with_mound(scene, {0.0, 60.0}, 15.0, 3.0);
+    const render::RgbaImage after = render(stroke, frame, 160, 90);
+    const std::uint64_t written = renderer_->stats().scene_upload_bytes;
+    std::printf("a brush stroke wrote %llu bytes of the %llu-byte height texture\n",
+                static_cast<unsigned long long>(written), static_cast<unsigned long long>(whole));
+    EXPECT_GT(written, 0u);
+    EXPECT_LE(written, 2u * 40u * 40u) << "the texels within the stroke's 15 m and a pixel around it";
+    EXPECT_GT(test::mean_difference(before, after), 0.0) << "the mound shows";
+    const BudgetFrame fresh =
+        render_within_budget(context(), stroke, frame, render::RendererInitInfo{}.gpu_memory_budget, 160, 90);
+    EXPECT_EQ(test::mean_difference(after, fresh.image), 0.0) << "the same frame as a fresh upload's";
+
+    // A stroke past the texture's height range is uploaded whole.
+    const Scene tall = with_mound(scene, {0.0, 60.0}, 15.0, 44.0);
+    render(tall, frame, 160, 90);
+    EXPECT_GE(renderer_->stats().scene_upload_bytes, 2ull * kSide * kSide);
+}
+
+// The same stroke through bake_scene, on an island with a shore: the re-bake shares the
+// shore model's tiles away from the stroke, and set_scene writes the stroke's texels and
+// the shore tiles under it, a few per cent of what the first upload wrote; the frame is a
+// fresh upload's.
+TEST_F(RenderTest, ARebakedStrokeIsWrittenWhereItChanged) {
+    auto first = bake_scene(test::island_scene(test::island_pixels()));
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    const auto frame = frame_at({-150.0, 120.0, -300.0}, {250.0, 0.0, 0.0}, render::DebugView::shaded);
+    const render::RgbaImage before = render(**first, frame, 160, 90);
+    const std::uint64_t whole = renderer_->stats().scene_upload_bytes;
+    ASSERT_GT(renderer_->stats().shore_bytes, 0u);
+
+    SceneBakeOptions options;
+    options.previous = *first;
+    auto stroke = bake_scene(test::island_scene(test::island_pixels({250.0, 0.0}, 3.0)), options);
+    ASSERT_TRUE(stroke.ok()) << stroke.error().message;
+    ASSERT_TRUE((*stroke)->bake->reused.ocean_shore_land_edit);
+    const render::RgbaImage after = render(**stroke, frame, 160, 90);
+    const std::uint64_t written = renderer_->stats().scene_upload_bytes;
+    std::printf("a re-baked stroke wrote %llu bytes of the first upload's %llu\n",
+                static_cast<unsigned long long>(written), static_cast<unsigned long long>(whole));
+    EXPECT_GT(written, 0u);
+    EXPECT_LT(written, whole / 20);
+    EXPECT_GT(test::mean_difference(before, after), 0.0) << "the mound shows";
+    const BudgetFrame fresh =
+        render_within_budget(context(), **stroke, frame, render::RendererInitInfo{}.gpu_memory_budget, 160, 90);
+    EXPECT_EQ(test::mean_difference(after, fresh.image), 0.0) << "the same frame as a fresh upload's";
 }
 
 }  // namespace

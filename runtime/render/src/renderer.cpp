@@ -124,6 +124,8 @@ struct Renderer::Impl {
     Scene scene;                 // as set; its ocean is replaced by set_water
     std::uint64_t last_patches = 0;
     std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
+    std::uint64_t last_upload_bytes = 0;                                  // written by the last set_scene
+    std::uint64_t shore_written = 0;                                      // by the last use_shores
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -214,12 +216,14 @@ Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<Scen
                                   std::uint64_t terrain_bytes) {
     detail::ShoreBuffers::Models models{ocean ? ocean->shore() : nullptr};
     for (const SceneLake& lake : lakes) models.push_back(lake.body.shore());
+    shore_written = 0;
     if (shore.holds(models)) return {};
     TW_VK_TRY(vk().DeviceWaitIdle(ctx().device));  // frames in flight may read the old fields
     // The shore fields may take what the terrain leaves (at least half the budget).
     const std::uint64_t budget = info.gpu_memory_budget - std::min(terrain_bytes, info.gpu_memory_budget / 2);
     auto uploaded = shore.upload(ctx(), models, budget);
     if (!uploaded) return uploaded.error();
+    shore_written = shore.rewritten_bytes();
     return {};
 }
 
@@ -535,18 +539,38 @@ Status Renderer::set_scene(const Scene& scene) {
     for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
     for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();
     TW_VK_TRY(m.vk().DeviceWaitIdle(m.ctx().device));  // the old terrain may be in use by frames in flight
-    // The height texture may take half the budget; the shore fields and bodies the rest.
-    auto terrain =
-        detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain, m.info.gpu_memory_budget / 2);
-    if (!terrain) return terrain.error();
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
     if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves);
         !st)
         return st;
-    if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes, terrain->resident_bytes); !st)
+    // A terrain edited from the one drawn (a brush stroke): its changed texels written in
+    // place. Otherwise a new upload, whose height texture may take half the budget; the
+    // shore fields and bodies the rest. A failure after the texture was written leaves no
+    // terrain: the next set_scene uploads it whole.
+    bool in_place = false;
+    if (m.terrain) {
+        auto updated = m.terrain->update(m.ctx(), m.upload_pool.get(), m.scene.terrain, scene.terrain);
+        if (!updated) {
+            m.terrain.reset();
+            return updated.error();
+        }
+        in_place = *updated;
+    }
+    std::optional<detail::TerrainUpload> fresh;
+    if (!in_place) {
+        auto made =
+            detail::TerrainUpload::create(m.ctx(), m.upload_pool.get(), scene.terrain, m.info.gpu_memory_budget / 2);
+        if (!made) return made.error();
+        fresh = std::move(made).value();
+    }
+    const detail::TerrainUpload& terrain = in_place ? *m.terrain : *fresh;
+    if (auto st = m.use_shores(scene.has_ocean ? &scene.ocean : nullptr, scene.lakes, terrain.resident_bytes); !st) {
+        if (in_place) m.terrain.reset();
         return st;
-    m.terrain = std::move(terrain).value();
+    }
+    m.last_upload_bytes = terrain.written_bytes + m.shore_written;
+    if (fresh) m.terrain = std::move(fresh);
     m.bodies = std::move(bodies).value();
     m.scene = scene;
     m.log(
@@ -689,6 +713,7 @@ RendererStats Renderer::stats() const {
     s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
     s.shore_bytes = impl_->shore.bytes();
     s.shore_stride = static_cast<std::uint32_t>(impl_->shore.stride());
+    s.scene_upload_bytes = impl_->last_upload_bytes;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;

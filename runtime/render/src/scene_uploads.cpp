@@ -149,7 +149,10 @@ bool ShoreBuffers::rewrite_in_place(const Models& models) {
 }
 
 Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
-    if (holds(models) && max_bytes == max_bytes_) return false;
+    if (holds(models) && max_bytes == max_bytes_) {
+        rewritten_bytes_ = 0;
+        return false;
+    }
     // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
     if (max_bytes == max_bytes_ && rewrite_in_place(models)) return false;
     std::vector<const ShoreWaves*> wanted_models;
@@ -259,7 +262,40 @@ Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool poo
     t.lod.lowest = sampled.lowest;
     t.lod.highest = sampled.highest;
     t.water_half_size = std::max(3000.0, terrain.extent_half_size());
+    t.written_bytes = sampled.bytes();
+    t.sampling = sampled;
+    t.sampling.texels = {};
     return t;
+}
+
+Result<bool> TerrainUpload::update(const Device& ctx, VkCommandPool pool, const Terrain& before, const Terrain& after) {
+    const auto patch = height_texture_patch(sampling, before, after);
+    if (!patch) return false;
+    written_bytes = patch->texels.size() * sizeof(std::uint16_t);
+    if (patch->texels.empty()) return true;
+    auto staging = GpuBuffer::create(ctx, written_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    if (!staging) return staging.error();
+    std::memcpy(staging->mapped(), patch->texels.data(), written_bytes);
+    const VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+    if (auto st = submit_and_wait(
+            ctx, pool,
+            [&](VkCommandBuffer cmd) {
+                transition(ctx.vk(), cmd, heights.handle(), aspect, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                           VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                VkBufferImageCopy region{};
+                region.imageSubresource = {aspect, 0, 0, 1};
+                region.imageOffset = {static_cast<std::int32_t>(patch->i0), static_cast<std::int32_t>(patch->j0), 0};
+                region.imageExtent = {patch->width, patch->height, 1};
+                ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), heights.handle(),
+                                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+                transition(ctx.vk(), cmd, heights.handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_READ_BIT);
+            });
+        !st)
+        return st.error();
+    return true;
 }
 
 }  // namespace tidewater::render::detail

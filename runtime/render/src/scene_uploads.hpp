@@ -15,6 +15,7 @@
 #include "frame_constants.hpp"
 #include "gpu_memory.hpp"
 #include "terrain_lod.hpp"
+#include "terrain_mesh.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/terrain.hpp"
@@ -130,9 +131,15 @@ struct TerrainUpload {
     TerrainLodGrid lod;                ///< what the node selection needs
     double water_half_size = 3000.0;   ///< m, half the side of the water grid.
     std::uint64_t resident_bytes = 0;  ///< the texture and the patch
+    TerrainHeights sampling;           ///< how the texture was sampled (its texels dropped)
+    std::uint64_t written_bytes = 0;   ///< of the texture, by the last create or update
 
     static Result<TerrainUpload> create(const Device& ctx, VkCommandPool pool, const Terrain& terrain,
                                         std::uint64_t max_bytes);
+    /// Writes the texels that `after` changes from `before` (the terrain the texture was
+    /// sampled from) into the texture, when height_texture_patch allows; false, with
+    /// nothing written, when it does not. No GPU work may be reading the texture.
+    Result<bool> update(const Device& ctx, VkCommandPool pool, const Terrain& before, const Terrain& after);
 };
 
 }  // namespace tidewater::render::detail

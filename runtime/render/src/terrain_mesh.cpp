@@ -5,9 +5,25 @@
 #include <limits>
 
 #include "host_device.h"
+#include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/parallel.hpp"
 
 namespace tidewater::render::detail {
+
+namespace {
+
+/// A height's texel value in a texture over [lowest, highest].
+std::uint16_t height_code(float height, double lowest, double highest) {
+    return static_cast<std::uint16_t>(
+        std::lround((static_cast<double>(height) - lowest) * (65535.0 / (highest - lowest))));
+}
+
+/// The terrain's height at texel (i, j) of a texture whose first texel centre is `first`.
+float texel_height(const Terrain& terrain, glm::dvec2 first, glm::dvec2 texel, std::uint32_t i, std::size_t j) {
+    return static_cast<float>(terrain.height_at(first + glm::dvec2(i, static_cast<double>(j)) * texel));
+}
+
+}  // namespace
 
 TerrainPatch build_terrain_patch() {
     constexpr std::uint32_t p = gpu::kTerrainPatchQuads, n = p + 1, half = p / 2;
@@ -54,22 +70,58 @@ TerrainHeights sample_terrain_heights(const Terrain& terrain, std::uint64_t max_
         t.region_max = terrain.extent_center() + glm::dvec2(half);
     }
     t.corner = first - 0.5 * t.texel;
+    t.first = first;
     std::vector<float> heights(static_cast<std::size_t>(t.width) * t.height);
     tidewater::detail::parallel_chunks(t.height, 8, 0, [&](std::size_t begin, std::size_t end) {
         for (std::size_t j = begin; j < end; ++j)
             for (std::uint32_t i = 0; i < t.width; ++i)
-                heights[j * t.width + i] =
-                    static_cast<float>(terrain.height_at(first + glm::dvec2(i, static_cast<double>(j)) * t.texel));
+                heights[j * t.width + i] = texel_height(terrain, first, t.texel, i, j);
     });
     const auto [lo, hi] = std::minmax_element(heights.begin(), heights.end());
     t.lowest = static_cast<double>(*lo);
     t.highest = std::max(static_cast<double>(*hi), t.lowest + 1e-3);
     if (t.fade > 0.0) t.lowest = std::min(t.lowest, t.seabed);
-    const double to_code = 65535.0 / (t.highest - t.lowest);
     t.texels.resize(heights.size());
-    for (std::size_t k = 0; k < heights.size(); ++k)
-        t.texels[k] = static_cast<std::uint16_t>(std::lround((static_cast<double>(heights[k]) - t.lowest) * to_code));
+    for (std::size_t k = 0; k < heights.size(); ++k) t.texels[k] = height_code(heights[k], t.lowest, t.highest);
     return t;
+}
+
+std::optional<HeightTexturePatch> height_texture_patch(const TerrainHeights& sampled, const Terrain& before,
+                                                       const Terrain& after) {
+    const auto pixels = tidewater::detail::changed_pixels(before, after);
+    if (!pixels) return std::nullopt;
+    HeightTexturePatch patch;
+    if (!*pixels) return patch;
+    // The world rectangle the changed pixels reach (their bilinear support), then the
+    // texels whose centres lie in it.
+    const auto& map = std::get<HeightmapTerrain>(before.shape());
+    const glm::dvec2 pixel = map.size / glm::dvec2(map.image->width - 1, map.image->height - 1);
+    const glm::dvec2 origin = map.center - 0.5 * map.size;
+    const glm::dvec2 lo = origin + pixel * glm::dvec2((*pixels)->i0 - 1, (*pixels)->j0 - 1);
+    const glm::dvec2 hi = origin + pixel * glm::dvec2((*pixels)->i1 + 1, (*pixels)->j1 + 1);
+    // The texture's outermost texels also carry the edge on into the fade: an edit of an
+    // edge pixel reaches them.
+    auto first_texel = [](double x, double first, double texel, std::uint32_t n) {
+        return static_cast<std::uint32_t>(std::clamp(std::floor((x - first) / texel), 0.0, n - 1.0));
+    };
+    auto last_texel = [](double x, double first, double texel, std::uint32_t n) {
+        return static_cast<std::uint32_t>(std::clamp(std::ceil((x - first) / texel), 0.0, n - 1.0));
+    };
+    patch.i0 = first_texel(lo.x, sampled.first.x, sampled.texel.x, sampled.width);
+    patch.j0 = first_texel(lo.y, sampled.first.y, sampled.texel.y, sampled.height);
+    patch.width = last_texel(hi.x, sampled.first.x, sampled.texel.x, sampled.width) - patch.i0 + 1;
+    patch.height = last_texel(hi.y, sampled.first.y, sampled.texel.y, sampled.height) - patch.j0 + 1;
+    patch.texels.resize(static_cast<std::size_t>(patch.width) * patch.height);
+    for (std::uint32_t j = 0; j < patch.height; ++j)
+        for (std::uint32_t i = 0; i < patch.width; ++i) {
+            const float h = texel_height(after, sampled.first, sampled.texel, patch.i0 + i, patch.j0 + j);
+            // Beyond the texture's range the whole texture is encoded anew.
+            if (!(static_cast<double>(h) >= sampled.lowest && static_cast<double>(h) <= sampled.highest))
+                return std::nullopt;
+            patch.texels[static_cast<std::size_t>(j) * patch.width + i] =
+                height_code(h, sampled.lowest, sampled.highest);
+        }
+    return patch;
 }
 
 }  // namespace tidewater::render::detail

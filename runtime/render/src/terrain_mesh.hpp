@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <optional>
 #include <vector>
 
 #include "tidewater/terrain.hpp"
@@ -28,6 +29,7 @@ TerrainPatch build_terrain_patch();
 struct TerrainHeights {
     std::uint32_t width = 0, height = 0;          ///< texels
     glm::dvec2 corner{0.0};                       ///< world xz of the texture's outer corner, m
+    glm::dvec2 first{0.0};                        ///< world xz of its first texel's centre, m
     glm::dvec2 texel{1.0};                        ///< m along x and z
     double lowest = 0.0, highest = 1.0;           ///< m: texel values 0 and 65535
     std::vector<std::uint16_t> texels;            ///< rows along +z
@@ -43,5 +45,19 @@ inline constexpr std::uint32_t kProceduralTexels = 2048;
 /// Samples the terrain (with its cuts). The texture takes at most `max_bytes` (a
 /// heightmap is then sampled on every k-th pixel centre, k as small as fits).
 TerrainHeights sample_terrain_heights(const Terrain& terrain, std::uint64_t max_bytes);
+
+/// The texels of a height texture that an edit changes, sampled and encoded as
+/// sample_terrain_heights does over the texture's own height range: `width` x `height`
+/// texels from (i0, j0), rows along +z (none: nothing changed).
+struct HeightTexturePatch {
+    std::uint32_t i0 = 0, j0 = 0, width = 0, height = 0;
+    std::vector<std::uint16_t> texels;
+};
+
+/// The patch that takes `sampled` (sample_terrain_heights of `before`, its texels not
+/// needed) to `after`, when `after` is `before`'s heightmap with pixels changed and every
+/// changed height lies within the texture's range. nullopt otherwise: sample it anew.
+std::optional<HeightTexturePatch> height_texture_patch(const TerrainHeights& sampled, const Terrain& before,
+                                                       const Terrain& after);
 
 }  // namespace tidewater::render::detail

@@ -7,6 +7,8 @@
 #include <variant>
 #include <vector>
 
+#include "tidewater/detail/heightmap_change.hpp"
+
 namespace tidewater::detail {
 
 namespace {
@@ -21,29 +23,12 @@ struct WorldRect {
 /// changed, where the edge value fades to the seabed). An empty optional inside: no pixel
 /// changed. nullopt: not the same heightmap with other pixels.
 std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
+    const auto pixels = changed_pixels(before, after);
+    if (!pixels) return std::nullopt;
+    if (!*pixels) return std::optional<WorldRect>{};
     const auto* a = std::get_if<HeightmapTerrain>(&before.shape());
-    const auto* b = std::get_if<HeightmapTerrain>(&after.shape());
-    if (!a || !b || !a->image || !b->image || before.cuts() != after.cuts() || a->size != b->size ||
-        a->center != b->center || a->min_height != b->min_height || a->max_height != b->max_height)
-        return std::nullopt;
-    const Gray16Image &x = *a->image, &y = *b->image;
-    if (x.width != y.width || x.height != y.height || x.pixels.size() != y.pixels.size() || x.width < 2 || x.height < 2)
-        return std::nullopt;
-    const auto w = static_cast<std::size_t>(x.width);
-    int i0 = x.width, i1 = -1, j0 = x.height, j1 = -1;
-    for (int j = 0; j < x.height; ++j) {
-        const std::uint16_t* p = x.pixels.data() + static_cast<std::size_t>(j) * w;
-        const std::uint16_t* q = y.pixels.data() + static_cast<std::size_t>(j) * w;
-        if (std::memcmp(p, q, w * sizeof(std::uint16_t)) == 0) continue;
-        for (int i = 0; i < x.width; ++i)
-            if (p[i] != q[i]) {
-                i0 = std::min(i0, i);
-                i1 = std::max(i1, i);
-            }
-        j0 = std::min(j0, j);
-        j1 = std::max(j1, j);
-    }
-    if (i1 < 0) return std::optional<WorldRect>{};
+    const Gray16Image& x = *a->image;
+    const auto [i0, j0, i1, j1] = **pixels;
     constexpr double inf = std::numeric_limits<double>::infinity();
     auto along = [&](double pixel, int count, double center, double size) {
         return center + (pixel / (count - 1) - 0.5) * size;

@@ -158,7 +158,11 @@ struct RendererStats {
     std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
     std::uint64_t shore_bytes = 0;        ///< Resident: the shore models' fields.
     std::uint32_t shore_stride = 1;       ///< The shore fields are drawn from every k-th texel (1: all).
-    std::uint64_t water_patches = 0;      ///< Tessellated patches submitted (before culling).
+    /// Bytes of height texture and shore fields the last set_scene wrote to the device: a
+    /// scene re-baked after an edit of the one drawn writes only the texels and shore tiles
+    /// the edit changed.
+    std::uint64_t scene_upload_bytes = 0;
+    std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
     double water_patch_size = 0.0;  ///< m
 };
@@ -170,7 +174,9 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Uploads the scene's terrain and water (submits and waits). Call again after edits.
+    /// Uploads the scene's terrain and water (submits and waits). Call again after edits:
+    /// a heightmap edited from the one drawn, and a shore model re-baked from the one
+    /// drawn (bake_scene with SceneBakeOptions::previous), are written where they changed.
     /// The scene must be baked (bake_scene) unless its shore is disabled; an unbaked one
     /// is refused rather than drawn as open sea.
     Status set_scene(const Scene& scene);
