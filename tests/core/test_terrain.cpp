@@ -37,6 +37,29 @@ Gray16Image cone(int n) {
 
 // A heightmap written as 16-bit PNG and loaded through a scene samples back within
 // the 16-bit quantisation (40 m / 65535 = 0.6 mm) at pixel centres.
+// A 16-bit PNG written a row at a time reads back sample for sample (both bytes of each
+// sample differ across the image, so a byte order mix-up shows), and a write that cannot
+// happen leaves no file.
+TEST(Terrain, PngRowsRoundTripExactly) {
+    const fs::path dir = temp_dir("tidewater_png_rows_test");
+    auto sample = [](int i, int j) { return static_cast<std::uint16_t>((i * 2654435761u + j * 40503u) & 0xffffu); };
+    ASSERT_TRUE(detail::write_png_gray16_rows(dir / "rows.png", 37, 23, [&](int j, std::uint16_t* row) {
+                    for (int i = 0; i < 37; ++i) row[i] = sample(i, j);
+                }).ok());
+    auto back = detail::read_png_gray16(dir / "rows.png");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    ASSERT_EQ(back->width, 37);
+    ASSERT_EQ(back->height, 23);
+    for (int j = 0; j < 23; ++j)
+        for (int i = 0; i < 37; ++i) ASSERT_EQ(back->pixels[static_cast<std::size_t>(j) * 37 + i], sample(i, j));
+    const auto missing = detail::write_png_gray16_rows(dir / "no_such_folder" / "rows.png", 4, 4,
+                                                       [](int, std::uint16_t* row) { std::fill_n(row, 4, 0); });
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("no_such_folder"), std::string::npos);
+    EXPECT_FALSE(detail::write_png_gray16_rows(dir / "empty.png", 0, 4, [](int, std::uint16_t*) {}).ok());
+    EXPECT_FALSE(fs::exists(dir / "empty.png"));
+}
+
 TEST(Terrain, HeightmapRoundTripsThroughPng) {
     const fs::path dir = temp_dir("tidewater_heightmap_test");
     ASSERT_TRUE(detail::write_png_gray16(dir / "cone.png", cone(65)).ok());

@@ -21,13 +21,17 @@ Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& n
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
     const FieldEncoding e = FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo),
                                                     values.empty() ? 0.0 : static_cast<double>(*hi));
-    Gray16Image img;
-    img.width = nx;
-    img.height = nz;
-    img.pixels.resize(values.size());
-    for (std::size_t k = 0; k < values.size(); ++k) img.pixels[k] = e.encode(static_cast<double>(values[k]));
     const std::string file = name + ".png";
-    if (auto st = write_png_gray16(dir / file, img); !st) return st.error();
+    const auto width = static_cast<std::size_t>(nx);
+    // Encoded a row at a time: a field of 8192² is written without a 128 MiB image of it.
+    if (auto st = write_png_gray16_rows(dir / file, nx, nz,
+                                        [&](int j, std::uint16_t* samples) {
+                                            const float* in = values.data() + static_cast<std::size_t>(j) * width;
+                                            for (std::size_t i = 0; i < width; ++i)
+                                                samples[i] = e.encode(static_cast<double>(in[i]));
+                                        });
+        !st)
+        return st.error();
     return nlohmann::json{
         {"file", file}, {"unit", unit}, {"zero_pixel", e.zero}, {"step", e.step}, {"max_error", 0.5 * e.step}};
 }

@@ -1,4 +1,4 @@
-// PNG writing: stb writes 8-bit RGBA, libpng's simplified API 16-bit greyscale. Writes are
+// PNG writing: stb writes 8-bit RGBA, libpng 16-bit greyscale a row at a time. Writes are
 // atomic: a temporary file beside the target is renamed over it only when complete.
 #include "tidewater/detail/image_write.hpp"
 
@@ -7,11 +7,38 @@
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
+#include <csetjmp>
 #include <cstdio>
+#include <vector>
 
 namespace tidewater::detail {
 
 namespace {
+
+/// libpng's row writer into an open file; false on any libpng error (it longjmps here,
+/// past nothing that needs destroying: `samples` belongs to the caller).
+bool write_gray16_rows(std::FILE* file, int width, int height, const std::function<void(int, std::uint16_t*)>& row,
+                       std::uint16_t* samples) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, info ? &info : nullptr);
+        return false;
+    }
+    png_init_io(png, file);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 16, PNG_COLOR_TYPE_GRAY,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_set_swap(png);  // PNG stores 16-bit samples big-endian; ours are the host's (little-endian)
+    for (int j = 0; j < height; ++j) {
+        row(j, samples);
+        png_write_row(png, reinterpret_cast<png_const_bytep>(samples));
+    }
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
 
 /// Encodes with `encode(temp_path)` and renames onto `path` on success.
 template <typename Encode>
@@ -52,15 +79,23 @@ Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& im
         return Error{ErrorCode::invalid_argument,
                      fmt::format("{}: image size and pixel count disagree", path.string())};
     }
+    const auto width = static_cast<std::size_t>(image.width);
+    return write_png_gray16_rows(path, image.width, image.height, [&](int j, std::uint16_t* samples) {
+        std::copy_n(image.pixels.data() + static_cast<std::size_t>(j) * width, width, samples);
+    });
+}
+
+Status write_png_gray16_rows(const std::filesystem::path& path, int width, int height,
+                             const std::function<void(int, std::uint16_t*)>& row) {
+    if (width <= 0 || height <= 0)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: {}x{} is not an image", path.string(), width, height)};
+    std::vector<std::uint16_t> samples(static_cast<std::size_t>(width));
     return write_atomically(path, [&](const std::string& temp) {
-        png_image png{};
-        png.version = PNG_IMAGE_VERSION;
-        png.width = static_cast<png_uint_32>(image.width);
-        png.height = static_cast<png_uint_32>(image.height);
-        png.format = PNG_FORMAT_LINEAR_Y;  // one 16-bit channel, samples written as given
-        const int ok = png_image_write_to_file(&png, temp.c_str(), 0, image.pixels.data(), 0, nullptr);
-        png_image_free(&png);
-        return ok != 0;
+        std::FILE* file = std::fopen(temp.c_str(), "wb");
+        if (!file) return false;
+        const bool written = write_gray16_rows(file, width, height, row, samples.data());
+        return std::fclose(file) == 0 && written;
     });
 }
 

@@ -231,9 +231,14 @@ TilePlan plan_tiles(const OpenSeaTest& test, std::span<const glm::dvec2> open, c
         t.pages[tile] = static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot + plan.tile.size());
         plan.tile.push_back(tile);
     }
-    t.assign_slots(gpu::kShoreFirstStoredSlot + plan.tile.size());
-    fill_constant_slots(t, open);
     return plan;
+}
+
+/// The plan's slots, open sea and dry land filled (`open`: the layer's waves' k0 D, none
+/// for the shared layer), the stored ones zero until the bake writes them.
+void make_slots(TilePlan& plan, std::span<const glm::dvec2> open) {
+    plan.tiles.assign_slots(gpu::kShoreFirstStoredSlot + plan.tile.size());
+    fill_constant_slots(plan.tiles, open);
 }
 
 /// Calls visit(slot texel's floats, grid index, stored slot texel) for every texel of every
@@ -546,9 +551,17 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             for (std::size_t w = runs[r].first; w < runs[r].first + runs[r].count; ++w) run_of[w] = r;
         std::atomic<std::size_t> waves_done{0};
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
-        detail::parallel_for_each(nw, options.threads, [&](std::size_t w) {
+        // The shortest waves first: their runs lie on the finest grids, whose marches take
+        // the most memory, and are marched before the long waves' runs, which store the
+        // most tiles, have their slots made (a run's slots are made as its first wave starts).
+        std::vector<std::once_flag> slots_made(runs.size());
+        detail::parallel_for_each(nw, options.threads, [&](std::size_t i) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
+            const std::size_t w = nw - 1 - i;
             RunBake& run = runs[run_of[w]];
+            std::call_once(slots_made[run_of[w]], [&] {
+                make_slots(run.plan, std::span<const glm::dvec2>(open).subspan(run.first, run.count));
+            });
             if (!run.plan.tile.empty())
                 wave_rows(waves[w], *run.field, march_phase(waves[w], *run.field), w - run.first, run.plan);
             const std::size_t done = ++waves_done;
@@ -558,8 +571,20 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             }
         });
         if (options.cancel.stop_requested()) return cancelled();
+        // The waves are marched: a coarse run's grid keeps only its depth, which breaking
+        // reads, before the shared fields' slots are made.
+        for (RunBake& r : runs) {
+            if (r.field == field) continue;
+            auto depth_only = std::make_shared<ShoreField>();
+            depth_only->corner = r.field->corner;
+            depth_only->texel = r.field->texel;
+            depth_only->resolution = r.field->resolution;
+            depth_only->depth = r.field->depth;  // shared, not copied
+            r.field = std::move(depth_only);
+        }
         TilePlan shared = plan_tiles(open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
+        make_slots(shared, {});
         shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads);
         cap_runs(waves, options.breaking_index, runs, options.threads);
         for (RunBake& r : runs)

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 
 #include "tidewater/detail/image_io.hpp"
@@ -18,5 +19,11 @@ Status write_png_rgba8(const std::filesystem::path& path, int width, int height,
 
 /// Writes a 16-bit greyscale PNG (heightmaps, baked fields).
 Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& image);
+
+/// Writes a 16-bit greyscale PNG of `width` x `height` samples a row at a time:
+/// `row(j, samples)` fills row j (from the top) with its `width` samples, so that a large
+/// field is written without an image of it in memory.
+Status write_png_gray16_rows(const std::filesystem::path& path, int width, int height,
+                             const std::function<void(int, std::uint16_t*)>& row);
 
 }  // namespace tidewater::detail
