@@ -232,8 +232,9 @@ TEST_F(RenderTest, ABrushStrokeIsWrittenWhereItChanged) {
     const Scene stroke = with_mound(scene, {0.0, 60.0}, 15.0, 3.0);
     const double in_place = seconds(stroke);
     const std::uint64_t written = renderer_->stats().scene_upload_bytes;
-    std::printf("set_scene of the 4096^2 heightmap: %.3f s whole, %.4f s for a stroke, which wrote %llu bytes of %llu\n",
-                anew, in_place, static_cast<unsigned long long>(written), static_cast<unsigned long long>(whole));
+    std::printf(
+        "set_scene of the 4096^2 heightmap: %.3f s whole, %.4f s for a stroke, which wrote %llu bytes of %llu\n", anew,
+        in_place, static_cast<unsigned long long>(written), static_cast<unsigned long long>(whole));
     const render::RgbaImage after = render(stroke, frame, 160, 90);
     EXPECT_GT(written, 0u);
     EXPECT_LE(written, 2u * 40u * 40u) << "the texels within the stroke's 15 m and a pixel around it";
