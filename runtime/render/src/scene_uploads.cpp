@@ -233,7 +233,7 @@ Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool poo
     if (!ib) return ib.error();
     std::memcpy(vb->mapped(), patch.vertices.data(), vbytes);
     std::memcpy(ib->mapped(), patch.indices.data(), ibytes);
-    const TerrainHeights sampled = sample_terrain_heights(terrain, max_bytes);
+    TerrainHeights sampled = sample_terrain_heights(terrain, max_bytes);
     auto heights =
         GpuImage::create(ctx, {sampled.width, sampled.height}, VK_FORMAT_R16_UNORM,
                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
@@ -263,8 +263,8 @@ Result<TerrainUpload> TerrainUpload::create(const Device& ctx, VkCommandPool poo
     t.lod.highest = sampled.highest;
     t.water_half_size = std::max(3000.0, terrain.extent_half_size());
     t.written_bytes = sampled.bytes();
-    t.sampling = sampled;
-    t.sampling.texels = {};
+    sampled.texels = std::vector<std::uint16_t>();  // uploaded: only how they were sampled is kept
+    t.sampling = std::move(sampled);
     return t;
 }
 
