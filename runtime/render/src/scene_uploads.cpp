@@ -201,20 +201,28 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
 }
 
 Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
-                    VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects) {
+                    VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects, std::optional<VkRect2D> region) {
     if (barrier_aspects == 0) barrier_aspects = aspect;
     auto staging = GpuBuffer::create(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     if (!staging) return staging.error();
     std::memcpy(staging->mapped(), data, bytes);
+    const VkRect2D rect = region.value_or(VkRect2D{{0, 0}, image.extent()});
     return submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {aspect, 0, 0, 1};
-        region.imageExtent = {image.extent().width, image.extent().height, 1};
+        // Written in part, the image keeps its texels: it leaves the layout the shaders read.
+        if (region)
+            transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                       VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        else
+            transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {aspect, 0, 0, 1};
+        copy.imageOffset = {rect.offset.x, rect.offset.y, 0};
+        copy.imageExtent = {rect.extent.width, rect.extent.height, 1};
         ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                                      &region);
+                                      &copy);
         transition(ctx.vk(), cmd, image.handle(), barrier_aspects, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_READ_BIT);
@@ -273,26 +281,10 @@ Result<bool> TerrainUpload::update(const Device& ctx, VkCommandPool pool, const 
     if (!patch) return false;
     written_bytes = patch->texels.size() * sizeof(std::uint16_t);
     if (patch->texels.empty()) return true;
-    auto staging = GpuBuffer::create(ctx, written_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    if (!staging) return staging.error();
-    std::memcpy(staging->mapped(), patch->texels.data(), written_bytes);
-    const VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
-    if (auto st = submit_and_wait(
-            ctx, pool,
-            [&](VkCommandBuffer cmd) {
-                transition(ctx.vk(), cmd, heights.handle(), aspect, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
-                           VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-                VkBufferImageCopy region{};
-                region.imageSubresource = {aspect, 0, 0, 1};
-                region.imageOffset = {static_cast<std::int32_t>(patch->i0), static_cast<std::int32_t>(patch->j0), 0};
-                region.imageExtent = {patch->width, patch->height, 1};
-                ctx.vk().CmdCopyBufferToImage(cmd, staging->handle(), heights.handle(),
-                                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-                transition(ctx.vk(), cmd, heights.handle(), aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_READ_BIT);
-            });
+    const VkRect2D region{{static_cast<std::int32_t>(patch->i0), static_cast<std::int32_t>(patch->j0)},
+                          {patch->width, patch->height}};
+    if (auto st =
+            upload_image(ctx, pool, heights, patch->texels.data(), written_bytes, VK_IMAGE_ASPECT_COLOR_BIT, 0, region);
         !st)
         return st.error();
     return true;

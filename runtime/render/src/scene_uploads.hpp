@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -117,8 +118,11 @@ class ShoreBuffers {
 
 /// Uploads `bytes` of pixels into `image`'s `aspect` and leaves it SHADER_READ_ONLY_OPTIMAL;
 /// the layout transitions cover `barrier_aspects` (0: `aspect`; a depth-stencil image: both).
+/// `region`: the texels written, into an image already SHADER_READ_ONLY_OPTIMAL whose
+/// other texels are kept; none: the whole image, its old contents discarded.
 Status upload_image(const Device& ctx, VkCommandPool pool, GpuImage& image, const void* data, VkDeviceSize bytes,
-                    VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects = 0);
+                    VkImageAspectFlags aspect, VkImageAspectFlags barrier_aspects = 0,
+                    std::optional<VkRect2D> region = std::nullopt);
 
 /// The terrain on the GPU: its mesh and the height texture the water reads for depth.
 /// The terrain on the device: the patch its level-of-detail nodes draw (terrain_lod.hpp)

@@ -92,15 +92,9 @@ std::optional<HeightTexturePatch> height_texture_patch(const TerrainHeights& sam
     if (!pixels) return std::nullopt;
     HeightTexturePatch patch;
     if (!*pixels) return patch;
-    // The world rectangle the changed pixels reach (their bilinear support), then the
-    // texels whose centres lie in it.
-    const auto& map = std::get<HeightmapTerrain>(before.shape());
-    const glm::dvec2 pixel = map.size / glm::dvec2(map.image->width - 1, map.image->height - 1);
-    const glm::dvec2 origin = map.center - 0.5 * map.size;
-    const glm::dvec2 lo = origin + pixel * glm::dvec2((*pixels)->i0 - 1, (*pixels)->j0 - 1);
-    const glm::dvec2 hi = origin + pixel * glm::dvec2((*pixels)->i1 + 1, (*pixels)->j1 + 1);
-    // The texture's outermost texels also carry the edge on into the fade: an edit of an
-    // edge pixel reaches them.
+    // The texels whose centres lie where the changed pixels reach (clamped: the texture's
+    // outermost texels carry the edge on into the fade).
+    const auto [lo, hi] = tidewater::detail::pixels_reach(std::get<HeightmapTerrain>(before.shape()), **pixels);
     auto first_texel = [](double x, double first, double texel, std::uint32_t n) {
         return static_cast<std::uint32_t>(std::clamp(std::floor((x - first) / texel), 0.0, n - 1.0));
     };

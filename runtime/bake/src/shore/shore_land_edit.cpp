@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <limits>
 #include <variant>
 #include <vector>
 
@@ -13,32 +11,14 @@ namespace tidewater::detail {
 
 namespace {
 
-/// World xz from lo to hi (either may be infinite).
-struct WorldRect {
-    glm::dvec2 lo, hi;
-};
-
-/// Where `after`'s height may differ from `before`'s: the bilinear support of the
-/// heightmap pixels that changed (reaching to infinity beyond an edge whose pixels
-/// changed, where the edge value fades to the seabed). An empty optional inside: no pixel
-/// changed. nullopt: not the same heightmap with other pixels.
+/// Where `after`'s height may differ from `before`'s (pixels_reach of the changed pixels).
+/// An empty optional inside: no pixel changed. nullopt: not the same heightmap with other
+/// pixels.
 std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
     const auto pixels = changed_pixels(before, after);
     if (!pixels) return std::nullopt;
     if (!*pixels) return std::optional<WorldRect>{};
-    const auto* a = std::get_if<HeightmapTerrain>(&before.shape());
-    const Gray16Image& x = *a->image;
-    const auto [i0, j0, i1, j1] = **pixels;
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    auto along = [&](double pixel, int count, double center, double size) {
-        return center + (pixel / (count - 1) - 0.5) * size;
-    };
-    WorldRect r;
-    r.lo.x = i0 == 0 ? -inf : along(i0 - 1, x.width, a->center.x, a->size.x);
-    r.hi.x = i1 == x.width - 1 ? inf : along(i1 + 1, x.width, a->center.x, a->size.x);
-    r.lo.y = j0 == 0 ? -inf : along(j0 - 1, x.height, a->center.y, a->size.y);
-    r.hi.y = j1 == x.height - 1 ? inf : along(j1 + 1, x.height, a->center.y, a->size.y);
-    return std::optional<WorldRect>{r};
+    return std::optional<WorldRect>{pixels_reach(std::get<HeightmapTerrain>(before.shape()), **pixels)};
 }
 
 /// The texels of a grid whose centres lie in `r` (i1 < i0 when none do).

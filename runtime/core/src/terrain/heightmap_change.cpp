@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <variant>
 
 namespace tidewater::detail {
@@ -32,6 +33,20 @@ std::optional<std::optional<PixelRect>> changed_pixels(const Terrain& before, co
     }
     if (r.i1 < 0) return std::optional<PixelRect>{};
     return std::optional<PixelRect>{r};
+}
+
+WorldRect pixels_reach(const HeightmapTerrain& map, const PixelRect& pixels) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const int w = map.image->width, h = map.image->height;
+    auto along = [](double pixel, int count, double center, double size) {
+        return center + (pixel / (count - 1) - 0.5) * size;
+    };
+    WorldRect r;
+    r.lo.x = pixels.i0 == 0 ? -inf : along(pixels.i0 - 1, w, map.center.x, map.size.x);
+    r.hi.x = pixels.i1 == w - 1 ? inf : along(pixels.i1 + 1, w, map.center.x, map.size.x);
+    r.lo.y = pixels.j0 == 0 ? -inf : along(pixels.j0 - 1, h, map.center.y, map.size.y);
+    r.hi.y = pixels.j1 == h - 1 ? inf : along(pixels.j1 + 1, h, map.center.y, map.size.y);
+    return r;
 }
 
 }  // namespace tidewater::detail

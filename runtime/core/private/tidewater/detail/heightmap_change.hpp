@@ -3,6 +3,7 @@
 // those texels of its height texture. Threading: pure functions.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <optional>
 
 #include "tidewater/terrain.hpp"
@@ -19,5 +20,15 @@ struct PixelRect {
 /// another image: an empty optional inside when no pixel differs. nullopt when they are
 /// not the same heightmap (or not heightmaps): anything may have changed.
 std::optional<std::optional<PixelRect>> changed_pixels(const Terrain& before, const Terrain& after);
+
+/// World xz from lo to hi, m (either may be infinite).
+struct WorldRect {
+    glm::dvec2 lo{0.0}, hi{0.0};
+};
+
+/// Where heights over `map` change when the pixels in `pixels` do: their bilinear support,
+/// reaching to infinity beyond an edge whose pixels changed (the edge value carries on
+/// and fades to the seabed there).
+WorldRect pixels_reach(const HeightmapTerrain& map, const PixelRect& pixels);
 
 }  // namespace tidewater::detail
