@@ -300,6 +300,11 @@ JSON
     expect_error "bake for other waves" "re-run tidewater bake" "$TW" query --scene other_waves.json --points points.csv --time 0
     sed 's|"seabed": -40|"seabed": -42|' loads_bake.json > other_terrain.json
     expect_error "bake over another terrain" "the terrain differs" "$TW" query --scene other_terrain.json --points points.csv --time 0
+    # Tiles are read as a query needs them: corrupt ones fail that query, naming the file.
+    cp -r baked corrupt_bake
+    for f in corrupt_bake/tiles/shared/*.png; do echo "not a png" > "$f"; done
+    sed 's|"bake": "baked"|"bake": "corrupt_bake"|' loads_bake.json > corrupt_tiles.json
+    expect_error "bake with corrupt tiles" "corrupt_bake/tiles/shared/x" "$TW" query --scene corrupt_tiles.json --points shore_points.csv --time 0
     first_tile=$(ls baked/tiles/shared | head -1)
     rm "baked/tiles/shared/$first_tile"
     expect_error "bake with a missing tile" "$first_tile" "$TW" query --scene loads_bake.json --points points.csv --time 0

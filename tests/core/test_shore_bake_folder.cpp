@@ -124,9 +124,12 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     contents.waves = &scene->ocean.waves();
     const fs::path folder = dir.path / "bake";
     ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    // Stored tiles are read on demand: read_all reads them, as set_scene does.
     auto message = [&](const WaveSet& waves, double level, const Terrain& terrain) {
         auto r = load_shore_bake(folder, waves, level, terrain);
-        return r.ok() ? std::string("loaded") : r.error().message;
+        if (!r) return r.error().message;
+        auto read = (*r)->read_all();
+        return read.ok() ? std::string("loaded") : read.error().message;
     };
     EXPECT_NE(message(scene->ocean.waves(), 0.3, scene->terrain).find("/water_level_m"), std::string::npos);
     auto lake = parse_scene(
@@ -178,6 +181,87 @@ TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
     EXPECT_FALSE(save_shore_bake(dir.path / "plain" / "bake", contents).ok());
     for (const auto& e : fs::directory_iterator(dir.path))
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+/// Stored slots read so far over every layer of `model`, and how many there are.
+std::pair<std::size_t, std::size_t> slots_read(const ShoreWaves& model) {
+    std::size_t read = 0, stored = 0;
+    auto add = [&](const ShoreTiles& t) {
+        read += t.lazy ? t.lazy->read_count() : t.slot_count();
+        stored += t.slot_count() - gpu::kShoreFirstStoredSlot;
+    };
+    add(model.shared());
+    for (const ShoreWaveLayer& l : model.layers()) add(l.tiles);
+    return {read, stored};
+}
+
+TEST(ShoreBakeFolder, ALoadedBakeReadsItsTilesWhenNeeded) {
+    TempDir dir;
+    auto scene = test::baked(parse_scene(kIslandScene, "island"));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ShoreBakeContents contents;
+    contents.model = scene->ocean.shore().get();
+    contents.waves = &scene->ocean.waves();
+    const fs::path folder = dir.path / "bake";
+    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    auto load = [&] { return load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain); };
+    auto lazy = load();
+    ASSERT_TRUE(lazy.ok()) << lazy.error().message;
+    const auto [read_at_load, stored] = slots_read(**lazy);
+    EXPECT_EQ(read_at_load, 0u);
+    ASSERT_GT(stored, 20u);
+
+    // A query on one beach reads the tiles under it, and answers what a model read whole does.
+    auto eager = load();
+    ASSERT_TRUE(eager.ok());
+    const Status read_whole = (*eager)->read_all();
+    ASSERT_TRUE(read_whole.ok()) << read_whole.error().message;
+    EXPECT_EQ(slots_read(**eager).first, stored);
+    std::vector<glm::dvec2> beach;
+    for (int k = 0; k < 64; ++k) beach.push_back({290.0 + 0.5 * k, 3.0 * (k % 8)});
+    auto heights = [&](const std::shared_ptr<const ShoreWaves>& model, std::span<const glm::dvec2> points) {
+        auto body = scene->ocean.with_shore(model);
+        std::vector<double> h(points.size());
+        const Status st = body.ok() ? query_heights(*body, 3.0, points, h) : Status(body.error());
+        return std::pair{st, h};
+    };
+    const auto [lazy_status, lazy_heights] = heights(*lazy, beach);
+    ASSERT_TRUE(lazy_status.ok()) << lazy_status.error().message;
+    EXPECT_EQ(lazy_heights, heights(*eager, beach).second);
+    const std::size_t read_by_beach = slots_read(**lazy).first;
+    EXPECT_GT(read_by_beach, 0u);
+    EXPECT_LT(read_by_beach, stored / 2);
+    std::printf("a beach's query read %zu of %zu stored tiles\n", read_by_beach, stored);
+
+    // A tile corrupted after the load fails the query that needs it, naming the file; a
+    // folder replaced since the load (the same bake saved again) reads as missing files,
+    // never as the new folder's tiles.
+    const ShoreTiles& shared = (*lazy)->shared();
+    const std::size_t last = static_cast<std::size_t>(
+        std::find(shared.pages.rbegin(), shared.pages.rend(), static_cast<std::uint32_t>(shared.slot_count() - 1)) -
+        shared.pages.rbegin());
+    const std::size_t tile = shared.pages.size() - 1 - last;
+    const std::string file = shore_tile_file(shore_layer_folder(-1), static_cast<int>(tile % shared.tiles_per_side),
+                                             static_cast<int>(tile / shared.tiles_per_side));
+    ASSERT_TRUE(fs::exists(folder / file));
+    { std::ofstream(folder / file, std::ios::trunc) << "not a png"; }
+    std::vector<glm::dvec2> everywhere;
+    for (int k = 0; k < 900; ++k) everywhere.push_back({-450.0 + (k % 30) * 31.0, -450.0 + (k / 30) * 31.0});
+    const auto [corrupt_status, ignored] = heights(*lazy, everywhere);
+    ASSERT_FALSE(corrupt_status.ok());
+    EXPECT_NE(corrupt_status.error().message.find(fs::path(file).filename().string()), std::string::npos)
+        << corrupt_status.error().message;
+    EXPECT_FALSE((*lazy)->status().ok());
+
+    auto before_save = load();
+    ASSERT_TRUE(before_save.ok());
+    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    const Status replaced = (*before_save)->read_all();
+    ASSERT_FALSE(replaced.ok());
+    EXPECT_NE(replaced.error().message.find("replaced"), std::string::npos) << replaced.error().message;
+    auto after_save = load();
+    ASSERT_TRUE(after_save.ok());
+    EXPECT_TRUE((*after_save)->read_all().ok());
 }
 
 TEST(ShoreBakeFolder, ModelFromFieldsChecksSizesAndValues) {

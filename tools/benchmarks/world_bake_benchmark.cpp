@@ -2,7 +2,8 @@
 // (hills to 100 m with 2 m ditches every 40 m, a wavy coast about a fifth of the side from
 // the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
-// object: bake, save and load seconds, a brush stroke's re-bake, the process's peak
+// object: bake, save and load seconds (the load reads the index, then every tile is read
+// as a renderer's first upload does), a brush stroke's re-bake, the process's peak
 // memory (after the save, before the stroke and the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]
@@ -226,6 +227,16 @@ int main(int argc, char** argv) {
         return 1;
     }
     const double load = seconds_since(t3);
+    // The load reads the index; the tiles are read on demand. Every one of them, as a
+    // renderer's first upload reads them:
+    const auto t4 = Clock::now();
+    if (const auto& shore = (*loaded)->bake->ocean_shore)
+        if (auto st = shore->read_all(); !st) {
+            std::fprintf(stderr, "%s\n", st.error().message.c_str());
+            fs::remove_all(dir);
+            return 1;
+        }
+    const double read_all = seconds_since(t4);
     if (argc > 6) {
         if (auto st = keep_world(fs::path(argv[6]), dir, scene, side, waves); !st.empty()) {
             std::fprintf(stderr, "%s\n", st.c_str());
@@ -236,11 +247,12 @@ int main(int argc, char** argv) {
     fs::remove_all(dir);
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
-        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"land_edit_s\": %.3f, "
+        "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"read_all_s\": %.2f, "
+        "\"land_edit_s\": %.3f, "
         "\"land_edit_local\": %s, \"peak_rss_mb\": %.0f, "
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
         "\"gpu_shore_mb\": %.1f}\n",
-        side, waves, seabed, resolution, model_texel, make, bake, save, load, land_edit,
+        side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land_edit,
         land_edit_local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(),
         model_mb, gpu_mb);
     return 0;

@@ -122,6 +122,16 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
     }
 }
 
+Status read_scene_bake_tiles(const Scene& scene) {
+    if (!scene.bake) return {};
+    if (const auto& ocean = scene.bake->ocean_shore)
+        if (auto st = ocean->read_all(); !st) return st;
+    for (const auto& lake : scene.bake->lake_shores)
+        if (lake)
+            if (auto st = lake->read_all(); !st) return st;
+    return {};
+}
+
 bool Scene::baked() const {
     const bool has_bodies = !lakes.empty() || !rivers.empty();
     if (!has_bodies && !(shore.enabled && has_ocean)) return true;

@@ -13,6 +13,10 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::FILE* f = std::fopen(name.c_str(), "rb");
     if (!f) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+    return read_png_gray16(f, name);
+}
+
+Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
     int w = 0, h = 0, channels = 0;
     const int ok = stbi_info_from_file(f, &w, &h, &channels);
     const bool is16 = ok && stbi_is_16_bit_from_file(f);

@@ -68,6 +68,8 @@ Status run_kernel(const WaterBody& body, double time, std::span<const glm::dvec2
                                               heights ? heights + begin : nullptr);
                                     });
         }
+        // A saved bake's tile that could not be read (it was read as zeros) fails the query.
+        if (in.shore != nullptr) return in.shore->status();
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("query: could not run: {}", e.what())};
     }

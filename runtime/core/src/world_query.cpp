@@ -8,6 +8,7 @@
 #include "kernel/kernel_select.hpp"
 #include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/parallel.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/wakes.hpp"
 #include "water/body_at.hpp"
 #include "water/prepared_waves.hpp"
@@ -41,7 +42,8 @@ Status run_river_group(const Scene& scene, const detail::WaterBodiesBake& bodies
                             [&](std::size_t begin, std::size_t end) {
                                 solve(in, group.points.data() + begin, end - begin, group.results.data() + begin);
                             });
-    return {};
+    // A saved bake's tile that could not be read (it was read as zeros) fails the query.
+    return in.still_shore ? in.still_shore->status() : Status();
 }
 
 Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,

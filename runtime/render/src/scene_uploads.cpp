@@ -153,6 +153,11 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
         rewritten_bytes_ = 0;
         return false;
     }
+    // A saved bake's tiles are read on demand: every one now, in parallel; one that cannot
+    // be read fails the upload with its file's name.
+    for (const auto& m : models)
+        if (m)
+            if (auto st = m->read_all(); !st) return st.error();
     // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
     if (max_bytes == max_bytes_ && rewrite_in_place(models)) return false;
     std::vector<const ShoreWaves*> wanted_models;

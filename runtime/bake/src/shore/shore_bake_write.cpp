@@ -178,6 +178,9 @@ Status write_shore_bake_into(const fs::path& dir, const ShoreBakeContents& conte
         return Error{ErrorCode::invalid_argument,
                      fmt::format("save_shore_bake: the model has {} waves, the wave set {}",
                                  contents.model->wave_count(), contents.waves->size())};
+    // A loaded model's tiles are read on demand: every one now, before a folder is
+    // replaced (perhaps the one they come from); one that cannot be read fails the save.
+    if (auto st = contents.model->read_all(); !st) return st;
     return write_bake(dir, contents);
 }
 

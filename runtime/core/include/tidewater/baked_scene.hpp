@@ -72,6 +72,18 @@ using BakeProgressCallback = std::function<void(std::string_view stage, double f
 /// the same as bake_scene gives for it. A scene with nothing to bake (no shore, lakes
 /// or rivers) comes back as it is. Errors name the saved bake's file and field, or say
 /// that the scene names no saved bake. `progress` is told ("loading", fraction).
+///
+/// The shore models' tiles are read on demand: the load reads the bake's index and checks
+/// its open-sea and dry-land tiles against the terrain; each stored tile is read (and its
+/// depths checked) the first time a query, Renderer::set_scene (which reads them all) or
+/// a save needs it, then kept. A tile that cannot be read, or was saved over another
+/// terrain, makes the call that needed it fail, naming the file, and every later one.
 Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const BakeProgressCallback& progress = {});
+
+/// Reads every tile of the saved bake `scene` was loaded from that is not read yet, in
+/// parallel, and returns the first that cannot be read or does not fit the terrain: for a
+/// host that wants a bad bake found at load rather than at first use. Ok at once for a
+/// scene baked in memory. Threading: may run while other threads query the scene.
+Status read_scene_bake_tiles(const Scene& scene);
 
 }  // namespace tidewater

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "shore/shore_tile_files.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/bake_files.hpp"
 #include "tidewater/detail/image_io.hpp"
@@ -20,12 +21,19 @@ namespace {
 namespace fs = std::filesystem;
 using detail::ObjectReader;
 
+/// The depth row's tolerance: half its 16-bit step, and float rounding.
+double depth_tolerance(double step) {
+    return 0.51 * step + 1e-3;
+}
+
 /// One layer's tiles (`at`: /model/tiles, or /model/runs/R/tiles): which are stored, each
-/// row's encoding, and every stored tile's PNG from tiles/`layer`/ decoded into its slot
-/// (slots in tile order, after the open-sea and dry-land ones). `waves` and `first`: the
-/// layer's run of waves (0 waves: the shared layer).
-Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, const std::string& at, int n,
-                              const std::string& layer, std::size_t first, std::size_t waves, double& first_step) {
+/// row's encoding, and a reader of the stored tiles' PNGs in tiles/`layer`/ (slots in tile
+/// order, after the open-sea and dry-land ones), read on demand; each file must be there.
+/// `waves` and `first`: the layer's run of waves (0 waves: the shared layer, whose depths
+/// are checked against `depth_check`, given then, as they are read; its tolerance is set here).
+Result<ShoreTiles> read_tiles(const std::shared_ptr<const OpenBakeFolder>& folder, const ObjectReader& owner,
+                              const std::string& at, int n, const std::string& layer, std::size_t first,
+                              std::size_t waves, ShoreDepthCheck* depth_check) {
     if (!owner.has("tiles")) return owner.error("tiles", "is missing");
     auto tiles = ObjectReader::open(owner.at("tiles"), owner.source(), at);
     if (!tiles) return tiles.error();
@@ -67,7 +75,7 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, co
         rows[r].step = step;
         rows[r].zero = static_cast<std::int64_t>(zero);
     }
-    first_step = rows[0].step;
+    if (depth_check) depth_check->tolerance = depth_tolerance(rows[0].step);
     ShoreTiles t = ShoreTiles::open_grid(n, row_count);
     std::vector<std::size_t> stored;
     for (std::size_t k = 0; k < count; ++k) {
@@ -83,31 +91,16 @@ Result<ShoreTiles> read_tiles(const fs::path& dir, const ObjectReader& owner, co
                 fmt::format("tile {} is '{}': expected o (open sea), d (dry land) or s (stored)", k, kinds[k]));
         }
     }
-    t.assign_slots(gpu::kShoreFirstStoredSlot + stored.size());
-    std::vector<Status> read(stored.size());
-    detail::parallel_for_each(stored.size(), 0, [&](std::size_t s) {
-        const std::size_t k = stored[s];
-        const fs::path file = dir / shore_tile_file(layer, static_cast<int>(k % static_cast<std::size_t>(m)),
-                                                    static_cast<int>(k / static_cast<std::size_t>(m)));
-        auto img = detail::read_png_gray16(file);
-        if (!img) {
-            read[s] = img.error();
-            return;
-        }
-        if (img->width != static_cast<int>(ShoreTiles::kSlotTexels) || img->height != static_cast<int>(t.stride)) {
-            read[s] = Error{ErrorCode::invalid_argument,
-                            fmt::format("{}: the image is {}x{}, a tile of this bake is {}x{}", file.string(),
-                                        img->width, img->height, ShoreTiles::kSlotTexels, t.stride)};
-            return;
-        }
-        float* slot = t.slot_for_writing(gpu::kShoreFirstStoredSlot + s);
-        for (std::size_t r = 0; r < t.stride; ++r)
-            for (std::size_t texel = 0; texel < ShoreTiles::kSlotTexels; ++texel)
-                slot[texel * t.stride + r] =
-                    static_cast<float>(rows[r].decode(img->pixels[r * ShoreTiles::kSlotTexels + texel]));
-    });
-    for (const Status& st : read)
-        if (!st) return st.error();
+    const std::size_t slot_count = gpu::kShoreFirstStoredSlot + stored.size();
+    auto files =
+        std::make_unique<ShoreTileFiles>(folder, layer, n, std::move(stored), std::move(rows),
+                                         depth_check ? std::optional<ShoreDepthCheck>(*depth_check) : std::nullopt);
+    if (auto st = files->check_files(); !st) return st.error();
+    // The constant slots are written by ShoreWaves::from_tiles; the stored ones are read on demand.
+    t.slots.assign(slot_count, nullptr);
+    for (std::size_t s = 0; s < gpu::kShoreFirstStoredSlot; ++s)
+        t.slots[s] = std::make_shared<float[]>(t.slot_floats());
+    t.lazy = std::make_shared<const LazyShoreSlots>(std::move(files), slot_count, t.slot_floats());
     return t;
 }
 
@@ -128,7 +121,8 @@ Result<ShoreGrid> read_grid(const ObjectReader& reader) {
 }
 
 /// The runs of waves of /model/runs: each one's grid and tiles, covering `waves` in order.
-Result<std::vector<ShoreWaveLayer>> read_runs(const fs::path& dir, const ObjectReader& model, std::size_t waves) {
+Result<std::vector<ShoreWaveLayer>> read_runs(const std::shared_ptr<const OpenBakeFolder>& folder,
+                                              const ObjectReader& model, std::size_t waves) {
     if (!model.has("runs") || !model.at("runs").is_array()) return model.error("runs", "expected an array");
     const auto& list = model.at("runs");
     if (list.size() > gpu::kShoreMaxLayers)
@@ -152,9 +146,8 @@ Result<std::vector<ShoreWaveLayer>> read_runs(const fs::path& dir, const ObjectR
         layer.grid = *grid;
         layer.first = next;
         layer.count = static_cast<std::size_t>(count);
-        double step = 0.0;
-        auto tiles = read_tiles(dir, *run, at + "/tiles", layer.grid.resolution,
-                                shore_layer_folder(static_cast<int>(r)), layer.first, layer.count, step);
+        auto tiles = read_tiles(folder, *run, at + "/tiles", layer.grid.resolution,
+                                shore_layer_folder(static_cast<int>(r)), layer.first, layer.count, nullptr);
         if (!tiles) return tiles.error();
         layer.tiles = std::move(tiles).value();
         next += layer.count;
@@ -228,35 +221,29 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
             return w->error("", "differs from the scene's wave " + std::to_string(i) +
                                     ": the bake was made for other waves; re-run tidewater bake");
     }
-    double depth_step = 0.0;
-    auto tiles = read_tiles(dir, *model, "/model/tiles", f.resolution, shore_layer_folder(-1), 0, 0, depth_step);
-    if (!tiles) return tiles.error();
-    auto runs = read_runs(dir, *model, set.size());
-    if (!runs) return runs.error();
     // The terrain must be the one baked over: its depth at every stored texel within the
-    // encoding, water under every open-sea tile and land under every dry one.
-    const double tolerance = 0.51 * depth_step + 1e-3;
+    // encoding (checked as each stored tile is read), water under every open-sea tile and
+    // land under every dry one (checked here).
+    ShoreDepthCheck depth_check{terrain, f, water_level, 0.0};
+    auto folder = OpenBakeFolder::open(dir);
+    if (!folder) return folder.error();
+    auto tiles = read_tiles(*folder, *model, "/model/tiles", f.resolution, shore_layer_folder(-1), 0, 0, &depth_check);
+    if (!tiles) return tiles.error();
+    auto runs = read_runs(*folder, *model, set.size());
+    if (!runs) return runs.error();
     // Rows in parallel; the first row (in grid order) that does not fit is reported.
     std::vector<std::string> misfit(static_cast<std::size_t>(f.resolution));
     detail::parallel_for_each(misfit.size(), 0, [&](std::size_t row) {
         const int j = static_cast<int>(row);
         for (int i = 0; i < f.resolution; ++i) {
-            const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
-            const double depth = water_level - terrain.height_at(p);
             const std::uint32_t page = tiles->page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
-            const double stored = static_cast<double>(tiles->texel(i, j)[0]);
-            const bool fits = page == gpu::kShoreOpenSlot  ? depth > -tolerance
-                              : page == gpu::kShoreDrySlot ? depth <= tolerance
-                                                           : std::abs(depth - stored) <= tolerance;
-            if (fits) continue;
-            misfit[row] = fmt::format(
-                "the terrain differs from the one baked ({:.3f} m deep at x = {:.1f}, z = {:.1f}, "
-                "the bake says {}): re-run tidewater bake",
-                depth, p.x, p.y,
-                page == gpu::kShoreOpenSlot  ? std::string("open sea")
-                : page == gpu::kShoreDrySlot ? std::string("dry land")
-                                             : fmt::format("{:.3f} m", stored));
-            return;
+            if (page >= gpu::kShoreFirstStoredSlot) {
+                i = (i / ShoreTiles::kTile + 1) * ShoreTiles::kTile - 1;  // the tile's reader checks it
+                continue;
+            }
+            const glm::dvec2 p = f.corner + f.texel * glm::dvec2(i + 0.5, j + 0.5);
+            misfit[row] = shore_depth_misfit(water_level - terrain.height_at(p), p, page, 0.0, depth_check.tolerance);
+            if (!misfit[row].empty()) return;
         }
     });
     for (const std::string& m : misfit)

@@ -125,7 +125,11 @@ void ShoreTiles::assign_slots(std::size_t count) {
 
 float* ShoreTiles::slot_for_writing(std::size_t s) {
     std::shared_ptr<float[]>& slot = slots[s];
-    if (slot.use_count() > 1) {
+    if (!slot) {
+        // Read on demand until now: the tiles take a copy of their own.
+        slot = std::make_shared_for_overwrite<float[]>(slot_floats());
+        std::copy_n(lazy->get(s), slot_floats(), slot.get());
+    } else if (slot.use_count() > 1) {
         auto copy = std::make_shared_for_overwrite<float[]>(slot_floats());
         std::copy_n(slot.get(), slot_floats(), copy.get());
         slot = std::move(copy);
@@ -133,10 +137,18 @@ float* ShoreTiles::slot_for_writing(std::size_t s) {
     return slot.get();
 }
 
+Status ShoreTiles::read_all() const {
+    if (!lazy) return {};
+    detail::parallel_for_each(slots.size(), 0, [&](std::size_t s) {
+        if (!slots[s]) (void)lazy->get(s);
+    });
+    return lazy->status();
+}
+
 std::vector<float> ShoreTiles::floats() const {
     std::vector<float> all;
     all.reserve(slots.size() * slot_floats());
-    for (const auto& slot : slots) all.insert(all.end(), slot.get(), slot.get() + slot_floats());
+    for (std::size_t s = 0; s < slots.size(); ++s) all.insert(all.end(), slot(s), slot(s) + slot_floats());
     return all;
 }
 

@@ -82,8 +82,10 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
         return Error{
             ErrorCode::invalid_argument,
             fmt::format("shore tiles: {} has {} pages for a {}² grid, expected {}²", what, t.pages.size(), n, m)};
-    if (t.stride != stride || stride == 0 || t.slot_count() < gpu::kShoreFirstStoredSlot ||
-        std::any_of(t.slots.begin(), t.slots.end(), [](const auto& slot) { return !slot; }))
+    const bool held = std::all_of(t.slots.begin(), t.slots.end(), [](const auto& slot) { return slot != nullptr; });
+    const bool lazy =
+        t.lazy && t.lazy->slot_count() == t.slot_count() && t.slots[gpu::kShoreOpenSlot] && t.slots[gpu::kShoreDrySlot];
+    if (t.stride != stride || stride == 0 || t.slot_count() < gpu::kShoreFirstStoredSlot || !(held || lazy))
         return Error{ErrorCode::invalid_argument,
                      fmt::format("shore tiles: {} slots do not hold {} floats a texel", what, stride)};
     const std::size_t slots = t.slot_count();
@@ -91,8 +93,9 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
         if (t.pages[k] >= slots)
             return Error{ErrorCode::invalid_argument,
                          fmt::format("shore tiles: {} tile {} names slot {} of {}", what, k, t.pages[k], slots)};
+    // Slots read on demand are checked by their reader (a saved bake's decode is finite).
     for (const auto& slot : t.slots)
-        if (!std::all_of(slot.get(), slot.get() + t.slot_floats(), [](float v) { return std::isfinite(v); }))
+        if (slot && !std::all_of(slot.get(), slot.get() + t.slot_floats(), [](float v) { return std::isfinite(v); }))
             return Error{ErrorCode::invalid_argument,
                          fmt::format("shore tiles: {} has a value that is not finite", what)};
     return {};
@@ -251,6 +254,20 @@ std::uint64_t ShoreWaves::device_bytes() const {
     std::uint64_t total = shared_.device_bytes();
     for (const ShoreWaveLayer& l : *layers_) total += l.tiles.device_bytes();
     return total;
+}
+
+Status ShoreWaves::read_all() const {
+    if (auto st = shared_.read_all(); !st) return st;
+    for (const ShoreWaveLayer& l : *layers_)
+        if (auto st = l.tiles.read_all(); !st) return st;
+    return {};
+}
+
+Status ShoreWaves::status() const {
+    if (auto st = shared_.status(); !st) return st;
+    for (const ShoreWaveLayer& l : *layers_)
+        if (auto st = l.tiles.status(); !st) return st;
+    return {};
 }
 
 std::size_t ShoreWaves::stored_tiles() const {

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "tidewater/result.hpp"
@@ -25,5 +27,7 @@ Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path);
 
 /// Reads a 16-bit greyscale PNG. 8-bit, colour or corrupt files are errors naming the file.
 Result<Gray16Image> read_png_gray16(const std::filesystem::path& path);
+/// The same from a file already open for reading (closed here); `name` names it in errors.
+Result<Gray16Image> read_png_gray16(std::FILE* file, const std::string& name);
 
 }  // namespace tidewater::detail

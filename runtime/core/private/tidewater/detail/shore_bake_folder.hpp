@@ -28,11 +28,14 @@ std::string shore_tile_file(const std::string& layer, int ti, int tj);
 /// The folder (under tiles/) of the shared layer's tiles, and of wave run `run`'s.
 std::string shore_layer_folder(int run);
 
-/// Loads the model saved in `dir` for `waves` over `terrain` at `water_level`. Fails,
-/// naming the file and field, on a missing or corrupt file, and when the bake was made
-/// for other waves, another water level or another terrain (its depth field is checked
-/// against `terrain` at every texel). The model covers the terrain's extent, or `region`
-/// where given (a lake's basin).
+/// Loads the model saved in `dir` for `waves` over `terrain` at `water_level`: the index
+/// now, each stored tile's fields the first time they are needed (lazy_shore_slots.hpp).
+/// Fails, naming the file and field, on a missing file, a corrupt index, and when the bake
+/// was made for other waves, another water level or another terrain (the open-sea and
+/// dry-land tiles are checked against `terrain` here). A stored tile that is corrupt or
+/// whose depths do not fit `terrain` is found as it is read: ShoreWaves::status() and
+/// read_all() name it. The model covers the terrain's extent, or `region` where given (a
+/// lake's basin).
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const std::filesystem::path& dir, const WaveSet& waves,
                                                           double water_level, const Terrain& terrain,
                                                           const SquareRegion* region = nullptr);

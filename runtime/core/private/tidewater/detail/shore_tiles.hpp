@@ -7,6 +7,8 @@
 // the same slots with the same taps.
 // Each slot is its own allocation, shared between copies of the tiles until one of them
 // writes it (slot_for_writing): a model edited in a few tiles copies only those slots.
+// A saved bake's layers read their stored slots on demand (lazy_shore_slots.hpp): until
+// written, such a slot's entry is null and its floats come from the reader.
 // Internal to ShoreWaves. Threading: immutable once cut; distinct slots of a ShoreTiles
 // being filled may be written from distinct threads.
 #pragma once
@@ -20,6 +22,7 @@
 #include <vector>
 
 #include "host_device.h"
+#include "tidewater/detail/lazy_shore_slots.hpp"
 
 namespace tidewater {
 
@@ -97,18 +100,29 @@ struct ShoreTiles {
     /// Per slot, kSlotTexels texels of `stride` floats each (a wave layer's: its W phase
     /// residuals, W amplitude factors, W wavevector x, W wavevector z; the shared layer's:
     /// depth, breaking, steepness scale and shore distance). Slots 0 and 1: open sea, dry
-    /// land. Copies of the tiles share the slots; write through slot_for_writing.
+    /// land. Copies of the tiles share the slots; write through slot_for_writing. Null
+    /// where `lazy` holds the slot.
     std::vector<std::shared_ptr<float[]>> slots;
+    /// The reader of a saved bake's stored slots (null when every slot is in `slots`),
+    /// shared between copies of the tiles.
+    std::shared_ptr<const LazyShoreSlots> lazy;
 
     /// Pages for a grid of `n` texels a side, every tile open sea, no slots yet.
     static ShoreTiles open_grid(int n, std::size_t stride);
 
     /// Replaces the slots with `count` slots of zeros.
     void assign_slots(std::size_t count);
-    /// Slot s's floats.
-    const float* slot(std::size_t s) const { return slots[s].get(); }
+    /// Slot s's floats (read on demand where `lazy` holds it).
+    const float* slot(std::size_t s) const {
+        const float* held = slots[s].get();
+        return held ? held : lazy->get(s);
+    }
     /// Slot s's floats to write: copied first when another ShoreTiles shares the slot.
     float* slot_for_writing(std::size_t s);
+    /// Reads every slot that `lazy` holds and has not read yet; the first error, if any.
+    Status read_all() const;
+    /// The first error of a slot read on demand; ok when none failed (or none is lazy).
+    Status status() const { return lazy ? lazy->status() : Status(); }
     /// Every slot's floats, slot after slot (tests and checks).
     std::vector<float> floats() const;
     /// Floats a slot holds.
@@ -125,7 +139,7 @@ struct ShoreTiles {
                                        static_cast<std::size_t>(ti)];
         const std::size_t local =
             static_cast<std::size_t>(j - tj * kTile) * kSide + static_cast<std::size_t>(i - ti * kTile);
-        return slots[slot].get() + local * stride;
+        return this->slot(slot) + local * stride;
     }
     /// The floats of texel (i, j), 0 <= i, j < resolution, from the slot of its tile.
     const float* texel(int i, int j) const { return cell(i, j); }

@@ -22,7 +22,8 @@
 // not need 2 m texels for its phase).
 // Internal: hosts get a model through bake_scene (scene_bake.hpp) and use it through
 // WaterBody::shore(); the raw grids are for the renderer, saved bakes and tests.
-// Threading: immutable after bake; share it freely.
+// Threading: immutable after bake (a saved bake's tiles are read on demand behind
+// locks: lazy_shore_slots.hpp); share it freely.
 #pragma once
 
 #include <functional>
@@ -134,6 +135,13 @@ class ShoreWaves {
     std::uint64_t device_bytes() const;
     /// Tiles stored, over every layer (the shared one's and every run's).
     std::size_t stored_tiles() const;
+    /// A saved bake's model reads its tiles on demand (lazy_shore_slots.hpp): this reads
+    /// every one not read yet, in parallel, and returns the first that could not be read
+    /// or does not fit the terrain. Ok at once for a model made in memory.
+    Status read_all() const;
+    /// The first tile read on demand that failed (its file and why); ok while none has.
+    /// Queries, the renderer and saves check it after reading the model.
+    Status status() const;
 
   private:
     using Layers = std::vector<ShoreWaveLayer>;
