@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "../baked_scene.hpp"
@@ -262,6 +263,50 @@ TEST(ShoreBakeFolder, ALoadedBakeReadsItsTilesWhenNeeded) {
     auto after_save = load();
     ASSERT_TRUE(after_save.ok());
     EXPECT_TRUE((*after_save)->read_all().ok());
+}
+
+TEST(ShoreBakeFolder, ThreadsReadingTheSameTilesAtOnceGetTheSameAnswers) {
+    TempDir dir;
+    auto scene = test::baked(parse_scene(kIslandScene, "island"));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ShoreBakeContents contents;
+    contents.model = scene->ocean.shore().get();
+    contents.waves = &scene->ocean.waves();
+    const fs::path folder = dir.path / "bake";
+    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    auto eager = load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain);
+    auto lazy = load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain);
+    ASSERT_TRUE(eager.ok() && lazy.ok());
+    ASSERT_TRUE((*eager)->read_all().ok());
+    auto eager_body = scene->ocean.with_shore(*eager), lazy_body = scene->ocean.with_shore(*lazy);
+    ASSERT_TRUE(eager_body.ok() && lazy_body.ok());
+    // Every thread walks the whole island in its own order: they reach the same unread
+    // tiles at about the same time.
+    constexpr int kThreads = 4;
+    std::vector<std::vector<glm::dvec2>> points(kThreads);
+    for (int t = 0; t < kThreads; ++t)
+        for (int k = 0; k < 2000; ++k) {
+            const int q = (k * (2 * t + 1)) % 2000;
+            points[t].push_back({-450.0 + (q % 50) * 18.0, -450.0 + (q / 50) * 22.5});
+        }
+    std::vector<std::vector<double>> got(kThreads), want(kThreads);
+    std::vector<Status> status(kThreads);
+    std::vector<std::thread> workers;
+    for (int t = 0; t < kThreads; ++t)
+        workers.emplace_back([&, t] {
+            got[t].resize(points[t].size());
+            QueryOptions options;
+            options.threads = 2;
+            status[t] = query_heights(*lazy_body, 1.5, points[t], got[t], options);
+        });
+    for (auto& w : workers) w.join();
+    for (int t = 0; t < kThreads; ++t) {
+        ASSERT_TRUE(status[t].ok()) << status[t].error().message;
+        want[t].resize(points[t].size());
+        ASSERT_TRUE(query_heights(*eager_body, 1.5, points[t], want[t]).ok());
+        EXPECT_EQ(got[t], want[t]) << "thread " << t;
+    }
+    EXPECT_EQ(slots_read(**lazy).first, slots_read(**lazy).second);  // each read once, every one reached
 }
 
 TEST(ShoreBakeFolder, ModelFromFieldsChecksSizesAndValues) {
