@@ -115,10 +115,12 @@ bool ShoreBuffers::holds(const Models& models) const {
     return true;
 }
 
-bool ShoreBuffers::rewrite_in_place(const Models& models) {
-    if (!per_wave_.handle() || stride_ != 1 || models.size() != uploaded_.size()) return false;
+bool ShoreBuffers::rewrite_in_place(const Models& models, const std::vector<const ShoreWaves*>& drawn, int stride) {
+    if (!per_wave_.handle() || stride != stride_ || models.size() != uploaded_.size()) return false;
+    // What each placement drew: the model uploaded, or its coarsening over the budget.
+    auto drawn_before = [&](std::size_t m) { return stride_ > 1 ? coarse_[m].get() : uploaded_[m].get(); };
     for (std::size_t m = 0; m < models.size(); ++m) {
-        const ShoreWaves *now = wanted(models[m]), *then = uploaded_[m].get();
+        const ShoreWaves *now = drawn[m], *then = drawn_before(m);
         if ((now == nullptr) != (then == nullptr) || (now && !same_layout(*then, *now))) return false;
     }
     // The slots the new models do not share with the uploaded ones, written where they are.
@@ -134,14 +136,14 @@ bool ShoreBuffers::rewrite_in_place(const Models& models) {
         }
     };
     for (std::size_t m = 0; m < models.size(); ++m) {
-        const ShoreWaves *now = wanted(models[m]), *then = uploaded_[m].get();
+        const ShoreWaves *now = drawn[m], *then = drawn_before(m);
         if (!now) continue;
         const ShorePlacement& place = placements_[m];
         rewrite(then->shared(), now->shared(), true, shared_, place.shared);
         for (std::size_t l = 0; l < now->layers().size(); ++l)
             rewrite(then->layers()[l].tiles, now->layers()[l].tiles, false, per_wave_,
                     layer_records_[place.layers + l].waves.w);
-        placements_[m].model = now;
+        placements_[m].model = wanted(models[m]);
         uploaded_[m] = models[m];
     }
     rewritten_bytes_ = written;
@@ -158,21 +160,30 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     for (const auto& m : models)
         if (m)
             if (auto st = m->read_all(); !st) return st.error();
-    // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
-    if (max_bytes == max_bytes_ && rewrite_in_place(models)) return false;
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
     // Over the budget, every k-th texel of each model (the smallest k that fits, at most
-    // 64), sized from the tiles' pages before anything is coarsened.
+    // 64), sized from the tiles' pages before anything is coarsened. A model re-baked from
+    // the one drawn is coarsened sharing the drawn coarsening's tiles away from its edit.
     int stride = 1;
     while (packed_shore_bytes(wanted_models, stride) > max_bytes && stride < 64) ++stride;
     Models coarse;
     std::vector<const ShoreWaves*> drawn = wanted_models;
     if (stride > 1)
         for (std::size_t m = 0; m < drawn.size(); ++m) {
-            coarse.push_back(wanted_models[m] ? wanted_models[m]->coarsened(stride) : nullptr);
+            const bool from_drawn =
+                stride == stride_ && m < uploaded_.size() && m < coarse_.size() && uploaded_[m] && coarse_[m];
+            coarse.push_back(wanted_models[m]
+                                 ? wanted_models[m]->coarsened(stride, from_drawn ? uploaded_[m].get() : nullptr,
+                                                               from_drawn ? coarse_[m].get() : nullptr)
+                                 : nullptr);
             drawn[m] = coarse.back().get();
         }
+    // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
+    if (max_bytes == max_bytes_ && rewrite_in_place(models, drawn, stride)) {
+        coarse_ = std::move(coarse);
+        return false;
+    }
     std::vector<ShorePlacement> placements;
     const PackedShore packed = pack_shores(drawn, placements, wanted_models);
     // The offsets are 32-bit element indices in the shaders.

@@ -64,9 +64,9 @@ class ShoreBuffers {
     /// True when `models` are what the buffers hold already (no upload needed).
     bool holds(const Models& models) const;
     /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
-    /// Models laid out as the ones uploaded (the same grids, pages and slot counts, drawn
-    /// at full resolution: a re-bake after an edit) are written in place, only the slots
-    /// they do not share with them. Returns true when the buffers were replaced and
+    /// Models laid out as the ones uploaded (the same grids, pages and slot counts: a
+    /// re-bake after an edit) are written in place, only the slots they do not share with
+    /// them (over the budget, the coarse slots made from those). Returns true when the buffers were replaced and
     /// descriptors must be rewritten.
     /// The caller makes sure no GPU work still reads the old buffers.
     /// Over `max_bytes` the fields are packed on every k-th texel (the smallest k that
@@ -103,9 +103,10 @@ class ShoreBuffers {
         return shore && !shore->trivial() ? shore.get() : nullptr;
     }
 
-    /// Writes the slots of `models` that differ from the uploaded ones' into the buffers,
-    /// when they are laid out alike; false (nothing written) when not.
-    bool rewrite_in_place(const Models& models);
+    /// Writes the slots of `drawn` (`models` as drawn at `stride`: themselves, or their
+    /// coarsenings) that differ from the ones drawn now into the buffers, when they are
+    /// laid out alike; false (nothing written) when not.
+    bool rewrite_in_place(const Models& models, const std::vector<const ShoreWaves*>& drawn, int stride);
 
     GpuBuffer per_wave_, shared_, pages_, layers_;
     int stride_ = 1;

@@ -102,20 +102,43 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
 }
 
 /// `fine` on every `stride`-th texel of its grid: the pages (coarse_pages), each stored
-/// slot's texels copied from the fine texel under it, and the constant slots.
-ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const glm::dvec2> open) {
+/// slot's texels copied from the fine texel under it, and the constant slots. With
+/// `before` (`before.fine` coarsened at this stride into `before.coarse`, laid out as
+/// these), a coarse slot whose every texel comes from a fine slot `fine` shares with
+/// `before.fine` is `before.coarse`'s, shared, not made again.
+struct CoarseningBefore {
+    const ShoreTiles *fine = nullptr, *coarse = nullptr;
+};
+ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const glm::dvec2> open,
+                           CoarseningBefore before = {}) {
     ShoreTiles c = coarse_pages(fine, stride);
     const std::size_t floats = c.stride;
-    c.assign_slots(slots_named(c));
-    fill_constant_slots(c, open);
+    const bool reuse = before.fine && before.coarse && before.fine->pages == fine.pages &&
+                       before.fine->stride == fine.stride && before.coarse->pages == c.pages;
+    if (reuse) {
+        c.slots = before.coarse->slots;
+    } else {
+        c.assign_slots(slots_named(c));
+        fill_constant_slots(c, open);
+    }
     const auto packed = static_cast<std::size_t>(c.resolution);
+    auto source = [&](const ShoreTiles& t, std::size_t g) {
+        return t.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
+    };
     detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
         const std::uint32_t slot = c.pages[tile];
         if (slot < gpu::kShoreFirstStoredSlot) return;
+        if (reuse) {
+            bool shared = true;
+            for (std::size_t s = 0; s < ShoreTiles::kSlotTexels && shared; ++s) {
+                const std::size_t g = c.grid_index(tile, s);
+                shared = source(fine, g) == source(*before.fine, g);
+            }
+            if (shared) return;
+        }
         float* out = c.slot_for_writing(slot);
         for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
-            const std::size_t g = c.grid_index(tile, s);
-            const float* in = fine.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
+            const float* in = source(fine, c.grid_index(tile, s));
             std::copy(in, in + floats, out + s * floats);
         }
     });
@@ -222,15 +245,27 @@ std::shared_ptr<ShoreWaves> ShoreWaves::made(const ShoreGrid& grid, ShoreTiles s
     return out;
 }
 
-std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride) const {
+std::shared_ptr<const ShoreWaves> ShoreWaves::coarsened(int stride, const ShoreWaves* before,
+                                                        const ShoreWaves* before_coarse) const {
     if (stride <= 1) return made(grid_, shared_, layers_, open_wavevectors_);
+    const bool reuse = before && before_coarse && before->layers_->size() == layers_->size() &&
+                       before_coarse->layers_->size() == layers_->size() && before->grid_ == grid_;
     auto layers = std::make_shared<Layers>();
-    for (const ShoreWaveLayer& l : *layers_)
-        layers->push_back({coarsened_grid(l.grid, stride), l.first, l.count,
-                           coarsened_tiles(l.tiles, stride,
-                                           std::span<const glm::dvec2>(open_wavevectors_).subspan(l.first, l.count))});
-    return made(coarsened_grid(grid_, stride), coarsened_tiles(shared_, stride, {}), std::move(layers),
-                open_wavevectors_);
+    for (std::size_t k = 0; k < layers_->size(); ++k) {
+        const ShoreWaveLayer& l = (*layers_)[k];
+        const bool same_run = reuse && (*before->layers_)[k].grid == l.grid && (*before->layers_)[k].count == l.count;
+        layers->push_back(
+            {coarsened_grid(l.grid, stride), l.first, l.count,
+             coarsened_tiles(l.tiles, stride, std::span<const glm::dvec2>(open_wavevectors_).subspan(l.first, l.count),
+                             same_run
+                                 ? CoarseningBefore{&(*before->layers_)[k].tiles, &(*before_coarse->layers_)[k].tiles}
+                                 : CoarseningBefore{})});
+    }
+    return made(
+        coarsened_grid(grid_, stride),
+        coarsened_tiles(shared_, stride, {},
+                        reuse ? CoarseningBefore{&before->shared_, &before_coarse->shared_} : CoarseningBefore{}),
+        std::move(layers), open_wavevectors_);
 }
 
 std::uint64_t ShoreWaves::coarsened_device_bytes(int stride) const {

@@ -99,7 +99,12 @@ class ShoreWaves {
     /// The same model on every `stride`-th texel of each layer (each layer's first texel
     /// centre kept): what a renderer over its memory budget draws. A coarse tile is open sea
     /// (dry land) where every tile its texels come from is; the rest are stored. `stride` 1: a copy.
-    std::shared_ptr<const ShoreWaves> coarsened(int stride) const;
+    /// With `before` and `before_coarse` (another model and its coarsening at this stride,
+    /// laid out as this one: this model re-baked from it after an edit), every coarse tile
+    /// made only from tiles this model shares with `before` is `before_coarse`'s, shared:
+    /// the two coarsenings differ only under the edit.
+    std::shared_ptr<const ShoreWaves> coarsened(int stride, const ShoreWaves* before = nullptr,
+                                                const ShoreWaves* before_coarse = nullptr) const;
     /// What coarsened(stride) takes on the GPU (ShoreTiles::device_bytes), without making it.
     std::uint64_t coarsened_device_bytes(int stride) const;
     /// This model with the still-water depth of shared grid texels [i0, i0 + w) x [j0, j0 + h)
