@@ -116,15 +116,25 @@ TEST(ShoreBakeFolder, RoundTripKeepsTheModelWithinItsEncoding) {
     EXPECT_LT(worst, 5e-3);
 }
 
-TEST(ShoreBakeFolder, RefusesBakesThatDoNotFitAndCorruptFiles) {
+/// The island baked and saved into a temporary folder.
+class SavedIsland : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(scene.ok()) << scene.error().message;
+        contents.model = scene->ocean.shore().get();
+        contents.waves = &scene->ocean.waves();
+        ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+    }
+    Result<std::shared_ptr<const ShoreWaves>> load() const {
+        return load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain);
+    }
     TempDir dir;
-    auto scene = test::baked(parse_scene(kIslandScene, "island"));
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    Result<Scene> scene = test::baked(parse_scene(kIslandScene, "island"));
     ShoreBakeContents contents;
-    contents.model = scene->ocean.shore().get();
-    contents.waves = &scene->ocean.waves();
     const fs::path folder = dir.path / "bake";
-    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
+};
+
+TEST_F(SavedIsland, RefusesBakesThatDoNotFitAndCorruptFiles) {
     // Stored tiles are read on demand: read_all reads them, as set_scene does.
     auto message = [&](const WaveSet& waves, double level, const Terrain& terrain) {
         auto r = load_shore_bake(folder, waves, level, terrain);
@@ -196,16 +206,7 @@ std::pair<std::size_t, std::size_t> slots_read(const ShoreWaves& model) {
     return {read, stored};
 }
 
-TEST(ShoreBakeFolder, ALoadedBakeReadsItsTilesWhenNeeded) {
-    TempDir dir;
-    auto scene = test::baked(parse_scene(kIslandScene, "island"));
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    ShoreBakeContents contents;
-    contents.model = scene->ocean.shore().get();
-    contents.waves = &scene->ocean.waves();
-    const fs::path folder = dir.path / "bake";
-    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
-    auto load = [&] { return load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain); };
+TEST_F(SavedIsland, ALoadedBakeReadsItsTilesWhenNeeded) {
     auto lazy = load();
     ASSERT_TRUE(lazy.ok()) << lazy.error().message;
     const auto [read_at_load, stored] = slots_read(**lazy);
@@ -265,17 +266,8 @@ TEST(ShoreBakeFolder, ALoadedBakeReadsItsTilesWhenNeeded) {
     EXPECT_TRUE((*after_save)->read_all().ok());
 }
 
-TEST(ShoreBakeFolder, ThreadsReadingTheSameTilesAtOnceGetTheSameAnswers) {
-    TempDir dir;
-    auto scene = test::baked(parse_scene(kIslandScene, "island"));
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    ShoreBakeContents contents;
-    contents.model = scene->ocean.shore().get();
-    contents.waves = &scene->ocean.waves();
-    const fs::path folder = dir.path / "bake";
-    ASSERT_TRUE(save_shore_bake(folder, contents).ok());
-    auto eager = load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain);
-    auto lazy = load_shore_bake(folder, scene->ocean.waves(), 0.0, scene->terrain);
+TEST_F(SavedIsland, ThreadsReadingTheSameTilesAtOnceGetTheSameAnswers) {
+    auto eager = load(), lazy = load();
     ASSERT_TRUE(eager.ok() && lazy.ok());
     ASSERT_TRUE((*eager)->read_all().ok());
     auto eager_body = scene->ocean.with_shore(*eager), lazy_body = scene->ocean.with_shore(*lazy);

@@ -3,6 +3,7 @@
 // a fresh upload of it would, value for value.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "../baked_scene.hpp"
@@ -20,7 +21,19 @@ using render::detail::ShoreBuffers;
 class ShoreBuffersTest : public test::VulkanTest {
   protected:
     void release() override { buffers_.reset(); }
+    /// The device, and the tiled coast's shore model (its waves in runs on coarser grids).
+    void load_coast() {
+        auto device = render::detail::load_device(context());
+        ASSERT_TRUE(device.ok()) << device.error().message;
+        device_ = std::move(device).value();
+        auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
+        ASSERT_TRUE(scene.ok()) << scene.error().message;
+        model_ = scene->ocean.shore();
+        ASSERT_NE(model_, nullptr);
+    }
     std::unique_ptr<ShoreBuffers> buffers_;
+    std::optional<render::detail::Device> device_;
+    std::shared_ptr<const ShoreWaves> model_;
 };
 
 bool same_values(std::span<const glm::vec4> a, const std::vector<glm::vec4>& b) {
@@ -43,12 +56,9 @@ std::shared_ptr<const ShoreWaves> edit_first_stored_tile(const ShoreWaves& model
 }
 
 TEST_F(ShoreBuffersTest, AnEditedModelIsWrittenInPlace) {
-    auto device = render::detail::load_device(context());
-    ASSERT_TRUE(device.ok()) << device.error().message;
-    auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    const auto model = scene->ocean.shore();
-    ASSERT_NE(model, nullptr);
+    ASSERT_NO_FATAL_FAILURE(load_coast());
+    const auto& model = model_;
+    const render::detail::Device* device = &*device_;
     buffers_ = std::make_unique<ShoreBuffers>();
     auto first = buffers_->upload(*device, model);
     ASSERT_TRUE(first.ok()) << first.error().message;
@@ -87,12 +97,9 @@ TEST_F(ShoreBuffersTest, AnEditedModelIsWrittenInPlace) {
 }
 
 TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
-    auto device = render::detail::load_device(context());
-    ASSERT_TRUE(device.ok()) << device.error().message;
-    auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    const auto model = scene->ocean.shore();
-    ASSERT_NE(model, nullptr);
+    ASSERT_NO_FATAL_FAILURE(load_coast());
+    const auto& model = model_;
+    const render::detail::Device* device = &*device_;
     // A third of what the model takes: drawn from every k-th texel.
     const std::uint64_t budget = model->device_bytes() / 3;
     buffers_ = std::make_unique<ShoreBuffers>();
