@@ -18,9 +18,17 @@ std::uint16_t height_code(float height, double lowest, double highest) {
         std::lround((static_cast<double>(height) - lowest) * (65535.0 / (highest - lowest))));
 }
 
-/// The terrain's height at texel (i, j) of a texture whose first texel centre is `first`.
-float texel_height(const Terrain& terrain, glm::dvec2 first, glm::dvec2 texel, std::uint32_t i, std::size_t j) {
-    return static_cast<float>(terrain.height_at(first + glm::dvec2(i, static_cast<double>(j)) * texel));
+/// The terrain's height at texel (i, j) of the texture `grid` (its size, first texel centre
+/// and texel). Where the texels are a heightmap's pixels and nothing is cut into it, the
+/// pixel's own height: what Terrain::height_at gives at its centre, without the search.
+float texel_height(const Terrain& terrain, const TerrainHeights& grid, std::uint32_t i, std::size_t j) {
+    const auto* map = std::get_if<HeightmapTerrain>(&terrain.shape());
+    if (map && terrain.cuts().empty() && grid.width == static_cast<std::uint32_t>(map->image->width) &&
+        grid.height == static_cast<std::uint32_t>(map->image->height)) {
+        const double raw = map->image->pixels[j * grid.width + i];
+        return static_cast<float>(map->min_height + (map->max_height - map->min_height) * raw / 65535.0);
+    }
+    return static_cast<float>(terrain.height_at(grid.first + glm::dvec2(i, static_cast<double>(j)) * grid.texel));
 }
 
 }  // namespace
@@ -75,7 +83,7 @@ TerrainHeights sample_terrain_heights(const Terrain& terrain, std::uint64_t max_
     tidewater::detail::parallel_chunks(t.height, 8, 0, [&](std::size_t begin, std::size_t end) {
         for (std::size_t j = begin; j < end; ++j)
             for (std::uint32_t i = 0; i < t.width; ++i)
-                heights[j * t.width + i] = texel_height(terrain, first, t.texel, i, j);
+                heights[j * t.width + i] = texel_height(terrain, t, i, j);
     });
     const auto [lo, hi] = std::minmax_element(heights.begin(), heights.end());
     t.lowest = static_cast<double>(*lo);
@@ -108,7 +116,7 @@ std::optional<HeightTexturePatch> height_texture_patch(const TerrainHeights& sam
     patch.texels.resize(static_cast<std::size_t>(patch.width) * patch.height);
     for (std::uint32_t j = 0; j < patch.height; ++j)
         for (std::uint32_t i = 0; i < patch.width; ++i) {
-            const float h = texel_height(after, sampled.first, sampled.texel, patch.i0 + i, patch.j0 + j);
+            const float h = texel_height(after, sampled, patch.i0 + i, patch.j0 + j);
             // Beyond the texture's range the whole texture is encoded anew.
             if (!(static_cast<double>(h) >= sampled.lowest && static_cast<double>(h) <= sampled.highest))
                 return std::nullopt;
