@@ -82,8 +82,7 @@ TerrainHeights sample_terrain_heights(const Terrain& terrain, std::uint64_t max_
     std::vector<float> heights(static_cast<std::size_t>(t.width) * t.height);
     tidewater::detail::parallel_chunks(t.height, 8, 0, [&](std::size_t begin, std::size_t end) {
         for (std::size_t j = begin; j < end; ++j)
-            for (std::uint32_t i = 0; i < t.width; ++i)
-                heights[j * t.width + i] = texel_height(terrain, t, i, j);
+            for (std::uint32_t i = 0; i < t.width; ++i) heights[j * t.width + i] = texel_height(terrain, t, i, j);
     });
     const auto [lo, hi] = std::minmax_element(heights.begin(), heights.end());
     t.lowest = static_cast<double>(*lo);
