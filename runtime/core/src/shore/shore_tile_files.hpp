@@ -58,9 +58,9 @@ std::string shore_depth_misfit(double depth, glm::dvec2 p, std::uint32_t page, d
 
 class ShoreTileFiles final : public ShoreSlotSource {
   public:
-    /// The stored tiles of a layer of `tiles_per_side`² tiles and `rows.size()` field rows in
-    /// folder `layer` of bake `folder`: `stored[s]` is the tile (rows along +z) of slot
-    /// kShoreFirstStoredSlot + s.
+    /// The stored tiles of a layer on a grid of `resolution`² texels with `rows.size()` field
+    /// rows, in folder `layer` of bake `folder`: `stored[s]` is the tile (rows along +z) of
+    /// slot kShoreFirstStoredSlot + s.
     ShoreTileFiles(std::shared_ptr<const OpenBakeFolder> folder, std::string layer, int resolution,
                    std::vector<std::size_t> stored, std::vector<detail::FieldEncoding> rows,
                    std::optional<ShoreDepthCheck> depth_check);
