@@ -56,13 +56,19 @@ TW_CONST float kShoreFarValue = 1.0e9f;  // m
 // The model keeps its fields in layers, each a grid of such tiles: the shared fields
 // (depth, breaking, steepness scale, shore distance) at the model's texel, and the
 // waves in runs of consecutive waves, each run at the texel its shortest wave needs
-// (a power of two times the model's). At most kShoreMaxLayers runs; the runs of one
-// model lie one after another in shore_layers[] and cover its waves in order.
+// (a power of two times the model's). At most kShoreMaxLayers runs. A model's records
+// lie one after another in shore_layers[]: its shared fields', then its runs' in order.
+// Over the renderer's memory budget a layer's tiles are streamed: a page naming
+// kShoreNotResident sends the tap to the layer's coarse grid (every k-th texel, always
+// resident); elsewhere the coarse grid is the layer's own and no page names it.
 TW_CONST uint kShoreMaxLayers = 4u;
+TW_CONST uint kShoreNotResident = 0xffffffffu;
 struct GpuShoreLayer {
-    vec4 grid;    // xy: its grid's outer corner from the shared grid's (m); z: texel (m); w: resolution (texels a side)
-    uvec4 waves;  // x: first wave of the run; y: its wave count; z: its first page in shore_pages[];
-                  // w: its first element in shore_waves[]
+    vec4 grid;    // xy: its grid's outer corner from the model's shared grid's (m); z: texel (m); w: resolution (texels a side)
+    uvec4 waves;  // x: first wave of the run; y: its wave count (0: the shared fields); z: its first page in
+                  // shore_pages[]; w: its slot 0's first element in shore_waves[] (shore_shared[]: the shared fields)
+    vec4 coarse_grid;  // the grid read where a page names kShoreNotResident, as `grid`
+    uvec4 coarse;      // x: that grid's first page in shore_pages[]; y: its slot 0's first element; zw: 0
 };
 
 // A river's fields as the water evaluation samples them: kRiverQueryStride floats per
@@ -311,7 +317,7 @@ struct GpuBodyDraw {
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
     // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
     vec4 shore;       // xy: its shared grid's corner relative to O (m); z: texel (m); w: resolution (0 = none)
-    uvec4 shore_base; // x: its first wave run in shore_layers[]; y: its first element in shore_shared[]; z: its shared grid's first page in shore_pages[]
+    uvec4 shore_base; // x: its first record (the shared fields') in shore_layers[]; yzw: 0
     // The ocean's or a lake's ripples (tidewater::RippleField):
     vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
     vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)

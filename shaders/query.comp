@@ -27,8 +27,6 @@ layout(std430, set = kQuerySet, binding = eQueryRiverWaves) readonly buffer Rive
 layout(std430, set = kQuerySet, binding = eQueryWakePoints) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };
 layout(push_constant) uniform Push { GpuQueryParams params; };
 
-#define SHORE_RESOLUTION params.shore_resolution
-#define SHORE_TEXEL params.shore_texel
 #define WAVE_COUNT params.wave_count
 #define WAVE_BASE_PHASE(i) base_phase[g_point.cell * params.wave_count + (i)]
 #define RIVER_NX params.river_nx

@@ -9,11 +9,7 @@
 #include "water_lod.glsl"
 #include "water_draw.glsl"
 uint g_wave_first = 0u, g_wave_count = 0u;
-#define SHORE_RESOLUTION uint(g_draw.shore.w)
-#define SHORE_TEXEL g_draw.shore.z
 #define SHORE_LAYER_BASE g_draw.shore_base.x
-#define SHORE_SHARED_BASE g_draw.shore_base.y
-#define SHORE_PAGE_BASE g_draw.shore_base.z
 #define WAVE_FIRST g_wave_first
 #define WAVE_COUNT g_wave_count
 #define WAVE_BASE_PHASE(i) waves[WAVE_FIRST + (i)].steep_omega.z

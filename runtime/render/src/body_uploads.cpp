@@ -130,7 +130,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         const ShorePlacement p = shores.placement(slot);
         if (!p.model) return;
         d.shore = glm::vec4(rel(p.corner, origin), static_cast<float>(p.texel), static_cast<float>(p.resolution));
-        d.shore_base = glm::uvec4(p.layers, p.shared, p.pages, 0u);
+        d.shore_base = glm::uvec4(p.layers, 0u, 0u, 0u);
     };
     const std::size_t ocean_draws = scene.has_ocean ? 1 + plan.ocean_rings.size() : 0;
     const float first_river = static_cast<float>(ocean_draws + scene.lakes.size());

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -111,6 +112,7 @@ struct Renderer::Impl {
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
         GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices, terrain_nodes;
+        GpuBuffer shore_pages;  // the shore pages as this frame reads them (tiles stream between frames)
         std::vector<detail::FloatUpload::Draw> float_draws;             // this frame's, into float_vertices
         std::array<std::uint32_t, 5> terrain_first{}, terrain_count{};  // this frame's, into terrain_nodes
         VkDescriptorSet set = VK_NULL_HANDLE;
@@ -126,6 +128,7 @@ struct Renderer::Impl {
     std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
     std::uint64_t last_upload_bytes = 0;                                  // written by the last set_scene
     std::uint64_t shore_written = 0;                                      // by the last use_shores
+    std::uint64_t shore_streamed = 0;                                     // by the last frame recorded
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -157,7 +160,7 @@ struct Renderer::Impl {
     };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
     Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
-    void upload(Slot& slot, Planned& planned, bool scene_copy);
+    Status upload(Slot& slot, Planned& planned, bool scene_copy);
     Slot& take_slot(std::uint64_t frame_index);
     Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
                         detail::FramePlan& plan);
@@ -238,7 +241,7 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     r[gpu::eFrameSceneDepth] = bound_texture(pipelines.nearest.get(), copies.depth_view(with_scene_copy));
     r[gpu::eFrameShoreWaves] = bound_buffer(shore.per_wave());
     r[gpu::eFrameShoreShared] = bound_buffer(shore.shared());
-    r[gpu::eFrameShorePages] = bound_buffer(shore.pages());
+    r[gpu::eFrameShorePages] = bound_buffer(slot.shore_pages.handle());
     r[gpu::eFrameShoreLayers] = bound_buffer(shore.layers());
     r[gpu::eFrameBodyDraws] = bound_buffer(slot.draws.handle());
     r[gpu::eFrameRiverTexels] = bound_buffer(bodies.river_texels.handle());
@@ -309,7 +312,15 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
 }
 
 // The plan into the slot's mapped buffers and its descriptor set.
-void Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
+Status Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
+    // The shore pages as they are now: tiles streamed in since the slot's last frame.
+    const std::span<const std::uint32_t> pages = shore.pages_now();
+    if (!slot.shore_pages.handle() || slot.shore_pages.size() < pages.size_bytes()) {
+        auto made = GpuBuffer::create(ctx(), pages.size_bytes(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!made) return made.error();
+        slot.shore_pages = std::move(made).value();
+    }
+    std::memcpy(slot.shore_pages.mapped(), pages.data(), pages.size_bytes());
     detail::write_wake_buffer(p.wakes, slot.wake_points.mapped());
     if (!p.floats.vertices.empty())
         std::memcpy(slot.float_vertices.mapped(), p.floats.vertices.data(),
@@ -337,6 +348,7 @@ void Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
         std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(),
                     sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
     write_descriptors(slot, scene_copy);
+    return {};
 }
 
 Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
@@ -345,7 +357,10 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     slot = &take_slot(frame.frame_index);
     auto planned = plan_frame(frame, extent, scene_copy);
     if (!planned) return planned.error();
-    upload(*slot, *planned, scene_copy);
+    // Over the budget, the full-resolution shore tiles nearest the camera come in.
+    shore_streamed = shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z), frame.frame_index,
+                                  static_cast<std::uint32_t>(slots.size()));
+    if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
     plan = std::move(planned->plan);
     return {};
 }
@@ -713,6 +728,9 @@ RendererStats Renderer::stats() const {
     s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
     s.shore_bytes = impl_->shore.bytes();
     s.shore_stride = static_cast<std::uint32_t>(impl_->shore.stride());
+    s.shore_streamed_tiles = impl_->shore.streamed_tiles();
+    s.shore_streamable_tiles = impl_->shore.streamable_tiles();
+    s.shore_streamed_bytes = impl_->shore_streamed;
     s.scene_upload_bytes = impl_->last_upload_bytes;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());

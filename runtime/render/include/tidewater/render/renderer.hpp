@@ -92,8 +92,11 @@ struct RendererInitInfo {
     std::uint32_t frames_in_flight = 2;  ///< 1 to 4.
     /// Device memory the scene's data may take, bytes (at least 16 MiB). The terrain's
     /// height texture takes at most half, the shore models' fields what it leaves: over
-    /// their share they are drawn from every k-th pixel or texel, never refused for memory
-    /// (RendererStats::terrain_bytes, shore_bytes and shore_stride say what they took).
+    /// their share the height texture is drawn from every k-th pixel, and the shore fields
+    /// from every k-th texel with their full-resolution tiles nearest the camera streamed
+    /// over them as frames are recorded (a bounded number of bytes per frame), never
+    /// refused for memory (RendererStats::terrain_bytes, shore_bytes, shore_stride and
+    /// shore_streamed_tiles say what they took).
     std::uint64_t gpu_memory_budget = std::uint64_t{1} << 30;
     bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;  ///< Copied; default: silent.
@@ -157,7 +160,14 @@ struct RendererStats {
     std::uint64_t terrain_triangles = 0;  ///< Drawn by the last frame recorded.
     std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
     std::uint64_t shore_bytes = 0;        ///< Resident: the shore models' fields.
-    std::uint32_t shore_stride = 1;       ///< The shore fields are drawn from every k-th texel (1: all).
+    /// The shore fields' coarse level is every k-th texel (1: the models' own grids, all resident).
+    std::uint32_t shore_stride = 1;
+    /// Over the budget (shore_stride > 1): the full-resolution shore tiles drawn over the
+    /// coarse level now (those nearest the camera), of the tiles that could be; and the
+    /// bytes of them the last frame recorded brought in.
+    std::uint64_t shore_streamed_tiles = 0;
+    std::uint64_t shore_streamable_tiles = 0;
+    std::uint64_t shore_streamed_bytes = 0;
     /// Bytes of height texture and shore fields the last set_scene wrote to the device: a
     /// scene re-baked after an edit of the one drawn writes only the texels and shore tiles
     /// the edit changed.
