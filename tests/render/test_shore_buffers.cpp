@@ -2,6 +2,9 @@
 // the one uploaded is written in place, those slots alone, and the buffers then hold what
 // a fresh upload of it would, value for value.
 #include <algorithm>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <span>
 #include <cstdio>
 #include <optional>
 #include <vector>
@@ -130,6 +133,130 @@ TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
     const auto old_coarse = model->coarsened(stride);
     EXPECT_FALSE(
         same_values(buffers_->shared_values(), render::detail::pack_shores({old_coarse.get()}, placements).shared));
+}
+
+/// Layer `layer`'s pool slot behind page `page` in `values` (the buffer it packs to).
+std::span<const glm::vec4> pool_slot(std::span<const glm::vec4> values, const render::detail::StreamedLayer& layer,
+                                     std::uint32_t page) {
+    const std::size_t per_slot = render::detail::packed_slot_vec4s(*layer.tiles, layer.shared);
+    return values.subspan(layer.first_element + page * per_slot, per_slot);
+}
+
+/// Squared distance from `camera` to the centre of tile `t` of `layer`.
+double tile_distance2(const render::detail::StreamedLayer& layer, std::size_t t, glm::dvec2 camera) {
+    const double side = ShoreTiles::kTile * layer.grid.texel;
+    const auto per_side = static_cast<std::size_t>(layer.tiles->tiles_per_side);
+    const glm::dvec2 centre = layer.grid.corner + side * glm::dvec2(static_cast<double>(t % per_side) + 0.5,
+                                                                    static_cast<double>(t / per_side) + 0.5);
+    return glm::dot(centre - camera, centre - camera);
+}
+
+// Over the budget the coarse level is resident and the full-resolution tiles nearest the
+// camera stream in, a bounded number of bytes per frame. Checked frame after frame: each
+// resident tile's pool slot holds that tile's values exactly; no slot a frame still in
+// flight reads is written; once streaming settles, the resident tiles of each layer are
+// its nearest; a camera moved elsewhere brings its own tiles in.
+TEST_F(ShoreBuffersTest, TilesNearTheCameraStreamInAtFullResolution) {
+    ASSERT_NO_FATAL_FAILURE(load_coast());
+    const render::detail::Device* device = &*device_;
+    buffers_ = std::make_unique<ShoreBuffers>();
+    const std::uint64_t budget = model_->device_bytes() / 3;
+    auto first = buffers_->upload(*device, ShoreBuffers::Models{model_}, budget);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    ASSERT_GT(buffers_->stride(), 1);
+    EXPECT_LE(buffers_->bytes(), budget + budget / 20);
+    EXPECT_EQ(buffers_->streamed_tiles(), 0u);
+    const auto& layers = buffers_->streaming().layers();
+    ASSERT_EQ(layers.size(), 1 + model_->layers().size());
+    for (const auto& layer : layers)
+        for (std::size_t t = 0; t < layer.tiles->pages.size(); ++t)
+            ASSERT_EQ(buffers_->pages_now()[layer.first_page + t],
+                      layer.tiles->pages[t] < gpu::kShoreFirstStoredSlot ? layer.tiles->pages[t]
+                                                                           : gpu::kShoreNotResident);
+
+    // A frame brings at most one slot of the largest layer past the bound.
+    std::size_t largest_slot = 0;
+    for (const auto& layer : layers)
+        largest_slot = std::max(largest_slot, render::detail::packed_slot_vec4s(*layer.tiles, layer.shared) *
+                                                  sizeof(glm::vec4));
+    const std::uint64_t per_frame = 3 * largest_slot;
+    constexpr std::uint32_t kInFlight = 2;
+    std::vector<std::uint32_t> pages_before(buffers_->pages_now().begin(), buffers_->pages_now().end());
+    std::vector<glm::vec4> shared_before(buffers_->shared_values().begin(), buffers_->shared_values().end());
+    std::vector<glm::vec4> waves_before(buffers_->per_wave_values().begin(), buffers_->per_wave_values().end());
+    std::uint64_t frame = 0;
+    auto stream_until_settled = [&](glm::dvec2 camera) {
+        for (int settled = 0; settled < int(kInFlight) + 1; ++frame) {
+            ASSERT_LT(frame, 10000u) << "streaming does not settle";
+            const std::uint64_t written = buffers_->stream(camera, frame, kInFlight, per_frame);
+            EXPECT_LE(written, per_frame + largest_slot);
+            settled = written == 0 ? settled + 1 : 0;
+            const auto pages = buffers_->pages_now();
+            for (const auto& layer : layers)
+                for (std::size_t t = 0; t < layer.tiles->pages.size(); ++t) {
+                    const std::uint32_t before = pages_before[layer.first_page + t],
+                                        now = pages[layer.first_page + t];
+                    // The previous frame, maybe still in flight, reads its slots unchanged.
+                    const auto values = layer.shared ? buffers_->shared_values() : buffers_->per_wave_values();
+                    if (before >= gpu::kShoreFirstStoredSlot && before != gpu::kShoreNotResident) {
+                        const auto then = pool_slot(layer.shared ? shared_before : waves_before, layer, before);
+                        const auto slot = pool_slot(values, layer, before);
+                        ASSERT_TRUE(std::equal(slot.begin(), slot.end(), then.begin()))
+                            << "frame " << frame << " wrote a slot the frame before reads";
+                    }
+                    // A resident tile's slot holds its full-resolution values.
+                    if (now >= gpu::kShoreFirstStoredSlot && now != gpu::kShoreNotResident) {
+                        std::vector<glm::vec4> expected(render::detail::packed_slot_vec4s(*layer.tiles, layer.shared));
+                        render::detail::pack_slot(*layer.tiles, layer.tiles->pages[t], layer.shared, expected.data());
+                        const auto slot = pool_slot(values, layer, now);
+                        ASSERT_TRUE(std::equal(slot.begin(), slot.end(), expected.begin()))
+                            << "tile " << t << " at frame " << frame;
+                    }
+                }
+            pages_before.assign(pages.begin(), pages.end());
+            shared_before.assign(buffers_->shared_values().begin(), buffers_->shared_values().end());
+            waves_before.assign(buffers_->per_wave_values().begin(), buffers_->per_wave_values().end());
+        }
+    };
+    // Each layer's resident tiles are its nearest stored ones, as many as its pool holds.
+    auto expect_nearest_resident = [&](glm::dvec2 camera) {
+        const auto pages = buffers_->pages_now();
+        for (const auto& layer : layers) {
+            double farthest_resident = 0.0, nearest_missing = std::numeric_limits<double>::infinity();
+            std::size_t resident = 0, stored = 0;
+            for (std::size_t t = 0; t < layer.tiles->pages.size(); ++t) {
+                if (layer.tiles->pages[t] < gpu::kShoreFirstStoredSlot) continue;
+                ++stored;
+                const double d2 = tile_distance2(layer, t, camera);
+                if (pages[layer.first_page + t] == gpu::kShoreNotResident)
+                    nearest_missing = std::min(nearest_missing, d2);
+                else
+                    ++resident, farthest_resident = std::max(farthest_resident, d2);
+            }
+            EXPECT_EQ(resident, std::min(stored, layer.pool_slots));
+            EXPECT_LE(farthest_resident, nearest_missing);
+        }
+    };
+    std::size_t pooled = 0;
+    for (const auto& layer : layers) pooled += std::min(layer.pool_slots, layer.tiles->stored_tiles());
+    ASSERT_GT(pooled, 0u);
+    ASSERT_LT(pooled, buffers_->streamable_tiles()) << "the pools hold part of the model";
+
+    const ShoreGrid& grid = model_->grid();
+    const glm::dvec2 west = grid.corner + glm::dvec2(0.1, 0.5) * (grid.texel * grid.resolution);
+    const glm::dvec2 east = grid.corner + glm::dvec2(0.9, 0.5) * (grid.texel * grid.resolution);
+    ASSERT_NO_FATAL_FAILURE(stream_until_settled(west));
+    EXPECT_EQ(buffers_->streamed_tiles(), pooled);
+    expect_nearest_resident(west);
+    const std::uint64_t frames_west = frame;
+    ASSERT_NO_FATAL_FAILURE(stream_until_settled(east));
+    EXPECT_EQ(buffers_->streamed_tiles(), pooled);
+    expect_nearest_resident(east);
+    std::printf("%zu of %zu tiles streamed at full resolution (%d-texel coarse level, %.1f of %.1f MiB); "
+                "%llu frames to settle, %llu to move\n",
+                pooled, buffers_->streamable_tiles(), buffers_->stride(), buffers_->bytes() / 1048576.0,
+                model_->device_bytes() / 1048576.0, static_cast<unsigned long long>(frames_west),
+                static_cast<unsigned long long>(frame - frames_west));
 }
 
 }  // namespace

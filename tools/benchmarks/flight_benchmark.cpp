@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
     const glm::dvec2 from = c - glm::dvec2(0.9 * half), to = c + glm::dvec2(0.9 * half);
     const glm::dvec2 ahead = glm::normalize(to - from) * 400.0;
     std::vector<double> frame_ms;
+    std::uint64_t streamed_bytes = 0, most_streamed = 0;  // full-resolution shore tiles brought in
     render::FrameInfo frame;
     for (int i = 0; i < frames; ++i) {
         const glm::dvec2 at = from + (to - from) * (static_cast<double>(i) / (frames - 1));
@@ -91,6 +92,9 @@ int main(int argc, char** argv) {
         auto image = (*target)->render(**renderer, frame);
         if (!image) return fail(image.error().message);
         frame_ms.push_back(1e3 * seconds_since(t0));
+        const std::uint64_t streamed = (*renderer)->stats().shore_streamed_bytes;
+        streamed_bytes += streamed;
+        most_streamed = std::max(most_streamed, streamed);
     }
     const double median = percentile(frame_ms, 0.5), worst = *std::max_element(frame_ms.begin(), frame_ms.end());
     const render::RendererStats s = (*renderer)->stats();
@@ -98,10 +102,13 @@ int main(int argc, char** argv) {
         "{\"scene\": \"%s\", \"device\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
         "\"budget_mib\": %ld, \"bake_or_load_s\": %.2f, \"set_scene_s\": %.2f, \"first_frame_ms\": %.1f, "
         "\"median_ms\": %.1f, \"p95_ms\": %.1f, \"max_ms\": %.1f, \"max_over_median\": %.2f, "
-        "\"terrain_mib\": %.1f, \"shore_mib\": %.1f, \"shore_stride\": %u}\n",
+        "\"terrain_mib\": %.1f, \"shore_mib\": %.1f, \"shore_stride\": %u, \"shore_tiles_streamed\": %llu, "
+        "\"shore_tiles_streamable\": %llu, \"streamed_mib\": %.1f, \"most_streamed_in_a_frame_mib\": %.2f}\n",
         argv[1], (*device)->device_name().c_str(), width, height, frames, budget_mib, bake_s, set_scene_s,
         frame_ms.front(), median, percentile(frame_ms, 0.95), worst, worst / median,
         static_cast<double>(s.terrain_bytes) / (1 << 20), static_cast<double>(s.shore_bytes) / (1 << 20),
-        s.shore_stride);
+        s.shore_stride, static_cast<unsigned long long>(s.shore_streamed_tiles),
+        static_cast<unsigned long long>(s.shore_streamable_tiles), static_cast<double>(streamed_bytes) / (1 << 20),
+        static_cast<double>(most_streamed) / (1 << 20));
     return 0;
 }

@@ -109,6 +109,8 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                       {"terrain_bytes", s.terrain_bytes},
                       {"shore_bytes", s.shore_bytes},
                       {"shore_stride", s.shore_stride},
+                      {"shore_streamed_tiles", s.shore_streamed_tiles},
+                      {"shore_streamable_tiles", s.shore_streamable_tiles},
                       {"water_patches", s.water_patches},
                       {"waves", s.waves}}},
                     {"units", "milliseconds of GPU time from timestamp queries"}};

@@ -358,8 +358,11 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     auto planned = plan_frame(frame, extent, scene_copy);
     if (!planned) return planned.error();
     // Over the budget, the full-resolution shore tiles nearest the camera come in.
-    shore_streamed = shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z), frame.frame_index,
-                                  static_cast<std::uint32_t>(slots.size()));
+    shore_streamed = info.shore_stream_bytes_per_frame == 0
+                         ? 0
+                         : shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z),
+                                        frame.frame_index, static_cast<std::uint32_t>(slots.size()),
+                                        info.shore_stream_bytes_per_frame);
     if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
     plan = std::move(planned->plan);
     return {};

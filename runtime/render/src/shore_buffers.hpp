@@ -76,9 +76,6 @@ std::uint64_t packed_shore_bytes(const std::vector<const ShoreWaves*>& models, i
 class ShoreBuffers {
   public:
     using Models = std::vector<std::shared_ptr<const ShoreWaves>>;
-    /// Bytes of full-resolution tiles stream() writes in one frame, at most (and at least one tile).
-    static constexpr std::uint64_t kStreamBytesPerFrame = std::uint64_t{8} << 20;
-
     /// True when `models` are what the buffers hold already (no upload needed).
     bool holds(const Models& models) const;
     /// Uploads `models` (null or all-deep ones: no fields) unless they are already there.
@@ -100,7 +97,7 @@ class ShoreBuffers {
     /// slots given up are rewritten only once the `frames_in_flight` frames that could read
     /// them are done. Pages change (pages_now()); the bytes written are returned.
     std::uint64_t stream(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight,
-                         std::uint64_t max_bytes = kStreamBytesPerFrame);
+                         std::uint64_t max_bytes);
 
     /// Bytes of the buffers (resident).
     std::uint64_t bytes() const { return per_wave_.size() + shared_.size() + pages_.size() + layers_.size(); }
@@ -111,6 +108,8 @@ class ShoreBuffers {
     /// Full-resolution tiles drawn over the coarse level now, and the tiles that could be.
     std::size_t streamed_tiles() const { return stream_.resident_tiles(); }
     std::size_t streamable_tiles() const { return stream_.streamable_tiles(); }
+    /// The streamed layers: where their pages and pools lie (tests and checks).
+    const ShoreStream& streaming() const { return stream_; }
 
     /// The first model uploaded (null: none).
     const ShoreWaves* model() const { return placements_.empty() ? nullptr : placements_.front().model; }

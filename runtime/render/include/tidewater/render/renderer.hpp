@@ -98,6 +98,9 @@ struct RendererInitInfo {
     /// refused for memory (RendererStats::terrain_bytes, shore_bytes, shore_stride and
     /// shore_streamed_tiles say what they took).
     std::uint64_t gpu_memory_budget = std::uint64_t{1} << 30;
+    /// Over the budget, bytes of full-resolution shore tiles a frame may bring in, at most
+    /// (at least one tile); 0: none, the coarse level alone is drawn.
+    std::uint64_t shore_stream_bytes_per_frame = std::uint64_t{8} << 20;
     bool wireframe = true;                        ///< Build the wireframe view (needs fillModeNonSolid).
     std::function<void(const std::string&)> log;  ///< Copied; default: silent.
 };
