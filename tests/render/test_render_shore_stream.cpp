@@ -78,12 +78,13 @@ TEST_F(RenderTest, ShoreTilesNearTheCameraStreamInOverFrames) {
         EXPECT_LE(streamed.stats.shore_bytes, kBudget / 2 + (kBudget >> 5));
         const double coarse_diff = test::mean_difference(full, coarse.image);
         const double streamed_diff = test::mean_difference(full, streamed.image);
-        std::printf("%s view: coarse level every %u texels, %.4f from the full model; %llu of %llu tiles streamed "
-                    "over %llu frames, %.4f\n",
-                    view == render::DebugView::shore ? "shore" : "shaded", coarse.stats.shore_stride, coarse_diff,
-                    static_cast<unsigned long long>(streamed.stats.shore_streamed_tiles),
-                    static_cast<unsigned long long>(streamed.stats.shore_streamable_tiles),
-                    static_cast<unsigned long long>(streamed.frames_streaming), streamed_diff);
+        std::printf(
+            "%s view: coarse level every %u texels, %.4f from the full model; %llu of %llu tiles streamed "
+            "over %llu frames, %.4f\n",
+            view == render::DebugView::shore ? "shore" : "shaded", coarse.stats.shore_stride, coarse_diff,
+            static_cast<unsigned long long>(streamed.stats.shore_streamed_tiles),
+            static_cast<unsigned long long>(streamed.stats.shore_streamable_tiles),
+            static_cast<unsigned long long>(streamed.frames_streaming), streamed_diff);
         EXPECT_GT(coarse_diff, 0.0);
         EXPECT_LT(streamed_diff, 0.75 * coarse_diff) << "the tiles near the camera are drawn at full resolution";
     }

@@ -2,11 +2,11 @@
 // the one uploaded is written in place, those slots alone, and the buffers then hold what
 // a fresh upload of it would, value for value.
 #include <algorithm>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <limits>
-#include <span>
-#include <cstdio>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "../baked_scene.hpp"
@@ -170,15 +170,15 @@ TEST_F(ShoreBuffersTest, TilesNearTheCameraStreamInAtFullResolution) {
     ASSERT_EQ(layers.size(), 1 + model_->layers().size());
     for (const auto& layer : layers)
         for (std::size_t t = 0; t < layer.tiles->pages.size(); ++t)
-            ASSERT_EQ(buffers_->pages_now()[layer.first_page + t],
-                      layer.tiles->pages[t] < gpu::kShoreFirstStoredSlot ? layer.tiles->pages[t]
-                                                                           : gpu::kShoreNotResident);
+            ASSERT_EQ(buffers_->pages_now()[layer.first_page + t], layer.tiles->pages[t] < gpu::kShoreFirstStoredSlot
+                                                                       ? layer.tiles->pages[t]
+                                                                       : gpu::kShoreNotResident);
 
     // A frame brings at most one slot of the largest layer past the bound.
     std::size_t largest_slot = 0;
     for (const auto& layer : layers)
-        largest_slot = std::max(largest_slot, render::detail::packed_slot_vec4s(*layer.tiles, layer.shared) *
-                                                  sizeof(glm::vec4));
+        largest_slot =
+            std::max(largest_slot, render::detail::packed_slot_vec4s(*layer.tiles, layer.shared) * sizeof(glm::vec4));
     const std::uint64_t per_frame = 3 * largest_slot;
     constexpr std::uint32_t kInFlight = 2;
     std::vector<std::uint32_t> pages_before(buffers_->pages_now().begin(), buffers_->pages_now().end());
@@ -194,8 +194,7 @@ TEST_F(ShoreBuffersTest, TilesNearTheCameraStreamInAtFullResolution) {
             const auto pages = buffers_->pages_now();
             for (const auto& layer : layers)
                 for (std::size_t t = 0; t < layer.tiles->pages.size(); ++t) {
-                    const std::uint32_t before = pages_before[layer.first_page + t],
-                                        now = pages[layer.first_page + t];
+                    const std::uint32_t before = pages_before[layer.first_page + t], now = pages[layer.first_page + t];
                     // The previous frame, maybe still in flight, reads its slots unchanged.
                     const auto values = layer.shared ? buffers_->shared_values() : buffers_->per_wave_values();
                     if (before >= gpu::kShoreFirstStoredSlot && before != gpu::kShoreNotResident) {
@@ -252,11 +251,12 @@ TEST_F(ShoreBuffersTest, TilesNearTheCameraStreamInAtFullResolution) {
     ASSERT_NO_FATAL_FAILURE(stream_until_settled(east));
     EXPECT_EQ(buffers_->streamed_tiles(), pooled);
     expect_nearest_resident(east);
-    std::printf("%zu of %zu tiles streamed at full resolution (%d-texel coarse level, %.1f of %.1f MiB); "
-                "%llu frames to settle, %llu to move\n",
-                pooled, buffers_->streamable_tiles(), buffers_->stride(), buffers_->bytes() / 1048576.0,
-                model_->device_bytes() / 1048576.0, static_cast<unsigned long long>(frames_west),
-                static_cast<unsigned long long>(frame - frames_west));
+    std::printf(
+        "%zu of %zu tiles streamed at full resolution (%d-texel coarse level, %.1f of %.1f MiB); "
+        "%llu frames to settle, %llu to move\n",
+        pooled, buffers_->streamable_tiles(), buffers_->stride(), buffers_->bytes() / 1048576.0,
+        model_->device_bytes() / 1048576.0, static_cast<unsigned long long>(frames_west),
+        static_cast<unsigned long long>(frame - frames_west));
 }
 
 }  // namespace

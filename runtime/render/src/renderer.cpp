@@ -6,9 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <span>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "body_uploads.hpp"
@@ -360,9 +360,8 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
     // Over the budget, the full-resolution shore tiles nearest the camera come in.
     shore_streamed = info.shore_stream_bytes_per_frame == 0
                          ? 0
-                         : shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z),
-                                        frame.frame_index, static_cast<std::uint32_t>(slots.size()),
-                                        info.shore_stream_bytes_per_frame);
+                         : shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z), frame.frame_index,
+                                        static_cast<std::uint32_t>(slots.size()), info.shore_stream_bytes_per_frame);
     if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
     plan = std::move(planned->plan);
     return {};

@@ -140,7 +140,8 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         for (std::size_t s = 0; s < gpu::kShoreFirstStoredSlot; ++s)
             pack_slot(tiles, s, shared, out.data() + record.waves.w + s * per_slot);
         if (streamed)
-            streamed->push_back({&tiles, *pool.layer.grid, shared, record.waves.z, std::size_t{record.waves.w}, pool.slots});
+            streamed->push_back(
+                {&tiles, *pool.layer.grid, shared, record.waves.z, std::size_t{record.waves.w}, pool.slots});
     }
     if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // models without waves
     return p;
@@ -169,8 +170,9 @@ ShorePools plan_pools(const std::vector<const ShoreWaves*>& models, int stride, 
             stored += v.tiles->stored_tiles() * slot_bytes;
         }
     }
-    const double share =
-        max_bytes > fixed && stored > 0 ? std::min(1.0, static_cast<double>(max_bytes - fixed) / static_cast<double>(stored)) : 0.0;
+    const double share = max_bytes > fixed && stored > 0
+                             ? std::min(1.0, static_cast<double>(max_bytes - fixed) / static_cast<double>(stored))
+                             : 0.0;
     for (const ShoreWaves* m : models) {
         pools.pool_slots.emplace_back();
         if (!m) continue;

@@ -44,8 +44,7 @@ std::uint64_t ShoreStream::pack(std::size_t l, std::size_t p, std::uint32_t t, g
                                 glm::vec4* per_wave_out) {
     const StreamedLayer& layer = layers_[l];
     const std::size_t per_slot = packed_slot_vec4s(*layer.tiles, layer.shared);
-    glm::vec4* out = (layer.shared ? shared_out : per_wave_out) + layer.first_element +
-                     (kFirstPoolPage + p) * per_slot;
+    glm::vec4* out = (layer.shared ? shared_out : per_wave_out) + layer.first_element + (kFirstPoolPage + p) * per_slot;
     const std::size_t slot = layer.tiles->pages[t];
     pack_slot(*layer.tiles, slot, layer.shared, out);
     pools_[l].source[p] = layer.tiles->slot(slot);
@@ -68,7 +67,9 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
         dist2.resize(pool.slot_of.size());
         for (std::uint32_t t : pool.candidates) dist2[t] = tile_distance2(layer, t, camera);
         order = pool.candidates;
-        auto nearer = [&](std::uint32_t a, std::uint32_t b) { return dist2[a] < dist2[b] || (dist2[a] == dist2[b] && a < b); };
+        auto nearer = [&](std::uint32_t a, std::uint32_t b) {
+            return dist2[a] < dist2[b] || (dist2[a] == dist2[b] && a < b);
+        };
         std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(keep - 1), order.end(), nearer);
         order.resize(keep);
         wanted.assign(pool.slot_of.size(), 0);
@@ -122,7 +123,8 @@ std::uint64_t ShoreStream::refresh(const std::vector<const ShoreTiles*>& tiles, 
         for (std::size_t p = 0; p < pool.tile.size(); ++p) {
             if (pool.tile[p] < 0) continue;
             const auto t = static_cast<std::uint32_t>(pool.tile[p]);
-            if (tiles[l]->slot(tiles[l]->pages[t]) != pool.source[p]) written += pack(l, p, t, shared_out, per_wave_out);
+            if (tiles[l]->slot(tiles[l]->pages[t]) != pool.source[p])
+                written += pack(l, p, t, shared_out, per_wave_out);
         }
     }
     return written;
@@ -130,7 +132,9 @@ std::uint64_t ShoreStream::refresh(const std::vector<const ShoreTiles*>& tiles, 
 
 std::size_t ShoreStream::resident_tiles() const {
     std::size_t n = 0;
-    for (const Pool& pool : pools_) n += static_cast<std::size_t>(std::count_if(pool.tile.begin(), pool.tile.end(), [](std::int64_t t) { return t >= 0; }));
+    for (const Pool& pool : pools_)
+        n += static_cast<std::size_t>(
+            std::count_if(pool.tile.begin(), pool.tile.end(), [](std::int64_t t) { return t >= 0; }));
     return n;
 }
 

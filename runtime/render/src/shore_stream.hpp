@@ -42,15 +42,13 @@ class ShoreStream {
     /// `per_wave_out` (the mapped buffers), until `max_bytes` are written (at least one
     /// tile); resident tiles no longer wanted give their slots up when the wanted ones
     /// need them. `pages` (every model's, as packed) are updated. Returns the bytes written.
-    std::uint64_t step(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight,
-                       std::uint64_t max_bytes, std::span<std::uint32_t> pages, glm::vec4* shared_out,
-                       glm::vec4* per_wave_out);
+    std::uint64_t step(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight, std::uint64_t max_bytes,
+                       std::span<std::uint32_t> pages, glm::vec4* shared_out, glm::vec4* per_wave_out);
 
     /// After an edit re-baked the models into ones laid out alike: layer i reads `tiles[i]`
     /// from now on, and its resident tiles whose slot changed are packed again. No GPU work
     /// may be reading the pools. Returns the bytes written.
-    std::uint64_t refresh(const std::vector<const ShoreTiles*>& tiles, glm::vec4* shared_out,
-                          glm::vec4* per_wave_out);
+    std::uint64_t refresh(const std::vector<const ShoreTiles*>& tiles, glm::vec4* shared_out, glm::vec4* per_wave_out);
 
     std::size_t resident_tiles() const;
     /// Stored tiles of every layer: what the pools would hold with room for all.
