@@ -1,6 +1,7 @@
 // The shore fields on the GPU after an edit: a model that shares all but a few slots with
 // the one uploaded is written in place, those slots alone, and the buffers then hold what
-// a fresh upload of it would, value for value.
+// a fresh upload of it would, value for value. Over the budget, the tiles near the camera
+// stream in at full resolution over a coarse level.
 #include <algorithm>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -99,6 +100,42 @@ TEST_F(ShoreBuffersTest, AnEditedModelIsWrittenInPlace) {
                             render::detail::pack_shores({other->ocean.shore().get()}, placements).shared));
 }
 
+/// Layer `layer`'s pool slot behind page `page` in `values` (the buffer it packs to).
+std::span<const glm::vec4> pool_slot(std::span<const glm::vec4> values, const render::detail::StreamedLayer& layer,
+                                     std::uint32_t page) {
+    const std::size_t per_slot = render::detail::packed_slot_vec4s(*layer.tiles, layer.shared);
+    return values.subspan(layer.first_element + page * per_slot, per_slot);
+}
+
+/// Whether every resident full-resolution tile holds `model`'s values, layer by layer;
+/// counts the resident tiles whose slot `model` does not share with `before`.
+::testing::AssertionResult resident_tiles_hold(const ShoreBuffers& buffers, const ShoreWaves& model,
+                                               const ShoreWaves* before, std::size_t* changed = nullptr) {
+    std::vector<const ShoreTiles*> tiles{&model.shared()}, old_tiles;
+    for (const ShoreWaveLayer& l : model.layers()) tiles.push_back(&l.tiles);
+    if (before) {
+        old_tiles.push_back(&before->shared());
+        for (const ShoreWaveLayer& l : before->layers()) old_tiles.push_back(&l.tiles);
+    }
+    const auto& layers = buffers.streaming().layers();
+    if (layers.size() != tiles.size()) return ::testing::AssertionFailure() << "layers differ";
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        const ShoreTiles& t = *tiles[l];
+        const auto values = layers[l].shared ? buffers.shared_values() : buffers.per_wave_values();
+        for (std::size_t tile = 0; tile < t.pages.size(); ++tile) {
+            const std::uint32_t page = buffers.pages_now()[layers[l].first_page + tile];
+            if (page < gpu::kShoreFirstStoredSlot || page == gpu::kShoreNotResident) continue;
+            std::vector<glm::vec4> expected(render::detail::packed_slot_vec4s(t, layers[l].shared));
+            render::detail::pack_slot(t, t.pages[tile], layers[l].shared, expected.data());
+            const auto slot = pool_slot(values, layers[l], page);
+            if (!std::equal(slot.begin(), slot.end(), expected.begin()))
+                return ::testing::AssertionFailure() << "layer " << l << " tile " << tile << " differs";
+            if (changed && before) *changed += t.slot(t.pages[tile]) != old_tiles[l]->slot(t.pages[tile]);
+        }
+    }
+    return ::testing::AssertionSuccess();
+}
+
 TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
     ASSERT_NO_FATAL_FAILURE(load_coast());
     const auto& model = model_;
@@ -114,6 +151,20 @@ TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
 
     const auto edited = edit_first_stored_tile(*model);
     ASSERT_NE(edited, nullptr);
+    // The camera over the edit: its tiles are streamed in at full resolution first.
+    const ShoreTiles& tiles = model->shared();
+    std::size_t first_stored = 0;
+    while (tiles.pages[first_stored] < gpu::kShoreFirstStoredSlot) ++first_stored;
+    const double tile_side = ShoreTiles::kTile * model->texel();
+    const auto per_side = static_cast<std::size_t>(tiles.tiles_per_side);
+    const glm::dvec2 camera =
+        model->corner() + tile_side * glm::dvec2(static_cast<double>(first_stored % per_side) + 0.5,
+                                                 static_cast<double>(first_stored / per_side) + 0.5);
+    for (std::uint64_t frame = 0, quiet = 0; quiet < 3 && frame < 1000; ++frame)
+        quiet = buffers_->stream(camera, frame, 2, std::uint64_t{1} << 20) == 0 ? quiet + 1 : 0;
+    ASSERT_GT(buffers_->streamed_tiles(), 0u);
+    ASSERT_TRUE(resident_tiles_hold(*buffers_, *model, nullptr));
+
     auto second = buffers_->upload(*device, ShoreBuffers::Models{edited}, budget);
     ASSERT_TRUE(second.ok()) << second.error().message;
     EXPECT_FALSE(*second) << "the buffers are kept";
@@ -133,13 +184,10 @@ TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
     const auto old_coarse = model->coarsened(stride);
     EXPECT_FALSE(
         same_values(buffers_->shared_values(), render::detail::pack_shores({old_coarse.get()}, placements).shared));
-}
-
-/// Layer `layer`'s pool slot behind page `page` in `values` (the buffer it packs to).
-std::span<const glm::vec4> pool_slot(std::span<const glm::vec4> values, const render::detail::StreamedLayer& layer,
-                                     std::uint32_t page) {
-    const std::size_t per_slot = render::detail::packed_slot_vec4s(*layer.tiles, layer.shared);
-    return values.subspan(layer.first_element + page * per_slot, per_slot);
+    // The full-resolution tiles streamed in before the edit hold the edited model's values.
+    std::size_t changed = 0;
+    EXPECT_TRUE(resident_tiles_hold(*buffers_, *edited, model.get(), &changed));
+    EXPECT_GT(changed, 0u) << "the edit reaches a streamed tile";
 }
 
 /// Squared distance from `camera` to the centre of tile `t` of `layer`.
