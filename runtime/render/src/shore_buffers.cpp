@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "tidewater/detail/parallel.hpp"
+
 namespace tidewater::render::detail {
 
 std::size_t packed_slot_vec4s(const ShoreTiles& tiles, bool shared) {
@@ -35,14 +37,6 @@ void pack_slot(const ShoreTiles& tiles, std::size_t slot, bool shared, glm::vec4
 
 namespace {
 
-/// Packs every slot of `tiles` at the end of `out`.
-void pack_slots(const ShoreTiles& tiles, bool shared, std::vector<glm::vec4>& out) {
-    const std::size_t per_slot = packed_slot_vec4s(tiles, shared), at = out.size();
-    out.resize(at + per_slot * tiles.slot_count());
-    for (std::size_t slot = 0; slot < tiles.slot_count(); ++slot)
-        pack_slot(tiles, slot, shared, out.data() + at + slot * per_slot);
-}
-
 /// A model's layers in the order of its records: the shared fields, then each run.
 struct LayerView {
     const ShoreTiles* tiles;
@@ -70,10 +64,10 @@ bool same_layout(const ShoreWaves& a, const ShoreWaves& b) {
 
 }  // namespace
 
-PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
-                        const std::vector<const ShoreWaves*>& placed_as, const ShorePools* pools,
-                        std::vector<StreamedLayer>* streamed) {
-    PackedShore p;
+ShoreLayout layout_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
+                          const std::vector<const ShoreWaves*>& placed_as, const ShorePools* pools,
+                          std::vector<StreamedLayer>* streamed) {
+    ShoreLayout p;
     placements.assign(models.size(), ShorePlacement{});
     if (streamed) streamed->clear();
     struct Pooled {
@@ -83,11 +77,9 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         bool shared;
     };
     std::vector<Pooled> pooled;
-    bool any = false;
     for (std::size_t m = 0; m < models.size(); ++m) {
         const ShoreWaves* shore = models[m];
         if (!shore) continue;
-        if (!any) p.per_wave.clear(), p.shared.clear(), p.pages.clear(), p.layers.clear(), any = true;
         const ShoreWaves* fine = pools && m < pools->fine.size() ? pools->fine[m] : nullptr;
         // The draws' shore positions are relative to the grid drawn first: the full-resolution
         // one when it streams, else the one packed.
@@ -108,15 +100,16 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
         for (std::size_t l = 0; l < coarse.size(); ++l) {
             const LayerView& v = coarse[l];
             const bool shared = l == 0;
-            std::vector<glm::vec4>& out = shared ? p.shared : p.per_wave;
+            std::size_t& end = shared ? p.shared : p.per_wave;
             gpu::GpuShoreLayer record;
             record.grid = grid_of(*v.grid);
             record.waves = glm::uvec4(v.first, v.count, static_cast<std::uint32_t>(p.pages.size()),
-                                      static_cast<std::uint32_t>(out.size()));
+                                      static_cast<std::uint32_t>(end));
             record.coarse_grid = record.grid;
             record.coarse = glm::uvec4(record.waves.z, record.waves.w, 0u, 0u);
             p.pages.insert(p.pages.end(), v.tiles->pages.begin(), v.tiles->pages.end());
-            pack_slots(*v.tiles, shared, out);
+            p.fills.push_back({v.tiles, shared, end, v.tiles->slot_count(), 0});
+            end += v.tiles->slot_count() * packed_slot_vec4s(*v.tiles, shared);
             if (fine) {
                 record.grid = grid_of(*full[l].grid);
                 pooled.push_back({p.layers.size(), full[l], pools->pool_slots[m][l], shared});
@@ -128,22 +121,57 @@ PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vecto
     // tiles not resident yet), its open-sea and dry-land slots, and room for the streamed ones.
     for (const Pooled& pool : pooled) {
         gpu::GpuShoreLayer& record = p.layers[pool.record];
-        const bool shared = pool.shared;
-        std::vector<glm::vec4>& out = shared ? p.shared : p.per_wave;
+        std::size_t& end = pool.shared ? p.shared : p.per_wave;
         const ShoreTiles& tiles = *pool.layer.tiles;
         record.waves.z = static_cast<std::uint32_t>(p.pages.size());
-        record.waves.w = static_cast<std::uint32_t>(out.size());
+        record.waves.w = static_cast<std::uint32_t>(end);
         for (std::uint32_t page : tiles.pages)
             p.pages.push_back(page < gpu::kShoreFirstStoredSlot ? page : gpu::kShoreNotResident);
-        const std::size_t per_slot = packed_slot_vec4s(tiles, shared);
-        out.resize(out.size() + (gpu::kShoreFirstStoredSlot + pool.slots) * per_slot, glm::vec4(0.0f));
-        for (std::size_t s = 0; s < gpu::kShoreFirstStoredSlot; ++s)
-            pack_slot(tiles, s, shared, out.data() + record.waves.w + s * per_slot);
-        if (streamed)
-            streamed->push_back(
-                {&tiles, *pool.layer.grid, shared, record.waves.z, std::size_t{record.waves.w}, pool.slots});
+        p.fills.push_back({&tiles, pool.shared, end, gpu::kShoreFirstStoredSlot, pool.slots});
+        if (streamed) streamed->push_back({&tiles, *pool.layer.grid, pool.shared, record.waves.z, end, pool.slots});
+        end += (gpu::kShoreFirstStoredSlot + pool.slots) * packed_slot_vec4s(tiles, pool.shared);
     }
-    if (p.per_wave.empty()) p.per_wave.push_back(glm::vec4(0.0f));  // models without waves
+    // One zero placeholder in each buffer that would be empty: bindings are always valid.
+    p.per_wave = std::max<std::size_t>(p.per_wave, 1);
+    p.shared = std::max<std::size_t>(p.shared, 1);
+    if (p.pages.empty()) p.pages.push_back(0u);
+    if (p.layers.empty()) p.layers.push_back(gpu::GpuShoreLayer{});
+    return p;
+}
+
+void fill_shores(const ShoreLayout& layout, glm::vec4* per_wave, glm::vec4* shared) {
+    // Slot by slot on every core: a large model packs hundreds of MiB.
+    std::vector<std::pair<std::size_t, std::size_t>> jobs;  // (fill, slot)
+    for (std::size_t f = 0; f < layout.fills.size(); ++f)
+        for (std::size_t s = 0; s < layout.fills[f].packed + layout.fills[f].empty; ++s) jobs.emplace_back(f, s);
+    tidewater::detail::parallel_chunks(jobs.size(), 16, 0, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t j = begin; j < end; ++j) {
+            const ShoreLayout::Fill& fill = layout.fills[jobs[j].first];
+            const std::size_t slot = jobs[j].second, per_slot = packed_slot_vec4s(*fill.tiles, fill.shared);
+            glm::vec4* out = (fill.shared ? shared : per_wave) + fill.at + slot * per_slot;
+            if (slot < fill.packed)
+                pack_slot(*fill.tiles, slot, fill.shared, out);
+            else
+                std::fill(out, out + per_slot, glm::vec4(0.0f));
+        }
+    });
+    // The placeholders of buffers no fill reaches.
+    if (layout.fills.empty() ||
+        std::none_of(layout.fills.begin(), layout.fills.end(), [](const ShoreLayout::Fill& f) { return !f.shared; }))
+        per_wave[0] = glm::vec4(0.0f);
+    if (layout.fills.empty()) shared[0] = glm::vec4(0.0f);
+}
+
+PackedShore pack_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
+                        const std::vector<const ShoreWaves*>& placed_as, const ShorePools* pools,
+                        std::vector<StreamedLayer>* streamed) {
+    const ShoreLayout layout = layout_shores(models, placements, placed_as, pools, streamed);
+    PackedShore p;
+    p.per_wave.resize(layout.per_wave);
+    p.shared.resize(layout.shared);
+    fill_shores(layout, p.per_wave.data(), p.shared.data());
+    p.pages = layout.pages;
+    p.layers = layout.layers;
     return p;
 }
 
@@ -273,22 +301,26 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     std::vector<ShorePlacement> placements;
     std::vector<StreamedLayer> streamed;
     const ShorePools pools = stride > 1 ? plan_pools(wanted_models, stride, max_bytes) : ShorePools{};
-    const PackedShore packed = pack_shores(drawn, placements, wanted_models, stride > 1 ? &pools : nullptr, &streamed);
+    const ShoreLayout layout =
+        layout_shores(drawn, placements, wanted_models, stride > 1 ? &pools : nullptr, &streamed);
     // The offsets are 32-bit element indices in the shaders.
-    if (std::max(packed.per_wave.size(), packed.shared.size()) > std::numeric_limits<std::uint32_t>::max())
+    if (std::max(layout.per_wave, layout.shared) > std::numeric_limits<std::uint32_t>::max())
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("renderer: the shore models hold {} texels, more than 2^32", packed.per_wave.size())};
+                     fmt::format("renderer: the shore models hold {} texels, more than 2^32",
+                                 std::max(layout.per_wave, layout.shared))};
+    // The fields are packed straight into the mapped buffers: no copy of them on the host.
     GpuBuffer fresh[4];
-    const std::pair<const void*, std::size_t> data[4] = {
-        {packed.per_wave.data(), packed.per_wave.size() * sizeof(glm::vec4)},
-        {packed.shared.data(), packed.shared.size() * sizeof(glm::vec4)},
-        {packed.pages.data(), packed.pages.size() * sizeof(std::uint32_t)},
-        {packed.layers.data(), packed.layers.size() * sizeof(gpu::GpuShoreLayer)}};
+    const std::size_t sizes[4] = {layout.per_wave * sizeof(glm::vec4), layout.shared * sizeof(glm::vec4),
+                                  layout.pages.size() * sizeof(std::uint32_t),
+                                  layout.layers.size() * sizeof(gpu::GpuShoreLayer)};
     for (int i = 0; i < 4; ++i) {
-        auto made = GpuBuffer::storage_with(ctx, data[i].first, data[i].second);
+        auto made = GpuBuffer::create(ctx, sizes[i], VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         if (!made) return made.error();
         fresh[i] = std::move(made).value();
     }
+    fill_shores(layout, static_cast<glm::vec4*>(fresh[0].mapped()), static_cast<glm::vec4*>(fresh[1].mapped()));
+    std::memcpy(fresh[2].mapped(), layout.pages.data(), sizes[2]);
+    std::memcpy(fresh[3].mapped(), layout.layers.data(), sizes[3]);
     per_wave_ = std::move(fresh[0]);
     shared_ = std::move(fresh[1]);
     pages_ = std::move(fresh[2]);
@@ -297,8 +329,8 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     stride_ = stride;
     max_bytes_ = max_bytes;
     coarse_ = std::move(coarse);
-    layer_records_ = packed.layers;
-    page_values_ = packed.pages;
+    layer_records_ = layout.layers;
+    page_values_ = layout.pages;
     stream_.reset(std::move(streamed));
     rewritten_bytes_ = bytes();
     uploaded_.clear();

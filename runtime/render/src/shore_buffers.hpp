@@ -57,6 +57,29 @@ struct ShorePools {
     std::vector<std::vector<std::size_t>> pool_slots;  ///< per model and layer
 };
 
+/// Where pack_shores puts everything: the buffers' sizes (vec4s), the pages and records,
+/// and the slots to pack.
+struct ShoreLayout {
+    std::size_t per_wave = 0, shared = 0;
+    std::vector<std::uint32_t> pages;
+    std::vector<gpu::GpuShoreLayer> layers;
+    struct Fill {
+        const ShoreTiles* tiles;
+        bool shared;
+        std::size_t at;      ///< its first vec4 in its buffer
+        std::size_t packed;  ///< its first slots, packed from `tiles`
+        std::size_t empty;   ///< the zeroed slots after them (a pool's room)
+    };
+    std::vector<Fill> fills;
+};
+/// pack_shores' layout, without packing anything.
+ShoreLayout layout_shores(const std::vector<const ShoreWaves*>& models, std::vector<ShorePlacement>& placements,
+                          const std::vector<const ShoreWaves*>& placed_as = {}, const ShorePools* pools = nullptr,
+                          std::vector<StreamedLayer>* streamed = nullptr);
+/// Packs `layout`'s slots into `per_wave` and `shared` (layout.per_wave and layout.shared
+/// vec4s), in parallel.
+void fill_shores(const ShoreLayout& layout, glm::vec4* per_wave, glm::vec4* shared);
+
 /// Packs `models` (null ones get no fields) one after the other, each on the grid it
 /// has, and says where each starts; placements name `placed_as` (the models the caller
 /// knows: a coarsened model is placed as its original). With `pools`, each model's records
