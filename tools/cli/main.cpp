@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
                                    add_bake_verb(app),  add_fit_verb(app),   add_inspect_verb(app)};
 #if defined(TIDEWATER_HAVE_RENDER)
         verbs.push_back(add_render_verb(app));
+        verbs.push_back(add_shader_stats_verb(app));
 #endif
         CLI11_PARSE(app, argc, argv);
         for (const Verb& v : verbs) {

@@ -114,6 +114,16 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                       {"water_patches", s.water_patches},
                       {"waves", s.waves}}},
                     {"units", "milliseconds of GPU time from timestamp queries"}};
+    // The driver's statistics of every pipeline stage, where the device has them.
+    if (auto stages = (*renderer)->pipeline_statistics(); stages) {
+        for (const auto& st : *stages) {
+            nlohmann::json stage{{"pipeline", st.pipeline}, {"stage", st.stage}};
+            for (const auto& v : st.statistics) stage["statistics"][v.name] = v.value;
+            result.stats["pipelines"].push_back(stage);
+        }
+    } else {
+        result.stats["pipelines_unavailable"] = stages.error().message;
+    }
     return result;
 }
 

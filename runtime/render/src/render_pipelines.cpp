@@ -124,6 +124,8 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     info.pColorBlendState = &blending;
     info.pDynamicState = &dynamic;
     info.layout = d.layout;
+    // Statistics are captured at build time, where the host enabled them.
+    if (ctx.pipeline_executable_info) info.flags |= VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
     VkPipeline pipeline = VK_NULL_HANDLE;
     const VkResult r =
         ctx.vk().CreateGraphicsPipelines(ctx.device, ctx.pipeline_cache, 1, &info, ctx.allocator, &pipeline);

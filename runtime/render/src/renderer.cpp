@@ -17,6 +17,7 @@
 #include "frame_constants.hpp"
 #include "frame_timer.hpp"
 #include "gpu_memory.hpp"
+#include "pipeline_statistics.hpp"
 #include "render_pipelines.hpp"
 #include "scene_copies.hpp"
 #include "scene_uploads.hpp"
@@ -721,6 +722,10 @@ Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
         return Error{ErrorCode::not_found,
                      fmt::format("renderer: frame {} is not the last recorded in its slot", frame_index)};
     return m.timer.read(m.ctx(), static_cast<std::uint32_t>(s));
+}
+
+Result<std::vector<PipelineStageStatistics>> Renderer::pipeline_statistics() const {
+    return detail::draw_pipeline_statistics(impl_->ctx(), impl_->pipelines.draws);
 }
 
 RendererStats Renderer::stats() const {

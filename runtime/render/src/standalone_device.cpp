@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 #include <vector>
 
 #include "tidewater/render/standalone.hpp"
@@ -34,6 +35,16 @@ struct Candidate {
     std::uint32_t queue_family = 0;
     std::string why_not;  // empty when usable
 };
+
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
+    std::uint32_t count = 0;
+    if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS) return false;
+    std::vector<VkExtensionProperties> extensions(count);
+    if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()) != VK_SUCCESS) return false;
+    for (const VkExtensionProperties& e : extensions)
+        if (std::string_view(e.extensionName) == name) return true;
+    return false;
+}
 
 Candidate inspect(VkPhysicalDevice device) {
     Candidate c;
@@ -173,6 +184,20 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     enabled.sampleRateShading = supported.sampleRateShading;    // water shaded per sample (optional)
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;
+    // Shader statistics where the driver has them (RADV, most desktop drivers; not lavapipe).
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable_info{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    std::vector<const char*> device_extensions;
+    if (has_device_extension(chosen->device, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+        VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        query.pNext = &executable_info;
+        vkGetPhysicalDeviceFeatures2(chosen->device, &query);
+        executable_info.pNext = nullptr;
+        if (executable_info.pipelineExecutableInfo) {
+            device_extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+            f13.pNext = &executable_info;
+        }
+    }
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queue.queueFamilyIndex = chosen->queue_family;
@@ -183,7 +208,11 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     dev.queueCreateInfoCount = 1;
     dev.pQueueCreateInfos = &queue;
     dev.pEnabledFeatures = &enabled;
+    dev.enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size());
+    dev.ppEnabledExtensionNames = device_extensions.data();
     TW_VK_TRY(vkCreateDevice(chosen->device, &dev, nullptr, &self->context_.device));
+    self->context_.pipeline_executable_info = !device_extensions.empty();
+    self->compile_only_ = options.compile_only;
     self->context_.enabled_features = enabled;
     self->context_.dynamic_rendering = true;
     vkGetDeviceQueue(self->context_.device, chosen->queue_family, 0, &self->context_.queue);
@@ -192,8 +221,9 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
 
 StandaloneDevice::~StandaloneDevice() {
     if (context_.device) {
-        // A lost device has no work left: it is destroyed all the same.
-        if (const VkResult r = vkDeviceWaitIdle(context_.device); r != VK_SUCCESS) {
+        // A lost device has no work left: it is destroyed all the same. A compile-only one
+        // never had any (a null device cannot wait).
+        if (const VkResult r = compile_only_ ? VK_SUCCESS : vkDeviceWaitIdle(context_.device); r != VK_SUCCESS) {
             const std::string text = detail::vk_error(r, "vkDeviceWaitIdle (destroying the standalone device)").message;
             if (log_)
                 log_(text);

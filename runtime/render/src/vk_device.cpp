@@ -36,6 +36,9 @@ Result<Device> load_device(const DeviceContext& ctx) {
     note_missing(f->name.pointer != nullptr, "vk" #name);
     TIDEWATER_VK_INSTANCE_FUNCTIONS(TIDEWATER_VK_LOAD_INSTANCE)
     TIDEWATER_VK_DEVICE_FUNCTIONS(TIDEWATER_VK_LOAD_DEVICE)
+    if (ctx.pipeline_executable_info) {
+        TIDEWATER_VK_PIPELINE_EXECUTABLE_FUNCTIONS(TIDEWATER_VK_LOAD_DEVICE)
+    }
 #undef TIDEWATER_VK_LOAD_INSTANCE
 #undef TIDEWATER_VK_LOAD_DEVICE
     if (!missing.empty())

@@ -86,6 +86,11 @@
     X(UpdateDescriptorSets)              \
     X(WaitForFences)
 
+// Loaded when DeviceContext::pipeline_executable_info says the extension is enabled.
+#define TIDEWATER_VK_PIPELINE_EXECUTABLE_FUNCTIONS(X) \
+    X(GetPipelineExecutablePropertiesKHR)            \
+    X(GetPipelineExecutableStatisticsKHR)
+
 namespace tidewater::render::detail {
 
 /// One loaded Vulkan function. Calls that return a VkResult are [[nodiscard]]: a
@@ -107,6 +112,7 @@ struct VulkanFunctions {
 #define TIDEWATER_VK_MEMBER(name) VkFunction<PFN_vk##name> name;
     TIDEWATER_VK_INSTANCE_FUNCTIONS(TIDEWATER_VK_MEMBER)
     TIDEWATER_VK_DEVICE_FUNCTIONS(TIDEWATER_VK_MEMBER)
+    TIDEWATER_VK_PIPELINE_EXECUTABLE_FUNCTIONS(TIDEWATER_VK_MEMBER)
 #undef TIDEWATER_VK_MEMBER
 };
 

@@ -33,6 +33,10 @@ struct DeviceContext {
     /// Whether the host enabled VkPhysicalDeviceVulkan13Features::dynamicRendering (the
     /// renderer records with vkCmdBeginRendering).
     bool dynamic_rendering = false;
+    /// Whether the host enabled VK_KHR_pipeline_executable_properties and its
+    /// pipelineExecutableInfo feature: the renderer's pipelines are then built with their
+    /// statistics captured (Renderer::pipeline_statistics). Optional.
+    bool pipeline_executable_info = false;
     /// Optional loader hook for engines with their own Vulkan loader (volk-style): give
     /// both and every Vulkan function Tidewater calls on this context is loaded through
     /// them (instance-level ones with `instance`, the rest with `device`). Null (the

@@ -180,6 +180,27 @@ struct RendererStats {
     double water_patch_size = 0.0;  ///< m
 };
 
+/// What the driver says of a compiled shader (VK_KHR_pipeline_executable_properties):
+/// one statistic of a stage, as the driver names and describes it ("VGPRs",
+/// "Instructions", "Latency", ...). They tell a shader's cost on the device's own
+/// instruction set without running it.
+struct ShaderStatistic {
+    std::string name;
+    std::string description;
+    double value = 0.0;
+};
+
+/// One executable of a pipeline: a stage, or stages the driver merged ("Vertex Shader as
+/// LS + Tessellation Control Shader"), with its statistics.
+struct PipelineStageStatistics {
+    std::string pipeline;  ///< the renderer's name for it: "sky", "terrain", "floats", "water", ...
+    std::string stage;     ///< the driver's name for the executable
+    std::vector<ShaderStatistic> statistics;
+
+    /// The statistic called `name`, or `fallback` when the driver gives none by that name.
+    double value(const std::string& name, double fallback = -1.0) const;
+};
+
 class Renderer {
   public:
     static Result<std::unique_ptr<Renderer>> create(const RendererInitInfo& info);
@@ -222,6 +243,10 @@ class Renderer {
     /// Pass timings of the frame recorded with `frame_index`, once the host knows it has finished.
     Result<PassTimings> timings(std::uint64_t frame_index);
     RendererStats stats() const;
+    /// Every stage of the renderer's pipelines as the driver compiled them, where the device
+    /// has DeviceContext::pipeline_executable_info; fails with ErrorCode::unsupported,
+    /// saying so, where it has not. Reads what the pipelines captured when they were built.
+    Result<std::vector<PipelineStageStatistics>> pipeline_statistics() const;
 
   private:
     struct Impl;

@@ -24,6 +24,10 @@ struct StandaloneOptions {
     std::function<void(const std::string&)> log;
     /// Pick the first device whose name contains this; empty = the first suitable one.
     std::string device_name_contains;
+    /// The device only builds pipelines (a driver's null device, such as RADV's under
+    /// RADV_FORCE_FAMILY, which cannot run work): nothing may be submitted to it, and its
+    /// destruction does not wait for it. Default off.
+    bool compile_only = false;
 };
 
 class StandaloneDevice {
@@ -47,6 +51,7 @@ class StandaloneDevice {
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     std::string device_name_;
     std::function<void(const std::string&)> log_;
+    bool compile_only_ = false;
     std::atomic<std::size_t> validation_messages_{0};
 };
 

@@ -1,0 +1,105 @@
+// tidewater shader-stats: the renderer's pipelines as the driver compiles them, per stage
+// (instructions, registers, spills, latency, inverse throughput), without drawing. On a
+// machine without a GPU, RADV's null device gives them for an AMD GPU that is not there.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "atomic_file.hpp"
+#include "tidewater/render/offscreen.hpp"
+#include "tidewater/render/pipeline_statistics.hpp"
+#include "tidewater/render/standalone.hpp"
+#include "verbs.hpp"
+
+namespace tidewater::cli {
+
+namespace {
+
+struct ShaderStatsArgs {
+    std::string json;
+    int samples = 1;
+    bool water_per_sample = false;
+};
+
+/// The statistics the table shows, by RADV's names; a driver without one shows "-".
+constexpr const char* kColumns[] = {"Instructions", "VGPRs", "SGPRs", "Spilled VGPRs", "Latency", "Inverse Throughput"};
+
+std::string markdown_table(const std::string& device, const std::vector<render::PipelineStageStatistics>& stages) {
+    std::string s = fmt::format("Pipelines on {}\n\n| pipeline | stage |", device);
+    for (const char* c : kColumns) s += fmt::format(" {} |", c);
+    s += "\n|---|---|";
+    for (std::size_t c = 0; c < std::size(kColumns); ++c) s += "---:|";
+    s += "\n";
+    for (const auto& st : stages) {
+        s += fmt::format("| {} | {} |", st.pipeline, st.stage);
+        for (const char* c : kColumns) {
+            const double v = st.value(c);
+            s += v < 0.0 ? " - |" : fmt::format(" {:.0f} |", v);
+        }
+        s += "\n";
+    }
+    return s;
+}
+
+int run_shader_stats(const ShaderStatsArgs& a) {
+    const char* verb = "shader-stats";
+    std::unique_ptr<AtomicFile> json_file;
+    if (!a.json.empty()) {
+        json_file = std::make_unique<AtomicFile>(a.json);
+        if (!json_file->status()) return fail(verb, json_file->status().error().message);
+    }
+    render::StandaloneOptions options;
+    options.compile_only = true;  // nothing is drawn: a null device serves
+    auto device = render::StandaloneDevice::create(options);
+    if (!device) return fail(verb, device.error().message);
+    if (!(*device)->context().pipeline_executable_info)
+        return fail(verb, fmt::format("the device \"{}\" does not expose VK_KHR_pipeline_executable_properties; run "
+                                      "on a driver that does (without a GPU: RADV's null device, "
+                                      "RADV_FORCE_FAMILY=navi21 "
+                                      "VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json)",
+                                      (*device)->device_name()));
+    render::RendererInitInfo init;
+    init.device = (*device)->context();
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.samples = static_cast<VkSampleCountFlagBits>(a.samples);
+    init.shade_water_per_sample = a.water_per_sample;
+    init.wireframe = (*device)->context().enabled_features.fillModeNonSolid == VK_TRUE;
+    auto stages = render::compile_pipeline_statistics(init);
+    if (!stages) return fail(verb, stages.error().message);
+    std::fputs(markdown_table((*device)->device_name(), *stages).c_str(), stdout);
+    if (json_file) {
+        nlohmann::json j;
+        j["device"] = (*device)->device_name();
+        j["samples"] = a.samples;
+        j["water_per_sample"] = a.water_per_sample;
+        for (const auto& st : *stages) {
+            nlohmann::json stage{{"pipeline", st.pipeline}, {"stage", st.stage}};
+            for (const auto& s : st.statistics)
+                stage["statistics"].push_back({{"name", s.name}, {"description", s.description}, {"value", s.value}});
+            j["stages"].push_back(stage);
+        }
+        if (auto st = json_file->write_and_commit(j.dump(2) + "\n"); !st) return fail(verb, st.error().message);
+    }
+    return 0;
+}
+
+}  // namespace
+
+Verb add_shader_stats_verb(CLI::App& app) {
+    auto args = std::make_shared<ShaderStatsArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "shader-stats",
+        "The renderer's shaders as the driver compiles them, per pipeline and stage (instructions, registers, "
+        "spills, latency), without drawing: works on a driver's null device (RADV_FORCE_FAMILY)");
+    cmd->add_option("--json", args->json, "Write every statistic of every stage as JSON");
+    cmd->add_option("--samples", args->samples, "Samples per pixel of the targets (1, 2, 4 or 8)")
+        ->check(CLI::IsMember({1, 2, 4, 8}));
+    cmd->add_flag("--water-per-sample", args->water_per_sample, "The water shaded at every sample");
+    return {cmd, [args] { return run_shader_stats(*args); }};
+}
+
+}  // namespace tidewater::cli
