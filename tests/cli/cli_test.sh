@@ -216,6 +216,7 @@ JSON
       check "stats has $key" grep -q "$key" stats.json
     done
     check "prints the file" grep -q "still.png" log.txt
+    check "stats say why lavapipe has no shader statistics" grep -q '"pipelines_unavailable"' stats.json
     "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
     check "multisampled still under validation" test $? -eq 0
     check "multisampled PNG written" test -s still4.png
@@ -250,6 +251,29 @@ JSON
     expect_error "scene without water" "nowater.json: /ocean" "$TW" render --scene nowater.json --out o.png
     expect_error "unwritable output" "cannot" "$TW" render --size 32x32 --out no/such/dir/o.png
     check "no partial PNG anywhere" bash -c "! ls o.png* no 2>/dev/null"
+    ;;
+  shader_stats)
+    # RADV's null device: an RX 6800 (navi21) that is not there, whose compiler reports each
+    # stage's statistics. The budget table is the one checked in beside the shaders.
+    null_device() { RADV_FORCE_FAMILY=navi21 VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json \
+      VK_DRIVER_FILES=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json NODEVICE_SELECT=1 XDG_RUNTIME_DIR="$WORK" "$@"; }
+    BUDGET="$EXAMPLES/../shaders/budget_navi21.csv"
+    null_device "$TW" shader-stats --json stages.json --budget "$BUDGET" > table.md
+    check "exit 0 within the checked-in budget" test $? -eq 0
+    check "the device is RADV's null navi21" grep -q "Null hardware (RADV NAVI21)" table.md
+    for stage in "water | Fragment Shader" "water | Tessellation Evaluation Shader" "terrain | Fragment Shader"; do
+      check "table has $stage" grep -qF "| $stage |" table.md
+    done
+    check "JSON has the water fragment's VGPRs" grep -q '"VGPRs"' stages.json
+    check "water fragment has instructions" awk -F'|' '$2 ~ /water / && $3 ~ /Fragment/ { found = ($4 + 0 > 100) } END { exit !found }' table.md
+    awk -F, 'NR > 1 && $1 == "water" && $2 == "Fragment Shader" { $3 = int($3 / 2) } 1' OFS=, "$BUDGET" > tight.csv
+    expect_error "a stage over its budget fails, named" "water / Fragment Shader: Instructions" null_device "$TW" shader-stats --budget tight.csv
+    grep -v "^sky,Vertex" "$BUDGET" > missing.csv
+    expect_error "a stage without a row fails" "sky / Vertex Shader has no row" null_device "$TW" shader-stats --budget missing.csv
+    printf 'pipeline,stage,instructions,vgprs\nwater,Fragment Shader,many,88\n' > bad.csv
+    expect_error "a malformed budget names its line" "bad.csv\" line 2" null_device "$TW" shader-stats --budget bad.csv
+    expect_error "lavapipe has no statistics: says what to run" "RADV_FORCE_FAMILY" "$TW" shader-stats --json lvp.json
+    check "no JSON after failure" no_file lvp.json
     ;;
   bake)
     "$TW" bake --resolution 256 --out baked --quiet > log.txt

@@ -3,9 +3,13 @@
 // machine without a GPU, RADV's null device gives them for an AMD GPU that is not there.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "atomic_file.hpp"
@@ -20,6 +24,7 @@ namespace {
 
 struct ShaderStatsArgs {
     std::string json;
+    std::string budget;
     int samples = 1;
     bool water_per_sample = false;
 };
@@ -44,12 +49,85 @@ std::string markdown_table(const std::string& device, const std::vector<render::
     return s;
 }
 
+/// One row of a budget table: a stage's instructions and VGPRs as last accepted.
+struct BudgetRow {
+    std::string pipeline, stage;
+    double instructions = 0.0, vgprs = 0.0;
+    bool seen = false;
+};
+
+/// Reads a budget table: a header line, then "pipeline,stage,instructions,vgprs" rows.
+Result<std::vector<BudgetRow>> read_budget(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return Error{ErrorCode::not_found, fmt::format("--budget: cannot read \"{}\"", path)};
+    std::vector<BudgetRow> rows;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (number == 1 || line.empty()) continue;  // the header
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+        BudgetRow row;
+        char* end = nullptr;
+        if (cells.size() == 4) {
+            row.pipeline = cells[0];
+            row.stage = cells[1];
+            row.instructions = std::strtod(cells[2].c_str(), &end);
+            const bool ok = end != cells[2].c_str() && *end == '\0';
+            row.vgprs = std::strtod(cells[3].c_str(), &end);
+            if (ok && end != cells[3].c_str() && *end == '\0' && row.instructions > 0.0 && row.vgprs > 0.0) {
+                rows.push_back(row);
+                continue;
+            }
+        }
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("--budget: \"{}\" line {}: expected pipeline,stage,instructions,vgprs with positive "
+                                 "counts, got \"{}\"",
+                                 path, number, line)};
+    }
+    return rows;
+}
+
+/// Every way `stages` break `budget`: a stage over its row by more than 10 % in
+/// instructions or VGPRs, a stage that spills, a stage without a row, a row without a stage.
+std::vector<std::string> budget_breaches(const std::vector<render::PipelineStageStatistics>& stages,
+                                         std::vector<BudgetRow> budget) {
+    std::vector<std::string> out;
+    for (const auto& st : stages) {
+        const std::string name = fmt::format("{} / {}", st.pipeline, st.stage);
+        if (st.value("Spilled VGPRs", 0.0) > 0.0 || st.value("Spilled SGPRs", 0.0) > 0.0)
+            out.push_back(fmt::format("{} spills registers", name));
+        auto row = std::find_if(budget.begin(), budget.end(),
+                                [&](const BudgetRow& r) { return r.pipeline == st.pipeline && r.stage == st.stage; });
+        if (row == budget.end()) {
+            out.push_back(fmt::format("{} has no row in the budget: add one", name));
+            continue;
+        }
+        row->seen = true;
+        for (const auto& [what, limit] : {std::pair{"Instructions", row->instructions}, std::pair{"VGPRs", row->vgprs}})
+            if (const double v = st.value(what, 0.0); v > 1.1 * limit)
+                out.push_back(
+                    fmt::format("{}: {} {:.0f}, more than 10 % over its budget of {:.0f}", name, what, v, limit));
+    }
+    for (const BudgetRow& r : budget)
+        if (!r.seen)
+            out.push_back(
+                fmt::format("{} / {} is in the budget but was not built: remove its row", r.pipeline, r.stage));
+    return out;
+}
+
 int run_shader_stats(const ShaderStatsArgs& a) {
     const char* verb = "shader-stats";
     std::unique_ptr<AtomicFile> json_file;
     if (!a.json.empty()) {
         json_file = std::make_unique<AtomicFile>(a.json);
         if (!json_file->status()) return fail(verb, json_file->status().error().message);
+    }
+    std::vector<BudgetRow> budget;
+    if (!a.budget.empty()) {
+        auto rows = read_budget(a.budget);
+        if (!rows) return fail(verb, rows.error().message);
+        budget = std::move(rows).value();
     }
     render::StandaloneOptions options;
     options.compile_only = true;  // nothing is drawn: a null device serves
@@ -84,6 +162,14 @@ int run_shader_stats(const ShaderStatsArgs& a) {
         }
         if (auto st = json_file->write_and_commit(j.dump(2) + "\n"); !st) return fail(verb, st.error().message);
     }
+    if (!a.budget.empty()) {
+        const std::vector<std::string> breaches = budget_breaches(*stages, budget);
+        for (const std::string& b : breaches)
+            std::fprintf(stderr, "tidewater shader-stats: over budget: %s\n", b.c_str());
+        if (!breaches.empty())
+            return fail(verb, fmt::format("{} stage(s) break the budget \"{}\" (update it on purpose, with the reason)",
+                                          breaches.size(), a.budget));
+    }
     return 0;
 }
 
@@ -96,6 +182,9 @@ Verb add_shader_stats_verb(CLI::App& app) {
         "The renderer's shaders as the driver compiles them, per pipeline and stage (instructions, registers, "
         "spills, latency), without drawing: works on a driver's null device (RADV_FORCE_FAMILY)");
     cmd->add_option("--json", args->json, "Write every statistic of every stage as JSON");
+    cmd->add_option("--budget", args->budget,
+                    "A table of each stage's instructions and VGPRs (CSV: pipeline,stage,instructions,vgprs); fail "
+                    "when a stage grows more than 10 % past its row, spills, or has no row");
     cmd->add_option("--samples", args->samples, "Samples per pixel of the targets (1, 2, 4 or 8)")
         ->check(CLI::IsMember({1, 2, 4, 8}));
     cmd->add_flag("--water-per-sample", args->water_per_sample, "The water shaded at every sample");
