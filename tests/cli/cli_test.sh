@@ -217,6 +217,7 @@ JSON
     done
     check "prints the file" grep -q "still.png" log.txt
     check "stats say why lavapipe has no shader statistics" grep -q '"pipelines_unavailable"' stats.json
+    check "stats count the water's fragment invocations" grep -q '"tessellation_evaluation"' stats.json
     "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
     check "multisampled still under validation" test $? -eq 0
     check "multisampled PNG written" test -s still4.png

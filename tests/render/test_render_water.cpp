@@ -15,6 +15,44 @@ namespace {
 // Waves break along the coast and not offshore: in the breaking view, water 10 to 30 m off
 // the coast (found from the shore model along rays from the centre) shows breaking and
 // water 1.1 km out shows none.
+// Where the device counts them (lavapipe does), each frame's timings say how many times
+// each stage ran per pass: the water's tessellation runs in the water pass alone, and
+// fragments follow the pixels drawn (four times the pixels, about four times the fragments).
+TEST_F(RenderTest, TimingsCountEachStagesInvocationsPerPass) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    render::FrameInfo frame;
+    frame.camera.position = scene->camera->position;
+    frame.camera.target = scene->camera->target;
+    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+    auto counted = [&](std::uint32_t w, std::uint32_t h) {
+        frame.frame_index += 1;
+        render(*scene, frame, w, h);
+        auto t = renderer_->timings(frame.frame_index);
+        EXPECT_TRUE(t.ok()) << t.error().message;
+        return t.ok() ? *t : render::PassTimings{};
+    };
+    const render::PassTimings small = counted(160, 90), large = counted(320, 180);
+    ASSERT_TRUE(small.invocations_counted) << "lavapipe has pipelineStatisticsQuery";
+    for (const render::PassTimings* t : {&small, &large}) {
+        EXPECT_EQ(t->opaque_invocations.tessellation_evaluation, 0u);
+        EXPECT_GT(t->opaque_invocations.vertex, 0u);
+        EXPECT_GT(t->water_invocations.tessellation_patches, 0u);
+        EXPECT_GT(t->water_invocations.tessellation_evaluation, t->water_invocations.tessellation_patches);
+        EXPECT_GT(t->water_invocations.fragment, 0u);
+        EXPECT_GE(t->opaque_invocations.fragment, std::uint64_t{160} * 90 / 2);
+    }
+    const double ratio = static_cast<double>(large.water_invocations.fragment) /
+                         static_cast<double>(small.water_invocations.fragment);
+    std::printf("water fragments: %llu at 160x90, %llu at 320x180 (x%.2f); opaque %llu, %llu\n",
+                static_cast<unsigned long long>(small.water_invocations.fragment),
+                static_cast<unsigned long long>(large.water_invocations.fragment), ratio,
+                static_cast<unsigned long long>(small.opaque_invocations.fragment),
+                static_cast<unsigned long long>(large.opaque_invocations.fragment));
+    EXPECT_GT(ratio, 3.0);
+    EXPECT_LT(ratio, 5.0);
+}
+
 TEST_F(RenderTest, WavesBreakAlongTheCoastOnly) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok());

@@ -96,6 +96,17 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                               {"scene_copy_ms", t->scene_copy_ms},
                               {"water_ms", t->water_ms},
                               {"total_ms", t->total_ms}});
+            if (t->invocations_counted) {
+                auto counts = [](const render::PassInvocations& c) {
+                    return nlohmann::json{{"vertex", c.vertex},
+                                          {"tessellation_patches", c.tessellation_patches},
+                                          {"tessellation_evaluation", c.tessellation_evaluation},
+                                          {"primitives", c.primitives},
+                                          {"fragment", c.fragment}};
+                };
+                frames.back()["invocations"] = {{"opaque", counts(t->opaque_invocations)},
+                                                {"water", counts(t->water_invocations)}};
+            }
         }
     }
     const render::RendererStats s = (*renderer)->stats();

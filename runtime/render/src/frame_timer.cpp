@@ -6,12 +6,33 @@
 
 namespace tidewater::render::detail {
 
+namespace {
+
+// Written in this order (the bits' order) by vkGetQueryPoolResults.
+constexpr VkQueryPipelineStatisticFlags kCounted =
+    VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT | VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
+constexpr std::uint32_t kCountedValues = 5;
+
+}  // namespace
+
 Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
     FrameTimer t;
     std::uint32_t family_count = 0;
     ctx.vk().GetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, nullptr);
     std::vector<VkQueueFamilyProperties> families(family_count);
     ctx.vk().GetPhysicalDeviceQueueFamilyProperties(ctx.physical_device, &family_count, families.data());
+    if (ctx.enabled_features.pipelineStatisticsQuery) {
+        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+        info.queryCount = pass_count * slots;
+        info.pipelineStatistics = kCounted;
+        TW_VK_TRY(make_owned(ctx, t.invocations_, [&](VkQueryPool* out) {
+            return ctx.vk().CreateQueryPool(ctx.device, &info, ctx.allocator, out);
+        }));
+    }
     if (ctx.queue_family >= family_count || families[ctx.queue_family].timestampValidBits == 0) return t;
     VkPhysicalDeviceProperties props;
     ctx.vk().GetPhysicalDeviceProperties(ctx.physical_device, &props);
@@ -25,7 +46,16 @@ Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
     return t;
 }
 
+void FrameTimer::begin_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const {
+    if (invocations_) vk.CmdBeginQuery(cmd, invocations_.get(), slot * pass_count + pass, 0);
+}
+
+void FrameTimer::end_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const {
+    if (invocations_) vk.CmdEndQuery(cmd, invocations_.get(), slot * pass_count + pass);
+}
+
 void FrameTimer::begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const {
+    if (invocations_) vk.CmdResetQueryPool(cmd, invocations_.get(), slot * pass_count, pass_count);
     if (!pool_) return;
     vk.CmdResetQueryPool(cmd, pool_.get(), slot * mark_count, mark_count);
     vk.CmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), slot * mark_count + start);
@@ -49,6 +79,20 @@ Result<PassTimings> FrameTimer::read(const Device& ctx, std::uint32_t slot) cons
     p.scene_copy_ms = ms(opaque_done, copy_done);
     p.water_ms = ms(copy_done, water_done);
     p.total_ms = ms(start, water_done);
+    if (invocations_) {
+        std::uint64_t counts[pass_count][kCountedValues];
+        const VkResult c =
+            ctx.vk().GetQueryPoolResults(ctx.device, invocations_.get(), slot * pass_count, pass_count, sizeof(counts),
+                                         counts, sizeof(counts[0]), VK_QUERY_RESULT_64_BIT);
+        if (c != VK_SUCCESS) return vk_error(c, "vkGetQueryPoolResults (pipeline statistics)");
+        auto invocations = [&](Pass pass) {
+            const std::uint64_t* v = counts[pass];
+            return PassInvocations{v[0], v[3], v[4], v[1], v[2]};
+        };
+        p.invocations_counted = true;
+        p.opaque_invocations = invocations(opaque_pass);
+        p.water_invocations = invocations(water_pass);
+    }
     return p;
 }
 

@@ -1,5 +1,7 @@
 // GPU timestamps per frame (private): four marks per in-flight slot, read back
-// as the time of each pass once the host knows the frame has finished.
+// as the time of each pass once the host knows the frame has finished; and, where the
+// device enabled pipelineStatisticsQuery, the invocations of each stage in the opaque
+// and the water pass.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -23,11 +25,16 @@ class FrameTimer {
     void begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const;
     void mark(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Mark mark,
               VkPipelineStageFlagBits stage) const;
+    enum Pass : std::uint32_t { opaque_pass, water_pass, pass_count };
+    /// Begins and ends counting `pass`'s invocations (outside the pass's rendering).
+    void begin_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const;
+    void end_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const;
     /// The slot's pass times; fails while the GPU has not finished it.
     Result<PassTimings> read(const Device& ctx, std::uint32_t slot) const;
 
   private:
     OwnedQueryPool pool_;
+    OwnedQueryPool invocations_;  ///< pass_count per slot; none without pipelineStatisticsQuery
     double period_ns_ = 1.0;
 };
 

@@ -669,9 +669,11 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     detail::FramePasses passes(t, m.depth_target->attachment_layout,
                                msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
     if (msaa) m.copies.depth_to_resolve(vk, cmd);
+    m.timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
     vk.CmdBeginRendering(cmd, &passes.rendering);
     m.draw_opaque(cmd, *slot, t.extent, frame.view);
     vk.CmdEndRendering(cmd);
+    m.timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
     if (msaa) m.copies.depth_resolved(vk, cmd);
     m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
 
@@ -679,9 +681,11 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
 
     passes.load_for_water(t);
+    m.timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
     vk.CmdBeginRendering(cmd, &passes.rendering);
     m.draw_water(cmd, *slot, plan, t.extent, frame.view);
     vk.CmdEndRendering(cmd);
+    m.timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
     m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::water_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
     return {};
 }

@@ -29,6 +29,7 @@
     X(BeginCommandBuffer)                \
     X(BindBufferMemory)                  \
     X(BindImageMemory)                   \
+    X(CmdBeginQuery)                     \
     X(CmdBeginRendering)                 \
     X(CmdBindDescriptorSets)             \
     X(CmdBindIndexBuffer)                \
@@ -40,6 +41,7 @@
     X(CmdDispatch)                       \
     X(CmdDraw)                           \
     X(CmdDrawIndexed)                    \
+    X(CmdEndQuery)                       \
     X(CmdEndRendering)                   \
     X(CmdPipelineBarrier)                \
     X(CmdPushConstants)                  \

@@ -150,12 +150,25 @@ struct FrameInfo {
     std::span<const FloatDraw> floats;
 };
 
-/// GPU time per pass of one frame, from timestamp queries (ms).
+/// How many times each stage ran in one pass, from a pipeline statistics query.
+struct PassInvocations {
+    std::uint64_t vertex = 0;               ///< vertex shader invocations
+    std::uint64_t tessellation_patches = 0;  ///< tessellation control shader patches
+    std::uint64_t tessellation_evaluation = 0;
+    std::uint64_t primitives = 0;  ///< primitives that reached the clipper
+    std::uint64_t fragment = 0;    ///< fragment shader invocations
+};
+
+/// GPU time per pass of one frame, from timestamp queries (ms), and where the device
+/// enabled pipelineStatisticsQuery (DeviceContext::enabled_features), how many times
+/// each stage ran in the opaque pass (sky, terrain, floats) and the water's.
 struct PassTimings {
     double sky_and_terrain_ms = 0.0;
     double scene_copy_ms = 0.0;
     double water_ms = 0.0;
     double total_ms = 0.0;
+    bool invocations_counted = false;
+    PassInvocations opaque_invocations, water_invocations;
 };
 
 struct RendererStats {
