@@ -218,6 +218,9 @@ JSON
     check "prints the file" grep -q "still.png" log.txt
     check "stats say why lavapipe has no shader statistics" grep -q '"pipelines_unavailable"' stats.json
     check "stats count the water's fragment invocations" grep -q '"tessellation_evaluation"' stats.json
+    "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
+    check "a 16 MiB budget renders under validation" test $? -eq 0
+    check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json
     "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
     check "multisampled still under validation" test $? -eq 0
     check "multisampled PNG written" test -s still4.png
@@ -242,6 +245,8 @@ JSON
     expect_error "turbidity out of range" "--turbidity" "$TW" render --turbidity 20 --out o.png
     expect_error "sun of zero length" "--sun" "$TW" render --sun 0 0 0 --out o.png
     expect_error "odd sample count" "--samples" "$TW" render --samples 3 --out o.png
+    expect_error "memory budget too small" "--gpu-memory" "$TW" render --gpu-memory 8 --out o.png
+    expect_error "memory budget not a number" "--gpu-memory" "$TW" render --gpu-memory nan --out o.png
     expect_error "per-sample water without samples" "--water-per-sample: needs --samples" "$TW" render --water-per-sample --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json

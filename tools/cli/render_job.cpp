@@ -45,6 +45,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     init.wireframe = init.device.enabled_features.fillModeNonSolid;  // the wireframe view where the device has it
     init.samples = job.samples;
     init.shade_water_per_sample = job.water_per_sample;
+    init.gpu_memory_budget = job.gpu_memory_budget;
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     if (auto st = (*renderer)->set_scene(scene); !st) return st.error();

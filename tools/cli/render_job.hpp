@@ -26,6 +26,7 @@ struct RenderJob {
     double sky_turbidity = 2.5;                             ///< Preetham sky, in [1.7, 10].
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Multisampling (antialiased edges).
     bool water_per_sample = false;                          ///< RendererInitInfo::shade_water_per_sample (samples > 1).
+    std::uint64_t gpu_memory_budget = render::RendererInitInfo{}.gpu_memory_budget;  ///< bytes
 };
 
 struct RenderResult {

@@ -37,6 +37,7 @@ struct RenderArgs {
     double turbidity = 2.5;
     int samples = 1;
     bool water_per_sample = false;
+    double gpu_memory_mib = 1024.0;
     bool validate = false;
 };
 
@@ -102,6 +103,9 @@ int run_render(const RenderArgs& a) {
     job.samples = static_cast<VkSampleCountFlagBits>(a.samples);
     if (a.water_per_sample && a.samples == 1) return fail(verb, "--water-per-sample: needs --samples 2, 4 or 8");
     job.water_per_sample = a.water_per_sample;
+    if (!(a.gpu_memory_mib >= 16.0 && a.gpu_memory_mib <= 1048576.0))
+        return fail(verb, fmt::format("--gpu-memory: {} MiB is out of range (16 to 1048576)", a.gpu_memory_mib));
+    job.gpu_memory_budget = static_cast<std::uint64_t>(a.gpu_memory_mib * 1048576.0);
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -145,6 +149,10 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);
     cmd->add_option("--fov", args->fov, "Vertical field of view, degrees");
     cmd->add_option("--sun", args->sun, "Direction toward the sun x y z (y up)")->expected(3);
+    cmd->add_option("--gpu-memory", args->gpu_memory_mib,
+                    "Device memory the scene's data may take, MiB (16 or more): over it the terrain and the "
+                    "shore fields are drawn coarser, the shore's tiles near the camera streamed in full")
+        ->capture_default_str();
     cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")
         ->capture_default_str();
     cmd->add_flag(
