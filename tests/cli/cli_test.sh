@@ -281,6 +281,19 @@ JSON
     expect_error "lavapipe has no statistics: says what to run" "RADV_FORCE_FAMILY" "$TW" shader-stats --json lvp.json
     check "no JSON after failure" no_file lvp.json
     ;;
+  gpu_cost)
+    # Invocations counted on lavapipe, each stage's cycles from RADV's null device.
+    "$TW" gpu-cost --sizes 160x90 --json cost.json --markdown cost.md > table.md
+    check "exit 0" test $? -eq 0
+    for gpu in navi21 gfx1100; do
+      check "$gpu estimated for both views" test "$(grep -c "| $gpu |" cost.md)" -eq 2
+    done
+    check "the water costs something on navi21" awk -F'|' '$2 ~ /scene/ && $4 ~ /navi21/ { gsub(/[* ]/, "", $9); found = ($9 + 0 > 0) } END { exit !found }' cost.md
+    check "JSON keeps the invocations" grep -q '"tessellation_evaluation"' cost.json
+    expect_error "RADV missing: says so" "RADV is missing" "$TW" gpu-cost --sizes 160x90 --radv-icd /no/such/radeon.json --json gone.json
+    check "no JSON after failure" no_file gone.json
+    expect_error "bad size" "--sizes" "$TW" gpu-cost --sizes 10x10
+    ;;
   bake)
     "$TW" bake --resolution 256 --out baked --quiet > log.txt
     check "exit 0" test $? -eq 0

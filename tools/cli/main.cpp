@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
 #if defined(TIDEWATER_HAVE_RENDER)
         verbs.push_back(add_render_verb(app));
         verbs.push_back(add_shader_stats_verb(app));
+        verbs.push_back(add_gpu_cost_verb(app));
 #endif
         CLI11_PARSE(app, argc, argv);
         for (const Verb& v : verbs) {

@@ -22,6 +22,7 @@ Verb add_inspect_verb(CLI::App& app);
 #if defined(TIDEWATER_HAVE_RENDER)
 Verb add_render_verb(CLI::App& app);
 Verb add_shader_stats_verb(CLI::App& app);
+Verb add_gpu_cost_verb(CLI::App& app);
 #endif
 
 /// Prints "tidewater <verb>: <message>" to stderr and returns the exit code for failures.
