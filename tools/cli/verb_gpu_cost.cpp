@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "atomic_file.hpp"
+#include "extent_option.hpp"
 #include "gpu_cost_model.hpp"
 #include "render_job.hpp"
 #include "scene_option.hpp"
@@ -96,19 +97,6 @@ Result<StageCosts> read_stage_costs(const std::filesystem::path& json) {
     return costs;
 }
 
-Result<VkExtent2D> parse_extent(const std::string& text) {
-    const auto x = text.find('x');
-    unsigned w = 0, h = 0;
-    if (x != std::string::npos) {
-        const auto a = std::from_chars(text.data(), text.data() + x, w);
-        const auto b = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
-        if (a.ec == std::errc() && a.ptr == text.data() + x && b.ec == std::errc() &&
-            b.ptr == text.data() + text.size() && w >= 16 && h >= 16 && w <= 8192 && h <= 8192)
-            return VkExtent2D{w, h};
-    }
-    return Error{ErrorCode::invalid_argument, fmt::format("--sizes: \"{}\" is not WxH with 16 <= W, H <= 8192", text)};
-}
-
 /// The standard views: the scene's camera, and the horizon seen from 3 m above the water
 /// along the same heading.
 std::vector<std::pair<std::string, render::Camera>> standard_views(const Scene& scene) {
@@ -126,7 +114,7 @@ int run_gpu_cost(const GpuCostArgs& a) {
     const char* verb = "gpu-cost";
     std::vector<VkExtent2D> sizes;
     for (const std::string& s : a.sizes) {
-        auto e = parse_extent(s);
+        auto e = parse_extent(s, "--sizes");
         if (!e) return fail(verb, e.error().message);
         sizes.push_back(*e);
     }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "atomic_file.hpp"
+#include "extent_option.hpp"
 #include "render_job.hpp"
 #include "scene_option.hpp"
 #include "time_range.hpp"
@@ -41,19 +42,6 @@ struct RenderArgs {
     bool validate = false;
 };
 
-Result<VkExtent2D> parse_size(const std::string& text) {
-    const auto x = text.find('x');
-    unsigned w = 0, h = 0;
-    if (x != std::string::npos) {
-        const auto a = std::from_chars(text.data(), text.data() + x, w);
-        const auto b = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
-        if (a.ec == std::errc() && a.ptr == text.data() + x && b.ec == std::errc() &&
-            b.ptr == text.data() + text.size() && w >= 16 && h >= 16 && w <= 8192 && h <= 8192)
-            return VkExtent2D{w, h};
-    }
-    return Error{ErrorCode::invalid_argument, fmt::format("--size: \"{}\" is not WxH with 16 <= W, H <= 8192", text)};
-}
-
 /// The debug views' names, "shaded, height, ...", from the renderer's own list.
 std::string view_names() {
     std::string names;
@@ -64,7 +52,7 @@ std::string view_names() {
 
 int run_render(const RenderArgs& a) {
     constexpr const char* verb = "render";
-    auto extent = parse_size(a.size);
+    auto extent = parse_extent(a.size, "--size");
     if (!extent) return fail(verb, extent.error().message);
     if (auto st = check_time(a.time, "--time"); !st) return fail(verb, st.error().message);
     const auto view = render::parse_debug_view(a.view);
