@@ -34,10 +34,20 @@ for size in 1920x1080 3840x2160; do
   run hilo "$size" --scene examples/scenes/hilo_bay.json
 done
 run default_msaa4 1920x1080 --samples 4
+# The driver's own statistics of each stage (where it exposes them) and the cost model's
+# estimate beside the measured times (its invocations counted on this GPU).
+"$B/bin/tidewater" shader-stats --json "$W/stats/shader_stats.json" >>"$LOG" 2>&1
+echo "shader-stats rc=$?" >>"$LOG"
+if [ -f /usr/share/vulkan/icd.d/radeon_icd.x86_64.json ]; then
+  "$B/bin/tidewater" gpu-cost --json "$W/stats/gpu_cost.json" >>"$LOG" 2>&1
+  echo "gpu-cost rc=$?" >>"$LOG"
+fi
 python3 - "$W/stats" >>"$LOG" 2>&1 <<'PY'
 import json, sys, glob, os, statistics as st
 for f in sorted(glob.glob(sys.argv[1] + "/*.json")):
-    d = json.load(open(f)); fr = d["frames"][10:]  # frames 10-29: past pipeline warm-up
+    d = json.load(open(f))
+    if "frames" not in d: continue  # shader-stats and gpu-cost outputs, kept as they are
+    fr = d["frames"][10:]  # frames 10-29: past pipeline warm-up
     if not fr: print(os.path.basename(f), "no frames"); continue
     med = {k: st.median(x[k] for x in fr) for k in ("sky_and_terrain_ms", "scene_copy_ms", "water_ms", "total_ms")}
     lo, hi = min(x["total_ms"] for x in fr), max(x["total_ms"] for x in fr)
