@@ -95,6 +95,39 @@ class RenderTest : public test::VulkanTest {
     int dumped_ = 0;
 };
 
+/// A frame seen from `scene`'s own camera at `time`.
+inline render::FrameInfo scene_camera_frame(const Scene& scene, double time = 0.0) {
+    render::FrameInfo frame;
+    if (scene.camera) {
+        frame.camera.position = scene.camera->position;
+        frame.camera.target = scene.camera->target;
+        frame.camera.fov_y_deg = scene.camera->fov_y_deg;
+    }
+    frame.time = time;
+    return frame;
+}
+
+/// A renderer of its own on `device` whose memory budget is `budget` bytes and that
+/// streams at most `stream_per_frame` bytes of shore tiles a frame, with `scene` set; null
+/// (and the test failed) when it cannot be made.
+inline std::unique_ptr<render::Renderer> renderer_within_budget(
+    const render::DeviceContext& device, const Scene& scene, std::uint64_t budget,
+    std::uint64_t stream_per_frame = render::RendererInitInfo{}.shore_stream_bytes_per_frame) {
+    render::RendererInitInfo init;
+    init.device = device;
+    init.color_format = render::OffscreenTarget::kColorFormat;
+    init.depth_format = render::OffscreenTarget::kDepthFormat;
+    init.wireframe = false;
+    init.gpu_memory_budget = budget;
+    init.shore_stream_bytes_per_frame = stream_per_frame;
+    auto renderer = render::Renderer::create(init);
+    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
+    if (!renderer.ok()) return nullptr;
+    const Status set = (*renderer)->set_scene(scene);
+    EXPECT_TRUE(set.ok()) << set.error().message;
+    return set.ok() ? std::move(renderer).value() : nullptr;
+}
+
 inline bool is_sky(Rgb c) {
     return c.b > c.r + 0.1 && c.b > 0.45;
 }

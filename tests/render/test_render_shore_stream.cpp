@@ -18,27 +18,18 @@ struct StreamedFrames {
 StreamedFrames render_streaming(const render::DeviceContext& device, const Scene& scene, render::FrameInfo frame,
                                 std::uint64_t budget, std::uint64_t per_frame, int frames) {
     StreamedFrames out;
-    render::RendererInitInfo init;
-    init.device = device;
-    init.color_format = render::OffscreenTarget::kColorFormat;
-    init.depth_format = render::OffscreenTarget::kDepthFormat;
-    init.wireframe = false;
-    init.gpu_memory_budget = budget;
-    init.shore_stream_bytes_per_frame = per_frame;
-    auto renderer = render::Renderer::create(init);
-    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
-    if (!renderer.ok()) return out;
-    EXPECT_TRUE((*renderer)->set_scene(scene).ok());
+    auto renderer = test::renderer_within_budget(device, scene, budget, per_frame);
+    if (!renderer) return out;
     auto target = render::OffscreenTarget::create(device, 320, 180);
     EXPECT_TRUE(target.ok());
     if (!target.ok()) return out;
     for (int f = 0; f < frames; ++f) {
         frame.frame_index = static_cast<std::uint64_t>(f);
-        auto img = (*target)->render(**renderer, frame);
+        auto img = (*target)->render(*renderer, frame);
         EXPECT_TRUE(img.ok()) << img.error().message;
         if (!img.ok()) return out;
         out.image = std::move(img).value();
-        out.stats = (*renderer)->stats();
+        out.stats = renderer->stats();
         out.frames_streaming += out.stats.shore_streamed_bytes > 0 ? 1 : 0;
     }
     return out;
@@ -51,11 +42,7 @@ StreamedFrames render_streaming(const render::DeviceContext& device, const Scene
 TEST_F(RenderTest, ShoreTilesNearTheCameraStreamInOverFrames) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
-    render::FrameInfo frame;
-    frame.camera.position = scene->camera->position;
-    frame.camera.target = scene->camera->target;
-    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
-    frame.time = 3.0;
+    render::FrameInfo frame = test::scene_camera_frame(*scene, 3.0);
     for (const render::DebugView view : {render::DebugView::shore, render::DebugView::shaded}) {
         frame.view = view;
         const render::RgbaImage full = render(*scene, frame, 320, 180);

@@ -117,24 +117,16 @@ BudgetFrame render_within_budget(const render::DeviceContext& device, const Scen
                                  const render::FrameInfo& frame, std::uint64_t budget, std::uint32_t w,
                                  std::uint32_t h) {
     BudgetFrame out;
-    render::RendererInitInfo init;
-    init.device = device;
-    init.color_format = render::OffscreenTarget::kColorFormat;
-    init.depth_format = render::OffscreenTarget::kDepthFormat;
-    init.wireframe = false;
-    init.gpu_memory_budget = budget;
-    auto renderer = render::Renderer::create(init);
-    EXPECT_TRUE(renderer.ok()) << renderer.error().message;
-    if (!renderer.ok()) return out;
-    EXPECT_TRUE((*renderer)->set_scene(scene).ok());
+    auto renderer = test::renderer_within_budget(device, scene, budget);
+    if (!renderer) return out;
     auto target = render::OffscreenTarget::create(device, w, h);
     EXPECT_TRUE(target.ok());
     if (!target.ok()) return out;
-    auto img = (*target)->render(**renderer, frame);
+    auto img = (*target)->render(*renderer, frame);
     EXPECT_TRUE(img.ok()) << img.error().message;
     if (!img.ok()) return out;
     out.image = std::move(img).value();
-    out.stats = (*renderer)->stats();
+    out.stats = renderer->stats();
     return out;
 }
 
@@ -169,11 +161,7 @@ TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserTerrain) {
 TEST_F(RenderTest, ASmallMemoryBudgetDrawsCoarserShoreFields) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
-    render::FrameInfo frame;
-    frame.camera.position = scene->camera->position;
-    frame.camera.target = scene->camera->target;
-    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
-    frame.time = 3.0;
+    const render::FrameInfo frame = test::scene_camera_frame(*scene, 3.0);
     const render::RgbaImage full = render(*scene, frame, 320, 180);
     EXPECT_EQ(renderer_->stats().shore_stride, 1u);
     EXPECT_GT(renderer_->stats().shore_bytes, 16ull << 20);

@@ -21,10 +21,7 @@ namespace {
 TEST_F(RenderTest, TimingsCountEachStagesInvocationsPerPass) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
-    render::FrameInfo frame;
-    frame.camera.position = scene->camera->position;
-    frame.camera.target = scene->camera->target;
-    frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+    render::FrameInfo frame = test::scene_camera_frame(*scene);
     auto counted = [&](std::uint32_t w, std::uint32_t h) {
         frame.frame_index += 1;
         render(*scene, frame, w, h);
@@ -42,8 +39,8 @@ TEST_F(RenderTest, TimingsCountEachStagesInvocationsPerPass) {
         EXPECT_GT(t->water_invocations.fragment, 0u);
         EXPECT_GE(t->opaque_invocations.fragment, std::uint64_t{160} * 90 / 2);
     }
-    const double ratio = static_cast<double>(large.water_invocations.fragment) /
-                         static_cast<double>(small.water_invocations.fragment);
+    const double ratio =
+        static_cast<double>(large.water_invocations.fragment) / static_cast<double>(small.water_invocations.fragment);
     std::printf("water fragments: %llu at 160x90, %llu at 320x180 (x%.2f); opaque %llu, %llu\n",
                 static_cast<unsigned long long>(small.water_invocations.fragment),
                 static_cast<unsigned long long>(large.water_invocations.fragment), ratio,

@@ -179,9 +179,9 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     VkPhysicalDeviceFeatures supported;
     vkGetPhysicalDeviceFeatures(chosen->device, &supported);
     VkPhysicalDeviceFeatures enabled{};
-    enabled.fillModeNonSolid = supported.fillModeNonSolid;      // wireframe debug view
-    enabled.tessellationShader = supported.tessellationShader;  // water level of detail
-    enabled.sampleRateShading = supported.sampleRateShading;    // water shaded per sample (optional)
+    enabled.fillModeNonSolid = supported.fillModeNonSolid;                // wireframe debug view
+    enabled.tessellationShader = supported.tessellationShader;            // water level of detail
+    enabled.sampleRateShading = supported.sampleRateShading;              // water shaded per sample (optional)
     enabled.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;  // invocations per pass (optional)
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;

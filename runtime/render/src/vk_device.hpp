@@ -90,7 +90,7 @@
 
 // Loaded when DeviceContext::pipeline_executable_info says the extension is enabled.
 #define TIDEWATER_VK_PIPELINE_EXECUTABLE_FUNCTIONS(X) \
-    X(GetPipelineExecutablePropertiesKHR)            \
+    X(GetPipelineExecutablePropertiesKHR)             \
     X(GetPipelineExecutableStatisticsKHR)
 
 namespace tidewater::render::detail {

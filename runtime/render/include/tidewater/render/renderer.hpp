@@ -152,7 +152,7 @@ struct FrameInfo {
 
 /// How many times each stage ran in one pass, from a pipeline statistics query.
 struct PassInvocations {
-    std::uint64_t vertex = 0;               ///< vertex shader invocations
+    std::uint64_t vertex = 0;                ///< vertex shader invocations
     std::uint64_t tessellation_patches = 0;  ///< tessellation control shader patches
     std::uint64_t tessellation_evaluation = 0;
     std::uint64_t primitives = 0;  ///< primitives that reached the clipper
