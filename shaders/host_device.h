@@ -263,7 +263,8 @@ struct GpuFrame {
     mat4 inv_view_proj;
     vec4 camera;             // xyz: camera position relative to O; w: ripple/caustic time, s (reduced)
     vec4 sun;                // xyz: unit direction toward the sun; w: intensity
-    vec4 params;             // x: water level (m); y: wave count; z: tessellation scale; w: debug view
+    vec4 params;             // x: water level (m); y: wave count; z: projection scale, pixels per metre across the
+                             // view at 1 m from the camera (height / (2 tan(fov_y / 2))); w: debug view
     vec4 terrain_rect;       // xy: corner of the terrain height texture relative to O (m); zw: its size (m)
     vec4 terrain_heights;    // x: the highest ground (m); y: the height of texel value 0 (m); z: metres per unit
                              // texel value; w: the seabed the terrain fades to beyond its edge (m)
@@ -274,8 +275,12 @@ struct GpuFrame {
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
     vec4 origin_mod;         // xy: O mod 2048 m (caustics, foam grain); zw: unused
-    vec4 water_density;      // x: water vertices and shading footprints per pixel side: 1, or sqrt(samples)
-                             // where the water shades every sample of a multisampled target; yzw: unused
+    vec4 water_density;      // x: water shading footprints per pixel side: 1, or sqrt(samples) where the water
+                             // shades every sample of a multisampled target; y: the water's vertex spacing on
+                             // screen, in footprints (QualitySettings::water_pixels_per_vertex); z: 1 where the
+                             // scene copy's depth is each pixel's (single-sample targets), else 0; w: how much
+                             // further apart the vertices may be along the view than across it
+                             // (QualitySettings::water_max_foreshortening)
     // The Preetham sky (runtime/render/src/sky_model.hpp): A, B, C, D of the Perez
     // function for luminance Y and chromaticity x, y; their E; the zenith values over
     // F(0, theta_s) with Y divided by the zenith luminance (the exposure's reference).

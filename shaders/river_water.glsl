@@ -87,8 +87,8 @@ SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, WaveLod lod) {
         vec2 kvec = w.k_amp.x * tangent + w.k_amp.y * left;
         float theta = fma(kvec.x, e.x, fma(kvec.y, e.y, river_wave_phase(w, sn)));
         float a = w.k_amp.z * ramp;
-        if (a > 0.0) a *= wave_lod_weight(kvec, lod);
-        add_wave(s, kvec, a, w.k_amp.w, w.omega_phase.x, theta);
+        vec2 shares = a > 0.0 ? wave_lod_shares(kvec, lod) : vec2(1.0);
+        add_wave_compressing(s, kvec, a * shares.x, w.k_amp.w, w.omega_phase.x, theta, shares.y);
     }
     s.eta += surface;
     s.slope += surface_slope;

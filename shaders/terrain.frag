@@ -48,10 +48,10 @@ void main() {
     vec3 v = to_camera / distance;
     // The ground's normal from the height texture over about a pixel's footprint: every
     // texel's detail near by, whatever the mesh's level, and no aliasing far away.
-    vec3 geo_n = terrain_normal_at(world_pos.xz, distance / (3.0 * frame.params.z));
-    // The pixel's footprint on the ground, stretched at grazing angles.
-    // (A pixel spans distance / (3 * tessellation scale) metres, see GpuFrame.params.)
-    float footprint = distance / (3.0 * frame.params.z) / max(abs(dot(v, geo_n)), 0.1);
+    vec3 geo_n = terrain_normal_at(world_pos.xz, distance / frame.params.z);
+    // The pixel's footprint on the ground (distance / projection scale across the view,
+    // see GpuFrame.params), stretched at grazing angles.
+    float footprint = distance / frame.params.z / max(abs(dot(v, geo_n)), 0.1);
     vec2 xz = world_pos.xz + frame.origin_mod.xy;
     vec3 detail = ground_detail(xz, footprint);
     float slope = 1.0 - geo_n.y;

@@ -106,6 +106,10 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
 }
 
 void main() {
+    // Water behind the opaque scene (the sea under the land) leaves before it is shaded:
+    // the ownership test below keeps the depth test after the shader, where hardware may not
+    // reject it early.
+    if (frame.water_density.z > 0.5 && gl_FragCoord.z < texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r) discard;
     if (!owns_water(draw_push.draw_index, rest_xz)) discard;
     GpuBodyDraw d = draws[draw_push.draw_index];
     float max_eta = max(d.extra.w, 1e-3);
@@ -220,7 +224,7 @@ void main() {
     if (view == kViewNormals) color = n * 0.5 + 0.5;
     if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
     if (view == kViewDepth) color = heat_color(column_depth / 40.0);
-    if (view == kViewLod) color = heat_color(log2(vertex_spacing(distance) * 4.0) / 8.0);  // the vertex spacing (water_lod.glsl)
+    if (view == kViewLod) color = heat_color(log2(lod.spacing_along * 4.0) / 8.0);  // the vertex spacing along the view (water_lod.glsl)
     if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
     if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
     if (view == kViewBreaking) color = heat_color(shore_info.y);

@@ -9,8 +9,8 @@ layout(location = 0) in vec2 patch_xz[];
 layout(location = 0) out vec2 control_xz[];
 
 float edge_level(vec2 a, vec2 b) {
-    float spacing = vertex_spacing(camera_distance(0.5 * (a + b), draws[draw_push.draw_index].body.y));
-    return clamp(length(b - a) / spacing, 1.0, 64.0);
+    GpuBodyDraw d = draws[draw_push.draw_index];
+    return tessellation_level(a, b, d.body.y, d.lod.x);
 }
 
 bool outside_frustum() {

@@ -54,9 +54,10 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
             a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);
             q *= g_shore_fields.z;
         }
-        if (a > 0.0) a *= wave_lod_weight(kvec, lod);
-        add_wave(s, kvec, a, q, w.steep_omega.y, theta);
-        if (g_track_lags) add_wave_lags(g_lagged, kvec, a, q, w.lag_turn.xy, theta);
+        vec2 shares = a > 0.0 ? wave_lod_shares(kvec, lod) : vec2(1.0);
+        a *= shares.x;
+        add_wave_compressing(s, kvec, a, q, w.steep_omega.y, theta, shares.y);
+        if (g_track_lags) add_wave_lags(g_lagged, kvec, a * shares.y, q, w.lag_turn.xy, theta);
     }
     return s;
 }

@@ -5,13 +5,9 @@
 #define TIDEWATER_WATER_LOD_GLSL
 #include "water_point.glsl"
 
-// Distance from the camera to a point of water at rest height `level`.
-float camera_distance(vec2 xz, float level) {
-    return length(vec3(xz.x, level, xz.y) - frame.camera.xyz);
-}
-// Target vertex spacing (m) at a distance: grows linearly with distance, and is finer
-// where the water shades every sample (the shading's footprint is a sample's).
-float vertex_spacing(float distance) {
+// The shading's footprint across the view at a distance (m): a pixel, or a sample where
+// the water shades every sample of a multisampled target.
+float footprint_across(float distance) {
     return max(distance, 1.0) / (frame.params.z * frame.water_density.x);
 }
 
@@ -51,11 +47,31 @@ WaveLod wave_lod_at(vec2 xz, float level, float mean_square_slope) {
     float horizontal = max(length(to_camera.xz), 1e-4);
     float elevation = max(to_camera.y, 0.0) / horizontal;
     WaveLod lod;
-    lod.spacing = vertex_spacing(distance);
     lod.toward = to_camera.xz / horizontal;
-    lod.across = lod.spacing / 3.0;  // vertices are 3 pixels apart
+    lod.across = footprint_across(distance);
     float meets = elevation + visible_slopes(elevation, sqrt(0.5 * mean_square_slope)).x;
-    lod.along = lod.across * min(sqrt(1.0 + 1.0 / max(meets * meets, 1e-4)), 100.0);
+    float stretch = min(sqrt(1.0 + 1.0 / max(meets * meets, 1e-4)), 100.0);
+    lod.along = lod.across * stretch;
+    lod.spacing = frame.water_density.y * lod.across;
+    lod.spacing_along = lod.spacing * min(stretch, frame.water_density.w);
     return lod;
+}
+
+// How many vertices an edge from a to b needs at the vertex spacing wanted at `at`.
+float vertices_along(vec2 e, vec2 at, float level, float mean_square_slope) {
+    WaveLod lod = wave_lod_at(at, level, mean_square_slope);
+    return length(vec2(dot(e, lod.toward) / lod.spacing_along, dot(e, vec2(-lod.toward.y, lod.toward.x)) / lod.spacing));
+}
+
+// How many vertices the water's tessellation puts along a rest-plane edge from a to b:
+// its length on screen over the vertex spacing where that spacing is finest of its ends
+// and middle, so that the mesh is nowhere coarser than the spacing each vertex fades its
+// waves by (along the view the spacing grows with the square of the distance), and the
+// patches on both sides of an edge agree (no cracks).
+float tessellation_level(vec2 a, vec2 b, float level, float mean_square_slope) {
+    vec2 e = b - a;
+    float n = max(vertices_along(e, a, level, mean_square_slope), vertices_along(e, b, level, mean_square_slope));
+    n = max(n, vertices_along(e, 0.5 * (a + b), level, mean_square_slope));
+    return clamp(n, 1.0, 64.0);
 }
 #endif

@@ -27,17 +27,22 @@ SurfaceSums surface_zero() {
 
 // One wave with local wavevector K = k D (rad/m), amplitude a (m), steepness q and
 // angular frequency omega, at phase theta. Zero amplitude adds exactly nothing.
-void add_wave(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, float theta) {
+// `m_gain` scales the wave's compression (the sums m) alone: 1 but for the render's
+// vertices (wave_lod_shares).
+void add_wave_compressing(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, float theta, float m_gain) {
     float k = length(kvec);
     vec2 d = kvec / (k > 0.0 ? k : 1.0);
     float sn = sin(theta);
     float cs = cos(theta);
     float qa = q * a;
     s.disp += qa * d * cs;
-    s.m += qa * k * sn * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
+    s.m += m_gain * qa * k * sn * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
     s.eta += a * sn;
     s.slope += a * kvec * cs;
     s.velocity += vec3(qa * omega * d.x * sn, -a * omega * cs, qa * omega * d.y * sn);
+}
+void add_wave(inout SurfaceSums s, vec2 kvec, float a, float q, float omega, float theta) {
+    add_wave_compressing(s, kvec, a, q, omega, theta, 1.0);
 }
 
 // The compression a particle's crest had earlier (tidewater::detail::LaggedCompression):
@@ -105,22 +110,26 @@ float crest_foam(float jacobian, float whitecap_jacobian) {
 
 // Render LOD, seed 000's "fewer waves far away": a wave keeps full amplitude while its
 // wavelength spans 4+ vertices, none below 2; continuous in space (no seams, no popping).
-float wave_lod_fade(float wavelength, float spacing) {
-    return smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
+// `vertex_phase`: the phase the wave turns through from one vertex to the next (rad).
+float wave_lod_fade(float vertex_phase) {
+    return smoothstep(2.0, 4.0, 6.2831853 / max(vertex_phase, 1e-6));
 }
 
-// Render LOD at a point of water: the vertex spacing (m; 0 for no LOD, as queries) and
-// the footprint of a pixel there on the rest plane: one pixel across the view (m), and
-// along it (m), stretched by the angle at which the view meets the water (wave_lod_at);
-// `toward` is the horizontal direction to the camera.
+// Render LOD at a point of water: the vertex spacing across the view (m; 0 for no LOD, as
+// queries) and along it (m), and the footprint of a pixel there on the rest plane: one
+// pixel across the view (m), and along it (m), stretched by the angle at which the view
+// meets the water (wave_lod_at); `toward` is the horizontal direction to the camera.
+// The vertices are a fixed number of pixels apart on screen, so along the view they
+// are as much further apart on the water as the pixel's footprint is longer.
 struct WaveLod {
     float spacing;
+    float spacing_along;
     vec2 toward;
     float along;
     float across;
 };
 
-WaveLod no_wave_lod() { return WaveLod(0.0, vec2(1.0, 0.0), 0.0, 0.0); }
+WaveLod no_wave_lod() { return WaveLod(0.0, 0.0, vec2(1.0, 0.0), 0.0, 0.0); }
 
 // The share of a wave that survives a pixel's average over its footprint: the box
 // filter's sinc(x / 2) in its Gaussian fit exp(-x^2 / 24) (no negative lobes), x the
@@ -135,10 +144,24 @@ float pixel_keeps(vec2 kvec, WaveLod lod) {
 // The share of a wave the mesh draws: what the vertices resolve (wave_lod_fade) and the
 // pixel resolves (pixel_keeps); the rest goes into the shading's slope variance, so that
 // geometry hands over to the filtered normal distribution without aliasing.
-float wave_lod_weight(vec2 kvec, WaveLod lod) {
-    if (lod.spacing <= 0.0) return 1.0;
-    return wave_lod_fade(6.2831853 / length(kvec), lod.spacing) * pixel_keeps(kvec, lod);
+// x: that share (wave_lod_weight). y: the gain on the wave's compression at the vertices.
+// Between vertices the mesh interpolates linearly, which keeps sinc^2(phi / 2) of a wave
+// turning phi from one vertex to the next (a triangle filter's response), and the foam
+// reads the interpolated Jacobian past a threshold: without a gain it thinned as the
+// vertices spread out. The vertices carry each wave's compression over sinc(phi / 2),
+// halfway between no gain and the filter's inverse (which overshoots at the vertices): the
+// whitecap cover looking down on ocean_rolling then stays within 9% from 1.5 to 6 pixels
+// per vertex (0.0122, 0.0112, 0.0114 of the pixels; without the gain 0.0117, 0.0092,
+// 0.0082; docs/PERFORMANCE.md).
+vec2 wave_lod_shares(vec2 kvec, WaveLod lod) {
+    if (lod.spacing <= 0.0) return vec2(1.0);
+    float vertex_phase = length(vec2(dot(kvec, lod.toward) * lod.spacing_along,
+                                     dot(kvec, vec2(-lod.toward.y, lod.toward.x)) * lod.spacing));
+    float half_phase = min(0.5 * vertex_phase, 1.5707963);  // past pi the wave is faded out
+    float sinc = half_phase > 1e-3 ? sin(half_phase) / half_phase : 1.0;
+    return vec2(wave_lod_fade(vertex_phase) * pixel_keeps(kvec, lod), 1.0 / sinc);
 }
+float wave_lod_weight(vec2 kvec, WaveLod lod) { return wave_lod_shares(kvec, lod).x; }
 
 float newton_tolerance(float max_offset) {
     return max(kNewtonToleranceFloor, kNewtonToleranceScale * max_offset);

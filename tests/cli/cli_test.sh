@@ -218,6 +218,10 @@ JSON
     check "prints the file" grep -q "still.png" log.txt
     check "stats say why lavapipe has no shader statistics" grep -q '"pipelines_unavailable"' stats.json
     check "stats count the water's fragment invocations" grep -q '"tessellation_evaluation"' stats.json
+    check "stats name the quality tier, high by default" grep -q '"tier": "high"' stats.json
+    "$TW" render --size 160x90 --time 2 --quality low --out low.png --stats low.json --validate > loglow.txt
+    check "the low tier renders under validation" test $? -eq 0
+    check "with its vertices further apart" grep -q '"water_pixels_per_vertex": 8' low.json
     "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
     check "a 16 MiB budget renders under validation" test $? -eq 0
     check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json
@@ -248,6 +252,9 @@ JSON
     expect_error "memory budget too small" "--gpu-memory" "$TW" render --gpu-memory 8 --out o.png
     expect_error "memory budget not a number" "--gpu-memory" "$TW" render --gpu-memory nan --out o.png
     expect_error "per-sample water without samples" "--water-per-sample: needs --samples" "$TW" render --water-per-sample --out o.png
+    expect_error "unknown quality tier" "--quality" "$TW" render --quality extreme --out o.png
+    expect_error "vertex spacing out of range" "--water-pixels-per-vertex" "$TW" render --water-pixels-per-vertex 0 --out o.png
+    expect_error "foreshortening out of range" "--water-max-foreshortening" "$TW" render --water-max-foreshortening nan --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
     expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png
@@ -286,10 +293,11 @@ JSON
     "$TW" gpu-cost --sizes 160x90 --json cost.json --markdown cost.md > table.md
     check "exit 0" test $? -eq 0
     for gpu in navi21 gfx1100; do
-      check "$gpu estimated for both views" test "$(grep -c "| $gpu |" cost.md)" -eq 2
+      check "$gpu estimated for both views at each tier" test "$(grep -c "| $gpu |" cost.md)" -eq 8
     done
-    check "the water costs something on navi21" awk -F'|' '$2 ~ /scene/ && $4 ~ /navi21/ { gsub(/[* ]/, "", $9); found = ($9 + 0 > 0) } END { exit !found }' cost.md
+    check "the water costs something on navi21" awk -F'|' '$3 ~ /scene/ && $5 ~ /navi21/ { gsub(/[* ]/, "", $10); found = ($10 + 0 > 0) } END { exit !found }' cost.md
     check "JSON keeps the invocations" grep -q '"tessellation_evaluation"' cost.json
+    check "every tier estimated" bash -c "for t in low medium high ultra; do grep -q \"| \$t | scene |\" cost.md || exit 1; done"
     expect_error "RADV missing: says so" "RADV is missing" "$TW" gpu-cost --sizes 160x90 --radv-icd /no/such/radeon.json --json gone.json
     check "no JSON after failure" no_file gone.json
     expect_error "bad size" "--sizes" "$TW" gpu-cost --sizes 10x10

@@ -107,25 +107,35 @@ inline render::FrameInfo scene_camera_frame(const Scene& scene, double time = 0.
     return frame;
 }
 
-/// A renderer of its own on `device` whose memory budget is `budget` bytes and that
-/// streams at most `stream_per_frame` bytes of shore tiles a frame, with `scene` set; null
-/// (and the test failed) when it cannot be made.
-inline std::unique_ptr<render::Renderer> renderer_within_budget(
-    const render::DeviceContext& device, const Scene& scene, std::uint64_t budget,
-    std::uint64_t stream_per_frame = render::RendererInitInfo{}.shore_stream_bytes_per_frame) {
+/// A renderer of its own on `device` for the offscreen target's formats, made from the
+/// init info `adjust` changes, with `scene` set; null (and the test failed) when it cannot
+/// be made.
+template <class Adjust>
+std::unique_ptr<render::Renderer> renderer_with(const render::DeviceContext& device, const Scene& scene,
+                                                Adjust&& adjust) {
     render::RendererInitInfo init;
     init.device = device;
     init.color_format = render::OffscreenTarget::kColorFormat;
     init.depth_format = render::OffscreenTarget::kDepthFormat;
     init.wireframe = false;
-    init.gpu_memory_budget = budget;
-    init.shore_stream_bytes_per_frame = stream_per_frame;
+    adjust(init);
     auto renderer = render::Renderer::create(init);
     EXPECT_TRUE(renderer.ok()) << renderer.error().message;
     if (!renderer.ok()) return nullptr;
     const Status set = (*renderer)->set_scene(scene);
     EXPECT_TRUE(set.ok()) << set.error().message;
     return set.ok() ? std::move(renderer).value() : nullptr;
+}
+
+/// A renderer of its own whose memory budget is `budget` bytes and that streams at most
+/// `stream_per_frame` bytes of shore tiles a frame (renderer_with).
+inline std::unique_ptr<render::Renderer> renderer_within_budget(
+    const render::DeviceContext& device, const Scene& scene, std::uint64_t budget,
+    std::uint64_t stream_per_frame = render::RendererInitInfo{}.shore_stream_bytes_per_frame) {
+    return renderer_with(device, scene, [&](render::RendererInitInfo& init) {
+        init.gpu_memory_budget = budget;
+        init.shore_stream_bytes_per_frame = stream_per_frame;
+    });
 }
 
 inline bool is_sky(Rgb c) {

@@ -3,11 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 #include <optional>
+#include <vector>
 
 #include "frame_constants.hpp"
 #include "tidewater/render/offscreen.hpp"
@@ -30,6 +32,26 @@ inline double mean_difference(const render::RgbaImage& a, const render::RgbaImag
     for (std::size_t i = 0; i < a.pixels.size(); i += 4)
         for (std::size_t k = 0; k < 3; ++k) sum += std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k]));
     return sum / static_cast<double>(a.pixels.size() / 4 * 3) / 255.0;
+}
+
+/// How far a picture is from a reference of its size: per pixel, the largest difference of
+/// its colour channels (0..1); their mean and 99th percentile.
+struct ImageDifference {
+    double mean = 0.0, p99 = 0.0;
+};
+template <class ImageA, class ImageB>
+ImageDifference image_difference(const ImageA& a, const ImageB& b) {
+    if (a.pixels.size() != b.pixels.size() || a.pixels.empty()) return {1.0, 1.0};
+    std::vector<int> diffs;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); i += 4) {
+        int d = 0;
+        for (std::size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k])));
+        diffs.push_back(d);
+        sum += d;
+    }
+    std::sort(diffs.begin(), diffs.end());
+    return {sum / static_cast<double>(diffs.size()) / 255.0, diffs[diffs.size() * 99 / 100] / 255.0};
 }
 
 /// Mean colour of a (2r+1)^2 block around (x, y).

@@ -200,21 +200,11 @@ TEST_F(RenderTest, MatchesReferenceImages) {
         ASSERT_TRUE(reference.ok()) << reference.error().message;
         ASSERT_EQ(reference->width, img.width);
         ASSERT_EQ(reference->height, img.height);
-        const auto& ref = reference->pixels;
-        double sum = 0.0;
-        std::vector<int> diffs;
-        for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
-            int d = 0;
-            for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(int(img.pixels[i + k]) - int(ref[i + k])));
-            diffs.push_back(d);
-            sum += d;
-        }
-        std::sort(diffs.begin(), diffs.end());
-        const double mean = sum / diffs.size() / 255.0;
-        const double p99 = diffs[diffs.size() * 99 / 100] / 255.0;
-        EXPECT_LT(mean, 0.02) << path;
-        EXPECT_LT(p99, 0.10) << path;
-        std::printf("reference %s: mean difference %.4f, 99th percentile %.4f\n", path.filename().c_str(), mean, p99);
+        const test::ImageDifference d = test::image_difference(img, *reference);
+        EXPECT_LT(d.mean, 0.02) << path;
+        EXPECT_LT(d.p99, 0.10) << path;
+        std::printf("reference %s: mean difference %.4f, 99th percentile %.4f\n", path.filename().c_str(), d.mean,
+                    d.p99);
     }
 }
 

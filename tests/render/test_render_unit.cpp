@@ -1,6 +1,8 @@
 // Render code that needs no device: errors keep their VkResult, the debug views' names,
-// the descriptor tables' order. No Vulkan device is created here.
+// the descriptor tables' order, the quality tiers. No Vulkan device is created here.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "descriptor_sets.hpp"
 #include "tidewater/render/renderer.hpp"
@@ -18,6 +20,42 @@ TEST(VulkanErrors, KeepTheVkResult) {
     EXPECT_NE(e.message.find("vkQueueSubmit"), std::string::npos);
     EXPECT_NE(e.message.find("VK_ERROR_DEVICE_LOST"), std::string::npos);
     EXPECT_EQ(Error{}.vk_result, 0);
+}
+
+// The tiers space the water's vertices wider from ultra down to low (`high` as close along
+// the view as across it, as before the tiers), each tier's name reads back as it, an
+// override replaces the tier's value, and one out of range is refused by name.
+TEST(QualityTiers, OrderedNamedAndOverridden) {
+    const render::Quality tiers[] = {render::Quality::low, render::Quality::medium, render::Quality::high,
+                                     render::Quality::ultra};
+    double previous_spacing = 1e9;
+    for (const render::Quality tier : tiers) {
+        const auto s = render::quality_settings(tier);
+        ASSERT_TRUE(s.ok()) << s.error().message;
+        EXPECT_LT(s->water_pixels_per_vertex, previous_spacing) << render::quality_name(tier);
+        previous_spacing = s->water_pixels_per_vertex;
+        EXPECT_EQ(render::quality_from_name(render::quality_name(tier)), tier);
+    }
+    EXPECT_EQ(render::quality_settings(render::Quality::high)->water_max_foreshortening, 1.0);
+    EXPECT_GT(render::quality_settings(render::Quality::low)->water_max_foreshortening, 1.0);
+    EXPECT_FALSE(render::quality_from_name("extreme").has_value());
+    EXPECT_EQ(render::RendererInitInfo{}.quality, render::Quality::high);
+
+    render::QualityOverrides o;
+    o.water_pixels_per_vertex = 12.5;
+    EXPECT_EQ(render::quality_settings(render::Quality::ultra, o)->water_pixels_per_vertex, 12.5);
+    for (const double bad : {0.5, 33.0, std::nan("")}) {
+        o.water_pixels_per_vertex = bad;
+        const auto refused = render::quality_settings(render::Quality::high, o);
+        ASSERT_FALSE(refused.ok()) << bad;
+        EXPECT_EQ(refused.error().code, ErrorCode::invalid_argument);
+        EXPECT_NE(refused.error().message.find("water_pixels_per_vertex"), std::string::npos);
+    }
+    render::QualityOverrides f;
+    f.water_max_foreshortening = 0.9;
+    EXPECT_FALSE(render::quality_settings(render::Quality::low, f).ok());
+    f.water_max_foreshortening = 20.0;
+    EXPECT_EQ(render::quality_settings(render::Quality::high, f)->water_max_foreshortening, 20.0);
 }
 
 // Every debug view's name reads back as that view, and an unknown name as none.

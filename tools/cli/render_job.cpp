@@ -46,6 +46,8 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     init.samples = job.samples;
     init.shade_water_per_sample = job.water_per_sample;
     init.gpu_memory_budget = job.gpu_memory_budget;
+    init.quality = job.quality;
+    init.quality_overrides = job.quality_overrides;
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     if (auto st = (*renderer)->set_scene(scene); !st) return st.error();
@@ -114,6 +116,10 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     result.stats = {{"device", result.device},
                     {"size", {job.extent.width, job.extent.height}},
                     {"view", std::string(render::to_string(job.view))},
+                    {"quality",
+                     {{"tier", std::string(render::quality_name(job.quality))},
+                      {"water_pixels_per_vertex", (*renderer)->quality().water_pixels_per_vertex},
+                      {"water_max_foreshortening", (*renderer)->quality().water_max_foreshortening}}},
                     {"frames", frames},
                     {"counts",
                      {{"terrain_vertices", s.terrain_vertices},

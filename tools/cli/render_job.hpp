@@ -27,6 +27,8 @@ struct RenderJob {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  ///< Multisampling (antialiased edges).
     bool water_per_sample = false;                          ///< RendererInitInfo::shade_water_per_sample (samples > 1).
     std::uint64_t gpu_memory_budget = render::RendererInitInfo{}.gpu_memory_budget;  ///< bytes
+    render::Quality quality = render::Quality::high;
+    render::QualityOverrides quality_overrides;
 };
 
 struct RenderResult {

@@ -36,6 +36,7 @@ namespace {
 struct GpuCostArgs {
     std::string scene;
     std::vector<std::string> sizes{"1920x1080", "3840x2160"};
+    std::vector<std::string> tiers{"low", "medium", "high", "ultra"};
     std::string json, markdown;
     std::string radv_icd = "/usr/share/vulkan/icd.d/radeon_icd.x86_64.json";
 };
@@ -118,6 +119,12 @@ int run_gpu_cost(const GpuCostArgs& a) {
         if (!e) return fail(verb, e.error().message);
         sizes.push_back(*e);
     }
+    std::vector<render::Quality> tiers;
+    for (const std::string& t : a.tiers) {
+        const auto q = render::quality_from_name(t);
+        if (!q) return fail(verb, fmt::format("--tiers: \"{}\" is not a tier (low, medium, high, ultra)", t));
+        tiers.push_back(*q);
+    }
     if (!std::filesystem::exists(a.radv_icd))
         return fail(verb, fmt::format("RADV is missing: no \"{}\" (Debian: mesa-vulkan-drivers); the cost model "
                                       "compiles the shaders with RADV's null device",
@@ -160,60 +167,66 @@ int run_gpu_cost(const GpuCostArgs& a) {
     nlohmann::json out{{"scene", scene->name}, {"wave_lanes", kWaveLanes}};
     std::string md = fmt::format(
         "Estimated GPU time per pass, ms (`tidewater gpu-cost`; scene \"{}\")\n\n"
-        "| view | size | GPU | water vertex + tess. control | water tess. evaluation | water fragment | scene copy | "
-        "**water** | opaque (sky, terrain, floats) | frame |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
+        "| tier | view | size | GPU | water vertex + tess. control | water tess. evaluation | water fragment | "
+        "scene copy | **water** | opaque (sky, terrain, floats) | frame |\n"
+        "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
         scene->name);
-    for (const auto& [view_name, camera] : standard_views(*scene)) {
-        for (const VkExtent2D size : sizes) {
-            RenderJob job;
-            job.extent = size;
-            job.camera = camera;
-            job.single_output = (work / "frame.png").string();
-            auto result = run_render_job(*scene, job);
-            if (!result) return fail(verb, result.error().message);
-            const nlohmann::json& frame = result->stats["frames"][0];
-            if (!frame.contains("invocations"))
-                return fail(verb, fmt::format("the device \"{}\" counts no invocations (pipelineStatisticsQuery): "
-                                              "run on one that does (lavapipe does)",
-                                              result->device));
-            const nlohmann::json& water = frame["invocations"]["water"];
-            const nlohmann::json& opaque = frame["invocations"]["opaque"];
-            const std::uint64_t copy_bytes = std::uint64_t{size.width} * size.height * (4 + 4);  // RGBA8 + D32
-            for (const ReferenceGpu& gpu : reference_gpus()) {
-                const StageCosts& c = costs[gpu.family];
-                auto cost = [&](const char* pipeline, const char* stage) {
-                    const auto it = c.find({pipeline, stage});
-                    return it == c.end() ? StageCost{} : it->second;
-                };
-                const double vs = stage_ms(gpu, cost("water", "Vertex + Tessellation Control Shaders"),
-                                           water["vertex"].get<std::uint64_t>());
-                const double tes = stage_ms(gpu, cost("water", "Tessellation Evaluation Shader"),
-                                            water["tessellation_evaluation"].get<std::uint64_t>());
-                const double fs =
-                    stage_ms(gpu, cost("water", "Fragment Shader"), water["fragment"].get<std::uint64_t>());
-                const double copy = copy_ms(gpu, copy_bytes);
-                // The opaque pass at the terrain's cost per invocation (the sky's and floats' are cheaper).
-                const double opaque_ms =
-                    stage_ms(gpu, cost("terrain", "Vertex Shader"), opaque["vertex"].get<std::uint64_t>()) +
-                    stage_ms(gpu, cost("terrain", "Fragment Shader"), opaque["fragment"].get<std::uint64_t>());
-                const double water_ms = vs + tes + fs + copy;
-                out["estimates"].push_back({{"view", view_name},
-                                            {"width", size.width},
-                                            {"height", size.height},
-                                            {"gpu", gpu.family},
-                                            {"board", gpu.name},
-                                            {"invocations", frame["invocations"]},
-                                            {"water_vertex_tess_control_ms", vs},
-                                            {"water_tess_evaluation_ms", tes},
-                                            {"water_fragment_ms", fs},
-                                            {"scene_copy_ms", copy},
-                                            {"water_ms", water_ms},
-                                            {"opaque_ms", opaque_ms},
-                                            {"frame_ms", water_ms + opaque_ms}});
-                md += fmt::format(
-                    "| {} | {}x{} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | **{:.3f}** | {:.3f} | {:.3f} |\n",
-                    view_name, size.width, size.height, gpu.family, vs, tes, fs, copy, water_ms, opaque_ms,
-                    water_ms + opaque_ms);
+    for (const render::Quality tier : tiers) {
+        const std::string tier_name(render::quality_name(tier));
+        for (const auto& [view_name, camera] : standard_views(*scene)) {
+            for (const VkExtent2D size : sizes) {
+                RenderJob job;
+                job.extent = size;
+                job.camera = camera;
+                job.quality = tier;
+                job.single_output = (work / "frame.png").string();
+                auto result = run_render_job(*scene, job);
+                if (!result) return fail(verb, result.error().message);
+                const nlohmann::json& frame = result->stats["frames"][0];
+                if (!frame.contains("invocations"))
+                    return fail(verb, fmt::format("the device \"{}\" counts no invocations (pipelineStatisticsQuery): "
+                                                  "run on one that does (lavapipe does)",
+                                                  result->device));
+                const nlohmann::json& water = frame["invocations"]["water"];
+                const nlohmann::json& opaque = frame["invocations"]["opaque"];
+                const std::uint64_t copy_bytes = std::uint64_t{size.width} * size.height * (4 + 4);  // RGBA8 + D32
+                for (const ReferenceGpu& gpu : reference_gpus()) {
+                    const StageCosts& c = costs[gpu.family];
+                    auto cost = [&](const char* pipeline, const char* stage) {
+                        const auto it = c.find({pipeline, stage});
+                        return it == c.end() ? StageCost{} : it->second;
+                    };
+                    const double vs = stage_ms(gpu, cost("water", "Vertex + Tessellation Control Shaders"),
+                                               water["vertex"].get<std::uint64_t>());
+                    const double tes = stage_ms(gpu, cost("water", "Tessellation Evaluation Shader"),
+                                                water["tessellation_evaluation"].get<std::uint64_t>());
+                    const double fs =
+                        stage_ms(gpu, cost("water", "Fragment Shader"), water["fragment"].get<std::uint64_t>());
+                    const double copy = copy_ms(gpu, copy_bytes);
+                    // The opaque pass at the terrain's cost per invocation (the sky's and floats' are cheaper).
+                    const double opaque_ms =
+                        stage_ms(gpu, cost("terrain", "Vertex Shader"), opaque["vertex"].get<std::uint64_t>()) +
+                        stage_ms(gpu, cost("terrain", "Fragment Shader"), opaque["fragment"].get<std::uint64_t>());
+                    const double water_ms = vs + tes + fs + copy;
+                    out["estimates"].push_back({{"tier", tier_name},
+                                                {"view", view_name},
+                                                {"width", size.width},
+                                                {"height", size.height},
+                                                {"gpu", gpu.family},
+                                                {"board", gpu.name},
+                                                {"invocations", frame["invocations"]},
+                                                {"water_vertex_tess_control_ms", vs},
+                                                {"water_tess_evaluation_ms", tes},
+                                                {"water_fragment_ms", fs},
+                                                {"scene_copy_ms", copy},
+                                                {"water_ms", water_ms},
+                                                {"opaque_ms", opaque_ms},
+                                                {"frame_ms", water_ms + opaque_ms}});
+                    md += fmt::format(
+                        "| {} | {} | {}x{} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | **{:.3f}** | {:.3f} | {:.3f} |\n",
+                        tier_name, view_name, size.width, size.height, gpu.family, vs, tes, fs, copy, water_ms,
+                        opaque_ms, water_ms + opaque_ms);
+                }
             }
         }
     }
@@ -235,6 +248,7 @@ Verb add_gpu_cost_verb(CLI::App& app) {
         "counted on this machine's device, each stage's cycles from RADV's null device");
     cmd->add_option("--scene", args->scene, "Scene JSON (default: the bundled default scene)");
     cmd->add_option("--sizes", args->sizes, "Frame sizes WxH")->capture_default_str();
+    cmd->add_option("--tiers", args->tiers, "Quality tiers (low, medium, high, ultra)")->capture_default_str();
     cmd->add_option("--json", args->json, "Write the estimates and the invocation counts as JSON");
     cmd->add_option("--markdown", args->markdown, "Write the table as Markdown");
     cmd->add_option("--radv-icd", args->radv_icd, "RADV's Vulkan driver manifest")->capture_default_str();

@@ -39,6 +39,8 @@ struct RenderArgs {
     int samples = 1;
     bool water_per_sample = false;
     double gpu_memory_mib = 1024.0;
+    std::string quality = "high";
+    std::optional<double> water_pixels_per_vertex, water_max_foreshortening;
     bool validate = false;
 };
 
@@ -94,6 +96,16 @@ int run_render(const RenderArgs& a) {
     if (!(a.gpu_memory_mib >= 16.0 && a.gpu_memory_mib <= 1048576.0))
         return fail(verb, fmt::format("--gpu-memory: {} MiB is out of range (16 to 1048576)", a.gpu_memory_mib));
     job.gpu_memory_budget = static_cast<std::uint64_t>(a.gpu_memory_mib * 1048576.0);
+    const auto quality = render::quality_from_name(a.quality);
+    if (!quality)
+        return fail(verb, fmt::format("--quality: \"{}\" is not a tier (low, medium, high, ultra)", a.quality));
+    job.quality = *quality;
+    job.quality_overrides.water_pixels_per_vertex = a.water_pixels_per_vertex;
+    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+        return fail(verb, "--water-pixels-per-vertex: " + st.error().message);
+    job.quality_overrides.water_max_foreshortening = a.water_max_foreshortening;
+    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+        return fail(verb, "--water-max-foreshortening: " + st.error().message);
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -141,6 +153,13 @@ Verb add_render_verb(CLI::App& app) {
                     "Device memory the scene's data may take, MiB (16 or more): over it the terrain and the "
                     "shore fields are drawn coarser, the shore's tiles near the camera streamed in full")
         ->capture_default_str();
+    cmd->add_option("--quality", args->quality, "Quality tier: low, medium, high or ultra (for stills)")
+        ->capture_default_str();
+    cmd->add_option("--water-pixels-per-vertex", args->water_pixels_per_vertex,
+                    "Override the tier's spacing of the water's vertices on screen, pixels (1 to 32)");
+    cmd->add_option("--water-max-foreshortening", args->water_max_foreshortening,
+                    "Override how many times further apart the water's vertices may be along the view than across "
+                    "it (1 to 100)");
     cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")
         ->capture_default_str();
     cmd->add_flag(

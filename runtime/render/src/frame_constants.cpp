@@ -66,7 +66,8 @@ SwashBand swash_band(const WaveSet& waves) {
 }
 
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, const TerrainPlacement& terrain,
-                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density) {
+                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density,
+                     const QualitySettings& quality) {
     FramePlan plan;
     const Camera& cam = info.camera;
     // The render origin: the camera snapped to the phase-cell grid, in double.
@@ -86,11 +87,12 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     f.camera = glm::vec4(eye, static_cast<float>(positive_mod(local_time, 3600.0)));
     const glm::dvec3 sun = glm::normalize(info.sun_direction);
     f.sun = glm::vec4(glm::vec3(sun), 1.0f);
-    // Tessellation scale: about one vertex every 3 pixels.
+    // Projection scale: pixels per metre across the view at 1 m from the camera.
     const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
-    const double tess_scale = static_cast<double>(extent.height) / (6.0 * tan_half);
-    f.params = glm::vec4(static_cast<float>(water.level()), static_cast<float>(water.waves().size()),
-                         static_cast<float>(tess_scale), static_cast<float>(static_cast<std::uint32_t>(info.view)));
+    const double projection_scale = static_cast<double>(extent.height) / (2.0 * tan_half);
+    f.params =
+        glm::vec4(static_cast<float>(water.level()), static_cast<float>(water.waves().size()),
+                  static_cast<float>(projection_scale), static_cast<float>(static_cast<std::uint32_t>(info.view)));
     f.terrain_rect =
         glm::vec4(static_cast<float>(terrain.height_rect_corner.x - plan.origin.x),
                   static_cast<float>(terrain.height_rect_corner.y - plan.origin.y),
@@ -108,7 +110,8 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
                           static_cast<float>(swash.omega));
     f.origin_mod = glm::vec4(static_cast<float>(positive_mod(plan.origin.x, 2048.0)),
                              static_cast<float>(positive_mod(plan.origin.y, 2048.0)), 0.0f, 0.0f);
-    f.water_density = glm::vec4(static_cast<float>(water_density), 0.0f, 0.0f, 0.0f);
+    f.water_density = glm::vec4(static_cast<float>(water_density), static_cast<float>(quality.water_pixels_per_vertex),
+                                0.0f, static_cast<float>(quality.water_max_foreshortening));
     const PreethamSky sky = preetham_sky(sun, info.sky_turbidity);
     f.sky_Y = glm::vec4(sky.abcd[0]);
     f.sky_x = glm::vec4(sky.abcd[1]);

@@ -69,9 +69,11 @@ struct SwashBand {
 };
 SwashBand swash_band(const WaveSet& waves);
 
-/// `water_density`: the water's vertices and shading footprints per pixel side (1, or
-/// sqrt(samples) where the water shades every sample; GpuFrame::water_density).
+/// `water_density`: the water's shading footprints per pixel side (1, or sqrt(samples)
+/// where the water shades every sample); `quality`: the water's vertex spacing on screen
+/// (GpuFrame::water_density).
 FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& water, const TerrainPlacement& terrain,
-                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density);
+                     double water_half_size, bool has_scene_copy, bool linear_output, double water_density,
+                     const QualitySettings& quality);
 
 }  // namespace tidewater::render::detail

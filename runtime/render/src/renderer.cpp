@@ -91,6 +91,7 @@ std::span<const DebugView> all_debug_views() {
 struct Renderer::Impl {
     detail::Device device;  // the host's, with the functions loaded for it
     RendererInitInfo info;
+    QualitySettings quality;  // info.quality with its overrides
     /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
     /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
     struct Retired {
@@ -290,7 +291,8 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
     Planned p;
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
-                                color_target->linear_output, water_density);
+                                color_target->linear_output, water_density, quality);
+    p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
     p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, p.plan.origin);
     if (!wakes) return wakes.error();
@@ -520,9 +522,12 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
                          "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8)"};
         if (!c.enabled_features.sampleRateShading) return missing("sampleRateShading", "shade_water_per_sample");
     }
+    auto quality = quality_settings(info.quality, info.quality_overrides);
+    if (!quality) return Error{quality.error().code, "renderer: " + quality.error().message};
     auto impl = std::make_unique<Impl>();
     impl->device = c;
     impl->info = info;
+    impl->quality = *quality;
     auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples,
                                                     info.shade_water_per_sample, impl->info.wireframe);
     if (!pipelines) return pipelines.error();
@@ -730,6 +735,10 @@ Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
 
 Result<std::vector<PipelineStageStatistics>> Renderer::pipeline_statistics() const {
     return detail::draw_pipeline_statistics(impl_->ctx(), impl_->pipelines.draws);
+}
+
+const QualitySettings& Renderer::quality() const {
+    return impl_->quality;
 }
 
 RendererStats Renderer::stats() const {

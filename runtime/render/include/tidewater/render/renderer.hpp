@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "tidewater/render/device_context.hpp"
+#include "tidewater/render/quality.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater {
@@ -89,6 +90,10 @@ struct RendererInitInfo {
     /// estimate. Costs about `samples` times the water's shading, and more vertices
     /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled.
     bool shade_water_per_sample = false;
+    /// How much the renderer draws (quality.hpp): a tier, and settings that replace its own
+    /// (Renderer::quality() gives what was used). An override out of range fails create().
+    Quality quality = Quality::high;
+    QualityOverrides quality_overrides;
     std::uint32_t frames_in_flight = 2;  ///< 1 to 4.
     /// Device memory the scene's data may take, bytes (at least 16 MiB). The terrain's
     /// height texture takes at most half, the shore models' fields what it leaves: over
@@ -260,6 +265,8 @@ class Renderer {
     /// has DeviceContext::pipeline_executable_info; fails with ErrorCode::unsupported,
     /// saying so, where it has not. Reads what the pipelines captured when they were built.
     Result<std::vector<PipelineStageStatistics>> pipeline_statistics() const;
+    /// The settings of RendererInitInfo::quality with its overrides applied.
+    const QualitySettings& quality() const;
 
   private:
     struct Impl;
