@@ -59,8 +59,9 @@ TEST_F(QualityTest, EachTierDrawsFewerWaterVerticesThanTheOneAbove) {
             EXPECT_LE(f.water.fragment, above.fragment) << render::quality_name(tier);
         }
         if (tier == render::Quality::ultra) ultra = f.water;
-        if (tier == render::Quality::low)
+        if (tier == render::Quality::low) {
             EXPECT_LT(static_cast<double>(f.water.fragment), 0.6 * static_cast<double>(ultra.fragment));
+        }
         above = f.water;
     }
 }
