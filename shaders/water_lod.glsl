@@ -64,14 +64,16 @@ float vertices_along(vec2 e, vec2 at, float level, float mean_square_slope) {
 }
 
 // How many vertices the water's tessellation puts along a rest-plane edge from a to b:
-// its length on screen over the vertex spacing where that spacing is finest of its ends
-// and middle, so that the mesh is nowhere coarser than the spacing each vertex fades its
-// waves by (along the view the spacing grows with the square of the distance), and the
-// patches on both sides of an edge agree (no cracks).
+// its length on screen over the vertex spacing at its middle, or where the vertices spread
+// along the view (QualitySettings::water_max_foreshortening over 1), where that spacing
+// grows with the square of the distance, at the finest of its ends and middle, so that the
+// mesh is nowhere coarser than the spacing each vertex fades its waves by. Both sides of
+// an edge agree (no cracks).
 float tessellation_level(vec2 a, vec2 b, float level, float mean_square_slope) {
     vec2 e = b - a;
-    float n = max(vertices_along(e, a, level, mean_square_slope), vertices_along(e, b, level, mean_square_slope));
-    n = max(n, vertices_along(e, 0.5 * (a + b), level, mean_square_slope));
+    float n = vertices_along(e, 0.5 * (a + b), level, mean_square_slope);
+    if (frame.water_density.w > 1.0)
+        n = max(n, max(vertices_along(e, a, level, mean_square_slope), vertices_along(e, b, level, mean_square_slope)));
     return clamp(n, 1.0, 64.0);
 }
 #endif
