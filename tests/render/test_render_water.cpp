@@ -18,6 +18,8 @@ namespace {
 // Where the device counts them (lavapipe does), each frame's timings say how many times
 // each stage ran per pass: the water's tessellation runs in the water pass alone, and
 // fragments follow the pixels drawn (four times the pixels, about four times the fragments).
+// The samples each pass wrote follow the pixels too, and lavapipe, which shades before it
+// tests depth, shades more water fragments than the water writes.
 TEST_F(RenderTest, TimingsCountEachStagesInvocationsPerPass) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -38,7 +40,18 @@ TEST_F(RenderTest, TimingsCountEachStagesInvocationsPerPass) {
         EXPECT_GT(t->water_invocations.tessellation_evaluation, t->water_invocations.tessellation_patches);
         EXPECT_GT(t->water_invocations.fragment, 0u);
         EXPECT_GE(t->opaque_invocations.fragment, std::uint64_t{160} * 90 / 2);
+        EXPECT_TRUE(t->samples_counted) << "lavapipe has occlusionQueryPrecise";
+        EXPECT_GT(t->water_invocations.samples_passed, 0u);
+        EXPECT_LT(t->water_invocations.samples_passed, t->water_invocations.fragment);
+        EXPECT_GE(t->opaque_invocations.samples_passed, std::uint64_t{160} * 90 / 2);
     }
+    const double samples_ratio = static_cast<double>(large.water_invocations.samples_passed) /
+                                 static_cast<double>(small.water_invocations.samples_passed);
+    std::printf("water samples written: %llu at 160x90, %llu at 320x180 (x%.2f)\n",
+                static_cast<unsigned long long>(small.water_invocations.samples_passed),
+                static_cast<unsigned long long>(large.water_invocations.samples_passed), samples_ratio);
+    EXPECT_GT(samples_ratio, 3.0);
+    EXPECT_LT(samples_ratio, 5.0);
     const double ratio =
         static_cast<double>(large.water_invocations.fragment) / static_cast<double>(small.water_invocations.fragment);
     std::printf("water fragments: %llu at 160x90, %llu at 320x180 (x%.2f); opaque %llu, %llu\n",

@@ -100,12 +100,14 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                               {"water_ms", t->water_ms},
                               {"total_ms", t->total_ms}});
             if (t->invocations_counted) {
-                auto counts = [](const render::PassInvocations& c) {
-                    return nlohmann::json{{"vertex", c.vertex},
-                                          {"tessellation_patches", c.tessellation_patches},
-                                          {"tessellation_evaluation", c.tessellation_evaluation},
-                                          {"primitives", c.primitives},
-                                          {"fragment", c.fragment}};
+                auto counts = [&](const render::PassInvocations& c) {
+                    nlohmann::json j{{"vertex", c.vertex},
+                                     {"tessellation_patches", c.tessellation_patches},
+                                     {"tessellation_evaluation", c.tessellation_evaluation},
+                                     {"primitives", c.primitives},
+                                     {"fragment", c.fragment}};
+                    if (t->samples_counted) j["samples_passed"] = c.samples_passed;
+                    return j;
                 };
                 frames.back()["invocations"] = {{"opaque", counts(t->opaque_invocations)},
                                                 {"water", counts(t->water_invocations)}};

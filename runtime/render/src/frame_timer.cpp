@@ -32,6 +32,14 @@ Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
         TW_VK_TRY(make_owned(ctx, t.invocations_, [&](VkQueryPool* out) {
             return ctx.vk().CreateQueryPool(ctx.device, &info, ctx.allocator, out);
         }));
+        if (ctx.enabled_features.occlusionQueryPrecise) {
+            VkQueryPoolCreateInfo samples{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+            samples.queryType = VK_QUERY_TYPE_OCCLUSION;
+            samples.queryCount = pass_count * slots;
+            TW_VK_TRY(make_owned(ctx, t.samples_, [&](VkQueryPool* out) {
+                return ctx.vk().CreateQueryPool(ctx.device, &samples, ctx.allocator, out);
+            }));
+        }
     }
     if (ctx.queue_family >= family_count || families[ctx.queue_family].timestampValidBits == 0) return t;
     VkPhysicalDeviceProperties props;
@@ -48,14 +56,17 @@ Result<FrameTimer> FrameTimer::create(const Device& ctx, std::uint32_t slots) {
 
 void FrameTimer::begin_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const {
     if (invocations_) vk.CmdBeginQuery(cmd, invocations_.get(), slot * pass_count + pass, 0);
+    if (samples_) vk.CmdBeginQuery(cmd, samples_.get(), slot * pass_count + pass, VK_QUERY_CONTROL_PRECISE_BIT);
 }
 
 void FrameTimer::end_pass(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot, Pass pass) const {
     if (invocations_) vk.CmdEndQuery(cmd, invocations_.get(), slot * pass_count + pass);
+    if (samples_) vk.CmdEndQuery(cmd, samples_.get(), slot * pass_count + pass);
 }
 
 void FrameTimer::begin(const VulkanFunctions& vk, VkCommandBuffer cmd, std::uint32_t slot) const {
     if (invocations_) vk.CmdResetQueryPool(cmd, invocations_.get(), slot * pass_count, pass_count);
+    if (samples_) vk.CmdResetQueryPool(cmd, samples_.get(), slot * pass_count, pass_count);
     if (!pool_) return;
     vk.CmdResetQueryPool(cmd, pool_.get(), slot * mark_count, mark_count);
     vk.CmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), slot * mark_count + start);
@@ -92,6 +103,16 @@ Result<PassTimings> FrameTimer::read(const Device& ctx, std::uint32_t slot) cons
         p.invocations_counted = true;
         p.opaque_invocations = invocations(opaque_pass);
         p.water_invocations = invocations(water_pass);
+    }
+    if (samples_) {
+        std::uint64_t samples[pass_count];
+        const VkResult s =
+            ctx.vk().GetQueryPoolResults(ctx.device, samples_.get(), slot * pass_count, pass_count, sizeof(samples),
+                                         samples, sizeof(samples[0]), VK_QUERY_RESULT_64_BIT);
+        if (s != VK_SUCCESS) return vk_error(s, "vkGetQueryPoolResults (occlusion)");
+        p.samples_counted = true;
+        p.opaque_invocations.samples_passed = samples[opaque_pass];
+        p.water_invocations.samples_passed = samples[water_pass];
     }
     return p;
 }

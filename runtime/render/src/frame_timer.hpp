@@ -1,7 +1,7 @@
 // GPU timestamps per frame (private): four marks per in-flight slot, read back
 // as the time of each pass once the host knows the frame has finished; and, where the
 // device enabled pipelineStatisticsQuery, the invocations of each stage in the opaque
-// and the water pass.
+// and the water pass, with the samples each wrote where it enabled occlusionQueryPrecise.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -35,6 +35,7 @@ class FrameTimer {
   private:
     OwnedQueryPool pool_;
     OwnedQueryPool invocations_;  ///< pass_count per slot; none without pipelineStatisticsQuery
+    OwnedQueryPool samples_;      ///< pass_count per slot; none without occlusionQueryPrecise as well
     double period_ns_ = 1.0;
 };
 

@@ -183,6 +183,7 @@ Result<std::unique_ptr<StandaloneDevice>> StandaloneDevice::create(const Standal
     enabled.tessellationShader = supported.tessellationShader;            // water level of detail
     enabled.sampleRateShading = supported.sampleRateShading;              // water shaded per sample (optional)
     enabled.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;  // invocations per pass (optional)
+    enabled.occlusionQueryPrecise = supported.occlusionQueryPrecise;      // samples per pass (optional)
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;
     // Shader statistics where the driver has them (RADV, most desktop drivers; not lavapipe).

@@ -162,6 +162,10 @@ struct PassInvocations {
     std::uint64_t tessellation_evaluation = 0;
     std::uint64_t primitives = 0;  ///< primitives that reached the clipper
     std::uint64_t fragment = 0;    ///< fragment shader invocations
+    /// Samples that passed the depth test and were written (a precise occlusion query;
+    /// PassTimings::samples_counted). Fragment invocations count what the device shaded,
+    /// which depends on when it tests depth; this does not.
+    std::uint64_t samples_passed = 0;
 };
 
 /// GPU time per pass of one frame, from timestamp queries (ms), and where the device
@@ -173,6 +177,8 @@ struct PassTimings {
     double water_ms = 0.0;
     double total_ms = 0.0;
     bool invocations_counted = false;
+    /// Where the host also enabled occlusionQueryPrecise: PassInvocations::samples_passed.
+    bool samples_counted = false;
     PassInvocations opaque_invocations, water_invocations;
 };
 
