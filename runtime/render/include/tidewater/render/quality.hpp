@@ -1,9 +1,9 @@
 // Quality tiers: how much the renderer draws, chosen once when it is made
 // (RendererInitInfo::quality) and tuned setting by setting (QualityOverrides).
 //
-// `high` is the default and fits seed 000's water budget on the reference GPUs
-// (docs/PERFORMANCE.md, `tidewater gpu-cost`); `ultra` is for stills; `low` and
-// `medium` are for weaker GPUs and for several views at once.
+// `high` is the default and draws the water's geometry as before the tiers; `ultra` is
+// for stills; `low` and `medium` are for weaker GPUs and for several views at once.
+// Each tier's cost: docs/PERFORMANCE.md ("Quality tiers"), `tidewater gpu-cost`.
 //
 // Lifetime and threading: plain values, copied by the renderer. Units: pixels of the
 // host's target (a sample's footprint where the water shades every sample).
