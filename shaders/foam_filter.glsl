@@ -72,6 +72,37 @@ void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_ampli
     }
 }
 
+// The waves of draw `d` that a pixel with render LOD `lod` cannot resolve: the share
+// 1 - kept^2 of each wave's variance that its footprint averages away (pixel_keeps).
+// They change with the footprint, which changes slowly across a water patch, and not
+// with the waves' phases: water.tesc sums them at the patch's corners and the pixels
+// interpolate them (hidden_waves_packed / hidden_waves_unpacked), instead of every
+// pixel summing every wave. A river's waves ride its current and hide nothing here.
+HiddenWaves hidden_waves_at(GpuBodyDraw d, WaveLod lod) {
+    HiddenWaves hidden = hidden_zero();
+    if (uint(d.body.x) == kBodyRiver) return hidden;
+    uint first = uint(d.body.z), count = uint(d.body.w);
+    for (uint i = first; i < first + count; ++i) {
+        GpuWave w = waves[i];
+        vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
+        float kept = pixel_keeps(kvec, lod);
+        float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
+        float compression = w.steep_omega.x * slope_amplitude;  // Q k A
+        add_hidden_wave(hidden, 1.0 - kept * kept, w.dir_k_amp.w, slope_amplitude, compression, -dot(kvec, lod.toward), w.lag_turn.xy);
+    }
+    return hidden;
+}
+// Three vec4s, as the tessellation stages pass them on: (compression variance, height
+// variance, slope variance, compression covariance), the lagged covariances, the lagged
+// slope covariances.
+mat3x4 hidden_waves_packed(HiddenWaves h) {
+    return mat3x4(vec4(h.compression_variance, h.height_variance, h.slope_variance, h.compression_covariance), h.lagged_covariance,
+                  h.lagged_slope_covariance);
+}
+HiddenWaves hidden_waves_unpacked(vec4 a, vec4 lagged, vec4 lagged_slope) {
+    return HiddenWaves(max(a.x, 0.0), max(a.y, 0.0), max(a.z, 0.0), a.w, lagged, lagged_slope);
+}
+
 // At grazing angles the crests hide the troughs behind them. Smith's height-correlated
 // masking sees a point of height z (in deviations) with probability Phi(z)^Lambda,
 // Lambda = phi(u) / u - (1 - Phi(u)) for Gaussian slopes of deviation sigma toward a view

@@ -204,6 +204,13 @@ TW_BINDINGS(FrameBinding)
     eFrameBindingCount = 16u
 TW_BINDINGS_END();
 
+// Specialization constants of the water's shaders: what the quality tier
+// (QualitySettings) chooses at pipeline creation (water_quality.glsl).
+TW_CONST uint kSpecFoamLags = 0u;             // uint: lags of the crests' compression the foam shows (0..kFoamLags)
+TW_CONST uint kSpecReflectionFacets = 1u;     // uint: facets the reflection averages over (1 or 4)
+TW_CONST uint kSpecReflectionSteps = 2u;      // int: steps of the reflection's march
+TW_CONST uint kSpecReflectionStepGrowth = 3u; // float: each step that many times the last
+
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
 // hold the terrain mesh's origin (vec4, relative to O); bytes 16-31 a float's paint
 // (vec4, float.frag) or the water draw's index (uint, water_draw.glsl).

@@ -2,10 +2,12 @@
 #ifndef TIDEWATER_NOISE_GLSL
 #define TIDEWATER_NOISE_GLSL
 
-// Integer-hashed gradient noise: the GLSL twin of tidewater::gradient_noise.
+// Integer-hashed gradient noise: the GLSL twin of tidewater::gradient_noise. The lattice
+// repeats every 256 cells: the low byte of a two's complement index is its non-negative
+// remainder (GLSL leaves % of a negative operand undefined, and it costs a division).
 uint tw_hash(int ix, int iz, uint seed) {
-    uint x = uint(((ix % 256) + 256) % 256);
-    uint z = uint(((iz % 256) + 256) % 256);
+    uint x = uint(ix) & 255u;
+    uint z = uint(iz) & 255u;
     uint h = (x * 0x8da6b343u) ^ (z * 0xd8163841u) ^ (seed * 0xcb1ab31fu);
     h ^= h >> 16; h *= 0x85ebca6bu; h ^= h >> 13; h *= 0xc2b2ae35u; h ^= h >> 16;
     return h;

@@ -9,6 +9,7 @@
 #define TIDEWATER_SCENE_REFLECTION_GLSL
 #include "frame.glsl"
 #include "water_lod.glsl"
+#include "water_quality.glsl"
 
 vec3 world_from_depth(vec2 uv, float depth) {
     vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
@@ -53,8 +54,8 @@ float terrain_tangent(vec3 origin, vec3 r, float horizontal, float t) {
 // What the ray r (unit, upward) from water point `origin` reflects of the scene.
 // `elevation_spread`: the deviation of the pixel's reflected rays' elevation tangents
 // about r's (water.frag: the facets' slope deviation doubled in reflection, and the
-// elevation's change to the next pixel). The march: 24 steps growing by 1.25 from
-// `first_step` m; the terrain's silhouette is then refined between the samples round
+// elevation's change to the next pixel). The march: kReflectionSteps steps (24 at `high`)
+// growing by kReflectionStepGrowth (1.25) from `first_step` m; the terrain's silhouette is then refined between the samples round
 // its highest, so that it does not step with them.
 SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float elevation_spread) {
     float horizontal = max(length(r.xz), 1e-4);
@@ -64,10 +65,10 @@ SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float el
     float t = 0.0, step_len = first_step;
     float highest = frame.terrain_heights.x;
     bool seek_ground = highest > origin.y, seek_screen = true;
-    for (int i = 0; i < 24 && (seek_ground || seek_screen); ++i) {
+    for (int i = 0; i < kReflectionSteps && (seek_ground || seek_screen); ++i) {
         float t_before = t;
         t += step_len;
-        step_len *= 1.25;
+        step_len *= kReflectionStepGrowth;
         vec3 p = origin + r * t;
         if (seek_ground) {
             float ground = terrain_height_at(p.xz);
@@ -75,7 +76,7 @@ SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float el
             if (tangent > best_tangent) {
                 best_tangent = tangent;
                 best_t = t;
-                best_step = step_len / 1.25;
+                best_step = step_len / kReflectionStepGrowth;
             }
             if (hit_t < 0.0 && p.y < ground) {  // the mean ray goes under the terrain
                 hit_before = t_before;
@@ -120,7 +121,7 @@ SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float el
     if (best_tangent <= 0.0) return SceneReflection(vec3(0.0), 0.0);
     // The silhouette between the neighbouring samples: a golden-section search for the
     // highest tangent (the terrain is smooth between its texels).
-    float a = max(best_t - best_step, 1e-3), b = best_t + 1.25 * best_step;
+    float a = max(best_t - best_step, 1e-3), b = best_t + kReflectionStepGrowth * best_step;
     for (int k = 0; k < 6; ++k) {
         float m1 = b - 0.618034 * (b - a), m2 = a + 0.618034 * (b - a);
         float t1 = terrain_tangent(origin, r, horizontal, m1), t2 = terrain_tangent(origin, r, horizontal, m2);

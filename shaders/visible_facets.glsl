@@ -2,13 +2,15 @@
 #ifndef TIDEWATER_VISIBLE_FACETS_GLSL
 #define TIDEWATER_VISIBLE_FACETS_GLSL
 #include "frame.glsl"
+#include "water_quality.glsl"
 
 // The facets a pixel sees when its waves are not all resolved: slopes of variance
 // sigma^2 per axis about the resolved normal n, each weighted by the area it shows the
 // viewer. At grazing angles the facets facing the viewer dominate (Bruneton, Neyret
 // and Holzschuch 2010): the geometry shows this where it draws the waves, and the
 // filtered far field must too. Quadrature: two slopes along the view's azimuth with the
-// visible slopes' mean and deviation (`slopes`, from visible_slopes), each +-sigma across it.
+// visible slopes' mean and deviation (`slopes`, from visible_slopes), each +-sigma across it;
+// or, where the tier takes one facet (kReflectionFacets), the one at their mean slope.
 struct VisibleFacets {
     vec3 normal;    // their mean normal
     float fresnel;  // their mean Fresnel reflectance
@@ -31,6 +33,14 @@ VisibleFacets visible_facets(vec3 n, vec3 v, float variance, vec2 slopes) {
         return f;
     }
     vec3 along = flat_view / in_plane, across = normalize(cross(n, along));
+    if (kReflectionFacets == 1u) {
+        f.normal = normalize(n + along * slopes.x);
+        f.fresnel = schlick_fresnel(f.normal, v);
+        vec3 r = reflect(-v, f.normal);
+        r.y = abs(r.y);
+        f.sky = f.fresnel * sky_color(r);
+        return f;
+    }
     float sigma = sqrt(variance);
     f.normal = vec3(0.0);
     f.fresnel = 0.0;

@@ -12,6 +12,7 @@
 #include "water_point.glsl"
 #include "water_draw.glsl"
 #include "body_masks.glsl"
+#include "water_quality.glsl"
 #include "flow_detail.glsl"
 #define WAKE_COUNT uint(frame.wakes.x)
 #define WAKE_TURBULENT uint(frame.wakes.y)
@@ -37,6 +38,9 @@ layout(location = 6) WATER_IN vec2 shore_info;
 layout(location = 7) WATER_IN float rest_level;
 layout(location = 8) WATER_IN vec2 current;
 layout(location = 9) WATER_IN vec4 lagged_jacobian;
+layout(location = 10) WATER_IN vec4 hidden_in;
+layout(location = 11) WATER_IN vec4 hidden_lagged_in;
+layout(location = 12) WATER_IN vec4 hidden_lagged_slope_in;
 layout(location = 0) out vec4 out_color;
 
 const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
@@ -50,7 +54,8 @@ const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 // already draws (waves faded out of the mesh add slope; waves the mesh draws but the
 // pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis) and to `hidden`.
+// pixel cannot resolve adds to `variance` (slope variance, per axis): `hidden`, summed
+// at the patch's corners (hidden_waves_at), holds the waves' share.
 // The same share changes the Jacobian (to first order, by minus the trace of their m):
 // by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
 // `fine`: the ripples' or flow detail's drawn slope and its slope variance per axis, which
@@ -60,7 +65,7 @@ struct FineDetail {
     float variance;
 };
 vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout float jacobian, inout vec4 lagged,
-                   inout HiddenWaves hidden, out FineDetail fine) {
+                   HiddenWaves hidden, out FineDetail fine) {
     SurfaceSums faded = surface_zero();
     LaggedCompression faded_lags = lagged_zero();
     bool river = uint(d.body.x) == kBodyRiver;
@@ -70,10 +75,6 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
         float drawn = wave_lod_weight(kvec, lod);
         float kept = pixel_keeps(kvec, lod);
-        float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
-        float compression = w.steep_omega.x * slope_amplitude;  // Q k A
-        float lost = 1.0 - kept * kept;
-        add_hidden_wave(hidden, lost, w.dir_k_amp.w, slope_amplitude, compression, -dot(kvec, lod.toward), w.lag_turn.xy);
         float change = kept - drawn;
         if (abs(change) < 1e-3) continue;
         float theta = dot(kvec, rest_xz) + w.steep_omega.z;
@@ -122,7 +123,7 @@ void main() {
     float variance = 0.0;
     float jacobian_detail = 0.0;
     vec4 lagged_detail = vec4(0.0);
-    HiddenWaves hidden = hidden_zero();
+    HiddenWaves hidden = hidden_waves_unpacked(hidden_in, hidden_lagged_in, hidden_lagged_slope_in);
     FineDetail fine;
     vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden, fine);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
@@ -200,7 +201,7 @@ void main() {
     // Fresh crest foam and what the particles' earlier crests left, fading
     // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
     float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing, d.extra.x);
-    for (int l = 0; l < 4; ++l)
+    for (int l = 0; l < int(kFoamLagsShown); ++l)
         crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
                                            hidden, seen, facing, d.extra.x) *
                            foam_memory_weight(l + 1);

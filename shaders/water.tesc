@@ -4,9 +4,14 @@
 #include "frame.glsl"
 #include "water_lod.glsl"
 #include "water_draw.glsl"
+#include "foam_filter.glsl"
 layout(vertices = 4) out;
 layout(location = 0) in vec2 patch_xz[];
 layout(location = 0) out vec2 control_xz[];
+// The waves a pixel at this corner cannot resolve (hidden_waves_at), packed.
+layout(location = 1) out vec4 corner_hidden[];
+layout(location = 2) out vec4 corner_hidden_lagged[];
+layout(location = 3) out vec4 corner_hidden_lagged_slope[];
 
 float edge_level(vec2 a, vec2 b) {
     GpuBodyDraw d = draws[draw_push.draw_index];
@@ -45,6 +50,13 @@ bool in_ring_hole() {
 
 void main() {
     control_xz[gl_InvocationID] = patch_xz[gl_InvocationID];
+    {
+        GpuBodyDraw d = draws[draw_push.draw_index];
+        mat3x4 hidden = hidden_waves_packed(hidden_waves_at(d, wave_lod_at(patch_xz[gl_InvocationID], d.body.y, d.lod.x)));
+        corner_hidden[gl_InvocationID] = hidden[0];
+        corner_hidden_lagged[gl_InvocationID] = hidden[1];
+        corner_hidden_lagged_slope[gl_InvocationID] = hidden[2];
+    }
     if (gl_InvocationID == 0) {
         if (in_ring_hole() || outside_frustum()) {
             gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelOuter[3] = 0.0;

@@ -20,8 +20,12 @@ uint g_wave_first = 0u, g_wave_count = 0u;
 #define WAKE_COUNT uint(frame.wakes.x)
 #define WAKE_TURBULENT uint(frame.wakes.y)
 #include "wake_point.glsl"
+#include "water_quality.glsl"
 layout(quads, fractional_odd_spacing, ccw) in;
 layout(location = 0) in vec2 control_xz[];
+layout(location = 1) in vec4 corner_hidden[];
+layout(location = 2) in vec4 corner_hidden_lagged[];
+layout(location = 3) in vec4 corner_hidden_lagged_slope[];
 layout(location = 0) out vec3 world_pos;
 layout(location = 1) out vec3 geo_normal;
 layout(location = 2) out vec2 rest_xz;
@@ -32,6 +36,12 @@ layout(location = 6) out vec2 shore_info;  // x: signed shore distance (m), y: b
 layout(location = 7) out float rest_level; // the still surface here, world y (m)
 layout(location = 8) out vec2 current;     // a river's current (m/s)
 layout(location = 9) out vec4 lagged_jacobian;  // the waves' Jacobian at the rest position 0.5, 1, 1.5, 2 s ago
+// The waves the pixels cannot resolve, from the patch's corners (water.tesc; foam_filter.glsl).
+layout(location = 10) out vec4 hidden;
+layout(location = 11) out vec4 hidden_lagged;
+layout(location = 12) out vec4 hidden_lagged_slope;
+
+vec4 across_patch(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec2 uv) { return mix(mix(c0, c1, uv.x), mix(c2, c3, uv.x), uv.y); }
 
 void main() {
     g_draw = draws[draw_push.draw_index];
@@ -39,6 +49,10 @@ void main() {
     g_wave_count = uint(g_draw.body.w);
     vec2 uv = gl_TessCoord.xy;
     rest_xz = mix(mix(control_xz[0], control_xz[1], uv.x), mix(control_xz[2], control_xz[3], uv.x), uv.y);
+    hidden = across_patch(corner_hidden[0], corner_hidden[1], corner_hidden[2], corner_hidden[3], uv);
+    hidden_lagged = across_patch(corner_hidden_lagged[0], corner_hidden_lagged[1], corner_hidden_lagged[2], corner_hidden_lagged[3], uv);
+    hidden_lagged_slope = across_patch(corner_hidden_lagged_slope[0], corner_hidden_lagged_slope[1], corner_hidden_lagged_slope[2],
+                                       corner_hidden_lagged_slope[3], uv);
     WaveLod lod = wave_lod_at(rest_xz, g_draw.body.y, g_draw.lod.x);
     bool shore = g_draw.shore.w > 0.0;
     SurfaceSums s;
@@ -46,7 +60,7 @@ void main() {
     current = vec2(0.0);
     // The foam particles remember comes from the still water's waves (a river's own ride
     // its current and keep none; wakes make their own foam).
-    g_track_lags = true;
+    g_track_lags = kFoamLagsShown > 0u;
     LaggedCompression lagged = lagged_zero();
     if (uint(g_draw.body.x) == kBodyRiver) {
         vec2 rel = rest_xz - g_draw.grid.xy;

@@ -271,19 +271,24 @@ JSON
     null_device() { RADV_FORCE_FAMILY=navi21 VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json \
       VK_DRIVER_FILES=/usr/share/vulkan/icd.d/radeon_icd.x86_64.json NODEVICE_SELECT=1 XDG_RUNTIME_DIR="$WORK" "$@"; }
     BUDGET="$EXAMPLES/../shaders/budget_navi21.csv"
-    null_device "$TW" shader-stats --json stages.json --budget "$BUDGET" > table.md
-    check "exit 0 within the checked-in budget" test $? -eq 0
+    null_device "$TW" shader-stats --tiers low medium high ultra --json stages.json --budget "$BUDGET" > table.md
+    check "exit 0 within the checked-in budget, every tier" test $? -eq 0
     check "the device is RADV's null navi21" grep -q "Null hardware (RADV NAVI21)" table.md
-    for stage in "water | Fragment Shader" "water | Tessellation Evaluation Shader" "terrain | Fragment Shader"; do
-      check "table has $stage" grep -qF "| $stage |" table.md
+    for tier in low medium high ultra; do
+      for stage in "water | Fragment Shader" "water | Tessellation Evaluation Shader" "terrain | Fragment Shader"; do
+        check "table has $tier's $stage" grep -qF "| $tier | $stage |" table.md
+      done
     done
     check "JSON has the water fragment's VGPRs" grep -q '"VGPRs"' stages.json
-    check "water fragment has instructions" awk -F'|' '$2 ~ /water / && $3 ~ /Fragment/ { found = ($4 + 0 > 100) } END { exit !found }' table.md
-    awk -F, 'NR > 1 && $1 == "water" && $2 == "Fragment Shader" { $3 = int($3 / 2) } 1' OFS=, "$BUDGET" > tight.csv
-    expect_error "a stage over its budget fails, named" "water / Fragment Shader: Instructions" null_device "$TW" shader-stats --budget tight.csv
-    grep -v "^sky,Vertex" "$BUDGET" > missing.csv
-    expect_error "a stage without a row fails" "sky / Vertex Shader has no row" null_device "$TW" shader-stats --budget missing.csv
-    printf 'pipeline,stage,instructions,vgprs\nwater,Fragment Shader,many,88\n' > bad.csv
+    check "water fragment has instructions" awk -F'|' '$2 ~ /high/ && $3 ~ /water / && $4 ~ /Fragment/ { found = ($5 + 0 > 100) } END { exit !found }' table.md
+    # The tier's choices are compiled in: low's water fragment shades less than high's.
+    check "low's water fragment is smaller than high's" awk -F'|' '$3 ~ /^ water $/ && $4 ~ /Fragment/ { n[$2] = $5 + 0 } END { exit !(n[" low "] > 0 && n[" low "] < n[" high "]) }' table.md
+    awk -F, 'NR > 1 && $1 == "high" && $2 == "water" && $3 == "Fragment Shader" { $4 = int($4 / 2) } 1' OFS=, "$BUDGET" > tight.csv
+    expect_error "a stage over its budget fails, named" "high / water / Fragment Shader: Instructions" null_device "$TW" shader-stats --budget tight.csv
+    grep -v "^high,sky,Vertex" "$BUDGET" > missing.csv
+    expect_error "a stage without a row fails" "high / sky / Vertex Shader has no row" null_device "$TW" shader-stats --budget missing.csv
+    expect_error "an unknown tier is refused" "not a tier" null_device "$TW" shader-stats --tiers best
+    printf 'tier,pipeline,stage,instructions,vgprs\nhigh,water,Fragment Shader,many,88\n' > bad.csv
     expect_error "a malformed budget names its line" "bad.csv\" line 2" null_device "$TW" shader-stats --budget bad.csv
     expect_error "lavapipe has no statistics: says what to run" "RADV_FORCE_FAMILY" "$TW" shader-stats --json lvp.json
     check "no JSON after failure" no_file lvp.json

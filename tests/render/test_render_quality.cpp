@@ -1,6 +1,7 @@
 // Quality tiers on lavapipe under the validation layer: each tier draws fewer water
 // vertices and fragments than the one above it, `low` keeps a reference image of its
-// own, and an override out of range is refused when the renderer is made.
+// own, the tier's shading is compiled into its pipelines, and an override out of range
+// is refused when the renderer is made.
 #include <cstdio>
 #include <filesystem>
 
@@ -18,14 +19,19 @@ struct TierFrame {
 class QualityTest : public test::RenderTest {
   protected:
     /// The default scene from its camera at 3 s, through a renderer of `tier`.
-    TierFrame render_tier(const Scene& scene, render::Quality tier, std::uint32_t w, std::uint32_t h) {
-        auto renderer =
-            test::renderer_with(context(), scene, [&](render::RendererInitInfo& init) { init.quality = tier; });
+    TierFrame render_tier(const Scene& scene, render::Quality tier, std::uint32_t w, std::uint32_t h,
+                          const render::QualityOverrides& overrides = {},
+                          render::DebugView view = render::DebugView::shaded) {
+        auto renderer = test::renderer_with(context(), scene, [&](render::RendererInitInfo& init) {
+            init.quality = tier;
+            init.quality_overrides = overrides;
+        });
         if (!renderer) return {};
         auto target = render::OffscreenTarget::create(context(), w, h);
         EXPECT_TRUE(target.ok()) << target.error().message;
         if (!target.ok()) return {};
         render::FrameInfo frame = test::scene_camera_frame(scene, 3.0);
+        frame.view = view;
         auto img = (*target)->render(*renderer, frame);
         EXPECT_TRUE(img.ok()) << img.error().message;
         auto timings = renderer->timings(frame.frame_index);
@@ -84,6 +90,27 @@ TEST_F(QualityTest, LowTierMatchesItsReferenceImage) {
     std::printf("reference %s: mean difference %.4f, 99th percentile %.4f\n", path.filename().c_str(), d.mean, d.p99);
     EXPECT_LT(d.mean, 0.02);
     EXPECT_LT(d.p99, 0.10);
+}
+
+// The tier's shading is compiled into its pipelines (specialization constants): `low`
+// shows only the fresh crest foam, and the same tier told to show the foam's four lags
+// shows more of it, as whitecaps linger (the `foam` view's mean at 320 x 180, 0.3543 against 0.3580).
+TEST_F(QualityTest, TheFoamRemembersAsManyLagsAsTheTierShows) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto mean_foam = [](const render::RgbaImage& img) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < img.pixels.size(); i += 4) sum += img.pixels[i];
+        return sum / (255.0 * static_cast<double>(img.pixels.size() / 4));
+    };
+    const TierFrame fresh = render_tier(*scene, render::Quality::low, 320, 180, {}, render::DebugView::foam);
+    const TierFrame lingering =
+        render_tier(*scene, render::Quality::low, 320, 180, {.foam_lags = 4}, render::DebugView::foam);
+    ASSERT_FALSE(fresh.image.pixels.empty());
+    ASSERT_FALSE(lingering.image.pixels.empty());
+    std::printf("low's foam: %.4f fresh only, %.4f with four lags\n", mean_foam(fresh.image),
+                mean_foam(lingering.image));
+    EXPECT_GT(mean_foam(lingering.image), mean_foam(fresh.image) + 1e-3);
 }
 
 // An override out of range fails create() with an error that names it.

@@ -22,22 +22,32 @@ TEST(VulkanErrors, KeepTheVkResult) {
     EXPECT_EQ(Error{}.vk_result, 0);
 }
 
-// The tiers space the water's vertices wider from ultra down to low (`high` as close along
-// the view as across it, as before the tiers), each tier's name reads back as it, an
-// override replaces the tier's value, and one out of range is refused by name.
+// The tiers space the water's vertices wider from ultra down to low and shade no more from
+// one to the next (foam lags, reflection facets and march steps), each tier's name reads
+// back as it, an override replaces the tier's value, and one out of range is refused by name.
 TEST(QualityTiers, OrderedNamedAndOverridden) {
     const render::Quality tiers[] = {render::Quality::low, render::Quality::medium, render::Quality::high,
                                      render::Quality::ultra};
     double previous_spacing = 1e9;
+    render::QualitySettings previous{.foam_lags = 0, .reflection_facets = 1, .reflection_march_steps = 4};
     for (const render::Quality tier : tiers) {
         const auto s = render::quality_settings(tier);
         ASSERT_TRUE(s.ok()) << s.error().message;
         EXPECT_LT(s->water_pixels_per_vertex, previous_spacing) << render::quality_name(tier);
         previous_spacing = s->water_pixels_per_vertex;
+        EXPECT_GE(s->foam_lags, previous.foam_lags) << render::quality_name(tier);
+        EXPECT_GE(s->reflection_facets, previous.reflection_facets) << render::quality_name(tier);
+        EXPECT_GE(s->reflection_march_steps, previous.reflection_march_steps) << render::quality_name(tier);
+        previous = *s;
         EXPECT_EQ(render::quality_from_name(render::quality_name(tier)), tier);
     }
-    EXPECT_EQ(render::quality_settings(render::Quality::high)->water_max_foreshortening, 1.0);
+    EXPECT_LT(render::quality_settings(render::Quality::ultra)->water_max_foreshortening,
+              render::quality_settings(render::Quality::high)->water_max_foreshortening);
     EXPECT_GT(render::quality_settings(render::Quality::low)->water_max_foreshortening, 1.0);
+    const auto high = render::quality_settings(render::Quality::high);
+    EXPECT_EQ(high->foam_lags, 4);
+    EXPECT_EQ(high->reflection_facets, 4);
+    EXPECT_EQ(high->reflection_march_steps, 24);
     EXPECT_FALSE(render::quality_from_name("extreme").has_value());
     EXPECT_EQ(render::RendererInitInfo{}.quality, render::Quality::high);
 
@@ -56,6 +66,34 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
     EXPECT_FALSE(render::quality_settings(render::Quality::low, f).ok());
     f.water_max_foreshortening = 20.0;
     EXPECT_EQ(render::quality_settings(render::Quality::high, f)->water_max_foreshortening, 20.0);
+
+    const auto refused_by_name = [](const render::QualityOverrides& bad, const char* name) {
+        const auto r = render::quality_settings(render::Quality::medium, bad);
+        ASSERT_FALSE(r.ok()) << name;
+        EXPECT_EQ(r.error().code, ErrorCode::invalid_argument);
+        EXPECT_NE(r.error().message.find(name), std::string::npos) << r.error().message;
+    };
+    refused_by_name({.foam_lags = 5}, "foam_lags");
+    refused_by_name({.foam_lags = -1}, "foam_lags");
+    refused_by_name({.reflection_facets = 2}, "reflection_facets");
+    refused_by_name({.reflection_march_steps = 3}, "reflection_march_steps");
+    refused_by_name({.reflection_march_steps = 65}, "reflection_march_steps");
+    const auto shading = render::quality_settings(render::Quality::low, {.foam_lags = 3, .reflection_facets = 4});
+    ASSERT_TRUE(shading.ok()) << shading.error().message;
+    EXPECT_EQ(shading->foam_lags, 3);
+    EXPECT_EQ(shading->reflection_facets, 4);
+}
+
+// Fewer steps of the reflection's march grow faster, to reach as far as high's 24 steps
+// growing by 1.25: the first step times the sum of g^i, i < n.
+TEST(QualityTiers, AShorterReflectionMarchReachesAsFar) {
+    const auto reach = [](double g, int n) { return (std::pow(g, n) - 1.0) / (g - 1.0); };
+    EXPECT_EQ(render::reflection_step_growth(24), 1.25);
+    for (const int steps : {4, 8, 12, 32, 64}) {
+        const double g = render::reflection_step_growth(steps);
+        EXPECT_NEAR(reach(g, steps) / reach(1.25, 24), 1.0, 1e-6) << steps;
+        EXPECT_EQ(g > 1.25, steps < 24) << steps;
+    }
 }
 
 // Every debug view's name reads back as that view, and an unknown name as none.

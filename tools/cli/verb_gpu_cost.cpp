@@ -18,6 +18,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "atomic_file.hpp"
@@ -41,10 +42,12 @@ struct GpuCostArgs {
     std::string radv_icd = "/usr/share/vulkan/icd.d/radeon_icd.x86_64.json";
 };
 
-using StageCosts = std::map<std::pair<std::string, std::string>, StageCost>;  // (pipeline, stage)
+using StageCosts = std::map<std::tuple<std::string, std::string, std::string>, StageCost>;  // (tier, pipeline, stage)
 
-/// Runs this program's shader-stats on RADV's null device for `family`, into `json`.
-Status compile_on_null_device(const std::string& family, const std::string& icd, const std::filesystem::path& json) {
+/// Runs this program's shader-stats on RADV's null device for `family` and every tier of
+/// `tiers` (their shaders differ: specialization constants), into `json`.
+Status compile_on_null_device(const std::string& family, const std::string& icd, const std::vector<std::string>& tiers,
+                              const std::filesystem::path& json) {
     std::vector<std::string> env;
     for (char** e = environ; *e; ++e) {
         const std::string_view v(*e);
@@ -61,14 +64,17 @@ Status compile_on_null_device(const std::string& family, const std::string& icd,
     std::vector<char*> envp;
     for (std::string& e : env) envp.push_back(e.data());
     envp.push_back(nullptr);
-    std::string self = "/proc/self/exe", verb = "shader-stats", flag = "--json", out = json.string();
-    char* argv[] = {self.data(), verb.data(), flag.data(), out.data(), nullptr};
+    std::vector<std::string> args{"/proc/self/exe", "shader-stats", "--json", json.string(), "--tiers"};
+    args.insert(args.end(), tiers.begin(), tiers.end());
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
     // Its table goes nowhere; its errors reach our stderr.
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv, envp.data());
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (spawned != 0)
         return Error{ErrorCode::internal, fmt::format("could not start shader-stats for {}: {}", family, spawned)};
@@ -93,7 +99,8 @@ Result<StageCosts> read_stage_costs(const std::filesystem::path& json) {
                          fmt::format("{}: the driver gives no throughput, latency or "
                                      "occupancy for {} / {}",
                                      json.string(), st["pipeline"].get<std::string>(), st["stage"].get<std::string>())};
-        costs[{st["pipeline"], st["stage"]}] = {v["Inverse Throughput"], v["Latency"], v["Subgroups per SIMD"]};
+        costs[{st.value("tier", std::string("high")), st["pipeline"], st["stage"]}] = {
+            v["Inverse Throughput"], v["Latency"], v["Subgroups per SIMD"]};
     }
     return costs;
 }
@@ -167,7 +174,8 @@ int run_gpu_cost(const GpuCostArgs& a) {
     std::map<std::string, StageCosts> costs;  // per family
     for (const ReferenceGpu& gpu : reference_gpus()) {
         const auto json = work / (gpu.family + ".json");
-        if (auto st = compile_on_null_device(gpu.family, a.radv_icd, json); !st) return fail(verb, st.error().message);
+        if (auto st = compile_on_null_device(gpu.family, a.radv_icd, a.tiers, json); !st)
+            return fail(verb, st.error().message);
         auto c = read_stage_costs(json);
         if (!c) return fail(verb, c.error().message);
         costs[gpu.family] = std::move(c).value();
@@ -202,7 +210,7 @@ int run_gpu_cost(const GpuCostArgs& a) {
                 for (const ReferenceGpu& gpu : reference_gpus()) {
                     const StageCosts& c = costs[gpu.family];
                     auto cost = [&](const char* pipeline, const char* stage) {
-                        const auto it = c.find({pipeline, stage});
+                        const auto it = c.find({tier_name, pipeline, stage});
                         return it == c.end() ? StageCost{} : it->second;
                     };
                     const double vs = stage_ms(gpu, cost("water", "Vertex + Tessellation Control Shaders"),

@@ -41,6 +41,7 @@ struct RenderArgs {
     double gpu_memory_mib = 1024.0;
     std::string quality = "high";
     std::optional<double> water_pixels_per_vertex, water_max_foreshortening;
+    std::optional<int> foam_lags, reflection_facets, reflection_march_steps;
     bool validate = false;
 };
 
@@ -106,6 +107,15 @@ int run_render(const RenderArgs& a) {
     job.quality_overrides.water_max_foreshortening = a.water_max_foreshortening;
     if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
         return fail(verb, "--water-max-foreshortening: " + st.error().message);
+    job.quality_overrides.foam_lags = a.foam_lags;
+    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+        return fail(verb, "--foam-lags: " + st.error().message);
+    job.quality_overrides.reflection_facets = a.reflection_facets;
+    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+        return fail(verb, "--reflection-facets: " + st.error().message);
+    job.quality_overrides.reflection_march_steps = a.reflection_march_steps;
+    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+        return fail(verb, "--reflection-march-steps: " + st.error().message);
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -160,6 +170,13 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--water-max-foreshortening", args->water_max_foreshortening,
                     "Override how many times further apart the water's vertices may be along the view than across "
                     "it (1 to 100)");
+    cmd->add_option("--foam-lags", args->foam_lags,
+                    "Override how many of the crest foam's 0.5 s lags the water shows (0 to 4): how long whitecaps "
+                    "linger");
+    cmd->add_option("--reflection-facets", args->reflection_facets,
+                    "Override the facets a pixel of water reflects over (4, or 1 at their mean slope)");
+    cmd->add_option("--reflection-march-steps", args->reflection_march_steps,
+                    "Override the steps of the march that finds the terrain a reflection meets (4 to 64)");
     cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")
         ->capture_default_str();
     cmd->add_flag(

@@ -11,10 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "atomic_file.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/pipeline_statistics.hpp"
+#include "tidewater/render/quality.hpp"
 #include "tidewater/render/standalone.hpp"
 #include "verbs.hpp"
 
@@ -25,6 +27,7 @@ namespace {
 struct ShaderStatsArgs {
     std::string json;
     std::string budget;
+    std::vector<std::string> tiers{"high"};
     int samples = 1;
     bool water_per_sample = false;
 };
@@ -32,14 +35,20 @@ struct ShaderStatsArgs {
 /// The statistics the table shows, by RADV's names; a driver without one shows "-".
 constexpr const char* kColumns[] = {"Instructions", "VGPRs", "SGPRs", "Spilled VGPRs", "Latency", "Inverse Throughput"};
 
-std::string markdown_table(const std::string& device, const std::vector<render::PipelineStageStatistics>& stages) {
-    std::string s = fmt::format("Pipelines on {}\n\n| pipeline | stage |", device);
+/// A stage's statistics as built for one quality tier.
+struct TierStage {
+    std::string tier;
+    render::PipelineStageStatistics stage;
+};
+
+std::string markdown_table(const std::string& device, const std::vector<TierStage>& stages) {
+    std::string s = fmt::format("Pipelines on {}\n\n| tier | pipeline | stage |", device);
     for (const char* c : kColumns) s += fmt::format(" {} |", c);
-    s += "\n|---|---|";
+    s += "\n|---|---|---|";
     for (std::size_t c = 0; c < std::size(kColumns); ++c) s += "---:|";
     s += "\n";
-    for (const auto& st : stages) {
-        s += fmt::format("| {} | {} |", st.pipeline, st.stage);
+    for (const auto& [tier, st] : stages) {
+        s += fmt::format("| {} | {} | {} |", tier, st.pipeline, st.stage);
         for (const char* c : kColumns) {
             const double v = st.value(c);
             s += v < 0.0 ? " - |" : fmt::format(" {:.0f} |", v);
@@ -49,14 +58,14 @@ std::string markdown_table(const std::string& device, const std::vector<render::
     return s;
 }
 
-/// One row of a budget table: a stage's instructions and VGPRs as last accepted.
+/// One row of a budget table: a stage's instructions and VGPRs at a tier as last accepted.
 struct BudgetRow {
-    std::string pipeline, stage;
+    std::string tier, pipeline, stage;
     double instructions = 0.0, vgprs = 0.0;
     bool seen = false;
 };
 
-/// Reads a budget table: a header line, then "pipeline,stage,instructions,vgprs" rows.
+/// Reads a budget table: a header line, then "tier,pipeline,stage,instructions,vgprs" rows.
 Result<std::vector<BudgetRow>> read_budget(const std::string& path) {
     std::ifstream in(path);
     if (!in) return Error{ErrorCode::not_found, fmt::format("--budget: cannot read \"{}\"", path)};
@@ -69,36 +78,38 @@ Result<std::vector<BudgetRow>> read_budget(const std::string& path) {
         for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
         BudgetRow row;
         char* end = nullptr;
-        if (cells.size() == 4) {
-            row.pipeline = cells[0];
-            row.stage = cells[1];
-            row.instructions = std::strtod(cells[2].c_str(), &end);
-            const bool ok = end != cells[2].c_str() && *end == '\0';
-            row.vgprs = std::strtod(cells[3].c_str(), &end);
-            if (ok && end != cells[3].c_str() && *end == '\0' && row.instructions > 0.0 && row.vgprs > 0.0) {
+        if (cells.size() == 5 && render::quality_from_name(cells[0])) {
+            row.tier = cells[0];
+            row.pipeline = cells[1];
+            row.stage = cells[2];
+            row.instructions = std::strtod(cells[3].c_str(), &end);
+            const bool ok = end != cells[3].c_str() && *end == '\0';
+            row.vgprs = std::strtod(cells[4].c_str(), &end);
+            if (ok && end != cells[4].c_str() && *end == '\0' && row.instructions > 0.0 && row.vgprs > 0.0) {
                 rows.push_back(row);
                 continue;
             }
         }
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("--budget: \"{}\" line {}: expected pipeline,stage,instructions,vgprs with positive "
-                                 "counts, got \"{}\"",
+                     fmt::format("--budget: \"{}\" line {}: expected tier,pipeline,stage,instructions,vgprs (a tier "
+                                 "low, medium, high or ultra, positive counts), got \"{}\"",
                                  path, number, line)};
     }
     return rows;
 }
 
 /// Every way `stages` break `budget`: a stage over its row by more than 10 % in
-/// instructions or VGPRs, a stage that spills, a stage without a row, a row without a stage.
-std::vector<std::string> budget_breaches(const std::vector<render::PipelineStageStatistics>& stages,
-                                         std::vector<BudgetRow> budget) {
+/// instructions or VGPRs, a stage that spills, a stage without a row, a row of a tier
+/// built without a stage (rows of tiers not built are not checked).
+std::vector<std::string> budget_breaches(const std::vector<TierStage>& stages, std::vector<BudgetRow> budget) {
     std::vector<std::string> out;
-    for (const auto& st : stages) {
-        const std::string name = fmt::format("{} / {}", st.pipeline, st.stage);
+    for (const auto& [tier, st] : stages) {
+        const std::string name = fmt::format("{} / {} / {}", tier, st.pipeline, st.stage);
         if (st.value("Spilled VGPRs", 0.0) > 0.0 || st.value("Spilled SGPRs", 0.0) > 0.0)
             out.push_back(fmt::format("{} spills registers", name));
-        auto row = std::find_if(budget.begin(), budget.end(),
-                                [&](const BudgetRow& r) { return r.pipeline == st.pipeline && r.stage == st.stage; });
+        auto row = std::find_if(budget.begin(), budget.end(), [&](const BudgetRow& r) {
+            return r.tier == tier && r.pipeline == st.pipeline && r.stage == st.stage;
+        });
         if (row == budget.end()) {
             out.push_back(fmt::format("{} has no row in the budget: add one", name));
             continue;
@@ -109,10 +120,13 @@ std::vector<std::string> budget_breaches(const std::vector<render::PipelineStage
                 out.push_back(
                     fmt::format("{}: {} {:.0f}, more than 10 % over its budget of {:.0f}", name, what, v, limit));
     }
-    for (const BudgetRow& r : budget)
-        if (!r.seen)
-            out.push_back(
-                fmt::format("{} / {} is in the budget but was not built: remove its row", r.pipeline, r.stage));
+    for (const BudgetRow& r : budget) {
+        const bool tier_built =
+            std::any_of(stages.begin(), stages.end(), [&](const TierStage& s) { return s.tier == r.tier; });
+        if (tier_built && !r.seen)
+            out.push_back(fmt::format("{} / {} / {} is in the budget but was not built: remove its row", r.tier,
+                                      r.pipeline, r.stage));
+    }
     return out;
 }
 
@@ -146,16 +160,23 @@ int run_shader_stats(const ShaderStatsArgs& a) {
     init.samples = static_cast<VkSampleCountFlagBits>(a.samples);
     init.shade_water_per_sample = a.water_per_sample;
     init.wireframe = (*device)->context().enabled_features.fillModeNonSolid == VK_TRUE;
-    auto stages = render::compile_pipeline_statistics(init);
-    if (!stages) return fail(verb, stages.error().message);
-    std::fputs(markdown_table((*device)->device_name(), *stages).c_str(), stdout);
+    std::vector<TierStage> stages;
+    for (const std::string& tier : a.tiers) {
+        const auto quality = render::quality_from_name(tier);
+        if (!quality) return fail(verb, fmt::format("--tiers: \"{}\" is not a tier (low, medium, high, ultra)", tier));
+        init.quality = *quality;
+        auto built = render::compile_pipeline_statistics(init);
+        if (!built) return fail(verb, built.error().message);
+        for (auto& st : *built) stages.push_back({tier, std::move(st)});
+    }
+    std::fputs(markdown_table((*device)->device_name(), stages).c_str(), stdout);
     if (json_file) {
         nlohmann::json j;
         j["device"] = (*device)->device_name();
         j["samples"] = a.samples;
         j["water_per_sample"] = a.water_per_sample;
-        for (const auto& st : *stages) {
-            nlohmann::json stage{{"pipeline", st.pipeline}, {"stage", st.stage}};
+        for (const auto& [tier, st] : stages) {
+            nlohmann::json stage{{"tier", tier}, {"pipeline", st.pipeline}, {"stage", st.stage}};
             for (const auto& s : st.statistics)
                 stage["statistics"].push_back({{"name", s.name}, {"description", s.description}, {"value", s.value}});
             j["stages"].push_back(stage);
@@ -163,7 +184,7 @@ int run_shader_stats(const ShaderStatsArgs& a) {
         if (auto st = json_file->write_and_commit(j.dump(2) + "\n"); !st) return fail(verb, st.error().message);
     }
     if (!a.budget.empty()) {
-        const std::vector<std::string> breaches = budget_breaches(*stages, budget);
+        const std::vector<std::string> breaches = budget_breaches(stages, budget);
         for (const std::string& b : breaches)
             std::fprintf(stderr, "tidewater shader-stats: over budget: %s\n", b.c_str());
         if (!breaches.empty())
@@ -183,8 +204,10 @@ Verb add_shader_stats_verb(CLI::App& app) {
         "spills, latency), without drawing: works on a driver's null device (RADV_FORCE_FAMILY)");
     cmd->add_option("--json", args->json, "Write every statistic of every stage as JSON");
     cmd->add_option("--budget", args->budget,
-                    "A table of each stage's instructions and VGPRs (CSV: pipeline,stage,instructions,vgprs); fail "
-                    "when a stage grows more than 10 % past its row, spills, or has no row");
+                    "A table of each stage's instructions and VGPRs per tier (CSV: tier,pipeline,stage,instructions,"
+                    "vgprs); fail when a stage built grows more than 10 % past its row, spills, or has no row");
+    cmd->add_option("--tiers", args->tiers, "Quality tiers to build the pipelines for (low, medium, high, ultra)")
+        ->capture_default_str();
     cmd->add_option("--samples", args->samples, "Samples per pixel of the targets (1, 2, 4 or 8)")
         ->check(CLI::IsMember({1, 2, 4, 8}));
     cmd->add_flag("--water-per-sample", args->water_per_sample, "The water shaded at every sample");

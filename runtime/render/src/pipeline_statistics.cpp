@@ -87,8 +87,11 @@ Result<std::vector<PipelineStageStatistics>> compile_pipeline_statistics(const R
         return Error{ErrorCode::unsupported,
                      "pipeline statistics: the device does not expose VK_KHR_pipeline_executable_properties "
                      "(or the host did not enable it: DeviceContext::pipeline_executable_info)"};
-    auto pipelines = detail::FramePipelines::create(*device, init.color_format, init.depth_format, init.samples,
-                                                    init.shade_water_per_sample, init.wireframe);
+    auto quality = quality_settings(init.quality, init.quality_overrides);
+    if (!quality) return Error{quality.error().code, "pipeline statistics: " + quality.error().message};
+    auto pipelines = detail::FramePipelines::create(
+        *device, {init.color_format, init.depth_format, init.samples, init.shade_water_per_sample, init.wireframe,
+                  detail::WaterShading::from(*quality)});
     if (!pipelines) return pipelines.error();
     return detail::draw_pipeline_statistics(*device, pipelines->draws);
 }

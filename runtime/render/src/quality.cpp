@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "host_device.h"
+
 namespace tidewater::render {
 
 namespace {
@@ -16,17 +18,44 @@ struct Tier {
     QualitySettings settings;
 };
 
-// `high` keeps the water's geometry as it was drawn before the tiers; `medium` and `low`
-// let the vertices follow the screen at grazing angles (docs/PERFORMANCE.md, "Quality tiers").
+// `medium` and `low` let the water's vertices follow the screen at grazing angles and
+// shade less; `high` spreads them half as much again along the view as across it, where
+// the far field stays within its bound of the supersampled picture (docs/PERFORMANCE.md,
+// "Quality tiers").
 constexpr std::array<Tier, 4> kTiers{{
-    {Quality::low, "low", {.water_pixels_per_vertex = 8.0, .water_max_foreshortening = 100.0}},
-    {Quality::medium, "medium", {.water_pixels_per_vertex = 4.0, .water_max_foreshortening = 8.0}},
-    {Quality::high, "high", {.water_pixels_per_vertex = 3.0, .water_max_foreshortening = 1.0}},
-    {Quality::ultra, "ultra", {.water_pixels_per_vertex = 2.0, .water_max_foreshortening = 1.0}},
+    {Quality::low,
+     "low",
+     {.water_pixels_per_vertex = 8.0,
+      .water_max_foreshortening = 100.0,
+      .foam_lags = 0,
+      .reflection_facets = 1,
+      .reflection_march_steps = 8}},
+    {Quality::medium,
+     "medium",
+     {.water_pixels_per_vertex = 4.0,
+      .water_max_foreshortening = 8.0,
+      .foam_lags = 2,
+      .reflection_facets = 4,
+      .reflection_march_steps = 12}},
+    {Quality::high,
+     "high",
+     {.water_pixels_per_vertex = 3.0,
+      .water_max_foreshortening = 1.5,
+      .foam_lags = 4,
+      .reflection_facets = 4,
+      .reflection_march_steps = 24}},
+    {Quality::ultra,
+     "ultra",
+     {.water_pixels_per_vertex = 2.0,
+      .water_max_foreshortening = 1.0,
+      .foam_lags = 4,
+      .reflection_facets = 4,
+      .reflection_march_steps = 32}},
 }};
 
-Status check_override(const std::optional<double>& value, const char* name, double lo, double hi) {
-    if (!value || (std::isfinite(*value) && *value >= lo && *value <= hi)) return {};
+template <typename T>
+Status check_override(const std::optional<T>& value, const char* name, T lo, T hi) {
+    if (!value || (std::isfinite(static_cast<double>(*value)) && *value >= lo && *value <= hi)) return {};
     return Error{ErrorCode::invalid_argument,
                  fmt::format("quality override {} = {}: must be in [{}, {}]", name, *value, lo, hi)};
 }
@@ -45,9 +74,32 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
         return st.error();
     if (auto st = check_override(overrides.water_max_foreshortening, "water_max_foreshortening", 1.0, 100.0); !st)
         return st.error();
+    if (auto st = check_override(overrides.foam_lags, "foam_lags", 0, static_cast<int>(gpu::kFoamLags)); !st)
+        return st.error();
+    if (overrides.reflection_facets && *overrides.reflection_facets != 1 && *overrides.reflection_facets != 4)
+        return Error{ErrorCode::invalid_argument, fmt::format("quality override reflection_facets = {}: must be 1 or 4",
+                                                              *overrides.reflection_facets)};
+    if (auto st = check_override(overrides.reflection_march_steps, "reflection_march_steps", 4, 64); !st)
+        return st.error();
     s.water_pixels_per_vertex = overrides.water_pixels_per_vertex.value_or(s.water_pixels_per_vertex);
     s.water_max_foreshortening = overrides.water_max_foreshortening.value_or(s.water_max_foreshortening);
+    s.foam_lags = overrides.foam_lags.value_or(s.foam_lags);
+    s.reflection_facets = overrides.reflection_facets.value_or(s.reflection_facets);
+    s.reflection_march_steps = overrides.reflection_march_steps.value_or(s.reflection_march_steps);
     return s;
+}
+
+double reflection_step_growth(int steps) {
+    // The reach in first steps: sum of g^i, i < n = (g^n - 1) / (g - 1), increasing in g.
+    const auto reach = [](double g, int n) { return (std::pow(g, n) - 1.0) / (g - 1.0); };
+    const double wanted = reach(1.25, 24);
+    if (steps == 24) return 1.25;
+    double lo = 1.0 + 1e-9, hi = 16.0;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (reach(mid, steps) < wanted ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
 std::string_view quality_name(Quality tier) {

@@ -30,6 +30,15 @@ Result<OwnedShaderModule> make_module(const Device& ctx, std::string_view name, 
 
 }  // namespace
 
+WaterShading WaterShading::from(const QualitySettings& q) {
+    WaterShading w;
+    w.foam_lags = static_cast<std::uint32_t>(q.foam_lags);
+    w.reflection_facets = static_cast<std::uint32_t>(q.reflection_facets);
+    w.reflection_steps = q.reflection_march_steps;
+    w.reflection_step_growth = static_cast<float>(render::reflection_step_growth(q.reflection_march_steps));
+    return w;
+}
+
 Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     struct Stage {
         std::string_view name;
@@ -43,6 +52,14 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     wanted.push_back({d.fragment, VK_SHADER_STAGE_FRAGMENT_BIT});
     std::vector<OwnedShaderModule> modules;  // destroyed once the pipeline is made
     std::vector<VkPipelineShaderStageCreateInfo> stages;
+    // Every stage gets the water's constants; a stage without them ignores them.
+    const VkSpecializationMapEntry water_entries[] = {
+        {gpu::kSpecFoamLags, offsetof(WaterShading, foam_lags), sizeof(std::uint32_t)},
+        {gpu::kSpecReflectionFacets, offsetof(WaterShading, reflection_facets), sizeof(std::uint32_t)},
+        {gpu::kSpecReflectionSteps, offsetof(WaterShading, reflection_steps), sizeof(std::int32_t)},
+        {gpu::kSpecReflectionStepGrowth, offsetof(WaterShading, reflection_step_growth), sizeof(float)}};
+    VkSpecializationInfo water_specialization{static_cast<std::uint32_t>(std::size(water_entries)), water_entries,
+                                              sizeof(WaterShading), d.water};
     for (const Stage& s : wanted) {
         auto module = make_module(ctx, s.name, d.shaders);
         if (!module) return module.error();
@@ -51,6 +68,7 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
         info.stage = s.stage;
         info.module = modules.back().get();
         info.pName = "main";
+        if (d.water) info.pSpecializationInfo = &water_specialization;
         stages.push_back(info);
     }
 
@@ -165,26 +183,24 @@ Status create_samplers(const Device& ctx, FramePipelines& p) {
 
 }  // namespace
 
-Result<FramePipelines> FramePipelines::create(const Device& ctx, VkFormat color_format, VkFormat depth_format,
-                                              VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe) {
+Result<FramePipelines> FramePipelines::create(const Device& ctx, const DrawOptions& options) {
     FramePipelines p;
     if (auto st = create_layouts(ctx, p); !st) return st.error();
     if (auto st = create_samplers(ctx, p); !st) return st.error();
-    auto draws = p.make_draws(ctx, color_format, depth_format, samples, water_per_sample, wireframe, nullptr);
+    auto draws = p.make_draws(ctx, options, nullptr);
     if (!draws) return draws.error();
     p.draws = std::move(draws).value();
     return p;
 }
 
-Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, VkFormat color_format, VkFormat depth_format,
-                                                 VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
+Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, const DrawOptions& options,
                                                  const ShaderLookup& shaders) const {
     DrawPipelines p;
     PipelineDesc base;
     base.layout = layout.get();
-    base.color_format = color_format;
-    base.depth_format = depth_format;
-    base.samples = samples;
+    base.color_format = options.color_format;
+    base.depth_format = options.depth_format;
+    base.samples = options.samples;
     base.shaders = shaders;
     auto make = [&](OwnedPipeline& out, const PipelineDesc& d) -> Status {
         auto made = create_pipeline(ctx, d);
@@ -211,9 +227,10 @@ Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, VkFormat col
     water.vertex = "water.vert";
     water.tess_control = "water.tesc";
     water.tess_eval = "water.tese";
-    water.fragment = water_per_sample ? "water_per_sample.frag" : "water.frag";
+    water.fragment = options.water_per_sample ? "water_per_sample.frag" : "water.frag";
+    water.water = &options.water;
     if (auto st = make(p.water, water); !st) return st.error();
-    if (wireframe) {
+    if (options.wireframe) {
         terrain.polygon_mode = water.polygon_mode = VK_POLYGON_MODE_LINE;
         if (auto st = make(p.terrain_wire, terrain); !st) return st.error();
         if (auto st = make(p.water_wire, water); !st) return st.error();

@@ -10,6 +10,7 @@
 #include <span>
 #include <string_view>
 
+#include "tidewater/render/quality.hpp"
 #include "tidewater/result.hpp"
 #include "vk_handle.hpp"
 
@@ -17,6 +18,17 @@ namespace tidewater::render::detail {
 
 /// SPIR-V of a shader by source name ("water.frag"); empty: the embedded one.
 using ShaderLookup = std::function<std::span<const std::uint32_t>(std::string_view name)>;
+
+/// What the quality tier chooses for the water's shaders: their specialization constants
+/// (gpu::kSpec*, water_quality.glsl).
+struct WaterShading {
+    std::uint32_t foam_lags = 4;
+    std::uint32_t reflection_facets = 4;
+    std::int32_t reflection_steps = 24;
+    float reflection_step_growth = 1.25f;
+
+    static WaterShading from(const QualitySettings& q);
+};
 
 struct PipelineDesc {
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -29,7 +41,8 @@ struct PipelineDesc {
     enum class Vertices { none, mesh, terrain_patch } vertices = Vertices::none;
     bool depth_write = true;
     VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
-    ShaderLookup shaders;  ///< overrides of the embedded SPIR-V (hot reload); null: none
+    ShaderLookup shaders;                 ///< overrides of the embedded SPIR-V (hot reload); null: none
+    const WaterShading* water = nullptr;  ///< the water shaders' specialization; null: their defaults
 };
 
 Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& desc);
@@ -40,6 +53,18 @@ struct DrawPipelines {
     OwnedPipeline sky, terrain, terrain_wire, floats, water, water_wire;
 };
 
+/// What the draw pipelines are made for: the targets' formats and samples, and the water's shading.
+struct DrawOptions {
+    VkFormat color_format = VK_FORMAT_UNDEFINED;
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    /// The water's fragment shader is water_per_sample.frag (shaded at every sample;
+    /// RendererInitInfo::shade_water_per_sample).
+    bool water_per_sample = false;
+    bool wireframe = false;
+    WaterShading water;
+};
+
 /// Everything a frame's draws bind, made once per renderer: the layout of set
 /// gpu::kFrameSet (kFrameSetRows) and the push constants of host_device.h.
 struct FramePipelines {
@@ -48,14 +73,9 @@ struct FramePipelines {
     DrawPipelines draws;
     OwnedSampler linear, nearest;
 
-    /// `water_per_sample`: the water's fragment shader is water_per_sample.frag (shaded at
-    /// every sample; RendererInitInfo::shade_water_per_sample).
-    static Result<FramePipelines> create(const Device& ctx, VkFormat color_format, VkFormat depth_format,
-                                         VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe);
+    static Result<FramePipelines> create(const Device& ctx, const DrawOptions& options);
     /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.
-    Result<DrawPipelines> make_draws(const Device& ctx, VkFormat color_format, VkFormat depth_format,
-                                     VkSampleCountFlagBits samples, bool water_per_sample, bool wireframe,
-                                     const ShaderLookup& shaders) const;
+    Result<DrawPipelines> make_draws(const Device& ctx, const DrawOptions& options, const ShaderLookup& shaders) const;
 };
 
 }  // namespace tidewater::render::detail

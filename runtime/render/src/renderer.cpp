@@ -92,6 +92,11 @@ struct Renderer::Impl {
     detail::Device device;  // the host's, with the functions loaded for it
     RendererInitInfo info;
     QualitySettings quality;  // info.quality with its overrides
+
+    detail::DrawOptions draw_options() const {
+        return {info.color_format,           info.depth_format, info.samples,
+                info.shade_water_per_sample, info.wireframe,    detail::WaterShading::from(quality)};
+    }
     /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
     /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
     struct Retired {
@@ -528,8 +533,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     impl->device = c;
     impl->info = info;
     impl->quality = *quality;
-    auto pipelines = detail::FramePipelines::create(c, info.color_format, info.depth_format, info.samples,
-                                                    info.shade_water_per_sample, impl->info.wireframe);
+    auto pipelines = detail::FramePipelines::create(c, impl->draw_options());
     if (!pipelines) return pipelines.error();
     impl->pipelines = std::move(pipelines).value();
     VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -715,8 +719,7 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
         const auto it = spirv.find(name);
         return it == spirv.end() ? std::span<const std::uint32_t>() : std::span<const std::uint32_t>(it->second);
     };
-    auto draws = m.pipelines.make_draws(m.ctx(), m.info.color_format, m.info.depth_format, m.info.samples,
-                                        m.info.shade_water_per_sample, m.info.wireframe, lookup);
+    auto draws = m.pipelines.make_draws(m.ctx(), m.draw_options(), lookup);
     if (!draws) return draws.error();  // the current pipelines keep drawing
     // No device-wide wait: the old pipelines live until the frames in flight are done.
     m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});

@@ -14,7 +14,7 @@
 namespace tidewater::render {
 
 /// Builds the renderer's pipelines as RendererInitInfo `init` asks (its formats, samples,
-/// per-sample water, wireframe) on `init.device`, draws nothing, and returns the
+/// per-sample water, wireframe, quality tier) on `init.device`, draws nothing, and returns the
 /// statistics of every stage. For devices that cannot draw, such as a driver's null
 /// device. Fails with ErrorCode::unsupported, saying so, where the device has no
 /// pipeline_executable_info.

@@ -1,8 +1,9 @@
 // Quality tiers: how much the renderer draws, chosen once when it is made
 // (RendererInitInfo::quality) and tuned setting by setting (QualityOverrides).
 //
-// `high` is the default and draws the water's geometry as before the tiers; `ultra` is
-// for stills; `low` and `medium` are for weaker GPUs and for several views at once.
+// `high` is the default; `ultra` is for stills; `low` and `medium` are for weaker GPUs
+// and for several views at once. The tiers change what is drawn, never what the CPU
+// queries answer (a query's foam remembers every lag at every tier).
 // Each tier's cost: docs/PERFORMANCE.md ("Quality tiers"), `tidewater gpu-cost`.
 //
 // Lifetime and threading: plain values, copied by the renderer. Units: pixels of the
@@ -29,18 +30,36 @@ struct QualitySettings {
     /// view as across it, so that every wave a pixel resolves keeps its shape and the
     /// crests that hide the troughs (sub-pixel triangles at grazing angles); larger: fewer
     /// vertices and fragments, those waves only in the shading. 1 to 100.
-    double water_max_foreshortening = 1.0;
+    double water_max_foreshortening = 1.5;
+    /// How far back the foam on the crests remembers (whitecaps linger as they fade): the
+    /// first this many of the lags of the crests' compression (kFoamLags, 0.5 s apart;
+    /// tidewater::detail::surface_foam). 0: only the fresh foam. 0 to 4.
+    int foam_lags = 4;
+    /// The facets a pixel of water reflects the sky and the scene over: 4 (two along the
+    /// view, two across it, where its waves are not all resolved) or 1, at their mean slope
+    /// (a far field's reflection less spread).
+    int reflection_facets = 4;
+    /// Steps of the march that finds the terrain a reflection meets; fewer steps grow
+    /// faster, to reach as far, and place a far hill's silhouette less closely. 4 to 64.
+    int reflection_march_steps = 24;
 };
 
 /// Settings that replace a tier's own; unset ones keep the tier's.
 struct QualityOverrides {
     std::optional<double> water_pixels_per_vertex;
     std::optional<double> water_max_foreshortening;
+    std::optional<int> foam_lags;
+    std::optional<int> reflection_facets;
+    std::optional<int> reflection_march_steps;
 };
 
 /// The tier's settings with `overrides` applied; an override out of its range is refused
 /// with an error naming it.
 Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& overrides = {});
+
+/// How much each step of the reflection's march grows on the last so that `steps` steps
+/// reach as far as `high`'s 24 steps growing by 1.25 (1054.8 first steps).
+double reflection_step_growth(int steps);
 
 /// "low", "medium", "high", "ultra".
 std::string_view quality_name(Quality tier);

@@ -1,0 +1,16 @@
+// What the quality tier chooses for the water's shaders (tidewater::render::QualitySettings),
+// as specialization constants set at pipeline creation; the defaults are `high`'s.
+#ifndef TIDEWATER_WATER_QUALITY_GLSL
+#define TIDEWATER_WATER_QUALITY_GLSL
+
+// The crest foam's memory the pixels show: the first this many of the kFoamLags lags.
+layout(constant_id = kSpecFoamLags) const uint kFoamLagsShown = 4u;
+// The visible facets the sky's and the scene's reflection average over (visible_facets.glsl):
+// 4, or 1 at the facets' mean slope.
+layout(constant_id = kSpecReflectionFacets) const uint kReflectionFacets = 4u;
+// The march toward the terrain a reflection may meet (scene_reflection.glsl): its steps,
+// each this many times the last; fewer steps grow faster to reach as far.
+layout(constant_id = kSpecReflectionSteps) const int kReflectionSteps = 24;
+layout(constant_id = kSpecReflectionStepGrowth) const float kReflectionStepGrowth = 1.25;
+
+#endif
