@@ -1,5 +1,6 @@
 // What the quality tier chooses for the water's shaders (tidewater::render::QualitySettings),
-// as specialization constants set at pipeline creation; the defaults are `high`'s.
+// as specialization constants set at pipeline creation; the defaults are `ultra`'s (the
+// shaders as they were before the tiers).
 #ifndef TIDEWATER_WATER_QUALITY_GLSL
 #define TIDEWATER_WATER_QUALITY_GLSL
 

@@ -47,7 +47,8 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
     const auto high = render::quality_settings(render::Quality::high);
     EXPECT_EQ(high->foam_lags, 4);
     EXPECT_EQ(high->reflection_facets, 4);
-    EXPECT_EQ(high->reflection_march_steps, 24);
+    EXPECT_EQ(high->reflection_march_steps, 12);
+    EXPECT_EQ(render::quality_settings(render::Quality::ultra)->reflection_march_steps, 24);
     EXPECT_FALSE(render::quality_from_name("extreme").has_value());
     EXPECT_EQ(render::RendererInitInfo{}.quality, render::Quality::high);
 

@@ -20,7 +20,7 @@ namespace tidewater::render::detail {
 using ShaderLookup = std::function<std::span<const std::uint32_t>(std::string_view name)>;
 
 /// What the quality tier chooses for the water's shaders: their specialization constants
-/// (gpu::kSpec*, water_quality.glsl).
+/// (gpu::kSpec*, water_quality.glsl). The defaults are the shaders' own (`ultra`'s).
 struct WaterShading {
     std::uint32_t foam_lags = 4;
     std::uint32_t reflection_facets = 4;

@@ -11,11 +11,14 @@ layout(location = 6) in vec2 shore_info;
 layout(location = 7) in float rest_level;
 layout(location = 8) in vec2 current;
 layout(location = 9) in vec4 lagged_jacobian;
+layout(location = 10) in vec4 hidden;
+layout(location = 11) in vec4 hidden_lagged;
+layout(location = 12) in vec4 hidden_lagged_slope;
 layout(location = 0) out vec4 out_color;
 
 void main() {
     float any = world_pos.x + geo_normal.x + rest_xz.x + jacobian + eta + wake_eta + shore_info.x + rest_level + current.x +
-                lagged_jacobian.x;
+                lagged_jacobian.x + hidden.x + hidden_lagged.x + hidden_lagged_slope.x;
     if (!(any > 3.0e38)) discard;
     out_color = vec4(any);
 }

@@ -41,7 +41,7 @@ struct QualitySettings {
     int reflection_facets = 4;
     /// Steps of the march that finds the terrain a reflection meets; fewer steps grow
     /// faster, to reach as far, and place a far hill's silhouette less closely. 4 to 64.
-    int reflection_march_steps = 24;
+    int reflection_march_steps = 12;
 };
 
 /// Settings that replace a tier's own; unset ones keep the tier's.
