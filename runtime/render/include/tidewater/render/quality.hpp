@@ -19,12 +19,12 @@ namespace tidewater::render {
 
 enum class Quality { low, medium, high, ultra };
 
-/// Every setting a tier fixes.
+/// Every setting a tier fixes; the defaults are `high`'s.
 struct QualitySettings {
     /// The water's vertices are this many pixels apart on screen across the view. Waves
     /// too short for them are drawn in the shading instead. Fewer pixels: more vertices,
     /// more fragment invocations (small triangles shade whole 2x2 quads). 1 to 32.
-    double water_pixels_per_vertex = 3.0;
+    double water_pixels_per_vertex = 4.0;
     /// How many times further apart the water's vertices may be along the view than across
     /// it, following the screen's foreshortening at grazing angles. 1: as close along the
     /// view as across it, so that every wave a pixel resolves keeps its shape and the
@@ -58,7 +58,7 @@ struct QualityOverrides {
 Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& overrides = {});
 
 /// How much each step of the reflection's march grows on the last so that `steps` steps
-/// reach as far as `high`'s 24 steps growing by 1.25 (1054.8 first steps).
+/// reach as far as `ultra`'s 24 steps growing by 1.25 (1054.8 first steps).
 double reflection_step_growth(int steps);
 
 /// "low", "medium", "high", "ultra".
