@@ -222,6 +222,7 @@ JSON
     "$TW" render --size 160x90 --time 2 --quality low --out low.png --stats low.json --validate > loglow.txt
     check "the low tier renders under validation" test $? -eq 0
     check "with its vertices further apart" grep -q '"water_pixels_per_vertex": 8' low.json
+    check "and its foam's lags" grep -q '"foam_lags": 0' low.json
     "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
     check "a 16 MiB budget renders under validation" test $? -eq 0
     check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json
@@ -255,6 +256,9 @@ JSON
     expect_error "unknown quality tier" "--quality" "$TW" render --quality extreme --out o.png
     expect_error "vertex spacing out of range" "--water-pixels-per-vertex" "$TW" render --water-pixels-per-vertex 0 --out o.png
     expect_error "foreshortening out of range" "--water-max-foreshortening" "$TW" render --water-max-foreshortening nan --out o.png
+    expect_error "foam lags out of range" "--foam-lags" "$TW" render --foam-lags 5 --out o.png
+    expect_error "reflection facets not 1 or 4" "--reflection-facets" "$TW" render --reflection-facets 2 --out o.png
+    expect_error "march steps out of range" "--reflection-march-steps" "$TW" render --reflection-march-steps 3 --out o.png
     printf 'not a png' > corrupt.png
     echo '{"version": 1, "water_level": 0, "terrain": {"heightmap": {"file": "corrupt.png", "size": [100, 100], "height_range": [-5, 5]}}, "ocean": "pool_calm"}' > corrupt.json
     expect_error "corrupt heightmap" "corrupt.png: not a readable image" "$TW" render --scene corrupt.json --out o.png

@@ -101,21 +101,21 @@ int run_render(const RenderArgs& a) {
     if (!quality)
         return fail(verb, fmt::format("--quality: \"{}\" is not a tier (low, medium, high, ultra)", a.quality));
     job.quality = *quality;
-    job.quality_overrides.water_pixels_per_vertex = a.water_pixels_per_vertex;
-    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
-        return fail(verb, "--water-pixels-per-vertex: " + st.error().message);
-    job.quality_overrides.water_max_foreshortening = a.water_max_foreshortening;
-    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
-        return fail(verb, "--water-max-foreshortening: " + st.error().message);
-    job.quality_overrides.foam_lags = a.foam_lags;
-    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
-        return fail(verb, "--foam-lags: " + st.error().message);
-    job.quality_overrides.reflection_facets = a.reflection_facets;
-    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
-        return fail(verb, "--reflection-facets: " + st.error().message);
-    job.quality_overrides.reflection_march_steps = a.reflection_march_steps;
-    if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
-        return fail(verb, "--reflection-march-steps: " + st.error().message);
+    // One override at a time, so that a refusal names the flag that gave it.
+    std::string refused;
+    auto override_with = [&](auto& field, const auto& value, const char* flag) {
+        if (!refused.empty()) return;
+        field = value;
+        if (auto st = render::quality_settings(job.quality, job.quality_overrides); !st)
+            refused = fmt::format("{}: {}", flag, st.error().message);
+    };
+    render::QualityOverrides& o = job.quality_overrides;
+    override_with(o.water_pixels_per_vertex, a.water_pixels_per_vertex, "--water-pixels-per-vertex");
+    override_with(o.water_max_foreshortening, a.water_max_foreshortening, "--water-max-foreshortening");
+    override_with(o.foam_lags, a.foam_lags, "--foam-lags");
+    override_with(o.reflection_facets, a.reflection_facets, "--reflection-facets");
+    override_with(o.reflection_march_steps, a.reflection_march_steps, "--reflection-march-steps");
+    if (!refused.empty()) return fail(verb, refused);
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
