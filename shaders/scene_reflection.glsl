@@ -54,9 +54,10 @@ float terrain_tangent(vec3 origin, vec3 r, float horizontal, float t) {
 // What the ray r (unit, upward) from water point `origin` reflects of the scene.
 // `elevation_spread`: the deviation of the pixel's reflected rays' elevation tangents
 // about r's (water.frag: the facets' slope deviation doubled in reflection, and the
-// elevation's change to the next pixel). The march: kReflectionSteps steps (24 at `ultra`, 12
-// at `high`) growing by kReflectionStepGrowth (1.25 at 24 steps) from `first_step` m; the terrain's silhouette is then refined between the samples round
-// its highest, so that it does not step with them.
+// elevation's change to the next pixel). The march: kReflectionSteps steps (24 at
+// `ultra`, 12 at `high`) growing by kReflectionStepGrowth (1.25 at 24 steps) from
+// `first_step` m; the terrain's silhouette is then refined between the samples round its
+// highest, so that it does not step with them.
 SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float elevation_spread) {
     float horizontal = max(length(r.xz), 1e-4);
     float ray_tangent = r.y / horizontal;
