@@ -1,9 +1,10 @@
 // Set kFrameSet of the render pipelines (bindings in host_device.h): frame constants,
-// waves, the terrain height texture and the copy of the opaque scene.
+// waves, the terrain height texture, the copy of the opaque scene and the sky table.
 #ifndef TIDEWATER_FRAME_GLSL
 #define TIDEWATER_FRAME_GLSL
 
 #include "noise.glsl"
+#include "sky.glsl"
 
 layout(std140, set = kFrameSet, binding = eFrameConstants) uniform Frame { GpuFrame frame; };
 layout(std430, set = kFrameSet, binding = eFrameWaves) readonly buffer Waves { GpuWave waves[]; };
@@ -14,6 +15,7 @@ layout(std430, set = kFrameSet, binding = eFrameShoreWaves) readonly buffer Shor
 layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer ShoreSharedBuf { vec4 shore_shared[]; };
 layout(std430, set = kFrameSet, binding = eFrameShorePages) readonly buffer ShorePagesBuf { uint shore_pages[]; };
 layout(std430, set = kFrameSet, binding = eFrameShoreLayers) readonly buffer ShoreLayersBuf { GpuShoreLayer shore_layers[]; };
+layout(set = kFrameSet, binding = eFrameSkyTable) uniform sampler2D sky_table;  // sky.glsl
 
 // The ground's height (m) at xz relative to O: the height texture between its texel
 // centres, and beyond them the edge value eased to the seabed (the GLSL twin of
@@ -39,50 +41,16 @@ vec3 terrain_normal_at(vec2 xz, float step) {
     return normalize(vec3(-dx / (2.0 * e.x), 1.0, -dz / (2.0 * e.y)));
 }
 
-vec3 srgb_to_linear(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
-vec3 linear_to_srgb(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
-
-// The Perez function of the Preetham sky for one of Y, x, y (sky_model.hpp).
-float perez(vec4 abcd, float e, float cos_theta, float gamma) {
-    float cos_gamma = cos(gamma);
-    return (1.0 + abcd.x * exp(abcd.y / max(cos_theta, 0.01))) * (1.0 + abcd.z * exp(abcd.w * gamma) + e * cos_gamma * cos_gamma);
-}
-
-// Sky colour toward direction d (y up), display-referred: the Preetham sky's luminance
-// (relative to the zenith's) and chromaticity in linear sRGB, white-balanced, exposed
-// with a soft shoulder that keeps the hue, saturated as a camera renders daylight
-// (frame_constants.cpp), sRGB-encoded; plus the sun's disc and glow. Below the horizon
-// it darkens toward the ground's haze.
-vec3 sky_color(vec3 d) {
-    vec3 up_dir = normalize(vec3(d.x, max(d.y, 0.0), d.z));
-    vec3 sun = normalize(vec3(frame.sun.x, max(frame.sun.y, 0.0), frame.sun.z));
-    float gamma = acos(clamp(dot(up_dir, sun), -1.0, 1.0));
-    float Y = frame.sky_zenith.x * perez(frame.sky_Y, frame.sky_e.x, up_dir.y, gamma);
-    float x = frame.sky_zenith.y * perez(frame.sky_x, frame.sky_e.y, up_dir.y, gamma);
-    float y = max(frame.sky_zenith.z * perez(frame.sky_y, frame.sky_e.z, up_dir.y, gamma), 1e-4);
-    vec3 XYZ = vec3(x * Y / y, Y, (1.0 - x - y) * Y / y);
-    vec3 rgb = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) * XYZ, vec3(0.0));
-    rgb *= frame.sky_balance.xyz;
-    float luminance = max(dot(rgb, vec3(0.2126, 0.7152, 0.0722)), 1e-6);
-    float shown = 1.0 - exp(-frame.sky_e.w * luminance);
-    rgb *= shown / luminance;
-    vec3 sky = linear_to_srgb(max(mix(vec3(shown), rgb, frame.sky_zenith.w), vec3(0.0)));
-    if (d.y < 0.0) sky = mix(sky, vec3(0.35, 0.42, 0.5), clamp(-d.y * 5.0, 0.0, 1.0));
-    float s = max(dot(d, frame.sun.xyz), 0.0);
-    sky += frame.sun.w * (pow(s, 900.0) * vec3(8.0, 7.0, 5.5) + pow(s, 12.0) * vec3(0.25, 0.2, 0.12));
-    return sky;
-}
+// Sky colour toward direction d (y up), display-referred, with the sun's disc (sky.glsl).
+vec3 sky_color(vec3 d) { return sky_dome(frame.sky, d) + sun_disc(frame.sky, d); }
+// The same toward an upper-hemisphere direction (d.y >= 0), from the sky table: what the
+// water reflects over its facets and the fog fades to, at a texture read each.
+vec3 sky_seen(vec3 d) { return textureLod(sky_table, sky_table_uv(d), 0.0).rgb + sun_disc(frame.sky, d); }
 
 // Distance fog toward the horizon colour.
 vec3 apply_fog(vec3 color, float distance, vec3 dir) {
     float f = 1.0 - exp(-distance * 0.00018);
-    return mix(color, sky_color(normalize(vec3(dir.x, max(dir.y, 0.02), dir.z))), clamp(f, 0.0, 1.0));
+    return mix(color, sky_seen(normalize(vec3(dir.x, max(dir.y, 0.02), dir.z))), clamp(f, 0.0, 1.0));
 }
 
 vec3 heat_color(float t) {

@@ -201,7 +201,8 @@ TW_BINDINGS(FrameBinding)
     eFrameWakePoints = 13u,   // wake blocks, then GpuWakePoint[]
     eFrameShorePages = 14u,   // uint[] shore slot per tile, grid after grid
     eFrameShoreLayers = 15u,  // GpuShoreLayer[], model after model
-    eFrameBindingCount = 16u
+    eFrameSkyTable = 16u,     // sampler2D, the sky table (kSkyTableSide, sky.glsl)
+    eFrameBindingCount = 17u
 TW_BINDINGS_END();
 
 // Specialization constants of the water's shaders: what the quality tier
@@ -262,6 +263,25 @@ TW_CONST uint kBodyRiver = 2u;
 // A river texel's kind in the body masks (tidewater::detail::RiverTexel).
 TW_CONST float kRiverTexelNone = 0.0f;
 
+// The sky (sky.glsl): the Preetham sky (runtime/render/src/sky_model.hpp) as the frame's
+// constants hold it and as the sky table's pass takes it in push constants (kSkyTable*).
+struct GpuSky {
+    // A, B, C, D of the Perez function for luminance Y and chromaticity x, y; their E; the
+    // zenith values over F(0, theta_s) with Y divided by the zenith luminance (the
+    // exposure's reference).
+    vec4 Y;
+    vec4 x;
+    vec4 y;
+    vec4 e;        // xyz: E for Y, x, y; w: exposure (per zenith luminance)
+    vec4 zenith;   // xyz: zenith Y (relative, 1) / F(0, theta_s), x / F, y / F; w: saturation of the display look
+    vec4 balance;  // xyz: white-balance gains on linear sRGB; w: unused
+    vec4 sun;      // xyz: unit direction toward the sun; w: intensity
+};
+// The sky table (sky.glsl sky_table_uv): the sky without the sun's disc over the upper
+// hemisphere, projected stereographically onto a square of this many texels a side, in
+// this format; refreshed by its own pass from GpuSky in push constants.
+TW_CONST uint kSkyTableSide = 256u;
+
 // Per-frame constants. Positions are relative to the render origin O (the
 // camera snapped to the phase-cell grid, in double on the host), so float
 // keeps millimetres anywhere in the world; y is not shifted.
@@ -288,15 +308,7 @@ struct GpuFrame {
                              // scene copy's depth is each pixel's (single-sample targets), else 0; w: how much
                              // further apart the vertices may be along the view than across it
                              // (QualitySettings::water_max_foreshortening)
-    // The Preetham sky (runtime/render/src/sky_model.hpp): A, B, C, D of the Perez
-    // function for luminance Y and chromaticity x, y; their E; the zenith values over
-    // F(0, theta_s) with Y divided by the zenith luminance (the exposure's reference).
-    vec4 sky_Y;
-    vec4 sky_x;
-    vec4 sky_y;
-    vec4 sky_e;              // xyz: E for Y, x, y; w: exposure (per zenith luminance)
-    vec4 sky_zenith;         // xyz: zenith Y (relative, 1) / F(0, theta_s), x / F, y / F; w: saturation of the display look
-    vec4 sky_balance;        // xyz: white-balance gains on linear sRGB; w: unused
+    GpuSky sky;
     vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
 };
@@ -377,8 +389,9 @@ static_assert(sizeof(GpuQueryResult) == 112);
 static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
+static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants every device has
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 18 * 16 + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 12 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -89,7 +89,7 @@ void main() {
         vec3 r = reflect(-v, n);
         r.y = abs(r.y);
         float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
-        color = mix(color, sky_color(r), film * fresnel * 0.8);
+        color = mix(color, sky_seen(r), film * fresnel * 0.8);
     }
     float depth = level - h;
     if (depth > 0.0) {

@@ -25,7 +25,7 @@ VisibleFacets one_facet(vec3 m, vec3 v) {
     float fresnel = schlick_fresnel(m, v);
     vec3 r = reflect(-v, m);
     r.y = abs(r.y);
-    return VisibleFacets(m, fresnel, fresnel * sky_color(r));
+    return VisibleFacets(m, fresnel, fresnel * sky_seen(r));
 }
 
 VisibleFacets visible_facets(vec3 n, vec3 v, float variance, vec2 slopes) {
@@ -49,7 +49,7 @@ VisibleFacets visible_facets(vec3 n, vec3 v, float variance, vec2 slopes) {
             r.y = abs(r.y);  // reflected down into the next wave: its mirror image
             f.normal += 0.25 * m;
             f.fresnel += 0.25 * fresnel;
-            f.sky += 0.25 * fresnel * sky_color(r);
+            f.sky += 0.25 * fresnel * sky_seen(r);
         }
     f.normal = normalize(f.normal);
     return f;

@@ -253,6 +253,16 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
 
         VkCommandBuffer cmd = begin_commands(host);
         ASSERT_NE(cmd, VK_NULL_HANDLE);
+        render::FrameInfo frame;
+        frame.camera.position = scene->camera->position;
+        frame.camera.target = scene->camera->target;
+        frame.camera.fov_y_deg = scene->camera->fov_y_deg;
+        frame.time = 2.0;
+        // The sky the water reflects is drawn outside the host's pass, before it.
+        const Status unprepared = (*renderer)->record_in_pass(cmd, frame, {TestHost::kWidth, TestHost::kHeight});
+        ASSERT_FALSE(unprepared.ok());
+        EXPECT_NE(unprepared.error().message.find("record_sky"), std::string::npos) << unprepared.error().message;
+        ASSERT_TRUE((*renderer)->record_sky(cmd, frame).ok());
         VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         color.imageView = host.color.view;
         color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -276,11 +286,6 @@ TEST(Embedding, RecordsIntoTheHostsOwnPass) {
         clears[1].clearValue.depthStencil = {1.0f, 0};
         VkClearRect rect{{{8, 8}, {48, 32}}, 0, 1};
         vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
-        render::FrameInfo frame;
-        frame.camera.position = scene->camera->position;
-        frame.camera.target = scene->camera->target;
-        frame.camera.fov_y_deg = scene->camera->fov_y_deg;
-        frame.time = 2.0;
         ASSERT_TRUE((*renderer)->record_in_pass(cmd, frame, {TestHost::kWidth, TestHost::kHeight}).ok());
         vkCmdEndRendering(cmd);
         const render::RgbaImage img = finish_and_read(host, cmd);

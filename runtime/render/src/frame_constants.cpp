@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "phase_cells.hpp"
-#include "sky_model.hpp"
+#include "sky_table.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"
@@ -112,15 +112,7 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
                              static_cast<float>(positive_mod(plan.origin.y, 2048.0)), 0.0f, 0.0f);
     f.water_density = glm::vec4(static_cast<float>(water_density), static_cast<float>(quality.water_pixels_per_vertex),
                                 0.0f, static_cast<float>(quality.water_max_foreshortening));
-    const PreethamSky sky = preetham_sky(sun, info.sky_turbidity);
-    f.sky_Y = glm::vec4(sky.abcd[0]);
-    f.sky_x = glm::vec4(sky.abcd[1]);
-    f.sky_y = glm::vec4(sky.abcd[2]);
-    f.sky_e = glm::vec4(glm::vec3(sky.e), static_cast<float>(kSkyExposure));
-    f.sky_zenith =
-        glm::vec4(static_cast<float>(sky.zenith_over_f0.x / sky.zenith.x), static_cast<float>(sky.zenith_over_f0.y),
-                  static_cast<float>(sky.zenith_over_f0.z), static_cast<float>(kSkySaturation));
-    f.sky_balance = glm::vec4(glm::vec3(sky_white_balance(sky, sun)), 0.0f);
+    f.sky = gpu_sky(info.sun_direction, info.sky_turbidity);
 
     // The water patch grid: world-aligned, following the camera in whole patches.
     const double patch = std::max(32.0, 2.0 * water_half_size / 160.0);

@@ -21,6 +21,7 @@
 #include "render_pipelines.hpp"
 #include "scene_copies.hpp"
 #include "scene_uploads.hpp"
+#include "sky_table.hpp"
 #include "target_formats.hpp"
 #include "terrain_lod.hpp"
 #include "tidewater/constants.hpp"
@@ -115,6 +116,7 @@ struct Renderer::Impl {
     detail::OwnedDescriptorPool descriptor_pool;
     detail::FrameTimer timer;
     detail::SceneCopies copies;
+    detail::SkyTable sky;  // what the water reflects and the fog fades to
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
@@ -257,8 +259,21 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     r[gpu::eFrameRiverWaves] = bound_buffer(slot.river_waves.handle());
     r[gpu::eFramePatchList] = bound_buffer(bodies.patches.handle());
     r[gpu::eFrameWakePoints] = bound_buffer(slot.wake_points.handle());
+    r[gpu::eFrameSkyTable] = bound_texture(pipelines.linear.get(), sky.view());
     detail::write_set(ctx(), slot.set, detail::kFrameSetRows, r);
 }
+
+namespace {
+Status validate_sky(const FrameInfo& frame) {
+    if (!std::isfinite(frame.sun_direction.x) || !std::isfinite(frame.sun_direction.y) ||
+        !std::isfinite(frame.sun_direction.z) || glm::length(frame.sun_direction) < 1e-9)
+        return Error{ErrorCode::invalid_argument, "renderer: sun_direction must be finite and non-zero"};
+    if (!(frame.sky_turbidity >= 1.7 && frame.sky_turbidity <= 10.0))
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
+    return {};
+}
+}  // namespace
 
 Status Renderer::Impl::validate_frame(const FrameInfo& frame, VkExtent2D extent) const {
     if (!terrain) return Error{ErrorCode::invalid_argument, "renderer: no scene; call set_scene first"};
@@ -269,12 +284,7 @@ Status Renderer::Impl::validate_frame(const FrameInfo& frame, VkExtent2D extent)
     if (!std::isfinite(frame.time) || std::abs(frame.time) > 1e9)
         return Error{ErrorCode::invalid_argument,
                      fmt::format("renderer: time {} is out of range (finite, |t| <= 1e9 s)", frame.time)};
-    if (!std::isfinite(frame.sun_direction.x) || !std::isfinite(frame.sun_direction.y) ||
-        !std::isfinite(frame.sun_direction.z) || glm::length(frame.sun_direction) < 1e-9)
-        return Error{ErrorCode::invalid_argument, "renderer: sun_direction must be finite and non-zero"};
-    if (!(frame.sky_turbidity >= 1.7 && frame.sky_turbidity <= 10.0))
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("renderer: sky_turbidity {} is out of range (1.7 to 10)", frame.sky_turbidity)};
+    if (auto st = validate_sky(frame); !st) return st;
     if (frame.view == DebugView::wireframe && !pipelines.draws.water_wire)
         return Error{ErrorCode::unsupported,
                      "renderer: the wireframe view needs fillModeNonSolid (RendererInitInfo::wireframe)"};
@@ -551,6 +561,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target, info.samples);
     if (!copies) return copies.error();
     impl->copies = std::move(copies).value();
+    auto sky = detail::SkyTable::create(c, impl->upload_pool.get());
+    if (!sky) return sky.error();
+    impl->sky = std::move(sky).value();
     return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
 }
 
@@ -672,6 +685,7 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
     detail::FramePlan plan;
     if (auto st = m.prepare_slot(frame, t.extent, true, slot, plan); !st) return st;
     const auto slot_index = static_cast<std::uint32_t>(slot - m.slots.data());
+    m.sky.record(vk, cmd, plan.frame.sky);  // a 256-texel square: cheaper redrawn than tracked across frames
     m.timer.begin(vk, cmd, slot_index);
 
     const bool msaa = m.copies.multisampled();
@@ -705,8 +719,20 @@ Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkE
     Impl::Slot* slot = nullptr;
     detail::FramePlan plan;
     if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
+    if (!m.sky.holds(plan.frame.sky))
+        return Error{ErrorCode::invalid_argument,
+                     "renderer: the sky table holds another sun or turbidity than this frame's: call "
+                     "record_sky(cmd, frame) before the pass begins"};
     m.draw_opaque(cmd, *slot, extent, frame.view);
     m.draw_water(cmd, *slot, plan, extent, frame.view);
+    return {};
+}
+
+Status Renderer::record_sky(VkCommandBuffer cmd, const FrameInfo& frame) {
+    Impl& m = *impl_;
+    if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_sky needs a command buffer"};
+    if (auto st = validate_sky(frame); !st) return st;
+    m.sky.record(m.vk(), cmd, detail::gpu_sky(frame.sun_direction, frame.sky_turbidity));
     return {};
 }
 

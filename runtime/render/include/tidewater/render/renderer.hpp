@@ -13,7 +13,8 @@
 // - record_frame() renders a whole frame into the host's images (it begins and
 //   ends rendering itself, copying the opaque scene for refraction between the
 //   terrain and water passes). record_in_pass() draws into a pass the host
-//   has begun, without refraction of the host's geometry.
+//   has begun, without refraction of the host's geometry, after record_sky()
+//   outside that pass.
 //
 // Lifetime: destroy the Renderer before the device it was given; a
 // Renderer is move-less and lives behind a unique_ptr.
@@ -251,6 +252,13 @@ class Renderer {
 
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
     Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
+    /// Records the refresh of the sky table (the sky, less the sun's disc, that the water
+    /// reflects and the fog fades to: a 256 x 256 texture drawn from `frame`'s sun and
+    /// turbidity) outside any pass. record_frame does it itself; a host drawing with
+    /// record_in_pass calls it before beginning its pass whenever the sun or the turbidity
+    /// may have changed (every frame is fine), and record_in_pass refuses a frame whose
+    /// sky the table does not hold. Never submits or waits.
+    Status record_sky(VkCommandBuffer cmd, const FrameInfo& frame);
 
     /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag", "mesh.vert",
     /// "water.vert", "water.tesc", "water.tese", "water.frag", and "water_per_sample.frag":
