@@ -19,6 +19,9 @@ float foam_lace(vec2 p) {
     return clamp((f2 - f1) * 1.6, 0.0, 1.0);
 }
 
+// The foam's four noises at lattice point q (they tile every kFoamNoiseCells cells).
+vec4 foam_noise_at(vec2 q) { return textureLod(foam_noise, q / float(kFoamNoiseCells), 0.0); }
+
 // How much of the pixel foam of amount `foam` (0..1) whitens. Fresh foam (near 1) is
 // solid; thinner foam opens into lace (foam_lace, broken up by a finer gradient noise)
 // that rides the water (rest coordinates move with the particles). Where the pixel
@@ -29,9 +32,10 @@ float foam_cover(float foam, vec2 xz, float footprint) {
     float broad = resolved(8.0, footprint), coarse = resolved(2.5, footprint), fine = resolved(0.7, footprint);
     // Warped so that the cells vary in size and shape; patches 8 m across stay solid or open.
     vec2 p = xz * 0.4;
-    vec2 warp = vec2(gradient_noise(p * 0.5, 41u).x, gradient_noise(p * 0.5, 43u).x);
-    float n = 0.5 + broad * 0.3 * gradient_noise(xz * 0.12, 47u).x +
-              coarse * (0.6 * (foam_lace(p + 0.7 * warp) - 0.5) + 0.2 * fine * gradient_noise(xz * 1.4, 37u).x);
+    // The gradient noises from the foam's noise table (foam_noise.frag), at their lattice scales.
+    vec2 warp = foam_noise_at(p * 0.5).xy;
+    float n = 0.5 + broad * 0.3 * foam_noise_at(xz * 0.12).z +
+              coarse * (0.6 * (foam_lace(p + 0.7 * warp) - 0.5) + 0.2 * fine * foam_noise_at(xz * 1.4).w);
     float edge = mix(0.5, 0.1, coarse);
     // Thin lace lets some of the water through.
     return smoothstep(0.0, 1.0, (foam - n) / (2.0 * edge) + 0.5) * mix(0.75, 1.0, foam);

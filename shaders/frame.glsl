@@ -1,5 +1,5 @@
 // Set kFrameSet of the render pipelines (bindings in host_device.h): frame constants,
-// waves, the terrain height texture, the copy of the opaque scene and the sky table.
+// waves, the terrain height texture, the copy of the opaque scene, the sky table and the foam's noise.
 #ifndef TIDEWATER_FRAME_GLSL
 #define TIDEWATER_FRAME_GLSL
 
@@ -16,6 +16,7 @@ layout(std430, set = kFrameSet, binding = eFrameShoreShared) readonly buffer Sho
 layout(std430, set = kFrameSet, binding = eFrameShorePages) readonly buffer ShorePagesBuf { uint shore_pages[]; };
 layout(std430, set = kFrameSet, binding = eFrameShoreLayers) readonly buffer ShoreLayersBuf { GpuShoreLayer shore_layers[]; };
 layout(set = kFrameSet, binding = eFrameSkyTable) uniform sampler2D sky_table;  // sky.glsl
+layout(set = kFrameSet, binding = eFrameFoamNoise) uniform sampler2D foam_noise;  // repeating (foam_noise.frag)
 
 // The ground's height (m) at xz relative to O: the height texture between its texel
 // centres, and beyond them the edge value eased to the seabed (the GLSL twin of

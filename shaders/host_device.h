@@ -202,7 +202,8 @@ TW_BINDINGS(FrameBinding)
     eFrameShorePages = 14u,   // uint[] shore slot per tile, grid after grid
     eFrameShoreLayers = 15u,  // GpuShoreLayer[], model after model
     eFrameSkyTable = 16u,     // sampler2D, the sky table (kSkyTableSide, sky.glsl)
-    eFrameBindingCount = 17u
+    eFrameFoamNoise = 17u,    // sampler2D (repeating), the foam's noise (kFoamNoiseSide, foam_noise.frag)
+    eFrameBindingCount = 18u
 TW_BINDINGS_END();
 
 // Specialization constants of the water's shaders: what the quality tier
@@ -281,6 +282,10 @@ struct GpuSky {
 // hemisphere, projected stereographically onto a square of this many texels a side, in
 // this format; refreshed by its own pass from GpuSky in push constants.
 TW_CONST uint kSkyTableSide = 256u;
+// The foam's noise table (foam_noise.frag, foam_cover.glsl): four channels of gradient
+// noise that tile every kFoamNoiseCells lattice cells, kFoamNoiseSide texels a side.
+TW_CONST uint kFoamNoiseCells = 32u;
+TW_CONST uint kFoamNoiseSide = 256u;
 
 // Per-frame constants. Positions are relative to the render origin O (the
 // camera snapped to the phase-cell grid, in double on the host), so float

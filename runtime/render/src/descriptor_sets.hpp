@@ -45,6 +45,7 @@ inline constexpr std::array<BindingRow, gpu::eFrameBindingCount> kFrameSetRows =
     {gpu::eFrameShorePages, binding_types::kStorage},
     {gpu::eFrameShoreLayers, binding_types::kStorage},
     {gpu::eFrameSkyTable, binding_types::kTexture},
+    {gpu::eFrameFoamNoise, binding_types::kTexture},
 }};
 
 /// Set gpu::kQuerySet of the GPU query pipeline (query.comp).
@@ -65,7 +66,7 @@ inline constexpr std::array<BindingRow, gpu::eQueryBindingCount> kQuerySetRows =
 }};
 
 /// The most bindings a set has (write_set writes a set without allocating).
-inline constexpr std::size_t kMaxSetBindings = 17;
+inline constexpr std::size_t kMaxSetBindings = 18;
 static_assert(gpu::eFrameBindingCount <= kMaxSetBindings && gpu::eQueryBindingCount <= kMaxSetBindings);
 
 /// Row i describes binding i: what a set's writes index by.

@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "drawn_table.hpp"
 #include "phase_cells.hpp"
-#include "sky_table.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 #include "tidewater/gerstner.hpp"

@@ -178,6 +178,10 @@ Status create_samplers(const Device& ctx, FramePipelines& p) {
     s.magFilter = s.minFilter = VK_FILTER_NEAREST;
     TW_VK_TRY(make_owned(ctx, p.nearest,
                          [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
+    s.magFilter = s.minFilter = VK_FILTER_LINEAR;
+    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    TW_VK_TRY(make_owned(ctx, p.linear_repeat,
+                         [&](VkSampler* out) { return ctx.vk().CreateSampler(ctx.device, &s, ctx.allocator, out); }));
     return {};
 }
 

@@ -72,6 +72,7 @@ struct FramePipelines {
     OwnedPipelineLayout layout;
     DrawPipelines draws;
     OwnedSampler linear, nearest;
+    OwnedSampler linear_repeat;  ///< for tables that tile (the foam's noise)
 
     static Result<FramePipelines> create(const Device& ctx, const DrawOptions& options);
     /// The draw pipelines over this object's layouts, from the embedded SPIR-V or `shaders`.

@@ -13,6 +13,7 @@
 
 #include "body_uploads.hpp"
 #include "descriptor_sets.hpp"
+#include "drawn_table.hpp"
 #include "float_uploads.hpp"
 #include "frame_constants.hpp"
 #include "frame_timer.hpp"
@@ -21,7 +22,6 @@
 #include "render_pipelines.hpp"
 #include "scene_copies.hpp"
 #include "scene_uploads.hpp"
-#include "sky_table.hpp"
 #include "target_formats.hpp"
 #include "terrain_lod.hpp"
 #include "tidewater/constants.hpp"
@@ -117,6 +117,7 @@ struct Renderer::Impl {
     detail::FrameTimer timer;
     detail::SceneCopies copies;
     detail::SkyTable sky;  // what the water reflects and the fog fades to
+    detail::DrawnTable foam_noise;
 
     /// Per frame in flight: what the CPU writes for it, and its descriptor set.
     struct Slot {
@@ -260,6 +261,7 @@ void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
     r[gpu::eFramePatchList] = bound_buffer(bodies.patches.handle());
     r[gpu::eFrameWakePoints] = bound_buffer(slot.wake_points.handle());
     r[gpu::eFrameSkyTable] = bound_texture(pipelines.linear.get(), sky.view());
+    r[gpu::eFrameFoamNoise] = bound_texture(pipelines.linear_repeat.get(), foam_noise.view());
     detail::write_set(ctx(), slot.set, detail::kFrameSetRows, r);
 }
 
@@ -564,6 +566,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     auto sky = detail::SkyTable::create(c, impl->upload_pool.get());
     if (!sky) return sky.error();
     impl->sky = std::move(sky).value();
+    auto foam_noise = detail::make_foam_noise_table(c, impl->upload_pool.get());
+    if (!foam_noise) return foam_noise.error();
+    impl->foam_noise = std::move(foam_noise).value();
     return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
 }
 
