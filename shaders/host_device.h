@@ -212,6 +212,7 @@ TW_CONST uint kSpecFoamLags = 0u;             // uint: lags of the crests' compr
 TW_CONST uint kSpecReflectionFacets = 1u;     // uint: facets the reflection averages over (1 or 4)
 TW_CONST uint kSpecReflectionSteps = 2u;      // int: steps of the reflection's march
 TW_CONST uint kSpecReflectionStepGrowth = 3u; // float: each step that many times the last
+TW_CONST uint kSpecCaustics = 4u;             // bool: caustics on the ground under water (terrain.frag)
 
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
 // hold the terrain mesh's origin (vec4, relative to O); bytes 16-31 a float's paint

@@ -1,4 +1,4 @@
-// What the quality tier chooses for the water's shaders (tidewater::render::QualitySettings),
+// What the quality tier chooses for the water's (and the terrain's) shaders (tidewater::render::QualitySettings),
 // as specialization constants set at pipeline creation; the defaults are `ultra`'s (the
 // shaders as they were before the tiers).
 #ifndef TIDEWATER_WATER_QUALITY_GLSL
@@ -13,5 +13,7 @@ layout(constant_id = kSpecReflectionFacets) const uint kReflectionFacets = 4u;
 // each this many times the last; fewer steps grow faster to reach as far.
 layout(constant_id = kSpecReflectionSteps) const int kReflectionSteps = 24;
 layout(constant_id = kSpecReflectionStepGrowth) const float kReflectionStepGrowth = 1.25;
+// Caustics on the ground under the water (terrain.frag); without them, their mean.
+layout(constant_id = kSpecCaustics) const bool kCaustics = true;
 
 #endif

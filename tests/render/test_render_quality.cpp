@@ -22,6 +22,12 @@ class QualityTest : public test::RenderTest {
     TierFrame render_tier(const Scene& scene, render::Quality tier, std::uint32_t w, std::uint32_t h,
                           const render::QualityOverrides& overrides = {},
                           render::DebugView view = render::DebugView::shaded) {
+        render::FrameInfo frame = test::scene_camera_frame(scene, 3.0);
+        frame.view = view;
+        return render_tier(scene, frame, tier, w, h, overrides);
+    }
+    TierFrame render_tier(const Scene& scene, const render::FrameInfo& frame, render::Quality tier, std::uint32_t w,
+                          std::uint32_t h, const render::QualityOverrides& overrides) {
         auto renderer = test::renderer_with(context(), scene, [&](render::RendererInitInfo& init) {
             init.quality = tier;
             init.quality_overrides = overrides;
@@ -30,8 +36,6 @@ class QualityTest : public test::RenderTest {
         auto target = render::OffscreenTarget::create(context(), w, h);
         EXPECT_TRUE(target.ok()) << target.error().message;
         if (!target.ok()) return {};
-        render::FrameInfo frame = test::scene_camera_frame(scene, 3.0);
-        frame.view = view;
         auto img = (*target)->render(*renderer, frame);
         EXPECT_TRUE(img.ok()) << img.error().message;
         auto timings = renderer->timings(frame.frame_index);
@@ -111,6 +115,43 @@ TEST_F(QualityTest, TheFoamRemembersAsManyLagsAsTheTierShows) {
     std::printf("low's foam: %.4f fresh only, %.4f with four lags\n", mean_foam(fresh.image),
                 mean_foam(lingering.image));
     EXPECT_GT(mean_foam(lingering.image), mean_foam(fresh.image) + 1e-3);
+}
+
+// Caustics are the tier's choice: the ground under 1 m of calm water shows their pattern
+// at `high`, and their mean brightness alone where they are turned off (as at `low`): the
+// spread of its luminance falls, its mean stays.
+TEST_F(QualityTest, CausticsAreTheTiersChoice) {
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 10.0, 12.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    frame.sun_direction = {0.0, 0.8, 0.6};  // behind the camera: no glitter in view
+    const Scene shallow =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, )"
+                   R"("ocean": {"waves": [{"direction": 0, "wavelength": 8, "amplitude": 0.02, "steepness": 0.3}]}})");
+    auto luminance = [](const render::RgbaImage& img) {
+        double sum = 0.0, sum2 = 0.0;
+        int n = 0;
+        for (int y = 100; y < 170; ++y)
+            for (int x = 60; x < 260; ++x, ++n) {
+                const test::Rgb c = test::pixel(img, x, y);
+                const double l = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
+                sum += l;
+                sum2 += l * l;
+            }
+        return std::pair{sum / n, std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)))};
+    };
+    const TierFrame with = render_tier(shallow, frame, render::Quality::high, 320, 180, {});
+    const TierFrame without = render_tier(shallow, frame, render::Quality::high, 320, 180, {.caustics = false});
+    ASSERT_FALSE(with.image.pixels.empty());
+    ASSERT_FALSE(without.image.pixels.empty());
+    const auto [mean_with, spread_with] = luminance(with.image);
+    const auto [mean_without, spread_without] = luminance(without.image);
+    std::printf("the ground under 1 m: luminance %.4f +- %.4f with caustics, %.4f +- %.4f without\n", mean_with,
+                spread_with, mean_without, spread_without);
+    EXPECT_LT(spread_without, 0.5 * spread_with);
+    EXPECT_NEAR(mean_without, mean_with, 0.01);
+    EXPECT_FALSE(render::quality_settings(render::Quality::low)->caustics);
+    EXPECT_TRUE(render::quality_settings(render::Quality::high)->caustics);
 }
 
 // An override out of range fails create() with an error that names it.

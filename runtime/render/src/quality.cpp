@@ -19,7 +19,7 @@ struct Tier {
 };
 
 // `medium` and `low` let the water's vertices follow the screen at grazing angles and
-// shade less; `high` spaces them 4 pixels apart and half as much again along the view,
+// shade less (`low` draws no caustics); `high` spaces them 4 pixels apart and half as much again along the view,
 // where the far field stays within its bound of the supersampled picture (0.0396 of 0.04
 // from 12 m); `ultra` draws as every tier did before them (docs/PERFORMANCE.md, "Quality
 // tiers").
@@ -30,7 +30,8 @@ constexpr std::array<Tier, 4> kTiers{{
       .water_max_foreshortening = 100.0,
       .foam_lags = 0,
       .reflection_facets = 1,
-      .reflection_march_steps = 6}},
+      .reflection_march_steps = 6,
+      .caustics = false}},
     {Quality::medium,
      "medium",
      {.water_pixels_per_vertex = 5.0,
@@ -87,6 +88,7 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
     s.foam_lags = overrides.foam_lags.value_or(s.foam_lags);
     s.reflection_facets = overrides.reflection_facets.value_or(s.reflection_facets);
     s.reflection_march_steps = overrides.reflection_march_steps.value_or(s.reflection_march_steps);
+    s.caustics = overrides.caustics.value_or(s.caustics);
     return s;
 }
 

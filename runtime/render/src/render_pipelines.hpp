@@ -19,13 +19,15 @@ namespace tidewater::render::detail {
 /// SPIR-V of a shader by source name ("water.frag"); empty: the embedded one.
 using ShaderLookup = std::function<std::span<const std::uint32_t>(std::string_view name)>;
 
-/// What the quality tier chooses for the water's shaders: their specialization constants
-/// (gpu::kSpec*, water_quality.glsl). The defaults are the shaders' own (`ultra`'s).
+/// What the quality tier chooses for the water's and the terrain's shaders: their
+/// specialization constants (gpu::kSpec*, water_quality.glsl). The defaults are the
+/// shaders' own (`ultra`'s).
 struct WaterShading {
     std::uint32_t foam_lags = 4;
     std::uint32_t reflection_facets = 4;
     std::int32_t reflection_steps = 24;
     float reflection_step_growth = 1.25f;
+    std::uint32_t caustics = 1;  ///< VkBool32 (terrain.frag)
 
     static WaterShading from(const QualitySettings& q);
 };

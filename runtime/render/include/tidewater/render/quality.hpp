@@ -42,6 +42,9 @@ struct QualitySettings {
     /// Steps of the march that finds the terrain a reflection meets; fewer steps grow
     /// faster, to reach as far, and place a far hill's silhouette less closely. 4 to 64.
     int reflection_march_steps = 12;
+    /// Caustics on the ground under shallow water (the waves focusing the sun). Off: the
+    /// ground there shows their mean brightness.
+    bool caustics = true;
 };
 
 /// Settings that replace a tier's own; unset ones keep the tier's.
@@ -51,6 +54,7 @@ struct QualityOverrides {
     std::optional<int> foam_lags;
     std::optional<int> reflection_facets;
     std::optional<int> reflection_march_steps;
+    std::optional<bool> caustics;
 };
 
 /// The tier's settings with `overrides` applied; an override out of its range is refused
