@@ -54,8 +54,8 @@ const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 // already draws (waves faded out of the mesh add slope; waves the mesh draws but the
 // pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
 // ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis): `hidden`, summed
-// at the patch's corners (hidden_waves_at), holds the waves' share.
+// pixel cannot resolve adds to `variance` (slope variance, per axis): `hidden_slope_variance`,
+// summed at the patch's corners (hidden_waves_at), is the waves' share.
 // The same share changes the Jacobian (to first order, by minus the trace of their m):
 // by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
 // `fine`: the ripples' or flow detail's drawn slope and its slope variance per axis, which
@@ -65,9 +65,9 @@ struct FineDetail {
     float variance;
 };
 vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float variance, inout float jacobian, inout vec4 lagged,
-                   HiddenWaves hidden, out FineDetail fine) {
+                   float hidden_slope_variance, out FineDetail fine) {
     SurfaceSums faded = surface_zero();
-    LaggedCompression faded_lags = lagged_zero();
+    vec4 faded_lag_trace = vec4(0.0);
     bool river = uint(d.body.x) == kBodyRiver;
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
     for (uint i = first; i < first + count; ++i) {
@@ -79,11 +79,11 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
         if (abs(change) < 1e-3) continue;
         float theta = dot(kvec, rest_xz) + w.steep_omega.z;
         add_wave(faded, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.steep_omega.y, theta);
-        add_wave_lags(faded_lags, kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
+        faded_lag_trace += wave_lagged_trace(kvec, change * w.dir_k_amp.w, w.steep_omega.x, w.lag_turn.xy, theta);
     }
-    variance += hidden.slope_variance;  // the waves' share
+    variance += hidden_slope_variance;  // the waves' share
     jacobian -= faded.m.x + faded.m.z;
-    lagged -= faded_lags.mxx + faded_lags.mzz;
+    lagged -= faded_lag_trace;
     fine = FineDetail(vec2(0.0), 0.0);
     if (!river && d.ripple.x > 0.0) {
         // Ripple octaves: as slope where resolved, as variance where not.
@@ -125,7 +125,7 @@ void main() {
     vec4 lagged_detail = vec4(0.0);
     HiddenWaves hidden = hidden_waves_unpacked(hidden_in, hidden_lagged_in, hidden_lagged_slope_in);
     FineDetail fine;
-    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden, fine);
+    vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden.slope_variance, fine);
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     // The unresolved crests the viewer sees (before n turns to the visible facets' mean).
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
@@ -136,13 +136,38 @@ void main() {
     vec2 facet_slopes = visible_slopes(view_tangent, sqrt(variance));
     vec2 facing = vec2(0.0);
     if (variance > 0.0) facing = vec2(facet_slopes.x, 1.0 - facet_slopes.y * facet_slopes.y / variance) / variance;
+    // The water column under this point.
+    float column_depth = max(rest_level - terrain_height_at(world_pos.xz), 0.0);
+
+    // Foam (here, so that the lags' twelve numbers are done with before the reflections): whitecaps where the crests compress past the body's whitecap Jacobian (set by
+    // the wind, Monahan's coverage), where waves break, and in bands along the coast that
+    // run up the beach with the swash. Breaking foam rides the crests (and lingers thinly
+    // in the troughs).
+    float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
+    // Fresh crest foam and what the particles' earlier crests left, fading
+    // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
+    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing, d.extra.x);
+    for (int l = 0; l < int(kFoamLagsShown); ++l)
+        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
+                                           hidden, seen, facing, d.extra.x) *
+                           foam_memory_weight(l + 1);
+    float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
+    // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
+    if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
+    // A fast current churns white water.
+    foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
+    if (d.shore.w > 0.0) {
+        float d = shore_info.x;
+        float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);
+        foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
+    }
+    float cover = foam > 0.0 ? foam_cover(foam, rest_xz + frame.origin_mod.xy, footprint) : 0.0;
     VisibleFacets facets = visible_facets(n, v, variance, facet_slopes);
     n = facets.normal;
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
     bool has_scene = frame.options.x > 0.5;
 
     // Water column along the view ray, and what lies behind it.
-    float column_depth = max(rest_level - terrain_height_at(world_pos.xz), 0.0);
     float thickness = column_depth / max(v.y, 0.15);
     vec3 behind = vec3(0.62, 0.56, 0.42) * 0.8;
     if (has_scene) {
@@ -193,32 +218,7 @@ void main() {
     float sss = pow(max(dot(v, -normalize(frame.sun.xyz + n * 0.5)), 0.0), 4.0) * crest;
     color += sss * vec3(0.06, 0.45, 0.38) * frame.sun.w;
 
-    // Foam: whitecaps where the crests compress past the body's whitecap Jacobian (set by
-    // the wind, Monahan's coverage), where waves break, and in bands along the coast that
-    // run up the beach with the swash. Breaking foam rides the crests (and lingers thinly
-    // in the troughs).
-    float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
-    // Fresh crest foam and what the particles' earlier crests left, fading
-    // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
-    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing, d.extra.x);
-    for (int l = 0; l < int(kFoamLagsShown); ++l)
-        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
-                                           hidden, seen, facing, d.extra.x) *
-                           foam_memory_weight(l + 1);
-    float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
-    // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
-    if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
-    // A fast current churns white water.
-    foam = max(foam, 0.6 * smoothstep(1.6, 3.2, length(current)) * smoothstep(0.3, 1.0, column_depth));
-    if (d.shore.w > 0.0) {
-        float d = shore_info.x;
-        float swash = 0.5 + 0.5 * sin(d * 0.9 - frame.camera.w * 1.4);
-        foam = max(foam, smoothstep(10.0, 0.0, d) * (0.35 + 0.65 * swash) * step(-1.0, d));
-    }
-    if (foam > 0.0) {
-        float cover = foam_cover(foam, rest_xz + frame.origin_mod.xy, footprint);
-        color = mix(color, vec3(0.92, 0.95, 0.96), cover);
-    }
+    color = mix(color, vec3(0.92, 0.95, 0.96), cover);
     color = apply_fog(color, distance, -v);
 
     if (view == kViewHeight) color = heat_color(0.5 + 0.5 * eta / max_eta);

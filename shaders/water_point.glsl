@@ -56,10 +56,8 @@ struct LaggedCompression {
 
 LaggedCompression lagged_zero() { return LaggedCompression(vec4(0.0), vec4(0.0), vec4(0.0)); }
 
-void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, vec2 turn, float theta) {
-    float k = length(kvec);
-    vec2 d = kvec / (k > 0.0 ? k : 1.0);
-    vec3 coeff = q * a * k * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
+// sin(theta - l omega kFoamLagStep) for l = 1..4: the wave's phase at each lag.
+vec4 lagged_sines(float theta, vec2 turn) {
     float sn = sin(theta), cs = cos(theta);
     float step_sin = turn.x, step_cos = turn.y;
     vec4 lagged_sin;
@@ -69,6 +67,14 @@ void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, vec2 
         sn = s;
         lagged_sin[l] = s;
     }
+    return lagged_sin;
+}
+
+void add_wave_lags(inout LaggedCompression c, vec2 kvec, float a, float q, vec2 turn, float theta) {
+    float k = length(kvec);
+    vec2 d = kvec / (k > 0.0 ? k : 1.0);
+    vec3 coeff = q * a * k * vec3(d.x * d.x, d.x * d.y, d.y * d.y);
+    vec4 lagged_sin = lagged_sines(theta, turn);
     c.mxx += coeff.x * lagged_sin;
     c.mxz += coeff.y * lagged_sin;
     c.mzz += coeff.z * lagged_sin;
@@ -79,6 +85,10 @@ void add_scaled(inout LaggedCompression c, LaggedCompression b, float w) {
     c.mxz += w * b.mxz;
     c.mzz += w * b.mzz;
 }
+
+// A wave's share of the trace mxx + mzz at each lag (to first order the Jacobian falls by
+// it): Q A k times its lagged sines. What a pixel adds for the waves its mesh fades out.
+vec4 wave_lagged_trace(vec2 kvec, float a, float q, vec2 turn, float theta) { return q * a * length(kvec) * lagged_sines(theta, turn); }
 
 // The Jacobian determinant at each lag.
 vec4 lagged_jacobians(LaggedCompression c) { return (1.0 - c.mxx) * (1.0 - c.mzz) - c.mxz * c.mxz; }
