@@ -213,6 +213,7 @@ TW_CONST uint kSpecReflectionFacets = 1u;     // uint: facets the reflection ave
 TW_CONST uint kSpecReflectionSteps = 2u;      // int: steps of the reflection's march
 TW_CONST uint kSpecReflectionStepGrowth = 3u; // float: each step that many times the last
 TW_CONST uint kSpecCaustics = 4u;             // bool: caustics on the ground under water (terrain.frag)
+TW_CONST uint kSpecSceneReflection = 5u;      // bool: the water reflects the opaque scene, not only the sky
 
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
 // hold the terrain mesh's origin (vec4, relative to O); bytes 16-31 a float's paint

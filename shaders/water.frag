@@ -187,7 +187,7 @@ void main() {
     // Reflection: the sky over the visible facets, and the opaque scene where their
     // reflections meet it (scene_reflection.glsl), under the same Fresnel.
     vec3 color = refracted * (1.0 - facets.fresnel) + facets.sky;
-    if (has_scene) {  // the same for every fragment: derivatives stay defined
+    if (has_scene && kSceneReflection) {  // the same for every fragment: derivatives stay defined
         // The scene's reflection follows the waves' facets; the ripples' (or a river's
         // detail's) drawn slope would scatter a far hill's reflection pixel by pixel, so it
         // joins the spread.
@@ -221,16 +221,21 @@ void main() {
     color = mix(color, vec3(0.92, 0.95, 0.96), cover);
     color = apply_fog(color, distance, -v);
 
-    if (view == kViewHeight) color = heat_color(0.5 + 0.5 * eta / max_eta);
-    if (view == kViewNormals) color = n * 0.5 + 0.5;
-    if (view == kViewJacobian) color = heat_color(1.0 - jacobian);
-    if (view == kViewDepth) color = heat_color(column_depth / 40.0);
-    if (view == kViewLod) color = heat_color(log2(lod.spacing_along * 4.0) / 8.0);  // the vertex spacing along the view (water_lod.glsl)
-    if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
-    if (view == kViewShore) color = heat_color(clamp(shore_info.x / 300.0, 0.0, 1.0));
-    if (view == kViewBreaking) color = heat_color(shore_info.y);
-    if (view == kViewFoam) color = vec3(clamp(foam, 0.0, 1.0));
-    if (view == kViewWake) color = heat_color(0.5 + 0.5 * clamp(wake_eta, -1.0, 1.0));
-    if (view == kViewFlow) color = uint(d.body.x) == kBodyRiver ? heat_color(length(current) / 3.0) : vec3(0.05, 0.08, 0.2);
+    if (view != kViewShaded) {  // the debug views, in one branch the shaded picture skips
+        float t = 0.0;              // what a heat view shows, 0..1
+        if (view == kViewHeight) t = 0.5 + 0.5 * eta / max_eta;
+        else if (view == kViewJacobian) t = 1.0 - jacobian;
+        else if (view == kViewDepth) t = column_depth / 40.0;
+        else if (view == kViewLod) t = log2(lod.spacing_along * 4.0) / 8.0;  // the vertex spacing along the view (water_lod.glsl)
+        else if (view == kViewShore) t = shore_info.x / 300.0;
+        else if (view == kViewBreaking) t = shore_info.y;
+        else if (view == kViewWake) t = 0.5 + 0.5 * clamp(wake_eta, -1.0, 1.0);
+        else if (view == kViewFlow) t = length(current) / 3.0;
+        color = heat_color(t);
+        if (view == kViewNormals) color = n * 0.5 + 0.5;
+        if (view == kViewWireframe) color = vec3(0.02, 0.12, 0.3);
+        if (view == kViewFoam) color = vec3(clamp(foam, 0.0, 1.0));
+        if (view == kViewFlow && uint(d.body.x) != kBodyRiver) color = vec3(0.05, 0.08, 0.2);
+    }
     out_color = target_color(color);
 }

@@ -13,6 +13,9 @@ layout(constant_id = kSpecReflectionFacets) const uint kReflectionFacets = 4u;
 // each this many times the last; fewer steps grow faster to reach as far.
 layout(constant_id = kSpecReflectionSteps) const int kReflectionSteps = 24;
 layout(constant_id = kSpecReflectionStepGrowth) const float kReflectionStepGrowth = 1.25;
+// The water reflects the opaque scene where its reflections meet it (scene_reflection.glsl);
+// without, the sky alone.
+layout(constant_id = kSpecSceneReflection) const bool kSceneReflection = true;
 // Caustics on the ground under the water (terrain.frag); without them, their mean.
 layout(constant_id = kSpecCaustics) const bool kCaustics = true;
 

@@ -221,8 +221,14 @@ JSON
     check "stats name the quality tier, high by default" grep -q '"tier": "high"' stats.json
     "$TW" render --size 160x90 --time 2 --quality low --out low.png --stats low.json --validate > loglow.txt
     check "the low tier renders under validation" test $? -eq 0
-    check "with its vertices further apart" grep -q '"water_pixels_per_vertex": 8' low.json
+    check "with its vertices further apart" grep -q '"water_pixels_per_vertex": 12' low.json
     check "and its foam's lags" grep -q '"foam_lags": 0' low.json
+    check "reflecting the sky alone" grep -q '"scene_reflection": false' low.json
+    check "without caustics" grep -q '"caustics": false' low.json
+    "$TW" render --size 96x54 --time 2 --quality low --caustics true --scene-reflection true --out lowc.png \
+      --stats lowc.json > loglowc.txt
+    check "a tier's caustics and scene reflection are overridden" grep -q '"caustics": true' lowc.json
+    check "  (the scene's reflection too)" grep -q '"scene_reflection": true' lowc.json
     "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
     check "a 16 MiB budget renders under validation" test $? -eq 0
     check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json

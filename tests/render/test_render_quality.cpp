@@ -2,6 +2,8 @@
 // vertices and fragments than the one above it, `low` keeps a reference image of its
 // own, the tier's shading is compiled into its pipelines, and an override out of range
 // is refused when the renderer is made.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -152,6 +154,35 @@ TEST_F(QualityTest, CausticsAreTheTiersChoice) {
     EXPECT_NEAR(mean_without, mean_with, 0.01);
     EXPECT_FALSE(render::quality_settings(render::Quality::low)->caustics);
     EXPECT_TRUE(render::quality_settings(render::Quality::high)->caustics);
+}
+
+// The scene's reflection is the tier's choice: at `high` the water before the island
+// mirrors its green slopes; told not to (as `low` is), the same water reflects the sky
+// alone and turns bluer there. Elsewhere the picture is the same.
+TEST_F(QualityTest, TheScenesReflectionIsTheTiersChoice) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const TierFrame mirrored = render_tier(*scene, render::Quality::high, 320, 180);
+    const TierFrame sky_only = render_tier(*scene, render::Quality::high, 320, 180, {.scene_reflection = false});
+    ASSERT_FALSE(mirrored.image.pixels.empty());
+    ASSERT_FALSE(sky_only.image.pixels.empty());
+    double blue_gain = 0.0;
+    int changed = 0, pixels = 0;
+    for (int y = 0; y < 180; ++y)
+        for (int x = 0; x < 320; ++x, ++pixels) {
+            const test::Rgb a = test::pixel(mirrored.image, x, y), b = test::pixel(sky_only.image, x, y);
+            const double d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+            if (d < 2.0 / 255.0) continue;
+            ++changed;
+            blue_gain += (b.b - b.g) - (a.b - a.g);
+        }
+    std::printf("scene reflection off: %d of %d pixels change, bluer by %.4f on average there\n", changed, pixels,
+                changed > 0 ? blue_gain / changed : 0.0);
+    EXPECT_GT(changed, pixels / 100) << "the island's reflection is drawn at high";
+    EXPECT_LT(changed, pixels / 2) << "only the reflection changes";
+    EXPECT_GT(blue_gain / std::max(changed, 1), 0.0) << "the sky replaces the green slopes";
+    EXPECT_FALSE(render::quality_settings(render::Quality::low)->scene_reflection);
+    EXPECT_TRUE(render::quality_settings(render::Quality::high)->scene_reflection);
 }
 
 // An override out of range fails create() with an error that names it.

@@ -125,6 +125,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                       {"foam_lags", (*renderer)->quality().foam_lags},
                       {"reflection_facets", (*renderer)->quality().reflection_facets},
                       {"reflection_march_steps", (*renderer)->quality().reflection_march_steps},
+                      {"scene_reflection", (*renderer)->quality().scene_reflection},
                       {"caustics", (*renderer)->quality().caustics}}},
                     {"frames", frames},
                     {"counts",

@@ -42,7 +42,7 @@ struct RenderArgs {
     std::string quality = "high";
     std::optional<double> water_pixels_per_vertex, water_max_foreshortening;
     std::optional<int> foam_lags, reflection_facets, reflection_march_steps;
-    std::optional<bool> caustics;
+    std::optional<bool> scene_reflection, caustics;
     bool validate = false;
 };
 
@@ -116,6 +116,7 @@ int run_render(const RenderArgs& a) {
     override_with(o.foam_lags, a.foam_lags, "--foam-lags");
     override_with(o.reflection_facets, a.reflection_facets, "--reflection-facets");
     override_with(o.reflection_march_steps, a.reflection_march_steps, "--reflection-march-steps");
+    override_with(o.scene_reflection, a.scene_reflection, "--scene-reflection");
     override_with(o.caustics, a.caustics, "--caustics");
     if (!refused.empty()) return fail(verb, refused);
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
@@ -179,6 +180,8 @@ Verb add_render_verb(CLI::App& app) {
                     "Override the facets a pixel of water reflects over (4, or 1 at their mean slope)");
     cmd->add_option("--reflection-march-steps", args->reflection_march_steps,
                     "Override the steps of the march that finds the terrain a reflection meets (4 to 64)");
+    cmd->add_option("--scene-reflection", args->scene_reflection,
+                    "Override whether the water reflects the terrain and floats, not only the sky (true or false)");
     cmd->add_option("--caustics", args->caustics,
                     "Override whether the ground under shallow water shows caustics (true or false)");
     cmd->add_option("--samples", args->samples, "Samples per pixel (1, 2, 4 or 8): multisampling antialiases the edges")

@@ -19,18 +19,18 @@ struct Tier {
 };
 
 // `medium` and `low` let the water's vertices follow the screen at grazing angles and
-// shade less (`low` draws no caustics); `high` spaces them 4 pixels apart and half as much again along the view,
-// where the far field stays within its bound of the supersampled picture (0.0396 of 0.04
-// from 12 m); `ultra` draws as every tier did before them (docs/PERFORMANCE.md, "Quality
-// tiers").
+// shade less (`low` reflects only the sky and draws no caustics); `high` spaces them 4 pixels apart and half as much
+// again along the view, where the far field stays within its bound of the supersampled picture (0.0396 of 0.04 from 12
+// m); `ultra` draws as every tier did before them (docs/PERFORMANCE.md, "Quality tiers").
 constexpr std::array<Tier, 4> kTiers{{
     {Quality::low,
      "low",
-     {.water_pixels_per_vertex = 8.0,
+     {.water_pixels_per_vertex = 12.0,
       .water_max_foreshortening = 100.0,
       .foam_lags = 0,
       .reflection_facets = 1,
       .reflection_march_steps = 6,
+      .scene_reflection = false,
       .caustics = false}},
     {Quality::medium,
      "medium",
@@ -88,6 +88,7 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
     s.foam_lags = overrides.foam_lags.value_or(s.foam_lags);
     s.reflection_facets = overrides.reflection_facets.value_or(s.reflection_facets);
     s.reflection_march_steps = overrides.reflection_march_steps.value_or(s.reflection_march_steps);
+    s.scene_reflection = overrides.scene_reflection.value_or(s.scene_reflection);
     s.caustics = overrides.caustics.value_or(s.caustics);
     return s;
 }

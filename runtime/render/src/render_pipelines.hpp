@@ -27,7 +27,8 @@ struct WaterShading {
     std::uint32_t reflection_facets = 4;
     std::int32_t reflection_steps = 24;
     float reflection_step_growth = 1.25f;
-    std::uint32_t caustics = 1;  ///< VkBool32 (terrain.frag)
+    std::uint32_t scene_reflection = 1;  ///< VkBool32
+    std::uint32_t caustics = 1;          ///< VkBool32 (terrain.frag)
 
     static WaterShading from(const QualitySettings& q);
 };

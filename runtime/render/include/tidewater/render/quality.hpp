@@ -42,6 +42,10 @@ struct QualitySettings {
     /// Steps of the march that finds the terrain a reflection meets; fewer steps grow
     /// faster, to reach as far, and place a far hill's silhouette less closely. 4 to 64.
     int reflection_march_steps = 12;
+    /// The water reflects the terrain and the host's opaque geometry where its reflections
+    /// meet them (a march over the terrain's heights into the copy of the opaque scene).
+    /// Off: it reflects the sky alone, and reflection_march_steps does not matter.
+    bool scene_reflection = true;
     /// Caustics on the ground under shallow water (the waves focusing the sun). Off: the
     /// ground there shows their mean brightness.
     bool caustics = true;
@@ -54,6 +58,7 @@ struct QualityOverrides {
     std::optional<int> foam_lags;
     std::optional<int> reflection_facets;
     std::optional<int> reflection_march_steps;
+    std::optional<bool> scene_reflection;
     std::optional<bool> caustics;
 };
 
