@@ -185,6 +185,42 @@ TEST_F(QualityTest, TheScenesReflectionIsTheTiersChoice) {
     EXPECT_TRUE(render::quality_settings(render::Quality::high)->scene_reflection);
 }
 
+// `ultra` shades the water of multisampled targets at every sample where the host enabled
+// sampleRateShading, and per pixel otherwise (Renderer::quality() says which); another tier
+// asked to by an override is refused where it cannot.
+TEST_F(QualityTest, UltraShadesTheWaterPerSampleWhereItCan) {
+    auto per_sample = [&](render::Quality tier, VkSampleCountFlagBits samples, bool feature,
+                          const render::QualityOverrides& overrides = {}) -> Result<bool> {
+        render::RendererInitInfo init;
+        init.device = context();
+        init.device.enabled_features.sampleRateShading = feature ? VK_TRUE : VK_FALSE;
+        init.wireframe = false;
+        init.samples = samples;
+        init.quality = tier;
+        init.quality_overrides = overrides;
+        auto r = render::Renderer::create(init);
+        if (!r) return r.error();
+        return (*r)->quality().water_per_sample;
+    };
+    ASSERT_TRUE(context().enabled_features.sampleRateShading) << "lavapipe has sampleRateShading";
+    const auto ultra4 = per_sample(render::Quality::ultra, VK_SAMPLE_COUNT_4_BIT, true);
+    ASSERT_TRUE(ultra4.ok()) << ultra4.error().message;
+    EXPECT_TRUE(*ultra4);
+    const auto ultra1 = per_sample(render::Quality::ultra, VK_SAMPLE_COUNT_1_BIT, true);
+    ASSERT_TRUE(ultra1.ok()) << ultra1.error().message;
+    EXPECT_FALSE(*ultra1) << "single-sampled targets: per pixel";
+    const auto ultra_no_feature = per_sample(render::Quality::ultra, VK_SAMPLE_COUNT_4_BIT, false);
+    ASSERT_TRUE(ultra_no_feature.ok()) << ultra_no_feature.error().message;
+    EXPECT_FALSE(*ultra_no_feature) << "without sampleRateShading: per pixel";
+    const auto high4 = per_sample(render::Quality::high, VK_SAMPLE_COUNT_4_BIT, true);
+    ASSERT_TRUE(high4.ok()) << high4.error().message;
+    EXPECT_FALSE(*high4);
+    const auto asked = per_sample(render::Quality::high, VK_SAMPLE_COUNT_1_BIT, true, {.water_per_sample = true});
+    ASSERT_FALSE(asked.ok());
+    EXPECT_NE(asked.error().message.find("quality_overrides.water_per_sample"), std::string::npos)
+        << asked.error().message;
+}
+
 // An override out of range fails create() with an error that names it.
 TEST_F(QualityTest, AnOverrideOutOfRangeIsRefused) {
     render::RendererInitInfo init;

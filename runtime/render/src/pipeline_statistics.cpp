@@ -87,11 +87,9 @@ Result<std::vector<PipelineStageStatistics>> compile_pipeline_statistics(const R
         return Error{ErrorCode::unsupported,
                      "pipeline statistics: the device does not expose VK_KHR_pipeline_executable_properties "
                      "(or the host did not enable it: DeviceContext::pipeline_executable_info)"};
-    auto quality = quality_settings(init.quality, init.quality_overrides);
-    if (!quality) return Error{quality.error().code, "pipeline statistics: " + quality.error().message};
-    auto pipelines = detail::FramePipelines::create(
-        *device, {init.color_format, init.depth_format, init.samples, init.shade_water_per_sample, init.wireframe,
-                  detail::WaterShading::from(*quality)});
+    auto quality = detail::drawn_quality(init, *device);
+    if (!quality) return quality.error();
+    auto pipelines = detail::FramePipelines::create(*device, detail::draw_options_for(init, *quality));
     if (!pipelines) return pipelines.error();
     return detail::draw_pipeline_statistics(*device, pipelines->draws);
 }

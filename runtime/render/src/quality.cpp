@@ -19,9 +19,11 @@ struct Tier {
 };
 
 // `medium` and `low` let the water's vertices follow the screen at grazing angles and
-// shade less (`low` reflects only the sky and draws no caustics); `high` spaces them 4 pixels apart and half as much
-// again along the view, where the far field stays within its bound of the supersampled picture (0.0396 of 0.04 from 12
-// m); `ultra` draws as every tier did before them (docs/PERFORMANCE.md, "Quality tiers").
+// shade less (`low` reflects only the sky and draws no caustics); `high` spaces them 4
+// pixels apart and half as much again along the view, where the far field stays within
+// its bound of the supersampled picture (0.0396 of 0.04 from 12 m); `ultra` shades the
+// water of multisampled targets at every sample, and otherwise draws as every tier did
+// before them (docs/PERFORMANCE.md, "Quality tiers").
 constexpr std::array<Tier, 4> kTiers{{
     {Quality::low,
      "low",
@@ -52,7 +54,8 @@ constexpr std::array<Tier, 4> kTiers{{
       .water_max_foreshortening = 1.0,
       .foam_lags = 4,
       .reflection_facets = 4,
-      .reflection_march_steps = 24}},
+      .reflection_march_steps = 24,
+      .water_per_sample = true}},
 }};
 
 template <typename T>
@@ -89,6 +92,7 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
     s.reflection_facets = overrides.reflection_facets.value_or(s.reflection_facets);
     s.reflection_march_steps = overrides.reflection_march_steps.value_or(s.reflection_march_steps);
     s.scene_reflection = overrides.scene_reflection.value_or(s.scene_reflection);
+    s.water_per_sample = overrides.water_per_sample.value_or(s.water_per_sample);
     s.caustics = overrides.caustics.value_or(s.caustics);
     return s;
 }

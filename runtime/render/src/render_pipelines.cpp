@@ -41,6 +41,29 @@ WaterShading WaterShading::from(const QualitySettings& q) {
     return w;
 }
 
+Result<QualitySettings> drawn_quality(const RendererInitInfo& init, const Device& ctx) {
+    auto quality = quality_settings(init.quality, init.quality_overrides);
+    if (!quality) return Error{quality.error().code, "renderer: " + quality.error().message};
+    const bool asked = init.shade_water_per_sample || init.quality_overrides.water_per_sample.value_or(false);
+    const bool multisampled = init.samples != VK_SAMPLE_COUNT_1_BIT;
+    const bool sample_shading = ctx.enabled_features.sampleRateShading == VK_TRUE;
+    if (asked && !multisampled)
+        return Error{ErrorCode::invalid_argument,
+                     "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8), as does "
+                     "quality_overrides.water_per_sample"};
+    if (asked && !sample_shading)
+        return Error{ErrorCode::unsupported,
+                     "renderer: the device feature sampleRateShading is not enabled (shade_water_per_sample, "
+                     "quality_overrides.water_per_sample): enable it in vkCreateDevice and say so in DeviceContext"};
+    quality->water_per_sample = asked || (quality->water_per_sample && multisampled && sample_shading);
+    return quality;
+}
+
+DrawOptions draw_options_for(const RendererInitInfo& init, const QualitySettings& quality) {
+    return {init.color_format,        init.depth_format, init.samples,
+            quality.water_per_sample, init.wireframe,    WaterShading::from(quality)};
+}
+
 Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     struct Stage {
         std::string_view name;

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "tidewater/render/quality.hpp"
+#include "tidewater/render/renderer.hpp"
 #include "tidewater/result.hpp"
 #include "vk_handle.hpp"
 
@@ -67,6 +68,14 @@ struct DrawOptions {
     bool wireframe = false;
     WaterShading water;
 };
+
+/// The quality a renderer draws at on its device: the tier's settings with the host's
+/// overrides, the water shaded per sample where the host asked for it (refused where the
+/// targets are single-sampled or sampleRateShading is off) or where the tier wishes it and
+/// both allow it.
+Result<QualitySettings> drawn_quality(const RendererInitInfo& init, const Device& ctx);
+/// The draw pipelines' options for `init` at `quality` (drawn_quality).
+DrawOptions draw_options_for(const RendererInitInfo& init, const QualitySettings& quality);
 
 /// Everything a frame's draws bind, made once per renderer: the layout of set
 /// gpu::kFrameSet (kFrameSetRows) and the push constants of host_device.h.

@@ -94,10 +94,7 @@ struct Renderer::Impl {
     RendererInitInfo info;
     QualitySettings quality;  // info.quality with its overrides
 
-    detail::DrawOptions draw_options() const {
-        return {info.color_format,           info.depth_format, info.samples,
-                info.shade_water_per_sample, info.wireframe,    detail::WaterShading::from(quality)};
-    }
+    detail::DrawOptions draw_options() const { return detail::draw_options_for(info, quality); }
     /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
     /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
     struct Retired {
@@ -305,7 +302,7 @@ Renderer::Impl::Slot& Renderer::Impl::take_slot(std::uint64_t frame_index) {
 // What the frame draws, from the frame and the scene; nothing is written yet.
 Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent,
                                                            bool scene_copy) const {
-    const double water_density = info.shade_water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
+    const double water_density = quality.water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
     Planned p;
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
@@ -533,14 +530,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
         !st)
         return st.error();
     if (auto st = check_samples(c, info.samples, *depth_target); !st) return st.error();
-    if (info.shade_water_per_sample) {
-        if (info.samples == VK_SAMPLE_COUNT_1_BIT)
-            return Error{ErrorCode::invalid_argument,
-                         "renderer: shade_water_per_sample needs a multisampled target (samples 2, 4 or 8)"};
-        if (!c.enabled_features.sampleRateShading) return missing("sampleRateShading", "shade_water_per_sample");
-    }
-    auto quality = quality_settings(info.quality, info.quality_overrides);
-    if (!quality) return Error{quality.error().code, "renderer: " + quality.error().message};
+    auto quality = detail::drawn_quality(info, c);
+    if (!quality) return quality.error();
     auto impl = std::make_unique<Impl>();
     impl->device = c;
     impl->info = info;

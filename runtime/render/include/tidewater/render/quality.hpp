@@ -46,6 +46,12 @@ struct QualitySettings {
     /// meet them (a march over the terrain's heights into the copy of the opaque scene).
     /// Off: it reflects the sky alone, and reflection_march_steps does not matter.
     bool scene_reflection = true;
+    /// Shade the water at every sample of multisampled targets, its waves drawn and filtered
+    /// for a sample's footprint (RendererInitInfo::shade_water_per_sample): `ultra`'s, for
+    /// stills. The tier's wish applies where the targets are multisampled and the host
+    /// enabled sampleRateShading (Renderer::quality() says whether it did); asked for by an
+    /// override, it is refused where it cannot apply.
+    bool water_per_sample = false;
     /// Caustics on the ground under shallow water (the waves focusing the sun). Off: the
     /// ground there shows their mean brightness.
     bool caustics = true;
@@ -59,6 +65,7 @@ struct QualityOverrides {
     std::optional<int> reflection_facets;
     std::optional<int> reflection_march_steps;
     std::optional<bool> scene_reflection;
+    std::optional<bool> water_per_sample;
     std::optional<bool> caustics;
 };
 

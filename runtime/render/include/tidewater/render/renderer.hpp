@@ -89,7 +89,8 @@ struct RendererInitInfo {
     /// and filtered for a sample's footprint (sqrt(samples) per pixel side), so that a
     /// grazing far field converges to the supersampled picture instead of its filtered
     /// estimate. Costs about `samples` times the water's shading, and more vertices
-    /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled.
+    /// (docs/PERFORMANCE.md). Needs sampleRateShading enabled. The same as
+    /// quality_overrides.water_per_sample = true (`ultra` shades per sample where it can).
     bool shade_water_per_sample = false;
     /// How much the renderer draws (quality.hpp): a tier, and settings that replace its own
     /// (Renderer::quality() gives what was used). An override out of range fails create().
