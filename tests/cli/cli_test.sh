@@ -225,6 +225,7 @@ JSON
     check "and its foam's lags" grep -q '"foam_lags": 0' low.json
     check "reflecting the sky alone" grep -q '"scene_reflection": false' low.json
     check "without caustics" grep -q '"caustics": false' low.json
+    check "with fewer, larger patches to the horizon" grep -q '"far_field_ring_patches": 16' low.json
     "$TW" render --size 96x54 --time 2 --quality low --caustics true --scene-reflection true --out lowc.png \
       --stats lowc.json > loglowc.txt
     check "a tier's caustics and scene reflection are overridden" grep -q '"caustics": true' lowc.json

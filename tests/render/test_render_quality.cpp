@@ -221,6 +221,37 @@ TEST_F(QualityTest, UltraShadesTheWaterPerSampleWhereItCan) {
         << asked.error().message;
 }
 
+// `low`'s rings of coarser water (16 patches a side, each patch four times the area of
+// `high`'s) still reach the horizon and leave no hole between them: from 400 m up, looking
+// 7.6 degrees down at 640 x 360, the water's far edge is within 3 rows of the analytic
+// horizon in every column, and no sky shows below it.
+TEST_F(QualityTest, LowsCoarserRingsReachTheHorizonWithoutHoles) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    render::FrameInfo frame;
+    frame.camera.position = {2000.0, 400.0, 0.0};
+    frame.camera.target = {2500.0, 400.0 - 500.0 * std::tan(7.6 * kPi / 180.0), 0.0};
+    frame.camera.fov_y_deg = 50.0;
+    frame.time = 3.0;
+    frame.view = render::DebugView::normals;  // water (0.5 + 0.5 n) against the sky's blue
+    ASSERT_EQ(render::quality_settings(render::Quality::low)->far_field_ring_patches, 16);
+    const TierFrame low = render_tier(*scene, frame, render::Quality::low, 640, 360, {});
+    ASSERT_FALSE(low.image.pixels.empty());
+    const double horizon = 180.0 - 180.0 * std::tan(7.6 * kPi / 180.0) / std::tan(25.0 * kPi / 180.0);
+    int sky_below = 0;
+    for (int x = 0; x < 640; ++x) {
+        int top = -1;
+        for (int y = 0; y < 360; ++y) {
+            const test::Rgb c = test::pixel(low.image, x, y);
+            if (top < 0 && c.g > 0.8 && c.g > c.b + 0.15) top = y;  // an upward normal: water
+            if (y > horizon + 3.0 && c.b > c.g + 0.1) ++sky_below;
+        }
+        ASSERT_GE(top, 0) << "no water in column " << x;
+        if (x % 48 == 16) EXPECT_NEAR(top, horizon, 3.0) << "column " << x;
+    }
+    EXPECT_EQ(sky_below, 0) << "sky between the rings";
+}
+
 // An override out of range fails create() with an error that names it.
 TEST_F(QualityTest, AnOverrideOutOfRangeIsRefused) {
     render::RendererInitInfo init;

@@ -29,7 +29,12 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
     const render::Quality tiers[] = {render::Quality::low, render::Quality::medium, render::Quality::high,
                                      render::Quality::ultra};
     double previous_spacing = 1e9;
-    render::QualitySettings previous{.foam_lags = 0, .reflection_facets = 1, .reflection_march_steps = 4};
+    render::QualitySettings previous{.foam_lags = 0,
+                                     .reflection_facets = 1,
+                                     .reflection_march_steps = 4,
+                                     .far_field_ring_patches = 8,
+                                     .scene_reflection = false,
+                                     .caustics = false};
     for (const render::Quality tier : tiers) {
         const auto s = render::quality_settings(tier);
         ASSERT_TRUE(s.ok()) << s.error().message;
@@ -38,6 +43,9 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
         EXPECT_GE(s->foam_lags, previous.foam_lags) << render::quality_name(tier);
         EXPECT_GE(s->reflection_facets, previous.reflection_facets) << render::quality_name(tier);
         EXPECT_GE(s->reflection_march_steps, previous.reflection_march_steps) << render::quality_name(tier);
+        EXPECT_GE(s->far_field_ring_patches, previous.far_field_ring_patches) << render::quality_name(tier);
+        EXPECT_GE(s->scene_reflection, previous.scene_reflection) << render::quality_name(tier);
+        EXPECT_GE(s->caustics, previous.caustics) << render::quality_name(tier);
         previous = *s;
         EXPECT_EQ(render::quality_from_name(render::quality_name(tier)), tier);
     }
@@ -79,6 +87,9 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
     refused_by_name({.reflection_facets = 2}, "reflection_facets");
     refused_by_name({.reflection_march_steps = 3}, "reflection_march_steps");
     refused_by_name({.reflection_march_steps = 65}, "reflection_march_steps");
+    refused_by_name({.far_field_ring_patches = 6}, "far_field_ring_patches");
+    refused_by_name({.far_field_ring_patches = 17}, "far_field_ring_patches");
+    refused_by_name({.far_field_ring_patches = 66}, "far_field_ring_patches");
     const auto shading = render::quality_settings(render::Quality::low, {.foam_lags = 3, .reflection_facets = 4});
     ASSERT_TRUE(shading.ok()) << shading.error().message;
     EXPECT_EQ(shading->foam_lags, 3);

@@ -125,6 +125,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                       {"foam_lags", (*renderer)->quality().foam_lags},
                       {"reflection_facets", (*renderer)->quality().reflection_facets},
                       {"reflection_march_steps", (*renderer)->quality().reflection_march_steps},
+                      {"far_field_ring_patches", (*renderer)->quality().far_field_ring_patches},
                       {"scene_reflection", (*renderer)->quality().scene_reflection},
                       {"water_per_sample", (*renderer)->quality().water_per_sample},
                       {"caustics", (*renderer)->quality().caustics}}},

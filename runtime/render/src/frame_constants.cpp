@@ -128,12 +128,12 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     double half = 0.5 * patch * plan.patches_per_side;
     for (int k = 0; k < kOceanRings; ++k) {
         half *= 2.0;
-        const double size = 2.0 * half / kOceanRingPatches;
+        const double size = 2.0 * half / quality.far_field_ring_patches;
         const glm::dvec2 ring{std::floor((cam.position.x - half) / size) * size,
                               std::floor((cam.position.z - half) / size) * size};
         plan.ocean_rings.push_back(glm::vec4(static_cast<float>(ring.x - plan.origin.x),
                                              static_cast<float>(ring.y - plan.origin.y), static_cast<float>(size),
-                                             static_cast<float>(kOceanRingPatches)));
+                                             static_cast<float>(quality.far_field_ring_patches)));
     }
 
     plan.waves = waves_at_origin(water, info.time, plan.origin);

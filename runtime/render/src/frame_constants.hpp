@@ -34,8 +34,8 @@ struct FramePlan {
         water_draws;  ///< patch instances of each water draw (the ocean, its rings, lakes, rivers)
 };
 
-/// Patches per side of each ring round the ocean's patch grid, and how many rings.
-inline constexpr std::uint32_t kOceanRingPatches = 32;
+/// How many rings round the ocean's patch grid (their patches per side:
+/// QualitySettings::far_field_ring_patches).
 inline constexpr int kOceanRings = 8;  ///< each doubles the reach: 3 km x 2^8 = 768 km
 
 /// Reversed-Z, infinite-far perspective for Vulkan clip space (y down, z in [0, 1]).

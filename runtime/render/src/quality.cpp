@@ -32,6 +32,7 @@ constexpr std::array<Tier, 4> kTiers{{
       .foam_lags = 0,
       .reflection_facets = 1,
       .reflection_march_steps = 6,
+      .far_field_ring_patches = 16,
       .scene_reflection = false,
       .caustics = false}},
     {Quality::medium,
@@ -91,6 +92,13 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
     s.foam_lags = overrides.foam_lags.value_or(s.foam_lags);
     s.reflection_facets = overrides.reflection_facets.value_or(s.reflection_facets);
     s.reflection_march_steps = overrides.reflection_march_steps.value_or(s.reflection_march_steps);
+    if (auto st = check_override(overrides.far_field_ring_patches, "far_field_ring_patches", 8, 64); !st)
+        return st.error();
+    if (overrides.far_field_ring_patches && *overrides.far_field_ring_patches % 2 != 0)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("quality override far_field_ring_patches = {}: must be even",
+                                 *overrides.far_field_ring_patches)};
+    s.far_field_ring_patches = overrides.far_field_ring_patches.value_or(s.far_field_ring_patches);
     s.scene_reflection = overrides.scene_reflection.value_or(s.scene_reflection);
     s.water_per_sample = overrides.water_per_sample.value_or(s.water_per_sample);
     s.caustics = overrides.caustics.value_or(s.caustics);

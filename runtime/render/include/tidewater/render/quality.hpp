@@ -42,6 +42,11 @@ struct QualitySettings {
     /// Steps of the march that finds the terrain a reflection meets; fewer steps grow
     /// faster, to reach as far, and place a far hill's silhouette less closely. 4 to 64.
     int reflection_march_steps = 12;
+    /// Patches per side of each of the rings of coarser water round the patch grid, out to
+    /// the horizon (each ring twice as wide as the one inside): fewer, larger patches cost
+    /// fewer patch invocations, and their vertices keep the spacing above up to 64 per
+    /// patch edge. Even, 8 to 64.
+    int far_field_ring_patches = 32;
     /// The water reflects the terrain and the host's opaque geometry where its reflections
     /// meet them (a march over the terrain's heights into the copy of the opaque scene).
     /// Off: it reflects the sky alone, and reflection_march_steps does not matter.
@@ -64,6 +69,7 @@ struct QualityOverrides {
     std::optional<int> foam_lags;
     std::optional<int> reflection_facets;
     std::optional<int> reflection_march_steps;
+    std::optional<int> far_field_ring_patches;
     std::optional<bool> scene_reflection;
     std::optional<bool> water_per_sample;
     std::optional<bool> caustics;
