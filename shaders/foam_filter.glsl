@@ -18,7 +18,8 @@
 // u^n Phi(u) known: G0 = u Phi + phi, G1 = ((u^2 - 1) Phi + u phi) / 2,
 // G2 = (u^3 Phi + (u^2 + 2) phi) / 3.
 vec3 phi_integrals(float u) {
-    float phi = 0.3989423 * exp(-0.5 * u * u), cdf = normal_cdf(u);
+    vec2 pdf_cdf = normal_pdf_cdf(u);
+    float phi = pdf_cdf.x, cdf = pdf_cdf.y;
     return vec3(u * cdf + phi, 0.5 * ((u * u - 1.0) * cdf + u * phi), (u * u * u * cdf + (u * u + 2.0) * phi) / 3.0);
 }
 float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
@@ -112,7 +113,8 @@ HiddenWaves hidden_waves_unpacked(vec4 a, vec4 lagged, vec4 lagged_slope) {
 vec2 visible_heights(float t, float sigma) {
     if (sigma <= 0.0) return vec2(0.0, 1.0);
     float u = max(t / sigma, 1e-3);
-    float lambda = 0.3989423 * exp(-0.5 * u * u) / u - (1.0 - normal_cdf(u));
+    vec2 pdf_cdf = normal_pdf_cdf(u);
+    float lambda = pdf_cdf.x / u - (1.0 - pdf_cdf.y);
     float L = log(clamp(1.0 + lambda, 1.0, 300.0));
     float mean = L * (0.9055 + 0.01263 * L) / (1.0 + 0.1790 * L - 0.002568 * L * L);
     float variance = 1.0 / (1.0 + 0.7105 * L + 0.05301 * L * L);

@@ -11,14 +11,15 @@ float footprint_across(float distance) {
     return max(distance, 1.0) / (frame.params.z * frame.water_density.x);
 }
 
-// The standard normal distribution function Phi(u), within 2e-7 (Abramowitz and Stegun
-// 7.1.26), tails included.
-float normal_cdf(float u) {
-    float x = abs(u) * 0.7071068;
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    float tail = 0.5 * t * (0.2548296 + t * (-0.2844967 + t * (1.4214137 + t * (-1.4531520 + t * 1.0614054)))) * exp(-x * x);
-    return u < 0.0 ? tail : 1.0 - tail;
+// The standard normal density phi(u) and distribution function Phi(u), the latter within
+// 2e-7 (Abramowitz and Stegun 7.1.26), tails included: one exponential serves both.
+vec2 normal_pdf_cdf(float u) {
+    float e = exp(-0.5 * u * u);
+    float t = 1.0 / (1.0 + 0.3275911 * 0.7071068 * abs(u));
+    float tail = 0.5 * t * (0.2548296 + t * (-0.2844967 + t * (1.4214137 + t * (-1.4531520 + t * 1.0614054)))) * e;
+    return vec2(0.3989423 * e, u < 0.0 ? tail : 1.0 - tail);
 }
+float normal_cdf(float u) { return normal_pdf_cdf(u).y; }
 
 // The slopes toward the viewer of the facets a ray meets at elevation tangent t, for
 // Gaussian slopes of deviation sigma per axis weighted by the area they show the viewer,
@@ -28,8 +29,8 @@ float normal_cdf(float u) {
 vec2 visible_slopes(float t, float sigma) {
     if (sigma <= 0.0) return vec2(0.0);
     float u = t / sigma;
-    float phi = 0.3989423 * exp(-0.5 * u * u);
-    float cdf = normal_cdf(u);
+    vec2 pdf_cdf = normal_pdf_cdf(u);
+    float phi = pdf_cdf.x, cdf = pdf_cdf.y;
     float z = max(u * cdf + phi, 1e-6);
     float mean = cdf / z;
     return sigma * vec2(mean, sqrt(max((u * cdf + 2.0 * phi) / z - mean * mean, 0.0)));
