@@ -32,8 +32,9 @@ float crest_foam_filtered(float j, float whitecap_jacobian, float sigma) {
     if (alpha - 1.0 > 6.0 * beta) return 0.0;  // the whole spread lies above the ramp (most of the sea)
     // Past 6 deviations Phi is 0 (nothing to add) or 1 (the ramp's own rise, in closed form).
     float ua = clamp(-alpha / beta, -6.0, 6.0), ub = clamp((1.0 - alpha) / beta, -6.0, 6.0);
-    vec3 span = phi_integrals(ub) - phi_integrals(ua);
-    float sum = 6.0 * beta * (alpha * (1.0 - alpha) * span.x + beta * (1.0 - 2.0 * alpha) * span.y - beta * beta * span.z);
+    // Each end's integrals weighed first: two numbers held instead of six.
+    vec3 weights = vec3(alpha * (1.0 - alpha), beta * (1.0 - 2.0 * alpha), -beta * beta);
+    float sum = 6.0 * beta * (dot(weights, phi_integrals(ub)) - dot(weights, phi_integrals(ua)));
     float t = clamp(alpha + 6.0 * beta, 0.0, 1.0);
     return clamp(sum + (ub >= 6.0 ? 1.0 - t * t * (3.0 - 2.0 * t) : 0.0), 0.0, 1.0);
 }
@@ -129,8 +130,10 @@ vec2 visible_heights(float t, float sigma) {
 // slope variance, and the share of the variance their spread leaves out, over it; the
 // slope is independent of the height): the foam a crest left behind it lies on the face
 // it has passed, which faces the viewer where the waves run away from it.
-float seen_crest_foam(float j, float covariance, float slope_covariance, HiddenWaves h, vec2 seen, vec2 facing,
-                      float whitecap_jacobian) {
+// seen_crest_spread gives the Jacobian's mean and spread over what is seen, for
+// crest_foam_filtered: the foam's lags each take theirs before any is filtered, so that
+// the filter's terms for one lag do not share the registers with the others' inputs.
+vec2 seen_crest_spread(float j, float covariance, float slope_covariance, HiddenWaves h, vec2 seen, vec2 facing) {
     float spread2 = h.compression_variance;
     if (h.height_variance > 0.0) {
         float per_height = covariance / sqrt(h.height_variance);
@@ -139,6 +142,7 @@ float seen_crest_foam(float j, float covariance, float slope_covariance, HiddenW
     }
     j -= slope_covariance * facing.x;
     spread2 -= slope_covariance * slope_covariance * facing.y;
-    return crest_foam_filtered(j, whitecap_jacobian, sqrt(max(spread2, 0.0)));
+    return vec2(j, sqrt(max(spread2, 0.0)));
 }
+float seen_crest_foam(vec2 spread, float whitecap_jacobian) { return crest_foam_filtered(spread.x, whitecap_jacobian, spread.y); }
 #endif

@@ -146,11 +146,13 @@ void main() {
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     // Fresh crest foam and what the particles' earlier crests left, fading
     // (tidewater::detail::surface_foam): a sum, so each part filters on its own.
-    float crest_foam_here = seen_crest_foam(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing, d.extra.x);
+    vec2 lag_spread[kFoamLags];
     for (int l = 0; l < int(kFoamLagsShown); ++l)
-        crest_foam_here += seen_crest_foam(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
-                                           hidden, seen, facing, d.extra.x) *
-                           foam_memory_weight(l + 1);
+        lag_spread[l] = seen_crest_spread(lagged_jacobian[l] + lagged_detail[l], hidden.lagged_covariance[l], hidden.lagged_slope_covariance[l],
+                                          hidden, seen, facing);
+    float crest_foam_here = seen_crest_foam(seen_crest_spread(jacobian + jacobian_detail, hidden.compression_covariance, 0.0, hidden, seen, facing),
+                                            d.extra.x);
+    for (int l = 0; l < int(kFoamLagsShown); ++l) crest_foam_here += seen_crest_foam(lag_spread[l], d.extra.x) * foam_memory_weight(l + 1);
     float foam = max(min(crest_foam_here, 1.0), shore_info.y * (0.25 + 0.75 * crest_band));
     // Boats churn white water behind them (the wakes' turbulence, tidewater::detail::wakes_foam).
     if (uint(d.body.x) != kBodyRiver && WAKE_TURBULENT > 0u && wakes_reach(rest_xz)) foam = max(foam, wakes_foam_at(rest_xz));
