@@ -263,8 +263,9 @@ class Renderer {
 
     /// SPIR-V by shader source name ("sky.vert", "sky.frag", "terrain.vert", "terrain.frag", "mesh.vert",
     /// "water.vert", "water.tesc", "water.tese", "water.frag", and "water_per_sample.frag":
-    /// water.frag compiled with TW_WATER_PER_SAMPLE, drawn when shade_water_per_sample); a
-    /// name left out keeps the built-in shader.
+    /// water.frag compiled with TW_WATER_PER_SAMPLE, drawn when the water is shaded per
+    /// sample); a name left out keeps the built-in shader. The tables' shaders
+    /// (sky_table.frag, foam_noise.frag) are not reloaded.
     using ShaderSpirv = std::map<std::string, std::vector<std::uint32_t>, std::less<>>;
     /// Hot reload: rebuilds the draw pipelines from `spirv`. On failure the current
     /// pipelines keep drawing and the error names the shader. On success the next
