@@ -139,10 +139,11 @@ void main() {
     // The water column under this point.
     float column_depth = max(rest_level - terrain_height_at(world_pos.xz), 0.0);
 
-    // Foam (here, so that the lags' twelve numbers are done with before the reflections): whitecaps where the crests compress past the body's whitecap Jacobian (set by
-    // the wind, Monahan's coverage), where waves break, and in bands along the coast that
-    // run up the beach with the swash. Breaking foam rides the crests (and lingers thinly
-    // in the troughs).
+    // Foam, here so that the lags' twelve numbers are done with before the reflections:
+    // whitecaps where the crests compress past the body's whitecap Jacobian (set by the
+    // wind, Monahan's coverage), where waves break, and in bands along the coast that run
+    // up the beach with the swash. Breaking foam rides the crests (and lingers thinly in
+    // the troughs).
     float crest_band = smoothstep(-0.3, 0.5, eta / (max_eta * 0.25));
     // Fresh crest foam and what the particles' earlier crests left, fading
     // (tidewater::detail::surface_foam): a sum, so each part filters on its own.

@@ -712,13 +712,15 @@ Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const
 Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent) {
     Impl& m = *impl_;
     if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_in_pass needs a command buffer"};
-    Impl::Slot* slot = nullptr;
-    detail::FramePlan plan;
-    if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
-    if (!m.sky.holds(plan.frame.sky))
+    // Refused before the frame takes its slot: nothing of it is written.
+    if (auto st = validate_sky(frame); !st) return st;
+    if (!m.sky.holds(detail::gpu_sky(frame.sun_direction, frame.sky_turbidity)))
         return Error{ErrorCode::invalid_argument,
                      "renderer: the sky table holds another sun or turbidity than this frame's: call "
                      "record_sky(cmd, frame) before the pass begins"};
+    Impl::Slot* slot = nullptr;
+    detail::FramePlan plan;
+    if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
     m.draw_opaque(cmd, *slot, extent, frame.view);
     m.draw_water(cmd, *slot, plan, extent, frame.view);
     return {};
