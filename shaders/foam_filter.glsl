@@ -5,6 +5,7 @@
 #ifndef TIDEWATER_FOAM_FILTER_GLSL
 #define TIDEWATER_FOAM_FILTER_GLSL
 #include "water_lod.glsl"
+#include "water_quality.glsl"
 
 // The crest foam a pixel covers on average when waves it cannot resolve spread its
 // Jacobian as a Gaussian of deviation `sigma` about `j`: the expectation of crest_foam
@@ -75,7 +76,8 @@ void add_hidden_wave(inout HiddenWaves h, float lost, float a, float slope_ampli
 }
 
 // The waves of draw `d` that a pixel with render LOD `lod` cannot resolve: the share
-// 1 - kept^2 of each wave's variance that its footprint averages away (pixel_keeps).
+// 1 - kept^2 of each wave's variance that its footprint averages away (pixel_keeps), and
+// all of it for the waves the tier does not draw (QualitySettings::waves_drawn).
 // They change with the footprint, which changes slowly across a water patch, and not
 // with the waves' phases: water.tesc sums them at the patch's corners and the pixels
 // interpolate them (hidden_waves_packed / hidden_waves_unpacked), instead of every
@@ -87,7 +89,7 @@ HiddenWaves hidden_waves_at(GpuBodyDraw d, WaveLod lod) {
     for (uint i = first; i < first + count; ++i) {
         GpuWave w = waves[i];
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
-        float kept = pixel_keeps(kvec, lod);
+        float kept = wave_left_to_variance(w) ? 0.0 : pixel_keeps(kvec, lod);
         float slope_amplitude = w.dir_k_amp.z * w.dir_k_amp.w;
         float compression = w.steep_omega.x * slope_amplitude;  // Q k A
         add_hidden_wave(hidden, 1.0 - kept * kept, w.dir_k_amp.w, slope_amplitude, compression, -dot(kvec, lod.toward), w.lag_turn.xy);

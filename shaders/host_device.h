@@ -139,7 +139,9 @@ struct GpuWakePoint {
 // and passes them per phase cell (see GpuQueryPoint.cell) or per frame.
 struct GpuWave {
     vec4 dir_k_amp;      // x: D.x, y: D.z, z: k (rad/m), w: amplitude (m)
-    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame); w: unused
+    vec4 steep_omega;    // x: steepness Q, y: omega (rad/s), z: phase at the render origin (rad, per frame);
+                         // w: 1 where the water draws the wave, 0 where the tier leaves it to the
+                         // shading's slope variance (QualitySettings::waves_drawn); 1 for queries
     vec4 lag_turn;       // x, y: sin and cos of omega kFoamLagStep (the lagged sums' turn per lag); zw: unused
 };
 
@@ -214,6 +216,7 @@ TW_CONST uint kSpecReflectionSteps = 2u;      // int: steps of the reflection's 
 TW_CONST uint kSpecReflectionStepGrowth = 3u; // float: each step that many times the last
 TW_CONST uint kSpecCaustics = 4u;             // bool: caustics on the ground under water (terrain.frag)
 TW_CONST uint kSpecSceneReflection = 5u;      // bool: the water reflects the opaque scene, not only the sky
+TW_CONST uint kSpecWavesCapped = 6u;          // bool: the tier draws only some of a body's waves (GpuWave.steep_omega.w)
 
 // The push constants of the graphics pipelines: one range over every stage. Bytes 0-15
 // hold the terrain mesh's origin (vec4, relative to O); bytes 16-31 a float's paint

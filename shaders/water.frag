@@ -51,11 +51,11 @@ const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 // slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
 // averaged reflection, as the supersampled picture shows, instead of aliasing.
 // Normal detail: every wave as much as the pixel resolves it, less what the geometry
-// already draws (waves faded out of the mesh add slope; waves the mesh draws but the
-// pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
-// ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
-// pixel cannot resolve adds to `variance` (slope variance, per axis): `hidden_slope_variance`,
-// summed at the patch's corners (hidden_waves_at), is the waves' share.
+// already draws (waves faded out of the mesh add slope; waves the mesh draws but the pixel cannot resolve, as at grazing angles, are taken back
+// out), then ripples (the ocean's or a lake's) or a river's flow-mapped detail carried by
+// its current. What the pixel cannot resolve adds to `variance` (slope variance, per
+// axis): `hidden_slope_variance`, summed at the patch's corners (hidden_waves_at), is the
+// waves' share.
 // The same share changes the Jacobian (to first order, by minus the trace of their m):
 // by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
 // `fine`: the ripples' or flow detail's drawn slope and its slope variance per axis, which
@@ -72,6 +72,7 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
     uint first = uint(d.body.z), count = river ? 0u : uint(d.body.w);
     for (uint i = first; i < first + count; ++i) {
         GpuWave w = waves[i];
+        if (wave_left_to_variance(w)) continue;
         vec2 kvec = w.dir_k_amp.xy * w.dir_k_amp.z;
         float drawn = wave_lod_weight(kvec, lod);
         float kept = pixel_keeps(kvec, lod);

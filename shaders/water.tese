@@ -13,6 +13,8 @@ uint g_wave_first = 0u, g_wave_count = 0u;
 #define WAVE_FIRST g_wave_first
 #define WAVE_COUNT g_wave_count
 #define WAVE_BASE_PHASE(i) waves[WAVE_FIRST + (i)].steep_omega.z
+#include "water_quality.glsl"
+#define WAVE_DRAWN(w) (!wave_left_to_variance(w))
 #include "shore_fields.glsl"
 #include "water_point.glsl"
 #include "water_body.glsl"
@@ -20,7 +22,6 @@ uint g_wave_first = 0u, g_wave_count = 0u;
 #define WAKE_COUNT uint(frame.wakes.x)
 #define WAKE_TURBULENT uint(frame.wakes.y)
 #include "wake_point.glsl"
-#include "water_quality.glsl"
 layout(quads, fractional_odd_spacing, ccw) in;
 layout(location = 0) in vec2 control_xz[];
 layout(location = 1) in vec4 corner_hidden[];

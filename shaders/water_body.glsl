@@ -2,11 +2,15 @@
 // runtime/core/src/water/: open sea, and the shore fields that reshape each wave).
 // The includer declares waves[] (GpuWave), the shore buffers of shore_fields.glsl,
 // and defines WAVE_COUNT and WAVE_BASE_PHASE(i): wave i's phase at its origin; it may
-// define WAVE_FIRST, the body's first wave in waves[] (default 0).
+// define WAVE_FIRST, the body's first wave in waves[] (default 0), and WAVE_DRAWN(w),
+// whether it sums GpuWave w (default: every wave).
 #ifndef TIDEWATER_WATER_BODY_GLSL
 #define TIDEWATER_WATER_BODY_GLSL
 #ifndef WAVE_FIRST
 #define WAVE_FIRST 0u
+#endif
+#ifndef WAVE_DRAWN
+#define WAVE_DRAWN(w) true
 #endif
 
 // The shared shore fields of open water: deep, no breaking, full steepness, no shore
@@ -43,16 +47,20 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         float q = w.steep_omega.x;
         if (shore) {
             // The wave as the shore shapes it: marched phase, local wavevector, shoaled amplitude.
+            // A run of the shore model starts at its first wave, drawn or not.
             if (i == layer_end) {
                 layer = shore_layer(next_layer++);
                 tap = shore_layer_tap(layer, shore_rel);
                 layer_end = layer.waves.x + layer.waves.y;
             }
+            if (!WAVE_DRAWN(w)) continue;
             vec4 local = tap_waves(tap, layer, i - layer.waves.x);
             theta += local.x;
             kvec = local.zw;
             a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);
             q *= g_shore_fields.z;
+        } else if (!WAVE_DRAWN(w)) {
+            continue;
         }
         vec2 shares = a > 0.0 ? wave_lod_shares(kvec, lod) : vec2(1.0);
         a *= shares.x;

@@ -18,5 +18,11 @@ layout(constant_id = kSpecReflectionStepGrowth) const float kReflectionStepGrowt
 layout(constant_id = kSpecSceneReflection) const bool kSceneReflection = true;
 // Caustics on the ground under the water (terrain.frag); without them, their mean.
 layout(constant_id = kSpecCaustics) const bool kCaustics = true;
+// The tier draws only a body's largest waves one by one (QualitySettings::waves_drawn);
+// without a cap the flag is not read.
+layout(constant_id = kSpecWavesCapped) const bool kWavesCapped = false;
+
+// Whether the tier leaves wave `w` to the slope variance instead of drawing it.
+bool wave_left_to_variance(GpuWave w) { return kWavesCapped && w.steep_omega.w == 0.0; }
 
 #endif

@@ -230,6 +230,9 @@ JSON
       --stats lowc.json > loglowc.txt
     check "a tier's caustics and scene reflection are overridden" grep -q '"caustics": true' lowc.json
     check "  (the scene's reflection too)" grep -q '"scene_reflection": true' lowc.json
+    "$TW" render --size 96x54 --time 2 --waves-drawn 6 --out capped.png --stats capped.json --validate > logcap.txt
+    check "six waves drawn one by one, under validation" test $? -eq 0
+    check "  (the stats say so)" grep -q '"waves_drawn": 6' capped.json
     "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
     check "a 16 MiB budget renders under validation" test $? -eq 0
     check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json
@@ -259,6 +262,7 @@ JSON
     expect_error "odd sample count" "--samples" "$TW" render --samples 3 --out o.png
     expect_error "memory budget too small" "--gpu-memory" "$TW" render --gpu-memory 8 --out o.png
     expect_error "memory budget not a number" "--gpu-memory" "$TW" render --gpu-memory nan --out o.png
+    expect_error "waves drawn out of range" "--waves-drawn" "$TW" render --waves-drawn 2000 --out o.png
     expect_error "per-sample water without samples" "--water-per-sample: needs --samples" "$TW" render --water-per-sample --out o.png
     expect_error "unknown quality tier" "--quality" "$TW" render --quality extreme --out o.png
     expect_error "vertex spacing out of range" "--water-pixels-per-vertex" "$TW" render --water-pixels-per-vertex 0 --out o.png

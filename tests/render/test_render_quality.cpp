@@ -254,6 +254,73 @@ TEST_F(QualityTest, LowsCoarserRingsReachTheHorizonWithoutHoles) {
     EXPECT_EQ(sky_below, 0) << "sky between the rings";
 }
 
+// A wave the tier does not draw one by one is still in the picture as roughness: looking
+// toward a low sun over a long swell and a shorter wave, with one wave drawn the heights
+// lose the short wave, while the sun's glitter stays as wide as the short wave makes it
+// (within a factor of 1.25; 29.5 against 28.8 pixels at 320 x 180), where dropping the
+// wave narrows it by a third (18.4).
+TEST_F(QualityTest, WavesNotDrawnOneByOneStayAsRoughness) {
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 20.0, 0.0};
+    frame.camera.target = {100.0, 0.0, 0.0};
+    frame.sun_direction = glm::normalize(glm::dvec3(0.9, 0.3, 0.1));
+    frame.time = 2.0;
+    const std::string swell = R"({"direction": 0, "wavelength": 60, "amplitude": 0.6, "steepness": 0.3})";
+    const std::string shorter = R"({"direction": 70, "wavelength": 12, "amplitude": 0.2, "steepness": 0.3})";
+    auto sea = [](const std::string& waves) {
+        return scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -60}}, )"
+                          R"("ocean": {"waves": [)" +
+                          waves + "]}}");
+    };
+    const Scene both = sea(swell + ", " + shorter), swell_only = sea(swell);
+    constexpr int kW = 320, kH = 180;
+    auto view = [&](const Scene& scene, render::DebugView v, const render::QualityOverrides& o) {
+        render::FrameInfo f = frame;
+        f.view = v;
+        return render_tier(scene, f, render::Quality::high, kW, kH, o).image;
+    };
+    auto per_pixel = [](const render::RgbaImage& a, const render::RgbaImage& b) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        return sum / (255.0 * static_cast<double>(a.pixels.size()));
+    };
+    // The glitter's width: the pixels of a row more than 0.1 brighter than its median,
+    // averaged over the rows of the lower half (the water away from the bright far field).
+    auto glitter_width = [](const render::RgbaImage& img) {
+        double sum = 0.0;
+        int rows = 0;
+        for (int y = kH / 2 + 8; y < kH; ++y, ++rows) {
+            std::vector<double> l(kW);
+            for (int x = 0; x < kW; ++x) {
+                const test::Rgb c = test::pixel(img, x, y);
+                l[static_cast<std::size_t>(x)] = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
+            }
+            std::vector<double> sorted = l;
+            std::nth_element(sorted.begin(), sorted.begin() + kW / 2, sorted.end());
+            const double median = sorted[kW / 2];
+            sum += static_cast<double>(std::count_if(l.begin(), l.end(), [&](double v) { return v > median + 0.1; }));
+        }
+        return sum / rows;
+    };
+    const render::RgbaImage full = view(both, render::DebugView::height, {}),
+                            one = view(both, render::DebugView::height, {.waves_drawn = 1}),
+                            dropped = view(swell_only, render::DebugView::height, {});
+    ASSERT_FALSE(full.pixels.empty() || one.pixels.empty() || dropped.pixels.empty());
+    std::printf("heights: one wave drawn changes them by %.4f, dropping the short wave by %.4f\n",
+                per_pixel(full, one), per_pixel(full, dropped));
+    ASSERT_GT(per_pixel(full, dropped), 0.005) << "the short wave shows";
+    EXPECT_GT(per_pixel(full, one), 0.5 * per_pixel(full, dropped)) << "the mesh loses the short wave";
+
+    const double width_full = glitter_width(view(both, render::DebugView::shaded, {})),
+                 width_one = glitter_width(view(both, render::DebugView::shaded, {.waves_drawn = 1})),
+                 width_dropped = glitter_width(view(swell_only, render::DebugView::shaded, {}));
+    std::printf("the glitter's width: %.1f px with both waves drawn, %.1f with one, %.1f without the short wave\n",
+                width_full, width_one, width_dropped);
+    ASSERT_LT(width_dropped, 0.75 * width_full) << "the short wave widens the glitter";
+    EXPECT_GT(width_one, width_full / 1.25) << "its slope variance stays";
+    EXPECT_LT(width_one, width_full * 1.25);
+}
+
 // An override out of range fails create() with an error that names it.
 TEST_F(QualityTest, AnOverrideOutOfRangeIsRefused) {
     render::RendererInitInfo init;

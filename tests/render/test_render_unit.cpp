@@ -5,7 +5,9 @@
 #include <cmath>
 
 #include "descriptor_sets.hpp"
+#include "frame_constants.hpp"
 #include "tidewater/render/renderer.hpp"
+#include "tidewater/water_body.hpp"
 #include "vk_util.hpp"
 
 namespace tidewater {
@@ -33,6 +35,7 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
                                      .reflection_facets = 1,
                                      .reflection_march_steps = 4,
                                      .far_field_ring_patches = 8,
+                                     .waves_drawn = 1,
                                      .scene_reflection = false,
                                      .caustics = false};
     for (const render::Quality tier : tiers) {
@@ -46,6 +49,12 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
         EXPECT_GE(s->far_field_ring_patches, previous.far_field_ring_patches) << render::quality_name(tier);
         EXPECT_GE(s->scene_reflection, previous.scene_reflection) << render::quality_name(tier);
         EXPECT_GE(s->caustics, previous.caustics) << render::quality_name(tier);
+        // More waves drawn from one tier to the next; 0 (every wave) is the most.
+        if (previous.waves_drawn == 0) {
+            EXPECT_EQ(s->waves_drawn, 0) << render::quality_name(tier);
+        } else if (s->waves_drawn != 0) {
+            EXPECT_GT(s->waves_drawn, previous.waves_drawn) << render::quality_name(tier);
+        }
         previous = *s;
         EXPECT_EQ(render::quality_from_name(render::quality_name(tier)), tier);
     }
@@ -90,10 +99,41 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
     refused_by_name({.far_field_ring_patches = 6}, "far_field_ring_patches");
     refused_by_name({.far_field_ring_patches = 17}, "far_field_ring_patches");
     refused_by_name({.far_field_ring_patches = 66}, "far_field_ring_patches");
+    refused_by_name({.waves_drawn = -1}, "waves_drawn");
+    refused_by_name({.waves_drawn = 1025}, "waves_drawn");
+    EXPECT_EQ(render::quality_settings(render::Quality::high)->waves_drawn, 0) << "high draws every wave";
     const auto shading = render::quality_settings(render::Quality::low, {.foam_lags = 3, .reflection_facets = 4});
     ASSERT_TRUE(shading.ok()) << shading.error().message;
     EXPECT_EQ(shading->foam_lags, 3);
     EXPECT_EQ(shading->reflection_facets, 4);
+}
+
+// A tier that caps the waves in the mesh flags a body's largest in amplitude (the first
+// among equals) and keeps every wave in its order, for the shore model's runs; 0, or a
+// cap past the count, leaves every wave in the mesh.
+TEST(QualityTiers, TheMeshDrawsABodysLargestWaves) {
+    WaterProfile profile;
+    for (const double amplitude : {0.1, 0.5, 0.3, 0.5, 0.2})
+        profile.waves.push_back({.direction_deg = 10.0 * amplitude, .wavelength = 40.0, .amplitude = amplitude,
+                                 .steepness = 0.1});
+    const auto body = WaterBody::create(profile, 0.0, "test");
+    ASSERT_TRUE(body.ok()) << body.error().message;
+    const auto drawn = [&](int cap) {
+        std::vector<int> flags;
+        for (const gpu::GpuWave& w : render::detail::waves_at_origin(*body, 1.0, {100.0, -50.0}, cap))
+            flags.push_back(static_cast<int>(w.steep_omega.w));
+        return flags;
+    };
+    EXPECT_EQ(drawn(0), (std::vector<int>{1, 1, 1, 1, 1}));
+    EXPECT_EQ(drawn(9), (std::vector<int>{1, 1, 1, 1, 1}));
+    EXPECT_EQ(drawn(3), (std::vector<int>{0, 1, 1, 1, 0}));
+    EXPECT_EQ(drawn(1), (std::vector<int>{0, 1, 0, 0, 0}));
+    const auto all = render::detail::waves_at_origin(*body, 1.0, {100.0, -50.0}, 0);
+    const auto capped = render::detail::waves_at_origin(*body, 1.0, {100.0, -50.0}, 2);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        EXPECT_EQ(all[i].dir_k_amp, capped[i].dir_k_amp) << i;
+        EXPECT_EQ(all[i].steep_omega.z, capped[i].steep_omega.z) << i;
+    }
 }
 
 // Fewer steps of the reflection's march grow faster, to reach as far as high's 24 steps

@@ -126,6 +126,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                       {"reflection_facets", (*renderer)->quality().reflection_facets},
                       {"reflection_march_steps", (*renderer)->quality().reflection_march_steps},
                       {"far_field_ring_patches", (*renderer)->quality().far_field_ring_patches},
+                      {"waves_drawn", (*renderer)->quality().waves_drawn},
                       {"scene_reflection", (*renderer)->quality().scene_reflection},
                       {"water_per_sample", (*renderer)->quality().water_per_sample},
                       {"caustics", (*renderer)->quality().caustics}}},

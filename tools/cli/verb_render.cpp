@@ -41,7 +41,7 @@ struct RenderArgs {
     double gpu_memory_mib = 1024.0;
     std::string quality = "high";
     std::optional<double> water_pixels_per_vertex, water_max_foreshortening;
-    std::optional<int> foam_lags, reflection_facets, reflection_march_steps, far_field_ring_patches;
+    std::optional<int> foam_lags, reflection_facets, reflection_march_steps, far_field_ring_patches, waves_drawn;
     std::optional<bool> scene_reflection, caustics;
     bool validate = false;
 };
@@ -117,6 +117,7 @@ int run_render(const RenderArgs& a) {
     override_with(o.reflection_facets, a.reflection_facets, "--reflection-facets");
     override_with(o.reflection_march_steps, a.reflection_march_steps, "--reflection-march-steps");
     override_with(o.far_field_ring_patches, a.far_field_ring_patches, "--far-field-ring-patches");
+    override_with(o.waves_drawn, a.waves_drawn, "--waves-drawn");
     override_with(o.scene_reflection, a.scene_reflection, "--scene-reflection");
     override_with(o.caustics, a.caustics, "--caustics");
     if (!refused.empty()) return fail(verb, refused);
@@ -183,6 +184,9 @@ Verb add_render_verb(CLI::App& app) {
                     "Override the steps of the march that finds the terrain a reflection meets (4 to 64)");
     cmd->add_option("--far-field-ring-patches", args->far_field_ring_patches,
                     "Override the patches per side of each ring of coarser water out to the horizon (even, 8 to 64)");
+    cmd->add_option("--waves-drawn", args->waves_drawn,
+                    "Override how many of each body's waves (its largest) the water draws one by one; the others "
+                    "as roughness (0: all, else 1 to 1024)");
     cmd->add_option("--scene-reflection", args->scene_reflection,
                     "Override whether the water reflects the terrain and floats, not only the sky (true or false)");
     cmd->add_option("--caustics", args->caustics,

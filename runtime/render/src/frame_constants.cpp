@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -136,11 +137,12 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
                                              static_cast<float>(quality.far_field_ring_patches)));
     }
 
-    plan.waves = waves_at_origin(water, info.time, plan.origin);
+    plan.waves = waves_at_origin(water, info.time, plan.origin, quality.waves_drawn);
+    plan.waves_drawn = quality.waves_drawn;
     return plan;
 }
 
-std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin) {
+std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin, int waves_drawn) {
     std::vector<gpu::GpuWave> out = gpu_waves(body.waves());
     std::vector<double> offsets(body.waves().size());
     phase_offsets_at(body.waves(), body.local_time(time), offsets);
@@ -148,6 +150,16 @@ std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, gl
     for (std::size_t i = 0; i < ws.size(); ++i) {
         const double phase = ws[i].k * (ws[i].dir_x * origin.x + ws[i].dir_z * origin.y) + offsets[i];
         out[i].steep_omega.z = static_cast<float>(wrap_angle(phase));
+    }
+    const std::size_t drawn = static_cast<std::size_t>(std::max(waves_drawn, 0));
+    if (drawn > 0 && drawn < ws.size()) {
+        // The waves stay in their order (the shore model's runs follow it); a flag says
+        // which are drawn one by one.
+        std::vector<std::size_t> by_amplitude(ws.size());
+        std::iota(by_amplitude.begin(), by_amplitude.end(), std::size_t{0});
+        std::stable_sort(by_amplitude.begin(), by_amplitude.end(),
+                         [&](std::size_t a, std::size_t b) { return ws[a].amplitude > ws[b].amplitude; });
+        for (std::size_t r = drawn; r < ws.size(); ++r) out[by_amplitude[r]].steep_omega.w = 0.0f;
     }
     return out;
 }

@@ -25,6 +25,7 @@ struct FramePlan {
     gpu::GpuFrame frame{};
     std::vector<gpu::GpuWave> waves;
     glm::dvec2 origin{0.0};  ///< The render origin O, world xz, m.
+    int waves_drawn = 0;     ///< QualitySettings::waves_drawn: each still body's waves drawn one by one.
     std::uint32_t patches_per_side = 0;
     /// The open sea beyond the patch grid, out to the horizon: squares of coarser patches
     /// round it, each with a hole where the one inside draws. x, y: corner relative to O
@@ -44,8 +45,10 @@ glm::mat4 reversed_z_projection(double fov_y_deg, double aspect, double near_pla
 Status validate_camera(const Camera& camera);
 
 /// A body's waves as the shaders read them, with their phases at world xz `origin`
-/// (the render origin) at clock time `time`, reduced in double.
-std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin);
+/// (the render origin) at clock time `time`, reduced in double; the water draws the
+/// `waves_drawn` largest in amplitude one by one (the first in order among equals; 0: all
+/// of them), the others as slope variance.
+std::vector<gpu::GpuWave> waves_at_origin(const WaterBody& body, double time, glm::dvec2 origin, int waves_drawn);
 
 /// A river preset's waves at clock time `time` in the river's channel frame, riding its
 /// mean speed (m/s), as the shaders read them (river_water.glsl).

@@ -45,7 +45,7 @@ std::vector<gpu::GpuWave> gpu_waves(const WaveSet& set) {
         gpu::GpuWave g;
         g.dir_k_amp = {static_cast<float>(w.dir_x), static_cast<float>(w.dir_z), static_cast<float>(w.k),
                        static_cast<float>(w.amplitude)};
-        g.steep_omega = {static_cast<float>(w.steepness), static_cast<float>(w.omega), 0.0f, 0.0f};
+        g.steep_omega = {static_cast<float>(w.steepness), static_cast<float>(w.omega), 0.0f, 1.0f};
         const double turn = w.omega * static_cast<double>(gpu::kFoamLagStep);
         g.lag_turn = {static_cast<float>(std::sin(turn)), static_cast<float>(std::cos(turn)), 0.0f, 0.0f};
         out.push_back(g);

@@ -19,11 +19,14 @@ struct Tier {
 };
 
 // `medium` and `low` let the water's vertices follow the screen at grazing angles and
-// shade less (`low` reflects only the sky and draws no caustics); `high` spaces them 4
+// shade less (`low` reflects only the sky and
+// draws no caustics); `high` spaces them 4
 // pixels apart and half as much again along the view, where the far field stays within
 // its bound of the supersampled picture (0.0396 of 0.04 from 12 m); `ultra` shades the
 // water of multisampled targets at every sample, and otherwise draws as every tier did
-// before them (docs/PERFORMANCE.md, "Quality tiers").
+// before them (docs/PERFORMANCE.md, "Quality tiers"). No tier caps the waves drawn: at
+// `low` a cap of 8 took the far whitecaps and the surf's streaks away and saved nothing
+// measurable (docs/PERFORMANCE.md, "How many waves are drawn").
 constexpr std::array<Tier, 4> kTiers{{
     {Quality::low,
      "low",
@@ -99,6 +102,8 @@ Result<QualitySettings> quality_settings(Quality tier, const QualityOverrides& o
                      fmt::format("quality override far_field_ring_patches = {}: must be even",
                                  *overrides.far_field_ring_patches)};
     s.far_field_ring_patches = overrides.far_field_ring_patches.value_or(s.far_field_ring_patches);
+    if (auto st = check_override(overrides.waves_drawn, "waves_drawn", 0, 1024); !st) return st.error();
+    s.waves_drawn = overrides.waves_drawn.value_or(s.waves_drawn);
     s.scene_reflection = overrides.scene_reflection.value_or(s.scene_reflection);
     s.water_per_sample = overrides.water_per_sample.value_or(s.water_per_sample);
     s.caustics = overrides.caustics.value_or(s.caustics);

@@ -38,6 +38,7 @@ WaterShading WaterShading::from(const QualitySettings& q) {
     w.reflection_step_growth = static_cast<float>(render::reflection_step_growth(q.reflection_march_steps));
     w.scene_reflection = q.scene_reflection ? VK_TRUE : VK_FALSE;
     w.caustics = q.caustics ? VK_TRUE : VK_FALSE;
+    w.waves_capped = q.waves_drawn > 0 ? VK_TRUE : VK_FALSE;
     return w;
 }
 
@@ -84,7 +85,8 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
         {gpu::kSpecReflectionSteps, offsetof(WaterShading, reflection_steps), sizeof(std::int32_t)},
         {gpu::kSpecReflectionStepGrowth, offsetof(WaterShading, reflection_step_growth), sizeof(float)},
         {gpu::kSpecCaustics, offsetof(WaterShading, caustics), sizeof(std::uint32_t)},
-        {gpu::kSpecSceneReflection, offsetof(WaterShading, scene_reflection), sizeof(std::uint32_t)}};
+        {gpu::kSpecSceneReflection, offsetof(WaterShading, scene_reflection), sizeof(std::uint32_t)},
+        {gpu::kSpecWavesCapped, offsetof(WaterShading, waves_capped), sizeof(std::uint32_t)}};
     VkSpecializationInfo water_specialization{static_cast<std::uint32_t>(std::size(water_entries)), water_entries,
                                               sizeof(WaterShading), d.water};
     for (const Stage& s : wanted) {

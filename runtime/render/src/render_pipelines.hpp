@@ -30,6 +30,7 @@ struct WaterShading {
     float reflection_step_growth = 1.25f;
     std::uint32_t scene_reflection = 1;  ///< VkBool32
     std::uint32_t caustics = 1;          ///< VkBool32 (terrain.frag)
+    std::uint32_t waves_capped = 0;      ///< VkBool32: QualitySettings::waves_drawn > 0
 
     static WaterShading from(const QualitySettings& q);
 };

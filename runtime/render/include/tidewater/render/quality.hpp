@@ -47,6 +47,13 @@ struct QualitySettings {
     /// fewer patch invocations, and their vertices keep the spacing above up to 64 per
     /// patch edge. Even, 8 to 64.
     int far_field_ring_patches = 32;
+    /// The most waves of a body (the ocean's, each lake's) that the water draws one by one,
+    /// in its mesh and its normals: its largest in amplitude. The others reach the pixels
+    /// as the waves too short for a pixel do, as statistics: their slope variance (a
+    /// rougher surface, a wider glitter) and their share of the crest foam's spread. A
+    /// river's waves ride its current and are always drawn. 0: every wave (every tier's
+    /// choice); else 1 to 1024.
+    int waves_drawn = 0;
     /// The water reflects the terrain and the host's opaque geometry where its reflections
     /// meet them (a march over the terrain's heights into the copy of the opaque scene).
     /// Off: it reflects the sky alone, and reflection_march_steps does not matter.
@@ -70,6 +77,7 @@ struct QualityOverrides {
     std::optional<int> reflection_facets;
     std::optional<int> reflection_march_steps;
     std::optional<int> far_field_ring_patches;
+    std::optional<int> waves_drawn;
     std::optional<bool> scene_reflection;
     std::optional<bool> water_per_sample;
     std::optional<bool> caustics;
