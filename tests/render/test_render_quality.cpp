@@ -306,8 +306,8 @@ TEST_F(QualityTest, WavesNotDrawnOneByOneStayAsRoughness) {
                             one = view(both, render::DebugView::height, {.waves_drawn = 1}),
                             dropped = view(swell_only, render::DebugView::height, {});
     ASSERT_FALSE(full.pixels.empty() || one.pixels.empty() || dropped.pixels.empty());
-    std::printf("heights: one wave drawn changes them by %.4f, dropping the short wave by %.4f\n",
-                per_pixel(full, one), per_pixel(full, dropped));
+    std::printf("heights: one wave drawn changes them by %.4f, dropping the short wave by %.4f\n", per_pixel(full, one),
+                per_pixel(full, dropped));
     ASSERT_GT(per_pixel(full, dropped), 0.005) << "the short wave shows";
     EXPECT_GT(per_pixel(full, one), 0.5 * per_pixel(full, dropped)) << "the mesh loses the short wave";
 

@@ -114,8 +114,8 @@ TEST(QualityTiers, OrderedNamedAndOverridden) {
 TEST(QualityTiers, TheMeshDrawsABodysLargestWaves) {
     WaterProfile profile;
     for (const double amplitude : {0.1, 0.5, 0.3, 0.5, 0.2})
-        profile.waves.push_back({.direction_deg = 10.0 * amplitude, .wavelength = 40.0, .amplitude = amplitude,
-                                 .steepness = 0.1});
+        profile.waves.push_back(
+            {.direction_deg = 10.0 * amplitude, .wavelength = 40.0, .amplitude = amplitude, .steepness = 0.1});
     const auto body = WaterBody::create(profile, 0.0, "test");
     ASSERT_TRUE(body.ok()) << body.error().message;
     const auto drawn = [&](int cap) {
