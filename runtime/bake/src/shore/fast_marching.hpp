@@ -1,8 +1,9 @@
-// First-arrival eikonal solve |grad T| = s(x) on a square grid by fast marching
+// First-arrival eikonal solve |grad T| = s(x) on a grid of square texels by fast marching
 // (Sethian 1996) with second-order upwind differences where two known values line up,
-// first order elsewhere. Private.
+// first order elsewhere; and its re-solve round a local change of s. Private.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -13,5 +14,43 @@ inline constexpr double kUnreached = std::numeric_limits<double>::infinity();
 /// `slowness` per texel (<= 0 marks a blocked texel); `value` holds the known sources
 /// (finite) and kUnreached elsewhere, and receives the arrival values; `h` is the texel size.
 void fast_march(const std::vector<double>& slowness, std::vector<double>& value, int n, double h);
+
+/// Texels [i0, i1) x [j0, j1) of a grid.
+struct TexelWindow {
+    int i0 = 0, j0 = 0, i1 = 0, j1 = 0;
+    bool empty() const { return i1 <= i0 || j1 <= j0; }
+    bool contains(int i, int j) const { return i >= i0 && i < i1 && j >= j0 && j < j1; }
+};
+
+/// A first-arrival solution over an n x n grid, before and after its slowness changed.
+struct MarchChange {
+    int n = 0;
+    double h = 0.0;                            ///< texel size
+    std::function<double(int, int)> slowness;  ///< after the change (<= 0: blocked)
+    std::function<double(int, int)> source;    ///< after: a source's value, else kUnreached
+    std::function<double(int, int)> before;    ///< the solution before (kUnreached: unreached)
+    TexelWindow changed;                       ///< where slowness or sources changed
+    double tolerance = 1e-3;                   ///< on the values, in their units
+};
+
+/// The solution after the change, re-solved in a window round it.
+struct MarchWindow {
+    TexelWindow window;
+    std::vector<double> value;  ///< row-major over the window
+    int solves = 0;             ///< windows marched until the one returned
+    double at(int i, int j) const {
+        return value[static_cast<std::size_t>(j - window.j0) * static_cast<std::size_t>(window.i1 - window.i0) +
+                     static_cast<std::size_t>(i - window.i0)];
+    }
+};
+
+/// Marches the window `change.changed` grown by `margin` texels from the values round it
+/// (two rings of the solution before, frozen), then compares the two texels along each
+/// side of the window with the solution before: where one differs by more than the
+/// tolerance, the change reaches past that side, which grows by the margin (doubled at
+/// each growth), and the window is marched again, until none differs or the window is the
+/// whole grid. Outside the window the solution before stands, within about the tolerance
+/// of a full solve's.
+MarchWindow remarch(const MarchChange& change, int margin);
 
 }  // namespace tidewater::detail
