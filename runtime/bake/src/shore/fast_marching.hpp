@@ -18,7 +18,6 @@ void fast_march(const std::vector<double>& slowness, std::vector<double>& value,
 /// Texels [i0, i1) x [j0, j1) of a grid.
 struct TexelWindow {
     int i0 = 0, j0 = 0, i1 = 0, j1 = 0;
-    bool empty() const { return i1 <= i0 || j1 <= j0; }
     bool contains(int i, int j) const { return i >= i0 && i < i1 && j >= j0 && j < j1; }
 };
 
