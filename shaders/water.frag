@@ -51,11 +51,12 @@ const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 // slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
 // averaged reflection, as the supersampled picture shows, instead of aliasing.
 // Normal detail: every wave as much as the pixel resolves it, less what the geometry
-// already draws (waves faded out of the mesh add slope; waves the mesh draws but the pixel cannot resolve, as at grazing angles, are taken back
-// out), then ripples (the ocean's or a lake's) or a river's flow-mapped detail carried by
-// its current. What the pixel cannot resolve adds to `variance` (slope variance, per
-// axis): `hidden_slope_variance`, summed at the patch's corners (hidden_waves_at), is the
-// waves' share.
+// already draws (waves faded out of the mesh add slope; waves the mesh draws but the
+// pixel cannot resolve, as at grazing angles, are taken back out), then ripples (the
+// ocean's or a lake's) or a river's flow-mapped detail carried by its current. What the
+// pixel cannot resolve adds to `variance` (slope variance, per axis):
+// `hidden_slope_variance`, summed at the patch's corners (hidden_waves_at), is the waves'
+// share, and all of a wave the tier does not draw (QualitySettings::waves_drawn).
 // The same share changes the Jacobian (to first order, by minus the trace of their m):
 // by `jacobian`; the lagged Jacobians (the foam particles remember) by `lagged`.
 // `fine`: the ripples' or flow detail's drawn slope and its slope variance per axis, which

@@ -3,8 +3,7 @@
 // 10 m radius at about 3, 8 and 16 m of water, and each of three of ocean_rolling's waves
 // (the longest, the middle one, the shortest) is marched whole before it and re-marched
 // in a window after it (detail::remarch, tolerance 1e-3 rad). Prints one JSON object per
-// stroke and wave. The sources are the bake's (shore_waves_bake.cpp): deep water, or the
-// edges a wave enters through where it has none.
+// stroke and wave. The sources are the bake's (detail::phase_source).
 //   tidewater_remarch_benchmark [N=1024]
 // docs/PERFORMANCE.md ("Worlds at real scale") quotes it.
 #include <fmt/format.h>
@@ -50,10 +49,10 @@ struct WaveMarch {
     double source(int i, int j, double depth) const {
         const double s = slowness(depth);
         if (s <= 0.0) return detail::kUnreached;
-        const bool entry = (i == 0 && wave.dir_x > 0.05) || (i == n - 1 && wave.dir_x < -0.05) ||
-                           (j == 0 && wave.dir_z > 0.05) || (j == n - 1 && wave.dir_z < -0.05);
-        const bool is_source = any_deep ? s * depth >= std::numbers::pi : entry;
-        return is_source ? wave.k * texel * (wave.dir_x * (i + 0.5) + wave.dir_z * (j + 0.5)) : detail::kUnreached;
+        const bool deep = s * depth >= detail::kDeepKh;
+        return detail::phase_source(any_deep, deep, i, j, n, wave.dir_x, wave.dir_z)
+                   ? wave.k * texel * (wave.dir_x * (i + 0.5) + wave.dir_z * (j + 0.5))
+                   : detail::kUnreached;
     }
 };
 
@@ -96,7 +95,7 @@ int main(int argc, char** argv) {
         };
         for (const std::size_t w : {std::size_t{0}, waves.size() / 2, waves.size() - 1}) {
             WaveMarch m{waves[w], grid.texel, false, n};
-            for (const double d : grid.depth) m.any_deep = m.any_deep || m.slowness(d) * d >= std::numbers::pi;
+            for (const double d : grid.depth) m.any_deep = m.any_deep || m.slowness(d) * d >= detail::kDeepKh;
             std::vector<double> slowness(grid.depth.size()), before(grid.depth.size());
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i) {

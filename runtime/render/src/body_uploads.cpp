@@ -122,7 +122,7 @@ Result<BodyBuffers> BodyBuffers::create(const Device& ctx, const Scene& scene) {
 }
 
 BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan,
-                          const ShoreBuffers& shores) {
+                          const ShoreBuffers& shores, int waves_drawn) {
     BodyDraws out;
     const glm::dvec2 origin = plan.origin;
     // A draw's still water reads shore model `slot` of `shores` (0: the ocean's, 1 + l: lake l's).
@@ -141,7 +141,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
     const std::uint32_t ocean_count = static_cast<std::uint32_t>(out.waves.size());
     for (std::size_t l = 0; l < scene.lakes.size(); ++l) {
         lake_first[l] = static_cast<std::uint32_t>(out.waves.size());
-        const auto w = waves_at_origin(scene.lakes[l].body, time, origin, plan.waves_drawn);
+        const auto w = waves_at_origin(scene.lakes[l].body, time, origin, waves_drawn);
         out.waves.insert(out.waves.end(), w.begin(), w.end());
     }
     auto displacement = [](const WaterBody& b) {

@@ -55,9 +55,10 @@ struct BodyDraws {
     std::vector<std::uint32_t> patch_counts;     ///< instances of each draw
 };
 
-/// The ocean's waves and patch grid come from the frame's `plan`; `ocean_shore` says
-/// whether the frame's shore fields hold the ocean's model.
+/// The ocean's waves and patch grid come from the frame's `plan`, each lake's waves are
+/// drawn one by one as `waves_drawn` says (QualitySettings::waves_drawn), and `shores`
+/// places each still body's shore model.
 BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double time, const FramePlan& plan,
-                          const ShoreBuffers& shores);
+                          const ShoreBuffers& shores, int waves_drawn);
 
 }  // namespace tidewater::render::detail

@@ -138,7 +138,6 @@ FramePlan plan_frame(const FrameInfo& info, VkExtent2D extent, const WaterBody& 
     }
 
     plan.waves = waves_at_origin(water, info.time, plan.origin, quality.waves_drawn);
-    plan.waves_drawn = quality.waves_drawn;
     return plan;
 }
 

@@ -25,7 +25,6 @@ struct FramePlan {
     gpu::GpuFrame frame{};
     std::vector<gpu::GpuWave> waves;
     glm::dvec2 origin{0.0};  ///< The render origin O, world xz, m.
-    int waves_drawn = 0;     ///< QualitySettings::waves_drawn: each still body's waves drawn one by one.
     std::uint32_t patches_per_side = 0;
     /// The open sea beyond the patch grid, out to the horizon: squares of coarser patches
     /// round it, each with a hole where the one inside draws. x, y: corner relative to O

@@ -19,8 +19,7 @@ struct Tier {
 };
 
 // `medium` and `low` let the water's vertices follow the screen at grazing angles and
-// shade less (`low` reflects only the sky and
-// draws no caustics); `high` spaces them 4
+// shade less (`low` reflects only the sky and draws no caustics); `high` spaces them 4
 // pixels apart and half as much again along the view, where the far field stays within
 // its bound of the supersampled picture (0.0396 of 0.04 from 12 m); `ultra` shades the
 // water of multisampled targets at every sample, and otherwise draws as every tier did

@@ -307,7 +307,7 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
     p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
-    p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore);
+    p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore, quality.waves_drawn);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, p.plan.origin);
     if (!wakes) return wakes.error();
     p.wakes = std::move(wakes).value();

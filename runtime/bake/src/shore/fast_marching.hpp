@@ -11,6 +11,20 @@ namespace tidewater::detail {
 
 inline constexpr double kUnreached = std::numeric_limits<double>::infinity();
 
+/// A wave's phase is marched from deep water (k h >= kDeepKh, where tanh(k h) > 0.996),
+/// where the open-ocean phase holds.
+inline constexpr double kDeepKh = 3.14159265358979323846;
+
+/// Whether texel (i, j) of an n x n grid is a source of a wave's marched phase (its
+/// open-ocean phase there): deep water (`deep`) where the grid has any (`any_deep`), else
+/// an edge the wave enters through (direction x, z): shallow edges would otherwise pin
+/// the unrefracted phase along them.
+inline bool phase_source(bool any_deep, bool deep, int i, int j, int n, double dir_x, double dir_z) {
+    if (any_deep) return deep;
+    return (i == 0 && dir_x > 0.05) || (i == n - 1 && dir_x < -0.05) || (j == 0 && dir_z > 0.05) ||
+           (j == n - 1 && dir_z < -0.05);
+}
+
 /// `slowness` per texel (<= 0 marks a blocked texel); `value` holds the known sources
 /// (finite) and kUnreached elsewhere, and receives the arrival values; `h` is the texel size.
 void fast_march(const std::vector<double>& slowness, std::vector<double>& value, int n, double h);

@@ -24,8 +24,7 @@ namespace tidewater {
 
 namespace {
 
-/// The deep-water boundary: k h >= pi, where tanh(k h) > 0.996.
-constexpr double kDeepKh = kPi;
+using detail::kDeepKh;
 constexpr double kMaxFold = 0.95;
 
 /// `target`'s grid over the terrain: depth from the terrain at its texel centres;
@@ -143,16 +142,12 @@ MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
         m.deep[k] = m.slowness[k] * h >= kDeepKh;
         m.any_deep = m.any_deep || m.deep[k];
     }
-    // Sources: deep water, where the open-ocean phase holds. A domain with no deep
-    // water takes the wave from the edges it enters through instead (shallow edges
-    // would otherwise pin the unrefracted phase along them).
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
             const std::size_t k = field.index(i, j);
             if (m.slowness[k] <= 0.0) continue;
-            const bool entry_edge = (i == 0 && dir.x > 0.05) || (i == n - 1 && dir.x < -0.05) ||
-                                    (j == 0 && dir.y > 0.05) || (j == n - 1 && dir.y < -0.05);
-            if (m.any_deep ? m.deep[k] != 0 : entry_edge) m.phase[k] = k0 * glm::dot(dir, field.texel_center(i, j));
+            if (detail::phase_source(m.any_deep, m.deep[k] != 0, i, j, n, dir.x, dir.y))
+                m.phase[k] = k0 * glm::dot(dir, field.texel_center(i, j));
         }
     }
     // Offset so the marched values start near zero (keeps doubles exact on big domains).
