@@ -15,6 +15,7 @@
 #include <span>
 
 #include "shore/fast_marching.hpp"
+#include "shore/shore_rows.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/parallel.hpp"
@@ -25,7 +26,8 @@ namespace tidewater {
 namespace {
 
 using detail::kDeepKh;
-constexpr double kMaxFold = 0.95;
+using detail::OpenSeaTest;
+using detail::RunTilesView;
 
 /// `target`'s grid over the terrain: depth from the terrain at its texel centres;
 /// distance and gradient sampled from `from` (a shoreline field at another resolution),
@@ -165,32 +167,6 @@ struct TilePlan {
     std::vector<std::size_t> tile;  ///< per stored slot (from kShoreFirstStoredSlot): its tile
 };
 
-/// What decides which tiles of a layer are left out as open sea: its longest wave
-/// (lowest frequency), and the energy and fold of every wave (breaking and folding are
-/// the waves' together).
-struct OpenSeaTest {
-    double longest_omega = 0.0;
-    double energy = 0.0;      ///< sum of A^2, m^2
-    bool open_folds = false;  ///< the open sea's waves fold: no tile is open sea
-};
-/// `layer` is waves [first, first + count) of `all`. Where the layer's waves are deep the
-/// others may not be: their amplitudes count twice (the most refraction raises one), so
-/// that the layer is stored wherever the waves together may break.
-OpenSeaTest open_sea_test(std::span<const Wave> all, std::size_t first, std::size_t count) {
-    OpenSeaTest t;
-    double fold = 0.0;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const Wave& w = all[i];
-        const bool own = i >= first && i < first + count;
-        t.energy += (own ? 1.0 : 4.0) * w.amplitude * w.amplitude;
-        fold += w.steepness * w.k * w.amplitude;
-        if (own) t.longest_omega = t.longest_omega == 0.0 ? w.omega : std::min(t.longest_omega, w.omega);
-    }
-    // Deep water shortens a wave by at most 0.4 % (k h >= pi): the fold with that margin.
-    t.open_folds = fold * 1.01 > kMaxFold || all.empty();
-    return t;
-}
-
 /// Which tiles of `field`'s grid to store, known before any wave is marched: a tile is
 /// open sea when the layer's longest wave is in deep water (k h >= pi) at every texel of
 /// its slot, so that each of its waves keeps its open-sea phase there and shoaling changes
@@ -214,8 +190,7 @@ TilePlan plan_tiles(const OpenSeaTest& test, std::span<const glm::dvec2> open, c
                 const double h = static_cast<double>(field.depth[g]);
                 dry = dry && far_dry_land(h, static_cast<double>(field.signed_distance[g]), field.texel);
                 // Breaking starts at 0.85 of the cap (cap_breaking); shoaling in deep water stays under 1.
-                is_open = is_open && h > 0.0 && wavenumber_at_depth(test.longest_omega, h) * h >= kDeepKh &&
-                          std::sqrt(test.energy) < 0.8 * 0.5 * breaking_index * h;
+                is_open = is_open && detail::open_sea_texel(test, h, breaking_index);
             }
             kinds[tile] = is_open ? 'o' : dry ? 'd' : 's';
         }
@@ -254,45 +229,18 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, TilePlan& plan) {
     const int n = field.resolution;
     const std::size_t nw = plan.tiles.stride / 4;
-    const double k0 = wave.k;
-    const glm::dvec2 dir{wave.dir_x, wave.dir_z};
-    const std::vector<double>& phase = m.phase;
+    auto phase = [&](int a, int b) { return m.phase[field.index(a, b)]; };
     each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
-        t[w] = t[nw + w] = t[2 * nw + w] = t[3 * nw + w] = 0.0f;
-        if (!std::isfinite(phase[k])) return;  // unreached: no wave
-        // A source keeps the open-ocean phase: residual exactly 0.
-        const bool source = m.any_deep && m.deep[k] != 0;
-        if (!source) t[w] = static_cast<float>(phase[k] + m.base - k0 * glm::dot(dir, field.texel_center(i, j)));
-        const double h = field.depth[k];
-        if (h <= 0.0) return;
-        // Local wavevector = k0 D + grad(residual), central differences over reached water.
-        auto diff = [&](int a0, int b0, int a1, int b1) {
-            const bool ok0 = a0 >= 0 && b0 >= 0 && a0 < n && b0 < n && std::isfinite(phase[field.index(a0, b0)]);
-            const bool ok1 = a1 >= 0 && b1 >= 0 && a1 < n && b1 < n && std::isfinite(phase[field.index(a1, b1)]);
-            const double v0 = ok0 ? phase[field.index(a0, b0)] : phase[k];
-            const double v1 = ok1 ? phase[field.index(a1, b1)] : phase[k];
-            const double span = (ok0 ? 1.0 : 0.0) + (ok1 ? 1.0 : 0.0);
-            return span > 0.0 ? (v1 - v0) / (span * field.texel) : 0.0;
-        };
-        // In deep water the wave travels as offshore: no turn, so no refraction either.
-        glm::dvec2 kvec = source ? dir : glm::dvec2{diff(i - 1, j, i + 1, j), diff(i, j - 1, i, j + 1)};
-        const double kl = m.slowness[k];  // k(h), solved once in march_phase
-        const double len = glm::length(kvec);
-        kvec = len > 0.0 ? kvec * (kl / len) : dir * kl;  // magnitude exactly k(h)
-        t[2 * nw + w] = static_cast<float>(kvec.x);
-        t[3 * nw + w] = static_cast<float>(kvec.y);
-        // Shoaling from energy flux: sqrt(cg_deep / cg(h)), cg_deep = omega / (2 k0).
-        const double ks = std::sqrt(0.5 * wave.omega / k0 / group_velocity(kl, h));
         const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
-        double kr = 1.0;
-        if (!source && glm::length(normal) > 0.5) {
-            const double cos0 = std::abs(glm::dot(dir, normal));
-            const double cos1 = std::abs(glm::dot(kvec / kl, normal));
-            if (cos0 > 0.05 && cos1 > 0.05) kr = std::sqrt(std::clamp(cos0 / cos1, 0.25, 4.0));
-        }
-        t[nw + w] = static_cast<float>(ks * kr);
+        const detail::WaveTexel v =
+            detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
+                               static_cast<double>(field.depth[k]), m.slowness[k], normal, m.any_deep && m.deep[k] != 0);
+        t[w] = v.residual;
+        t[nw + w] = v.amplitude;
+        t[2 * nw + w] = v.kx;
+        t[3 * nw + w] = v.kz;
     });
 }
 
@@ -303,41 +251,11 @@ struct RunBake {
     TilePlan plan;
 };
 
-/// The runs' amplitude factors and wavevectors at world xz `p`, texel (i, j) of `grid`:
-/// read from the texel where a run lies on that grid, sampled bilinearly elsewhere.
-/// Calls each(wave, amplitude factor, wavevector x, z).
-template <typename Each>
-void each_run_wave(const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j, glm::dvec2 p,
-                   const Each& each) {
-    for (const RunBake& r : runs) {
-        const std::size_t nw = r.count;
-        const ShoreGrid& g = r.plan.grid;
-        if (g == grid) {
-            const float* t = r.plan.tiles.texel(i, j);
-            for (std::size_t w = 0; w < nw; ++w)
-                each(r.first + w, static_cast<double>(t[nw + w]), static_cast<double>(t[2 * nw + w]),
-                     static_cast<double>(t[3 * nw + w]));
-            continue;
-        }
-        const ShoreTaps taps = shore_taps(g, r.plan.tiles, p);
-        for (std::size_t w = 0; w < nw; ++w)
-            each(r.first + w, taps.lerp(nw + w), taps.lerp(2 * nw + w), taps.lerp(3 * nw + w));
-    }
-}
-
-/// The local height over the breaking cap at texel (i, j) of `grid` (depth h > 0): the
-/// local wave height 2 sqrt(sum A^2) over breaking_index * h (exactly 2A for one wave, the
-/// rms-based height, about 0.71 Hs, for a spectrum, whose occasional peaks a cap on sum(A)
-/// would overstate).
-double cap_ratio(std::span<const Wave> waves, const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j,
-                 double h, double breaking_index) {
-    double energy = 0.0;
-    each_run_wave(runs, grid, i, j, grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5),
-                  [&](std::size_t w, double factor, double, double) {
-                      const double a = waves[w].amplitude * factor;
-                      energy += a * a;
-                  });
-    return std::sqrt(energy) / (0.5 * breaking_index * h);
+/// The runs as the cap reads them.
+std::vector<RunTilesView> run_views(const std::vector<RunBake>& runs) {
+    std::vector<RunTilesView> views;
+    for (const RunBake& r : runs) views.push_back({r.first, r.count, &r.plan.grid, &r.plan.tiles});
+    return views;
 }
 
 /// The shared layer's rows of every stored texel: depth and shore distance, breaking (all
@@ -346,24 +264,12 @@ double cap_ratio(std::span<const Wave> waves, const std::vector<RunBake>& runs, 
 void shared_rows(std::span<const Wave> waves, double breaking_index, const ShoreField& field,
                  const std::vector<RunBake>& runs, TilePlan& plan, unsigned threads) {
     const int n = field.resolution;
+    const std::vector<RunTilesView> views = run_views(runs);
     each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t) {
-        const double h = static_cast<double>(field.depth[k]);
-        t[0] = field.depth[k];
-        t[1] = 0.0f;
-        t[2] = 1.0f;
-        t[3] = field.signed_distance[k];
-        if (h <= 0.0) return;
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
-        const double ratio = cap_ratio(waves, runs, plan.grid, i, j, h, breaking_index);
-        t[1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
-        const double scale = ratio > 1.0 ? 1.0 / ratio : 1.0;
-        double fold = 0.0;
-        each_run_wave(runs, plan.grid, i, j, field.texel_center(i, j),
-                      [&](std::size_t w, double factor, double kx, double kz) {
-                          fold += waves[w].steepness * std::hypot(kx, kz) * waves[w].amplitude * factor * scale;
-                      });
-        if (fold > kMaxFold) t[2] = static_cast<float>(kMaxFold / fold);
+        detail::shared_texel_rows(waves, breaking_index, views, plan.grid, i, j, field.depth[k],
+                                  field.signed_distance[k], t);
     });
 }
 
@@ -371,6 +277,7 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
 /// amplitude: all waves scaled down together (each run on its own grid; no wave on land).
 void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<RunBake>& runs, unsigned threads) {
     std::vector<std::vector<float>> ratios(runs.size());
+    const std::vector<RunTilesView> views = run_views(runs);
     for (std::size_t r = 0; r < runs.size(); ++r) {
         RunBake& run = runs[r];
         const int n = run.field->resolution;
@@ -380,7 +287,7 @@ void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<Ru
             if (h <= 0.0) return;
             const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                       j = static_cast<int>(k / static_cast<std::size_t>(n));
-            ratios[r][at] = static_cast<float>(cap_ratio(waves, runs, run.plan.grid, i, j, h, breaking_index));
+            ratios[r][at] = static_cast<float>(detail::cap_ratio(waves, views, run.plan.grid, i, j, h, breaking_index));
         });
     }
     for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -388,11 +295,7 @@ void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<Ru
         each_stored_texel(runs[r].plan, threads, [&](float* t, std::size_t k, std::size_t at) {
             const double h = static_cast<double>(runs[r].field->depth[k]);
             const double ratio = static_cast<double>(ratios[r][at]);
-            for (std::size_t w = 0; w < nw; ++w)
-                if (h <= 0.0)
-                    t[nw + w] = 0.0f;
-                else if (ratio > 1.0)
-                    t[nw + w] = static_cast<float>(static_cast<double>(t[nw + w]) / ratio);
+            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = detail::capped_amplitude(t[nw + w], h, ratio);
         });
     }
 }
@@ -427,28 +330,13 @@ void extend_onto_land(std::span<const Wave> waves, RunBake& run, unsigned thread
                           j = static_cast<int>(k / static_cast<std::size_t>(n));
                 for (std::size_t w = 0; w < nw; ++w) {
                     if (t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f) continue;  // a wave is here
-                    const Wave& wave = waves[run.first + w];
-                    const glm::dvec2 k0{wave.k * wave.dir_x, wave.k * wave.dir_z};
-                    double residual = 0.0;
-                    glm::dvec2 kvec{0.0};
-                    int from = 0;
-                    for (const glm::ivec2 d :
-                         {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
-                        const int a = i + d.x, b = j + d.y;
-                        if (a < 0 || b < 0 || a >= n || b >= n) continue;
-                        const float* v = tiles.texel(a, b);
-                        const glm::dvec2 kn{static_cast<double>(v[2 * nw + w]), static_cast<double>(v[3 * nw + w])};
-                        if (kn == glm::dvec2(0.0)) continue;
-                        // The residual grows by (k - k0 D) . step from the neighbour to here.
-                        residual += static_cast<double>(v[w]) - glm::dot(kn - k0, glm::dvec2(d)) * g.texel;
-                        kvec += kn;
-                        ++from;
-                    }
-                    if (from == 0) continue;
+                    const auto v = detail::carried_onto_land(waves[run.first + w], tiles, nw, w, i, j, n, g.texel,
+                                                             [](int, int) { return true; });
+                    if (!v) continue;
                     const std::size_t at = texel * tiles.stride;
-                    out.push_back({at + w, static_cast<float>(residual / from)});
-                    out.push_back({at + 2 * nw + w, static_cast<float>(kvec.x / from)});
-                    out.push_back({at + 3 * nw + w, static_cast<float>(kvec.y / from)});
+                    out.push_back({at + w, v->residual});
+                    out.push_back({at + 2 * nw + w, v->kx});
+                    out.push_back({at + 3 * nw + w, v->kz});
                 }
             }
         });
@@ -536,7 +424,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                 if (!coarse) return coarse.error();
                 run.field = std::make_shared<const ShoreField>(std::move(coarse).value());
             }
-            run.plan = plan_tiles(open_sea_test(waves, r.first, r.count),
+            run.plan = plan_tiles(detail::open_sea_test(waves, r.first, r.count),
                                   std::span<const glm::dvec2>(open).subspan(r.first, r.count), *run.field,
                                   options.breaking_index, options.store_every_tile, options.threads);
             runs.push_back(std::move(run));
@@ -577,7 +465,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             depth_only->depth = r.field->depth;  // shared, not copied
             r.field = std::move(depth_only);
         }
-        TilePlan shared = plan_tiles(open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
+        TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
         make_slots(shared, {});
         shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads);
