@@ -3,7 +3,8 @@
 // the centre, a 1:20 slope to the seabed), under ocean_rolling's spectrum, baked as
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
 // object: bake, save and load seconds (the load reads the index, then every tile is read
-// as a renderer's first upload does), a brush stroke's re-bake, the process's peak
+// as a renderer's first upload does), a brush stroke's re-bake on the hills and one on
+// the seabed, the process's peak
 // memory (after the save, before the stroke and the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -111,6 +113,52 @@ std::uintmax_t folder_bytes(const fs::path& dir) {
     return bytes;
 }
 
+/// World xz of heightmap pixel (i, j).
+glm::dvec2 pixel_xz(const tidewater::Scene& scene, int i, int j) {
+    const auto& map = std::get<tidewater::HeightmapTerrain>(scene.terrain.shape());
+    const int side = map.image->width;
+    return {map.size.x * (i / (side - 1.0) - 0.5), map.size.y * (j / (side - 1.0) - 0.5)};
+}
+
+/// A brush stroke re-baked from `baked` (as an editor does after it): the heightmap raised
+/// by `metres` at (ci, cj), falling off over 25 pixels.
+struct Stroke {
+    double seconds = 0.0;
+    bool local = false;  ///< re-baked where it is (a dry-land or a seabed edit)
+    std::string error;
+};
+Stroke re_bake_stroke(const tidewater::Scene& scene, const std::shared_ptr<const tidewater::Scene>& baked, int ci,
+                      int cj, double metres) {
+    tidewater::Scene stroke = scene;
+    auto map = std::get<tidewater::HeightmapTerrain>(scene.terrain.shape());
+    const int side = map.image->width;
+    auto pixels = std::make_shared<tidewater::Gray16Image>(*map.image);
+    const double per_metre = 65535.0 / (map.max_height - map.min_height);
+    for (int j = cj - 25; j <= cj + 25; ++j)
+        for (int i = ci - 25; i <= ci + 25; ++i) {
+            const double r = std::hypot(i - ci, j - cj) / 25.0;
+            if (r >= 1.0) continue;
+            auto& px = pixels->pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                                      static_cast<std::size_t>(i)];
+            px = static_cast<std::uint16_t>(std::clamp(px + metres * per_metre * (1.0 - r * r), 0.0, 65535.0));
+        }
+    map.image = std::move(pixels);
+    stroke.terrain = tidewater::Terrain(map);
+    tidewater::SceneBakeOptions options;
+    options.previous = baked;
+    const auto t = Clock::now();
+    auto edited = tidewater::bake_scene(stroke, options);
+    Stroke out;
+    out.seconds = seconds_since(t);
+    if (!edited) {
+        out.error = edited.error().message;
+        return out;
+    }
+    const auto& reused = (*edited)->bake->reused;
+    out.local = reused.ocean_shore_land_edit || reused.ocean_shore_water_edit;
+    return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -183,36 +231,16 @@ int main(int argc, char** argv) {
                 ", \"stored_tiles\": " + std::to_string(run.tiles.stored_tiles()) + "}";
     runs += "]";
     // A brush stroke on the hills (2 m up over 25 m, a tenth of the side from the centre,
-    // inland): re-baked from the bake just made, as an editor does.
-    double land_edit = 0.0;
-    bool land_edit_local = false;
-    {
-        tidewater::Scene stroke = scene;
-        auto map = std::get<tidewater::HeightmapTerrain>(scene.terrain.shape());
-        auto pixels = std::make_shared<tidewater::Gray16Image>(*map.image);
-        const double per_metre = 65535.0 / (map.max_height - map.min_height);
-        const int ci = static_cast<int>(0.6 * side), cj = side / 2;
-        for (int j = cj - 25; j <= cj + 25; ++j)
-            for (int i = ci - 25; i <= ci + 25; ++i) {
-                const double r = std::hypot(i - ci, j - cj) / 25.0;
-                if (r >= 1.0) continue;
-                auto& px = pixels->pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
-                                          static_cast<std::size_t>(i)];
-                px = static_cast<std::uint16_t>(std::min(65535.0, px + 2.0 * per_metre * (1.0 - r * r)));
-            }
-        map.image = std::move(pixels);
-        stroke.terrain = tidewater::Terrain(map);
-        tidewater::SceneBakeOptions options;
-        options.previous = *baked;
-        const auto te = Clock::now();
-        auto edited = tidewater::bake_scene(stroke, options);
-        if (!edited) {
-            std::fprintf(stderr, "%s\n", edited.error().message.c_str());
-            fs::remove_all(dir);
-            return 1;
-        }
-        land_edit = seconds_since(te);
-        land_edit_local = (*edited)->bake->reused.ocean_shore_land_edit;
+    // inland) and one on the seabed (1.5 m dug over 25 m where the water is about 8 m
+    // deep, on the same line), each re-baked from the bake just made, as an editor does.
+    const Stroke land = re_bake_stroke(scene, *baked, static_cast<int>(0.6 * side), side / 2, 2.0);
+    int wet_i = side / 2;
+    while (wet_i < side - 30 && scene.terrain.height_at(pixel_xz(scene, wet_i, side / 2)) > -8.0) ++wet_i;
+    const Stroke water = re_bake_stroke(scene, *baked, wet_i, side / 2, -1.5);
+    if (!land.error.empty() || !water.error.empty()) {
+        std::fprintf(stderr, "%s%s\n", land.error.c_str(), water.error.c_str());
+        fs::remove_all(dir);
+        return 1;
     }
     baked->reset();
     // Loading the saved bake as a scene naming it does (an editor opening the world), with
@@ -248,12 +276,12 @@ int main(int argc, char** argv) {
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
         "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"read_all_s\": %.2f, "
-        "\"land_edit_s\": %.3f, "
-        "\"land_edit_local\": %s, \"peak_rss_mb\": %.0f, "
+        "\"land_edit_s\": %.3f, \"land_edit_local\": %s, \"water_edit_s\": %.3f, \"water_edit_local\": %s, "
+        "\"peak_rss_mb\": %.0f, "
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
         "\"gpu_shore_mb\": %.1f}\n",
-        side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land_edit,
-        land_edit_local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(),
+        side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land.seconds,
+        land.local ? "true" : "false", water.seconds, water.local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(),
         model_mb, gpu_mb);
     return 0;
 }

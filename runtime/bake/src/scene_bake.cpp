@@ -14,6 +14,7 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_bake_write.hpp"
 #include "tidewater/detail/shore_land_edit.hpp"
+#include "tidewater/detail/shore_water_edit.hpp"
 #include "tidewater/detail/shore_waves_bake.hpp"
 #include "tidewater/detail/water_bodies_bake.hpp"
 
@@ -144,6 +145,17 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             bake.shoreline = std::move(edit->shoreline);
             bake.distance_resolution = distance_resolution;
             bake.reused.ocean_shore_land_edit = true;
+            progress.report("shore waves", begin, 1.0, 1.0);
+            return {};
+        }
+        // An edit of the seabed, under the water: the waves re-marched where it reaches.
+        if (auto edit = detail::rebake_water_edit(old.terrain, terrain, scene.water_level(),
+                                                  scene.ocean.waves().waves(), scene.shore.breaking_index,
+                                                  old.shoreline, old.ocean_shore, options.threads)) {
+            bake.ocean_shore = std::move(edit->model);
+            bake.shoreline = std::move(edit->shoreline);
+            bake.distance_resolution = distance_resolution;
+            bake.reused.ocean_shore_water_edit = true;
             progress.report("shore waves", begin, 1.0, 1.0);
             return {};
         }

@@ -11,6 +11,7 @@
 
 #include "fast_marching.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_tiles.hpp"
 #include "tidewater/dispersion.hpp"
 #include "tidewater/waves.hpp"
@@ -170,6 +171,15 @@ std::optional<LandTexel> carried_onto_land(const Wave& wave, const ShoreTiles& t
     if (count == 0) return std::nullopt;
     return LandTexel{static_cast<float>(residual / count), static_cast<float>(kvec.x / count),
                      static_cast<float>(kvec.y / count)};
+}
+
+/// The shore normal a grid other than the shoreline's holds at world xz `p`: the
+/// shoreline's distance gradient sampled there and normalized (0 where it vanishes).
+inline glm::vec2 resampled_normal(const ShoreField& shoreline, glm::dvec2 p) {
+    glm::dvec2 grad{shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)};
+    const double len = glm::length(grad);
+    grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
+    return glm::vec2(grad);
 }
 
 /// What decides which tiles of a layer are left out as open sea: its longest wave

@@ -57,11 +57,9 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
             if (!std::isfinite(depth)) finite = false;
             depths[k] = static_cast<float>(depth);
             distances[k] = static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
-            glm::dvec2 grad{from.sample(from.gradient_x, p), from.sample(from.gradient_z, p)};
-            const double len = glm::length(grad);
-            grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
-            gradient_x[k] = static_cast<float>(grad.x);
-            gradient_z[k] = static_cast<float>(grad.y);
+            const glm::vec2 normal = detail::resampled_normal(from, p);
+            gradient_x[k] = normal.x;
+            gradient_z[k] = normal.y;
         }
     });
     if (!finite)

@@ -314,24 +314,16 @@ std::size_t ShoreWaves::stored_tiles() const {
 std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w, int h,
                                                           std::span<const float> depths) const {
     ShoreTiles t = shared_;
-    const int n = grid_.resolution, m = t.tiles_per_side, kTile = ShoreTiles::kTile;
-    // A texel lies in its own tile's slot and in the aprons of the tiles before it.
-    for (int tj = std::max(0, (j0 - 1) / kTile); tj <= std::min(m - 1, (j0 + h - 1) / kTile); ++tj)
-        for (int ti = std::max(0, (i0 - 1) / kTile); ti <= std::min(m - 1, (i0 + w - 1) / kTile); ++ti) {
-            const std::size_t tile =
-                static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
-            if (t.pages[tile] < gpu::kShoreFirstStoredSlot) continue;
-            float* slot = t.slot_for_writing(t.pages[tile]);
-            for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
-                const std::size_t g = t.grid_index(tile, s);
-                const int i = static_cast<int>(g % static_cast<std::size_t>(n)) - i0;
-                const int j = static_cast<int>(g / static_cast<std::size_t>(n)) - j0;
-                if (i < 0 || j < 0 || i >= w || j >= h) continue;
-                slot[s * t.stride] =
-                    depths[static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i)];
-            }
-        }
+    t.write_texels(i0, j0, i0 + w, j0 + h, [&](float* texel, int i, int j) {
+        texel[0] = depths[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i - i0)];
+    });
     return made(grid_, std::move(t), layers_, open_wavevectors_);
+}
+
+std::shared_ptr<const ShoreWaves> ShoreWaves::with_tiles(ShoreTiles shared, std::vector<ShoreTiles> runs) const {
+    auto layers = std::make_shared<Layers>(*layers_);
+    for (std::size_t r = 0; r < layers->size() && r < runs.size(); ++r) (*layers)[r].tiles = std::move(runs[r]);
+    return made(grid_, std::move(shared), std::move(layers), open_wavevectors_);
 }
 
 LocalShore ShoreWaves::sample(glm::dvec2 p, std::span<LocalWave> waves) const {

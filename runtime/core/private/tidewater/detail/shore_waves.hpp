@@ -114,6 +114,12 @@ class ShoreWaves {
     /// were (the caller checks that).
     std::shared_ptr<const ShoreWaves> with_depths(int i0, int j0, int w, int h, std::span<const float> depths) const;
 
+    /// This model with its tiles replaced: the shared layer's by `shared` and each run's by
+    /// `runs` (one per layer, in order), each with the same pages as before and its edited
+    /// slots finite (the caller checks that: a local re-bake that rewrote them). Slots
+    /// not written stay shared with this model.
+    std::shared_ptr<const ShoreWaves> with_tiles(ShoreTiles shared, std::vector<ShoreTiles> runs) const;
+
     /// Bilinear sample at world xz from the tiles (each layer's own); `waves` must have one
     /// entry per wave of the set.
     LocalShore sample(glm::dvec2 p, std::span<LocalWave> waves) const;

@@ -1,0 +1,44 @@
+// A terrain edit under the water, re-baked where it reaches (private to Tidewater::bake).
+// When an edit changes the seabed only where the water stays (every texel under it and a
+// step round it wet before and after, on every grid of the model and the shoreline's),
+// the shoreline keeps its contour and its distances, and the waves their sources; what
+// changes is each wave's phase round the edit and downstream of it, toward the shore, and
+// with it the waves' amplitudes and the breaking cap. Each wave is marched again in a
+// window that grows until the phase along its sides moved by under
+// kOpenSeaPhaseTolerance (detail::remarch, the tolerance the model already leaves the
+// open sea out at); the texels under the windows, and the cap's reach round them, are
+// baked again with the bake's own rows (shore/shore_rows.hpp). Every other slot stays the
+// previous bake's, shared: a stroke on the seabed costs its windows, not every wave's
+// full march.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/terrain.hpp"
+#include "tidewater/waves.hpp"
+
+namespace tidewater::detail {
+
+struct WaterEdit {
+    std::shared_ptr<const ShoreField> shoreline;
+    std::shared_ptr<const ShoreWaves> model;
+    std::size_t slots = 0;  ///< stored slots written again, over every layer
+    int widest_window = 0;  ///< texels a side of the widest window a wave was re-marched in
+};
+
+/// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
+/// with `breaking_index`) for `after`, when the two terrains are the same heightmap whose
+/// pixels changed only where the water stays, no tile of the model turns from open sea to
+/// stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
+/// the caller bakes in full. Within the windows the values are a full bake's to the
+/// tolerance; outside them, the previous bake's.
+std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain& after, double water_level,
+                                           std::span<const Wave> waves, double breaking_index,
+                                           const std::shared_ptr<const ShoreField>& shoreline,
+                                           const std::shared_ptr<const ShoreWaves>& model, unsigned threads);
+
+}  // namespace tidewater::detail

@@ -1,0 +1,468 @@
+#include "tidewater/detail/shore_water_edit.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "shore/fast_marching.hpp"
+#include "shore/shore_edit_region.hpp"
+#include "shore/shore_rows.hpp"
+#include "tidewater/detail/parallel.hpp"
+#include "tidewater/dispersion.hpp"
+
+namespace tidewater::detail {
+
+namespace {
+
+/// Depths at a grid's texel centres over a terrain, as the bake computes them (level -
+/// height, in float).
+struct GridDepth {
+    const Terrain* terrain = nullptr;
+    double level = 0.0;
+    ShoreGrid grid;
+    glm::dvec2 centre(int i, int j) const { return grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5); }
+    float at(int i, int j) const { return static_cast<float>(level - terrain->height_at(centre(i, j))); }
+};
+
+/// `r` grown by `by` texels a side, within an n x n grid.
+TexelRange grown(const TexelRange& r, int by, int n) {
+    return {std::max(0, r.i0 - by), std::max(0, r.j0 - by), std::min(n - 1, r.i1 + by), std::min(n - 1, r.j1 + by)};
+}
+
+/// Whether every texel of `r` and a step round it is wet before and after.
+bool stays_wet(const TexelRange& r, int n, const GridDepth& before, const GridDepth& after) {
+    const TexelRange around = grown(r, 1, n);
+    for (int j = around.j0; j <= around.j1; ++j)
+        for (int i = around.i0; i <= around.i1; ++i)
+            if (!(before.at(i, j) > 0.0f && after.at(i, j) > 0.0f)) return false;
+    return true;
+}
+
+/// Whether every tile whose slot holds a texel of `r` keeps its kind over the depths
+/// after: open sea where the bake left it out as open sea, stored where it stored it.
+bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSeaTest& test, double breaking_index,
+                     const GridDepth& after) {
+    const int m = tiles.tiles_per_side, n = tiles.resolution, kTile = ShoreTiles::kTile;
+    for (int tj = std::max(0, (r.j0 - 1) / kTile); tj <= std::min(m - 1, r.j1 / kTile); ++tj)
+        for (int ti = std::max(0, (r.i0 - 1) / kTile); ti <= std::min(m - 1, r.i1 / kTile); ++ti) {
+            const std::uint32_t page = tiles.page(ti, tj);
+            if (page == gpu::kShoreDrySlot) return false;
+            const std::size_t tile =
+                static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
+            bool open = !test.open_folds;
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && open; ++k) {
+                const std::size_t g = tiles.grid_index(tile, k);
+                open = open_sea_texel(test, static_cast<double>(after.at(static_cast<int>(g % static_cast<std::size_t>(n)),
+                                                                         static_cast<int>(g / static_cast<std::size_t>(n)))),
+                                      breaking_index);
+            }
+            if (open != (page == gpu::kShoreOpenSlot)) return false;
+        }
+    return true;
+}
+
+bool deep_water(double omega, double h) {
+    return h > 0.0 && wavenumber_at_depth(omega, h) * h >= kDeepKh;
+}
+
+/// Values over a range of texels, row-major.
+template <typename T>
+struct Patch {
+    TexelRange range;
+    std::size_t per_texel = 1;
+    std::vector<T> values;
+    void assign(const TexelRange& r, std::size_t per, T value) {
+        range = r;
+        per_texel = per;
+        values.assign(static_cast<std::size_t>(r.width()) * static_cast<std::size_t>(r.height()) * per, value);
+    }
+    std::size_t at(int i, int j) const {
+        return (static_cast<std::size_t>(j - range.j0) * static_cast<std::size_t>(range.width()) +
+                static_cast<std::size_t>(i - range.i0)) *
+               per_texel;
+    }
+    T* operator()(int i, int j) { return values.data() + at(i, j); }
+    const T* operator()(int i, int j) const { return values.data() + at(i, j); }
+};
+
+/// One run of waves as the edit re-bakes it.
+struct RunEdit {
+    const ShoreWaveLayer* layer = nullptr;
+    GridDepth before, after;
+    TexelRange edit;                ///< texels whose depth may have changed
+    std::vector<char> any_deep;     ///< per wave: the grid has deep water for it (before and after alike)
+    std::vector<MarchWindow> march; ///< per wave: its phase after, in a window
+    TexelRange rows;                ///< texels baked again
+    Patch<float> depth_before, depth_after;  ///< over rows and three texels round them
+    Patch<glm::vec2> normal;                 ///< the shore normal the bake's grid holds, same patch
+    Patch<float> fields;  ///< the run's rows before the cap, over rows and two texels round them
+    ShoreTiles before_cap, out;
+
+    int n() const { return layer->grid.resolution; }
+    glm::dvec2 centre(int i, int j) const { return after.centre(i, j); }
+    double base(const Wave& w) const { return w.k * glm::dot(glm::dvec2(w.dir_x, w.dir_z), layer->grid.corner); }
+    /// Wave w's phase before the edit, from its stored residual (kUnreached on land and
+    /// where the wave did not reach), offset as the march is.
+    double phase_before(const Wave& wave, std::size_t w, int i, int j, float depth) const {
+        if (!(depth > 0.0f)) return kUnreached;
+        const std::size_t nw = layer->count;
+        const float* t = layer->tiles.texel(i, j);
+        if (t[2 * nw + w] == 0.0f && t[3 * nw + w] == 0.0f) return kUnreached;
+        return static_cast<double>(t[w]) + wave.k * glm::dot(glm::dvec2(wave.dir_x, wave.dir_z), centre(i, j)) -
+               base(wave);
+    }
+};
+
+/// The deepest water of a grid before and after (the edit's texels after), for the
+/// waves' deep-water sources.
+struct Deepest {
+    float before = -std::numeric_limits<float>::infinity(), after = -std::numeric_limits<float>::infinity();
+};
+Deepest deepest(const RunEdit& r, unsigned threads) {
+    const int n = r.n();
+    std::vector<Deepest> rows(static_cast<std::size_t>(n));
+    parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
+        const int j = static_cast<int>(row);
+        Deepest d;
+        for (int i = 0; i < n; ++i) {
+            const float b = r.before.at(i, j);
+            d.before = std::max(d.before, b);
+            d.after = std::max(d.after, r.edit.contains(i, j) ? r.after.at(i, j) : b);
+        }
+        rows[row] = d;
+    });
+    Deepest all;
+    for (const Deepest& d : rows) {
+        all.before = std::max(all.before, d.before);
+        all.after = std::max(all.after, d.after);
+    }
+    return all;
+}
+
+/// World xz of the edges of texels [i0, i1) x [j0, j1) of `g`.
+WorldRect edges(const ShoreGrid& g, int i0, int j0, int i1, int j1) {
+    return {g.corner + g.texel * glm::dvec2(i0, j0), g.corner + g.texel * glm::dvec2(i1, j1)};
+}
+void unite(WorldRect& a, const WorldRect& b) {
+    a.lo = glm::min(a.lo, b.lo);
+    a.hi = glm::max(a.hi, b.hi);
+}
+
+/// Calls body(i, j) for every texel of `r`, rows spread over workers.
+template <typename Body>
+void each_texel(const TexelRange& r, unsigned threads, const Body& body) {
+    if (r.empty()) return;
+    parallel_for_each(static_cast<std::size_t>(r.height()), threads, [&](std::size_t row) {
+        const int j = r.j0 + static_cast<int>(row);
+        for (int i = r.i0; i <= r.i1; ++i) body(i, j);
+    });
+}
+
+/// The run's rows before the cap over `fields`' range, each wave's phase the window's
+/// where it was re-marched and the stored one's elsewhere.
+void rows_before_cap(std::span<const Wave> waves, RunEdit& r, unsigned threads) {
+    const std::size_t nw = r.layer->count;
+    const int n = r.n();
+    const double texel = r.layer->grid.texel;
+    const TexelRange& p = r.depth_after.range;
+    // Each wave's phase over the depths' patch.
+    std::vector<Patch<double>> phase(nw);
+    parallel_for_each(nw, threads, [&](std::size_t w) {
+        const Wave& wave = waves[r.layer->first + w];
+        const MarchWindow& m = r.march[w];
+        phase[w].assign(p, 1, kUnreached);
+        for (int j = p.j0; j <= p.j1; ++j)
+            for (int i = p.i0; i <= p.i1; ++i)
+                *phase[w](i, j) =
+                    m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, *r.depth_before(i, j));
+    });
+    r.fields.assign(grown(r.rows, 2, n), 4 * nw, 0.0f);
+    each_texel(r.fields.range, threads, [&](int i, int j) {
+        const double h = static_cast<double>(*r.depth_after(i, j));
+        const glm::dvec2 normal{*r.normal(i, j)};
+        float* t = r.fields(i, j);
+        for (std::size_t w = 0; w < nw; ++w) {
+            const Wave& wave = waves[r.layer->first + w];
+            const double kl = h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
+            const bool source = r.any_deep[w] && kl * h >= kDeepKh;
+            const WaveTexel v =
+                wave_texel(wave, [&](int a, int b) { return *phase[w](a, b); }, i, j, n, texel, r.centre(i, j),
+                           r.base(wave), h, kl, normal, source);
+            t[w] = v.residual;
+            t[nw + w] = v.amplitude;
+            t[2 * nw + w] = v.kx;
+            t[3 * nw + w] = v.kz;
+        }
+    });
+    r.before_cap = r.layer->tiles;
+    const TexelRange& f = r.fields.range;
+    r.before_cap.write_texels(f.i0, f.j0, f.i1 + 1, f.j1 + 1,
+                              [&](float* t, int i, int j) { std::copy_n(r.fields(i, j), 4 * nw, t); });
+}
+
+/// A coarse run's waves carried two texels onto land round its rows, as the bake's
+/// extend_onto_land does: the first ring from the water, the second from the first.
+void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) {
+    const std::size_t nw = r.layer->count;
+    const int n = r.n();
+    const double texel = r.layer->grid.texel;
+    auto wet = [&](int a, int b) { return *r.depth_after(a, b) > 0.0f; };
+    auto carries = [&](int a, int b, std::size_t w) {
+        const float* t = r.out.texel(a, b);
+        return t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f;
+    };
+    for (int ring = 1; ring <= 2; ++ring) {
+        Patch<float> carried;  // per texel and wave: residual, kx, kz, and 1 where carried
+        carried.assign(r.rows, 4 * nw, 0.0f);
+        each_texel(r.rows, threads, [&](int i, int j) {
+            if (wet(i, j)) return;
+            float* c = carried(i, j);
+            for (std::size_t w = 0; w < nw; ++w) {
+                if (carries(i, j, w)) continue;
+                // The first ring takes the water's values; the second the first ring's.
+                auto from = [&](int a, int b) {
+                    if (ring == 1) return wet(a, b);
+                    if (wet(a, b)) return false;
+                    for (const glm::ivec2 d : {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
+                        const int c0 = a + d.x, c1 = b + d.y;
+                        if (c0 >= 0 && c1 >= 0 && c0 < n && c1 < n && wet(c0, c1) && carries(c0, c1, w)) return true;
+                    }
+                    return false;
+                };
+                const auto v = carried_onto_land(waves[r.layer->first + w], r.out, nw, w, i, j, n, texel, from);
+                if (!v) continue;
+                c[4 * w] = v->residual;
+                c[4 * w + 1] = v->kx;
+                c[4 * w + 2] = v->kz;
+                c[4 * w + 3] = 1.0f;
+            }
+        });
+        r.out.write_texels(r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1, [&](float* t, int i, int j) {
+            const float* c = carried(i, j);
+            for (std::size_t w = 0; w < nw; ++w) {
+                if (c[4 * w + 3] == 0.0f) continue;
+                t[w] = c[4 * w];
+                t[2 * nw + w] = c[4 * w + 1];
+                t[3 * nw + w] = c[4 * w + 2];
+            }
+        });
+    }
+}
+
+}  // namespace
+
+std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain& after, double water_level,
+                                           std::span<const Wave> waves, double breaking_index,
+                                           const std::shared_ptr<const ShoreField>& shoreline_ptr,
+                                           const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads) {
+    const auto change = heightmap_change(before, after);
+    if (!change) return std::nullopt;
+    if (!*change) return WaterEdit{shoreline_ptr, model_ptr, 0, 0};  // the same pixels in another image
+    const WorldRect& reach = **change;
+    const ShoreField& shoreline = *shoreline_ptr;
+    const ShoreWaves& model = *model_ptr;
+    if (model.wave_count() != waves.size()) return std::nullopt;
+    const ShoreGrid distance_grid{shoreline.resolution, shoreline.texel, shoreline.corner};
+    auto depths = [&](const ShoreGrid& g) {
+        return std::pair{GridDepth{&before, water_level, g}, GridDepth{&after, water_level, g}};
+    };
+    auto edited = [&](const ShoreGrid& g) { return texels_in(g.resolution, g.texel, g.corner, reach); };
+
+    // The water stays where the seabed moved, on every grid: the shoreline keeps its contour.
+    const TexelRange distance_edit = edited(distance_grid);
+    if (!distance_edit.empty()) {
+        const auto [b, a] = depths(distance_grid);
+        if (!stays_wet(distance_edit, distance_grid.resolution, b, a)) return std::nullopt;
+    }
+    const ShoreGrid& model_grid = model.grid();
+    const TexelRange model_edit = edited(model_grid);
+    const auto [model_before, model_after] = depths(model_grid);
+    if (!model_edit.empty() &&
+        (!stays_wet(model_edit, model_grid.resolution, model_before, model_after) ||
+         !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()), breaking_index,
+                          model_after)))
+        return std::nullopt;
+    std::vector<RunEdit> runs;
+    for (const ShoreWaveLayer& layer : model.layers()) {
+        RunEdit r;
+        r.layer = &layer;
+        std::tie(r.before, r.after) = depths(layer.grid);
+        r.edit = edited(layer.grid);
+        if (!r.edit.empty() &&
+            (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
+             !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count), breaking_index,
+                              r.after)))
+            return std::nullopt;
+        // Deep water for a wave (its sources) stays where it was: a layer with open sea
+        // has it for every wave; otherwise the grid's deepest water tells.
+        r.any_deep.assign(layer.count, 1);
+        const bool has_open = std::find(layer.tiles.pages.begin(), layer.tiles.pages.end(), gpu::kShoreOpenSlot) !=
+                              layer.tiles.pages.end();
+        if (!has_open) {
+            const Deepest d = deepest(r, threads);
+            for (std::size_t w = 0; w < layer.count; ++w) {
+                const double omega = waves[layer.first + w].omega;
+                r.any_deep[w] = deep_water(omega, static_cast<double>(d.before));
+                if (deep_water(omega, static_cast<double>(d.after)) != (r.any_deep[w] != 0)) return std::nullopt;
+            }
+        }
+        runs.push_back(std::move(r));
+    }
+    if (distance_edit.empty() && model_edit.empty() &&
+        std::all_of(runs.begin(), runs.end(), [](const RunEdit& r) { return r.edit.empty(); }))
+        return WaterEdit{shoreline_ptr, model_ptr, 0, 0};  // the change lies between texel centres
+
+    // Each wave marched again round the edit, in a window.
+    struct Job {
+        std::size_t run, wave;
+    };
+    std::vector<Job> jobs;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        runs[r].march.resize(runs[r].layer->count);
+        if (!runs[r].edit.empty())
+            for (std::size_t w = 0; w < runs[r].layer->count; ++w) jobs.push_back({r, w});
+    }
+    parallel_for_each(jobs.size(), threads, [&](std::size_t k) {
+        RunEdit& r = runs[jobs[k].run];
+        const std::size_t w = jobs[k].wave;
+        const Wave& wave = waves[r.layer->first + w];
+        const int n = r.n();
+        const glm::dvec2 dir{wave.dir_x, wave.dir_z};
+        const double base = r.base(wave);
+        MarchChange c;
+        c.n = n;
+        c.h = r.layer->grid.texel;
+        c.slowness = [&](int i, int j) {
+            const double h = static_cast<double>(r.after.at(i, j));
+            return h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
+        };
+        c.source = [&](int i, int j) {
+            const double h = static_cast<double>(r.after.at(i, j));
+            if (!(h > 0.0)) return kUnreached;
+            return phase_source(r.any_deep[w] != 0, deep_water(wave.omega, h), i, j, n, dir.x, dir.y)
+                       ? wave.k * glm::dot(dir, r.centre(i, j)) - base
+                       : kUnreached;
+        };
+        c.before = [&](int i, int j) { return r.phase_before(wave, w, i, j, r.before.at(i, j)); };
+        c.changed = {r.edit.i0, r.edit.j0, r.edit.i1 + 1, r.edit.j1 + 1};
+        c.tolerance = kOpenSeaPhaseTolerance;
+        r.march[w] = remarch(c, 4);
+    });
+
+    // What is baked again: every window and a texel round it (the wavevector's
+    // differences), then the cap's reach (a texel of the coarsest grid) round that.
+    WorldRect region = reach;
+    double coarsest = model_grid.texel;
+    int widest = 0;
+    for (const RunEdit& r : runs) {
+        coarsest = std::max(coarsest, r.layer->grid.texel);
+        for (const MarchWindow& m : r.march) {
+            if (m.value.empty()) continue;
+            const TexelWindow& win = m.window;
+            unite(region, edges(r.layer->grid, win.i0 - 1, win.j0 - 1, win.i1 + 1, win.j1 + 1));
+            widest = std::max({widest, win.i1 - win.i0, win.j1 - win.j0});
+        }
+    }
+    region.lo -= glm::dvec2(coarsest);
+    region.hi += glm::dvec2(coarsest);
+
+    // Each run's rows before the cap, over its rows and what the cap reads round them.
+    std::optional<ShoreField> model_normals;  // the model's grid's normals where it is not the shoreline's
+    if (!(model_grid == distance_grid)) {
+        ShoreField f;
+        f.corner = model_grid.corner;
+        f.texel = model_grid.texel;
+        f.resolution = model_grid.resolution;
+        const std::size_t count =
+            static_cast<std::size_t>(f.resolution) * static_cast<std::size_t>(f.resolution);
+        std::vector<float>& gx = f.gradient_x.write();
+        std::vector<float>& gz = f.gradient_z.write();
+        gx.resize(count);
+        gz.resize(count);
+        each_texel({0, 0, f.resolution - 1, f.resolution - 1}, threads, [&](int i, int j) {
+            const glm::vec2 v = resampled_normal(shoreline, f.texel_center(i, j));
+            gx[f.index(i, j)] = v.x;
+            gz[f.index(i, j)] = v.y;
+        });
+        model_normals = std::move(f);
+    }
+    const ShoreField& model_field = model_normals ? *model_normals : shoreline;
+    for (RunEdit& r : runs) {
+        const ShoreGrid& g = r.layer->grid;
+        const int n = g.resolution;
+        r.rows = texels_in(n, g.texel, g.corner, region);
+        const TexelRange patch = grown(r.rows, 3, n);
+        r.depth_before.assign(patch, 1, 0.0f);
+        r.depth_after.assign(patch, 1, 0.0f);
+        r.normal.assign(patch, 1, glm::vec2(0.0f));
+        const bool on_model = g == model_grid;
+        each_texel(patch, threads, [&](int i, int j) {
+            *r.depth_before(i, j) = r.before.at(i, j);
+            *r.depth_after(i, j) = r.after.at(i, j);
+            *r.normal(i, j) = on_model ? glm::vec2(model_field.gradient_x[model_field.index(i, j)],
+                                                   model_field.gradient_z[model_field.index(i, j)])
+                                       : resampled_normal(model_field, r.centre(i, j));
+        });
+        rows_before_cap(waves, r, threads);
+    }
+    std::vector<RunTilesView> before_cap;
+    for (const RunEdit& r : runs) before_cap.push_back({r.layer->first, r.layer->count, &r.layer->grid, &r.before_cap});
+
+    // The runs capped, and carried onto land on the coarse grids.
+    std::vector<ShoreTiles> run_tiles;
+    std::size_t slots = 0;
+    for (RunEdit& r : runs) {
+        const ShoreGrid& g = r.layer->grid;
+        const std::size_t nw = r.layer->count;
+        Patch<float> ratio;
+        ratio.assign(r.rows, 1, 1.0f);
+        each_texel(r.rows, threads, [&](int i, int j) {
+            const double h = static_cast<double>(*r.depth_after(i, j));
+            if (h > 0.0) *ratio(i, j) = static_cast<float>(cap_ratio(waves, before_cap, g, i, j, h, breaking_index));
+        });
+        r.out = r.layer->tiles;
+        r.out.write_texels(r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1, [&](float* t, int i, int j) {
+            const float* f = r.fields(i, j);
+            const double h = static_cast<double>(*r.depth_after(i, j));
+            const double capped = static_cast<double>(*ratio(i, j));
+            for (std::size_t w = 0; w < nw; ++w) {
+                t[w] = f[w];
+                t[nw + w] = capped_amplitude(f[nw + w], h, capped);
+                t[2 * nw + w] = f[2 * nw + w];
+                t[3 * nw + w] = f[3 * nw + w];
+            }
+        });
+        if (g.texel != model_grid.texel) carry_onto_land(waves, r, threads);
+        for (std::size_t s = gpu::kShoreFirstStoredSlot; s < r.out.slot_count(); ++s)
+            slots += r.out.slots[s] != r.layer->tiles.slots[s];
+        run_tiles.push_back(std::move(r.out));
+    }
+
+    // The shared rows: the depth, and the breaking and steepness of the waves together.
+    ShoreTiles shared = model.shared();
+    const TexelRange shared_rows = texels_in(model_grid.resolution, model_grid.texel, model_grid.corner, region);
+    shared.write_texels(shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
+                        [&](float* t, int i, int j) {
+                            const float distance = t[3];
+                            shared_texel_rows(waves, breaking_index, before_cap, model_grid, i, j,
+                                              model_after.at(i, j), distance, t);
+                        });
+    for (std::size_t s = gpu::kShoreFirstStoredSlot; s < shared.slot_count(); ++s)
+        slots += shared.slots[s] != model.shared().slots[s];
+
+    // The distance field: the same distances, the new depths under the edit.
+    auto field = std::make_shared<ShoreField>(shoreline);
+    if (!distance_edit.empty()) {
+        std::vector<float>& depth = field->depth.write();
+        const GridDepth a{&after, water_level, distance_grid};
+        each_texel(distance_edit, threads, [&](int i, int j) { depth[field->index(i, j)] = a.at(i, j); });
+    }
+    return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles)), slots, widest};
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,162 @@
+// A terrain edit under the water, re-baked where it reaches: each wave re-marched in a
+// window round the edit and downstream of it, the fields baked again there; against a
+// full bake of the edited terrain, and falling back to one where the water does not stay.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "../island_heightmap.hpp"
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene_bake.hpp"
+
+namespace tidewater {
+namespace {
+
+using test::island_pixels;
+using test::island_scene;
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// The largest difference between two layouts of the same tiles, per kind of row: a
+/// wave run's residuals (rad), amplitude factors, wavevectors (rad/m), and the shared
+/// layer's depth (m), breaking and steepness scale.
+struct RowDifferences {
+    double residual = 0.0, amplitude = 0.0, wavevector = 0.0, depth = 0.0, breaking = 0.0, steepness = 0.0;
+};
+void widen(double& to, float a, float b) {
+    to = std::max(to, static_cast<double>(std::abs(a - b)));
+}
+/// Over every slot, or (kept_only) only the slots `local` shares with `kept_from`.
+RowDifferences differences(const ShoreWaves& a, const ShoreWaves& b, const ShoreWaves* local = nullptr,
+                           const ShoreWaves* kept_from = nullptr) {
+    RowDifferences d;
+    auto slots = [&](const ShoreTiles& x, const ShoreTiles& y, const ShoreTiles* l, const ShoreTiles* k,
+                     const auto& each) {
+        EXPECT_EQ(x.pages, y.pages);
+        EXPECT_EQ(x.slot_count(), y.slot_count());
+        for (std::size_t s = gpu::kShoreFirstStoredSlot; s < std::min(x.slot_count(), y.slot_count()); ++s) {
+            if (l && l->slots[s] != k->slots[s]) continue;
+            for (std::size_t t = 0; t < ShoreTiles::kSlotTexels; ++t)
+                each(x.slot(s) + t * x.stride, y.slot(s) + t * y.stride);
+        }
+    };
+    slots(a.shared(), b.shared(), local ? &local->shared() : nullptr, kept_from ? &kept_from->shared() : nullptr,
+          [&](const float* x, const float* y) {
+              widen(d.depth, x[0], y[0]);
+              widen(d.breaking, x[1], y[1]);
+              widen(d.steepness, x[2], y[2]);
+          });
+    for (std::size_t l = 0; l < a.layers().size(); ++l) {
+        const std::size_t nw = a.layers()[l].count;
+        slots(a.layers()[l].tiles, b.layers()[l].tiles, local ? &local->layers()[l].tiles : nullptr,
+              kept_from ? &kept_from->layers()[l].tiles : nullptr, [&](const float* x, const float* y) {
+                  for (std::size_t w = 0; w < nw; ++w) {
+                      widen(d.residual, x[w], y[w]);
+                      widen(d.amplitude, x[nw + w], y[nw + w]);
+                      widen(d.wavevector, x[2 * nw + w], y[2 * nw + w]);
+                      widen(d.wavevector, x[3 * nw + w], y[3 * nw + w]);
+                  }
+              });
+    }
+    return d;
+}
+void print(const char* what, const RowDifferences& d) {
+    std::printf("%s: residual %.2e rad, amplitude %.2e, wavevector %.2e rad/m, depth %.2e m, breaking %.2e, "
+                "steepness %.2e\n",
+                what, d.residual, d.amplitude, d.wavevector, d.depth, d.breaking, d.steepness);
+}
+
+std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* total) {
+    std::size_t same = 0;
+    *total = 0;
+    auto count = [&](const ShoreTiles& x, const ShoreTiles& y) {
+        for (std::size_t s = gpu::kShoreFirstStoredSlot; s < x.slot_count(); ++s) {
+            same += x.slots[s] == y.slots[s];
+            ++*total;
+        }
+    };
+    count(a.shared(), b.shared());
+    for (std::size_t l = 0; l < a.layers().size(); ++l) count(a.layers()[l].tiles, b.layers()[l].tiles);
+    return same;
+}
+
+TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
+    const Scene scene = island_scene(island_pixels());
+    auto first = bake_scene(scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+
+    // A shoal 2 m high, 40 m round, 95 m off the shore in 4.75 m of water.
+    const Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    const auto t0 = std::chrono::steady_clock::now();
+    auto local = bake_scene(shoal, options);
+    const double local_s = seconds_since(t0);
+    ASSERT_TRUE(local.ok()) << local.error().message;
+    EXPECT_TRUE((*local)->bake->reused.ocean_shore_water_edit);
+    EXPECT_FALSE((*local)->bake->reused.ocean_shore_land_edit);
+    const auto t1 = std::chrono::steady_clock::now();
+    auto full = bake_scene(shoal);
+    const double full_s = seconds_since(t1);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    const ShoreWaves &old_model = *(*first)->bake->ocean_shore, &local_model = *(*local)->bake->ocean_shore,
+                     &full_model = *(*full)->bake->ocean_shore;
+
+    // The shoal changes the waves by far more than the re-bake's error.
+    const RowDifferences effect = differences(old_model, full_model);
+    const RowDifferences error = differences(local_model, full_model);
+    const RowDifferences kept = differences(local_model, full_model, &local_model, &old_model);
+    print("the shoal's effect (full bakes before and after)", effect);
+    print("re-baked where it reaches, against a full bake", error);
+    print("  in the slots it kept", kept);
+    std::size_t total = 0;
+    const std::size_t same = slots_shared(local_model, old_model, &total);
+    std::printf("water edit: %zu of %zu stored slots kept; %.3f s re-baked where it reaches, %.3f s in full\n", same,
+                total, local_s, full_s);
+    EXPECT_GT(effect.residual, 0.05);
+    EXPECT_GT(effect.amplitude, 0.02);
+    EXPECT_GT(effect.depth, 1.5);
+    // Within the re-march's tolerance (kOpenSeaPhaseTolerance, 1e-3 rad) and what it
+    // does to the wavevector's differences and the amplitudes; the depths exact. In the
+    // slots it kept the full bake's phase moved by under the tolerance too.
+    EXPECT_LT(error.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(error.amplitude, 1e-3);
+    EXPECT_LT(error.wavevector, 1e-4);
+    EXPECT_LT(error.breaking, 1e-3);
+    EXPECT_LT(error.steepness, 1e-3);
+    EXPECT_EQ(error.depth, 0.0);
+    EXPECT_LT(kept.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(kept.amplitude, 1e-3);
+    // Most of the model is the previous bake's memory; the shoal's slots are new.
+    EXPECT_GT(same, total / 2);
+    EXPECT_LT(same, total);
+    const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *(*local)->bake->shoreline;
+    EXPECT_EQ(&old_line.signed_distance.values(), &new_line.signed_distance.values());
+    EXPECT_TRUE(new_line.depth == (*full)->bake->shoreline->depth);
+}
+
+TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineIsBakedInFull) {
+    const Scene scene = island_scene(island_pixels());
+    auto first = bake_scene(scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+    // A mound 8 m high in 3 m of water (r = 440 m): a new islet, a new shoreline.
+    auto islet = bake_scene(island_scene(island_pixels({440.0, 0.0}, 8.0)), options);
+    ASSERT_TRUE(islet.ok()) << islet.error().message;
+    EXPECT_FALSE((*islet)->bake->reused.ocean_shore_water_edit);
+    EXPECT_FALSE((*islet)->bake->reused.ocean_shore_land_edit);
+    // A dip on the beach, across the waterline: baked in full.
+    auto beach = bake_scene(island_scene(island_pixels({400.0, 0.0}, -2.0)), options);
+    ASSERT_TRUE(beach.ok()) << beach.error().message;
+    EXPECT_FALSE((*beach)->bake->reused.ocean_shore_water_edit);
+}
+
+}  // namespace
+}  // namespace tidewater
