@@ -67,9 +67,10 @@ RowDifferences differences(const ShoreWaves& a, const ShoreWaves& b, const Shore
     return d;
 }
 void print(const char* what, const RowDifferences& d) {
-    std::printf("%s: residual %.2e rad, amplitude %.2e, wavevector %.2e rad/m, depth %.2e m, breaking %.2e, "
-                "steepness %.2e\n",
-                what, d.residual, d.amplitude, d.wavevector, d.depth, d.breaking, d.steepness);
+    std::printf(
+        "%s: residual %.2e rad, amplitude %.2e, wavevector %.2e rad/m, depth %.2e m, breaking %.2e, "
+        "steepness %.2e\n",
+        what, d.residual, d.amplitude, d.wavevector, d.depth, d.breaking, d.steepness);
 }
 
 std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* total) {

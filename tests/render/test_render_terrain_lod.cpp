@@ -240,7 +240,7 @@ TEST_F(RenderTest, ABrushStrokeIsWrittenWhereItChanged) {
 // The same stroke through bake_scene, on an island with a shore: the re-bake shares the
 // shore model's tiles away from the stroke, and set_scene writes the stroke's texels and
 // the shore tiles under it, a few per cent of what the first upload wrote; the frame is a
-// fresh upload's.
+// fresh upload's. Then a stroke on the seabed: the tiles its waves' windows reach.
 TEST_F(RenderTest, ARebakedStrokeIsWrittenWhereItChanged) {
     auto first = bake_scene(test::island_scene(test::island_pixels()));
     ASSERT_TRUE(first.ok()) << first.error().message;
@@ -264,6 +264,25 @@ TEST_F(RenderTest, ARebakedStrokeIsWrittenWhereItChanged) {
     const BudgetFrame fresh =
         render_within_budget(context(), **stroke, frame, render::RendererInitInfo{}.gpu_memory_budget, 160, 90);
     EXPECT_EQ(test::mean_difference(after, fresh.image), 0.0) << "the same frame as a fresh upload's";
+
+    // A stroke on the seabed of the first island (a shoal in 4.75 m of water): the waves
+    // re-baked where it reaches, and only those tiles written (the drawn model shares the
+    // rest with the first bake too).
+    const auto at_shoal = frame_at({100.0, 60.0, 100.0}, {350.0, 0.0, 350.0}, render::DebugView::shaded);
+    const render::RgbaImage before_shoal = render(**stroke, at_shoal, 160, 90);
+    auto shoal = bake_scene(test::island_scene(test::island_pixels({350.0, 350.0}, 2.0)), options);
+    ASSERT_TRUE(shoal.ok()) << shoal.error().message;
+    ASSERT_TRUE((*shoal)->bake->reused.ocean_shore_water_edit);
+    const render::RgbaImage after_shoal = render(**shoal, at_shoal, 160, 90);
+    const std::uint64_t shoal_written = renderer_->stats().scene_upload_bytes;
+    std::printf("a re-baked stroke on the seabed wrote %llu bytes of the first upload's %llu\n",
+                static_cast<unsigned long long>(shoal_written), static_cast<unsigned long long>(whole));
+    EXPECT_GT(shoal_written, 0u);
+    EXPECT_LT(shoal_written, whole / 2);
+    EXPECT_GT(test::mean_difference(before_shoal, after_shoal), 0.0) << "the waves over the shoal change";
+    const BudgetFrame fresh_shoal =
+        render_within_budget(context(), **shoal, at_shoal, render::RendererInitInfo{}.gpu_memory_budget, 160, 90);
+    EXPECT_EQ(test::mean_difference(after_shoal, fresh_shoal.image), 0.0) << "the same frame as a fresh upload's";
 }
 
 }  // namespace

@@ -281,7 +281,7 @@ int main(int argc, char** argv) {
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
         "\"gpu_shore_mb\": %.1f}\n",
         side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land.seconds,
-        land.local ? "true" : "false", water.seconds, water.local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(),
-        model_mb, gpu_mb);
+        land.local ? "true" : "false", water.seconds, water.local ? "true" : "false", peak,
+        static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(), model_mb, gpu_mb);
     return 0;
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <mutex>
 
+#include "shore/shore_edit_region.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
 #include "tidewater/detail/bodies_bake_write.hpp"
 #include "tidewater/detail/scene_bake_parts.hpp"
@@ -139,8 +140,9 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             return {};
         }
         // An edit of dry land, away from the water: only the ground's height under it.
-        if (auto edit =
-                detail::rebake_land_edit(old.terrain, terrain, scene.water_level(), old.shoreline, old.ocean_shore)) {
+        const detail::HeightmapChange change = detail::heightmap_change(old.terrain, terrain);
+        if (auto edit = detail::rebake_land_edit(change, old.terrain, terrain, scene.water_level(), old.shoreline,
+                                                 old.ocean_shore)) {
             bake.ocean_shore = std::move(edit->model);
             bake.shoreline = std::move(edit->shoreline);
             bake.distance_resolution = distance_resolution;
@@ -149,7 +151,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             return {};
         }
         // An edit of the seabed, under the water: the waves re-marched where it reaches.
-        if (auto edit = detail::rebake_water_edit(old.terrain, terrain, scene.water_level(),
+        if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
                                                   scene.ocean.waves().waves(), scene.shore.breaking_index,
                                                   old.shoreline, old.ocean_shore, options.threads)) {
             bake.ocean_shore = std::move(edit->model);

@@ -14,9 +14,7 @@
 namespace tidewater::detail {
 
 /// Where `after`'s height may differ from `before`'s (pixels_reach of the changed pixels).
-/// An empty optional inside: no pixel changed. nullopt: not the same heightmap with other
-/// pixels.
-inline std::optional<std::optional<WorldRect>> heightmap_change(const Terrain& before, const Terrain& after) {
+inline HeightmapChange heightmap_change(const Terrain& before, const Terrain& after) {
     const auto pixels = changed_pixels(before, after);
     if (!pixels) return std::nullopt;
     if (!*pixels) return std::optional<WorldRect>{};

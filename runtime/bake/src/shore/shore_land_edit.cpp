@@ -36,10 +36,9 @@ std::optional<std::vector<float>> dry_depths(const TexelRange& range, int n, dou
 
 }  // namespace
 
-std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& after, double water_level,
-                                         const std::shared_ptr<const ShoreField>& shoreline_ptr,
+std::optional<LandEdit> rebake_land_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
+                                         double water_level, const std::shared_ptr<const ShoreField>& shoreline_ptr,
                                          const std::shared_ptr<const ShoreWaves>& model_ptr) {
-    const auto change = heightmap_change(before, after);
     if (!change) return std::nullopt;
     if (!*change) return LandEdit{shoreline_ptr, model_ptr, 0};  // the same pixels in another image
     const WorldRect& rect = **change;

@@ -67,16 +67,15 @@ inline double cap_ratio(std::span<const Wave> waves, std::span<const RunTilesVie
 /// Shared texel (i, j)'s rows (depth h, signed shore distance): depth and distance,
 /// breaking (all waves together: the foam rises toward the cap) and the steepness scale
 /// (Q is scaled where the waves together, capped, would fold), into t[0..3]. Reads the
-/// runs before their caps.
-inline void shared_texel_rows(std::span<const Wave> waves, double breaking_index, std::span<const RunTilesView> runs,
-                              const ShoreGrid& grid, int i, int j, float depth, float distance, float* t) {
+/// runs before their caps; `ratio` is their cap_ratio there (read where h > 0).
+inline void shared_texel_rows(std::span<const Wave> waves, std::span<const RunTilesView> runs, const ShoreGrid& grid,
+                              int i, int j, float depth, float distance, double ratio, float* t) {
     const double h = static_cast<double>(depth);
     t[0] = depth;
     t[1] = 0.0f;
     t[2] = 1.0f;
     t[3] = distance;
     if (h <= 0.0) return;
-    const double ratio = cap_ratio(waves, runs, grid, i, j, h, breaking_index);
     t[1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
     const double scale = ratio > 1.0 ? 1.0 / ratio : 1.0;
     double fold = 0.0;

@@ -57,8 +57,9 @@ bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSea
             bool open = !test.open_folds;
             for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && open; ++k) {
                 const std::size_t g = tiles.grid_index(tile, k);
-                open = open_sea_texel(test, static_cast<double>(after.at(static_cast<int>(g % static_cast<std::size_t>(n)),
-                                                                         static_cast<int>(g / static_cast<std::size_t>(n)))),
+                open = open_sea_texel(test,
+                                      static_cast<double>(after.at(static_cast<int>(g % static_cast<std::size_t>(n)),
+                                                                   static_cast<int>(g / static_cast<std::size_t>(n)))),
                                       breaking_index);
             }
             if (open != (page == gpu::kShoreOpenSlot)) return false;
@@ -94,13 +95,15 @@ struct Patch {
 struct RunEdit {
     const ShoreWaveLayer* layer = nullptr;
     GridDepth before, after;
-    TexelRange edit;                ///< texels whose depth may have changed
-    std::vector<char> any_deep;     ///< per wave: the grid has deep water for it (before and after alike)
-    std::vector<MarchWindow> march; ///< per wave: its phase after, in a window
-    TexelRange rows;                ///< texels baked again
+    TexelRange edit;                         ///< texels whose depth may have changed
+    std::vector<char> any_deep;              ///< per wave: the grid has deep water for it (before and after alike)
+    std::vector<MarchWindow> march;          ///< per wave: its phase after, in a window
+    TexelRange own;                          ///< its windows and a texel round them: its phase baked again
+    TexelRange capped;                       ///< where what the cap reads moved: every row baked again
+    TexelRange rows;                         ///< both (their bounding range): the depths and rows made over it
     Patch<float> depth_before, depth_after;  ///< over rows and three texels round them
     Patch<glm::vec2> normal;                 ///< the shore normal the bake's grid holds, same patch
-    Patch<float> fields;  ///< the run's rows before the cap, over rows and two texels round them
+    Patch<float> fields;                     ///< the run's rows before the cap, over rows and two texels round them
     ShoreTiles before_cap, out;
 
     int n() const { return layer->grid.resolution; }
@@ -118,30 +121,53 @@ struct RunEdit {
     }
 };
 
-/// The deepest water of a grid before and after (the edit's texels after), for the
-/// waves' deep-water sources.
-struct Deepest {
-    float before = -std::numeric_limits<float>::infinity(), after = -std::numeric_limits<float>::infinity();
-};
-Deepest deepest(const RunEdit& r, unsigned threads) {
-    const int n = r.n();
-    std::vector<Deepest> rows(static_cast<std::size_t>(n));
-    parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
-        const int j = static_cast<int>(row);
-        Deepest d;
-        for (int i = 0; i < n; ++i) {
-            const float b = r.before.at(i, j);
-            d.before = std::max(d.before, b);
-            d.after = std::max(d.after, r.edit.contains(i, j) ? r.after.at(i, j) : b);
+/// Per wave of the run, whether its grid had deep water for it before the edit (the
+/// phase's sources): a deep texel is a source, and a source keeps a residual of exactly 0,
+/// so the texels with none (and a wave: land and unreached water carry no wavevector) are
+/// the only ones whose depth is asked. The run has no open sea (whose tiles are deep for
+/// every wave).
+std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) {
+    const ShoreTiles& tiles = r.layer->tiles;
+    const std::size_t n = static_cast<std::size_t>(r.n()), nw = r.layer->count;
+    std::vector<char> deep(nw, 0), known(nw, 0);
+    std::size_t found = 0;
+    // Nothing lies under a heightmap's lowest height (its edge fades to it): a wave for
+    // which that depth is not deep has no deep water anywhere.
+    const Terrain& terrain = *r.before.terrain;
+    if (const auto* map = std::get_if<HeightmapTerrain>(&terrain.shape()); map && terrain.cuts().empty())
+        for (std::size_t w = 0; w < nw; ++w)
+            if (!deep_water(waves[r.layer->first + w].omega, r.before.level - map->min_height)) {
+                known[w] = 1;
+                ++found;
+            }
+    for (std::size_t tile = 0; tile < tiles.pages.size() && found < nw; ++tile) {
+        const std::uint32_t page = tiles.pages[tile];
+        if (page < gpu::kShoreFirstStoredSlot) continue;
+        const float* slot = tiles.slot(page);
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+            const float* t = slot + k * tiles.stride;
+            for (std::size_t w = 0; w < nw; ++w) {
+                if (known[w] || t[w] != 0.0f || (t[2 * nw + w] == 0.0f && t[3 * nw + w] == 0.0f)) continue;
+                const std::size_t g = tiles.grid_index(tile, k);
+                if (deep_water(waves[r.layer->first + w].omega,
+                               static_cast<double>(r.before.at(static_cast<int>(g % n), static_cast<int>(g / n))))) {
+                    deep[w] = known[w] = 1;
+                    ++found;
+                }
+            }
         }
-        rows[row] = d;
-    });
-    Deepest all;
-    for (const Deepest& d : rows) {
-        all.before = std::max(all.before, d.before);
-        all.after = std::max(all.after, d.after);
     }
-    return all;
+    return deep;
+}
+
+/// Whether the edit turns deep water shallow or shallow water deep for wave w anywhere.
+bool deep_water_moves(const RunEdit& r, const Wave& wave) {
+    for (int j = r.edit.j0; j <= r.edit.j1; ++j)
+        for (int i = r.edit.i0; i <= r.edit.i1; ++i)
+            if (deep_water(wave.omega, static_cast<double>(r.before.at(i, j))) !=
+                deep_water(wave.omega, static_cast<double>(r.after.at(i, j))))
+                return true;
+    return false;
 }
 
 /// World xz of the edges of texels [i0, i1) x [j0, j1) of `g`.
@@ -163,14 +189,51 @@ void each_texel(const TexelRange& r, unsigned threads, const Body& body) {
     });
 }
 
-/// The run's rows before the cap over `fields`' range, each wave's phase the window's
-/// where it was re-marched and the stored one's elsewhere.
-void rows_before_cap(std::span<const Wave> waves, RunEdit& r, unsigned threads) {
+/// The run's depths and normals over `rows` and three texels round them (what the rows,
+/// their derivatives and the cap's taps read).
+void cover(RunEdit& r, const TexelRange& rows, const ShoreField& model_field, bool on_model, unsigned threads) {
+    r.rows = rows;
+    const TexelRange patch = grown(rows, 3, r.n());
+    r.depth_before.assign(patch, 1, 0.0f);
+    r.depth_after.assign(patch, 1, 0.0f);
+    r.normal.assign(patch, 1, glm::vec2(0.0f));
+    each_texel(patch, threads, [&](int i, int j) {
+        *r.depth_before(i, j) = r.before.at(i, j);
+        *r.depth_after(i, j) = r.after.at(i, j);
+        *r.normal(i, j) = on_model ? glm::vec2(model_field.gradient_x[model_field.index(i, j)],
+                                               model_field.gradient_z[model_field.index(i, j)])
+                                   : resampled_normal(model_field, r.centre(i, j));
+    });
+}
+
+/// The run's rows before the cap at texel (i, j) into t (4 floats a wave), each wave's
+/// phase phase(w, a, b), over the depths after.
+template <typename Phase>
+void texel_rows(std::span<const Wave> waves, const RunEdit& r, int i, int j, const Phase& phase, float* t) {
     const std::size_t nw = r.layer->count;
-    const int n = r.n();
-    const double texel = r.layer->grid.texel;
-    const TexelRange& p = r.depth_after.range;
-    // Each wave's phase over the depths' patch.
+    const double h = static_cast<double>(*r.depth_after(i, j));
+    const glm::dvec2 normal{*r.normal(i, j)};
+    for (std::size_t w = 0; w < nw; ++w) {
+        const Wave& wave = waves[r.layer->first + w];
+        const double kl = h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
+        const bool source = r.any_deep[w] && kl * h >= kDeepKh;
+        const WaveTexel v = wave_texel(
+            wave, [&](int a, int b) { return phase(w, a, b); }, i, j, r.n(), r.layer->grid.texel, r.centre(i, j),
+            r.base(wave), h, kl, normal, source);
+        t[w] = v.residual;
+        t[nw + w] = v.amplitude;
+        t[2 * nw + w] = v.kx;
+        t[3 * nw + w] = v.kz;
+    }
+}
+
+/// The run's rows before the cap over `range` (within the covered patch less a texel),
+/// each wave's phase the window's where it was re-marched and the stored one's
+/// elsewhere, over the depths after; copied from `known` where it holds them.
+Patch<float> rows_before_cap(std::span<const Wave> waves, const RunEdit& r, const TexelRange& range, unsigned threads,
+                             const Patch<float>* known = nullptr) {
+    const std::size_t nw = r.layer->count;
+    const TexelRange p = grown(range, 1, r.n());
     std::vector<Patch<double>> phase(nw);
     parallel_for_each(nw, threads, [&](std::size_t w) {
         const Wave& wave = waves[r.layer->first + w];
@@ -181,26 +244,67 @@ void rows_before_cap(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
                 *phase[w](i, j) =
                     m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, *r.depth_before(i, j));
     });
-    r.fields.assign(grown(r.rows, 2, n), 4 * nw, 0.0f);
-    each_texel(r.fields.range, threads, [&](int i, int j) {
-        const double h = static_cast<double>(*r.depth_after(i, j));
-        const glm::dvec2 normal{*r.normal(i, j)};
-        float* t = r.fields(i, j);
+    Patch<float> fields;
+    fields.assign(range, 4 * nw, 0.0f);
+    each_texel(range, threads, [&](int i, int j) {
+        if (known && known->range.contains(i, j))
+            std::copy_n((*known)(i, j), 4 * nw, fields(i, j));
+        else
+            texel_rows(
+                waves, r, i, j, [&](std::size_t w, int a, int b) { return *phase[w](a, b); }, fields(i, j));
+    });
+    return fields;
+}
+
+/// The texels of `own` whose amplitude factor or wavevector before the cap (`fields`)
+/// differs from the stored one by more than kCapReadTolerance (relative to k0 for the
+/// wavevector): where the re-marched phase moves what the cap reads, and where the
+/// stored amplitudes were capped. Their bounding range, empty when none.
+constexpr double kCapReadTolerance = 1e-4;
+TexelRange cap_inputs_moved(std::span<const Wave> waves, const RunEdit& r, const TexelRange& own, unsigned threads) {
+    const std::size_t nw = r.layer->count;
+    auto differs = [&](const float* a, const float* b) {
         for (std::size_t w = 0; w < nw; ++w) {
-            const Wave& wave = waves[r.layer->first + w];
-            const double kl = h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
-            const bool source = r.any_deep[w] && kl * h >= kDeepKh;
-            const WaveTexel v =
-                wave_texel(wave, [&](int a, int b) { return *phase[w](a, b); }, i, j, n, texel, r.centre(i, j),
-                           r.base(wave), h, kl, normal, source);
-            t[w] = v.residual;
-            t[nw + w] = v.amplitude;
-            t[2 * nw + w] = v.kx;
-            t[3 * nw + w] = v.kz;
+            const double k0 = waves[r.layer->first + w].k;
+            if (std::abs(a[nw + w] - b[nw + w]) > kCapReadTolerance ||
+                std::abs(a[2 * nw + w] - b[2 * nw + w]) > kCapReadTolerance * k0 ||
+                std::abs(a[3 * nw + w] - b[3 * nw + w]) > kCapReadTolerance * k0)
+                return true;
+        }
+        return false;
+    };
+    // Per row of `own`, the first and last texel that moved.
+    std::vector<glm::ivec2> per_row(static_cast<std::size_t>(own.height()), glm::ivec2(own.i1 + 1, own.i0 - 1));
+    parallel_for_each(per_row.size(), threads, [&](std::size_t row) {
+        const int j = own.j0 + static_cast<int>(row);
+        std::vector<float> old(4 * nw);
+        for (int i = own.i0; i <= own.i1; ++i) {
+            // The stored rows are capped in the surf: there the rows before the edit tell.
+            if (!differs(r.fields(i, j), r.layer->tiles.texel(i, j))) continue;
+            texel_rows(
+                waves, r, i, j,
+                [&](std::size_t w, int a, int b) {
+                    return r.phase_before(waves[r.layer->first + w], w, a, b, *r.depth_before(a, b));
+                },
+                old.data());
+            if (!differs(r.fields(i, j), old.data())) continue;
+            per_row[row] = {std::min(per_row[row].x, i), std::max(per_row[row].y, i)};
         }
     });
+    TexelRange moved{own.i1 + 1, own.j1 + 1, own.i0 - 1, own.j0 - 1};
+    for (std::size_t row = 0; row < per_row.size(); ++row) {
+        if (per_row[row].x > per_row[row].y) continue;
+        const int j = own.j0 + static_cast<int>(row);
+        moved = {std::min(moved.i0, per_row[row].x), std::min(moved.j0, j), std::max(moved.i1, per_row[row].y),
+                 std::max(moved.j1, j)};
+    }
+    return moved;
+}
+
+/// Writes `fields` over `f` into a copy of the run's tiles: what the cap reads.
+void write_before_cap(RunEdit& r, const TexelRange& f) {
+    const std::size_t nw = r.layer->count;
     r.before_cap = r.layer->tiles;
-    const TexelRange& f = r.fields.range;
     r.before_cap.write_texels(f.i0, f.j0, f.i1 + 1, f.j1 + 1,
                               [&](float* t, int i, int j) { std::copy_n(r.fields(i, j), 4 * nw, t); });
 }
@@ -228,7 +332,8 @@ void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
                 auto from = [&](int a, int b) {
                     if (ring == 1) return wet(a, b);
                     if (wet(a, b)) return false;
-                    for (const glm::ivec2 d : {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
+                    for (const glm::ivec2 d :
+                         {glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)}) {
                         const int c0 = a + d.x, c1 = b + d.y;
                         if (c0 >= 0 && c1 >= 0 && c0 < n && c1 < n && wet(c0, c1) && carries(c0, c1, w)) return true;
                     }
@@ -256,11 +361,10 @@ void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
 
 }  // namespace
 
-std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain& after, double water_level,
-                                           std::span<const Wave> waves, double breaking_index,
+std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
+                                           double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline_ptr,
                                            const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads) {
-    const auto change = heightmap_change(before, after);
     if (!change) return std::nullopt;
     if (!*change) return WaterEdit{shoreline_ptr, model_ptr, 0, 0};  // the same pixels in another image
     const WorldRect& reach = **change;
@@ -282,10 +386,9 @@ std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain&
     const ShoreGrid& model_grid = model.grid();
     const TexelRange model_edit = edited(model_grid);
     const auto [model_before, model_after] = depths(model_grid);
-    if (!model_edit.empty() &&
-        (!stays_wet(model_edit, model_grid.resolution, model_before, model_after) ||
-         !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()), breaking_index,
-                          model_after)))
+    if (!model_edit.empty() && (!stays_wet(model_edit, model_grid.resolution, model_before, model_after) ||
+                                !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()),
+                                                 breaking_index, model_after)))
         return std::nullopt;
     std::vector<RunEdit> runs;
     for (const ShoreWaveLayer& layer : model.layers()) {
@@ -293,24 +396,18 @@ std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain&
         r.layer = &layer;
         std::tie(r.before, r.after) = depths(layer.grid);
         r.edit = edited(layer.grid);
-        if (!r.edit.empty() &&
-            (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
-             !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count), breaking_index,
-                              r.after)))
+        if (!r.edit.empty() && (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
+                                !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count),
+                                                 breaking_index, r.after)))
             return std::nullopt;
         // Deep water for a wave (its sources) stays where it was: a layer with open sea
-        // has it for every wave; otherwise the grid's deepest water tells.
+        // has it for every wave; otherwise its stored residuals tell.
         r.any_deep.assign(layer.count, 1);
         const bool has_open = std::find(layer.tiles.pages.begin(), layer.tiles.pages.end(), gpu::kShoreOpenSlot) !=
                               layer.tiles.pages.end();
-        if (!has_open) {
-            const Deepest d = deepest(r, threads);
-            for (std::size_t w = 0; w < layer.count; ++w) {
-                const double omega = waves[layer.first + w].omega;
-                r.any_deep[w] = deep_water(omega, static_cast<double>(d.before));
-                if (deep_water(omega, static_cast<double>(d.after)) != (r.any_deep[w] != 0)) return std::nullopt;
-            }
-        }
+        for (std::size_t w = 0; w < layer.count; ++w)
+            if (deep_water_moves(r, waves[layer.first + w])) return std::nullopt;
+        if (!has_open) r.any_deep = had_deep_water(r, waves);
         runs.push_back(std::move(r));
     }
     if (distance_edit.empty() && model_edit.empty() &&
@@ -354,32 +451,16 @@ std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain&
         r.march[w] = remarch(c, 4);
     });
 
-    // What is baked again: every window and a texel round it (the wavevector's
-    // differences), then the cap's reach (a texel of the coarsest grid) round that.
-    WorldRect region = reach;
-    double coarsest = model_grid.texel;
-    int widest = 0;
-    for (const RunEdit& r : runs) {
-        coarsest = std::max(coarsest, r.layer->grid.texel);
-        for (const MarchWindow& m : r.march) {
-            if (m.value.empty()) continue;
-            const TexelWindow& win = m.window;
-            unite(region, edges(r.layer->grid, win.i0 - 1, win.j0 - 1, win.i1 + 1, win.j1 + 1));
-            widest = std::max({widest, win.i1 - win.i0, win.j1 - win.j0});
-        }
-    }
-    region.lo -= glm::dvec2(coarsest);
-    region.hi += glm::dvec2(coarsest);
-
-    // Each run's rows before the cap, over its rows and what the cap reads round them.
+    // What each run bakes again: its windows and a texel round them (the wavevector's
+    // differences). What the cap reads moves in part of them: round that part (the cap's
+    // taps, a texel of the coarsest grid) and the edit every grid's rows are baked again.
     std::optional<ShoreField> model_normals;  // the model's grid's normals where it is not the shoreline's
     if (!(model_grid == distance_grid)) {
         ShoreField f;
         f.corner = model_grid.corner;
         f.texel = model_grid.texel;
         f.resolution = model_grid.resolution;
-        const std::size_t count =
-            static_cast<std::size_t>(f.resolution) * static_cast<std::size_t>(f.resolution);
+        const std::size_t count = static_cast<std::size_t>(f.resolution) * static_cast<std::size_t>(f.resolution);
         std::vector<float>& gx = f.gradient_x.write();
         std::vector<float>& gz = f.gradient_z.write();
         gx.resize(count);
@@ -392,49 +473,99 @@ std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain&
         model_normals = std::move(f);
     }
     const ShoreField& model_field = model_normals ? *model_normals : shoreline;
+    WorldRect region = reach;
+    double coarsest = model_grid.texel;
+    int widest = 0;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        RunEdit& r = runs[k];
+        const ShoreGrid& g = r.layer->grid;
+        coarsest = std::max(coarsest, g.texel);
+        TexelRange& o = r.own;
+        o = {g.resolution, g.resolution, -1, -1};
+        for (const MarchWindow& m : r.march) {
+            if (m.value.empty()) continue;
+            const TexelWindow& win = m.window;
+            o = {std::min(o.i0, win.i0 - 1), std::min(o.j0, win.j0 - 1), std::max(o.i1, win.i1),
+                 std::max(o.j1, win.j1)};
+            widest = std::max({widest, win.i1 - win.i0, win.j1 - win.j0});
+        }
+        if (o.empty()) continue;
+        o = grown(o, 0, g.resolution);
+        cover(r, o, model_field, g == model_grid, threads);
+        r.fields = rows_before_cap(waves, r, grown(o, 2, g.resolution), threads);
+        const TexelRange moved = cap_inputs_moved(waves, r, o, threads);
+        if (!moved.empty()) unite(region, edges(g, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
+    }
+    region.lo -= glm::dvec2(coarsest);
+    region.hi += glm::dvec2(coarsest);
     for (RunEdit& r : runs) {
         const ShoreGrid& g = r.layer->grid;
-        const int n = g.resolution;
-        r.rows = texels_in(n, g.texel, g.corner, region);
-        const TexelRange patch = grown(r.rows, 3, n);
-        r.depth_before.assign(patch, 1, 0.0f);
-        r.depth_after.assign(patch, 1, 0.0f);
-        r.normal.assign(patch, 1, glm::vec2(0.0f));
-        const bool on_model = g == model_grid;
-        each_texel(patch, threads, [&](int i, int j) {
-            *r.depth_before(i, j) = r.before.at(i, j);
-            *r.depth_after(i, j) = r.after.at(i, j);
-            *r.normal(i, j) = on_model ? glm::vec2(model_field.gradient_x[model_field.index(i, j)],
-                                                   model_field.gradient_z[model_field.index(i, j)])
-                                       : resampled_normal(model_field, r.centre(i, j));
-        });
-        rows_before_cap(waves, r, threads);
+        r.capped = texels_in(g.resolution, g.texel, g.corner, region);
+        TexelRange rows = r.own;
+        if (rows.empty())
+            rows = r.capped;
+        else if (!r.capped.empty())
+            rows = {std::min(rows.i0, r.capped.i0), std::min(rows.j0, r.capped.j0), std::max(rows.i1, r.capped.i1),
+                    std::max(rows.j1, r.capped.j1)};
+        if (!rows.empty() &&
+            !(rows.i0 == r.own.i0 && rows.j0 == r.own.j0 && rows.i1 == r.own.i1 && rows.j1 == r.own.j1)) {
+            cover(r, rows, model_field, g == model_grid, threads);
+            const Patch<float> known = std::move(r.fields);
+            r.fields = rows_before_cap(waves, r, grown(rows, 2, g.resolution), threads, &known);
+        }
+        write_before_cap(r, r.capped.empty() ? r.capped : grown(r.capped, 2, g.resolution));
     }
     std::vector<RunTilesView> before_cap;
     for (const RunEdit& r : runs) before_cap.push_back({r.layer->first, r.layer->count, &r.layer->grid, &r.before_cap});
 
-    // The runs capped, and carried onto land on the coarse grids.
+    // The cap over the model's grid where what it reads moved: for the shared rows and the
+    // runs on that grid.
+    const TexelRange shared_rows = texels_in(model_grid.resolution, model_grid.texel, model_grid.corner, region);
+    Patch<float> model_depth;
+    Patch<double> model_ratio;
+    model_depth.assign(shared_rows, 1, 0.0f);
+    model_ratio.assign(shared_rows, 1, 0.0);
+    each_texel(shared_rows, threads, [&](int i, int j) {
+        const float h = model_after.at(i, j);
+        *model_depth(i, j) = h;
+        if (h > 0.0f)
+            *model_ratio(i, j) = cap_ratio(waves, before_cap, model_grid, i, j, static_cast<double>(h), breaking_index);
+    });
+
+    // Each run's phase where it was re-marched; where the cap reads moved, its rows capped
+    // anew; and carried onto land on the coarse grids.
     std::vector<ShoreTiles> run_tiles;
     std::size_t slots = 0;
     for (RunEdit& r : runs) {
         const ShoreGrid& g = r.layer->grid;
         const std::size_t nw = r.layer->count;
         Patch<float> ratio;
-        ratio.assign(r.rows, 1, 1.0f);
-        each_texel(r.rows, threads, [&](int i, int j) {
+        ratio.assign(r.capped, 1, 1.0f);
+        each_texel(r.capped, threads, [&](int i, int j) {
             const double h = static_cast<double>(*r.depth_after(i, j));
-            if (h > 0.0) *ratio(i, j) = static_cast<float>(cap_ratio(waves, before_cap, g, i, j, h, breaking_index));
+            if (h <= 0.0) return;
+            *ratio(i, j) = static_cast<float>(
+                g == model_grid ? *model_ratio(i, j) : cap_ratio(waves, before_cap, g, i, j, h, breaking_index));
         });
         r.out = r.layer->tiles;
         r.out.write_texels(r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1, [&](float* t, int i, int j) {
             const float* f = r.fields(i, j);
             const double h = static_cast<double>(*r.depth_after(i, j));
-            const double capped = static_cast<double>(*ratio(i, j));
-            for (std::size_t w = 0; w < nw; ++w) {
-                t[w] = f[w];
-                t[nw + w] = capped_amplitude(f[nw + w], h, capped);
-                t[2 * nw + w] = f[2 * nw + w];
-                t[3 * nw + w] = f[3 * nw + w];
+            if (r.capped.contains(i, j)) {
+                const double capped = static_cast<double>(*ratio(i, j));
+                for (std::size_t w = 0; w < nw; ++w) {
+                    t[w] = f[w];
+                    t[nw + w] = capped_amplitude(f[nw + w], h, capped);
+                    t[2 * nw + w] = f[2 * nw + w];
+                    t[3 * nw + w] = f[3 * nw + w];
+                }
+            } else if (r.own.contains(i, j)) {
+                // What the cap reads stays within kCapReadTolerance here: the phase alone
+                // moves. On land a coarse run's values are carried again below.
+                for (std::size_t w = 0; w < nw; ++w) {
+                    t[w] = f[w];
+                    if (h <= 0.0) t[2 * nw + w] = t[3 * nw + w] = 0.0f;
+                }
             }
         });
         if (g.texel != model_grid.texel) carry_onto_land(waves, r, threads);
@@ -445,13 +576,14 @@ std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain&
 
     // The shared rows: the depth, and the breaking and steepness of the waves together.
     ShoreTiles shared = model.shared();
-    const TexelRange shared_rows = texels_in(model_grid.resolution, model_grid.texel, model_grid.corner, region);
+    Patch<float> shared_values;
+    shared_values.assign(shared_rows, kShoreSharedRows, 0.0f);
+    each_texel(shared_rows, threads, [&](int i, int j) {
+        shared_texel_rows(waves, before_cap, model_grid, i, j, *model_depth(i, j),
+                          model.texel_values(i, j).shore_distance(), *model_ratio(i, j), shared_values(i, j));
+    });
     shared.write_texels(shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
-                        [&](float* t, int i, int j) {
-                            const float distance = t[3];
-                            shared_texel_rows(waves, breaking_index, before_cap, model_grid, i, j,
-                                              model_after.at(i, j), distance, t);
-                        });
+                        [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); });
     for (std::size_t s = gpu::kShoreFirstStoredSlot; s < shared.slot_count(); ++s)
         slots += shared.slots[s] != model.shared().slots[s];
 

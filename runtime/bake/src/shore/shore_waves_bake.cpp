@@ -232,9 +232,9 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
-        const detail::WaveTexel v =
-            detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
-                               static_cast<double>(field.depth[k]), m.slowness[k], normal, m.any_deep && m.deep[k] != 0);
+        const detail::WaveTexel v = detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j),
+                                                       m.base, static_cast<double>(field.depth[k]), m.slowness[k],
+                                                       normal, m.any_deep && m.deep[k] != 0);
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
         t[2 * nw + w] = v.kx;
@@ -266,8 +266,9 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
     each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
-        detail::shared_texel_rows(waves, breaking_index, views, plan.grid, i, j, field.depth[k],
-                                  field.signed_distance[k], t);
+        const double h = static_cast<double>(field.depth[k]);
+        const double ratio = h > 0.0 ? detail::cap_ratio(waves, views, plan.grid, i, j, h, breaking_index) : 0.0;
+        detail::shared_texel_rows(waves, views, plan.grid, i, j, field.depth[k], field.signed_distance[k], ratio, t);
     });
 }
 

@@ -315,7 +315,8 @@ std::shared_ptr<const ShoreWaves> ShoreWaves::with_depths(int i0, int j0, int w,
                                                           std::span<const float> depths) const {
     ShoreTiles t = shared_;
     t.write_texels(i0, j0, i0 + w, j0 + h, [&](float* texel, int i, int j) {
-        texel[0] = depths[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i - i0)];
+        texel[0] =
+            depths[static_cast<std::size_t>(j - j0) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i - i0)];
     });
     return made(grid_, std::move(t), layers_, open_wavevectors_);
 }

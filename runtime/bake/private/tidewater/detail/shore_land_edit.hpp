@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/terrain.hpp"
@@ -22,11 +23,11 @@ struct LandEdit {
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level`) for `after`, when the two
-/// terrains are the same heightmap (size, centre, height range, cut objects) whose pixels
-/// changed only where the ground stays dry on both grids, a texel or more from water.
-/// Otherwise nullopt: the caller bakes in full.
-std::optional<LandEdit> rebake_land_edit(const Terrain& before, const Terrain& after, double water_level,
-                                         const std::shared_ptr<const ShoreField>& shoreline,
+/// terrains are the same heightmap (`change`: heightmap_change of the two) (size, centre, height range, cut objects)
+/// whose pixels changed only where the ground stays dry on both grids, a texel or more from water. Otherwise nullopt:
+/// the caller bakes in full.
+std::optional<LandEdit> rebake_land_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
+                                         double water_level, const std::shared_ptr<const ShoreField>& shoreline,
                                          const std::shared_ptr<const ShoreWaves>& model);
 
 }  // namespace tidewater::detail

@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 
+#include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/terrain.hpp"
@@ -31,13 +32,14 @@ struct WaterEdit {
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
-/// with `breaking_index`) for `after`, when the two terrains are the same heightmap whose
+/// with `breaking_index`) for `after`, when the two terrains are the same heightmap (`change`:
+/// heightmap_change of the two) whose
 /// pixels changed only where the water stays, no tile of the model turns from open sea to
 /// stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
 /// the caller bakes in full. Within the windows the values are a full bake's to the
 /// tolerance; outside them, the previous bake's.
-std::optional<WaterEdit> rebake_water_edit(const Terrain& before, const Terrain& after, double water_level,
-                                           std::span<const Wave> waves, double breaking_index,
+std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
+                                           double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline,
                                            const std::shared_ptr<const ShoreWaves>& model, unsigned threads);
 

@@ -26,6 +26,11 @@ struct WorldRect {
     glm::dvec2 lo{0.0}, hi{0.0};
 };
 
+/// Where an edited terrain's heights may differ from the one it was edited from: nullopt
+/// when they are not the same heightmap (anything may have changed); an empty optional
+/// inside when no pixel changed; else the world rect the changed pixels reach.
+using HeightmapChange = std::optional<std::optional<WorldRect>>;
+
 /// Where heights over `map` change when the pixels in `pixels` do: their bilinear support,
 /// reaching to infinity beyond an edge whose pixels changed (the edge value carries on
 /// and fades to the seabed there).
