@@ -4,7 +4,7 @@
 // `tidewater bake` does (bake_scene, then save_scene_bake into a folder). Prints one JSON
 // object: bake, save and load seconds (the load reads the index, then every tile is read
 // as a renderer's first upload does), a brush stroke's re-bake on the hills and one on
-// the seabed, the process's peak
+// the seabed (the median of three and the slowest), the process's peak
 // memory (after the save, before the stroke and the load), the folder's size and the
 // shore model's tiles. One world per process, so that the peak is this world's:
 //   tidewater_world_bake_benchmark SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]
@@ -23,6 +23,7 @@
 #include <numbers>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -236,7 +237,13 @@ int main(int argc, char** argv) {
     const Stroke land = re_bake_stroke(scene, *baked, static_cast<int>(0.6 * side), side / 2, 2.0);
     int wet_i = side / 2;
     while (wet_i < side - 30 && scene.terrain.height_at(pixel_xz(scene, wet_i, side / 2)) > -8.0) ++wet_i;
-    const Stroke water = re_bake_stroke(scene, *baked, wet_i, side / 2, -1.5);
+    // The seabed stroke three times over (each from the bake just made): its median and slowest.
+    Stroke water = re_bake_stroke(scene, *baked, wet_i, side / 2, -1.5);
+    std::vector<double> water_s{water.seconds};
+    for (int k = 0; k < 2 && water.error.empty(); ++k)
+        water_s.push_back(re_bake_stroke(scene, *baked, wet_i, side / 2, -1.5).seconds);
+    std::sort(water_s.begin(), water_s.end());
+    water.seconds = water_s[water_s.size() / 2];
     if (!land.error.empty() || !water.error.empty()) {
         std::fprintf(stderr, "%s%s\n", land.error.c_str(), water.error.c_str());
         fs::remove_all(dir);
@@ -276,12 +283,13 @@ int main(int argc, char** argv) {
     std::printf(
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
         "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"read_all_s\": %.2f, "
-        "\"land_edit_s\": %.3f, \"land_edit_local\": %s, \"water_edit_s\": %.3f, \"water_edit_local\": %s, "
+        "\"land_edit_s\": %.3f, \"land_edit_local\": %s, \"water_edit_s\": %.3f, \"water_edit_max_s\": %.3f, "
+        "\"water_edit_local\": %s, "
         "\"peak_rss_mb\": %.0f, "
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
         "\"gpu_shore_mb\": %.1f}\n",
         side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land.seconds,
-        land.local ? "true" : "false", water.seconds, water.local ? "true" : "false", peak,
+        land.local ? "true" : "false", water.seconds, water_s.back(), water.local ? "true" : "false", peak,
         static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(), model_mb, gpu_mb);
     return 0;
 }

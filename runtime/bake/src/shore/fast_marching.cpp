@@ -140,6 +140,10 @@ MarchWindow remarch(const MarchChange& c, int margin) {
         clamped({c.changed.i0 - margin, c.changed.j0 - margin, c.changed.i1 + margin, c.changed.j1 + margin});
     int step = std::max(margin, 1);
     MarchWindow out;
+    // The change's slowness and sources and the solution before, over the last window
+    // marched and its rings: a window only grows, so each texel's are asked once.
+    TexelWindow cached{0, 0, 0, 0};
+    std::vector<double> cached_slowness, cached_source, cached_before;
     for (;;) {
         ++out.solves;
         // The window and two rings round it (the second-order stencil's reach), the rings
@@ -151,18 +155,32 @@ MarchWindow remarch(const MarchChange& c, int margin) {
             return static_cast<std::size_t>(j - r.j0) * static_cast<std::size_t>(rx) +
                    static_cast<std::size_t>(i - r.i0);
         };
-        std::vector<double> slowness(count), value(count);
+        std::vector<double> slowness(count), source(count), before(count), value(count);
+        for (int j = r.j0; j < r.j1; ++j)
+            for (int i = r.i0; i < r.i1; ++i) {
+                const std::size_t k = local(i, j);
+                if (cached.contains(i, j)) {
+                    const std::size_t o =
+                        static_cast<std::size_t>(j - cached.j0) * static_cast<std::size_t>(cached.i1 - cached.i0) +
+                        static_cast<std::size_t>(i - cached.i0);
+                    slowness[k] = cached_slowness[o];
+                    source[k] = cached_source[o];
+                    before[k] = cached_before[o];
+                } else {
+                    slowness[k] = c.slowness(i, j);
+                    source[k] = c.source(i, j);
+                    before[k] = c.before(i, j);
+                }
+            }
         std::vector<unsigned char> frozen(count, kFree);
         for (int j = r.j0; j < r.j1; ++j)
             for (int i = r.i0; i < r.i1; ++i) {
                 const std::size_t k = local(i, j);
-                slowness[k] = c.slowness(i, j);
-                const double source = c.source(i, j);
                 if (w.contains(i, j)) {
-                    value[k] = source;
+                    value[k] = source[k];
                 } else {
-                    value[k] = c.before(i, j);
-                    frozen[k] = std::isfinite(source) ? kFrozenSource : kFrozenInTurn;
+                    value[k] = before[k];
+                    frozen[k] = std::isfinite(source[k]) ? kFrozenSource : kFrozenInTurn;
                 }
             }
         march(slowness, value, &frozen, rx, ry, c.h);
@@ -176,7 +194,7 @@ MarchWindow remarch(const MarchChange& c, int margin) {
                 const bool near[4] = {w.i0 > 0 && i < w.i0 + 2, w.i1 < n && i >= w.i1 - 2, w.j0 > 0 && j < w.j0 + 2,
                                       w.j1 < n && j >= w.j1 - 2};
                 if (!(near[0] || near[1] || near[2] || near[3])) continue;
-                const double now = value[local(i, j)], then = c.before(i, j);
+                const double now = value[local(i, j)], then = before[local(i, j)];
                 if ((std::isinf(now) && std::isinf(then)) || std::abs(now - then) <= c.tolerance) continue;
                 for (int side = 0; side < 4; ++side) grow[side] = grow[side] || near[side];
             }
@@ -192,6 +210,10 @@ MarchWindow remarch(const MarchChange& c, int margin) {
                               static_cast<std::size_t>(i - w.i0)] = value[local(i, j)];
             return out;
         }
+        cached = r;
+        cached_slowness = std::move(slowness);
+        cached_source = std::move(source);
+        cached_before = std::move(before);
         w = next;
         step *= 2;
     }

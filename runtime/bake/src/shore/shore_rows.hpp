@@ -81,7 +81,7 @@ inline void shared_texel_rows(std::span<const Wave> waves, std::span<const RunTi
     double fold = 0.0;
     each_run_wave(runs, grid, i, j, grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5),
                   [&](std::size_t w, double factor, double kx, double kz) {
-                      fold += waves[w].steepness * std::hypot(kx, kz) * waves[w].amplitude * factor * scale;
+                      fold += waves[w].steepness * std::sqrt(kx * kx + kz * kz) * waves[w].amplitude * factor * scale;
                   });
     if (fold > kMaxFold) t[2] = static_cast<float>(kMaxFold / fold);
 }

@@ -95,12 +95,15 @@ struct Patch {
 struct RunEdit {
     const ShoreWaveLayer* layer = nullptr;
     GridDepth before, after;
-    TexelRange edit;                         ///< texels whose depth may have changed
-    std::vector<char> any_deep;              ///< per wave: the grid has deep water for it (before and after alike)
-    std::vector<MarchWindow> march;          ///< per wave: its phase after, in a window
-    TexelRange own;                          ///< its windows and a texel round them: its phase baked again
-    TexelRange capped;                       ///< where what the cap reads moved: every row baked again
-    TexelRange rows;                         ///< both (their bounding range): the depths and rows made over it
+    TexelRange edit;                 ///< texels whose depth may have changed
+    std::vector<char> any_deep;      ///< per wave: the grid has deep water for it (before and after alike)
+    std::vector<MarchWindow> march;  ///< per wave: its phase after, in a window
+    TexelRange own;                  ///< its windows and a texel round them: its phase baked again
+    TexelRange capped;               ///< where what the cap reads moved: every row baked again
+    TexelRange rows;                 ///< both (their bounding range): the depths and rows made over it
+    /// On the model's grid, its shared tiles: where their breaking is 0 the cap left the
+    /// run's stored amplitudes as they were. Null on other grids.
+    const ShoreTiles* uncapped_before = nullptr;
     Patch<float> depth_before, depth_after;  ///< over rows and three texels round them
     Patch<glm::vec2> normal;                 ///< the shore normal the bake's grid holds, same patch
     Patch<float> fields;                     ///< the run's rows before the cap, over rows and two texels round them
@@ -198,8 +201,9 @@ void cover(RunEdit& r, const TexelRange& rows, const ShoreField& model_field, bo
     r.depth_after.assign(patch, 1, 0.0f);
     r.normal.assign(patch, 1, glm::vec2(0.0f));
     each_texel(patch, threads, [&](int i, int j) {
-        *r.depth_before(i, j) = r.before.at(i, j);
-        *r.depth_after(i, j) = r.after.at(i, j);
+        const float after = r.after.at(i, j);
+        *r.depth_after(i, j) = after;
+        *r.depth_before(i, j) = r.edit.contains(i, j) ? r.before.at(i, j) : after;  // the same heights elsewhere
         *r.normal(i, j) = on_model ? glm::vec2(model_field.gradient_x[model_field.index(i, j)],
                                                model_field.gradient_z[model_field.index(i, j)])
                                    : resampled_normal(model_field, r.centre(i, j));
@@ -249,6 +253,11 @@ Patch<float> rows_before_cap(std::span<const Wave> waves, const RunEdit& r, cons
     each_texel(range, threads, [&](int i, int j) {
         if (known && known->range.contains(i, j))
             std::copy_n((*known)(i, j), 4 * nw, fields(i, j));
+        else if (r.uncapped_before && !r.own.contains(i, j) && !r.edit.contains(i, j) &&
+                 r.uncapped_before->texel(i, j)[1] == 0.0f)
+            // Its phase and depth as before and nothing capped it: the stored rows are
+            // the ones before the cap.
+            std::copy_n(r.layer->tiles.texel(i, j), 4 * nw, fields(i, j));
         else
             texel_rows(
                 waves, r, i, j, [&](std::size_t w, int a, int b) { return *phase[w](a, b); }, fields(i, j));
@@ -266,9 +275,9 @@ TexelRange cap_inputs_moved(std::span<const Wave> waves, const RunEdit& r, const
     auto differs = [&](const float* a, const float* b) {
         for (std::size_t w = 0; w < nw; ++w) {
             const double k0 = waves[r.layer->first + w].k;
-            if (std::abs(a[nw + w] - b[nw + w]) > kCapReadTolerance ||
-                std::abs(a[2 * nw + w] - b[2 * nw + w]) > kCapReadTolerance * k0 ||
-                std::abs(a[3 * nw + w] - b[3 * nw + w]) > kCapReadTolerance * k0)
+            auto apart = [&](std::size_t row) { return static_cast<double>(std::abs(a[row] - b[row])); };
+            if (apart(nw + w) > kCapReadTolerance || apart(2 * nw + w) > kCapReadTolerance * k0 ||
+                apart(3 * nw + w) > kCapReadTolerance * k0)
                 return true;
         }
         return false;
@@ -394,6 +403,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     for (const ShoreWaveLayer& layer : model.layers()) {
         RunEdit r;
         r.layer = &layer;
+        if (layer.grid == model_grid) r.uncapped_before = &model.shared();
         std::tie(r.before, r.after) = depths(layer.grid);
         r.edit = edited(layer.grid);
         if (!r.edit.empty() && (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
@@ -525,8 +535,10 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     Patch<double> model_ratio;
     model_depth.assign(shared_rows, 1, 0.0f);
     model_ratio.assign(shared_rows, 1, 0.0);
+    const auto on_model =
+        std::find_if(runs.begin(), runs.end(), [&](const RunEdit& r) { return r.layer->grid == model_grid; });
     each_texel(shared_rows, threads, [&](int i, int j) {
-        const float h = model_after.at(i, j);
+        const float h = on_model != runs.end() ? *on_model->depth_after(i, j) : model_after.at(i, j);
         *model_depth(i, j) = h;
         if (h > 0.0f)
             *model_ratio(i, j) = cap_ratio(waves, before_cap, model_grid, i, j, static_cast<double>(h), breaking_index);
