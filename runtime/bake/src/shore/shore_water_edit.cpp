@@ -311,11 +311,12 @@ TexelRange cap_inputs_moved(std::span<const Wave> waves, const RunEdit& r, const
 }
 
 /// Writes `fields` over `f` into a copy of the run's tiles: what the cap reads.
-void write_before_cap(RunEdit& r, const TexelRange& f) {
+void write_before_cap(RunEdit& r, const TexelRange& f, unsigned threads) {
     const std::size_t nw = r.layer->count;
     r.before_cap = r.layer->tiles;
-    r.before_cap.write_texels(f.i0, f.j0, f.i1 + 1, f.j1 + 1,
-                              [&](float* t, int i, int j) { std::copy_n(r.fields(i, j), 4 * nw, t); });
+    r.before_cap.write_texels(
+        f.i0, f.j0, f.i1 + 1, f.j1 + 1, [&](float* t, int i, int j) { std::copy_n(r.fields(i, j), 4 * nw, t); },
+        threads);
 }
 
 /// A coarse run's waves carried two texels onto land round its rows, as the bake's
@@ -356,15 +357,18 @@ void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
                 c[4 * w + 3] = 1.0f;
             }
         });
-        r.out.write_texels(r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1, [&](float* t, int i, int j) {
-            const float* c = carried(i, j);
-            for (std::size_t w = 0; w < nw; ++w) {
-                if (c[4 * w + 3] == 0.0f) continue;
-                t[w] = c[4 * w];
-                t[2 * nw + w] = c[4 * w + 1];
-                t[3 * nw + w] = c[4 * w + 2];
-            }
-        });
+        r.out.write_texels(
+            r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1,
+            [&](float* t, int i, int j) {
+                const float* c = carried(i, j);
+                for (std::size_t w = 0; w < nw; ++w) {
+                    if (c[4 * w + 3] == 0.0f) continue;
+                    t[w] = c[4 * w];
+                    t[2 * nw + w] = c[4 * w + 1];
+                    t[3 * nw + w] = c[4 * w + 2];
+                }
+            },
+            threads);
     }
 }
 
@@ -523,7 +527,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             const Patch<float> known = std::move(r.fields);
             r.fields = rows_before_cap(waves, r, grown(rows, 2, g.resolution), threads, &known);
         }
-        write_before_cap(r, r.capped.empty() ? r.capped : grown(r.capped, 2, g.resolution));
+        write_before_cap(r, r.capped.empty() ? r.capped : grown(r.capped, 2, g.resolution), threads);
     }
     std::vector<RunTilesView> before_cap;
     for (const RunEdit& r : runs) before_cap.push_back({r.layer->first, r.layer->count, &r.layer->grid, &r.before_cap});
@@ -560,26 +564,29 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                 g == model_grid ? *model_ratio(i, j) : cap_ratio(waves, before_cap, g, i, j, h, breaking_index));
         });
         r.out = r.layer->tiles;
-        r.out.write_texels(r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1, [&](float* t, int i, int j) {
-            const float* f = r.fields(i, j);
-            const double h = static_cast<double>(*r.depth_after(i, j));
-            if (r.capped.contains(i, j)) {
-                const double capped = static_cast<double>(*ratio(i, j));
-                for (std::size_t w = 0; w < nw; ++w) {
-                    t[w] = f[w];
-                    t[nw + w] = capped_amplitude(f[nw + w], h, capped);
-                    t[2 * nw + w] = f[2 * nw + w];
-                    t[3 * nw + w] = f[3 * nw + w];
+        r.out.write_texels(
+            r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1,
+            [&](float* t, int i, int j) {
+                const float* f = r.fields(i, j);
+                const double h = static_cast<double>(*r.depth_after(i, j));
+                if (r.capped.contains(i, j)) {
+                    const double capped = static_cast<double>(*ratio(i, j));
+                    for (std::size_t w = 0; w < nw; ++w) {
+                        t[w] = f[w];
+                        t[nw + w] = capped_amplitude(f[nw + w], h, capped);
+                        t[2 * nw + w] = f[2 * nw + w];
+                        t[3 * nw + w] = f[3 * nw + w];
+                    }
+                } else if (r.own.contains(i, j)) {
+                    // What the cap reads stays within kCapReadTolerance here: the phase alone
+                    // moves. On land a coarse run's values are carried again below.
+                    for (std::size_t w = 0; w < nw; ++w) {
+                        t[w] = f[w];
+                        if (h <= 0.0) t[2 * nw + w] = t[3 * nw + w] = 0.0f;
+                    }
                 }
-            } else if (r.own.contains(i, j)) {
-                // What the cap reads stays within kCapReadTolerance here: the phase alone
-                // moves. On land a coarse run's values are carried again below.
-                for (std::size_t w = 0; w < nw; ++w) {
-                    t[w] = f[w];
-                    if (h <= 0.0) t[2 * nw + w] = t[3 * nw + w] = 0.0f;
-                }
-            }
-        });
+            },
+            threads);
         if (g.texel != model_grid.texel) carry_onto_land(waves, r, threads);
         for (std::size_t s = gpu::kShoreFirstStoredSlot; s < r.out.slot_count(); ++s)
             slots += r.out.slots[s] != r.layer->tiles.slots[s];
@@ -594,8 +601,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         shared_texel_rows(waves, before_cap, model_grid, i, j, *model_depth(i, j),
                           model.texel_values(i, j).shore_distance(), *model_ratio(i, j), shared_values(i, j));
     });
-    shared.write_texels(shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
-                        [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); });
+    shared.write_texels(
+        shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
+        [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); }, threads);
     for (std::size_t s = gpu::kShoreFirstStoredSlot; s < shared.slot_count(); ++s)
         slots += shared.slots[s] != model.shared().slots[s];
 

@@ -23,6 +23,7 @@
 
 #include "host_device.h"
 #include "tidewater/detail/lazy_shore_slots.hpp"
+#include "tidewater/detail/parallel.hpp"
 
 namespace tidewater {
 
@@ -158,29 +159,39 @@ struct ShoreTiles {
     }
     /// Calls visit(texel's floats, i, j) for every texel of a stored slot, aprons included,
     /// whose grid texel (i, j) lies in [i0, i1) x [j0, j1), each slot made writable first
-    /// (slot_for_writing); tiles of open sea and dry land are left as they are.
+    /// (slot_for_writing); tiles of open sea and dry land are left as they are. The tiles
+    /// are spread over `threads` workers (0: all), each slot written by one.
     template <typename Visit>
-    void write_texels(int i0, int j0, int i1, int j1, const Visit& visit) {
+    void write_texels(int i0, int j0, int i1, int j1, const Visit& visit, unsigned threads = 1) {
         i0 = std::max(i0, 0);
         j0 = std::max(j0, 0);
         i1 = std::min(i1, resolution);
         j1 = std::min(j1, resolution);
         if (i1 <= i0 || j1 <= j0) return;
         // A texel lies in its own tile's slot and in the aprons of the tiles before it.
-        for (int tj = std::max(0, (j0 - 1) / kTile); tj <= std::min(tiles_per_side - 1, (j1 - 1) / kTile); ++tj)
-            for (int ti = std::max(0, (i0 - 1) / kTile); ti <= std::min(tiles_per_side - 1, (i1 - 1) / kTile); ++ti) {
-                const std::size_t tile = static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) +
-                                         static_cast<std::size_t>(ti);
-                if (pages[tile] < gpu::kShoreFirstStoredSlot) continue;
-                float* slot = slot_for_writing(pages[tile]);
-                for (std::size_t s = 0; s < kSlotTexels; ++s) {
-                    const std::size_t g = grid_index(tile, s);
-                    const int i = static_cast<int>(g % static_cast<std::size_t>(resolution));
-                    const int j = static_cast<int>(g / static_cast<std::size_t>(resolution));
-                    if (i >= i0 && j >= j0 && i < i1 && j < j1) visit(slot + s * stride, i, j);
-                }
+        const int ti0 = std::max(0, (i0 - 1) / kTile), ti1 = std::min(tiles_per_side - 1, (i1 - 1) / kTile);
+        const int tj0 = std::max(0, (j0 - 1) / kTile), tj1 = std::min(tiles_per_side - 1, (j1 - 1) / kTile);
+        const std::size_t across = static_cast<std::size_t>(ti1 - ti0 + 1);
+        const std::size_t count = across * static_cast<std::size_t>(tj1 - tj0 + 1);
+        auto one_tile = [&](std::size_t k) {
+            const int ti = ti0 + static_cast<int>(k % across), tj = tj0 + static_cast<int>(k / across);
+            const std::size_t tile =
+                static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) + static_cast<std::size_t>(ti);
+            if (pages[tile] < gpu::kShoreFirstStoredSlot) return;
+            float* slot = slot_for_writing(pages[tile]);
+            for (std::size_t s = 0; s < kSlotTexels; ++s) {
+                const std::size_t g = grid_index(tile, s);
+                const int i = static_cast<int>(g % static_cast<std::size_t>(resolution));
+                const int j = static_cast<int>(g / static_cast<std::size_t>(resolution));
+                if (i >= i0 && j >= j0 && i < i1 && j < j1) visit(slot + s * stride, i, j);
             }
+        };
+        if (threads == 1)
+            for (std::size_t k = 0; k < count; ++k) one_tile(k);
+        else
+            detail::parallel_for_each(count, threads, one_tile);
     }
+
     /// Every slot's bytes on the CPU (the pages included).
     std::size_t bytes() const {
         return slots.size() * slot_floats() * sizeof(float) + pages.size() * sizeof(std::uint32_t);
