@@ -12,6 +12,7 @@
 #include "../shore_model_compare.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
@@ -111,6 +112,38 @@ TEST(ShoreLandEdit, AnEditThatReachesTheWaterIsBakedInFull) {
     auto near_full = bake_scene(near);
     ASSERT_TRUE(near_full.ok());
     expect_same_shore(*(*near_edit)->bake, *(*near_full)->bake);
+}
+
+// A river re-carved inland (the rill's middle bend moved 6 m): the shore is re-baked
+// only under the channels that changed, bit for bit a full bake of the edited scene.
+TEST(ShoreLandEdit, ARiverReCarvedInlandIsReBakedWhereItsChannelChanged) {
+    auto scene = default_scene();
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto first = bake_scene(*scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    Scene bend = *scene;
+    SceneRiver* rill = nullptr;
+    for (SceneRiver& r : bend.rivers)
+        if (r.name == "rill") rill = &r;
+    ASSERT_NE(rill, nullptr);
+    rill->path[1] += glm::dvec2(6.0, 0.0);
+    SceneBakeOptions options;
+    options.previous = *first;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto local = bake_scene(bend, options);
+    const double local_s = seconds_since(t0);
+    ASSERT_TRUE(local.ok()) << local.error().message;
+    const auto t1 = std::chrono::steady_clock::now();
+    auto full = bake_scene(bend);
+    const double full_s = seconds_since(t1);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    std::printf("river edit: %.3f s with the previous bake, %.3f s in full\n", local_s, full_s);
+    EXPECT_FALSE((*local)->bake->terrain.cuts() == (*first)->bake->terrain.cuts()) << "the channel is re-carved";
+    EXPECT_TRUE((*local)->bake->reused.ocean_shore_land_edit);
+    expect_same_shore(*(*local)->bake, *(*full)->bake);
+    // The shore model sees the new channel: its depths differ from the first bake's there.
+    EXPECT_NE((*local)->bake->ocean_shore->shared().floats(), (*first)->bake->ocean_shore->shared().floats());
+    std::printf("river edit: %zu of %zu rivers reused\n", (*local)->bake->reused.rivers, bend.rivers.size());
 }
 
 }  // namespace

@@ -51,7 +51,8 @@ struct SceneBake {
         bool ocean_shore = false;
         /// The ocean's shore model and distance field taken from the previous bake with
         /// only the ground's height re-baked under an edit of dry land (a heightmap's
-        /// pixels changed where no water is within a texel): the same as a full bake.
+        /// pixels changed, or a river's channel re-carved, where no water is within a
+        /// texel): the same as a full bake.
         bool ocean_shore_land_edit = false;
         /// The same, re-baked round an edit of the seabed (pixels changed where the water
         /// stays, on every grid): each wave marched again in a window round the edit and

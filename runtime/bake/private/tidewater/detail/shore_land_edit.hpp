@@ -22,10 +22,10 @@ struct LandEdit {
     int texels = 0;  ///< model texels whose depth was baked again
 };
 
-/// `shoreline` and `model` (non-null, baked over `before` at `water_level`) for `after`, when the two
-/// terrains are the same heightmap (`change`: heightmap_change of the two) (size, centre, height range, cut objects)
-/// whose pixels changed only where the ground stays dry on both grids, a texel or more from water. Otherwise nullopt:
-/// the caller bakes in full.
+/// `shoreline` and `model` (non-null, baked over `before` at `water_level`) for `after`,
+/// when the two terrains' heights differ (`change`: heightmap_change of the two: a
+/// heightmap's pixels, a river's channel) only where the ground stays dry on every grid, a
+/// texel or more from water. Otherwise nullopt: the caller bakes in full.
 std::optional<LandEdit> rebake_land_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
                                          double water_level, const std::shared_ptr<const ShoreField>& shoreline,
                                          const std::shared_ptr<const ShoreWaves>& model);

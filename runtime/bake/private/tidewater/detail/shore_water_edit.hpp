@@ -32,10 +32,9 @@ struct WaterEdit {
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
-/// with `breaking_index`) for `after`, when the two terrains are the same heightmap (`change`:
-/// heightmap_change of the two) whose
-/// pixels changed only where the water stays, no tile of the model turns from open sea to
-/// stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
+/// with `breaking_index`) for `after`, when the two terrains' heights differ (`change`:
+/// heightmap_change of the two) only where the water stays, no tile of the model turns
+/// from open sea to stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
 /// the caller bakes in full. Within the windows the values are a full bake's to the
 /// tolerance; outside them, the previous bake's.
 std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
