@@ -87,15 +87,19 @@ std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* 
     return same;
 }
 
-TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
-    const Scene scene = island_scene(island_pixels());
+/// A shoal 2 m high, 40 m round, 95 m off the shore in 4.75 m of water, re-baked where it
+/// reaches on the test island with its distance field at `distance_resolution` (0: the
+/// model's grid), against full bakes before and after.
+void check_seabed_stroke(int distance_resolution) {
+    Scene scene = island_scene(island_pixels());
+    scene.shore.distance_resolution = distance_resolution;
     auto first = bake_scene(scene);
     ASSERT_TRUE(first.ok()) << first.error().message;
     SceneBakeOptions options;
     options.previous = *first;
 
-    // A shoal 2 m high, 40 m round, 95 m off the shore in 4.75 m of water.
-    const Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    shoal.shore.distance_resolution = distance_resolution;
     const auto t0 = std::chrono::steady_clock::now();
     auto local = bake_scene(shoal, options);
     const double local_s = seconds_since(t0);
@@ -140,6 +144,16 @@ TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
     const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *(*local)->bake->shoreline;
     EXPECT_EQ(&old_line.signed_distance.values(), &new_line.signed_distance.values());
     EXPECT_TRUE(new_line.depth == (*full)->bake->shoreline->depth);
+}
+
+TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
+    check_seabed_stroke(0);
+}
+
+// The model's grid then holds the shoreline's normals resampled, which the edit reads
+// where its rows need them.
+TEST(ShoreWaterEdit, AStrokeOnTheSeabedUnderAFinerDistanceFieldIsReBakedWhereItReaches) {
+    check_seabed_stroke(512);
 }
 
 TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineIsBakedInFull) {

@@ -139,26 +139,26 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             progress.report("shore waves", begin, 1.0, 1.0);
             return {};
         }
+        // A local re-bake taken: its model and distance field, and which kind it was.
+        auto take = [&](auto& edit, bool SceneBake::Reused::*kind) {
+            bake.ocean_shore = std::move(edit->model);
+            bake.shoreline = std::move(edit->shoreline);
+            bake.distance_resolution = distance_resolution;
+            bake.reused.*kind = true;
+            progress.report("shore waves", begin, 1.0, 1.0);
+        };
         // An edit of dry land, away from the water: only the ground's height under it.
         const detail::HeightmapChange change = detail::heightmap_change(old.terrain, terrain);
         if (auto edit = detail::rebake_land_edit(change, old.terrain, terrain, scene.water_level(), old.shoreline,
                                                  old.ocean_shore)) {
-            bake.ocean_shore = std::move(edit->model);
-            bake.shoreline = std::move(edit->shoreline);
-            bake.distance_resolution = distance_resolution;
-            bake.reused.ocean_shore_land_edit = true;
-            progress.report("shore waves", begin, 1.0, 1.0);
+            take(edit, &SceneBake::Reused::ocean_shore_land_edit);
             return {};
         }
         // An edit of the seabed, under the water: the waves re-marched where it reaches.
         if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
                                                   scene.ocean.waves().waves(), scene.shore.breaking_index,
                                                   old.shoreline, old.ocean_shore, options.threads)) {
-            bake.ocean_shore = std::move(edit->model);
-            bake.shoreline = std::move(edit->shoreline);
-            bake.distance_resolution = distance_resolution;
-            bake.reused.ocean_shore_water_edit = true;
-            progress.report("shore waves", begin, 1.0, 1.0);
+            take(edit, &SceneBake::Reused::ocean_shore_water_edit);
             return {};
         }
     }

@@ -40,7 +40,7 @@ std::optional<LandEdit> rebake_land_edit(const HeightmapChange& change, const Te
                                          double water_level, const std::shared_ptr<const ShoreField>& shoreline_ptr,
                                          const std::shared_ptr<const ShoreWaves>& model_ptr) {
     if (!change) return std::nullopt;
-    if (!*change) return LandEdit{shoreline_ptr, model_ptr, 0};  // the same pixels in another image
+    if (!*change) return LandEdit{shoreline_ptr, model_ptr};  // the same pixels in another image
     const WorldRect& rect = **change;
     const ShoreField& shoreline = *shoreline_ptr;
     const ShoreWaves& model = *model_ptr;
@@ -74,12 +74,11 @@ std::optional<LandEdit> rebake_land_edit(const HeightmapChange& change, const Te
 
     const int nm = model.resolution();
     const TexelRange m = texels_in(nm, model.texel(), model.corner(), rect);
-    if (m.empty()) return LandEdit{std::move(field), model_ptr, 0};
+    if (m.empty()) return LandEdit{std::move(field), model_ptr};
     const auto depths = dry_depths(m, nm, model.texel(), model.corner(), after, water_level,
                                    [&](int i, int j) { return model.texel_values(i, j).depth(); });
     if (!depths) return std::nullopt;
-    return LandEdit{std::move(field), model.with_depths(m.i0, m.j0, m.width(), m.height(), *depths),
-                    m.width() * m.height()};
+    return LandEdit{std::move(field), model.with_depths(m.i0, m.j0, m.width(), m.height(), *depths)};
 }
 
 }  // namespace tidewater::detail

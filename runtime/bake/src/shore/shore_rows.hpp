@@ -172,13 +172,17 @@ std::optional<LandTexel> carried_onto_land(const Wave& wave, const ShoreTiles& t
                      static_cast<float>(kvec.y / count)};
 }
 
+/// A distance gradient sampled between texels, as a grid of the bake holds it: normalized,
+/// 0 where it vanishes.
+inline glm::vec2 unit_normal(glm::dvec2 grad) {
+    const double len = glm::length(grad);
+    return glm::vec2(len > 1e-6 ? grad / len : glm::dvec2(0.0));
+}
+
 /// The shore normal a grid other than the shoreline's holds at world xz `p`: the
 /// shoreline's distance gradient sampled there and normalized (0 where it vanishes).
 inline glm::vec2 resampled_normal(const ShoreField& shoreline, glm::dvec2 p) {
-    glm::dvec2 grad{shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)};
-    const double len = glm::length(grad);
-    grad = len > 1e-6 ? grad / len : glm::dvec2(0.0);
-    return glm::vec2(grad);
+    return unit_normal({shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)});
 }
 
 /// What decides which tiles of a layer are left out as open sea: its longest wave

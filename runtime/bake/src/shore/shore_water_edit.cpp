@@ -12,6 +12,7 @@
 #include "shore/fast_marching.hpp"
 #include "shore/shore_edit_region.hpp"
 #include "shore/shore_rows.hpp"
+#include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/parallel.hpp"
 #include "tidewater/dispersion.hpp"
 
@@ -192,21 +193,51 @@ void each_texel(const TexelRange& r, unsigned threads, const Body& body) {
     });
 }
 
+/// The shore normals the bake's grids hold, read where an edit needs them: the model's
+/// grid holds the shoreline's own where the two grids are one, else the shoreline's
+/// resampled (resampled_grid); a coarse run's grid resamples the model's grid. Nothing is
+/// made over a whole grid.
+struct GridNormals {
+    const ShoreField& shoreline;
+    ShoreGrid model;
+
+    glm::vec2 on_model(int i, int j) const {
+        if (model == shoreline_grid()) {
+            const std::size_t k = shoreline.index(i, j);
+            return {shoreline.gradient_x[k], shoreline.gradient_z[k]};
+        }
+        return resampled_normal(shoreline, model.corner + model.texel * glm::dvec2(i + 0.5, j + 0.5));
+    }
+    /// Texel (i, j) of grid g (the model's or a coarse run's), whose centre is `centre`.
+    glm::vec2 at(const ShoreGrid& g, int i, int j, glm::dvec2 centre) const {
+        if (g == model) return on_model(i, j);
+        // resampled_normal over the model's grid, its four taps made here.
+        const GridTaps t = grid_taps(model.corner, model.texel, model.resolution, centre);
+        const auto tap = [&](std::size_t k) {
+            const std::size_t n = static_cast<std::size_t>(model.resolution);
+            return glm::dvec2(on_model(static_cast<int>(k % n), static_cast<int>(k / n)));
+        };
+        const glm::dvec2 g00 = tap(t.k00), g10 = tap(t.k10), g01 = tap(t.k01), g11 = tap(t.k11);
+        return unit_normal({t.w00 * g00.x + t.w10 * g10.x + t.w01 * g01.x + t.w11 * g11.x,
+                            t.w00 * g00.y + t.w10 * g10.y + t.w01 * g01.y + t.w11 * g11.y});
+    }
+    ShoreGrid shoreline_grid() const { return {shoreline.resolution, shoreline.texel, shoreline.corner}; }
+};
+
 /// The run's depths and normals over `rows` and three texels round them (what the rows,
 /// their derivatives and the cap's taps read).
-void cover(RunEdit& r, const TexelRange& rows, const ShoreField& model_field, bool on_model, unsigned threads) {
+void cover(RunEdit& r, const TexelRange& rows, const GridNormals& normals, unsigned threads) {
     r.rows = rows;
     const TexelRange patch = grown(rows, 3, r.n());
     r.depth_before.assign(patch, 1, 0.0f);
     r.depth_after.assign(patch, 1, 0.0f);
     r.normal.assign(patch, 1, glm::vec2(0.0f));
+    const ShoreGrid& g = r.layer->grid;
     each_texel(patch, threads, [&](int i, int j) {
         const float after = r.after.at(i, j);
         *r.depth_after(i, j) = after;
         *r.depth_before(i, j) = r.edit.contains(i, j) ? r.before.at(i, j) : after;  // the same heights elsewhere
-        *r.normal(i, j) = on_model ? glm::vec2(model_field.gradient_x[model_field.index(i, j)],
-                                               model_field.gradient_z[model_field.index(i, j)])
-                                   : resampled_normal(model_field, r.centre(i, j));
+        *r.normal(i, j) = normals.at(g, i, j, r.centre(i, j));
     });
 }
 
@@ -379,7 +410,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                                            const std::shared_ptr<const ShoreField>& shoreline_ptr,
                                            const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads) {
     if (!change) return std::nullopt;
-    if (!*change) return WaterEdit{shoreline_ptr, model_ptr, 0, 0};  // the same pixels in another image
+    if (!*change) return WaterEdit{shoreline_ptr, model_ptr};  // the same pixels in another image
     const WorldRect& reach = **change;
     const ShoreField& shoreline = *shoreline_ptr;
     const ShoreWaves& model = *model_ptr;
@@ -426,7 +457,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     }
     if (distance_edit.empty() && model_edit.empty() &&
         std::all_of(runs.begin(), runs.end(), [](const RunEdit& r) { return r.edit.empty(); }))
-        return WaterEdit{shoreline_ptr, model_ptr, 0, 0};  // the change lies between texel centres
+        return WaterEdit{shoreline_ptr, model_ptr};  // the change lies between texel centres
 
     // Each wave marched again round the edit, in a window.
     struct Job {
@@ -468,28 +499,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     // What each run bakes again: its windows and a texel round them (the wavevector's
     // differences). What the cap reads moves in part of them: round that part (the cap's
     // taps, a texel of the coarsest grid) and the edit every grid's rows are baked again.
-    std::optional<ShoreField> model_normals;  // the model's grid's normals where it is not the shoreline's
-    if (!(model_grid == distance_grid)) {
-        ShoreField f;
-        f.corner = model_grid.corner;
-        f.texel = model_grid.texel;
-        f.resolution = model_grid.resolution;
-        const std::size_t count = static_cast<std::size_t>(f.resolution) * static_cast<std::size_t>(f.resolution);
-        std::vector<float>& gx = f.gradient_x.write();
-        std::vector<float>& gz = f.gradient_z.write();
-        gx.resize(count);
-        gz.resize(count);
-        each_texel({0, 0, f.resolution - 1, f.resolution - 1}, threads, [&](int i, int j) {
-            const glm::vec2 v = resampled_normal(shoreline, f.texel_center(i, j));
-            gx[f.index(i, j)] = v.x;
-            gz[f.index(i, j)] = v.y;
-        });
-        model_normals = std::move(f);
-    }
-    const ShoreField& model_field = model_normals ? *model_normals : shoreline;
+    const GridNormals normals{shoreline, model_grid};
     WorldRect region = reach;
     double coarsest = model_grid.texel;
-    int widest = 0;
     for (std::size_t k = 0; k < runs.size(); ++k) {
         RunEdit& r = runs[k];
         const ShoreGrid& g = r.layer->grid;
@@ -501,11 +513,10 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             const TexelWindow& win = m.window;
             o = {std::min(o.i0, win.i0 - 1), std::min(o.j0, win.j0 - 1), std::max(o.i1, win.i1),
                  std::max(o.j1, win.j1)};
-            widest = std::max({widest, win.i1 - win.i0, win.j1 - win.j0});
         }
         if (o.empty()) continue;
         o = grown(o, 0, g.resolution);
-        cover(r, o, model_field, g == model_grid, threads);
+        cover(r, o, normals, threads);
         r.fields = rows_before_cap(waves, r, grown(o, 2, g.resolution), threads);
         const TexelRange moved = cap_inputs_moved(waves, r, o, threads);
         if (!moved.empty()) unite(region, edges(g, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
@@ -523,7 +534,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                     std::max(rows.j1, r.capped.j1)};
         if (!rows.empty() &&
             !(rows.i0 == r.own.i0 && rows.j0 == r.own.j0 && rows.i1 == r.own.i1 && rows.j1 == r.own.j1)) {
-            cover(r, rows, model_field, g == model_grid, threads);
+            cover(r, rows, normals, threads);
             const Patch<float> known = std::move(r.fields);
             r.fields = rows_before_cap(waves, r, grown(rows, 2, g.resolution), threads, &known);
         }
@@ -551,7 +562,6 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     // Each run's phase where it was re-marched; where the cap reads moved, its rows capped
     // anew; and carried onto land on the coarse grids.
     std::vector<ShoreTiles> run_tiles;
-    std::size_t slots = 0;
     for (RunEdit& r : runs) {
         const ShoreGrid& g = r.layer->grid;
         const std::size_t nw = r.layer->count;
@@ -588,8 +598,6 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             },
             threads);
         if (g.texel != model_grid.texel) carry_onto_land(waves, r, threads);
-        for (std::size_t s = gpu::kShoreFirstStoredSlot; s < r.out.slot_count(); ++s)
-            slots += r.out.slots[s] != r.layer->tiles.slots[s];
         run_tiles.push_back(std::move(r.out));
     }
 
@@ -604,8 +612,6 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     shared.write_texels(
         shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
         [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); }, threads);
-    for (std::size_t s = gpu::kShoreFirstStoredSlot; s < shared.slot_count(); ++s)
-        slots += shared.slots[s] != model.shared().slots[s];
 
     // The distance field: the same distances, the new depths under the edit.
     auto field = std::make_shared<ShoreField>(shoreline);
@@ -614,7 +620,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         const GridDepth a{&after, water_level, distance_grid};
         each_texel(distance_edit, threads, [&](int i, int j) { depth[field->index(i, j)] = a.at(i, j); });
     }
-    return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles)), slots, widest};
+    return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles))};
 }
 
 }  // namespace tidewater::detail

@@ -19,7 +19,6 @@ namespace tidewater::detail {
 struct LandEdit {
     std::shared_ptr<const ShoreField> shoreline;
     std::shared_ptr<const ShoreWaves> model;
-    int texels = 0;  ///< model texels whose depth was baked again
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level`) for `after`,

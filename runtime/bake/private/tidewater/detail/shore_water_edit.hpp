@@ -27,8 +27,6 @@ namespace tidewater::detail {
 struct WaterEdit {
     std::shared_ptr<const ShoreField> shoreline;
     std::shared_ptr<const ShoreWaves> model;
-    std::size_t slots = 0;  ///< stored slots written again, over every layer
-    int widest_window = 0;  ///< texels a side of the widest window a wave was re-marched in
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
