@@ -22,14 +22,15 @@ constexpr int kN = 128;
 struct Beach {
     TexelWindow bump{0, 0, 0, 0};
     double gain = 1.0;
-    double slowness(int i, int j) const {
-        if (i >= 112) return 0.0;
+    float slowness(int i, int j) const {
+        if (i >= 112) return 0.0f;
         const double s = 0.3 + 0.7 * i / 112.0 + 0.05 * std::sin(0.2 * j);
-        return bump.contains(i, j) ? s * gain : s;
+        return static_cast<float>(bump.contains(i, j) ? s * gain : s);
     }
     double source(int i, int j) const { return i < 16 ? 0.3 * i + 0.02 * j : kUnreached; }
     std::vector<double> solved() const {
-        std::vector<double> s(kN * kN), v(kN * kN);
+        std::vector<float> s(kN * kN);
+        std::vector<double> v(kN * kN);
         for (int j = 0; j < kN; ++j)
             for (int i = 0; i < kN; ++i) {
                 s[j * kN + i] = slowness(i, j);

@@ -45,11 +45,11 @@ struct WaveMarch {
     double texel;
     bool any_deep = false;
     int n = 0;
-    double slowness(double depth) const { return depth > 0.0 ? wavenumber_at_depth(wave.omega, depth) : 0.0; }
+    float slowness(double depth) const { return detail::marched_wavenumber(wave.omega, depth); }
     double source(int i, int j, double depth) const {
-        const double s = slowness(depth);
-        if (s <= 0.0) return detail::kUnreached;
-        const bool deep = s * depth >= detail::kDeepKh;
+        const float s = slowness(depth);
+        if (s <= 0.0f) return detail::kUnreached;
+        const bool deep = detail::marched_deep(s, depth);
         return detail::phase_source(any_deep, deep, i, j, n, wave.dir_x, wave.dir_z)
                    ? wave.k * texel * (wave.dir_x * (i + 0.5) + wave.dir_z * (j + 0.5))
                    : detail::kUnreached;
@@ -95,8 +95,9 @@ int main(int argc, char** argv) {
         };
         for (const std::size_t w : {std::size_t{0}, waves.size() / 2, waves.size() - 1}) {
             WaveMarch m{waves[w], grid.texel, false, n};
-            for (const double d : grid.depth) m.any_deep = m.any_deep || m.slowness(d) * d >= detail::kDeepKh;
-            std::vector<double> slowness(grid.depth.size()), before(grid.depth.size());
+            for (const double d : grid.depth) m.any_deep = m.any_deep || detail::marched_deep(m.slowness(d), d);
+            std::vector<float> slowness(grid.depth.size());
+            std::vector<double> before(grid.depth.size());
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i) {
                     const std::size_t k = index(i, j, n);

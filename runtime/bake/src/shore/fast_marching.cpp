@@ -72,7 +72,7 @@ enum Frozen : unsigned char { kFree, kFrozenSource, kFrozenInTurn };
 
 /// The march over an nx x ny grid. Texels with a finite value are known from the start,
 /// but for those `frozen` (when given) in turn; frozen texels keep their value.
-void march(const std::vector<double>& slowness, std::vector<double>& value, const std::vector<unsigned char>* frozen,
+void march(const std::vector<float>& slowness, std::vector<double>& value, const std::vector<unsigned char>* frozen,
            int nx, int ny, double h) {
     enum : unsigned char { kFar, kTrial, kKnown };
     const std::size_t count = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
@@ -103,8 +103,8 @@ void march(const std::vector<double>& slowness, std::vector<double>& value, cons
             const int a = i + di[d], b = j + dj[d];
             if (a < 0 || b < 0 || a >= nx || b >= ny) continue;
             const std::size_t k = index(a, b);
-            if (state[k] == kKnown || slowness[k] <= 0.0 || frozen_at(k) != kFree) continue;
-            const double t = upwind_update(a, b, slowness[k], h, known_at);
+            if (state[k] == kKnown || slowness[k] <= 0.0f || frozen_at(k) != kFree) continue;
+            const double t = upwind_update(a, b, static_cast<double>(slowness[k]), h, known_at);
             if (t < value[k]) {
                 value[k] = t;
                 state[k] = kTrial;
@@ -127,7 +127,7 @@ void march(const std::vector<double>& slowness, std::vector<double>& value, cons
 
 }  // namespace
 
-void fast_march(const std::vector<double>& slowness, std::vector<double>& value, int n, double h) {
+void fast_march(const std::vector<float>& slowness, std::vector<double>& value, int n, double h) {
     march(slowness, value, nullptr, n, n, h);
 }
 
@@ -143,7 +143,8 @@ MarchWindow remarch(const MarchChange& c, int margin) {
     // The change's slowness and sources and the solution before, over the last window
     // marched and its rings: a window only grows, so each texel's are asked once.
     TexelWindow cached{0, 0, 0, 0};
-    std::vector<double> cached_slowness, cached_source, cached_before;
+    std::vector<float> cached_slowness;
+    std::vector<double> cached_source, cached_before;
     for (;;) {
         ++out.solves;
         // The window and two rings round it (the second-order stencil's reach), the rings
@@ -155,7 +156,8 @@ MarchWindow remarch(const MarchChange& c, int margin) {
             return static_cast<std::size_t>(j - r.j0) * static_cast<std::size_t>(rx) +
                    static_cast<std::size_t>(i - r.i0);
         };
-        std::vector<double> slowness(count), source(count), before(count), value(count);
+        std::vector<float> slowness(count);
+        std::vector<double> source(count), before(count), value(count);
         for (int j = r.j0; j < r.j1; ++j)
             for (int i = r.i0; i < r.i1; ++i) {
                 const std::size_t k = local(i, j);

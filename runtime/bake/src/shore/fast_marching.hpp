@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "tidewater/dispersion.hpp"
+
 namespace tidewater::detail {
 
 inline constexpr double kUnreached = std::numeric_limits<double>::infinity();
@@ -14,6 +16,17 @@ inline constexpr double kUnreached = std::numeric_limits<double>::infinity();
 /// A wave's phase is marched from deep water (k h >= kDeepKh, where tanh(k h) > 0.996),
 /// where the open-ocean phase holds.
 inline constexpr double kDeepKh = 3.14159265358979323846;
+
+/// A wave's local wavenumber k(h) (rad/m; 0 on land, h <= 0) at still-water depth h, as
+/// the marches and every field baked from them read it: in float, the precision of the
+/// depths it comes from, so that a march's slowness grid takes half a double grid's memory.
+inline float marched_wavenumber(double omega, double h) {
+    return h > 0.0 ? static_cast<float>(wavenumber_at_depth(omega, h)) : 0.0f;
+}
+/// Whether the water is deep for the wave there (k h >= kDeepKh), `k` its marched wavenumber.
+inline bool marched_deep(float k, double h) {
+    return h > 0.0 && static_cast<double>(k) * h >= kDeepKh;
+}
 
 /// Whether texel (i, j) of an n x n grid is a source of a wave's marched phase (its
 /// open-ocean phase there): deep water (`deep`) where the grid has any (`any_deep`), else
@@ -27,7 +40,7 @@ inline bool phase_source(bool any_deep, bool deep, int i, int j, int n, double d
 
 /// `slowness` per texel (<= 0 marks a blocked texel); `value` holds the known sources
 /// (finite) and kUnreached elsewhere, and receives the arrival values; `h` is the texel size.
-void fast_march(const std::vector<double>& slowness, std::vector<double>& value, int n, double h);
+void fast_march(const std::vector<float>& slowness, std::vector<double>& value, int n, double h);
 
 /// Texels [i0, i1) x [j0, j1) of a grid.
 struct TexelWindow {
@@ -39,7 +52,7 @@ struct TexelWindow {
 struct MarchChange {
     int n = 0;
     double h = 0.0;                            ///< texel size
-    std::function<double(int, int)> slowness;  ///< after the change (<= 0: blocked)
+    std::function<float(int, int)> slowness;   ///< after the change (<= 0: blocked)
     std::function<double(int, int)> source;    ///< after: a source's value, else kUnreached
     std::function<double(int, int)> before;    ///< the solution before (kUnreached: unreached)
     TexelWindow changed;                       ///< where slowness or sources changed

@@ -69,7 +69,7 @@ bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSea
 }
 
 bool deep_water(double omega, double h) {
-    return h > 0.0 && wavenumber_at_depth(omega, h) * h >= kDeepKh;
+    return marched_deep(marched_wavenumber(omega, h), h);
 }
 
 /// Values over a range of texels, row-major.
@@ -250,11 +250,11 @@ void texel_rows(std::span<const Wave> waves, const RunEdit& r, int i, int j, con
     const glm::dvec2 normal{*r.normal(i, j)};
     for (std::size_t w = 0; w < nw; ++w) {
         const Wave& wave = waves[r.layer->first + w];
-        const double kl = h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
-        const bool source = r.any_deep[w] && kl * h >= kDeepKh;
+        const float kl = marched_wavenumber(wave.omega, h);
+        const bool source = r.any_deep[w] && marched_deep(kl, h);
         const WaveTexel v = wave_texel(
             wave, [&](int a, int b) { return phase(w, a, b); }, i, j, r.n(), r.layer->grid.texel, r.centre(i, j),
-            r.base(wave), h, kl, normal, source);
+            r.base(wave), h, static_cast<double>(kl), normal, source);
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
         t[2 * nw + w] = v.kx;
@@ -481,7 +481,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         c.h = r.layer->grid.texel;
         c.slowness = [&](int i, int j) {
             const double h = static_cast<double>(r.after.at(i, j));
-            return h > 0.0 ? wavenumber_at_depth(wave.omega, h) : 0.0;
+            return marched_wavenumber(wave.omega, h);
         };
         c.source = [&](int i, int j) {
             const double h = static_cast<double>(r.after.at(i, j));

@@ -121,8 +121,8 @@ Result<std::shared_ptr<const ShoreField>> model_grid(const Terrain& terrain, dou
 /// enters through, on a domain with none), offset by `base` (returned), and its local
 /// wavenumber k(h) per texel (0 on land) in `slowness`. Unreached texels stay infinite.
 struct MarchedPhase {
-    std::vector<double> slowness, phase;
-    std::vector<unsigned char> deep;
+    std::vector<float> slowness;  // the marched wavenumber per texel
+    std::vector<double> phase;
     bool any_deep = false;
     double base = 0.0;
 };
@@ -132,21 +132,19 @@ MarchedPhase march_phase(const Wave& wave, const ShoreField& field) {
     const double k0 = wave.k;
     const glm::dvec2 dir{wave.dir_x, wave.dir_z};
     MarchedPhase m;
-    m.slowness.assign(count, 0.0);
+    m.slowness.assign(count, 0.0f);
     m.phase.assign(count, detail::kUnreached);
-    m.deep.assign(count, 0);
     for (std::size_t k = 0; k < count; ++k) {
         const double h = static_cast<double>(field.depth[k]);
-        if (h <= 0.0) continue;  // land blocks the waves
-        m.slowness[k] = wavenumber_at_depth(wave.omega, h);
-        m.deep[k] = m.slowness[k] * h >= kDeepKh;
-        m.any_deep = m.any_deep || m.deep[k];
+        m.slowness[k] = detail::marched_wavenumber(wave.omega, h);  // 0 on land, which blocks the waves
+        m.any_deep = m.any_deep || detail::marched_deep(m.slowness[k], h);
     }
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
             const std::size_t k = field.index(i, j);
-            if (m.slowness[k] <= 0.0) continue;
-            if (detail::phase_source(m.any_deep, m.deep[k] != 0, i, j, n, dir.x, dir.y))
+            if (m.slowness[k] <= 0.0f) continue;
+            const bool deep = detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k]));
+            if (detail::phase_source(m.any_deep, deep, i, j, n, dir.x, dir.y))
                 m.phase[k] = k0 * glm::dot(dir, field.texel_center(i, j));
         }
     }
@@ -233,8 +231,9 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
         const detail::WaveTexel v = detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j),
-                                                       m.base, static_cast<double>(field.depth[k]), m.slowness[k],
-                                                       normal, m.any_deep && m.deep[k] != 0);
+                                                       m.base, static_cast<double>(field.depth[k]),
+                                                       static_cast<double>(m.slowness[k]), normal,
+                                                       m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
         t[2 * nw + w] = v.kx;
