@@ -51,12 +51,12 @@ struct TexelWindow {
 /// A first-arrival solution over an n x n grid, before and after its slowness changed.
 struct MarchChange {
     int n = 0;
-    double h = 0.0;                            ///< texel size
-    std::function<float(int, int)> slowness;   ///< after the change (<= 0: blocked)
-    std::function<double(int, int)> source;    ///< after: a source's value, else kUnreached
-    std::function<double(int, int)> before;    ///< the solution before (kUnreached: unreached)
-    TexelWindow changed;                       ///< where slowness or sources changed
-    double tolerance = 1e-3;                   ///< on the values, in their units
+    double h = 0.0;                           ///< texel size
+    std::function<float(int, int)> slowness;  ///< after the change (<= 0: blocked)
+    std::function<double(int, int)> source;   ///< after: a source's value, else kUnreached
+    std::function<double(int, int)> before;   ///< the solution before (kUnreached: unreached)
+    TexelWindow changed;                      ///< where slowness or sources changed
+    double tolerance = 1e-3;                  ///< on the values, in their units
 };
 
 /// The solution after the change, re-solved in a window round it.

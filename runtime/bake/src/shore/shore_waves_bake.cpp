@@ -230,10 +230,10 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
-        const detail::WaveTexel v = detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j),
-                                                       m.base, static_cast<double>(field.depth[k]),
-                                                       static_cast<double>(m.slowness[k]), normal,
-                                                       m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
+        const detail::WaveTexel v =
+            detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
+                               static_cast<double>(field.depth[k]), static_cast<double>(m.slowness[k]), normal,
+                               m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
         t[2 * nw + w] = v.kx;
