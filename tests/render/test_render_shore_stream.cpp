@@ -1,9 +1,14 @@
 // Over the memory budget the shore fields are drawn from a coarse level, and the
 // full-resolution tiles nearest the camera stream in as frames are recorded: the picture
 // converges on the one drawn with the whole model resident, without a validation message.
+#include <unistd.h>
+
 #include <cstdio>
+#include <filesystem>
+#include <string>
 
 #include "render_fixture.hpp"
+#include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater {
 namespace {
@@ -75,6 +80,73 @@ TEST_F(RenderTest, ShoreTilesNearTheCameraStreamInOverFrames) {
         EXPECT_GT(coarse_diff, 0.0);
         EXPECT_LT(streamed_diff, 0.75 * coarse_diff) << "the tiles near the camera are drawn at full resolution";
     }
+}
+
+/// Slots the model's saved-bake readers have read and keep in host memory.
+std::size_t kept_slots(const ShoreWaves& model) {
+    std::size_t kept = model.shared().lazy ? model.shared().lazy->read_count() : 0;
+    for (const ShoreWaveLayer& l : model.layers()) kept += l.tiles.lazy ? l.tiles.lazy->read_count() : 0;
+    return kept;
+}
+
+// Over the budget a saved bake is not read whole: the coarse level reads each tile once
+// without keeping it, and the tiles near the camera stream from the bake folder on the
+// renderer's reader thread, drawn a frame or more after they are asked for and kept in
+// host memory by nothing. The picture settles on the one streamed from the bake in memory.
+TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
+    namespace fs = std::filesystem;
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_stream_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    ASSERT_TRUE(save_scene_bake(dir, *scene).ok());
+    auto named = default_scene();
+    ASSERT_TRUE(named.ok());
+    named->shore.bake_folder = dir;
+    auto loaded = bake_scene(*named);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    const ShoreWaves& model = *(*loaded)->bake->ocean_shore;
+    ASSERT_NE(model.shared().lazy, nullptr) << "a saved bake's tiles are read on demand";
+
+    render::FrameInfo frame = test::scene_camera_frame(*scene, 3.0);
+    frame.view = render::DebugView::shore;
+    constexpr std::uint64_t kBudget = 16ull << 20, kPerFrame = 512ull << 10;
+    const StreamedFrames in_memory = render_streaming(context(), *scene, frame, kBudget, kPerFrame, 8);
+    const StreamedFrames coarse = render_streaming(context(), **loaded, frame, kBudget, 0, 1);
+    EXPECT_EQ(kept_slots(model), 0u) << "the coarse level keeps no tile it read";
+
+    auto renderer = test::renderer_within_budget(context(), **loaded, kBudget, kPerFrame);
+    ASSERT_NE(renderer, nullptr);
+    auto target = render::OffscreenTarget::create(context(), 320, 180);
+    ASSERT_TRUE(target.ok());
+    render::RgbaImage image;
+    render::RendererStats stats;
+    int frames = 0, frames_reading = 0;
+    for (; frames < 40; ++frames) {
+        frame.frame_index = static_cast<std::uint64_t>(frames);
+        auto img = (*target)->render(*renderer, frame);
+        ASSERT_TRUE(img.ok()) << img.error().message;
+        image = std::move(img).value();
+        stats = renderer->stats();
+        frames_reading += stats.shore_tiles_reading > 0 ? 1 : 0;
+        if (frames >= 2 && stats.shore_streamed_bytes == 0 && stats.shore_tiles_reading == 0) break;
+    }
+    const double coarse_diff = test::mean_difference(in_memory.image, coarse.image);
+    const double streamed_diff = test::mean_difference(in_memory.image, image);
+    std::printf(
+        "from the folder: %llu of %llu tiles streamed in %d frames (%d with reads in flight), %.5f from the bake in "
+        "memory streamed alike, %.5f coarse; %zu slots kept\n",
+        static_cast<unsigned long long>(stats.shore_streamed_tiles),
+        static_cast<unsigned long long>(stats.shore_streamable_tiles), frames + 1, frames_reading, streamed_diff,
+        coarse_diff, kept_slots(model));
+    EXPECT_GT(frames_reading, 0) << "the tiles were read from the folder";
+    EXPECT_EQ(stats.shore_tiles_reading, 0u) << "streaming settles";
+    EXPECT_EQ(stats.shore_streamed_tiles, in_memory.stats.shore_streamed_tiles);
+    EXPECT_EQ(kept_slots(model), 0u) << "no streamed tile is kept in host memory";
+    EXPECT_GT(coarse_diff, 0.0);
+    EXPECT_LT(streamed_diff, 0.25 * coarse_diff) << "the same tiles as the bake in memory, within its 16-bit encoding";
+    renderer.reset();
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -778,6 +778,7 @@ RendererStats Renderer::stats() const {
     s.shore_streamed_tiles = impl_->shore.streamed_tiles();
     s.shore_streamable_tiles = impl_->shore.streamable_tiles();
     s.shore_streamed_bytes = impl_->shore_streamed;
+    s.shore_tiles_reading = impl_->shore.reading_tiles();
     s.scene_upload_bytes = impl_->last_upload_bytes;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());

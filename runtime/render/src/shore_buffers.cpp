@@ -18,8 +18,10 @@ std::size_t packed_slot_vec4s(const ShoreTiles& tiles, bool shared) {
 // waves one after the other, each wave's texels (phase residual, amplitude factor,
 // wavevector x, z).
 void pack_slot(const ShoreTiles& tiles, std::size_t slot, bool shared, glm::vec4* out) {
-    const float* texels = tiles.slot(slot);
-    const std::size_t stride = tiles.stride;
+    pack_slot_floats(tiles.slot(slot), tiles.stride, shared, out);
+}
+
+void pack_slot_floats(const float* texels, std::size_t stride, bool shared, glm::vec4* out) {
     if (shared) {
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
             const float* t = texels + k * stride;
@@ -264,11 +266,6 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
         rewritten_bytes_ = 0;
         return false;
     }
-    // A saved bake's tiles are read on demand: every one now, in parallel; one that cannot
-    // be read fails the upload with its file's name.
-    for (const auto& m : models)
-        if (m)
-            if (auto st = m->read_all(); !st) return st.error();
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
     // Over the budget, the coarse level is every k-th texel of each model (the smallest k
@@ -281,6 +278,14 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
         stride = 2;
         while (packed_shore_bytes(wanted_models, stride) > max_bytes / 2 && stride < 64) ++stride;
     }
+    // A saved bake's tiles are read on demand. Within the budget every one is uploaded: all
+    // read now, in parallel, and kept. Over it the coarse level reads each tile once without
+    // keeping it, and the full-resolution tiles stream from the bake folder (ShoreStream).
+    // A tile that cannot be read fails the upload with its file's name.
+    if (stride == 1)
+        for (const auto& m : models)
+            if (m)
+                if (auto st = m->read_all(); !st) return st.error();
     Models coarse;
     std::vector<const ShoreWaves*> drawn = wanted_models;
     if (stride > 1)
@@ -293,6 +298,9 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
                                  : nullptr);
             drawn[m] = coarse.back().get();
         }
+    for (const auto& m : models)
+        if (m)
+            if (auto st = m->status(); !st) return st.error();
     // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
     if (max_bytes == max_bytes_ && rewrite_in_place(models, drawn, stride)) {
         coarse_ = std::move(coarse);

@@ -49,6 +49,8 @@ struct ShorePlacement {
 std::size_t packed_slot_vec4s(const ShoreTiles& tiles, bool shared);
 /// Slot `slot` of `tiles` as the shaders read it, into `out` (packed_slot_vec4s of them).
 void pack_slot(const ShoreTiles& tiles, std::size_t slot, bool shared, glm::vec4* out);
+/// The same from a slot's floats `texels` (`stride` a texel), wherever they were read.
+void pack_slot_floats(const float* texels, std::size_t stride, bool shared, glm::vec4* out);
 
 /// Full-resolution pools to pack beside coarse models (ShoreBuffers over its budget): per
 /// model, per layer (the shared one, then each run), the slots streamed tiles may take.
@@ -131,6 +133,7 @@ class ShoreBuffers {
     /// Full-resolution tiles drawn over the coarse level now, and the tiles that could be.
     std::size_t streamed_tiles() const { return stream_.resident_tiles(); }
     std::size_t streamable_tiles() const { return stream_.streamable_tiles(); }
+    std::size_t reading_tiles() const { return stream_.reading_tiles(); }
     /// The streamed layers: where their pages and pools lie (tests and checks).
     const ShoreStream& streaming() const { return stream_; }
 

@@ -10,6 +10,7 @@ namespace tidewater::render::detail {
 namespace {
 
 constexpr std::uint32_t kFirstPoolPage = gpu::kShoreFirstStoredSlot;  // pool slot p is page p + this
+constexpr std::size_t kMaxReads = 32;                                 // tiles asked of the bake folder at once
 
 /// Squared distance from `camera` to the centre of tile `t` of `layer`, m^2.
 double tile_distance2(const StreamedLayer& layer, std::uint32_t t, glm::dvec2 camera) {
@@ -24,7 +25,15 @@ double tile_distance2(const StreamedLayer& layer, std::uint32_t t, glm::dvec2 ca
 
 }  // namespace
 
+ShoreStream::Source ShoreStream::source_of(const ShoreTiles& tiles, std::size_t slot) {
+    const void* floats = tiles.slots[slot] ? static_cast<const void*>(tiles.slots[slot].get())
+                                           : static_cast<const void*>(tiles.lazy.get());
+    return {floats, slot};
+}
+
 void ShoreStream::reset(std::vector<StreamedLayer> layers) {
+    reader_.forget();
+    read_.clear();
     layers_ = std::move(layers);
     pools_.assign(layers_.size(), Pool{});
     for (std::size_t l = 0; l < layers_.size(); ++l) {
@@ -34,20 +43,21 @@ void ShoreStream::reset(std::vector<StreamedLayer> layers) {
             if (tiles.pages[t] >= gpu::kShoreFirstStoredSlot) pool.candidates.push_back(static_cast<std::uint32_t>(t));
         const std::size_t n = layers_[l].pool_slots;
         pool.tile.assign(n, -1);
-        pool.source.assign(n, nullptr);
+        pool.source.assign(n, Source{});
+        pool.reading.assign(tiles.pages.size(), 0);
+        pool.unreadable.assign(tiles.pages.size(), 0);
         pool.free_from.assign(n, 0);
         pool.slot_of.assign(tiles.pages.size(), -1);
     }
 }
 
-std::uint64_t ShoreStream::pack(std::size_t l, std::size_t p, std::uint32_t t, glm::vec4* shared_out,
-                                glm::vec4* per_wave_out) {
+std::uint64_t ShoreStream::pack(std::size_t l, std::size_t p, std::uint32_t t, const float* floats,
+                                glm::vec4* shared_out, glm::vec4* per_wave_out) {
     const StreamedLayer& layer = layers_[l];
     const std::size_t per_slot = packed_slot_vec4s(*layer.tiles, layer.shared);
     glm::vec4* out = (layer.shared ? shared_out : per_wave_out) + layer.first_element + (kFirstPoolPage + p) * per_slot;
-    const std::size_t slot = layer.tiles->pages[t];
-    pack_slot(*layer.tiles, slot, layer.shared, out);
-    pools_[l].source[p] = layer.tiles->slot(slot);
+    pack_slot_floats(floats, layer.tiles->stride, layer.shared, out);
+    pools_[l].source[p] = source_of(*layer.tiles, layer.tiles->pages[t]);
     return per_slot * sizeof(glm::vec4);
 }
 
@@ -55,6 +65,7 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
                                 std::uint64_t max_bytes, std::span<std::uint32_t> pages, glm::vec4* shared_out,
                                 glm::vec4* per_wave_out) {
     std::uint64_t written = 0;
+    for (ShoreSlotReader::Read& r : reader_.take()) read_.push_back(std::move(r));
     std::vector<double> dist2;
     std::vector<std::uint32_t> order;
     std::vector<char> wanted;
@@ -74,6 +85,12 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
         order.resize(keep);
         wanted.assign(pool.slot_of.size(), 0);
         for (std::uint32_t t : order) wanted[t] = 1;
+        // Tiles read from disk that are no longer wanted are dropped.
+        std::erase_if(read_, [&](const ShoreSlotReader::Read& r) {
+            const bool drop = r.layer == l && !wanted[r.tile];
+            if (drop) pool.reading[r.tile] = 0;
+            return drop;
+        });
         std::vector<std::uint32_t> missing;
         for (std::uint32_t t : order)
             if (pool.slot_of[t] < 0) missing.push_back(t);
@@ -95,17 +112,42 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
                 pages[layer.first_page + t] = gpu::kShoreNotResident;
                 pool.slot_of[t] = -1;
                 pool.tile[p] = -1;
-                pool.source[p] = nullptr;
+                pool.source[p] = Source{};
                 pool.free_from[p] = frame + frames_in_flight;
             }
         }
-        // The missing tiles, nearest first, into slots no frame in flight reads.
+        // The missing tiles, nearest first, into slots no frame in flight reads: from host
+        // memory, or once read from disk (asked for now, packed a later frame).
         std::size_t p = 0;
         for (std::uint32_t t : missing) {
             if (written > 0 && written >= max_bytes) return written;
+            if (pool.unreadable[t]) continue;
             while (p < pool.tile.size() && (pool.tile[p] >= 0 || pool.free_from[p] > frame)) ++p;
             if (p == pool.tile.size()) break;
-            written += pack(l, p, t, shared_out, per_wave_out);
+            const ShoreTiles& tiles = *layer.tiles;
+            const std::size_t slot = tiles.pages[t];
+            const float* floats = nullptr;
+            auto read = std::find_if(read_.begin(), read_.end(),
+                                     [&](const ShoreSlotReader::Read& r) { return r.layer == l && r.tile == t; });
+            if (tiles.in_memory(slot)) {
+                floats = tiles.slot(slot);
+            } else if (read != read_.end()) {
+                pool.reading[t] = 0;
+                if (!read->ok) {
+                    pool.unreadable[t] = 1;
+                    read_.erase(read);
+                    continue;
+                }
+                floats = read->floats.data();
+            } else {
+                if (!pool.reading[t] && reader_.pending() < kMaxReads) {
+                    reader_.request(l, t, tiles.lazy, slot, tiles.slot_floats());
+                    pool.reading[t] = 1;
+                }
+                continue;
+            }
+            written += pack(l, p, t, floats, shared_out, per_wave_out);
+            if (read != read_.end()) read_.erase(read);
             pool.tile[p] = t;
             pool.slot_of[t] = static_cast<std::int64_t>(p);
             pages[layer.first_page + t] = kFirstPoolPage + static_cast<std::uint32_t>(p);
@@ -117,14 +159,26 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
 std::uint64_t ShoreStream::refresh(const std::vector<const ShoreTiles*>& tiles, glm::vec4* shared_out,
                                    glm::vec4* per_wave_out) {
     std::uint64_t written = 0;
+    // Reads asked of the model before are dropped: asked again of the new one.
+    reader_.forget();
+    read_.clear();
     for (std::size_t l = 0; l < layers_.size() && l < tiles.size(); ++l) {
         layers_[l].tiles = tiles[l];
         Pool& pool = pools_[l];
+        std::fill(pool.reading.begin(), pool.reading.end(), 0);
         for (std::size_t p = 0; p < pool.tile.size(); ++p) {
             if (pool.tile[p] < 0) continue;
             const auto t = static_cast<std::uint32_t>(pool.tile[p]);
-            if (tiles[l]->slot(tiles[l]->pages[t]) != pool.source[p])
-                written += pack(l, p, t, shared_out, per_wave_out);
+            const std::size_t slot = tiles[l]->pages[t];
+            if (source_of(*tiles[l], slot) == pool.source[p]) continue;
+            // Re-baked slots are in memory; any other is read here, once, and not kept.
+            if (tiles[l]->in_memory(slot)) {
+                written += pack(l, p, t, tiles[l]->slot(slot), shared_out, per_wave_out);
+            } else {
+                std::vector<float> floats(tiles[l]->slot_floats());
+                tiles[l]->copy_slot(slot, floats.data());
+                written += pack(l, p, t, floats.data(), shared_out, per_wave_out);
+            }
         }
     }
     return written;

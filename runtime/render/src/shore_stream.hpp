@@ -5,7 +5,9 @@
 // slot while it is resident and kShoreNotResident otherwise, which sends the shaders to
 // the coarse level (shore_fields.glsl). Every frame in flight reads its own copy of the
 // pages, so a pool slot given up at frame F is written again only once the frames that
-// could still read it are done.
+// could still read it are done. A tile in host memory is packed at once; one a saved bake
+// holds on disk is read on a thread of its own (ShoreSlotReader) and packed a frame or more
+// later, not kept in host memory.
 // Threading: one thread (the renderer's).
 #pragma once
 
@@ -16,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "shore_slot_reader.hpp"
 #include "tidewater/detail/shore_tiles.hpp"
 
 namespace tidewater::render::detail {
@@ -51,23 +54,37 @@ class ShoreStream {
     std::uint64_t refresh(const std::vector<const ShoreTiles*>& tiles, glm::vec4* shared_out, glm::vec4* per_wave_out);
 
     std::size_t resident_tiles() const;
+    /// Tiles asked of the bake folder and not packed yet.
+    std::size_t reading_tiles() const { return reader_.pending(); }
     /// Stored tiles of every layer: what the pools would hold with room for all.
     std::size_t streamable_tiles() const;
     const std::vector<StreamedLayer>& layers() const { return layers_; }
 
   private:
+    /// What a pool slot was packed from: a slot of the tiles (its allocation, or its reader).
+    struct Source {
+        const void* floats = nullptr;
+        std::size_t slot = 0;
+        bool operator==(const Source&) const = default;
+    };
+    static Source source_of(const ShoreTiles& tiles, std::size_t slot);
     struct Pool {
         std::vector<std::uint32_t> candidates;  ///< the layer's tiles with a stored slot
         std::vector<std::int64_t> tile;         ///< per pool slot: the tile it holds, -1 none
-        std::vector<const float*> source;       ///< per pool slot: the floats packed into it
+        std::vector<Source> source;             ///< per pool slot: what was packed into it
         std::vector<std::uint64_t> free_from;   ///< per pool slot: the first frame that may write it
         std::vector<std::int64_t> slot_of;      ///< per tile: its pool slot, -1 none
+        std::vector<char> reading;              ///< per tile: asked of the reader
+        std::vector<char> unreadable;           ///< per tile: its file could not be read (the coarse level stays)
     };
-    /// Packs tile `t` of layer `l` into pool slot `p`; its bytes.
-    std::uint64_t pack(std::size_t l, std::size_t p, std::uint32_t t, glm::vec4* shared_out, glm::vec4* per_wave_out);
+    /// Packs tile `t` of layer `l` (its slot's floats `floats`) into pool slot `p`; its bytes.
+    std::uint64_t pack(std::size_t l, std::size_t p, std::uint32_t t, const float* floats, glm::vec4* shared_out,
+                       glm::vec4* per_wave_out);
 
     std::vector<StreamedLayer> layers_;
     std::vector<Pool> pools_;
+    std::vector<ShoreSlotReader::Read> read_;  ///< read from disk, not packed yet
+    ShoreSlotReader reader_;
 };
 
 }  // namespace tidewater::render::detail

@@ -24,13 +24,30 @@ const float* LazyShoreSlots::read(std::size_t slot) const {
         storage_[slot] = std::move(floats);
     } else {
         result = failed_slot_.get();
-        std::lock_guard error_lock(error_lock_);
-        if (!error_) error_ = st.error();
-        failed_.store(true, std::memory_order_release);
+        keep_error(st.error());
     }
     read_count_.fetch_add(1, std::memory_order_relaxed);
     ready_[slot].store(result, std::memory_order_release);
     return result;
+}
+
+bool LazyShoreSlots::copy(std::size_t slot, float* out) const {
+    if (const float* ready = ready_[slot].load(std::memory_order_acquire)) {
+        std::copy_n(ready, slot_floats_, out);
+        return ready != failed_slot_.get();
+    }
+    if (Status st = source_->read(slot, out); !st) {
+        std::fill_n(out, slot_floats_, 0.0f);
+        keep_error(st.error());
+        return false;
+    }
+    return true;
+}
+
+void LazyShoreSlots::keep_error(const Error& error) const {
+    std::lock_guard error_lock(error_lock_);
+    if (!error_) error_ = error;
+    failed_.store(true, std::memory_order_release);
 }
 
 Status LazyShoreSlots::status() const {

@@ -6,6 +6,9 @@
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -101,6 +104,36 @@ Status check_tiles(const ShoreTiles& t, int n, std::size_t stride, const std::st
     return {};
 }
 
+/// The fine texels of one coarse tile: a fine slot in memory read in place, one that a saved
+/// bake holds on disk copied once for the tile and not kept, so that the coarse level of a
+/// model larger than the renderer's budget does not bring the whole model into memory.
+class FineTexels {
+  public:
+    explicit FineTexels(const ShoreTiles& fine) : fine_(fine) {}
+    /// The slot that holds fine texel (i, j).
+    std::size_t slot_of(int i, int j) const { return fine_.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile); }
+    const float* texel(int i, int j) {
+        const int ti = i / ShoreTiles::kTile, tj = j / ShoreTiles::kTile;
+        const std::size_t local = static_cast<std::size_t>(j - tj * ShoreTiles::kTile) * ShoreTiles::kSide +
+                                  static_cast<std::size_t>(i - ti * ShoreTiles::kTile);
+        return floats(fine_.page(ti, tj)) + local * fine_.stride;
+    }
+
+  private:
+    const float* floats(std::size_t slot) {
+        if (slot < gpu::kShoreFirstStoredSlot || fine_.in_memory(slot)) return fine_.slot(slot);
+        for (const auto& [s, copy] : copies_)
+            if (s == slot) return copy.get();
+        auto copy = std::make_unique_for_overwrite<float[]>(fine_.slot_floats());
+        fine_.copy_slot(slot, copy.get());  // a failure reads as zeros, its error kept (ShoreTiles::status)
+        copies_.emplace_back(slot, std::move(copy));
+        return copies_.back().second.get();
+    }
+
+    const ShoreTiles& fine_;
+    std::vector<std::pair<std::size_t, std::unique_ptr<float[]>>> copies_;
+};
+
 /// `fine` on every `stride`-th texel of its grid: the pages (coarse_pages), each stored
 /// slot's texels copied from the fine texel under it, and the constant slots. With
 /// `before` (`before.fine` coarsened at this stride into `before.coarse`, laid out as
@@ -122,23 +155,25 @@ ShoreTiles coarsened_tiles(const ShoreTiles& fine, int stride, std::span<const g
         fill_constant_slots(c, open);
     }
     const auto packed = static_cast<std::size_t>(c.resolution);
-    auto source = [&](const ShoreTiles& t, std::size_t g) {
-        return t.texel(static_cast<int>(g % packed) * stride, static_cast<int>(g / packed) * stride);
-    };
+    // The fine texel under coarse grid texel g.
+    auto fine_i = [&](std::size_t g) { return static_cast<int>(g % packed) * stride; };
+    auto fine_j = [&](std::size_t g) { return static_cast<int>(g / packed) * stride; };
     detail::parallel_for_each(c.pages.size(), 0, [&](std::size_t tile) {
         const std::uint32_t slot = c.pages[tile];
         if (slot < gpu::kShoreFirstStoredSlot) return;
+        FineTexels texels(fine);
         if (reuse) {
             bool shared = true;
             for (std::size_t s = 0; s < ShoreTiles::kSlotTexels && shared; ++s) {
                 const std::size_t g = c.grid_index(tile, s);
-                shared = source(fine, g) == source(*before.fine, g);
+                shared = fine.same_slot(texels.slot_of(fine_i(g), fine_j(g)), *before.fine);
             }
             if (shared) return;
         }
         float* out = c.slot_for_writing(slot);
         for (std::size_t s = 0; s < ShoreTiles::kSlotTexels; ++s) {
-            const float* in = source(fine, c.grid_index(tile, s));
+            const std::size_t g = c.grid_index(tile, s);
+            const float* in = texels.texel(fine_i(g), fine_j(g));
             std::copy(in, in + floats, out + s * floats);
         }
     });

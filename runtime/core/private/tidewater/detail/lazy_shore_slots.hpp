@@ -24,7 +24,7 @@ class ShoreSlotSource {
   public:
     virtual ~ShoreSlotSource() = default;
     /// Writes slot `slot`'s floats (ShoreTiles::slot_floats of them) to `out`; an error
-    /// names the file. Called at most once a slot, from any thread, for distinct slots at once.
+    /// names the file. Called from any thread, for distinct slots or the same one at once.
     virtual Status read(std::size_t slot, float* out) const = 0;
 };
 
@@ -38,14 +38,22 @@ class LazyShoreSlots {
         const float* ready = ready_[slot].load(std::memory_order_acquire);
         return ready ? ready : read(slot);
     }
+    /// Slot `slot`'s floats copied into `out` (slot_floats of them) without keeping them:
+    /// from what get() kept, else read from the source again (a renderer streaming tiles
+    /// it does not keep in host memory). A slot that cannot be read writes zeros and keeps
+    /// its error, as get() does; returns whether it was read.
+    bool copy(std::size_t slot, float* out) const;
+    /// Whether get() has read slot `slot` and keeps it.
+    bool kept(std::size_t slot) const { return ready_[slot].load(std::memory_order_acquire) != nullptr; }
     /// The first slot's error, if any slot failed; ok otherwise.
     Status status() const;
-    /// Slots read so far (failed ones included).
+    /// Slots read and kept so far (failed ones included); copy() counts none.
     std::size_t read_count() const { return read_count_.load(std::memory_order_relaxed); }
     std::size_t slot_count() const { return storage_.size(); }
 
   private:
     const float* read(std::size_t slot) const;
+    void keep_error(const Error& error) const;
 
     static constexpr std::size_t kLocks = 64;  // slots share locks: slot % kLocks
     std::unique_ptr<const ShoreSlotSource> source_;

@@ -118,6 +118,23 @@ struct ShoreTiles {
         const float* held = slots[s].get();
         return held ? held : lazy->get(s);
     }
+    /// Whether slot s's floats are in memory (held, or read and kept by `lazy`): slot(s)
+    /// then reads nothing.
+    bool in_memory(std::size_t s) const { return slots[s] || lazy->kept(s); }
+    /// Slot s's floats copied into `out` (slot_floats of them) without `lazy` keeping them;
+    /// false when it cannot be read (zeros written, the error kept: status()).
+    bool copy_slot(std::size_t s, float* out) const {
+        if (const float* held = slots[s].get()) {
+            std::copy_n(held, slot_floats(), out);
+            return true;
+        }
+        return lazy->copy(s, out);
+    }
+    /// Whether slot s here and slot s of `other` hold the same floats by construction (the
+    /// same allocation, or the same reader's slot).
+    bool same_slot(std::size_t s, const ShoreTiles& other) const {
+        return slots[s] == other.slots[s] && (slots[s] || lazy == other.lazy);
+    }
     /// Slot s's floats to write: copied first when another ShoreTiles shares the slot.
     float* slot_for_writing(std::size_t s);
     /// Reads every slot that `lazy` holds and has not read yet; the first error, if any.

@@ -193,10 +193,13 @@ struct RendererStats {
     std::uint32_t shore_stride = 1;
     /// Over the budget (shore_stride > 1): the full-resolution shore tiles drawn over the
     /// coarse level now (those nearest the camera), of the tiles that could be; and the
-    /// bytes of them the last frame recorded brought in.
+    /// bytes of them the last frame recorded brought in. Tiles of a saved bake that nothing
+    /// has read are read from its folder on a thread of the renderer's own and drawn a frame
+    /// or more later, without being kept in host memory: shore_tiles_reading of them now.
     std::uint64_t shore_streamed_tiles = 0;
     std::uint64_t shore_streamable_tiles = 0;
     std::uint64_t shore_streamed_bytes = 0;
+    std::uint64_t shore_tiles_reading = 0;
     /// Bytes of height texture and shore fields the last set_scene wrote to the device: a
     /// scene re-baked after an edit of the one drawn writes only the texels and shore tiles
     /// the edit changed.
