@@ -12,7 +12,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tidewater/render/offscreen.hpp"
@@ -37,6 +40,21 @@ int fail(const std::string& what) {
 double percentile(std::vector<double> v, double q) {
     std::sort(v.begin(), v.end());
     return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
+}
+
+/// The process's resident memory now and its peak, MiB (Linux: /proc/self/status).
+std::pair<double, double> resident_mib() {
+    std::ifstream status("/proc/self/status");
+    double now = 0.0, peak = 0.0;
+    for (std::string line; std::getline(status, line);) {
+        std::istringstream fields(line);
+        std::string key;
+        double kib = 0.0;
+        fields >> key >> kib;
+        if (key == "VmRSS:") now = kib / 1024.0;
+        if (key == "VmHWM:") peak = kib / 1024.0;
+    }
+    return {now, peak};
 }
 
 }  // namespace
@@ -98,17 +116,19 @@ int main(int argc, char** argv) {
     }
     const double median = percentile(frame_ms, 0.5), worst = *std::max_element(frame_ms.begin(), frame_ms.end());
     const render::RendererStats s = (*renderer)->stats();
+    const auto [rss_mib, peak_rss_mib] = resident_mib();
     std::printf(
         "{\"scene\": \"%s\", \"device\": \"%s\", \"width\": %d, \"height\": %d, \"frames\": %d, "
         "\"budget_mib\": %ld, \"bake_or_load_s\": %.2f, \"set_scene_s\": %.2f, \"first_frame_ms\": %.1f, "
         "\"median_ms\": %.1f, \"p95_ms\": %.1f, \"max_ms\": %.1f, \"max_over_median\": %.2f, "
         "\"terrain_mib\": %.1f, \"shore_mib\": %.1f, \"shore_stride\": %u, \"shore_tiles_streamed\": %llu, "
-        "\"shore_tiles_streamable\": %llu, \"streamed_mib\": %.1f, \"most_streamed_in_a_frame_mib\": %.2f}\n",
+        "\"shore_tiles_streamable\": %llu, \"streamed_mib\": %.1f, \"most_streamed_in_a_frame_mib\": %.2f, "
+        "\"host_rss_mib\": %.0f, \"host_peak_rss_mib\": %.0f}\n",
         argv[1], (*device)->device_name().c_str(), width, height, frames, budget_mib, bake_s, set_scene_s,
         frame_ms.front(), median, percentile(frame_ms, 0.95), worst, worst / median,
         static_cast<double>(s.terrain_bytes) / (1 << 20), static_cast<double>(s.shore_bytes) / (1 << 20),
         s.shore_stride, static_cast<unsigned long long>(s.shore_streamed_tiles),
         static_cast<unsigned long long>(s.shore_streamable_tiles), static_cast<double>(streamed_bytes) / (1 << 20),
-        static_cast<double>(most_streamed) / (1 << 20));
+        static_cast<double>(most_streamed) / (1 << 20), rss_mib, peak_rss_mib);
     return 0;
 }
