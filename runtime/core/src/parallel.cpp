@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace tidewater::detail {
 
@@ -38,6 +39,14 @@ void parallel_chunks(std::size_t count, std::size_t grain, unsigned threads,
 void parallel_for_each(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body) {
     parallel_chunks(count, 1, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) body(i);
+    });
+}
+
+void parallel_in_order(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body) {
+    const std::size_t workers = std::min<std::size_t>(count, worker_count(threads));
+    std::atomic<std::size_t> next{0};
+    parallel_for_each(workers, threads, [&](std::size_t) {
+        for (std::size_t i = next++; i < count; i = next++) body(i);
     });
 }
 

@@ -434,9 +434,10 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
         // The shortest waves first: their runs lie on the finest grids, whose marches take
         // the most memory, and are marched before the long waves' runs, which store the
-        // most tiles, have their slots made (a run's slots are made as its first wave starts).
+        // most tiles, have their slots made (a run's slots are made as its first wave starts):
+        // the waves start in that order whichever worker takes them.
         std::vector<std::once_flag> slots_made(runs.size());
-        detail::parallel_for_each(nw, options.threads, [&](std::size_t i) {
+        detail::parallel_in_order(nw, options.threads, [&](std::size_t i) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
             const std::size_t w = nw - 1 - i;
             RunBake& run = runs[run_of[w]];

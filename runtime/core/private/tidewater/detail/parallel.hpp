@@ -18,6 +18,12 @@ void parallel_chunks(std::size_t count, std::size_t grain, unsigned threads,
 /// parallel_chunks one item at a time: body(i) for each i in [0, count).
 void parallel_for_each(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body);
 
+/// body(i) for each i in [0, count), started in the order of i: each worker takes the next
+/// item when it is free. parallel_for_each splits the range, so a second worker starts
+/// half-way through it; here the items meant to go first (the bake's largest, or those
+/// whose memory should be made last) do.
+void parallel_in_order(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body);
+
 /// Workers a call with `threads` gets (0: the scheduler's default concurrency).
 unsigned worker_count(unsigned threads);
 
