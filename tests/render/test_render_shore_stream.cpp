@@ -146,6 +146,44 @@ TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     EXPECT_GT(coarse_diff, 0.0);
     EXPECT_LT(streamed_diff, 0.25 * coarse_diff) << "the same tiles as the bake in memory, within its 16-bit encoding";
     renderer.reset();
+
+    // Within the budget every tile is read as it is packed, and not kept either.
+    auto whole = bake_scene(*named);
+    ASSERT_TRUE(whole.ok()) << whole.error().message;
+    const StreamedFrames resident = render_streaming(context(), **whole, frame, 1ull << 30, kPerFrame, 1);
+    EXPECT_EQ(resident.stats.shore_stride, 1u);
+    EXPECT_EQ(kept_slots(*(*whole)->bake->ocean_shore), 0u) << "the device's copy is the only one";
+    fs::remove_all(dir);
+}
+
+// A tile file gone from the folder since the load fails set_scene, within the budget and
+// over it, with the file's name, before anything drawn is replaced.
+TEST_F(RenderTest, AShoreTileGoneFromItsFolderFailsTheUploadByName) {
+    namespace fs = std::filesystem;
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_tile_gone_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    ASSERT_TRUE(save_scene_bake(dir, *scene).ok());
+    fs::path tile;
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        if (entry.path().extension() == ".png" && entry.path().parent_path().parent_path().filename() == "tiles")
+            tile = entry.path();
+    ASSERT_FALSE(tile.empty()) << "a stored tile's file";
+    auto named = default_scene();
+    ASSERT_TRUE(named.ok());
+    named->shore.bake_folder = dir;
+    for (const std::uint64_t budget : {1ull << 30, 16ull << 20}) {
+        auto loaded = bake_scene(*named);
+        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+        fs::rename(tile, tile.string() + ".gone");
+        auto renderer = test::renderer_within_budget(context(), *scene, budget);
+        ASSERT_NE(renderer, nullptr);
+        const Status st = renderer->set_scene(**loaded);
+        ASSERT_FALSE(st.ok()) << "budget " << budget;
+        EXPECT_NE(st.error().message.find(tile.filename().string()), std::string::npos) << st.error().message;
+        fs::rename(tile.string() + ".gone", tile);
+    }
     fs::remove_all(dir);
 }
 

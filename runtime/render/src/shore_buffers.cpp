@@ -18,7 +18,15 @@ std::size_t packed_slot_vec4s(const ShoreTiles& tiles, bool shared) {
 // waves one after the other, each wave's texels (phase residual, amplitude factor,
 // wavevector x, z).
 void pack_slot(const ShoreTiles& tiles, std::size_t slot, bool shared, glm::vec4* out) {
-    pack_slot_floats(tiles.slot(slot), tiles.stride, shared, out);
+    if (tiles.in_memory(slot)) {
+        pack_slot_floats(tiles.slot(slot), tiles.stride, shared, out);
+        return;
+    }
+    // A saved bake's slot that nothing has read: read for the device, not kept in host
+    // memory (a failure packs zeros and keeps its error: ShoreTiles::status).
+    std::vector<float> floats(tiles.slot_floats());
+    tiles.copy_slot(slot, floats.data());
+    pack_slot_floats(floats.data(), tiles.stride, shared, out);
 }
 
 void pack_slot_floats(const float* texels, std::size_t stride, bool shared, glm::vec4* out) {
@@ -246,7 +254,7 @@ bool ShoreBuffers::rewrite_in_place(const Models& models, const std::vector<cons
             const std::size_t per_slot = packed_slot_vec4s(*after[l].tiles, shared);
             glm::vec4* out = (shared ? shared_out : per_wave_out) + layer_records_[placements_[m].layers + l].coarse.y;
             for (std::size_t slot = 0; slot < after[l].tiles->slot_count(); ++slot) {
-                if (after[l].tiles->slot(slot) == before[l].tiles->slot(slot)) continue;
+                if (after[l].tiles->same_slot(slot, *before[l].tiles)) continue;
                 pack_slot(*after[l].tiles, slot, shared, out + slot * per_slot);
                 written += per_slot * sizeof(glm::vec4);
             }
@@ -278,14 +286,17 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
         stride = 2;
         while (packed_shore_bytes(wanted_models, stride) > max_bytes / 2 && stride < 64) ++stride;
     }
-    // A saved bake's tiles are read on demand. Within the budget every one is uploaded: all
-    // read now, in parallel, and kept. Over it the coarse level reads each tile once without
-    // keeping it, and the full-resolution tiles stream from the bake folder (ShoreStream).
-    // A tile that cannot be read fails the upload with its file's name.
-    if (stride == 1)
+    // A saved bake's tiles are read on demand, and what the device takes is not kept in host
+    // memory: within the budget every tile is read as it is packed; over it the coarse level
+    // reads each tile once, and the full-resolution tiles stream from the bake folder
+    // (ShoreStream). A tile that cannot be read fails the upload with its file's name,
+    // before any buffer drawn is replaced.
+    auto unreadable = [&]() -> Status {
         for (const auto& m : models)
             if (m)
-                if (auto st = m->read_all(); !st) return st.error();
+                if (auto st = m->status(); !st) return st.error();
+        return {};
+    };
     Models coarse;
     std::vector<const ShoreWaves*> drawn = wanted_models;
     if (stride > 1)
@@ -298,12 +309,11 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
                                  : nullptr);
             drawn[m] = coarse.back().get();
         }
-    for (const auto& m : models)
-        if (m)
-            if (auto st = m->status(); !st) return st.error();
+    if (auto st = unreadable(); !st) return st.error();
     // A model edited in a few slots (ShoreWaves shares the rest): only those are written.
     if (max_bytes == max_bytes_ && rewrite_in_place(models, drawn, stride)) {
         coarse_ = std::move(coarse);
+        if (auto st = unreadable(); !st) return st.error();
         return false;
     }
     std::vector<ShorePlacement> placements;
@@ -327,6 +337,7 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
         fresh[i] = std::move(made).value();
     }
     fill_shores(layout, static_cast<glm::vec4*>(fresh[0].mapped()), static_cast<glm::vec4*>(fresh[1].mapped()));
+    if (auto st = unreadable(); !st) return st.error();
     std::memcpy(fresh[2].mapped(), layout.pages.data(), sizes[2]);
     std::memcpy(fresh[3].mapped(), layout.layers.data(), sizes[3]);
     per_wave_ = std::move(fresh[0]);
