@@ -10,7 +10,7 @@ namespace tidewater::render::detail {
 namespace {
 
 constexpr std::uint32_t kFirstPoolPage = gpu::kShoreFirstStoredSlot;  // pool slot p is page p + this
-constexpr std::size_t kMaxReads = 32;                                 // tiles asked of the bake folder at once
+constexpr std::size_t kMaxReads = 32;  // tiles asked of the bake folder and not packed, at most
 
 /// Squared distance from `camera` to the centre of tile `t` of `layer`, m^2.
 double tile_distance2(const StreamedLayer& layer, std::uint32_t t, glm::dvec2 camera) {
@@ -140,7 +140,8 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
                 }
                 floats = read->floats.data();
             } else {
-                if (!pool.reading[t] && reader_.pending() < kMaxReads) {
+                // Read and waiting counts too: what is read beyond a frame's bytes stays bounded.
+                if (!pool.reading[t] && reading_tiles() < kMaxReads) {
                     reader_.request(l, t, tiles.lazy, slot, tiles.slot_floats());
                     pool.reading[t] = 1;
                 }

@@ -54,8 +54,8 @@ class ShoreStream {
     std::uint64_t refresh(const std::vector<const ShoreTiles*>& tiles, glm::vec4* shared_out, glm::vec4* per_wave_out);
 
     std::size_t resident_tiles() const;
-    /// Tiles asked of the bake folder and not packed yet.
-    std::size_t reading_tiles() const { return reader_.pending(); }
+    /// Tiles asked of the bake folder and not packed yet (being read, or read and waiting).
+    std::size_t reading_tiles() const { return reader_.pending() + read_.size(); }
     /// Stored tiles of every layer: what the pools would hold with room for all.
     std::size_t streamable_tiles() const;
     const std::vector<StreamedLayer>& layers() const { return layers_; }
