@@ -290,7 +290,8 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     // memory: within the budget every tile is read as it is packed; over it the coarse level
     // reads each tile once, and the full-resolution tiles stream from the bake folder
     // (ShoreStream). A tile that cannot be read fails the upload with its file's name,
-    // before any buffer drawn is replaced.
+    // before new buffers replace the drawn ones (an edit written in place writes the
+    // slots it re-baked, which are in memory).
     auto unreadable = [&]() -> Status {
         for (const auto& m : models)
             if (m)
