@@ -112,8 +112,14 @@ class FineTexels {
     explicit FineTexels(const ShoreTiles& fine) : fine_(fine) {}
     /// The slot that holds fine texel (i, j).
     std::size_t slot_of(int i, int j) const { return fine_.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile); }
+    /// Asked row by row (j never decreasing): the copies of a row of fine tiles go when the
+    /// next row starts, so that at most a row of them is held, however coarse the level.
     const float* texel(int i, int j) {
         const int ti = i / ShoreTiles::kTile, tj = j / ShoreTiles::kTile;
+        if (tj != row_) {
+            copies_.clear();
+            row_ = tj;
+        }
         const std::size_t local = static_cast<std::size_t>(j - tj * ShoreTiles::kTile) * ShoreTiles::kSide +
                                   static_cast<std::size_t>(i - ti * ShoreTiles::kTile);
         return floats(fine_.page(ti, tj)) + local * fine_.stride;
@@ -131,6 +137,7 @@ class FineTexels {
     }
 
     const ShoreTiles& fine_;
+    int row_ = -1;  // the row of fine tiles the copies are of
     std::vector<std::pair<std::size_t, std::unique_ptr<float[]>>> copies_;
 };
 
