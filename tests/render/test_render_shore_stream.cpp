@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "render_fixture.hpp"
@@ -89,20 +90,41 @@ std::size_t kept_slots(const ShoreWaves& model) {
     return kept;
 }
 
+/// The default island baked, its bake saved in a temporary folder `dir` (the test removes
+/// it), and the default scene naming that folder as its bake.
+struct SavedDefaultBake {
+    Scene baked, named;
+    std::filesystem::path dir;
+};
+std::optional<SavedDefaultBake> save_default_bake(const std::string& name) {
+    auto baked = test::baked(default_scene());
+    auto named = default_scene();
+    if (!baked.ok() || !named.ok()) {
+        ADD_FAILURE() << "the default scene: " << (baked.ok() ? named.error() : baked.error()).message;
+        return std::nullopt;
+    }
+    SavedDefaultBake saved{*baked, *named,
+                           std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()))};
+    std::filesystem::remove_all(saved.dir);
+    if (auto st = save_scene_bake(saved.dir, saved.baked); !st) {
+        ADD_FAILURE() << st.error().message;
+        return std::nullopt;
+    }
+    saved.named.shore.bake_folder = saved.dir;
+    return saved;
+}
+
 // Over the budget a saved bake is not read whole: the coarse level reads each tile once
 // without keeping it, and the tiles near the camera stream from the bake folder on the
 // renderer's reader thread, drawn a frame or more after they are asked for and kept in
 // host memory by nothing. The picture settles on the one streamed from the bake in memory.
 TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     namespace fs = std::filesystem;
-    auto scene = test::baked(default_scene());
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    const fs::path dir = fs::temp_directory_path() / ("tidewater_stream_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    ASSERT_TRUE(save_scene_bake(dir, *scene).ok());
-    auto named = default_scene();
-    ASSERT_TRUE(named.ok());
-    named->shore.bake_folder = dir;
+    const auto saved = save_default_bake("tidewater_stream");
+    ASSERT_TRUE(saved);
+    const Scene* scene = &saved->baked;
+    const Scene* named = &saved->named;
+    const fs::path& dir = saved->dir;
     auto loaded = bake_scene(*named);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     const ShoreWaves& model = *(*loaded)->bake->ocean_shore;
@@ -160,19 +182,16 @@ TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
 // over it, with the file's name, before anything drawn is replaced.
 TEST_F(RenderTest, AShoreTileGoneFromItsFolderFailsTheUploadByName) {
     namespace fs = std::filesystem;
-    auto scene = test::baked(default_scene());
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    const fs::path dir = fs::temp_directory_path() / ("tidewater_tile_gone_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    ASSERT_TRUE(save_scene_bake(dir, *scene).ok());
+    const auto saved = save_default_bake("tidewater_tile_gone");
+    ASSERT_TRUE(saved);
+    const Scene* scene = &saved->baked;
+    const Scene* named = &saved->named;
+    const fs::path& dir = saved->dir;
     fs::path tile;
     for (const auto& entry : fs::recursive_directory_iterator(dir))
         if (entry.path().extension() == ".png" && entry.path().parent_path().parent_path().filename() == "tiles")
             tile = entry.path();
     ASSERT_FALSE(tile.empty()) << "a stored tile's file";
-    auto named = default_scene();
-    ASSERT_TRUE(named.ok());
-    named->shore.bake_folder = dir;
     for (const std::uint64_t budget : {1ull << 30, 16ull << 20}) {
         auto loaded = bake_scene(*named);
         ASSERT_TRUE(loaded.ok()) << loaded.error().message;
