@@ -1,6 +1,7 @@
 // Google Benchmark: Eulerian height queries (SIMD Newton) against the seed
 // project's fixed-point loop, and the full surface query, for 8/32/64 waves; and
 // the harbour frame near the default island's shore (100 boats, 4 hull corners each);
+// the island's shore band with and without its shore model, on one thread;
 // whole-scene queries in a river's channel and at its mouth.
 // Run: build/bin/tidewater_query_benchmark [--benchmark_filter=...]
 // `tidewater bench` measures the same with accuracy figures, as JSON.
@@ -114,6 +115,44 @@ void BM_ShoreHarbour(benchmark::State& state) {
     state.SetLabel(full ? "surface" : "heights");
 }
 
+/// 65536 points in the default island's shore band (signed shore distance -5 to 120 m,
+/// as `tidewater bench` draws them), jittered within their texels, queried on one thread.
+/// Arg 0: heights (0) or the full surface (1). Arg 1: the island's ocean (0) or the same
+/// body without its shore model (1): open water at the same points.
+void BM_ShoreBand(benchmark::State& state) {
+    static const Scene scene = *bake_scene(default_scene().value()).value();
+    static const WaterBody open = scene.ocean.with_shore(nullptr).value();
+    static const auto pts = [] {
+        const ShoreWaves& shore = *scene.ocean.shore();
+        std::vector<glm::dvec2> centres;
+        const int n = shore.resolution();
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double d = shore.texel_values(i, j).shore_distance();
+                if (d >= -5.0 && d <= 120.0)
+                    centres.push_back(shore.corner() + shore.texel() * glm::dvec2(i + 0.5, j + 0.5));
+            }
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> jitter(-0.5, 0.5);
+        std::vector<glm::dvec2> band(65536);
+        for (auto& p : band) p = centres[rng() % centres.size()] + shore.texel() * glm::dvec2(jitter(rng), jitter(rng));
+        return band;
+    }();
+    const bool full = state.range(0) != 0, without_shore = state.range(1) != 0;
+    const WaterBody& body = without_shore ? open : scene.ocean;
+    std::vector<double> h(pts.size());
+    std::vector<SurfacePoint> out(pts.size());
+    QueryOptions one_thread;
+    one_thread.threads = 1;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(full ? query_surface(body, kTime, pts, out, one_thread).ok()
+                                      : query_heights(body, kTime, pts, h, one_thread).ok());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+    state.SetLabel(std::string(full ? "surface" : "heights") + (without_shore ? ", no shore model" : ", shore"));
+}
+
 /// 4096 points scattered over a 24 m river's channel (and, with Arg 1, its mouth and the
 /// sea beside it), queried through query_world: body lookup, river surface, waves riding
 /// the current, the blend into still water.
@@ -198,6 +237,7 @@ void BM_BuoyancyStep(benchmark::State& state) {
 BENCHMARK(BM_WakeQueries)->Arg(0)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuoyancyStep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShoreHarbour)->Arg(0)->Arg(1);
+BENCHMARK(BM_ShoreBand)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RiverWorld)->Arg(0)->Arg(1);
 BENCHMARK(BM_NewtonHeights)->Arg(8)->Arg(32)->Arg(64);
 BENCHMARK(BM_NewtonSurface)->Arg(8)->Arg(32)->Arg(64);
