@@ -1,10 +1,12 @@
 #version 450
 // Floating bodies (boats, barrels): one paint per body, a plain Lambert sun plus sky
-// ambient (as the terrain) and the same fog as the water. Drawn with terrain.vert before
+// ambient (as the terrain) and the same fog as the water (through the water from under
+// its surface). Drawn with terrain.vert before
 // the water, so the water refracts and fogs their submerged parts.
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
+#include "water_medium.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 normal;
 layout(push_constant) uniform Push { layout(offset = kPushMeshOrigin) vec4 mesh_origin; layout(offset = kPushFloatPaint) vec4 paint; };  // paint: linear RGB
@@ -24,6 +26,7 @@ void main() {
     color += 0.08 * pow(max(dot(n, h), 0.0), 40.0) * diffuse;
     uint view = uint(frame.params.w);
     if (view == kViewNormals) color = n * 0.5 + 0.5;
-    if (view == kViewShaded) color = apply_fog(color, distance, -v);
+    if (view == kViewShaded)
+        color = frame.underwater.x > 0.5 ? seen_under_water(color, world_pos.y, distance, -v) : apply_fog(color, distance, -v);
     out_color = target_color(color);
 }

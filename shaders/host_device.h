@@ -53,6 +53,13 @@ TW_CONST uint kShoreOpenSlot = 0u;
 TW_CONST uint kShoreDrySlot = 1u;
 TW_CONST uint kShoreFirstStoredSlot = 2u;
 TW_CONST float kShoreFarValue = 1.0e9f;  // m
+
+// Light through water (shaders/water_medium.glsl): its extinction coefficient per colour
+// channel (1/m), red, green, blue, and its refractive index against air.
+TW_CONST float kWaterExtinctionRed = 0.42f;
+TW_CONST float kWaterExtinctionGreen = 0.085f;
+TW_CONST float kWaterExtinctionBlue = 0.06f;
+TW_CONST float kWaterRefractiveIndex = 1.333f;
 // The model keeps its fields in layers, each a grid of such tiles: the shared fields
 // (depth, breaking, steepness scale, shore distance) at the model's texel, and the
 // waves in runs of consecutive waves, each run at the texel its shortest wave needs
@@ -318,6 +325,8 @@ struct GpuFrame {
                              // scene copy's depth is each pixel's (single-sample targets), else 0; w: how much
                              // further apart the vertices may be along the view than across it
                              // (QualitySettings::water_max_foreshortening)
+    vec4 underwater;         // x: 1 where the camera is under a body's surface (query_submersion), else 0; y: how
+                             // far under, m; z: that body's rest level (world y, m); w: unused
     GpuSky sky;
     vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
@@ -401,7 +410,7 @@ static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants every device has
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 12 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 13 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -2,12 +2,14 @@
 // Terrain shading: materials by height, slope and wetness (sand, wet sand where the
 // swash runs, grass, rock on steep ground), detail normals and albedo variation that
 // fade out where a pixel cannot resolve them, animated Voronoi caustics on submerged
-// ground, and the same fog as the water. Lighting is a plain Lambert sun plus sky
+// ground, light that fades with depth under the water, and the same fog as the water
+// (through the water from under its surface). Lighting is a plain Lambert sun plus sky
 // ambient: a host with its own lighting replaces this shader (docs/embedding.md).
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
 #include "water_quality.glsl"
+#include "water_medium.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 0) out vec4 out_color;
 
@@ -84,15 +86,20 @@ void main() {
     vec3 n = normalize(geo_n - vec3(detail.y, 0.0, detail.z) * mix(1.0, 2.5, rockiness));
     float diffuse = max(dot(n, frame.sun.xyz), 0.0);
     float sky_light = 0.5 + 0.5 * n.y;
-    vec3 color = base * (0.22 + 0.18 * sky_light + 0.75 * diffuse);
-    // A wet film reflects the sky and the sun.
+    // Under the water the sun's and the sky's light fade with depth (water_medium.glsl).
+    float depth = level - h;
+    vec3 sun_lit = depth > 0.0 ? sunlight_under_water(depth) : vec3(1.0);
+    vec3 sky_lit = depth > 0.0 ? skylight_under_water(depth) : vec3(1.0);
+    vec3 color = base * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
+    // A wet film on the ground the swash leaves bare reflects the sky and the sun (not
+    // on ground under the water, which the water's own surface covers).
+    film *= smoothstep(-1.5, -0.5, rise);
     if (film > 0.0) {
         vec3 r = reflect(-v, n);
         r.y = abs(r.y);
         float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
         color = mix(color, sky_seen(r), film * fresnel * 0.8);
     }
-    float depth = level - h;
     if (depth > 0.0) {
         // Caustics fade with depth; refraction and absorption are applied by the water pass.
         float t = frame.camera.w;
@@ -112,6 +119,7 @@ void main() {
     if (view == kViewDepth) color = depth > 0.0 ? heat_color(depth / 40.0) : vec3(0.2);
     if (view == kViewNormals) color = geo_n * 0.5 + 0.5;
     if (view == kViewWireframe) color = vec3(0.1, 0.25, 0.08);
-    if (view == kViewShaded) color = apply_fog(color, distance, -v);
+    if (view == kViewShaded)
+        color = frame.underwater.x > 0.5 ? seen_under_water(color, h, distance, -v) : apply_fog(color, distance, -v);
     out_color = target_color(color);
 }

@@ -21,6 +21,7 @@
 #include "foam_cover.glsl"
 #include "visible_facets.glsl"
 #include "scene_reflection.glsl"
+#include "water_medium.glsl"
 // Compiled twice: as is, and with TW_WATER_PER_SAMPLE for multisampled targets that shade
 // the water at every sample (its inputs interpolated there; RendererInitInfo::shade_water_per_sample).
 #ifdef TW_WATER_PER_SAMPLE
@@ -43,8 +44,6 @@ layout(location = 11) WATER_IN vec4 hidden_lagged_in;
 layout(location = 12) WATER_IN vec4 hidden_lagged_slope_in;
 layout(location = 0) out vec4 out_color;
 
-const vec3 kAbsorption = vec3(0.42, 0.085, 0.06);  // 1/m: red fades first
-const vec3 kDeepColor = vec3(0.01, 0.09, 0.13);
 const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
 
 // Detail shorter than a few footprints (wave_lod_at) cannot be drawn: it goes into the
@@ -108,6 +107,30 @@ vec3 detail_normal(GpuBodyDraw d, WaveLod lod, float footprint, inout float vari
     return normalize(n + vec3(-slope.x, 0.0, -slope.y));
 }
 
+// The surface seen from under it, `distance` m from the eye in direction -v: the world
+// above through Snell's window (the sky, or land above the water that the opaque pass
+// drew behind this pixel), the water below by total internal reflection outside it, the
+// breaking foam from below, then the water along the path back to the eye.
+vec3 seen_from_below(vec3 n, vec3 v, float distance) {
+    SurfaceFromBelow s = surface_from_below(n, v);
+    vec3 inscatter = water_inscatter(frame.underwater.y);
+    vec3 above = vec3(0.0);
+    if (s.reflectance < 1.0) {
+        above = sky_seen(s.transmitted);  // the sky table: the transmitted ray rises
+        if (frame.options.x > 0.5) {
+            vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
+            float behind_depth = textureLod(scene_depth, uv, 0.0).r;
+            if (behind_depth > 0.0 && world_from_depth(uv, behind_depth).y > world_pos.y)
+                above = from_scene_copy(textureLod(scene_color, uv, 0.0).rgb);
+        }
+    }
+    vec3 color = mix(above, inscatter, s.reflectance);
+    // Breaking foam is white from below too, lit by what reaches the surface.
+    float crest_band = smoothstep(-0.3, 0.5, eta / (max(draws[draw_push.draw_index].extra.w, 1e-3) * 0.25));
+    color = mix(color, vec3(0.85) * frame.sun.w, 0.6 * shore_info.y * (0.25 + 0.75 * crest_band));
+    return through_water(color, distance, inscatter);
+}
+
 void main() {
     // Water behind the opaque scene (the sea under the land) leaves before it is shaded:
     // the ownership test below keeps the depth test after the shader, where hardware may not
@@ -128,6 +151,10 @@ void main() {
     HiddenWaves hidden = hidden_waves_unpacked(hidden_in, hidden_lagged_in, hidden_lagged_slope_in);
     FineDetail fine;
     vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden.slope_variance, fine);
+    if (frame.underwater.x > 0.5) {
+        out_color = target_color(seen_from_below(n, v, distance));
+        return;
+    }
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
     // The unresolved crests the viewer sees (before n turns to the visible facets' mean).
     float cos_view = clamp(dot(n, v), 1e-4, 1.0);
@@ -186,8 +213,7 @@ void main() {
         thickness = max(length(floor_pos - world_pos), 0.0);
         behind = from_scene_copy(textureLod(scene_color, ruv, 0.0).rgb);
     }
-    vec3 transmittance = exp(-kAbsorption * thickness);
-    vec3 refracted = behind * transmittance * kShallowTint / max(kShallowTint.g, 1e-3) + kDeepColor * (1.0 - transmittance);
+    vec3 refracted = through_water(behind * kShallowTint / max(kShallowTint.g, 1e-3), thickness, kWaterDeepColor);
 
     // Reflection: the sky over the visible facets, and the opaque scene where their
     // reflections meet it (scene_reflection.glsl), under the same Fresnel.

@@ -75,6 +75,35 @@ TEST(WorldQuery, FindsTheBodyOfEveryPoint) {
     EXPECT_EQ(far.flow, glm::dvec2(0.0));
 }
 
+// A point in space is under a body's surface by how far its surface stands above it: in
+// the river, in the sea, and never over land, wherever the point is.
+TEST(WorldQuery, SubmersionIsHowFarTheSurfaceStandsAbove) {
+    const auto scene = bake_json(kReach);
+    const glm::dvec2 river{0.0, 30.0}, sea{2800.0, -300.0}, land{0.0, 200.0};
+    const double river_surface = query_world_point(*scene, 3.0, river).surface.height;
+    const double sea_surface = query_world_point(*scene, 3.0, sea).surface.height;
+    const std::vector<glm::dvec3> points{{river.x, river_surface - 0.4, river.y},
+                                         {river.x, river_surface + 0.1, river.y},
+                                         {sea.x, sea_surface - 3.0, sea.y},
+                                         {sea.x, sea_surface + 2.0, sea.y},
+                                         {land.x, -50.0, land.y}};
+    std::vector<Submersion> out(points.size());
+    ASSERT_TRUE(query_submersion(*scene, 3.0, points, out).ok());
+    EXPECT_TRUE(out[0].under);
+    EXPECT_EQ(out[0].body, (BodyRef{BodyKind::river, 0}));
+    EXPECT_NEAR(out[0].depth, 0.4, 1e-9);
+    EXPECT_FALSE(out[1].under);
+    EXPECT_NEAR(out[1].depth, -0.1, 1e-9);
+    EXPECT_TRUE(out[2].under);
+    EXPECT_EQ(out[2].body.kind, BodyKind::ocean);
+    EXPECT_NEAR(out[2].depth, 3.0, 1e-9);
+    EXPECT_FALSE(out[3].under);
+    EXPECT_FALSE(out[4].under) << "under the ground, not under water";
+    EXPECT_EQ(out[4].body.kind, BodyKind::none);
+    std::vector<Submersion> short_out(2);
+    EXPECT_FALSE(query_submersion(*scene, 3.0, points, short_out).ok());
+}
+
 TEST(WorldQuery, RiverSurfaceFallsUnderItsWaves) {
     const auto scene = bake_json(kReach);
     const detail::RiverBake& r = river_of(*scene, 0);

@@ -90,6 +90,21 @@ std::size_t kept_slots(const ShoreWaves& model) {
     return kept;
 }
 
+/// The slots of `named`'s saved bake that a CPU query of the camera's submersion reads and
+/// keeps (the renderer asks it each frame): all a renderer drawing that bake may keep.
+std::size_t camera_query_slots(const Scene& named, const render::FrameInfo& frame) {
+    auto probe = bake_scene(named);
+    if (!probe.ok()) {
+        ADD_FAILURE() << probe.error().message;
+        return 0;
+    }
+    Submersion s;
+    const glm::dvec3 eye = frame.camera.position;
+    EXPECT_TRUE(
+        query_submersion(**probe, frame.time, std::span<const glm::dvec3>(&eye, 1), std::span<Submersion>(&s, 1)).ok());
+    return kept_slots(*(*probe)->bake->ocean_shore);
+}
+
 /// The default island baked, its bake saved in a temporary folder `dir` (the test removes
 /// it), and the default scene naming that folder as its bake.
 struct SavedDefaultBake {
@@ -117,7 +132,8 @@ std::optional<SavedDefaultBake> save_default_bake(const std::string& name) {
 // Over the budget a saved bake is not read whole: the coarse level reads each tile once
 // without keeping it, and the tiles near the camera stream from the bake folder on the
 // renderer's reader thread, drawn a frame or more after they are asked for and kept in
-// host memory by nothing. The picture settles on the one streamed from the bake in memory.
+// host memory by nothing (but the tiles under the camera, which its submersion query reads). The picture settles on the
+// one streamed from the bake in memory.
 TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     namespace fs = std::filesystem;
     const auto saved = save_default_bake("tidewater_stream");
@@ -135,7 +151,11 @@ TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     constexpr std::uint64_t kBudget = 16ull << 20, kPerFrame = 512ull << 10;
     const StreamedFrames in_memory = render_streaming(context(), *scene, frame, kBudget, kPerFrame, 8);
     const StreamedFrames coarse = render_streaming(context(), **loaded, frame, kBudget, 0, 1);
-    EXPECT_EQ(kept_slots(model), 0u) << "the coarse level keeps no tile it read";
+    // The camera's submersion query keeps the few tiles under the camera, as any CPU query
+    // keeps what it reads; nothing else is kept.
+    const std::size_t camera_slots = camera_query_slots(*named, frame);
+    EXPECT_LE(camera_slots, 4u * (1u + model.layers().size()));
+    EXPECT_EQ(kept_slots(model), camera_slots) << "the coarse level keeps no tile it read";
 
     auto renderer = test::renderer_within_budget(context(), **loaded, kBudget, kPerFrame);
     ASSERT_NE(renderer, nullptr);
@@ -164,7 +184,7 @@ TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     EXPECT_GT(frames_reading, 0) << "the tiles were read from the folder";
     EXPECT_EQ(stats.shore_tiles_reading, 0u) << "streaming settles";
     EXPECT_EQ(stats.shore_streamed_tiles, in_memory.stats.shore_streamed_tiles);
-    EXPECT_EQ(kept_slots(model), 0u) << "no streamed tile is kept in host memory";
+    EXPECT_EQ(kept_slots(model), camera_slots) << "no streamed tile is kept in host memory";
     EXPECT_GT(coarse_diff, 0.0);
     EXPECT_LT(streamed_diff, 0.25 * coarse_diff) << "the same tiles as the bake in memory, within its 16-bit encoding";
     renderer.reset();
@@ -174,7 +194,7 @@ TEST_F(RenderTest, ShoreTilesOfASavedBakeStreamFromItsFolder) {
     ASSERT_TRUE(whole.ok()) << whole.error().message;
     const StreamedFrames resident = render_streaming(context(), **whole, frame, 1ull << 30, kPerFrame, 1);
     EXPECT_EQ(resident.stats.shore_stride, 1u);
-    EXPECT_EQ(kept_slots(*(*whole)->bake->ocean_shore), 0u) << "the device's copy is the only one";
+    EXPECT_LE(kept_slots(*(*whole)->bake->ocean_shore), camera_slots) << "the device's copy is the only one";
     fs::remove_all(dir);
 }
 

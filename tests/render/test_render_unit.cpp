@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 
 #include "descriptor_sets.hpp"
 #include "frame_constants.hpp"
@@ -149,6 +150,26 @@ TEST(QualityTiers, AShorterReflectionMarchReachesAsFar) {
 }
 
 // Every debug view's name reads back as that view, and an unknown name as none.
+// The near plane's corners lie a near-plane distance along the view, spanning the field
+// of view: its height 2 n tan(fov / 2), its width that times the aspect.
+TEST(Camera, NearPlaneCornersSpanTheFieldOfView) {
+    render::Camera camera;
+    camera.position = {10.0, -3.0, 5.0};
+    camera.target = {10.0 + 30.0, -3.0 - 4.0, 5.0 + 40.0};
+    camera.fov_y_deg = 60.0;
+    camera.near_plane = 0.5;
+    const auto c = render::near_plane_corners(camera, 2.0);
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::dvec3 centre = 0.25 * (c[0] + c[1] + c[2] + c[3]);
+    EXPECT_NEAR(glm::length(centre - (camera.position + 0.5 * forward)), 0.0, 1e-12);
+    const double height = 2.0 * 0.5 * std::tan(30.0 * 3.14159265358979323846 / 180.0);
+    EXPECT_NEAR(glm::length(c[3] - c[0]), height, 1e-12);
+    EXPECT_NEAR(glm::length(c[1] - c[0]), 2.0 * height, 1e-12);
+    for (const auto& corner : c) EXPECT_NEAR(glm::dot(corner - camera.position, forward), 0.5, 1e-12);
+    EXPECT_GT(c[3].y, c[0].y) << "the top corners are the higher";
+    EXPECT_GT(glm::dot(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)), c[1] - c[0]), 0.0) << "right is right";
+}
+
 TEST(DebugViews, NamesReadBack) {
     for (const render::DebugView view : render::all_debug_views()) {
         const auto parsed = render::parse_debug_view(render::to_string(view));

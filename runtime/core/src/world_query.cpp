@@ -139,4 +139,22 @@ WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point) 
     return out;
 }
 
+Status query_submersion(const Scene& scene, double time, std::span<const glm::dvec3> points, std::span<Submersion> out,
+                        const QueryOptions& options) {
+    if (points.size() != out.size())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("query_submersion: {} points but room for {} results", points.size(), out.size())};
+    std::vector<glm::dvec2> xz(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) xz[i] = {points[i].x, points[i].z};
+    std::vector<WorldPoint> water(points.size());
+    if (auto st = query_world(scene, time, xz, water, options); !st) return st;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        Submersion& s = out[i];
+        s.body = water[i].body;
+        s.depth = water[i].surface.height - points[i].y;
+        s.under = s.body.kind != BodyKind::none && water[i].surface.wet && s.depth > 0.0;
+    }
+    return {};
+}
+
 }  // namespace tidewater

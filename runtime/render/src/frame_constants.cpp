@@ -203,3 +203,19 @@ gpu::GpuFlowDetail gpu_flow_detail(const FlowDetailSpec& spec, double local_time
 }
 
 }  // namespace tidewater::render::detail
+
+namespace tidewater::render {
+
+std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect) {
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    glm::dvec3 right = glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0));
+    // Straight up or down: the view's right is +x, as for a camera turned from there.
+    right = glm::length(right) > 1e-12 ? glm::normalize(right) : glm::dvec3(1.0, 0.0, 0.0);
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double half_h = camera.near_plane * std::tan(0.5 * camera.fov_y_deg * kPi / 180.0);
+    const glm::dvec3 centre = camera.position + forward * camera.near_plane;
+    const glm::dvec3 across = right * (half_h * aspect), over = up * half_h;
+    return {centre - across - over, centre + across - over, centre + across + over, centre - across + over};
+}
+
+}  // namespace tidewater::render

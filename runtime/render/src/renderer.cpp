@@ -133,6 +133,7 @@ struct Renderer::Impl {
     Scene scene;                 // as set; its ocean is replaced by set_water
     std::uint64_t last_patches = 0;
     std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
+    Submersion last_camera;                                               // the last frame recorded
     std::uint64_t last_upload_bytes = 0;                                  // written by the last set_scene
     std::uint64_t shore_written = 0;                                      // by the last use_shores
     std::uint64_t shore_streamed = 0;                                     // by the last frame recorded
@@ -164,6 +165,7 @@ struct Renderer::Impl {
         detail::WakeUpload wakes;
         detail::FloatUpload floats;
         detail::TerrainSelection terrain;
+        Submersion camera;  // where the camera is: above every surface, or under a body's
     };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
     Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
@@ -307,6 +309,18 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
     p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
+    // The water's medium from under a surface: the CPU's answer for the camera, so a host
+    // that asks query_submersion the same switches with the picture.
+    QueryOptions one_thread;
+    one_thread.threads = 1;
+    one_thread.wakes = frame.wakes;
+    const glm::dvec3 eye = frame.camera.position;
+    if (!query_submersion(scene, frame.time, std::span<const glm::dvec3>(&eye, 1), std::span<Submersion>(&p.camera, 1),
+                          one_thread))
+        p.camera = Submersion{};  // a scene the queries cannot answer is drawn from above
+    if (p.camera.under)
+        p.plan.frame.underwater =
+            glm::vec4(1.0f, static_cast<float>(p.camera.depth), static_cast<float>(eye.y + p.camera.depth), 0.0f);
     p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore, quality.waves_drawn);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, p.plan.origin);
     if (!wakes) return wakes.error();
@@ -380,6 +394,7 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
                          : shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z), frame.frame_index,
                                         static_cast<std::uint32_t>(slots.size()), info.shore_stream_bytes_per_frame);
     if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
+    last_camera = planned->camera;
     plan = std::move(planned->plan);
     return {};
 }
@@ -780,6 +795,7 @@ RendererStats Renderer::stats() const {
     s.shore_streamed_bytes = impl_->shore_streamed;
     s.shore_tiles_reading = impl_->shore.reading_tiles();
     s.scene_upload_bytes = impl_->last_upload_bytes;
+    s.camera = impl_->last_camera;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;

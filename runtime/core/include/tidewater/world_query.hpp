@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <span>
 #include <string_view>
 
@@ -58,5 +59,23 @@ Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> 
 
 /// Single-point convenience wrapper of query_world (a default WorldPoint on error).
 WorldPoint query_world_point(const Scene& scene, double time, glm::dvec2 point);
+
+/// Whether a point in space lies under a body's surface, and how far under.
+struct Submersion {
+    BodyRef body;        ///< The body whose water is at the point's xz (query_world); none over land.
+    double depth = 0.0;  ///< The surface's height there minus the point's y, m: > 0 under the surface.
+    /// Under a body's surface: a body is there, its water stands above the terrain (wet) and
+    /// the point lies below the surface.
+    bool under = false;
+};
+
+/// The submersion of each point (x, y, z) of `scene` at clock time `time`, from query_world's
+/// surface at the point's xz: the answer the renderer uses for its camera each frame
+/// (render::camera_submersion), so a host that asks it of the same camera (or of the corners
+/// of its near plane, render::near_plane_corners) switches its audio and post-processing on
+/// the frame the picture changes. Wakes as in query_world. `out.size()` must equal
+/// `points.size()`. Threading and errors as query_world.
+Status query_submersion(const Scene& scene, double time, std::span<const glm::dvec3> points, std::span<Submersion> out,
+                        const QueryOptions& options = {});
 
 }  // namespace tidewater

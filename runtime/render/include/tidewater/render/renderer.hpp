@@ -25,6 +25,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <glm/gtc/quaternion.hpp>
@@ -40,6 +41,7 @@
 #include "tidewater/render/device_context.hpp"
 #include "tidewater/render/quality.hpp"
 #include "tidewater/scene.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater {
 struct HullMesh;
@@ -77,6 +79,12 @@ struct Camera {
     double fov_y_deg = 55.0;                ///< vertical field of view, in (1, 179)
     double near_plane = 0.3;                ///< m, > 0; the far plane is at infinity (reversed-Z)
 };
+
+/// The four corners of `camera`'s near plane (world, m) for a view `aspect` wide over high:
+/// bottom left, bottom right, top right, top left. With query_submersion a host learns
+/// whether the near plane lies above the water, under it, or across the water line, as
+/// RendererStats::camera tells what the renderer drew the frame from.
+std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect);
 
 struct RendererInitInfo {
     DeviceContext device;                              ///< Copied. Needs tessellationShader enabled.
@@ -204,6 +212,10 @@ struct RendererStats {
     /// scene re-baked after an edit of the one drawn writes only the texels and shore tiles
     /// the edit changed.
     std::uint64_t scene_upload_bytes = 0;
+    /// The last frame recorded was drawn from under a body's surface where `camera.under`:
+    /// query_submersion at the camera's position and the frame's time (its wakes included),
+    /// the answer a host gets by asking the same.
+    Submersion camera;
     std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
     double water_patch_size = 0.0;  ///< m

@@ -1,0 +1,70 @@
+// Light through water: Beer–Lambert extinction per colour channel along a path and the
+// light the water scatters into it, the sun's light fading with depth, and the surface
+// seen from below (Snell's window, total internal reflection outside it). One place for
+// the water pass (refraction from above, the surface from below), the terrain, the floats
+// and the sky seen from under the surface. Needs frame.glsl.
+#ifndef TIDEWATER_WATER_MEDIUM_GLSL
+#define TIDEWATER_WATER_MEDIUM_GLSL
+
+const vec3 kWaterExtinction = vec3(kWaterExtinctionRed, kWaterExtinctionGreen, kWaterExtinctionBlue);  // 1/m
+const vec3 kWaterDeepColor = vec3(0.01, 0.09, 0.13);    // what deep water sends up toward the sky
+// Along a level path under the surface the water scatters more light toward the eye than
+// deep water sends up (the sun's light comes from above, scattered forward).
+const float kWaterSideLight = 3.0;
+
+// The share of light left after `path` metres of water, per channel.
+vec3 water_transmittance(float path) { return exp(-kWaterExtinction * path); }
+
+// `color` seen through `path` metres of water that scatters `inscatter` into the path.
+vec3 through_water(vec3 color, float path, vec3 inscatter) {
+    vec3 t = water_transmittance(path);
+    return color * t + inscatter * (1.0 - t);
+}
+
+// The sun's and the sky's light `depth` metres under the surface, relative to above it:
+// the sun's along its slanted path, the sky's straight down.
+vec3 sunlight_under_water(float depth) { return water_transmittance(max(depth, 0.0) / max(frame.sun.y, 0.1)); }
+vec3 skylight_under_water(float depth) { return water_transmittance(max(depth, 0.0)); }
+
+// What the water scatters toward an eye `depth` metres under the surface: its colour far
+// along a level path there.
+vec3 water_inscatter(float depth) {
+    float sun = frame.sun.w * (0.25 + 0.75 * max(frame.sun.y, 0.0));
+    return kWaterDeepColor * kWaterSideLight * sun * skylight_under_water(depth);
+}
+
+// A point of the opaque scene `height` m high, `distance` m from an eye under a body's
+// surface (frame.underwater) along unit direction `dir`. Below the surface it is seen
+// through the water all the way. Above it, it is seen through the surface, which the water
+// pass draws in front wherever its waves are; where they leave a gap (the waterline, the
+// horizon) through a level surface: inside Snell's window with the water up to it, and
+// outside the window not at all (total internal reflection shows the water below).
+vec3 seen_under_water(vec3 color, float height, float distance, vec3 dir) {
+    vec3 inscatter = water_inscatter(frame.underwater.y);
+    if (height < frame.underwater.z) return through_water(color, distance, inscatter);
+    float path = min(frame.underwater.y / max(dir.y, 1e-4), distance);
+    if (kWaterRefractiveIndex * kWaterRefractiveIndex * (1.0 - dir.y * dir.y) >= 1.0) color = inscatter;
+    return through_water(color, path, inscatter);
+}
+
+// The surface seen from below at a point whose upward normal is `n`, from an eye in the
+// direction `v` from it (below the surface): inside Snell's window the world above is seen
+// along the transmitted direction, weighted by one minus the Fresnel reflectance from the
+// water side; outside it (48.6 degrees from the normal) total internal reflection shows
+// the water below.
+struct SurfaceFromBelow {
+    vec3 transmitted;  // the direction into the air (zero under total internal reflection)
+    float reflectance;  // Fresnel reflectance from the water side, unpolarised
+};
+SurfaceFromBelow surface_from_below(vec3 n, vec3 v) {
+    vec3 i = -v;  // from the eye, upward
+    float cos_i = clamp(dot(n, i), 1e-4, 1.0);
+    float sin_t2 = kWaterRefractiveIndex * kWaterRefractiveIndex * (1.0 - cos_i * cos_i);
+    if (sin_t2 >= 1.0) return SurfaceFromBelow(vec3(0.0), 1.0);
+    float cos_t = sqrt(1.0 - sin_t2);
+    float rs = (kWaterRefractiveIndex * cos_i - cos_t) / (kWaterRefractiveIndex * cos_i + cos_t);
+    float rp = (kWaterRefractiveIndex * cos_t - cos_i) / (kWaterRefractiveIndex * cos_t + cos_i);
+    return SurfaceFromBelow(refract(i, -n, kWaterRefractiveIndex), 0.5 * (rs * rs + rp * rp));
+}
+
+#endif

@@ -1,0 +1,200 @@
+// The view from under a body's surface on lavapipe under the validation layer: no sky
+// but through the surface, Snell's window, the seabed fading as Beer–Lambert says, and
+// the renderer's answer for its camera the same as query_submersion's.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "render_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+/// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame
+/// (rows down from the top), from the near plane's corners.
+glm::dvec3 pixel_direction(const render::Camera& camera, int w, int h, int x, int y) {
+    const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
+    const double u = (x + 0.5) / w, v = 1.0 - (y + 0.5) / h;  // v up from the bottom
+    const glm::dvec3 bottom = c[0] + (c[1] - c[0]) * u, top = c[3] + (c[2] - c[3]) * u;
+    return glm::normalize(bottom + (top - bottom) * v - camera.position);
+}
+
+/// The default scene seen level from 3 m under the sea (the issue's view, 9 m over the
+/// seabed) and from 15 m (13 m over it, further out), and looking 50 degrees up from 3 m: the frame is
+/// drawn from under the surface, as query_submersion says of the camera, and no pixel shows
+/// the sky's own colour. (Drawn as from the air, the upper half of the level view was sky.)
+TEST_F(RenderTest, UnderTheSeaNoPixelShowsTheSkyButThroughTheSurface) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    struct View {
+        glm::dvec3 position, target;
+    };
+    for (const View& view :
+         {View{{900.0, -3.0, 300.0}, {700.0, -6.0, 100.0}}, View{{1300.0, -15.0, 1200.0}, {1100.0, -18.0, 900.0}},
+          View{{900.0, -3.0, 300.0}, {880.0, -3.0 + 20.0 * std::tan(0.87), 300.0}}}) {
+        render::FrameInfo frame;
+        frame.camera.position = view.position;
+        frame.camera.target = view.target;
+        frame.time = 3.0;
+        const auto img = render(*scene, frame);
+        ASSERT_GT(img.width, 0u);
+        Submersion asked;
+        ASSERT_TRUE(query_submersion(*scene, frame.time, std::span<const glm::dvec3>(&view.position, 1),
+                                     std::span<Submersion>(&asked, 1))
+                        .ok());
+        const Submersion drawn = renderer_->stats().camera;
+        EXPECT_TRUE(asked.under);
+        EXPECT_EQ(drawn.under, asked.under);
+        EXPECT_EQ(drawn.body, asked.body);
+        EXPECT_DOUBLE_EQ(drawn.depth, asked.depth);
+        int sky = 0;
+        for (int y = 0; y < static_cast<int>(img.height); ++y)
+            for (int x = 0; x < static_cast<int>(img.width); ++x) sky += is_sky(test::pixel(img, x, y));
+        const bool up = view.target.y > view.position.y;
+        std::printf("from %.0f m under, %s: %d sky-coloured pixels\n", -view.position.y, up ? "looking up" : "level",
+                    sky);
+        if (!up) EXPECT_EQ(sky, 0);
+        if (up) {
+            // Looking up, the sky shows through Snell's window only: never more than 60
+            // degrees from the zenith (48.6 degrees, widened by the waves' slopes).
+            int outside = 0, inside = 0;
+            for (int y = 0; y < static_cast<int>(img.height); ++y)
+                for (int x = 0; x < static_cast<int>(img.width); ++x) {
+                    const double zenith = std::acos(pixel_direction(frame.camera, img.width, img.height, x, y).y);
+                    if (!is_sky(test::pixel(img, x, y))) continue;
+                    if (zenith > 60.0 * kPi / 180.0) ++outside;
+                    if (zenith < 40.0 * kPi / 180.0) ++inside;
+                }
+            EXPECT_EQ(outside, 0);
+            EXPECT_GT(inside, 1000) << "the sky through the window";
+        }
+    }
+}
+
+/// Snell's window from below calm water (a 1 mm swell) over a deep, dark bottom, looking
+/// 60 degrees up from 5 m under: the sky is seen within 48.6 degrees of the zenith
+/// (asin(1 / 1.333)) and outside it the surface reflects the water below. The window's edge,
+/// where the brightness falls half-way from the sky's to the water's, lies within a degree
+/// and a half of it.
+TEST_F(RenderTest, SnellsWindowFromBelowIsFortyEightAndAHalfDegrees) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -300}},
+        "ocean": {"waves": [{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}]}})");
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, -5.0, 0.0};
+    frame.camera.target = {10.0, -5.0 + 10.0 * std::tan(60.0 * kPi / 180.0), 0.0};
+    frame.camera.fov_y_deg = 90.0;
+    frame.sun_direction = {-0.3, 0.6, 0.74};  // behind the camera: its disc outside the frame
+    const int w = 320, h = 320;
+    const auto img = render(scene, frame, w, h);
+    ASSERT_TRUE(renderer_->stats().camera.under);
+    // Brightness by zenith angle, in half-degree bins.
+    std::map<int, std::pair<double, int>> bins;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double zenith = std::acos(pixel_direction(frame.camera, w, h, x, y).y) * 180.0 / kPi;
+            const Rgb c = test::pixel(img, x, y);
+            auto& bin = bins[static_cast<int>(std::floor(zenith * 2.0))];
+            bin.first += (c.r + c.g + c.b) / 3.0;
+            ++bin.second;
+        }
+    auto mean_between = [&](double lo, double hi) {
+        double sum = 0.0;
+        int n = 0;
+        for (const auto& [b, v] : bins)
+            if (b / 2.0 >= lo && b / 2.0 < hi) {
+                sum += v.first;
+                n += v.second;
+            }
+        return sum / std::max(n, 1);
+    };
+    const double sky = mean_between(30.0, 40.0), water = mean_between(55.0, 70.0);
+    ASSERT_GT(sky, water + 0.2) << "the window is brighter than the water around it";
+    double edge = 0.0;
+    for (const auto& [b, v] : bins) {
+        if (b / 2.0 < 40.0) continue;
+        if (v.first / v.second < 0.5 * (sky + water)) {
+            edge = b / 2.0;
+            break;
+        }
+    }
+    const double critical = std::asin(1.0 / gpu::kWaterRefractiveIndex) * 180.0 / kPi;
+    std::printf("Snell's window: sky %.3f, water %.3f, edge at %.1f degrees (critical angle %.2f)\n", sky, water, edge,
+                critical);
+    EXPECT_NEAR(edge, critical, 1.5);
+}
+
+/// A flat sandy seabed 2 m under a camera 6 m under calm water, without caustics: along the
+/// view its colour
+/// fades toward the water's own as e^(-c d) per channel (Beer–Lambert, c the water's
+/// extinction coefficient), measured between seabed 4 m and 8 to 14 m away, against the
+/// water's colour where the view meets no ground, within 10 % for green and blue (red is
+/// gone within a few metres).
+TEST_F(RenderTest, UnderWaterTheSeabedFadesAsBeerLambertSays) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -8}},
+        "ocean": {"waves": [{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}]}})");
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, -6.0, 0.0};
+    frame.camera.target = {100.0, -6.0 - 100.0 * std::tan(12.0 * kPi / 180.0), 0.0};
+    frame.camera.fov_y_deg = 60.0;
+    frame.sun_direction = {-0.2, 0.9, 0.4};
+    const int w = 480, h = 360;
+    // Without caustics (their mean brightness instead): a pattern of metre-wide cells
+    // would not average out over the near seabed's few cells.
+    auto renderer = test::renderer_with(
+        context(), scene, [](render::RendererInitInfo& init) { init.quality_overrides.caustics = false; });
+    ASSERT_TRUE(renderer);
+    auto target = render::OffscreenTarget::create(context(), w, h);
+    ASSERT_TRUE(target.ok()) << target.error().message;
+    auto rendered = (*target)->render(*renderer, frame);
+    ASSERT_TRUE(rendered.ok()) << rendered.error().message;
+    const render::RgbaImage& img = *rendered;
+    ASSERT_TRUE(renderer->stats().camera.under);
+    // Mean colour of the seabed by its distance (half-metre bins) and of the water where
+    // the view rises (no ground there: the surface from below, which reflects the water).
+    std::map<int, std::pair<Rgb, int>> by_distance;
+    Rgb water;
+    int water_n = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::dvec3 d = pixel_direction(frame.camera, w, h, x, y);
+            const Rgb c = test::pixel(img, x, y);
+            if (d.y > 0.05) {
+                water.r += c.r;
+                water.g += c.g;
+                water.b += c.b;
+                ++water_n;
+                continue;
+            }
+            if (d.y > -0.02) continue;
+            const double distance = 2.0 / -d.y;
+            auto& bin = by_distance[static_cast<int>(std::floor(distance * 2.0))];
+            bin.first.r += c.r;
+            bin.first.g += c.g;
+            bin.first.b += c.b;
+            ++bin.second;
+        }
+    ASSERT_GT(water_n, 100);
+    water = {water.r / water_n, water.g / water_n, water.b / water_n};
+    auto seabed_at = [&](double distance) {
+        const auto& [sum, n] = by_distance.at(static_cast<int>(std::floor(distance * 2.0)));
+        EXPECT_GT(n, 50) << distance;
+        return Rgb{sum.r / n, sum.g / n, sum.b / n};
+    };
+    const Rgb near = seabed_at(4.0);
+    for (double far_distance : {8.0, 11.0, 14.0}) {
+        const Rgb far = seabed_at(far_distance);
+        const double path = far_distance - 4.0;
+        const double measured_g = (far.g - water.g) / (near.g - water.g);
+        const double measured_b = (far.b - water.b) / (near.b - water.b);
+        const double expected_g = std::exp(-gpu::kWaterExtinctionGreen * path);
+        const double expected_b = std::exp(-gpu::kWaterExtinctionBlue * path);
+        std::printf("seabed %.0f m against 4 m: green %.3f (Beer-Lambert %.3f), blue %.3f (%.3f)\n", far_distance,
+                    measured_g, expected_g, measured_b, expected_b);
+        EXPECT_NEAR(measured_g / expected_g, 1.0, 0.1);
+        EXPECT_NEAR(measured_b / expected_b, 1.0, 0.1);
+    }
+}
+
+}  // namespace
+}  // namespace tidewater
