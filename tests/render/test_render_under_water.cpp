@@ -54,7 +54,9 @@ TEST_F(RenderTest, UnderTheSeaNoPixelShowsTheSkyButThroughTheSurface) {
         const bool up = view.target.y > view.position.y;
         std::printf("from %.0f m under, %s: %d sky-coloured pixels\n", -view.position.y, up ? "looking up" : "level",
                     sky);
-        if (!up) EXPECT_EQ(sky, 0);
+        if (!up) {
+            EXPECT_EQ(sky, 0);
+        }
         if (up) {
             // Looking up, the sky shows through Snell's window only: never more than 60
             // degrees from the zenith (48.6 degrees, widened by the waves' slopes).
