@@ -27,6 +27,6 @@ void main() {
     uint view = uint(frame.params.w);
     if (view == kViewNormals) color = n * 0.5 + 0.5;
     if (view == kViewShaded)
-        color = frame.underwater.x > 0.5 ? seen_under_water(color, world_pos.y, distance, -v) : apply_fog(color, distance, -v);
-    out_color = target_color(color);
+        color = pixel_under_water() ? seen_under_water(color, world_pos.y, distance, -v) : apply_fog(color, distance, -v);
+    out_color = target_color(with_water_line(color));
 }

@@ -325,8 +325,11 @@ struct GpuFrame {
                              // scene copy's depth is each pixel's (single-sample targets), else 0; w: how much
                              // further apart the vertices may be along the view than across it
                              // (QualitySettings::water_max_foreshortening)
-    vec4 underwater;         // x: 1 where the camera is under a body's surface (query_submersion), else 0; y: how
-                             // far under, m; z: that body's rest level (world y, m); w: unused
+    vec4 underwater;         // x: 1 where some of the near plane is under a body's surface (query_submersion),
+                             // else 0; y: how far under it the camera is, m (0 above it); z: the surface's height
+                             // over the camera (world y, m); w: unused
+    vec4 near_plane_depths;  // how far under the surface each corner of the near plane lies (m, > 0 under): the
+                             // image's top left, top right, bottom right, bottom left (water_medium.glsl)
     GpuSky sky;
     vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
@@ -410,7 +413,7 @@ static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants every device has
 static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 13 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 14 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

@@ -10,5 +10,5 @@ void main() {
     vec3 dir = normalize(far_point.xyz / far_point.w - frame.camera.xyz);
     // From under a surface nothing reaches the sky but through it (the water pass): what is
     // left is water as far as the eye sees.
-    out_color = target_color(frame.underwater.x > 0.5 ? water_inscatter(frame.underwater.y) : sky_color(dir));
+    out_color = target_color(with_water_line(pixel_under_water() ? water_inscatter(frame.underwater.y) : sky_color(dir)));
 }

@@ -120,6 +120,6 @@ void main() {
     if (view == kViewNormals) color = geo_n * 0.5 + 0.5;
     if (view == kViewWireframe) color = vec3(0.1, 0.25, 0.08);
     if (view == kViewShaded)
-        color = frame.underwater.x > 0.5 ? seen_under_water(color, h, distance, -v) : apply_fog(color, distance, -v);
-    out_color = target_color(color);
+        color = pixel_under_water() ? seen_under_water(color, h, distance, -v) : apply_fog(color, distance, -v);
+    out_color = target_color(with_water_line(color));
 }

@@ -151,8 +151,8 @@ void main() {
     HiddenWaves hidden = hidden_waves_unpacked(hidden_in, hidden_lagged_in, hidden_lagged_slope_in);
     FineDetail fine;
     vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden.slope_variance, fine);
-    if (frame.underwater.x > 0.5) {
-        out_color = target_color(seen_from_below(n, v, distance));
+    if (pixel_under_water()) {
+        out_color = target_color(with_water_line(seen_from_below(n, v, distance)));
         return;
     }
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));
@@ -268,5 +268,5 @@ void main() {
         if (view == kViewFoam) color = vec3(clamp(foam, 0.0, 1.0));
         if (view == kViewFlow && uint(d.body.x) != kBodyRiver) color = vec3(0.05, 0.08, 0.2);
     }
-    out_color = target_color(color);
+    out_color = target_color(with_water_line(color));
 }

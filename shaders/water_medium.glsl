@@ -21,6 +21,31 @@ vec3 through_water(vec3 color, float path, vec3 inscatter) {
     return color * t + inscatter * (1.0 - t);
 }
 
+// How far under the surface the pixel's point on the near plane lies (m, > 0 under), from
+// the near plane's corners (frame.near_plane_depths, bilinear across a plane a fraction of
+// a metre wide), and how much that changes to the next pixel.
+vec2 near_plane_depth() {
+    vec2 s = gl_FragCoord.xy * frame.viewport.zw;
+    vec4 d = frame.near_plane_depths;
+    float top = mix(d.x, d.y, s.x), bottom = mix(d.w, d.z, s.x);
+    float across = (mix(d.y, d.z, s.y) - mix(d.x, d.w, s.y)) * frame.viewport.z;
+    float down = (bottom - top) * frame.viewport.w;
+    return vec2(mix(top, bottom, s.y), length(vec2(across, down)));
+}
+
+// Whether this pixel sees the world from under a body's surface.
+bool pixel_under_water() { return frame.underwater.x > 0.5 && near_plane_depth().x > 0.0; }
+
+// The water line on the lens: where the surface crosses the near plane, a thin meniscus
+// (about two pixels, dark) between the view above and the view below.
+const vec3 kMeniscusColor = vec3(0.04, 0.07, 0.08);
+vec3 with_water_line(vec3 color) {
+    if (frame.underwater.x < 0.5) return color;
+    vec2 d = near_plane_depth();
+    float pixels = abs(d.x) / max(d.y, 1e-9);
+    return mix(color, kMeniscusColor, 0.8 * (1.0 - smoothstep(0.5, 1.5, pixels)));
+}
+
 // The sun's and the sky's light `depth` metres under the surface, relative to above it:
 // the sun's along its slanted path, the sky's straight down.
 vec3 sunlight_under_water(float depth) { return water_transmittance(max(depth, 0.0) / max(frame.sun.y, 0.1)); }
@@ -34,7 +59,7 @@ vec3 water_inscatter(float depth) {
 }
 
 // A point of the opaque scene `height` m high, `distance` m from an eye under a body's
-// surface (frame.underwater) along unit direction `dir`. Below the surface it is seen
+// surface (a pixel_under_water) along unit direction `dir`. Below the surface it is seen
 // through the water all the way. Above it, it is seen through the surface, which the water
 // pass draws in front wherever its waves are; where they leave a gap (the waterline, the
 // horizon) through a level surface: inside Snell's window with the water up to it, and

@@ -2,6 +2,7 @@
 // but through the surface, Snell's window, the seabed fading as Beer–Lambert says, and
 // the renderer's answer for its camera the same as query_submersion's.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -196,6 +197,78 @@ TEST_F(RenderTest, UnderWaterTheSeabedFadesAsBeerLambertSays) {
         EXPECT_NEAR(measured_g / expected_g, 1.0, 0.1);
         EXPECT_NEAR(measured_b / expected_b, 1.0, 0.1);
     }
+}
+
+/// A camera level with calm-ish water (a 20 m swell 0.3 m high) at an instant when the
+/// surface crosses its near plane: every column of the frame is bright above (the sky and
+/// the sea seen from the air) and dark below (the water seen from under it) with one edge
+/// between, a dark meniscus at most a few pixels tall, at the row where query_submersion
+/// puts the water line on the near plane (within two pixels).
+TEST_F(RenderTest, TheWaterLineCrossesTheLensAsOneEdge) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -30}},
+        "ocean": {"waves": [{"direction": 20, "wavelength": 20, "amplitude": 0.3, "steepness": 0.5}]}})");
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 0.0, 0.0};
+    frame.camera.target = {100.0, 0.0, 0.0};
+    frame.camera.fov_y_deg = 50.0;
+    // An instant when the surface over the lens stands 5 cm above its centre.
+    for (double t = 0.0; t < 10.0; t += 0.01) {
+        const double h = query_world_point(scene, t, {frame.camera.near_plane, 0.0}).surface.height;
+        if (h > 0.04 && h < 0.06) {
+            frame.time = t;
+            break;
+        }
+    }
+    ASSERT_GT(frame.time, 0.0);
+    const int w = 320, h = 180;
+    const auto img = render(scene, frame, w, h);
+    EXPECT_TRUE(renderer_->stats().camera.under) << "the eye is 5 cm under";
+    // Where the CPU puts the water line on the centre column of the near plane.
+    const auto c = render::near_plane_corners(frame.camera, static_cast<double>(w) / h);
+    const glm::dvec3 top = 0.5 * (c[2] + c[3]), bottom = 0.5 * (c[0] + c[1]);
+    std::array<Submersion, 2> s;
+    const std::array<glm::dvec3, 2> ends{top, bottom};
+    ASSERT_TRUE(query_submersion(scene, frame.time, ends, s).ok());
+    ASSERT_LT(s[0].depth, 0.0);
+    ASSERT_GT(s[1].depth, 0.0);
+    const double expected_row = h * s[0].depth / (s[0].depth - s[1].depth);
+    auto luminance = [&](int x, int y) {
+        const Rgb p = test::pixel(img, x, y);
+        return 0.3 * p.r + 0.6 * p.g + 0.1 * p.b;
+    };
+    int worst_band = 0;
+    double worst_offset = 0.0;
+    for (int x = 0; x < w; x += 4) {
+        // Bright above, dark below: the first dark row from the top, the last bright row from
+        // the bottom; between them the meniscus.
+        int first_dark = h, last_bright = -1;
+        for (int y = 0; y < h; ++y)
+            if (luminance(x, y) < 0.25) {
+                first_dark = y;
+                break;
+            }
+        for (int y = h - 1; y >= 0; --y)
+            if (luminance(x, y) > 0.25) {
+                last_bright = y;
+                break;
+            }
+        ASSERT_LT(first_dark, h) << "column " << x << " has the view below";
+        ASSERT_GE(last_bright, 0) << "column " << x << " has the view above";
+        EXPECT_LE(last_bright, first_dark) << "column " << x << ": one edge, no bright row under the water line";
+        int dark_rows_above = 0;
+        for (int y = 0; y < first_dark; ++y) dark_rows_above += luminance(x, y) < 0.25;
+        EXPECT_EQ(dark_rows_above, 0) << "column " << x;
+        // The meniscus: the darkest rows at the edge.
+        int band = 0;
+        for (int y = std::max(first_dark - 4, 0); y < std::min(first_dark + 8, h); ++y) band += luminance(x, y) < 0.08;
+        worst_band = std::max(worst_band, band);
+        if (x == w / 2 || x == w / 2 - 1) worst_offset = std::max(worst_offset, std::abs(first_dark - expected_row));
+    }
+    std::printf("water line: at row %.1f of %d by the CPU, the frame's %.1f rows from it; meniscus up to %d rows\n",
+                expected_row, h, worst_offset, worst_band);
+    EXPECT_LE(worst_offset, 2.0);
+    EXPECT_GE(worst_band, 1) << "a dark meniscus";
+    EXPECT_LE(worst_band, 4) << "a thin one";
 }
 
 }  // namespace

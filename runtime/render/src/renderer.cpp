@@ -309,18 +309,30 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
     p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
-    // The water's medium from under a surface: the CPU's answer for the camera, so a host
-    // that asks query_submersion the same switches with the picture.
+    // Above or under the water: the CPU's answer for the camera and for the corners of its
+    // near plane, so a host that asks query_submersion the same switches with the picture.
+    // The surface across the near plane (a fraction of a metre) is taken as bilinear between
+    // its corners: the water line drawn on the lens.
     QueryOptions one_thread;
     one_thread.threads = 1;
     one_thread.wakes = frame.wakes;
-    const glm::dvec3 eye = frame.camera.position;
-    if (!query_submersion(scene, frame.time, std::span<const glm::dvec3>(&eye, 1), std::span<Submersion>(&p.camera, 1),
-                          one_thread))
-        p.camera = Submersion{};  // a scene the queries cannot answer is drawn from above
-    if (p.camera.under)
-        p.plan.frame.underwater =
-            glm::vec4(1.0f, static_cast<float>(p.camera.depth), static_cast<float>(eye.y + p.camera.depth), 0.0f);
+    const auto corners = near_plane_corners(frame.camera, static_cast<double>(extent.width) / extent.height);
+    // The eye, then the image's top left, top right, bottom right and bottom left.
+    const std::array<glm::dvec3, 5> asked{frame.camera.position, corners[3], corners[2], corners[1], corners[0]};
+    std::array<Submersion, 5> answers{};
+    if (!query_submersion(scene, frame.time, asked, answers, one_thread))
+        answers = {};  // a scene the queries cannot answer is drawn from above
+    p.camera = answers[0];
+    if (std::any_of(answers.begin(), answers.end(), [](const Submersion& s) { return s.under; })) {
+        // A corner with no water over it (over land) counts as above the water.
+        auto depth = [](const Submersion& s) {
+            return static_cast<float>(s.under ? s.depth : std::min(s.depth, -1e-3));
+        };
+        p.plan.frame.underwater = glm::vec4(1.0f, static_cast<float>(std::max(p.camera.depth, 0.0)),
+                                            static_cast<float>(frame.camera.position.y + p.camera.depth), 0.0f);
+        p.plan.frame.near_plane_depths =
+            glm::vec4(depth(answers[1]), depth(answers[2]), depth(answers[3]), depth(answers[4]));
+    }
     p.draws = detail::plan_body_draws(scene, bodies, frame.time, p.plan, shore, quality.waves_drawn);
     auto wakes = detail::pack_wakes(scene, frame.wakes, frame.time, p.plan.origin);
     if (!wakes) return wakes.error();

@@ -212,9 +212,11 @@ struct RendererStats {
     /// scene re-baked after an edit of the one drawn writes only the texels and shore tiles
     /// the edit changed.
     std::uint64_t scene_upload_bytes = 0;
-    /// The last frame recorded was drawn from under a body's surface where `camera.under`:
-    /// query_submersion at the camera's position and the frame's time (its wakes included),
-    /// the answer a host gets by asking the same.
+    /// The camera's submersion in the last frame recorded: query_submersion at its position
+    /// and the frame's time (its wakes included), the answer a host gets by asking the same.
+    /// Where `camera.under` the frame was drawn from under a body's surface, but for the
+    /// part of the near plane above it when the water line crosses the lens (the renderer
+    /// asks the near plane's corners too: near_plane_corners).
     Submersion camera;
     std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
