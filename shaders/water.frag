@@ -151,7 +151,7 @@ void main() {
     HiddenWaves hidden = hidden_waves_unpacked(hidden_in, hidden_lagged_in, hidden_lagged_slope_in);
     FineDetail fine;
     vec3 n = detail_normal(d, lod, footprint, variance, jacobian_detail, lagged_detail, hidden.slope_variance, fine);
-    if (pixel_under_water()) {
+    if (pixel_under_water() && view == kViewShaded) {  // the debug views show the same from both sides
         out_color = target_color(with_water_line(seen_from_below(n, v, distance)));
         return;
     }
@@ -268,5 +268,6 @@ void main() {
         if (view == kViewFoam) color = vec3(clamp(foam, 0.0, 1.0));
         if (view == kViewFlow && uint(d.body.x) != kBodyRiver) color = vec3(0.05, 0.08, 0.2);
     }
-    out_color = target_color(with_water_line(color));
+    color = with_water_line(color);
+    out_color = target_color(color);
 }

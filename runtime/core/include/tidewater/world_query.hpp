@@ -71,7 +71,7 @@ struct Submersion {
 
 /// The submersion of each point (x, y, z) of `scene` at clock time `time`, from query_world's
 /// surface at the point's xz: the answer the renderer uses for its camera each frame
-/// (render::camera_submersion), so a host that asks it of the same camera (or of the corners
+/// (render::RendererStats::camera), so a host that asks it of the same camera (or of the corners
 /// of its near plane, render::near_plane_corners) switches its audio and post-processing on
 /// the frame the picture changes. Wakes as in query_world. `out.size()` must equal
 /// `points.size()`. Threading and errors as query_world.
