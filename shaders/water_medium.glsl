@@ -37,7 +37,7 @@ vec2 near_plane_depth() {
 bool pixel_under_water() { return frame.underwater.x > 0.5 && near_plane_depth().x > 0.0; }
 
 // The water line on the lens: where the surface crosses the near plane, a thin meniscus
-// (about two pixels, dark) between the view above and the view below.
+// (a pixel or two, dark) between the view above and the view below.
 const vec3 kMeniscusColor = vec3(0.04, 0.07, 0.08);
 vec3 with_water_line(vec3 color) {
     if (frame.underwater.x < 0.5) return color;
@@ -58,20 +58,6 @@ vec3 water_inscatter(float depth) {
     return kWaterDeepColor * kWaterSideLight * sun * skylight_under_water(depth);
 }
 
-// A point of the opaque scene `height` m high, `distance` m from an eye under a body's
-// surface (a pixel_under_water) along unit direction `dir`. Below the surface it is seen
-// through the water all the way. Above it, it is seen through the surface, which the water
-// pass draws in front wherever its waves are; where they leave a gap (the waterline, the
-// horizon) through a level surface: inside Snell's window with the water up to it, and
-// outside the window not at all (total internal reflection shows the water below).
-vec3 seen_under_water(vec3 color, float height, float distance, vec3 dir) {
-    vec3 inscatter = water_inscatter(frame.underwater.y);
-    if (height < frame.underwater.z) return through_water(color, distance, inscatter);
-    float path = min(frame.underwater.y / max(dir.y, 1e-4), distance);
-    if (kWaterRefractiveIndex * kWaterRefractiveIndex * (1.0 - dir.y * dir.y) >= 1.0) color = inscatter;
-    return through_water(color, path, inscatter);
-}
-
 // The surface seen from below at a point whose upward normal is `n`, from an eye in the
 // direction `v` from it (below the surface): inside Snell's window the world above is seen
 // along the transmitted direction, weighted by one minus the Fresnel reflectance from the
@@ -90,6 +76,20 @@ SurfaceFromBelow surface_from_below(vec3 n, vec3 v) {
     float rs = (kWaterRefractiveIndex * cos_i - cos_t) / (kWaterRefractiveIndex * cos_i + cos_t);
     float rp = (kWaterRefractiveIndex * cos_t - cos_i) / (kWaterRefractiveIndex * cos_t + cos_i);
     return SurfaceFromBelow(refract(i, -n, kWaterRefractiveIndex), 0.5 * (rs * rs + rp * rp));
+}
+
+// A point of the opaque scene `height` m high, `distance` m from an eye under a body's
+// surface (a pixel_under_water) along unit direction `dir`. Below the surface it is seen
+// through the water all the way. Above it, it is seen through the surface, which the water
+// pass draws in front wherever its waves are; where they leave a gap (the waterline, the
+// horizon) through a level surface: inside Snell's window with the water up to it, and
+// outside the window not at all (total internal reflection shows the water below).
+vec3 seen_under_water(vec3 color, float height, float distance, vec3 dir) {
+    vec3 inscatter = water_inscatter(frame.underwater.y);
+    if (height < frame.underwater.z) return through_water(color, distance, inscatter);
+    float path = min(frame.underwater.y / max(dir.y, 1e-4), distance);
+    if (surface_from_below(vec3(0.0, 1.0, 0.0), -dir).reflectance >= 1.0) color = inscatter;
+    return through_water(color, path, inscatter);
 }
 
 #endif
