@@ -54,11 +54,8 @@ TW_CONST uint kShoreDrySlot = 1u;
 TW_CONST uint kShoreFirstStoredSlot = 2u;
 TW_CONST float kShoreFarValue = 1.0e9f;  // m
 
-// Light through water (shaders/water_medium.glsl): its extinction coefficient per colour
-// channel (1/m), red, green, blue, and its refractive index against air.
-TW_CONST float kWaterExtinctionRed = 0.42f;
-TW_CONST float kWaterExtinctionGreen = 0.085f;
-TW_CONST float kWaterExtinctionBlue = 0.06f;
+// Light through water (shaders/water_medium.glsl): water's refractive index against air
+// (each body's extinction and colour are its own: GpuBodyDraw.optics_*, GpuFrame.water_*).
 TW_CONST float kWaterRefractiveIndex = 1.333f;
 // The model keeps its fields in layers, each a grid of such tiles: the shared fields
 // (depth, breaking, steepness scale, shore distance) at the model's texel, and the
@@ -330,6 +327,9 @@ struct GpuFrame {
                              // over the camera (world y, m); w: unused
     vec4 near_plane_depths;  // how far under the surface each corner of the near plane lies (m, > 0 under): the
                              // image's top left, top right, bottom right, bottom left (water_medium.glsl)
+    vec4 water_extinction;   // xyz: the extinction (1/m, red, green, blue) of the body over the camera, the ocean's
+                             // when it is above every surface (tidewater::optics_of); w: unused
+    vec4 water_color;        // xyz: that body's deep-water colour (tidewater::WaterOptics::color); w: unused
     GpuSky sky;
     vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
@@ -368,6 +368,8 @@ struct GpuBodyDraw {
     vec4 ripple;        // x: amplitude (m, 0 = none); y: 1 / wavelength (1/m); z: octaves; w: seed (as float)
     vec4 ripple_offset; // xy: drift (lattice units, reduced mod 256); zw: O mod 256 ripple wavelengths (m)
     vec4 lod;           // x: the mean square slope of its waves (WaveSet::mean_square_slope; a river's: its own and its still water's)
+    vec4 optics_extinction;  // xyz: its water's extinction (1/m, red, green, blue; tidewater::optics_of); w: unused
+    vec4 optics_color;       // xyz: its deep-water colour (tidewater::WaterOptics::color); w: unused
 };
 
 struct GpuQueryParams {
@@ -412,8 +414,8 @@ static_assert(kFoamLags == 4u);  // the shaders' vec4s
 static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants every device has
-static_assert(sizeof(GpuBodyDraw) == 11 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 14 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuBodyDraw) == 13 * 16 + 64);
+static_assert(sizeof(GpuFrame) == 2 * 64 + 16 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

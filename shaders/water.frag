@@ -44,8 +44,6 @@ layout(location = 11) WATER_IN vec4 hidden_lagged_in;
 layout(location = 12) WATER_IN vec4 hidden_lagged_slope_in;
 layout(location = 0) out vec4 out_color;
 
-const vec3 kShallowTint = vec3(0.55, 0.85, 0.8);
-
 // Detail shorter than a few footprints (wave_lod_at) cannot be drawn: it goes into the
 // slope variance instead (LEAN-style), which widens the sun's glitter and leaves the
 // averaged reflection, as the supersampled picture shows, instead of aliasing.
@@ -128,7 +126,7 @@ vec3 seen_from_below(vec3 n, vec3 v, float distance) {
     // Breaking foam is white from below too, lit by what reaches the surface.
     float crest_band = smoothstep(-0.3, 0.5, eta / (max(draws[draw_push.draw_index].extra.w, 1e-3) * 0.25));
     color = mix(color, vec3(0.85) * frame.sun.w, 0.6 * shore_info.y * (0.25 + 0.75 * crest_band));
-    return through_water(color, distance, inscatter);
+    return through_water(camera_water(), color, distance, inscatter);
 }
 
 void main() {
@@ -213,7 +211,8 @@ void main() {
         thickness = max(length(floor_pos - world_pos), 0.0);
         behind = from_scene_copy(textureLod(scene_color, ruv, 0.0).rgb);
     }
-    vec3 refracted = through_water(behind * kShallowTint / max(kShallowTint.g, 1e-3), thickness, kWaterDeepColor);
+    WaterOptics water = WaterOptics(d.optics_extinction.xyz, d.optics_color.xyz);
+    vec3 refracted = through_water(water, behind, thickness, water.color);
 
     // Reflection: the sky over the visible facets, and the opaque scene where their
     // reflections meet it (scene_reflection.glsl), under the same Fresnel.

@@ -3,21 +3,30 @@
 // seen from below (Snell's window, total internal reflection outside it). One place for
 // the water pass (refraction from above, the surface from below), the terrain, the floats
 // and the sky seen from under the surface. Needs frame.glsl.
+//
+// A body's optics (tidewater::WaterOptics): its extinction per channel (1/m) and the colour
+// deep water sends up. Each water draw has its body's (GpuBodyDraw.optics_*); the frame has
+// the body over the camera's (GpuFrame.water_*: the ocean's when the camera is above every
+// surface), which lights the seabed and fills every path from an eye under the surface.
 #ifndef TIDEWATER_WATER_MEDIUM_GLSL
 #define TIDEWATER_WATER_MEDIUM_GLSL
 
-const vec3 kWaterExtinction = vec3(kWaterExtinctionRed, kWaterExtinctionGreen, kWaterExtinctionBlue);  // 1/m
-const vec3 kWaterDeepColor = vec3(0.01, 0.09, 0.13);    // what deep water sends up toward the sky
+struct WaterOptics {
+    vec3 extinction;  // 1/m
+    vec3 color;       // what deep water sends up toward the sky
+};
+WaterOptics camera_water() { return WaterOptics(frame.water_extinction.xyz, frame.water_color.xyz); }
+
 // Along a level path under the surface the water scatters more light toward the eye than
 // deep water sends up (the sun's light comes from above, scattered forward).
 const float kWaterSideLight = 3.0;
 
 // The share of light left after `path` metres of water, per channel.
-vec3 water_transmittance(float path) { return exp(-kWaterExtinction * path); }
+vec3 water_transmittance(WaterOptics water, float path) { return exp(-water.extinction * path); }
 
 // `color` seen through `path` metres of water that scatters `inscatter` into the path.
-vec3 through_water(vec3 color, float path, vec3 inscatter) {
-    vec3 t = water_transmittance(path);
+vec3 through_water(WaterOptics water, vec3 color, float path, vec3 inscatter) {
+    vec3 t = water_transmittance(water, path);
     return color * t + inscatter * (1.0 - t);
 }
 
@@ -48,14 +57,14 @@ vec3 with_water_line(vec3 color) {
 
 // The sun's and the sky's light `depth` metres under the surface, relative to above it:
 // the sun's along its slanted path, the sky's straight down.
-vec3 sunlight_under_water(float depth) { return water_transmittance(max(depth, 0.0) / max(frame.sun.y, 0.1)); }
-vec3 skylight_under_water(float depth) { return water_transmittance(max(depth, 0.0)); }
+vec3 sunlight_under_water(float depth) { return water_transmittance(camera_water(), max(depth, 0.0) / max(frame.sun.y, 0.1)); }
+vec3 skylight_under_water(float depth) { return water_transmittance(camera_water(), max(depth, 0.0)); }
 
 // What the water scatters toward an eye `depth` metres under the surface: its colour far
 // along a level path there.
 vec3 water_inscatter(float depth) {
     float sun = frame.sun.w * (0.25 + 0.75 * max(frame.sun.y, 0.0));
-    return kWaterDeepColor * kWaterSideLight * sun * skylight_under_water(depth);
+    return frame.water_color.xyz * kWaterSideLight * sun * skylight_under_water(depth);
 }
 
 // The surface seen from below at a point whose upward normal is `n`, from an eye in the
@@ -86,10 +95,10 @@ SurfaceFromBelow surface_from_below(vec3 n, vec3 v) {
 // outside the window not at all (total internal reflection shows the water below).
 vec3 seen_under_water(vec3 color, float height, float distance, vec3 dir) {
     vec3 inscatter = water_inscatter(frame.underwater.y);
-    if (height < frame.underwater.z) return through_water(color, distance, inscatter);
+    if (height < frame.underwater.z) return through_water(camera_water(), color, distance, inscatter);
     float path = min(frame.underwater.y / max(dir.y, 1e-4), distance);
     if (surface_from_below(vec3(0.0, 1.0, 0.0), -dir).reflectance >= 1.0) color = inscatter;
-    return through_water(color, path, inscatter);
+    return through_water(camera_water(), color, path, inscatter);
 }
 
 #endif

@@ -1,11 +1,14 @@
 // The view from under a body's surface on lavapipe under the validation layer: no sky
 // but through the surface, Snell's window, the seabed fading as Beer–Lambert says, and
 // the renderer's answer for its camera the same as query_submersion's.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
 
 #include "render_fixture.hpp"
 
@@ -128,74 +131,82 @@ TEST_F(RenderTest, SnellsWindowFromBelowIsFortyEightAndAHalfDegrees) {
 }
 
 /// A flat sandy seabed 2 m under a camera 6 m under calm water, without caustics: along the
-/// view its colour
-/// fades toward the water's own as e^(-c d) per channel (Beer–Lambert, c the water's
-/// extinction coefficient), measured between seabed 4 m and 8 to 14 m away, against the
-/// water's colour where the view meets no ground, within 10 % for green and blue (red is
-/// gone within a few metres).
+/// view its colour fades toward the water's own as e^(-c d) per channel (Beer–Lambert, c the
+/// extinction of the ocean's optics), measured between seabed 4 m and 8 to 14 m away, against
+/// the water's colour where the view meets no ground, within 10 % for green and blue (red is
+/// gone within a few metres). Once with the ocean's default optics (Jerlov's type II), once
+/// with a preset's own extinction.
 TEST_F(RenderTest, UnderWaterTheSeabedFadesAsBeerLambertSays) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -8}},
-        "ocean": {"waves": [{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}]}})");
-    render::FrameInfo frame;
-    frame.camera.position = {0.0, -6.0, 0.0};
-    frame.camera.target = {100.0, -6.0 - 100.0 * std::tan(12.0 * kPi / 180.0), 0.0};
-    frame.camera.fov_y_deg = 60.0;
-    frame.sun_direction = {-0.2, 0.9, 0.4};
-    const int w = 480, h = 360;
-    // Without caustics (their mean brightness instead): a pattern of metre-wide cells
-    // would not average out over the near seabed's few cells.
-    auto renderer = test::renderer_with(
-        context(), scene, [](render::RendererInitInfo& init) { init.quality_overrides.caustics = false; });
-    ASSERT_TRUE(renderer);
-    auto target = render::OffscreenTarget::create(context(), w, h);
-    ASSERT_TRUE(target.ok()) << target.error().message;
-    auto rendered = (*target)->render(*renderer, frame);
-    ASSERT_TRUE(rendered.ok()) << rendered.error().message;
-    const render::RgbaImage& img = *rendered;
-    ASSERT_TRUE(renderer->stats().camera.under);
-    // Mean colour of the seabed by its distance (half-metre bins) and of the water where
-    // the view rises (no ground there: the surface from below, which reflects the water).
-    std::map<int, std::pair<Rgb, int>> by_distance;
-    Rgb water;
-    int water_n = 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const glm::dvec3 d = pixel_direction(frame.camera, w, h, x, y);
-            const Rgb c = test::pixel(img, x, y);
-            if (d.y > 0.05) {
-                water.r += c.r;
-                water.g += c.g;
-                water.b += c.b;
-                ++water_n;
-                continue;
+    auto measure_seabed_fade = [&](const std::string& scene_json) {
+        const Scene scene = scene_from(scene_json);
+        const WaterOptics optics = optics_of(scene, BodyRef{BodyKind::ocean, -1});
+        render::FrameInfo frame;
+        frame.camera.position = {0.0, -6.0, 0.0};
+        frame.camera.target = {100.0, -6.0 - 100.0 * std::tan(12.0 * kPi / 180.0), 0.0};
+        frame.camera.fov_y_deg = 60.0;
+        frame.sun_direction = {-0.2, 0.9, 0.4};
+        const int w = 480, h = 360;
+        // Without caustics (their mean brightness instead): a pattern of metre-wide cells
+        // would not average out over the near seabed's few cells.
+        auto renderer = test::renderer_with(
+            context(), scene, [](render::RendererInitInfo& init) { init.quality_overrides.caustics = false; });
+        ASSERT_TRUE(renderer);
+        auto target = render::OffscreenTarget::create(context(), w, h);
+        ASSERT_TRUE(target.ok()) << target.error().message;
+        auto rendered = (*target)->render(*renderer, frame);
+        ASSERT_TRUE(rendered.ok()) << rendered.error().message;
+        const render::RgbaImage& img = *rendered;
+        ASSERT_TRUE(renderer->stats().camera.under);
+        // Mean colour of the seabed by its distance (half-metre bins) and of the water where
+        // the view rises (no ground there: the surface from below, which reflects the water).
+        std::map<int, std::pair<Rgb, int>> by_distance;
+        Rgb water;
+        int water_n = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const glm::dvec3 d = pixel_direction(frame.camera, w, h, x, y);
+                const Rgb c = test::pixel(img, x, y);
+                if (d.y > 0.05) {
+                    water.r += c.r;
+                    water.g += c.g;
+                    water.b += c.b;
+                    ++water_n;
+                    continue;
+                }
+                if (d.y > -0.02) continue;
+                const double distance = 2.0 / -d.y;
+                auto& bin = by_distance[static_cast<int>(std::floor(distance * 2.0))];
+                bin.first.r += c.r;
+                bin.first.g += c.g;
+                bin.first.b += c.b;
+                ++bin.second;
             }
-            if (d.y > -0.02) continue;
-            const double distance = 2.0 / -d.y;
-            auto& bin = by_distance[static_cast<int>(std::floor(distance * 2.0))];
-            bin.first.r += c.r;
-            bin.first.g += c.g;
-            bin.first.b += c.b;
-            ++bin.second;
+        ASSERT_GT(water_n, 100);
+        water = {water.r / water_n, water.g / water_n, water.b / water_n};
+        auto seabed_at = [&](double distance) {
+            const auto& [sum, n] = by_distance.at(static_cast<int>(std::floor(distance * 2.0)));
+            EXPECT_GT(n, 50) << distance;
+            return Rgb{sum.r / n, sum.g / n, sum.b / n};
+        };
+        const Rgb near = seabed_at(4.0);
+        for (double far_distance : {8.0, 11.0, 14.0}) {
+            const Rgb far = seabed_at(far_distance);
+            const double path = far_distance - 4.0;
+            const double measured_g = (far.g - water.g) / (near.g - water.g);
+            const double measured_b = (far.b - water.b) / (near.b - water.b);
+            const double expected_g = std::exp(-optics.extinction.g * path);
+            const double expected_b = std::exp(-optics.extinction.b * path);
+            std::printf("seabed %.0f m against 4 m: green %.3f (Beer-Lambert %.3f), blue %.3f (%.3f)\n", far_distance,
+                        measured_g, expected_g, measured_b, expected_b);
+            EXPECT_NEAR(measured_g / expected_g, 1.0, 0.1);
+            EXPECT_NEAR(measured_b / expected_b, 1.0, 0.1);
         }
-    ASSERT_GT(water_n, 100);
-    water = {water.r / water_n, water.g / water_n, water.b / water_n};
-    auto seabed_at = [&](double distance) {
-        const auto& [sum, n] = by_distance.at(static_cast<int>(std::floor(distance * 2.0)));
-        EXPECT_GT(n, 50) << distance;
-        return Rgb{sum.r / n, sum.g / n, sum.b / n};
     };
-    const Rgb near = seabed_at(4.0);
-    for (double far_distance : {8.0, 11.0, 14.0}) {
-        const Rgb far = seabed_at(far_distance);
-        const double path = far_distance - 4.0;
-        const double measured_g = (far.g - water.g) / (near.g - water.g);
-        const double measured_b = (far.b - water.b) / (near.b - water.b);
-        const double expected_g = std::exp(-gpu::kWaterExtinctionGreen * path);
-        const double expected_b = std::exp(-gpu::kWaterExtinctionBlue * path);
-        std::printf("seabed %.0f m against 4 m: green %.3f (Beer-Lambert %.3f), blue %.3f (%.3f)\n", far_distance,
-                    measured_g, expected_g, measured_b, expected_b);
-        EXPECT_NEAR(measured_g / expected_g, 1.0, 0.1);
-        EXPECT_NEAR(measured_b / expected_b, 1.0, 0.1);
+    for (const char* preset_optics : {"", R"(, "optics": {"extinction": [0.55, 0.12, 0.1]})"}) {
+        SCOPED_TRACE(preset_optics);
+        measure_seabed_fade(fmt::format(R"({{"version": 1, "water_level": 0, "terrain": {{"flat": {{"height": -8}}}},
+            "ocean": {{"waves": [{{"direction": 0, "wavelength": 50, "amplitude": 0.001, "steepness": 0.1}}]{}}}}})",
+                                        preset_optics));
     }
 }
 

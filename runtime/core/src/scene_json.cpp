@@ -164,6 +164,9 @@ Status read_profile_settings(const ObjectReader& r, WaterProfile& p) {
     if (r.has("flow")) {
         if (auto st = read_flow_detail(r, p.flow); !st) return st;
     }
+    if (r.has("optics")) {
+        if (auto st = detail::read_optics(r, p.optics); !st) return st;
+    }
     if (auto st = read_fold_policy(r, p.fold_policy); !st) return st;
     return r.number("time_offset", p.time_offset);
 }
@@ -251,8 +254,8 @@ Result<WaterProfile> read_water_profile(const json& value, const std::string& so
     if (value.is_string()) return load_preset(value.get<std::string>(), base_dir);
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
-    if (auto st = r->allow_only(
-            {"preset", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset", "name", "description"});
+    if (auto st = r->allow_only({"preset", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset", "name",
+                                 "description", "optics"});
         !st)
         return st.error();
     WaterProfile profile;
@@ -302,8 +305,8 @@ Result<WaterProfile> parse_preset(std::string_view json_text, const std::string&
     if (!doc) return doc.error();
     auto r = ObjectReader::open(*doc, source, "");
     if (!r) return r.error();
-    if (auto st = r->allow_only(
-            {"version", "name", "description", "waves", "spectrum", "ripples", "flow", "fold_policy", "time_offset"});
+    if (auto st = r->allow_only({"version", "name", "description", "waves", "spectrum", "ripples", "flow",
+                                 "fold_policy", "time_offset", "optics"});
         !st)
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();

@@ -24,6 +24,8 @@ Result<WaterBody> WaterBody::create(const WaterProfile& profile, double level, c
     if (!waves) return std::move(waves).error();
     if (auto st = validate(profile.ripples, context + "/ripples"); !st) return st.error();
     if (auto st = validate(profile.flow, context + "/flow"); !st) return st.error();
+    if (profile.optics)
+        if (auto st = validate(*profile.optics, context + "/optics"); !st) return st.error();
     WaterBody body;
     body.profile_ = profile;
     body.waves_ = std::move(waves).value();

@@ -112,6 +112,20 @@ std::string_view body_name(const Scene& scene, BodyRef body) {
     return "";
 }
 
+WaterOptics optics_of(const Scene& scene, BodyRef body) {
+    const auto index = static_cast<std::size_t>(body.index);
+    const WaterProfile* profile = &scene.ocean.profile();
+    JerlovType fallback = kDefaultOceanWaterType;
+    if (body.kind == BodyKind::lake && body.index >= 0 && index < scene.lakes.size()) {
+        profile = &scene.lakes[index].body.profile();
+        fallback = kDefaultInlandWaterType;
+    } else if (body.kind == BodyKind::river && body.index >= 0 && index < scene.rivers.size()) {
+        profile = &scene.rivers[index].body.profile();
+        fallback = kDefaultInlandWaterType;
+    }
+    return profile->optics ? *profile->optics : jerlov_optics(fallback);
+}
+
 Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> points, std::span<WorldPoint> out,
                    const QueryOptions& options) {
     if (points.size() != out.size())

@@ -7,6 +7,7 @@
 #include "tidewater/baked_scene.hpp"
 #include "tidewater/detail/body_finder.hpp"
 #include "tidewater/detail/water_bodies.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater::render::detail {
 
@@ -132,6 +133,11 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.shore = glm::vec4(rel(p.corner, origin), static_cast<float>(p.texel), static_cast<float>(p.resolution));
         d.shore_base = glm::uvec4(p.layers, 0u, 0u, 0u);
     };
+    auto use_optics = [&](gpu::GpuBodyDraw& d, BodyKind kind, std::size_t index) {
+        const WaterOptics optics = optics_of(scene, BodyRef{kind, static_cast<int>(index)});
+        d.optics_extinction = glm::vec4(glm::vec3(optics.extinction), 0.0f);
+        d.optics_color = glm::vec4(glm::vec3(optics.color), 0.0f);
+    };
     const std::size_t ocean_draws = scene.has_ocean ? 1 + plan.ocean_rings.size() : 0;
     const float first_river = static_cast<float>(ocean_draws + scene.lakes.size());
     const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), 0.0f, 0.0f);
@@ -158,6 +164,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.lod.x = static_cast<float>(scene.ocean.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 0);
+        use_optics(d, BodyKind::ocean, 0);
         gpu_ripples(scene.ocean, time, origin, d.ripple, d.ripple_offset);
         out.draws.push_back(d);
         out.patch_counts.push_back(plan.patches_per_side * plan.patches_per_side);
@@ -188,6 +195,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.lod.x = static_cast<float>(lake.waves().mean_square_slope());
         d.rivers = rivers;
         use_shore(d, 1 + l);
+        use_optics(d, BodyKind::lake, l);
         gpu_ripples(lake, time, origin, d.ripple, d.ripple_offset);
         out.draws.push_back(d);
         out.patch_counts.push_back(b.patch_count);
@@ -224,6 +232,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         if (into_ocean) use_shore(d, 0);
         if (into_lake) use_shore(d, 1 + static_cast<std::size_t>(river.receiver));
         d.flow = gpu_flow_detail(preset.profile().flow, preset.local_time(time), b.corner);
+        use_optics(d, BodyKind::river, r);
         out.draws.push_back(d);
         out.patch_counts.push_back(b.patch_count);
     }

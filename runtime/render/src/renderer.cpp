@@ -323,6 +323,12 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     if (!query_submersion(scene, frame.time, asked, answers, one_thread))
         answers = {};  // a scene the queries cannot answer is drawn from above
     p.camera = answers[0];
+    // The water the camera looks through: the body over the eye (or over a corner of the near
+    // plane when only the lens dips in), the ocean's above every surface.
+    const auto wet = std::find_if(answers.begin(), answers.end(), [](const Submersion& s) { return s.under; });
+    const WaterOptics water = optics_of(scene, wet != answers.end() ? wet->body : BodyRef{BodyKind::ocean, -1});
+    p.plan.frame.water_extinction = glm::vec4(glm::vec3(water.extinction), 0.0f);
+    p.plan.frame.water_color = glm::vec4(glm::vec3(water.color), 0.0f);
     if (std::any_of(answers.begin(), answers.end(), [](const Submersion& s) { return s.under; })) {
         // A corner with no water over it (over land) counts as above the water.
         auto depth = [](const Submersion& s) {

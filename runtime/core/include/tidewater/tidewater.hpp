@@ -20,6 +20,7 @@
 #include "tidewater/version.hpp"
 #include "tidewater/wakes.hpp"
 #include "tidewater/water_body.hpp"
+#include "tidewater/water_optics.hpp"
 #include "tidewater/waves.hpp"
 #include "tidewater/whitecaps.hpp"
 #include "tidewater/world_query.hpp"

@@ -13,6 +13,7 @@
 #include "tidewater/flow_detail.hpp"
 #include "tidewater/ripples.hpp"
 #include "tidewater/spectrum.hpp"
+#include "tidewater/water_optics.hpp"
 #include "tidewater/waves.hpp"
 #include "tidewater/whitecaps.hpp"
 
@@ -30,6 +31,9 @@ struct WaterProfile {
     FlowDetailSpec flow;  ///< detail a current carries (rivers); strength 0 = none
     FoldPolicy fold_policy = FoldPolicy::reject;
     double time_offset = 0.0;  ///< s, added to the clock time for this body.
+    /// How light travels through the water; absent, the body's kind decides
+    /// (kDefaultOceanWaterType, kDefaultInlandWaterType: optics_of in world_query.hpp).
+    std::optional<WaterOptics> optics;
 };
 
 class WaterBody {

@@ -51,6 +51,11 @@ struct WorldPoint {
 /// The name of a body of `scene`: "ocean", a lake's or river's name, "" for none.
 std::string_view body_name(const Scene& scene, BodyRef body);
 
+/// How light travels through a body's water (tidewater/water_optics.hpp): its preset's
+/// optics, else its kind's default (Jerlov II for the ocean, 3C for lakes and rivers; none:
+/// the ocean's).
+WaterOptics optics_of(const Scene& scene, BodyRef body);
+
 /// The water of `scene` at each point (x, z) at clock time `time` (each body's time
 /// offset is added). A scene with lakes or rivers must be baked (Scene::baked()).
 /// `out.size()` must equal `points.size()`.

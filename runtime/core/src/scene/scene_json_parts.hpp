@@ -26,6 +26,10 @@ Status check_range(const ObjectReader& r, std::string_view key, double v, double
 Result<WaterProfile> read_water_profile(const nlohmann::json& value, const std::string& source, const std::string& path,
                                         const std::filesystem::path& base_dir);
 
+/// A profile's "optics" (water_optics_json.cpp): a Jerlov "water_type" or an
+/// "extinction", and optionally a "color".
+Status read_optics(const ObjectReader& parent, std::optional<WaterOptics>& out);
+
 /// The scene's "lakes" and "rivers" (absent: none). Names must be unique among them and
 /// must not be "ocean"; `warnings` collects the profiles' notes.
 Status read_lakes(const ObjectReader& scene, const std::filesystem::path& base_dir, std::vector<SceneLake>& lakes,
