@@ -1,12 +1,15 @@
 #version 450
 // Floating bodies (boats, barrels): one paint per body, a plain Lambert sun plus sky
-// ambient (as the terrain) and the same fog as the water (through the water from under
-// its surface). Drawn with terrain.vert before
-// the water, so the water refracts and fogs their submerged parts.
+// ambient (as the terrain), dimmed with depth and focused by the waves (caustics) under
+// the ocean's surface, and the same fog as the water (through the water from under its
+// surface). Drawn with terrain.vert before the water, so the water refracts and fogs
+// their submerged parts.
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
+#include "water_quality.glsl"
 #include "water_medium.glsl"
+#include "caustics.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 normal;
 layout(push_constant) uniform Push { layout(offset = kPushMeshOrigin) vec4 mesh_origin; layout(offset = kPushFloatPaint) vec4 paint; };  // paint: linear RGB
@@ -20,7 +23,14 @@ void main() {
     if (dot(n, v) < 0.0) n = -n;  // the inside of a hull seen through a gap
     float diffuse = max(dot(n, frame.sun.xyz), 0.0);
     float sky_light = 0.5 + 0.5 * n.y;
-    vec3 color = paint.rgb * (0.22 + 0.18 * sky_light + 0.75 * diffuse);
+    // Under the ocean's surface as the terrain (water_medium.glsl, caustics.glsl).
+    float depth = frame.params.x - world_pos.y;
+    vec3 sun_lit = vec3(1.0), sky_lit = vec3(1.0);
+    if (depth > 0.0) {
+        sun_lit = sunlight_under_water(depth) * caustic_gain(world_pos, depth, distance / frame.params.z);
+        sky_lit = skylight_under_water(depth);
+    }
+    vec3 color = paint.rgb * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
     // A little sheen: painted hulls and barrels are glossy.
     vec3 h = normalize(v + frame.sun.xyz);
     color += 0.08 * pow(max(dot(n, h), 0.0), 40.0) * diffuse;

@@ -8,6 +8,7 @@
 
 layout(std140, set = kFrameSet, binding = eFrameConstants) uniform Frame { GpuFrame frame; };
 layout(std430, set = kFrameSet, binding = eFrameWaves) readonly buffer Waves { GpuWave waves[]; };
+layout(std430, set = kFrameSet, binding = eFrameBodyDraws) readonly buffer BodyDraws { GpuBodyDraw draws[]; };  // the frame's water draws
 layout(set = kFrameSet, binding = eFrameTerrainHeight) uniform sampler2D terrain_height;  // R16 unorm
 layout(set = kFrameSet, binding = eFrameSceneColor) uniform sampler2D scene_color;
 layout(set = kFrameSet, binding = eFrameSceneDepth) uniform sampler2D scene_depth;

@@ -57,6 +57,7 @@ TW_CONST float kShoreFarValue = 1.0e9f;  // m
 // Light through water (shaders/water_medium.glsl): water's refractive index against air
 // (each body's extinction and colour are its own: GpuBodyDraw.optics_*, GpuFrame.water_*).
 TW_CONST float kWaterRefractiveIndex = 1.333f;
+TW_CONST float kGravityAcceleration = 9.81f;  // m/s^2, tidewater::kGravity (static_assert in wake_water.cpp)
 // The model keeps its fields in layers, each a grid of such tiles: the shared fields
 // (depth, breaking, steepness scale, shore distance) at the model's texel, and the
 // waves in runs of consecutive waves, each run at the texel its shortest wave needs
@@ -112,7 +113,6 @@ TW_CONST float kFoamDecayTime = 1.0f;  // s: e-folding time of whitecap foam
 // foam decays over kWakeFoamLifetime seconds and spreads as kWakeFoamSpread sqrt(age)
 // metres beyond half the source's size. A frame holds at most kMaxWakePoints points.
 TW_CONST float kWakeFoldLimit = 0.5f;
-TW_CONST float kWakeGravity = 9.81f;       // m/s^2, tidewater::kGravity
 TW_CONST float kWakeFoamLifetime = 30.0f;  // s
 TW_CONST float kWakeFoamSpread = 0.6f;     // m / sqrt(s)
 TW_CONST uint kMaxWakePoints = 4096u;

@@ -1,32 +1,18 @@
 #version 450
 // Terrain shading: materials by height, slope and wetness (sand, wet sand where the
 // swash runs, grass, rock on steep ground), detail normals and albedo variation that
-// fade out where a pixel cannot resolve them, animated Voronoi caustics on submerged
-// ground, light that fades with depth under the water, and the same fog as the water
-// (through the water from under its surface). Lighting is a plain Lambert sun plus sky
+// fade out where a pixel cannot resolve them, caustics on submerged ground from the
+// ocean's waves (caustics.glsl), light that fades with depth under the water, and the
+// same fog as the water (through the water from under its surface). Lighting is a plain Lambert sun plus sky
 // ambient: a host with its own lighting replaces this shader (docs/embedding.md).
 #extension GL_GOOGLE_include_directive : require
 #include "host_device.h"
 #include "frame.glsl"
 #include "water_quality.glsl"
 #include "water_medium.glsl"
+#include "caustics.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 0) out vec4 out_color;
-
-// Distance to the nearest of jittered cell points (Voronoi), animated in time.
-float voronoi(vec2 p, float t) {
-    vec2 cell = floor(p);
-    float best = 8.0;
-    for (int j = -1; j <= 1; ++j)
-        for (int i = -1; i <= 1; ++i) {
-            vec2 c = cell + vec2(i, j);
-            uint h = tw_hash(int(c.x), int(c.y), 99u);
-            vec2 jitter = vec2(float(h & 0xffffu), float(h >> 16)) / 65535.0;
-            vec2 pt = c + 0.5 + 0.4 * sin(t * 0.8 + 6.2831 * jitter);
-            best = min(best, length(p - pt));
-        }
-    return best;
-}
 
 // Three octaves of gradient noise (40 m, 9 m, 2 m), each faded to its mean where
 // unresolved: x the value (about -1..1), yz its slope per metre (for detail normals).
@@ -55,6 +41,10 @@ void main() {
     // The pixel's footprint on the ground (distance / projection scale across the view,
     // see GpuFrame.params), stretched at grazing angles.
     float footprint = distance / frame.params.z / max(abs(dot(v, geo_n)), 0.1);
+    // Under the water the sun's light through the waves is focused and spread: caustics
+    // (first, while little else is live).
+    float depth = level - h;
+    float focus = depth > 0.0 ? caustic_gain(world_pos, depth, footprint) : 1.0;
     vec2 xz = world_pos.xz + frame.origin_mod.xy;
     vec3 detail = ground_detail(xz, footprint);
     float slope = 1.0 - geo_n.y;
@@ -87,10 +77,9 @@ void main() {
     float diffuse = max(dot(n, frame.sun.xyz), 0.0);
     float sky_light = 0.5 + 0.5 * n.y;
     // Under the water the sun's and the sky's light fade with depth (water_medium.glsl).
-    float depth = level - h;
     vec3 sun_lit = depth > 0.0 ? sunlight_under_water(depth) : vec3(1.0);
     vec3 sky_lit = depth > 0.0 ? skylight_under_water(depth) : vec3(1.0);
-    vec3 color = base * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
+    vec3 color = base * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit * focus);
     // A wet film on the ground the swash leaves bare reflects the sky and the sun (not
     // on ground under the water, which the water's own surface covers).
     film *= smoothstep(-1.5, -0.5, rise);
@@ -99,21 +88,6 @@ void main() {
         r.y = abs(r.y);
         float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
         color = mix(color, sky_seen(r), film * fresnel * 0.8);
-    }
-    if (depth > 0.0) {
-        // Caustics fade with depth; refraction and absorption are applied by the water pass.
-        float t = frame.camera.w;
-        vec2 q = xz * 0.375;  // period 256 / 0.375 divides 2048 m
-        // Troughs bare the sand just below the mean level: no caustics in the top half
-        // metre. Unresolved caustics fade to their mean (as do all where the tier draws none).
-        const float kMeanPattern = 0.51;  // the pattern's mean over the plane (sampled at 400 000 points)
-        float pattern = kMeanPattern;
-        if (kCaustics) {
-            float c = voronoi(q, t) * voronoi(q + 7.3, t * 1.3);
-            pattern = mix(kMeanPattern, pow(clamp(1.0 - c * 2.2, 0.0, 1.0), 3.0) * 1.6, resolved(2.7, footprint));
-        }
-        float caustic = pattern * exp(-depth * 0.18) * diffuse * smoothstep(0.5, 2.0, depth);
-        color += caustic * vec3(0.9, 1.0, 0.95);
     }
     if (view == kViewHeight) color = heat_color((h - level + 40.0) / 80.0);
     if (view == kViewDepth) color = depth > 0.0 ? heat_color(depth / 40.0) : vec3(0.2);

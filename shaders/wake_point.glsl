@@ -21,13 +21,13 @@ WakeWave wake_wave(vec2 d, float age, float size) {
     float r2 = dot(d, d) + spread * spread;
     float inv_r = inversesqrt(r2 > 0.0 ? r2 : 1.0);
     float tau = max(age, 0.0);
-    float k = 0.25 * kWakeGravity * tau * tau * inv_r * inv_r;
+    float k = 0.25 * kGravityAcceleration * tau * tau * inv_r * inv_r;
     WakeWave w;
-    w.theta = -0.25 * kWakeGravity * tau * tau * inv_r;
-    w.omega = 0.5 * kWakeGravity * tau * inv_r;
+    w.theta = -0.25 * kGravityAcceleration * tau * tau * inv_r;
+    w.omega = 0.5 * kGravityAcceleration * tau * inv_r;
     float filter_ = exp(-k * k * spread * spread);
     float near = 1.0 - exp(-0.25 * w.theta * w.theta);
-    w.a = (1.0 / (1.4142136 * 3.1415927 * sqrt(kWakeGravity))) * k * sqrt(k) * filter_ * near * inv_r;
+    w.a = (1.0 / (1.4142136 * 3.1415927 * sqrt(kGravityAcceleration))) * k * sqrt(k) * filter_ * near * inv_r;
     w.kvec = k * d * inv_r;
     return w;
 }
@@ -69,7 +69,7 @@ float wake_reach(float age, float speed, float size) {
     float margin = kWakeReachSizes * size + kWakeReachMargin;
     if (speed > 0.0) return kWakeReachSpeedShare * speed * age + margin;
     float k_min = kWakeSplashLongest * 1.7320508 * 3.1415927 / size;
-    return 0.5 * sqrt(kWakeGravity / k_min) * age + margin;
+    return 0.5 * sqrt(kGravityAcceleration / k_min) * age + margin;
 }
 
 // How much of the segment from point a (the older) to b, or of lone point a = b, is

@@ -26,6 +26,14 @@ vec4 g_shore_fields = kOpenWaterShore;
 bool g_track_lags = false;
 LaggedCompression g_lagged;
 
+// With g_track_curvature set, water_at also sums the surface's curvature at the position
+// into g_curvature: the Hessian of eta = sum A sin(theta), (xx, xz, zz) = -sum A sin(theta)
+// (Kx Kx, Kx Kz, Kz Kz) (caustics.glsl), each wave weighted by how much of it a footprint
+// of g_curvature_footprint m keeps (pixel_keeps' isotropic Gaussian).
+bool g_track_curvature = false;
+vec3 g_curvature;
+float g_curvature_footprint = 0.0;
+
 // The sums at a rest position `rel` (m, from the phase origin) that lies at `shore_rel`
 // from the shore grid's corner. `lod` fades the waves the mesh and pixel there cannot
 // resolve (render LOD; queries pass no_wave_lod()).
@@ -33,6 +41,7 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
     SurfaceSums s = surface_zero();
     g_shore_fields = kOpenWaterShore;
     g_lagged = lagged_zero();
+    g_curvature = vec3(0.0);
     if (shore) g_shore_fields = tap_shared(shore_tap(shore_rel));
     // The runs of waves in order: the next one's tap is taken where its first wave comes.
     ShoreTap tap;
@@ -66,6 +75,11 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
         a *= shares.x;
         add_wave_compressing(s, kvec, a, q, w.steep_omega.y, theta, shares.y);
         if (g_track_lags) add_wave_lags(g_lagged, kvec, a * shares.y, q, w.lag_turn.xy, theta);
+        if (g_track_curvature) {
+            float f = g_curvature_footprint;
+            float kept = pixel_keeps(kvec, WaveLod(0.0, 0.0, vec2(1.0, 0.0), f, f));
+            g_curvature -= kept * a * sin(theta) * vec3(kvec.x * kvec.x, kvec.x * kvec.y, kvec.y * kvec.y);
+        }
     }
     return s;
 }

@@ -1,11 +1,10 @@
 // What the water stages of one draw share: the draw's description (the ocean, a lake
 // or a river), the rivers' fields and waves, the lakes' masks and the patch list.
-// Set kFrameSet, bindings eFrameBodyDraws to eFrameWakePoints (host_device.h); the push
-// constant at kPushDrawIndex picks the draw.
+// Set kFrameSet, bindings eFrameRiverTexels to eFrameWakePoints (host_device.h; the draws
+// themselves are frame.glsl's); the push constant at kPushDrawIndex picks the draw.
 #ifndef TIDEWATER_WATER_DRAW_GLSL
 #define TIDEWATER_WATER_DRAW_GLSL
 
-layout(std430, set = kFrameSet, binding = eFrameBodyDraws) readonly buffer BodyDraws { GpuBodyDraw draws[]; };
 layout(std430, set = kFrameSet, binding = eFrameRiverTexels) readonly buffer RiverTexels { float river_texels[]; };   // kRiverQueryStride per texel
 layout(std430, set = kFrameSet, binding = eFrameRiverChannel) readonly buffer RiverChannel { vec4 river_channel[]; };  // s, n (m), flow x, z (m/s)
 layout(std430, set = kFrameSet, binding = eFrameBodyMasks) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks

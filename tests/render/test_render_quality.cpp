@@ -119,17 +119,17 @@ TEST_F(QualityTest, TheFoamRemembersAsManyLagsAsTheTierShows) {
     EXPECT_GT(mean_foam(lingering.image), mean_foam(fresh.image) + 1e-3);
 }
 
-// Caustics are the tier's choice: the ground under 1 m of calm water shows their pattern
-// at `high`, and their mean brightness alone where they are turned off (as at `low`): the
-// spread of its luminance falls, its mean stays.
+// Caustics are the tier's choice: the ground under 3 m of water with short waves (3 m
+// long, 12 cm high) shows the light they focus at `high`, and calm water's light where
+// caustics are turned off (as at `low`): the spread of its luminance falls, its mean stays.
 TEST_F(QualityTest, CausticsAreTheTiersChoice) {
     render::FrameInfo frame;
     frame.camera.position = {0.0, 10.0, 12.0};
     frame.camera.target = {0.0, 0.0, 0.0};
     frame.sun_direction = {0.0, 0.8, 0.6};  // behind the camera: no glitter in view
     const Scene shallow =
-        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -1}}, )"
-                   R"("ocean": {"waves": [{"direction": 0, "wavelength": 8, "amplitude": 0.02, "steepness": 0.3}]}})");
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -3}}, )"
+                   R"("ocean": {"waves": [{"direction": 0, "wavelength": 3, "amplitude": 0.06, "steepness": 0.3}]}})");
     auto luminance = [](const render::RgbaImage& img) {
         double sum = 0.0, sum2 = 0.0;
         int n = 0;
@@ -148,7 +148,7 @@ TEST_F(QualityTest, CausticsAreTheTiersChoice) {
     ASSERT_FALSE(without.image.pixels.empty());
     const auto [mean_with, spread_with] = luminance(with.image);
     const auto [mean_without, spread_without] = luminance(without.image);
-    std::printf("the ground under 1 m: luminance %.4f +- %.4f with caustics, %.4f +- %.4f without\n", mean_with,
+    std::printf("the ground under 3 m: luminance %.4f +- %.4f with caustics, %.4f +- %.4f without\n", mean_with,
                 spread_with, mean_without, spread_without);
     EXPECT_LT(spread_without, 0.5 * spread_with);
     EXPECT_NEAR(mean_without, mean_with, 0.01);

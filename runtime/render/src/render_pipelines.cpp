@@ -256,6 +256,7 @@ Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, const DrawOp
     floats.vertex = "mesh.vert";
     floats.fragment = "float.frag";
     floats.vertices = PipelineDesc::Vertices::mesh;
+    floats.water = &options.water;  // its caustics
     if (auto st = make(p.floats, floats); !st) return st.error();
     PipelineDesc water = base;
     water.vertex = "water.vert";

@@ -9,7 +9,7 @@
 
 namespace tidewater::detail {
 
-static_assert(gpu::kWakeGravity == static_cast<float>(kGravity), "the shaders' gravity is the model's");
+static_assert(gpu::kGravityAcceleration == static_cast<float>(kGravity), "the shaders' gravity is the model's");
 
 double wake_age_fade(double age, double max_age) {
     const double start = 0.8 * max_age;
