@@ -10,6 +10,7 @@
 #include "water_quality.glsl"
 #include "water_medium.glsl"
 #include "caustics.glsl"
+#include "clip_volumes.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 normal;
 layout(push_constant) uniform Push { layout(offset = kPushMeshOrigin) vec4 mesh_origin; layout(offset = kPushFloatPaint) vec4 paint; };  // paint: linear RGB
@@ -26,7 +27,7 @@ void main() {
     // Under the ocean's surface as the terrain (water_medium.glsl, caustics.glsl).
     float depth = frame.params.x - world_pos.y;
     vec3 sun_lit = vec3(1.0), sky_lit = vec3(1.0);
-    if (depth > 0.0) {
+    if (depth > 0.0 && !seen_side_in_clip_volumes(world_pos, n)) {  // not the inside of a dry hold
         sun_lit = sunlight_under_water(depth) * caustic_gain(world_pos, depth, distance / frame.params.z);
         sky_lit = skylight_under_water(depth);
     }

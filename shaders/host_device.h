@@ -266,6 +266,19 @@ TW_CONST uint kViewWake = 10u;
 TW_CONST uint kViewFoam = 11u;
 TW_CONST uint kViewCount = 12u;  // tidewater::render::DebugView holds the same order (static_assert in renderer.cpp)
 
+// Clip volumes (tidewater/clip_volume.hpp, shaders/clip_volumes.glsl): where the water is
+// removed, at most kMaxClipVolumes a frame.
+TW_CONST uint kMaxClipVolumes = 32u;
+TW_CONST uint kClipBox = 0u;
+TW_CONST uint kClipSphere = 1u;
+TW_CONST uint kClipCapsule = 2u;
+struct GpuClipVolume {
+    vec4 center;  // xyz: centre relative to O (m); w: shape (kClip*)
+    vec4 axis_x;  // xyz: the volume's x axis (world, unit); w: a box's half extent along it, or the radius
+    vec4 axis_y;  // xyz: its y axis; w: a box's half extent, or a capsule's half length
+    vec4 axis_z;  // xyz: its z axis; w: a box's half extent
+};
+
 // What a water draw covers (GpuBodyDraw.body.x).
 TW_CONST uint kBodyOcean = 0u;
 TW_CONST uint kBodyLake = 1u;
@@ -333,6 +346,8 @@ struct GpuFrame {
     GpuSky sky;
     vec4 wakes;              // x: wake points (GpuWakePoint); y: how many of the first carry turbulence; z: boxes; w: unused
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
+    vec4 clips;                      // x: clip volumes in clip_volumes; yzw: unused
+    GpuClipVolume clip_volumes[kMaxClipVolumes];
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -415,7 +430,9 @@ static_assert(sizeof(GpuQueryParams) == 128);
 static_assert(sizeof(GpuFlowDetail) == 64);
 static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants every device has
 static_assert(sizeof(GpuBodyDraw) == 13 * 16 + 64);
-static_assert(sizeof(GpuFrame) == 2 * 64 + 16 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes);
+static_assert(sizeof(GpuClipVolume) == 64);
+static_assert(sizeof(GpuFrame) ==
+              2 * 64 + 17 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes + sizeof(GpuClipVolume) * kMaxClipVolumes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

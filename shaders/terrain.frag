@@ -11,6 +11,7 @@
 #include "water_quality.glsl"
 #include "water_medium.glsl"
 #include "caustics.glsl"
+#include "clip_volumes.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 0) out vec4 out_color;
 
@@ -43,7 +44,8 @@ void main() {
     float footprint = distance / frame.params.z / max(abs(dot(v, geo_n)), 0.1);
     // Under the water the sun's light through the waves is focused and spread: caustics
     // (first, while little else is live).
-    float depth = level - h;
+    // Ground inside a clip volume is dry.
+    float depth = inside_clip_volumes(world_pos) ? 0.0 : level - h;
     float focus = depth > 0.0 ? caustic_gain(world_pos, depth, footprint) : 1.0;
     vec2 xz = world_pos.xz + frame.origin_mod.xy;
     vec3 detail = ground_detail(xz, footprint);

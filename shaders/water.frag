@@ -22,6 +22,7 @@
 #include "visible_facets.glsl"
 #include "scene_reflection.glsl"
 #include "water_medium.glsl"
+#include "clip_volumes.glsl"
 // Compiled twice: as is, and with TW_WATER_PER_SAMPLE for multisampled targets that shade
 // the water at every sample (its inputs interpolated there; RendererInitInfo::shade_water_per_sample).
 #ifdef TW_WATER_PER_SAMPLE
@@ -135,6 +136,7 @@ void main() {
     // reject it early.
     if (frame.water_density.z > 0.5 && gl_FragCoord.z < texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r) discard;
     if (!owns_water(draw_push.draw_index, rest_xz)) discard;
+    if (inside_clip_volumes(world_pos)) discard;  // a dry hull, a host's clip volume
     GpuBodyDraw d = draws[draw_push.draw_index];
     float max_eta = max(d.extra.w, 1e-3);
     uint view = uint(frame.params.w);

@@ -1,6 +1,6 @@
 // The editor's state and the jobs of its parts, each defined in a file of its own:
 // editor_main.cpp (start-up and the frame loop), editor_scene.cpp (loading, baked scenes
-// swapped in, floating bodies, presets), editor_script.cpp (the script runner),
+// swapped in, floating bodies, presets, clip volumes), editor_script.cpp (the script runner),
 // editor_panels.cpp (the ImGui panels and overlays), editor_input.cpp (viewport input
 // and the terrain brush).
 #pragma once
@@ -80,6 +80,10 @@ class Editor {
     std::optional<std::pair<std::size_t, std::size_t>> dragged_;  // river, path point
     std::optional<Scene> body_edit_;                              // rivers and lakes being edited, baked on release
     void bodies_panel();
+    std::vector<ClipVolume> clip_volumes_;  // placed in the Clip volumes panel: no water inside
+    float clip_radius_ = 6.0f;
+    void clip_panel();
+    void place_clip(glm::dvec3 at, double radius);
     void drag_points();
     std::optional<ImVec2> project(glm::dvec3 p) const;
     Status run_step(const Step& step, std::string& screenshot);

@@ -172,6 +172,7 @@ int Editor::run(const Options& options) {
         info.frame_index = frame.index;
         info.view = render::all_debug_views()[static_cast<std::size_t>(view_)];
         float_bodies(info);
+        info.clip_volumes = clip_volumes_;
         const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view,
                                            window_.extent()};
         if (auto st = renderer_->record_frame(frame.cmd, info, targets); !st) {

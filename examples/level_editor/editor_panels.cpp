@@ -92,6 +92,7 @@ void Editor::panels() {
             ImGui::TextUnformatted("move the cursor over the water");
         }
     }
+    clip_panel();
     if (shaders_ && ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (shaders_->error().empty())
             ImGui::TextWrapped("%s", shader_line_.empty() ? "watching for changes" : shader_line_.c_str());
@@ -100,6 +101,29 @@ void Editor::panels() {
     }
     if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
     ImGui::End();
+}
+
+// Clip volumes: spheres placed on the water at the probe, where the water is removed.
+void Editor::clip_panel() {
+    if (!ImGui::CollapsingHeader("Clip volumes")) return;
+    ImGui::SliderFloat("radius (m)", &clip_radius_, 0.5f, 50.0f);
+    if (probe_ && !probe_->on_land) {
+        if (ImGui::Button("place a sphere at the probe")) place_clip(probe_->point, clip_radius_);
+    } else {
+        ImGui::TextUnformatted("put the probe on the water to place one");
+    }
+    for (std::size_t i = 0; i < clip_volumes_.size(); ++i) {
+        const ClipVolume& v = clip_volumes_[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::Text("sphere (%.0f, %.0f, %.0f) r %.1f m", v.center.x, v.center.y, v.center.z, v.radius);
+        ImGui::SameLine();
+        const bool remove = ImGui::SmallButton("remove");
+        ImGui::PopID();
+        if (remove) {
+            clip_volumes_.erase(clip_volumes_.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
 }
 
 void Editor::bodies_panel() {

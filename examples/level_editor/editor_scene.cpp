@@ -96,4 +96,26 @@ void Editor::choose_preset(const std::string& name) {
     bake_.start(std::move(edited), scene_);
 }
 
+// A clip sphere where the water is removed (FrameInfo::clip_volumes); the CPU's answer at
+// its centre, with the same volumes, is reported.
+void Editor::place_clip(glm::dvec3 at, double radius) {
+    const ClipVolume sphere = ClipVolume::sphere(at, radius);
+    if (auto st = validate(sphere, "clip volume"); !st) {
+        message_ = st.error().message;
+        return;
+    }
+    clip_volumes_.push_back(sphere);
+    QueryOptions options;
+    options.clip_volumes = clip_volumes_;
+    const glm::dvec2 xz(at.x, at.z);
+    WorldPoint water;
+    const bool asked = query_world(*scene_, clock_.now(), std::span<const glm::dvec2>(&xz, 1),
+                                   std::span<WorldPoint>(&water, 1), options)
+                           .ok();
+    message_ = fmt::format("clip volume {}: sphere at ({:.1f}, {:.1f}, {:.1f}) radius {:.1f} m; the surface there: {}",
+                           clip_volumes_.size(), at.x, at.y, at.z, radius,
+                           asked ? (water.surface.wet ? "wet 1" : "wet 0") : "not answered");
+    std::printf("%s\n", message_.c_str());
+}
+
 }  // namespace tidewater::editor

@@ -14,6 +14,7 @@ namespace tidewater::editor {
 //   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
 //   brush X Z RADIUS HEIGHT     (a stroke of the terrain brush, re-baked in the background)
 //   river NAME discharge Q      (as the Rivers panel's slider, re-baked in the background)
+//   clip X Y Z RADIUS           (a clip sphere, as the Clip volumes panel places one)
 //   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
 //   at N screenshot PATH        (the frame N, panels included)
 Status Editor::run_script(const std::string& path) {
@@ -73,6 +74,11 @@ Status Editor::run_script(const std::string& path) {
             if (it == edited.rivers.end()) return bad();
             it->discharge = value;
             bake_.start(std::move(edited), scene_);
+        } else if (command == "clip") {
+            glm::dvec3 at;
+            double radius = 0.0;
+            if (!(words >> at.x >> at.y >> at.z >> radius)) return bad();
+            place_clip(at, radius);
         } else if (command == "at") {
             Step step;
             if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot"))

@@ -173,6 +173,22 @@ TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
 }
 
+// A clip sphere placed from a script (as the Clip volumes panel places one) removes the
+// water: the CPU's answer at its centre, with the same volume, is dry, and the frames are
+// drawn with it under the validation layer.
+TEST(Editor, AClipSpherePlacedInTheEditorLeavesTheSurfaceDry) {
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_clip_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "camera 930 40 260 900 0 300\nclip 900 0 300 8\n";
+    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("clip volume 1: sphere at (900.0, 0.0, 300.0) radius 8.0 m; the surface there: wet 0"),
+              std::string::npos)
+        << r.output;
+}
+
 // A real coast opens in the editor: Hilo Bay's depth grid, baked in the background, drawn
 // with water and land under the validation layer.
 TEST(Editor, OpensHiloBay) {

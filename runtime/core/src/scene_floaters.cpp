@@ -33,6 +33,31 @@ RigidBodyProps float_props(const SceneFloat& f) {
     return p;
 }
 
+/// Where a float keeps the water out, in its body frame: its own shape, or for a barrel
+/// the capsule inside it.
+ClipVolume float_clip(const SceneFloat& f) {
+    const double r = 0.5 * f.size.x;
+    switch (f.shape) {
+        case SceneFloat::Shape::box:
+            return ClipVolume::box(glm::dvec3(0.0), 0.5 * f.size);
+        case SceneFloat::Shape::sphere:
+            return ClipVolume::sphere(glm::dvec3(0.0), r);
+        case SceneFloat::Shape::barrel:
+            break;
+    }
+    return ClipVolume::capsule(glm::dvec3(0.0), std::max(0.5 * f.size.y - r, 0.0), r);
+}
+
+/// A boat's dry inside (HullMesh::boat): the box of its straight-sided aft 70 %, keel to
+/// deck, a hair inside the hull.
+ClipVolume boat_clip(const HullMesh& hull, double length, double beam, double draft) {
+    double aft = 0.0;
+    for (const glm::dvec3& v : hull.vertices) aft = std::min(aft, v.x);
+    constexpr double kInset = 0.98;
+    const double half = 0.35 * length * kInset;
+    return ClipVolume::box(glm::dvec3(aft + 0.35 * length, 0.0, 0.0), glm::dvec3(half, draft, 0.5 * beam) * kInset);
+}
+
 /// Where the body frame's origin rests in calm water above the surface: the bottom sits
 /// the Archimedes draft under it (a sphere's centre at the surface, near enough).
 double rest_height(const SceneFloat& f) {
@@ -97,7 +122,8 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         s.velocity = glm::dvec3(ahead.x - at.x, 0.0, ahead.y - at.y) / step;  // under way from the start
         auto id = f.world_.add(props, s);
         if (!id) return Error{id.error().code, fmt::format("boats/{} ({}): {}", i, b.name, id.error().message)};
-        f.bodies_.push_back({b.name, props.hull, glm::vec3(0.62f, 0.16f, 0.10f), true});
+        f.bodies_.push_back({b.name, props.hull, glm::vec3(0.62f, 0.16f, 0.10f), true,
+                             boat_clip(props.hull, b.hull.length, b.hull.beam, b.hull.draft)});
     }
     for (std::size_t i = 0; i < scene->floats.size(); ++i) {
         const SceneFloat& sf = scene->floats[i];
@@ -110,7 +136,7 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         s.position = {sf.at.x, under.surface.height + rest_height(sf), sf.at.y};
         auto id = f.world_.add(props, s);
         if (!id) return Error{id.error().code, fmt::format("floats/{} ({}): {}", i, sf.name, id.error().message)};
-        f.bodies_.push_back({sf.name, props.hull, sf.color, false});
+        f.bodies_.push_back({sf.name, props.hull, sf.color, false, float_clip(sf)});
     }
     if (auto st = f.advance_to(start); !st) return st.error();
     return f;

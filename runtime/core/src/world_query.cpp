@@ -92,6 +92,14 @@ Status run_world(const Scene& scene, double time, std::span<const glm::dvec2> po
             out[i] = detail::world_point(scene, key, where[i], group.results[k], where[i].flow);
         }
     }
+    // Inside a clip volume the surface is dry: the renderer draws no water there.
+    if (!scene.clip_volumes.empty() || !options.clip_volumes.empty()) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            SurfacePoint& s = out[i].surface;
+            const glm::dvec3 p(points[i].x, s.height, points[i].y);
+            if (inside_any(scene.clip_volumes, p) || inside_any(options.clip_volumes, p)) s.wet = false;
+        }
+    }
     return {};
 }
 

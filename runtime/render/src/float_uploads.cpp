@@ -16,7 +16,8 @@ std::vector<FloatDraw> float_draws(const SceneFloaters& floaters) {
     draws.reserve(floaters.bodies().size());
     for (std::size_t b = 0; b < floaters.bodies().size(); ++b) {
         const SceneFloaters::Pose pose = floaters.pose(b);
-        draws.push_back({&floaters.bodies()[b].hull, pose.position, pose.orientation, floaters.bodies()[b].color});
+        const SceneFloaters::Body& body = floaters.bodies()[b];
+        draws.push_back({&body.hull, pose.position, pose.orientation, body.color, body.clip});
     }
     return draws;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "body_uploads.hpp"
+#include "clip_uploads.hpp"
 #include "descriptor_sets.hpp"
 #include "drawn_table.hpp"
 #include "float_uploads.hpp"
@@ -134,6 +135,7 @@ struct Renderer::Impl {
     std::uint64_t last_patches = 0;
     std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
     Submersion last_camera;                                               // the last frame recorded
+    std::uint32_t last_clips = 0, last_clips_left_out = 0;                // the last frame recorded
     std::uint64_t last_upload_bytes = 0;                                  // written by the last set_scene
     std::uint64_t shore_written = 0;                                      // by the last use_shores
     std::uint64_t shore_streamed = 0;                                     // by the last frame recorded
@@ -166,6 +168,7 @@ struct Renderer::Impl {
         detail::FloatUpload floats;
         detail::TerrainSelection terrain;
         Submersion camera;  // where the camera is: above every surface, or under a body's
+        detail::FrameClips clips;
     };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
     Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
@@ -313,9 +316,14 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     // near plane, so a host that asks query_submersion the same switches with the picture.
     // The surface across the near plane (a fraction of a metre) is taken as bilinear between
     // its corners: the water line drawn on the lens.
+    auto clips = detail::gather_clip_volumes(scene, frame.clip_volumes, frame.floats, frame.camera.position);
+    if (!clips) return clips.error();
+    p.clips = std::move(clips).value();
+    detail::pack_clip_volumes(scene, p.clips, p.plan.origin, p.plan.frame);
     QueryOptions one_thread;
     one_thread.threads = 1;
     one_thread.wakes = frame.wakes;
+    one_thread.clip_volumes = p.clips.host_and_floats;
     const auto corners = near_plane_corners(frame.camera, static_cast<double>(extent.width) / extent.height);
     // The eye, then the image's top left, top right, bottom right and bottom left.
     const std::array<glm::dvec3, 5> asked{frame.camera.position, corners[3], corners[2], corners[1], corners[0]};
@@ -413,6 +421,8 @@ Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, b
                                         static_cast<std::uint32_t>(slots.size()), info.shore_stream_bytes_per_frame);
     if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
     last_camera = planned->camera;
+    last_clips = planned->clips.total;
+    last_clips_left_out = planned->clips.left_out;
     plan = std::move(planned->plan);
     return {};
 }
@@ -814,6 +824,8 @@ RendererStats Renderer::stats() const {
     s.shore_tiles_reading = impl_->shore.reading_tiles();
     s.scene_upload_bytes = impl_->last_upload_bytes;
     s.camera = impl_->last_camera;
+    s.clip_volumes = impl_->last_clips;
+    s.clip_volumes_left_out = impl_->last_clips_left_out;
     s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
     return s;

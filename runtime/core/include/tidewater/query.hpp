@@ -17,6 +17,7 @@
 #include <limits>
 #include <span>
 
+#include "tidewater/clip_volume.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/water_body.hpp"
 
@@ -70,6 +71,11 @@ struct QueryOptions {
     const Wakes* wakes = nullptr;
     /// Leave this emitter's wakes out (a boat riding its own wake); -1: none.
     int exclude_emitter = -1;
+    /// Where the water is removed besides the scene's own (tidewater/clip_volume.hpp): the
+    /// host's moving volumes, a float's hull. Read by the queries of a whole scene
+    /// (query_world, query_submersion), which report the surface inside them dry. Only
+    /// read; must outlive the call.
+    std::span<const ClipVolume> clip_volumes;
 };
 
 /// Full surface state at each point (x, z) at clock time `time` (the body's

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tidewater/clip_volume.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/wakes.hpp"
 #include "tidewater/water_body.hpp"
@@ -101,6 +102,10 @@ struct Scene {
     std::vector<SceneBoat> boats;
     /// Barrels, boxes and buoys afloat (SceneFloaters rides them with the boats).
     std::vector<SceneFloat> floats;
+    /// Where the water is removed (tidewater/clip_volume.hpp): the scene's "clip_volumes",
+    /// which stay put. The queries of the whole scene (query_world) report the surface dry
+    /// inside them and the renderer draws no water there.
+    std::vector<ClipVolume> clip_volumes;
     std::optional<SceneCamera> camera;  ///< Default viewpoint, if the scene gives one.
     std::vector<std::string> warnings;  ///< Non-fatal notes (e.g. clamped steepness).
     /// What bake_scene made (null as parsed). Copies share it; it is never modified.

@@ -33,6 +33,10 @@ class SceneFloaters {
         HullMesh hull;          ///< body frame, m (x forward, y up, z to starboard)
         glm::vec3 color{0.8f};  ///< paint, linear RGB
         bool boat = false;      ///< a scene boat (kept to its path) or a free float
+        /// Body frame: where it keeps the water out (tidewater/clip_volume.hpp): a box's,
+        /// a sphere's own shape, the capsule inside a barrel, a boat's straight-sided
+        /// midbody (inside its hull).
+        ClipVolume clip;
     };
     struct Pose {
         glm::dvec3 position{0.0};                    ///< the body frame's origin, world, m

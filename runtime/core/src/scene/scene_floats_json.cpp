@@ -15,25 +15,6 @@ using nlohmann::json;
 
 constexpr std::size_t kMaxFloats = 256;
 
-/// Reads `key` as an array of `n` numbers in [lo, hi].
-Status read_numbers(const ObjectReader& r, std::string_view key, int n, double lo, double hi, const char* unit,
-                    double* out) {
-    if (!r.has(key)) return {};
-    const json& v = r.at(key);
-    if (!v.is_array() || v.size() != static_cast<std::size_t>(n))
-        return r.error(key, fmt::format("expected an array of {} numbers, found {}", n, json_type_name(v)));
-    for (int i = 0; i < n; ++i) {
-        if (!v[static_cast<std::size_t>(i)].is_number())
-            return r.error(key, fmt::format("item {} must be a number, found {}", i,
-                                            json_type_name(v[static_cast<std::size_t>(i)])));
-        const double x = v[static_cast<std::size_t>(i)].get<double>();
-        if (!std::isfinite(x) || x < lo || x > hi)
-            return r.error(key, fmt::format("item {} = {} is out of range [{}, {}]{}", i, x, lo, hi, unit));
-        out[i] = x;
-    }
-    return {};
-}
-
 Result<SceneFloat> read_float(const json& value, const std::string& source, const std::string& path) {
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
@@ -82,6 +63,24 @@ Result<SceneFloat> read_float(const json& value, const std::string& source, cons
 }
 
 }  // namespace
+
+Status read_numbers(const ObjectReader& r, std::string_view key, int n, double lo, double hi, const char* unit,
+                    double* out) {
+    if (!r.has(key)) return {};
+    const json& v = r.at(key);
+    if (!v.is_array() || v.size() != static_cast<std::size_t>(n))
+        return r.error(key, fmt::format("expected an array of {} numbers, found {}", n, json_type_name(v)));
+    for (int i = 0; i < n; ++i) {
+        if (!v[static_cast<std::size_t>(i)].is_number())
+            return r.error(key, fmt::format("item {} must be a number, found {}", i,
+                                            json_type_name(v[static_cast<std::size_t>(i)])));
+        const double x = v[static_cast<std::size_t>(i)].get<double>();
+        if (!std::isfinite(x) || x < lo || x > hi)
+            return r.error(key, fmt::format("item {} = {} is out of range [{}, {}]{}", i, x, lo, hi, unit));
+        out[i] = x;
+    }
+    return {};
+}
 
 Status read_floats(const ObjectReader& scene, std::vector<SceneFloat>& floats) {
     floats.clear();

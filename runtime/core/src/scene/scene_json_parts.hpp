@@ -18,6 +18,11 @@ inline constexpr double kMaxAbsHeight = 1e5;
 /// Reads [a, b] at `key` into `out`; each value within |v| <= limit.
 Status read_pair(const ObjectReader& r, std::string_view key, glm::dvec2& out, bool required, double limit);
 
+/// Reads `key` (absent: `out` untouched) as an array of `n` numbers, each finite and in
+/// [lo, hi] (scene_floats_json.cpp).
+Status read_numbers(const ObjectReader& r, std::string_view key, int n, double lo, double hi, const char* unit,
+                    double* out);
+
 /// Fails unless lo <= v <= hi, naming the key, the value and the range.
 Status check_range(const ObjectReader& r, std::string_view key, double v, double lo, double hi, const char* unit);
 
@@ -39,6 +44,9 @@ Status read_rivers(const ObjectReader& scene, const std::filesystem::path& base_
 /// The scene's "boats" (absent: none): scripted boats whose wakes the queries and the
 /// renderer add; their wakes together must fit kMaxWakePoints.
 Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats);
+/// "clip_volumes": boxes, spheres and capsules where the water is removed
+/// (scene_clip_volumes_json.cpp).
+Status read_clip_volumes(const ObjectReader& scene, std::vector<ClipVolume>& volumes);
 /// "floats": barrels, boxes and spheres set afloat (scene_floats_json.cpp).
 Status read_floats(const ObjectReader& scene, std::vector<SceneFloat>& floats);
 /// Points (x, z) at "path": at least two, finite, consecutive points apart.

@@ -144,6 +144,9 @@ struct FloatDraw {
     glm::dvec3 position{0.0};                    ///< the body frame's origin, world, m
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  ///< body to world
     glm::vec3 color{0.8f};                       ///< paint, linear RGB 0..1
+    /// Body frame: where the hull keeps the water out (tidewater/clip_volume.hpp), an open
+    /// hull's dry hold included; absent: nowhere. float_draws gives each scene body's.
+    std::optional<ClipVolume> clip;
 };
 
 /// The draws of `floaters`' bodies at their poses now (after advance_to). The hulls stay
@@ -163,6 +166,13 @@ struct FrameInfo {
     const Wakes* wakes = nullptr;
     /// Boats, barrels and other floating bodies to draw; empty: none.
     std::span<const FloatDraw> floats;
+    /// Where the water is removed this frame besides the scene's own and the floats'
+    /// (world frame): no water surface and no light through water inside them. Pass the
+    /// same to the queries (QueryOptions::clip_volumes) to get the same answer. The scene's
+    /// and these together at most gpu::kMaxClipVolumes (32); the floats' take the slots
+    /// left, nearest the camera first (RendererStats::clip_volumes_left_out counts the
+    /// rest). Read during record_frame only.
+    std::span<const ClipVolume> clip_volumes;
 };
 
 /// How many times each stage ran in one pass, from a pipeline statistics query.
@@ -218,6 +228,9 @@ struct RendererStats {
     /// part of the near plane above it when the water line crosses the lens (the renderer
     /// asks the near plane's corners too: near_plane_corners).
     Submersion camera;
+    /// The clip volumes the last frame recorded drew with (the scene's, the host's, the
+    /// floats'), and the floats' it left out for want of room (the farthest from the camera).
+    std::uint32_t clip_volumes = 0, clip_volumes_left_out = 0;
     std::uint64_t water_patches = 0;  ///< Tessellated patches submitted (before culling).
     std::uint32_t waves = 0;
     double water_patch_size = 0.0;  ///< m

@@ -1,0 +1,79 @@
+#include "clip_uploads.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace tidewater::render::detail {
+
+namespace {
+
+gpu::GpuClipVolume gpu_clip(const ClipVolume& v, glm::dvec2 origin) {
+    const glm::dquat q = glm::normalize(v.orientation);
+    const glm::dvec3 x = q * glm::dvec3(1.0, 0.0, 0.0), y = q * glm::dvec3(0.0, 1.0, 0.0),
+                     z = q * glm::dvec3(0.0, 0.0, 1.0);
+    gpu::GpuClipVolume g{};
+    const glm::dvec3 c = v.center - glm::dvec3(origin.x, 0.0, origin.y);
+    float shape = static_cast<float>(gpu::kClipBox);
+    glm::dvec3 sizes = v.half_extents;
+    if (v.shape == ClipVolume::Shape::sphere) {
+        shape = static_cast<float>(gpu::kClipSphere);
+        sizes = glm::dvec3(v.radius, 0.0, 0.0);
+    } else if (v.shape == ClipVolume::Shape::capsule) {
+        shape = static_cast<float>(gpu::kClipCapsule);
+        sizes = glm::dvec3(v.radius, v.half_length, 0.0);
+    }
+    g.center = glm::vec4(glm::vec3(c), shape);
+    g.axis_x = glm::vec4(glm::vec3(x), static_cast<float>(sizes.x));
+    g.axis_y = glm::vec4(glm::vec3(y), static_cast<float>(sizes.y));
+    g.axis_z = glm::vec4(glm::vec3(z), static_cast<float>(sizes.z));
+    return g;
+}
+
+}  // namespace
+
+Result<FrameClips> gather_clip_volumes(const Scene& scene, std::span<const ClipVolume> host,
+                                       std::span<const FloatDraw> floats, glm::dvec3 camera) {
+    FrameClips out;
+    const std::size_t fixed = scene.clip_volumes.size() + host.size();
+    if (fixed > gpu::kMaxClipVolumes)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: FrameInfo::clip_volumes: {} volumes with the scene's {}; at most {} in all",
+                                 host.size(), scene.clip_volumes.size(), gpu::kMaxClipVolumes)};
+    for (std::size_t i = 0; i < host.size(); ++i) {
+        if (auto st = validate(host[i], fmt::format("renderer: FrameInfo::clip_volumes/{}", i)); !st) return st.error();
+        out.host_and_floats.push_back(host[i]);
+    }
+    std::vector<ClipVolume> of_floats;
+    for (std::size_t i = 0; i < floats.size(); ++i) {
+        const FloatDraw& f = floats[i];
+        if (!f.clip) continue;
+        if (auto st = validate(*f.clip, fmt::format("renderer: FrameInfo::floats/{}/clip", i)); !st) return st.error();
+        ClipVolume world = *f.clip;
+        const glm::dquat pose = glm::normalize(f.orientation);
+        world.center = f.position + pose * f.clip->center;
+        world.orientation = pose * f.clip->orientation;
+        of_floats.push_back(world);
+    }
+    const std::size_t room = gpu::kMaxClipVolumes - fixed;
+    if (of_floats.size() > room) {
+        std::nth_element(of_floats.begin(), of_floats.begin() + static_cast<std::ptrdiff_t>(room), of_floats.end(),
+                         [&](const ClipVolume& a, const ClipVolume& b) {
+                             return clip_distance(a, camera) < clip_distance(b, camera);
+                         });
+        out.left_out = static_cast<std::uint32_t>(of_floats.size() - room);
+        of_floats.resize(room);
+    }
+    out.host_and_floats.insert(out.host_and_floats.end(), of_floats.begin(), of_floats.end());
+    out.total = static_cast<std::uint32_t>(scene.clip_volumes.size() + out.host_and_floats.size());
+    return out;
+}
+
+void pack_clip_volumes(const Scene& scene, const FrameClips& clips, glm::dvec2 origin, gpu::GpuFrame& frame) {
+    std::size_t n = 0;
+    for (const ClipVolume& v : scene.clip_volumes) frame.clip_volumes[n++] = gpu_clip(v, origin);
+    for (const ClipVolume& v : clips.host_and_floats) frame.clip_volumes[n++] = gpu_clip(v, origin);
+    frame.clips = glm::vec4(static_cast<float>(n), 0.0f, 0.0f, 0.0f);
+}
+
+}  // namespace tidewater::render::detail

@@ -1,0 +1,31 @@
+// Clip volumes: where the water is removed (tidewater/clip_volume.hpp, whose
+// clip_distance this is the twin of). Needs frame.glsl (GpuFrame.clip_volumes).
+#ifndef TIDEWATER_CLIP_VOLUMES_GLSL
+#define TIDEWATER_CLIP_VOLUMES_GLSL
+
+// The signed distance from `p` (relative to O) to the volume's surface, m: < 0 inside.
+float clip_distance(GpuClipVolume c, vec3 p) {
+    vec3 d = p - c.center.xyz;
+    vec3 local = vec3(dot(d, c.axis_x.xyz), dot(d, c.axis_y.xyz), dot(d, c.axis_z.xyz));
+    uint shape = uint(c.center.w);
+    if (shape == kClipBox) {
+        vec3 q = abs(local) - vec3(c.axis_x.w, c.axis_y.w, c.axis_z.w);
+        return length(max(q, vec3(0.0))) + min(max(q.x, max(q.y, q.z)), 0.0);
+    }
+    if (shape == kClipSphere) return length(local) - c.axis_x.w;
+    return length(local - vec3(0.0, clamp(local.y, -c.axis_y.w, c.axis_y.w), 0.0)) - c.axis_x.w;
+}
+
+// Whether `p` (relative to O) lies inside any of the frame's clip volumes.
+bool inside_clip_volumes(vec3 p) {
+    for (uint i = 0u; i < uint(frame.clips.x); ++i)
+        if (clip_distance(frame.clip_volumes[i], p) < 0.0) return true;
+    return false;
+}
+
+// Whether the side of a surface at `p` that faces along `n` (the side the eye sees) is in a
+// clip volume: a hull's skin lies on its volume's boundary, its inside dry, its outside wet.
+const float kClipSkin = 0.05;  // m
+bool seen_side_in_clip_volumes(vec3 p, vec3 n) { return inside_clip_volumes(p + kClipSkin * n); }
+
+#endif

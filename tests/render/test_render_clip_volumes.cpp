@@ -1,0 +1,140 @@
+// Clip volumes on lavapipe under the validation layer: an open hull floating in waves is
+// dry inside, and a host's clip sphere removes the water where the CPU queries say the
+// surface is dry.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render_fixture.hpp"
+
+namespace tidewater {
+namespace {
+
+/// An open box (no lid) centred on its body frame's origin, walls outward.
+HullMesh open_box(glm::dvec3 size) {
+    const glm::dvec3 h = 0.5 * size;
+    HullMesh m;
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
+    // Bottom (y-), and the four walls (x-, x+, z-, z+), each two triangles turned outward.
+    m.triangles = {{0, 1, 5}, {0, 5, 4}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7},
+                   {1, 7, 5}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+    return m;
+}
+
+/// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame.
+glm::dvec3 pixel_ray(const render::Camera& camera, int w, int h, int x, int y) {
+    const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
+    const double u = (x + 0.5) / w, v = 1.0 - (y + 0.5) / h;
+    const glm::dvec3 bottom = c[0] + (c[1] - c[0]) * u, top = c[3] + (c[2] - c[3]) * u;
+    return glm::normalize(bottom + (top - bottom) * v - camera.position);
+}
+
+double largest_difference(Rgb a, Rgb b) {
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+/// An open box 4 x 1.5 x 3 m floating with its rim 0.85 m over the rest level in waves
+/// 0.25 m high (their crests reach up its walls): seen from above through its open top,
+/// its inside with the hull clipping the water is the inside of the same box with the sea
+/// 15 m below it (dry: no water surface, no light lost to water, no caustics), within
+/// 2/255 on 99 % of those pixels; without its clip the sea fills it to the waterline.
+TEST_F(RenderTest, AnOpenHullIsDryInside) {
+    const std::string ocean =
+        R"("ocean": {"waves": [{"direction": 30, "wavelength": 12, "amplitude": 0.25, "steepness": 0.5}]})";
+    const Scene wet =
+        scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -20}}, )" + ocean + "}");
+    const Scene dry =
+        scene_from(R"({"version": 1, "water_level": -15, "terrain": {"flat": {"height": -20}}, )" + ocean + "}");
+    const glm::dvec3 size(4.0, 1.5, 3.0), at(0.0, 0.1, 0.0);
+    const HullMesh hull = open_box(size);
+    render::FloatDraw hold{&hull, at, glm::dquat(1.0, 0.0, 0.0, 0.0), glm::vec3(0.8f, 0.75f, 0.6f),
+                           ClipVolume::box(glm::dvec3(0.0), 0.5 * size)};
+    render::FrameInfo frame;
+    frame.time = 4.0;
+    frame.camera.position = {1.0, 12.0, -6.0};
+    frame.camera.target = {0.0, -0.65, 0.0};
+    frame.camera.fov_y_deg = 40.0;
+    frame.floats = std::span<const render::FloatDraw>(&hold, 1);
+    const int w = 320, h = 240;
+    const auto clipped = render(wet, frame, w, h);
+    const auto reference = render(dry, frame, w, h);
+    render::FloatDraw open = hold;
+    open.clip.reset();
+    frame.floats = std::span<const render::FloatDraw>(&open, 1);
+    const auto flooded = render(wet, frame, w, h);
+    ASSERT_GT(clipped.width, 0u);
+    ASSERT_GT(reference.width, 0u);
+    ASSERT_GT(flooded.width, 0u);
+    // The pixels whose ray enters the box through its open top, 5 cm clear of the rim.
+    const double rim = at.y + 0.5 * size.y;
+    int inside = 0, same = 0, flooded_differs = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
+            const glm::dvec3 p = frame.camera.position + d * ((rim - frame.camera.position.y) / d.y);
+            if (std::abs(p.x - at.x) > 0.5 * size.x - 0.05 || std::abs(p.z - at.z) > 0.5 * size.z - 0.05) continue;
+            ++inside;
+            same += largest_difference(test::pixel(clipped, x, y), test::pixel(reference, x, y)) <= 2.0 / 255.0;
+            flooded_differs +=
+                largest_difference(test::pixel(flooded, x, y), test::pixel(reference, x, y)) > 8.0 / 255.0;
+        }
+    std::printf("open hull: %d pixels see its inside; with its clip %d as dry, without it %d show the sea\n", inside,
+                same, flooded_differs);
+    ASSERT_GT(inside, 2000);
+    EXPECT_GE(same, 0.99 * inside);
+    EXPECT_GT(flooded_differs, 0.5 * inside);
+}
+
+/// A host's clip sphere 3 m round a point of the rest surface: the pixels the frame changes
+/// against the same frame without it are those whose surface point query_world, given the
+/// same volume, reports dry (the surface found along each pixel's ray from the CPU's heights),
+/// but for at most 4 % of them along the edge.
+TEST_F(RenderTest, AHostsClipSphereRemovesTheWaterWhereTheQueriesSayDry) {
+    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -8}},
+        "ocean": {"waves": [{"direction": 10, "wavelength": 10, "amplitude": 0.08, "steepness": 0.4}]}})");
+    const ClipVolume sphere = ClipVolume::sphere({0.0, 0.0, 0.0}, 3.0);
+    render::FrameInfo frame;
+    frame.time = 2.0;
+    frame.camera.position = {0.0, 12.0, -14.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    frame.camera.fov_y_deg = 50.0;
+    const int w = 320, h = 240;
+    const auto plain = render(scene, frame, w, h);
+    frame.clip_volumes = std::span<const ClipVolume>(&sphere, 1);
+    const auto clipped = render(scene, frame, w, h);
+    ASSERT_GT(plain.width, 0u);
+    ASSERT_GT(clipped.width, 0u);
+    EXPECT_EQ(renderer_->stats().clip_volumes, 1u);
+    QueryOptions options;
+    options.clip_volumes = frame.clip_volumes;
+    int dry = 0, changed = 0, mismatched = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
+            if (d.y >= -0.05) continue;
+            // The ray's meeting with the surface: fixed-point steps on the CPU's heights.
+            double t = -frame.camera.position.y / d.y;
+            WorldPoint water;
+            for (int i = 0; i < 6; ++i) {
+                const glm::dvec2 xz(frame.camera.position.x + t * d.x, frame.camera.position.z + t * d.z);
+                if (!query_world(scene, frame.time, std::span<const glm::dvec2>(&xz, 1),
+                                 std::span<WorldPoint>(&water, 1), options))
+                    FAIL();
+                t = (water.surface.height - frame.camera.position.y) / d.y;
+            }
+            const bool is_dry = !water.surface.wet;
+            const bool is_changed =
+                largest_difference(test::pixel(plain, x, y), test::pixel(clipped, x, y)) > 2.0 / 255.0;
+            dry += is_dry;
+            changed += is_changed;
+            mismatched += is_dry != is_changed;
+        }
+    std::printf("clip sphere: %d pixels dry by the queries, %d changed in the frame, %d disagree\n", dry, changed,
+                mismatched);
+    ASSERT_GT(dry, 1500);
+    EXPECT_LE(mismatched, 0.04 * dry);
+}
+
+}  // namespace
+}  // namespace tidewater
