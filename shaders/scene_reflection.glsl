@@ -10,6 +10,7 @@
 #include "frame.glsl"
 #include "water_lod.glsl"
 #include "water_quality.glsl"
+#include "terrain_material.glsl"
 
 vec3 world_from_depth(vec2 uv, float depth) {
     vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
@@ -21,27 +22,30 @@ struct SceneReflection {
     float share;  // the share of the pixel's reflection it takes (0..1); the sky has the rest
 };
 
-// The scene copy's colour where world point p falls on the screen. Where the camera does
-// not see p itself (the mirror sees a face of a hill the camera does not, or p lies off
-// the screen: the nearest border pixel), what it sees there stands in: the terrain in
-// front of p, closer than the sky would be. Nothing behind the camera.
-vec3 scene_copy_at(vec3 p, out bool drawn) {
+// The terrain at ground point `p` as the water reflects it from `range` m away, its
+// reflections spread by `elevation_spread` (scene_reflection's). Where the camera sees p
+// itself, the scene copy's colour there. Where it does not (it sees nearer ground in front
+// of p, or the sky at a silhouette, or p lies off the screen), the terrain's own material
+// and light at p (terrain_material.glsl, the terrain pass's), its detail softened over the
+// footprint the reflections spread across, with the fog of its distance from the camera:
+// a reflected hill is its own colour, not a texture from elsewhere in the frame.
+SceneReflection terrain_seen_at(vec3 p, float range, float elevation_spread) {
+    vec3 from_camera = p - frame.camera.xyz;
+    float camera_distance = length(from_camera);
     vec4 clip = frame.view_proj * vec4(p, 1.0);
-    drawn = false;
-    if (clip.w <= 0.0) return vec3(0.0);
-    vec2 uv = clamp(clip.xy / clip.w * 0.5 + 0.5, vec2(0.0), vec2(1.0));
-    drawn = textureLod(scene_depth, uv, 0.0).r > 0.0;  // reversed Z: 0 is the sky
-    return from_scene_copy(textureLod(scene_color, uv, 0.0).rgb);
-}
-// The scene copy's colour at a point of the terrain (as scene_copy_at), looked for a
-// little lower where the screen shows the sky there: the height field and the drawn mesh differ by a little at the
-// silhouettes, and a meeting near one would otherwise take the sky behind the hill.
-SceneReflection terrain_seen_at(vec3 p, float range) {
-    bool drawn = false;
-    vec3 color = vec3(0.0);
-    float drop = 0.02;
-    for (int k = 0; k < 3 && !drawn; ++k, drop *= 3.0) color = scene_copy_at(p - vec3(0.0, drop * range, 0.0), drawn);
-    return SceneReflection(color, drawn ? 1.0 : 0.0);
+    if (clip.w > 0.0) {
+        vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+        float z = textureLod(scene_depth, clamp(uv, vec2(0.0), vec2(1.0)), 0.0).r;
+        bool on_screen = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+        // The drawn mesh and the height field differ by a little: p is seen if the point
+        // the screen shows there lies within a few percent of its distance.
+        if (on_screen && z > 0.0 && length(world_from_depth(uv, z) - p) < 0.02 * camera_distance + 0.5)
+            return SceneReflection(from_scene_copy(textureLod(scene_color, uv, 0.0).rgb), 1.0);
+    }
+    float footprint = max(range * elevation_spread, (range + camera_distance) / frame.params.z);
+    TerrainMaterial ground = terrain_material(p, terrain_normal_at(p.xz, footprint), footprint);
+    vec3 color = terrain_light(ground, vec3(1.0), vec3(1.0));
+    return SceneReflection(apply_fog(color, camera_distance, from_camera / camera_distance), 1.0);
 }
 
 // The terrain's elevation tangent from `origin` at distance t along the ray r (its
@@ -147,7 +151,8 @@ SceneReflection scene_reflection(vec3 origin, vec3 r, float first_step, float el
         }
         meets = origin + r * hi;
     }
-    SceneReflection seen = terrain_seen_at(vec3(meets.x, terrain_height_at(meets.xz), meets.z), length(meets - origin));
+    SceneReflection seen =
+        terrain_seen_at(vec3(meets.x, terrain_height_at(meets.xz), meets.z), length(meets - origin), elevation_spread);
     seen.share *= share;
     return seen;
 }
