@@ -125,6 +125,9 @@ JSON
     check "gpu wake exit 0" test $? -eq 0
     check "a wake behind the tug" bash -c "awk -F, 'NR>1 && NR<5 { w=\$18; if (w<0) w=-w; if (w>0.01) seen=1 } END {exit !seen}' cpu_wake.csv"
     check "heights and wakes within 1 mm" bash -c "paste -d, cpu_wake.csv gpu_wake.csv | awk -F, 'NR>1 { h=NF/2; for (i=3;i<=18;i+=15) { d=\$i-\$(i+h); if (d<0) d=-d; if (d>1e-3) bad=1 } } END {exit bad}'"
+    # The open skiff (examples/scenes/skiff.json) is set afloat and drawn.
+    check "the skiff scene renders" "$TW" render --scene "$EXAMPLES/scenes/skiff.json" --size 160x90 --time 3 --out skiff.png
+    check "skiff.png written" test -s skiff.png
     ;;
   query_out_matches_stdout)
     "$TW" query --scene "$EXAMPLES/scenes/default.json" --time 7 --points points.csv --out a.csv --threads 2

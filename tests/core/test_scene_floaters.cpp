@@ -113,6 +113,42 @@ TEST(SceneFloaters, TheMotionDoesNotDependOnHowOftenItIsAdvanced) {
     EXPECT_FALSE(a->set_scene(other).ok());
 }
 
+// An open box (a skiff 3 x 0.8 x 1.6 m of 480 kg) floats as the closed box does, at
+// Archimedes' draft: 480 / (1000 x 3 x 1.6) = 0.1 m; it is drawn without its lid and keeps
+// the water out of its hold, a box its own size round its body frame.
+TEST(SceneFloaters, AnOpenBoxFloatsAtItsDraftWithItsHoldDry) {
+    auto scene = baked(pool(
+        R"(, "floats": [{"name": "skiff", "shape": "open_box", "at": [5, 5], "size": [3, 0.8, 1.6], "mass": 480}])"));
+    ASSERT_TRUE(scene);
+    auto floaters = SceneFloaters::create(scene, 30.0);
+    ASSERT_TRUE(floaters) << floaters.error().message;
+    const SceneFloaters::Body& skiff = floaters->bodies()[0];
+    EXPECT_EQ(skiff.hull.triangles.size(), 10u);
+    for (const auto& t : skiff.hull.triangles) {
+        const bool top =
+            skiff.hull.vertices[t[0]].y > 0.0 && skiff.hull.vertices[t[1]].y > 0.0 && skiff.hull.vertices[t[2]].y > 0.0;
+        EXPECT_FALSE(top) << "a face on its top";
+    }
+    EXPECT_EQ(skiff.clip.shape, ClipVolume::Shape::box);
+    EXPECT_EQ(skiff.clip.half_extents, glm::dvec3(1.5, 0.4, 0.8));
+    const SceneFloaters::Pose pose = floaters->pose(0);
+    const double bottom = pose.position.y - 0.4;
+    std::printf("open box: bottom %.3f m under the surface (Archimedes 0.100 m)\n", -bottom);
+    EXPECT_NEAR(-bottom, 0.1, 0.01);
+    // Its hold is dry: the queries with its clip at its pose say so.
+    ClipVolume hold = skiff.clip;
+    hold.center = pose.position + pose.orientation * skiff.clip.center;
+    hold.orientation = pose.orientation * skiff.clip.orientation;
+    QueryOptions options;
+    options.clip_volumes = std::span<const ClipVolume>(&hold, 1);
+    const glm::dvec2 inside(pose.position.x, pose.position.z);
+    WorldPoint water;
+    ASSERT_TRUE(
+        query_world(*scene, 30.0, std::span<const glm::dvec2>(&inside, 1), std::span<WorldPoint>(&water, 1), options)
+            .ok());
+    EXPECT_FALSE(water.surface.wet);
+}
+
 TEST(SceneFloaters, BadFloatsAreRefusedByName) {
     const std::pair<const char*, const char*> cases[] = {
         {R"(, "floats": [{"shape": "raft", "at": [0, 0], "mass": 10}])", "/floats/0/shape"},

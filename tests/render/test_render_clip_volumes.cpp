@@ -10,18 +10,6 @@
 namespace tidewater {
 namespace {
 
-/// An open box (no lid) centred on its body frame's origin, walls outward.
-HullMesh open_box(glm::dvec3 size) {
-    const glm::dvec3 h = 0.5 * size;
-    HullMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
-    // Bottom (y-), and the four walls (x-, x+, z-, z+), each two triangles turned outward.
-    m.triangles = {{0, 1, 5}, {0, 5, 4}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7},
-                   {1, 7, 5}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-    return m;
-}
-
 /// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame.
 glm::dvec3 pixel_ray(const render::Camera& camera, int w, int h, int x, int y) {
     const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
@@ -47,7 +35,7 @@ TEST_F(RenderTest, AnOpenHullIsDryInside) {
     const Scene dry =
         scene_from(R"({"version": 1, "water_level": -15, "terrain": {"flat": {"height": -20}}, )" + ocean + "}");
     const glm::dvec3 size(4.0, 1.5, 3.0), at(0.0, 0.1, 0.0);
-    const HullMesh hull = open_box(size);
+    const HullMesh hull = HullMesh::open_box(size);
     render::FloatDraw hold{&hull, at, glm::dquat(1.0, 0.0, 0.0, 0.0), glm::vec3(0.8f, 0.75f, 0.6f),
                            ClipVolume::box(glm::dvec3(0.0), 0.5 * size)};
     render::FrameInfo frame;

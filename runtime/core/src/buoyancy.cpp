@@ -29,6 +29,13 @@ HullMesh HullMesh::box(glm::dvec3 size) {
     return m;
 }
 
+HullMesh HullMesh::open_box(glm::dvec3 size) {
+    HullMesh m = box(size);
+    // box()'s fourth face, {2, 6, 7, 3}, is its top.
+    m.triangles.erase(m.triangles.begin() + 6, m.triangles.begin() + 8);
+    return m;
+}
+
 HullMesh HullMesh::sphere(double radius, int rings) {
     HullMesh m;
     const int segments = 2 * rings;

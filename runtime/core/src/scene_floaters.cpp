@@ -16,6 +16,7 @@ namespace {
 RigidBodyProps float_props(const SceneFloat& f) {
     switch (f.shape) {
         case SceneFloat::Shape::box:
+        case SceneFloat::Shape::open_box:  // it floats as the closed box: its hold stays dry
             return RigidBodyProps::solid_box(f.size, f.mass);
         case SceneFloat::Shape::sphere: {
             RigidBodyProps p;
@@ -39,6 +40,7 @@ ClipVolume float_clip(const SceneFloat& f) {
     const double r = 0.5 * f.size.x;
     switch (f.shape) {
         case SceneFloat::Shape::box:
+        case SceneFloat::Shape::open_box:
             return ClipVolume::box(glm::dvec3(0.0), 0.5 * f.size);
         case SceneFloat::Shape::sphere:
             return ClipVolume::sphere(glm::dvec3(0.0), r);
@@ -62,7 +64,8 @@ ClipVolume boat_clip(const HullMesh& hull, double length, double beam, double dr
 /// the Archimedes draft under it (a sphere's centre at the surface, near enough).
 double rest_height(const SceneFloat& f) {
     if (f.shape == SceneFloat::Shape::sphere) return 0.0;
-    const double plan = f.shape == SceneFloat::Shape::box ? f.size.x * f.size.z : 0.25 * kPi * f.size.x * f.size.x;
+    const bool boxed = f.shape == SceneFloat::Shape::box || f.shape == SceneFloat::Shape::open_box;
+    const double plan = boxed ? f.size.x * f.size.z : 0.25 * kPi * f.size.x * f.size.x;
     return 0.5 * f.size.y - f.mass / (kWaterDensity * plan);
 }
 
@@ -136,7 +139,9 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         s.position = {sf.at.x, under.surface.height + rest_height(sf), sf.at.y};
         auto id = f.world_.add(props, s);
         if (!id) return Error{id.error().code, fmt::format("floats/{} ({}): {}", i, sf.name, id.error().message)};
-        f.bodies_.push_back({sf.name, props.hull, sf.color, false, float_clip(sf)});
+        // An open box is drawn without its lid; it floats as the closed box.
+        const HullMesh drawn = sf.shape == SceneFloat::Shape::open_box ? HullMesh::open_box(sf.size) : props.hull;
+        f.bodies_.push_back({sf.name, drawn, sf.color, false, float_clip(sf)});
     }
     if (auto st = f.advance_to(start); !st) return st.error();
     return f;

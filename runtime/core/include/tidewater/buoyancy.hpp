@@ -36,6 +36,9 @@ struct HullMesh {
 
     /// A box centred on the origin with sides `size` (x, y, z).
     static HullMesh box(glm::dvec3 size);
+    /// box() without its top (+y) face: an open hold, to draw. Not closed: buoyancy takes
+    /// the closed box.
+    static HullMesh open_box(glm::dvec3 size);
     /// A sphere of `radius` round the origin: `rings` bands of 2 `rings` segments.
     static HullMesh sphere(double radius, int rings = 32);
     /// An upright cylinder (a barrel) of `radius` and `height` round the origin.

@@ -53,12 +53,15 @@ struct SceneShore {
 /// Something the scene sets afloat (tidewater/scene_floaters.hpp): a barrel (an upright
 /// cylinder), a box or a sphere of uniform density, starting at rest on the water.
 struct SceneFloat {
-    enum class Shape { barrel, box, sphere };
+    /// An open box is a box without its lid (a skiff, a barge's hold): it floats as the
+    /// closed box does and keeps the water out of its hold (SceneFloaters::Body::clip).
+    enum class Shape { barrel, box, sphere, open_box };
     std::string name;
     Shape shape = Shape::barrel;
-    glm::dvec3 size{0.6, 0.9, 0.6};     ///< m: barrel: diameter, height, diameter; box: x, y, z; sphere: diameter
-    double mass = 100.0;                ///< kg (> 0, less than the water its hull displaces)
-    glm::dvec2 at{0.0};                 ///< world (x, z) where it starts, m
+    glm::dvec3 size{0.6, 0.9,
+                    0.6};  ///< m: barrel: diameter, height, diameter; box, open box: x, y, z; sphere: diameter
+    double mass = 100.0;   ///< kg (> 0, less than the water its hull displaces)
+    glm::dvec2 at{0.0};    ///< world (x, z) where it starts, m
     glm::vec3 color{0.85, 0.35, 0.05};  ///< paint, linear RGB 0..1
 };
 

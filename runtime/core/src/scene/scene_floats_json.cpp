@@ -30,10 +30,13 @@ Result<SceneFloat> read_float(const json& value, const std::string& source, cons
         f.shape = SceneFloat::Shape::box;
     else if (shape == "sphere")
         f.shape = SceneFloat::Shape::sphere;
+    else if (shape == "open_box")
+        f.shape = SceneFloat::Shape::open_box;
     else
-        return r->error("shape", fmt::format("\"{}\" is not a shape (allowed: barrel, box, sphere)", shape));
+        return r->error("shape", fmt::format("\"{}\" is not a shape (allowed: barrel, box, sphere, open_box)", shape));
     if (auto st = read_pair(*r, "at", f.at, true, 1e6); !st) return st.error();
-    const bool round = f.shape != SceneFloat::Shape::box;
+    const bool boxed = f.shape == SceneFloat::Shape::box || f.shape == SceneFloat::Shape::open_box;
+    const bool round = !boxed;
     if (round && r->has("size")) return r->error("size", fmt::format("is for boxes; a {} takes \"radius\"", shape));
     if (!round && (r->has("radius") || r->has("height")))
         return r->error(r->has("radius") ? "radius" : "height", "a box takes \"size\": [x, y, z]");
@@ -53,7 +56,7 @@ Result<SceneFloat> read_float(const json& value, const std::string& source, cons
     double color[3] = {f.color.r, f.color.g, f.color.b};
     if (auto st = read_numbers(*r, "color", 3, 0.0, 1.0, "", color); !st) return st.error();
     f.color = glm::vec3(static_cast<float>(color[0]), static_cast<float>(color[1]), static_cast<float>(color[2]));
-    const double volume = f.shape == SceneFloat::Shape::box      ? f.size.x * f.size.y * f.size.z
+    const double volume = boxed                                  ? f.size.x * f.size.y * f.size.z
                           : f.shape == SceneFloat::Shape::sphere ? kPi / 6.0 * f.size.x * f.size.x * f.size.x
                                                                  : 0.25 * kPi * f.size.x * f.size.x * f.size.y;
     if (f.mass >= kWaterDensity * volume)
