@@ -8,6 +8,7 @@
 #include "tidewater/constants.hpp"
 #include "tidewater/scene_bake.hpp"
 #include "tidewater/scene_floaters.hpp"
+#include "tidewater/world_query.hpp"
 
 namespace tidewater {
 namespace {

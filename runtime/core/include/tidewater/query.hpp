@@ -75,7 +75,7 @@ struct QueryOptions {
     /// host's moving volumes, a float's hull. Read by the queries of a whole scene
     /// (query_world, query_submersion), which report the surface inside them dry. Only
     /// read; must outlive the call.
-    std::span<const ClipVolume> clip_volumes;
+    std::span<const ClipVolume> clip_volumes = {};
 };
 
 /// Full surface state at each point (x, z) at clock time `time` (the body's

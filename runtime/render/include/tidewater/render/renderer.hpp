@@ -146,7 +146,7 @@ struct FloatDraw {
     glm::vec3 color{0.8f};                       ///< paint, linear RGB 0..1
     /// Body frame: where the hull keeps the water out (tidewater/clip_volume.hpp), an open
     /// hull's dry hold included; absent: nowhere. float_draws gives each scene body's.
-    std::optional<ClipVolume> clip;
+    std::optional<ClipVolume> clip = std::nullopt;
 };
 
 /// The draws of `floaters`' bodies at their poses now (after advance_to). The hulls stay
@@ -172,7 +172,7 @@ struct FrameInfo {
     /// and these together at most gpu::kMaxClipVolumes (32); the floats' take the slots
     /// left, nearest the camera first (RendererStats::clip_volumes_left_out counts the
     /// rest). Read during record_frame only.
-    std::span<const ClipVolume> clip_volumes;
+    std::span<const ClipVolume> clip_volumes = {};
 };
 
 /// How many times each stage ran in one pass, from a pipeline statistics query.
