@@ -312,14 +312,15 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
     p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
-    // Above or under the water: the CPU's answer for the camera and for the corners of its
-    // near plane, so a host that asks query_submersion the same switches with the picture.
-    // The surface across the near plane (a fraction of a metre) is taken as bilinear between
-    // its corners: the water line drawn on the lens.
+    // Where the water is removed: the scene's, the host's and the floats' clip volumes.
     auto clips = detail::gather_clip_volumes(scene, frame.clip_volumes, frame.floats, frame.camera.position);
     if (!clips) return clips.error();
     p.clips = std::move(clips).value();
     detail::pack_clip_volumes(scene, p.clips, p.plan.origin, p.plan.frame);
+    // Above or under the water: the CPU's answer for the camera and for the corners of its
+    // near plane (with the same clip volumes), so a host that asks query_submersion the same
+    // switches with the picture. The surface across the near plane (a fraction of a metre) is
+    // taken as bilinear between its corners: the water line drawn on the lens.
     QueryOptions one_thread;
     one_thread.threads = 1;
     one_thread.wakes = frame.wakes;
