@@ -324,7 +324,8 @@ struct GpuFrame {
                              // texel value; w: the seabed the terrain fades to beyond its edge (m)
     vec4 terrain_lod;        // x: how far beyond its outermost texel centres the terrain fades to the seabed
                              // (m; 0: the edge extends); y, z: texel size along x, z (m); w: the lowest ground (m)
-    vec4 viewport;           // xy: size (px); zw: 1 / size
+    vec4 viewport;           // xy: the view's size (px); zw: 1 / size
+    vec4 view_corner;        // xy: the view's top-left corner in the host's targets (px, FrameTargets::offset); zw: unused
     vec4 options;            // x: has scene copy (0/1); y: the target wants linear colour (sRGB or float formats, 0/1);
                              // z: the swash's run-up above the level (m); w: its angular frequency (rad/s)
     vec4 water_patch;        // x: patch size (m); y: patches per side; zw: grid corner relative to O (m)
@@ -432,7 +433,7 @@ static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants
 static_assert(sizeof(GpuBodyDraw) == 13 * 16 + 64);
 static_assert(sizeof(GpuClipVolume) == 64);
 static_assert(sizeof(GpuFrame) ==
-              2 * 64 + 17 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes + sizeof(GpuClipVolume) * kMaxClipVolumes);
+              2 * 64 + 18 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes + sizeof(GpuClipVolume) * kMaxClipVolumes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

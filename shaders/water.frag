@@ -117,7 +117,7 @@ vec3 seen_from_below(vec3 n, vec3 v, float distance) {
     if (s.reflectance < 1.0) {
         above = sky_seen(s.transmitted);  // the sky table: the transmitted ray rises
         if (frame.options.x > 0.5) {
-            vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
+            vec2 uv = view_uv();
             float behind_depth = textureLod(scene_depth, uv, 0.0).r;
             if (behind_depth > 0.0 && world_from_depth(uv, behind_depth).y > world_pos.y)
                 above = from_scene_copy(textureLod(scene_color, uv, 0.0).rgb);
@@ -134,7 +134,7 @@ void main() {
     // Water behind the opaque scene (the sea under the land) leaves before it is shaded:
     // the ownership test below keeps the depth test after the shader, where hardware may not
     // reject it early.
-    if (frame.water_density.z > 0.5 && gl_FragCoord.z < texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r) discard;
+    if (frame.water_density.z > 0.5 && gl_FragCoord.z < texelFetch(scene_depth, ivec2(view_pixel()), 0).r) discard;
     if (!owns_water(draw_push.draw_index, rest_xz)) discard;
     if (inside_clip_volumes(world_pos)) discard;  // a dry hull, a host's clip volume
     GpuBodyDraw d = draws[draw_push.draw_index];
@@ -196,7 +196,7 @@ void main() {
     float cover = foam > 0.0 ? foam_cover(foam, rest_xz + frame.origin_mod.xy, footprint) : 0.0;
     VisibleFacets facets = visible_facets(n, v, variance, facet_slopes);
     n = facets.normal;
-    vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
+    vec2 uv = view_uv();
     bool has_scene = frame.options.x > 0.5;
 
     // Water column along the view ray, and what lies behind it.

@@ -11,6 +11,12 @@
 #ifndef TIDEWATER_WATER_MEDIUM_GLSL
 #define TIDEWATER_WATER_MEDIUM_GLSL
 
+// The pixel in its view (the view's rectangle of the host's targets, GpuFrame.view_corner
+// and viewport): in pixels from the view's corner, and 0..1 across it, where the view's
+// copies of the opaque scene hold what lies behind it.
+vec2 view_pixel() { return gl_FragCoord.xy - frame.view_corner.xy; }
+vec2 view_uv() { return view_pixel() * frame.viewport.zw; }
+
 struct WaterOptics {
     vec3 extinction;  // 1/m
     vec3 color;       // what deep water sends up toward the sky
@@ -34,7 +40,7 @@ vec3 through_water(WaterOptics water, vec3 color, float path, vec3 inscatter) {
 // the near plane's corners (frame.near_plane_depths, bilinear across a plane a fraction of
 // a metre wide), and how much that changes to the next pixel.
 vec2 near_plane_depth() {
-    vec2 s = gl_FragCoord.xy * frame.viewport.zw;
+    vec2 s = view_uv();
     vec4 d = frame.near_plane_depths;
     float top = mix(d.x, d.y, s.x), bottom = mix(d.w, d.z, s.x);
     float across = (mix(d.y, d.z, s.y) - mix(d.x, d.w, s.y)) * frame.viewport.z;

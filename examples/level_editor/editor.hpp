@@ -1,8 +1,8 @@
 // The editor's state and the jobs of its parts, each defined in a file of its own:
 // editor_main.cpp (start-up and the frame loop), editor_scene.cpp (loading, baked scenes
 // swapped in, floating bodies, presets, clip volumes), editor_script.cpp (the script runner),
-// editor_panels.cpp (the ImGui panels and overlays), editor_input.cpp (viewport input
-// and the terrain brush).
+// editor_panels.cpp (the ImGui panels and overlays), editor_input.cpp (the viewports
+// laid out, their input and the terrain brush).
 #pragma once
 
 #include <imgui.h>
@@ -50,7 +50,19 @@ class Editor {
     void float_bodies(render::FrameInfo& info);
     std::string scene_path_, message_;
     char path_field_[512] = {};
-    OrbitCamera camera_;
+    OrbitCamera camera_;  // the viewport's, or the left one's with two viewports
+    // Two viewports side by side (the View panel; "viewports 2" or "second ..." in a script):
+    // the left one is camera_'s through the renderer's main view, the right one
+    // second_camera_'s through a view of its own; the mouse drives the one it is over.
+    bool two_viewports_ = false;
+    OrbitCamera second_camera_;
+    bool second_camera_set_ = false;
+    std::optional<render::ViewId> second_view_;
+    render::PassTimings second_timings_{};
+    /// Adds or removes the second view as the layout asks and sizes the views for `window`.
+    Status lay_out_views(VkExtent2D window);
+    /// Viewport `which` (0: the left or only one, 1: the right one) of a `window`-sized frame.
+    VkRect2D viewport_rect(int which, VkExtent2D window) const;
     Clock clock_;
     float time_scale_ = 1.0f;
     int view_ = 0, preset_ = 0;

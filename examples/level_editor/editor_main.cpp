@@ -8,7 +8,8 @@
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
 // background), shore (breaking index, re-baked with progress), terrain (a brush), rivers
 // and lakes (discharge, width, level; path points dragged in the viewport), time
-// (pause, scale, scrub), view (debug views, GPU pass timings) and the probe.
+// (pause, scale, scrub), view (debug views, two viewports side by side, GPU pass timings)
+// and the probe.
 // Viewport: right drag orbits, middle drag pans, the wheel zooms; a left click on the
 // water drops a marker that bobs and tilts with hull_attitude.
 // Hot reload (--shader-dir DIR, a copy of shaders/): a saved shader is compiled with
@@ -25,6 +26,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "editor.hpp"
 
@@ -42,7 +44,7 @@ Status Editor::start(const Options& options) {
     if (!renderer) return renderer.error();
     renderer_ = std::move(renderer).value();
     if (auto st = load(options.scene); !st) return st;
-    if (auto st = renderer_->resize(window_.extent()); !st) return st;
+    if (auto st = lay_out_views(window_.extent()); !st) return st;
     if (!options.shader_dir.empty()) {
         if (!std::filesystem::is_directory(options.shader_dir))
             return Error{ErrorCode::io_error, fmt::format("editor: --shader-dir {}: not a folder", options.shader_dir)};
@@ -143,7 +145,7 @@ int Editor::run(const Options& options) {
         clock_.advance(options.frames < 0 ? std::chrono::duration<double>(now - last).count() : 1.0 / 60.0);
         last = now;
         EditorWindow::Frame frame;
-        auto begun = window_.begin_frame(frame, [&](VkExtent2D extent) { return renderer_->resize(extent); });
+        auto begun = window_.begin_frame(frame, [&](VkExtent2D extent) { return lay_out_views(extent); });
         if (!begun) {
             std::fprintf(stderr, "tidewater-editor: %s\n", begun.error().message.c_str());
             ok = false;
@@ -151,14 +153,18 @@ int Editor::run(const Options& options) {
         }
         if (!*begun) continue;  // the swapchain was rebuilt
         // The slot's previous frame has finished (begin_frame waited for it): its GPU times.
-        if (frame.index >= EditorWindow::kFramesInFlight)
+        if (frame.index >= EditorWindow::kFramesInFlight) {
             if (auto t = renderer_->timings(frame.index - EditorWindow::kFramesInFlight); t) timings_ = *t;
+            if (second_view_)
+                if (auto t = renderer_->timings(frame.index - EditorWindow::kFramesInFlight, *second_view_); t)
+                    second_timings_ = *t;
+        }
         ImGui_ImplVulkan_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         viewport_input();
         if (script_probe_) {
-            const VkExtent2D e = window_.extent();
+            const VkExtent2D e = viewport_rect(0, window_.extent()).extent;
             probe_ = probe_ray(*scene_, clock_.now(), camera_.position(),
                                camera_.ray(script_probe_->x, script_probe_->y, e.width, e.height));
         }
@@ -173,9 +179,22 @@ int Editor::run(const Options& options) {
         info.view = render::all_debug_views()[static_cast<std::size_t>(view_)];
         float_bodies(info);
         info.clip_volumes = clip_volumes_;
-        const render::FrameTargets targets{frame.color, frame.color_view, frame.depth, frame.depth_view,
-                                           window_.extent()};
-        if (auto st = renderer_->record_frame(frame.cmd, info, targets); !st) {
+        // The panels may have turned the second viewport on or off: the views follow first.
+        if (auto st = lay_out_views(window_.extent()); !st) {
+            std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
+            ok = false;
+        }
+        std::vector<render::ViewFrame> views;
+        for (int which = 0; which < (second_view_ ? 2 : 1); ++which) {
+            const VkRect2D rect = viewport_rect(which, window_.extent());
+            render::ViewFrame v{
+                which == 0 ? render::kMainView : *second_view_, info,
+                render::FrameTargets{frame.color, frame.color_view, frame.depth, frame.depth_view, rect.extent}};
+            v.targets.offset = rect.offset;
+            if (which == 1) v.frame.camera = second_camera_.camera();
+            views.push_back(v);
+        }
+        if (auto st = renderer_->record_views(frame.cmd, views); !st) {
             std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
             ok = false;
         }
@@ -207,6 +226,11 @@ int Editor::run(const Options& options) {
                     scripted_brush_->second);
     std::printf("window %ux%u, ocean \"%s\" with%s a shore model\n", window_.extent().width, window_.extent().height,
                 scene_->ocean.profile().name.c_str(), scene_->ocean.shore() ? "" : "out");
+    if (second_view_) {
+        const VkRect2D left = viewport_rect(0, window_.extent()), right = viewport_rect(1, window_.extent());
+        std::printf("viewports: left %ux%u, right %ux%u at x %d\n", left.extent.width, left.extent.height,
+                    right.extent.width, right.extent.height, right.offset.x);
+    }
     if (!message_.empty()) std::printf("%s\n", message_.c_str());
     if (script_probe_ && probe_) {
         const SurfacePoint direct =

@@ -78,8 +78,12 @@ void Editor::panels() {
         std::vector<const char*> items;
         for (const auto& n : names) items.push_back(n.c_str());
         ImGui::Combo("debug view", &view_, items.data(), static_cast<int>(items.size()));
+        ImGui::Checkbox("two viewports", &two_viewports_);
         ImGui::Text("GPU: terrain %.2f ms, copy %.2f ms, water %.2f ms", timings_.sky_and_terrain_ms,
                     timings_.scene_copy_ms, timings_.water_ms);
+        if (second_view_)
+            ImGui::Text("right: terrain %.2f ms, copy %.2f ms, water %.2f ms", second_timings_.sky_and_terrain_ms,
+                        second_timings_.scene_copy_ms, second_timings_.water_ms);
     }
     if (ImGui::CollapsingHeader("Probe", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (probe_) {
@@ -211,7 +215,7 @@ void Editor::draw_markers() {
 }
 
 std::optional<ImVec2> Editor::project(glm::dvec3 p) const {
-    const VkExtent2D e = window_.extent();
+    const VkExtent2D e = viewport_rect(0, window_.extent()).extent;  // the left or only viewport's
     const render::Camera cam = camera_.camera();
     const glm::dvec3 forward = glm::normalize(cam.target - cam.position);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
@@ -222,6 +226,7 @@ std::optional<ImVec2> Editor::project(glm::dvec3 p) const {
     if (depth <= 0.1) return std::nullopt;
     const double x = glm::dot(d, right) / (depth * tan_half * e.width / e.height),
                  y = glm::dot(d, up) / (depth * tan_half);
+    if (std::abs(x) > 1.0) return std::nullopt;  // not over another viewport
     return ImVec2(static_cast<float>((x + 1.0) * 0.5 * e.width), static_cast<float>((1.0 - y) * 0.5 * e.height));
 }
 

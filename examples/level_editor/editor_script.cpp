@@ -15,6 +15,8 @@ namespace tidewater::editor {
 //   brush X Z RADIUS HEIGHT     (a stroke of the terrain brush, re-baked in the background)
 //   river NAME discharge Q      (as the Rivers panel's slider, re-baked in the background)
 //   clip X Y Z RADIUS           (a clip sphere, as the Clip volumes panel places one)
+//   viewports 1|2               (one viewport, or two side by side, as the View panel's box)
+//   second PX PY PZ TX TY TZ [FOV]  (the right viewport's camera; two viewports from then on)
 //   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
 //   at N screenshot PATH        (the frame N, panels included)
 Status Editor::run_script(const std::string& path) {
@@ -34,6 +36,18 @@ Status Editor::run_script(const std::string& path) {
             if (!(words >> p.x >> p.y >> p.z >> t.x >> t.y >> t.z)) return bad();
             words >> fov;
             camera_ = OrbitCamera::looking(p, t, fov);
+        } else if (command == "viewports") {
+            int count = 0;
+            if (!(words >> count) || (count != 1 && count != 2)) return bad();
+            two_viewports_ = count == 2;
+        } else if (command == "second") {
+            glm::dvec3 p, t;
+            double fov = camera_.fov_y_deg;
+            if (!(words >> p.x >> p.y >> p.z >> t.x >> t.y >> t.z)) return bad();
+            words >> fov;
+            second_camera_ = OrbitCamera::looking(p, t, fov);
+            second_camera_set_ = true;
+            two_viewports_ = true;
         } else if (command == "view") {
             std::string name;
             words >> name;

@@ -229,6 +229,14 @@ JSON
     check "reflecting the sky alone" grep -q '"scene_reflection": false' low.json
     check "without caustics" grep -q '"caustics": false' low.json
     check "with fewer, larger patches to the horizon" grep -q '"far_field_ring_patches": 16' low.json
+    "$TW" render --size 160x90 --time 2 --split-camera -160 14 -60 -40 0 0 --out split.png --stats split.json \
+      --validate > logsplit.txt
+    check "split screen: two views of one frame render under validation" test $? -eq 0
+    check "  and the stats say two views" grep -q '"views": 2' split.json
+    check "  the picture is the whole size" bash -c "[ \"\$(od -An -tu1 -j16 -N8 split.png | tr -s ' ' | sed 's/^ //')\" = '0 0 0 160 0 0 0 90' ]"
+    "$TW" render --size 160x90 --split-camera 1 2 3 1 2 3 --out bad.png > logbad.txt 2>&1
+    check "a split camera looking nowhere is refused" test $? -ne 0
+    check "  naming the flag" grep -q -- "--split-camera" logbad.txt
     "$TW" render --size 96x54 --time 2 --quality low --caustics true --scene-reflection true --out lowc.png \
       --stats lowc.json > loglowc.txt
     check "a tier's caustics and scene reflection are overridden" grep -q '"caustics": true' lowc.json

@@ -189,6 +189,48 @@ TEST(Editor, AClipSpherePlacedInTheEditorLeavesTheSurfaceDry) {
         << r.output;
 }
 
+// Two viewports side by side: each half of the window is a renderer view of its own with
+// its own camera, drawn in one frame under the validation layer; the halves show the
+// scene from two sides.
+TEST(Editor, TwoViewportsSideBySideShowTheSceneFromTwoCameras) {
+    const fs::path shot = fs::temp_directory_path() / ("tidewater_editor_two_" + std::to_string(::getpid()) + ".png");
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_two_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "camera 0 40 200 0 0 0\nsecond 260 60 -120 0 0 0\n";
+    const EditorRun r =
+        run_editor("--frames 4 --size 1024x640 --script " + script.string() + " --screenshot " + shot.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("viewports: left 512x640, right 512x640 at x 512"), std::string::npos) << r.output;
+    auto img = detail::read_png_rgba8(shot);
+    fs::remove(shot);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    // Below the panel (the top left), each half's water and land, and how the halves differ.
+    int water[2] = {0, 0}, land[2] = {0, 0};
+    long differ = 0;
+    for (int y = img->height / 2; y < img->height; ++y)
+        for (int x = 0; x < 512; ++x)
+            for (int half = 0; half < 2; ++half) {
+                const std::size_t k = (static_cast<std::size_t>(y) * img->width + x + 512 * half) * 4;
+                const int r8 = img->pixels[k], g8 = img->pixels[k + 1], b8 = img->pixels[k + 2];
+                water[half] += b8 > r8 + 20 && b8 >= g8 ? 1 : 0;
+                land[half] += g8 > r8 + 10 && g8 > b8 + 10 ? 1 : 0;
+                if (half == 1) {
+                    const std::size_t l = k - 512 * 4;
+                    differ += std::abs(r8 - img->pixels[l]) + std::abs(g8 - img->pixels[l + 1]) +
+                                  std::abs(b8 - img->pixels[l + 2]) >
+                              30;
+                }
+            }
+    const int half_pixels = 512 * img->height / 2;
+    for (int half = 0; half < 2; ++half) {
+        EXPECT_GT(water[half], half_pixels / 20) << "water in half " << half;
+        EXPECT_GT(land[half], half_pixels / 50) << "land in half " << half;
+    }
+    EXPECT_GT(differ, half_pixels / 5) << "the two viewports look from different places";
+}
+
 // A real coast opens in the editor: Hilo Bay's depth grid, baked in the background, drawn
 // with water and land under the validation layer.
 TEST(Editor, OpensHiloBay) {

@@ -161,7 +161,9 @@ TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
         model->corner() + tile_side * glm::dvec2(static_cast<double>(first_stored % per_side) + 0.5,
                                                  static_cast<double>(first_stored / per_side) + 0.5);
     for (std::uint64_t frame = 0, quiet = 0; quiet < 3 && frame < 1000; ++frame)
-        quiet = buffers_->stream(camera, frame, 2, std::uint64_t{1} << 20) == 0 ? quiet + 1 : 0;
+        quiet = buffers_->stream(std::span<const glm::dvec2>(&camera, 1), frame, 2, std::uint64_t{1} << 20) == 0
+                    ? quiet + 1
+                    : 0;
     ASSERT_GT(buffers_->streamed_tiles(), 0u);
     ASSERT_TRUE(resident_tiles_hold(*buffers_, *model, nullptr));
 
@@ -236,7 +238,8 @@ TEST_F(ShoreBuffersTest, TilesNearTheCameraStreamInAtFullResolution) {
     auto stream_until_settled = [&](glm::dvec2 camera) {
         for (int settled = 0; settled < int(kInFlight) + 1; ++frame) {
             ASSERT_LT(frame, 10000u) << "streaming does not settle";
-            const std::uint64_t written = buffers_->stream(camera, frame, kInFlight, per_frame);
+            const std::uint64_t written =
+                buffers_->stream(std::span<const glm::dvec2>(&camera, 1), frame, kInFlight, per_frame);
             EXPECT_LE(written, per_frame + largest_slot);
             settled = written == 0 ? settled + 1 : 0;
             const auto pages = buffers_->pages_now();

@@ -68,6 +68,18 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
         if (!made) return made.error();
         floaters = std::move(made).value();
     }
+    // Split screen: the main view draws the left half, a second view the right half.
+    std::vector<render::ViewFrame> views(1);
+    if (job.split_camera) {
+        auto right = (*renderer)->add_view({job.extent.width - job.extent.width / 2, job.extent.height});
+        if (!right) return right.error();
+        views.push_back({*right, {}, {}});
+        views[0].targets.extent = {job.extent.width / 2, job.extent.height};
+        views[1].targets.extent = {job.extent.width - job.extent.width / 2, job.extent.height};
+        views[1].targets.offset = {static_cast<std::int32_t>(job.extent.width / 2), 0};
+    } else {
+        views[0].targets.extent = job.extent;
+    }
     std::vector<render::FloatDraw> float_draws;
     RenderResult result;
     result.device = (*device)->device_name();
@@ -80,7 +92,12 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
             float_draws = render::float_draws(*floaters);
             frame.floats = float_draws;
         }
-        auto image = (*target)->render(**renderer, frame);
+        views[0].frame = frame;
+        if (job.split_camera) {
+            views[1].frame = frame;
+            views[1].frame.camera = *job.split_camera;
+        }
+        auto image = (*target)->render_views(**renderer, views);
         if (!image) return image.error();
         // Validation messages fail the job before anything is written for this frame.
         if ((*device)->validation_messages() > 0)
@@ -117,6 +134,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
     const render::RendererStats s = (*renderer)->stats();
     result.stats = {{"device", result.device},
                     {"size", {job.extent.width, job.extent.height}},
+                    {"views", views.size()},
                     {"view", std::string(render::to_string(job.view))},
                     {"quality",
                      {{"tier", std::string(render::quality_name(job.quality))},

@@ -19,7 +19,10 @@ struct RenderJob {
     double fps = 30.0;
     render::DebugView view = render::DebugView::shaded;
     std::optional<render::Camera> camera;  ///< Default: the scene's camera or an offshore view.
-    std::string single_output;             ///< PNG path when frames == 1; else frame_NNNN.png in output_dir.
+    /// Split screen: the image's right half is a second view of the same frame from this
+    /// camera, the left half the first camera's.
+    std::optional<render::Camera> split_camera;
+    std::string single_output;  ///< PNG path when frames == 1; else frame_NNNN.png in output_dir.
     std::string output_dir;
     bool validate = false;
     std::optional<glm::dvec3> sun_direction;                ///< Toward the sun; default FrameInfo's.

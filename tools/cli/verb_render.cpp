@@ -32,7 +32,7 @@ struct RenderArgs {
     std::string out_dir;
     std::string view = "shaded";
     std::string stats;
-    std::vector<double> camera, target;
+    std::vector<double> camera, target, split_camera;
     double fov = 0.0;
     std::vector<double> sun;
     double turbidity = 2.5;
@@ -128,6 +128,17 @@ int run_render(const RenderArgs& a) {
         if (a.fov != 0.0) cam.fov_y_deg = a.fov;
         job.camera = cam;
     }
+    if (!a.split_camera.empty()) {
+        for (double v : a.split_camera)
+            if (!std::isfinite(v)) return fail(verb, "--split-camera: the six numbers must be finite");
+        render::Camera second = job.camera.value_or(default_camera(*scene));
+        second.position = {a.split_camera[0], a.split_camera[1], a.split_camera[2]};
+        second.target = {a.split_camera[3], a.split_camera[4], a.split_camera[5]};
+        if (glm::length(second.target - second.position) < 1e-6)
+            return fail(verb, "--split-camera: the position and the target must differ");
+        if (extent->width < 32) return fail(verb, "--split-camera: the image needs at least 32 pixels across");
+        job.split_camera = second;
+    }
     // Check the stats path before minutes of rendering.
     std::unique_ptr<AtomicFile> stats_file;
     if (!a.stats.empty()) {
@@ -162,6 +173,10 @@ Verb add_render_verb(CLI::App& app) {
     cmd->add_option("--stats", args->stats, "Write per-pass GPU times, the device and counts as JSON");
     cmd->add_option("--camera", args->camera, "Camera position x y z, m")->expected(3);
     cmd->add_option("--target", args->target, "Camera target x y z, m")->expected(3);
+    cmd->add_option("--split-camera", args->split_camera,
+                    "Split screen: the right half is a second view from x y z toward tx ty tz (m), "
+                    "the left half the camera's")
+        ->expected(6);
     cmd->add_option("--fov", args->fov, "Vertical field of view, degrees");
     cmd->add_option("--sun", args->sun, "Direction toward the sun x y z (y up)")->expected(3);
     cmd->add_option("--gpu-memory", args->gpu_memory_mib,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <vector>
 
 #include "gpu_memory.hpp"
 #include "vk_util.hpp"
@@ -66,11 +67,29 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(const DeviceCon
 }
 
 Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& frame) {
+    ViewFrame whole{kMainView, frame, {}};
+    whole.targets.extent = impl_->color.extent();
+    return render_views(renderer, std::span<const ViewFrame>(&whole, 1));
+}
+
+Result<RgbaImage> OffscreenTarget::render_views(Renderer& renderer, std::span<const ViewFrame> views) {
     Impl& m = *impl_;
     const detail::VulkanFunctions& vk = m.ctx.vk();
     const VkExtent2D extent = m.color.extent();
-    // The renderer's own copies follow the target's size (a no-op when it already does).
-    if (auto st = renderer.resize(extent); !st) return st.error();
+    std::vector<ViewFrame> placed(views.begin(), views.end());
+    for (ViewFrame& v : placed) {
+        const VkOffset2D o = v.targets.offset;
+        const VkExtent2D e = v.targets.extent;
+        if (o.x < 0 || o.y < 0 || e.width == 0 || e.height == 0 ||
+            static_cast<std::uint64_t>(o.x) + e.width > extent.width ||
+            static_cast<std::uint64_t>(o.y) + e.height > extent.height)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("offscreen target: view {}'s rectangle {}x{} at ({}, {}) is not inside the "
+                                     "{}x{} image",
+                                     v.view.value, e.width, e.height, o.x, o.y, extent.width, extent.height)};
+        // The renderer's own copies follow the view's size (a no-op when they already do).
+        if (auto st = renderer.resize(e, v.view); !st) return st.error();
+    }
     Status recorded;
     Status submitted = detail::submit_and_wait(m.ctx, m.pool.get(), [&](VkCommandBuffer cmd) {
         detail::transition(vk, cmd, m.color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -85,17 +104,18 @@ Result<RgbaImage> OffscreenTarget::render(Renderer& renderer, const FrameInfo& f
             detail::transition(vk, cmd, m.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-        FrameTargets targets;
-        targets.color_image = m.color.handle();
-        targets.color_view = m.color.view();
-        targets.depth_image = m.depth.handle();
-        targets.depth_view = m.depth.view();
-        targets.extent = extent;
-        if (multisampled) {
-            targets.resolve_image = m.resolved.handle();
-            targets.resolve_view = m.resolved.view();
+        for (ViewFrame& v : placed) {
+            FrameTargets& targets = v.targets;
+            targets.color_image = m.color.handle();
+            targets.color_view = m.color.view();
+            targets.depth_image = m.depth.handle();
+            targets.depth_view = m.depth.view();
+            if (multisampled) {
+                targets.resolve_image = m.resolved.handle();
+                targets.resolve_view = m.resolved.view();
+            }
         }
-        recorded = renderer.record_frame(cmd, frame, targets);
+        recorded = renderer.record_views(cmd, placed);
         const VkImage picture = multisampled ? m.resolved.handle() : m.color.handle();
         detail::transition(vk, cmd, picture, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,

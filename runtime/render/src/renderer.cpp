@@ -87,23 +87,16 @@ std::span<const DebugView> all_debug_views() {
 }
 
 // The renderer is its parts: pipelines (render_pipelines), the scene's GPU data
-// (scene_uploads, shared with the GPU queries), the scene copies and passes of a
-// frame (scene_copies) and its timestamps (frame_timer). This file holds the
-// in-flight slots and the public calls that tie them together.
+// (scene_uploads, shared with the GPU queries and by every view), each view's copies of
+// the opaque scene and passes (scene_copies), frame buffers and timestamps (frame_timer).
+// This file holds the views and their in-flight slots, and the public calls that tie
+// them together.
 struct Renderer::Impl {
     detail::Device device;  // the host's, with the functions loaded for it
     RendererInitInfo info;
     QualitySettings quality;  // info.quality with its overrides
 
     detail::DrawOptions draw_options() const { return detail::draw_options_for(info, quality); }
-    /// Pipelines replaced by reload_shaders, kept until no frame in flight can use them:
-    /// those replaced before frame `until` - frames_in_flight are destroyed when it records.
-    struct Retired {
-        detail::DrawPipelines draws;
-        std::uint64_t until = 0;
-    };
-    std::vector<Retired> retired;
-    std::uint64_t next_frame = 0;                       // one past the last frame index recorded
     const detail::ColorTarget* color_target = nullptr;  // entries of the format table
     const detail::DepthTarget* depth_target = nullptr;
     const detail::Device& ctx() const { return device; }
@@ -111,13 +104,11 @@ struct Renderer::Impl {
 
     detail::FramePipelines pipelines;
     detail::OwnedCommandPool upload_pool;
-    detail::OwnedDescriptorPool descriptor_pool;
-    detail::FrameTimer timer;
-    detail::SceneCopies copies;
-    detail::SkyTable sky;  // what the water reflects and the fog fades to
+    detail::PlaceholderCopies placeholders;  // what a pass without a scene copy samples
+    detail::SkyTable sky;                    // what the water reflects and the fog fades to
     detail::DrawnTable foam_noise;
 
-    /// Per frame in flight: what the CPU writes for it, and its descriptor set.
+    /// Per frame in flight of a view: what the CPU writes for it, and its descriptor set.
     struct Slot {
         GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices, terrain_nodes;
         GpuBuffer shore_pages;  // the shore pages as this frame reads them (tiles stream between frames)
@@ -126,19 +117,42 @@ struct Renderer::Impl {
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
-    std::vector<Slot> slots;
+    /// A view: its slots, their descriptor sets, its timestamps and its copies of the opaque
+    /// scene, and what its last frame drew. The scene's uploads are the renderer's.
+    struct View {
+        std::vector<Slot> slots;
+        detail::OwnedDescriptorPool descriptor_pool;
+        detail::FrameTimer timer;
+        std::optional<detail::SceneCopies> copies;                               // none until the view is sized
+        std::uint64_t patches = 0, terrain_vertices = 0, terrain_triangles = 0;  // its last frame's
+        Submersion camera;
+        std::uint32_t clips = 0, clips_left_out = 0;
+    };
+    std::map<std::uint32_t, std::unique_ptr<View>> views;  // by ViewId; the main view is 0
+    std::uint32_t next_view = 1;
+    /// The slots' buffers hold this many body draws, waves and river waves (set_scene).
+    std::size_t slot_draws = 1, slot_waves = kMaxWaves, slot_river_waves = 1;
+
+    /// What was replaced or removed without a wait (pipelines by reload_shaders, a view's
+    /// copies by resize, a view by remove_view), kept until no frame in flight can use it:
+    /// what was retired before frame `until` is destroyed when frame `until` +
+    /// frames_in_flight records.
+    struct Retired {
+        detail::DrawPipelines draws;
+        std::optional<detail::SceneCopies> copies;
+        std::unique_ptr<View> view;
+        std::uint64_t until = 0;
+    };
+    std::vector<Retired> retired;
+    std::uint64_t next_frame = 0;  // one past the last frame index recorded
 
     std::optional<detail::TerrainUpload> terrain;  // set by set_scene
     detail::ShoreBuffers shore;
-    detail::BodyBuffers bodies;  // lakes and rivers (placeholders without)
-    Scene scene;                 // as set; its ocean is replaced by set_water
-    std::uint64_t last_patches = 0;
-    std::uint64_t last_terrain_vertices = 0, last_terrain_triangles = 0;  // the last frame recorded
-    Submersion last_camera;                                               // the last frame recorded
-    std::uint32_t last_clips = 0, last_clips_left_out = 0;                // the last frame recorded
-    std::uint64_t last_upload_bytes = 0;                                  // written by the last set_scene
-    std::uint64_t shore_written = 0;                                      // by the last use_shores
-    std::uint64_t shore_streamed = 0;                                     // by the last frame recorded
+    detail::BodyBuffers bodies;           // lakes and rivers (placeholders without)
+    Scene scene;                          // as set; its ocean is replaced by set_water
+    std::uint64_t last_upload_bytes = 0;  // written by the last set_scene
+    std::uint64_t shore_written = 0;      // by the last use_shores
+    std::uint64_t shore_streamed = 0;     // by the last frame recorded
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -153,14 +167,20 @@ struct Renderer::Impl {
     void log(const std::string& message) const {
         if (info.log) info.log(message);
     }
-    Status create_slots();
-    Status size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves);
+    View* find_view(ViewId id) const {
+        const auto it = views.find(id.value);
+        return it == views.end() ? nullptr : it->second.get();
+    }
+    /// A view with its slots sized for the scene, and its copies when `extent` is given.
+    /// Makes buffers and sets; no GPU work, no wait.
+    Result<std::unique_ptr<View>> make_view(std::optional<VkExtent2D> extent) const;
+    Status size_slots(View& view) const;
     /// Uploads the ocean's shore model (slot 0; null without an ocean) and each lake's after
     /// it, within the budget the terrain's `terrain_bytes` leave.
     Status use_shores(const WaterBody* ocean, const std::vector<SceneLake>& lakes, std::uint64_t terrain_bytes);
-    void write_descriptors(Slot& slot, bool with_scene_copy);
+    void write_descriptors(const View& view, Slot& slot, bool with_scene_copy);
     /// A frame's recording, in three steps: its inputs checked, its plan (what it draws,
-    /// from the frame and the scene), and the plan written into its in-flight slot.
+    /// from the frame and the scene), and the plan written into its view's in-flight slot.
     struct Planned {
         detail::FramePlan plan;
         detail::BodyDraws draws;
@@ -171,22 +191,29 @@ struct Renderer::Impl {
         detail::FrameClips clips;
     };
     Status validate_frame(const FrameInfo& frame, VkExtent2D extent) const;
-    Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, bool scene_copy) const;
-    Status upload(Slot& slot, Planned& planned, bool scene_copy);
-    Slot& take_slot(std::uint64_t frame_index);
-    Status prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
-                        detail::FramePlan& plan);
-    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkExtent2D extent, DebugView view);
-    void draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
-                    DebugView view);
+    Status validate_view_frame(const ViewFrame& v) const;
+    Result<Planned> plan_frame(const FrameInfo& frame, VkExtent2D extent, VkOffset2D offset, bool scene_copy) const;
+    Status upload(View& view, Slot& slot, Planned& planned, bool scene_copy);
+    Slot& take_slot(View& view, std::uint64_t frame_index);
+    /// Over the budget, the full-resolution shore tiles nearest `cameras` come in.
+    void stream_shores(std::span<const glm::dvec2> cameras, std::uint64_t frame_index);
+    Status prepare_slot(View& view, const FrameInfo& frame, VkExtent2D extent, VkOffset2D offset, bool scene_copy,
+                        Slot*& slot, detail::FramePlan& plan);
+    /// One view's passes into its targets: opaque, the scene copy, water.
+    void record_passes(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan,
+                       DebugView debug_view, const FrameTargets& targets);
+    void draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkRect2D area, DebugView view);
+    void draw_water(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan, VkRect2D area,
+                    DebugView debug_view);
 };
 
-Status Renderer::Impl::create_slots() {
+Result<std::unique_ptr<Renderer::Impl::View>> Renderer::Impl::make_view(std::optional<VkExtent2D> extent) const {
+    auto view = std::make_unique<View>();
     const std::uint32_t n = info.frames_in_flight;
-    TW_VK_TRY(detail::make_descriptor_pool(ctx(), detail::kFrameSetRows, n, descriptor_pool));
-    slots.resize(n);
+    TW_VK_TRY(detail::make_descriptor_pool(ctx(), detail::kFrameSetRows, n, view->descriptor_pool));
+    view->slots.resize(n);
     const VkDescriptorSetLayout set_layout = pipelines.set_layout.get();
-    for (Slot& s : slots) {
+    for (Slot& s : view->slots) {
         auto frame = GpuBuffer::create(ctx(), sizeof(gpu::GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         if (!frame) return frame.error();
         s.frame = std::move(frame).value();
@@ -203,21 +230,31 @@ Status Renderer::Impl::create_slots() {
         if (!terrain_nodes) return terrain_nodes.error();
         s.terrain_nodes = std::move(terrain_nodes).value();
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-        alloc.descriptorPool = descriptor_pool.get();
+        alloc.descriptorPool = view->descriptor_pool.get();
         alloc.descriptorSetCount = 1;
         alloc.pSetLayouts = &set_layout;
         TW_VK_TRY(vk().AllocateDescriptorSets(ctx().device, &alloc, &s.set));
     }
-    return size_slots(1, kMaxWaves, 1);
+    if (auto st = size_slots(*view); !st) return st.error();
+    auto timer = detail::FrameTimer::create(ctx(), n);
+    if (!timer) return timer.error();
+    view->timer = std::move(timer).value();
+    if (extent) {
+        auto copies = detail::SceneCopies::create(ctx(), *color_target, *depth_target, info.samples, *extent);
+        if (!copies) return copies.error();
+        view->copies = std::move(copies).value();
+    }
+    return view;
 }
 
-// Per-frame buffers sized for a scene's draws; called with no frame in flight.
-Status Renderer::Impl::size_slots(std::size_t draws, std::size_t waves, std::size_t river_waves) {
-    for (Slot& s : slots) {
+// Per-frame buffers sized for the scene's draws: grown while no frame in flight uses the
+// view (set_scene and set_water wait for the device first; a new view has none).
+Status Renderer::Impl::size_slots(View& view) const {
+    for (Slot& s : view.slots) {
         for (auto [buffer, bytes] :
-             {std::pair{&s.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(waves, 1)},
-              std::pair{&s.draws, sizeof(gpu::GpuBodyDraw) * std::max<std::size_t>(draws, 1)},
-              std::pair{&s.river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(river_waves, 1)}}) {
+             {std::pair{&s.waves, sizeof(gpu::GpuWave) * std::max<std::size_t>(slot_waves, 1)},
+              std::pair{&s.draws, sizeof(gpu::GpuBodyDraw) * std::max<std::size_t>(slot_draws, 1)},
+              std::pair{&s.river_waves, sizeof(gpu::GpuRiverWave) * std::max<std::size_t>(slot_river_waves, 1)}}) {
             if (buffer->handle() && buffer->size() >= bytes) continue;
             auto made = GpuBuffer::create(ctx(), bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             if (!made) return made.error();
@@ -242,15 +279,18 @@ Status Renderer::Impl::use_shores(const WaterBody* ocean, const std::vector<Scen
     return {};
 }
 
-void Renderer::Impl::write_descriptors(Slot& slot, bool with_scene_copy) {
+void Renderer::Impl::write_descriptors(const View& view, Slot& slot, bool with_scene_copy) {
     using detail::bound_buffer;
     using detail::bound_texture;
+    const bool copied = with_scene_copy && view.copies;
     std::array<detail::BoundResource, gpu::eFrameBindingCount> r;
     r[gpu::eFrameConstants] = bound_buffer(slot.frame.handle());
     r[gpu::eFrameWaves] = bound_buffer(slot.waves.handle());
     r[gpu::eFrameTerrainHeight] = bound_texture(pipelines.linear.get(), terrain->heights.view());
-    r[gpu::eFrameSceneColor] = bound_texture(pipelines.linear.get(), copies.color_view(with_scene_copy));
-    r[gpu::eFrameSceneDepth] = bound_texture(pipelines.nearest.get(), copies.depth_view(with_scene_copy));
+    r[gpu::eFrameSceneColor] =
+        bound_texture(pipelines.linear.get(), copied ? view.copies->color_view() : placeholders.color.view());
+    r[gpu::eFrameSceneDepth] =
+        bound_texture(pipelines.nearest.get(), copied ? view.copies->depth_view() : placeholders.depth.view());
     r[gpu::eFrameShoreWaves] = bound_buffer(shore.per_wave());
     r[gpu::eFrameShoreShared] = bound_buffer(shore.shared());
     r[gpu::eFrameShorePages] = bound_buffer(slot.shore_pages.handle());
@@ -295,23 +335,59 @@ Status Renderer::Impl::validate_frame(const FrameInfo& frame, VkExtent2D extent)
     return {};
 }
 
-Renderer::Impl::Slot& Renderer::Impl::take_slot(std::uint64_t frame_index) {
-    Slot& slot = slots[frame_index % slots.size()];
-    // Frames up to frame_index - frames_in_flight have finished: their pipelines may go.
-    std::erase_if(retired, [&](const Retired& r) { return r.until + slots.size() <= frame_index; });
+// A view's frame for record_views: a view that is there, sized for its targets.
+Status Renderer::Impl::validate_view_frame(const ViewFrame& v) const {
+    const FrameTargets& t = v.targets;
+    const View* view = find_view(v.view);
+    if (!view)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: view {} is not there (removed, or never added)", v.view.value)};
+    if (!t.color_image || !t.color_view || !t.depth_image || !t.depth_view)
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("renderer: view {}: a frame needs the colour and depth images and views", v.view.value)};
+    const VkExtent2D sized = view->copies ? view->copies->extent() : VkExtent2D{};
+    if (t.extent.width != sized.width || t.extent.height != sized.height)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: view {}: the frame's targets are {}x{} but the view is sized for {}x{}: "
+                                 "call resize() for the view whenever its targets change size (recording never waits)",
+                                 v.view.value, t.extent.width, t.extent.height, sized.width, sized.height)};
+    if (t.offset.x < 0 || t.offset.y < 0 || t.offset.x > 16384 || t.offset.y > 16384)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: view {}: offset ({}, {}) is out of range (0 to 16384)", v.view.value,
+                                 t.offset.x, t.offset.y)};
+    if ((t.offset.x != 0 || t.offset.y != 0) && info.samples != VK_SAMPLE_COUNT_1_BIT)
+        return Error{ErrorCode::unsupported,
+                     fmt::format("renderer: view {}: multisampled targets draw from offset (0, 0) only (their depth "
+                                 "resolves into a copy the view's size)",
+                                 v.view.value)};
+    return validate_frame(v.frame, t.extent);
+}
+
+Renderer::Impl::Slot& Renderer::Impl::take_slot(View& view, std::uint64_t frame_index) {
+    Slot& slot = view.slots[frame_index % view.slots.size()];
+    // Frames up to frame_index - frames_in_flight have finished: what was retired may go.
+    std::erase_if(retired, [&](const Retired& r) { return r.until + info.frames_in_flight <= frame_index; });
     next_frame = std::max(next_frame, frame_index + 1);
     slot.recorded_frame = frame_index;
     return slot;
 }
 
+void Renderer::Impl::stream_shores(std::span<const glm::dvec2> cameras, std::uint64_t frame_index) {
+    shore_streamed = info.shore_stream_bytes_per_frame == 0
+                         ? 0
+                         : shore.stream(cameras, frame_index, info.frames_in_flight, info.shore_stream_bytes_per_frame);
+}
+
 // What the frame draws, from the frame and the scene; nothing is written yet.
-Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent,
+Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& frame, VkExtent2D extent, VkOffset2D offset,
                                                            bool scene_copy) const {
     const double water_density = quality.water_per_sample ? std::sqrt(static_cast<double>(info.samples)) : 1.0;
     Planned p;
     p.plan = detail::plan_frame(frame, extent, scene.ocean, terrain->placement, terrain->water_half_size, scene_copy,
                                 color_target->linear_output, water_density, quality);
-    p.plan.frame.water_density.z = scene_copy && !copies.multisampled() ? 1.0f : 0.0f;
+    p.plan.frame.water_density.z = scene_copy && info.samples == VK_SAMPLE_COUNT_1_BIT ? 1.0f : 0.0f;
+    p.plan.frame.view_corner = glm::vec4(static_cast<float>(offset.x), static_cast<float>(offset.y), 0.0f, 0.0f);
     // Where the water is removed: the scene's, the host's and the floats' clip volumes.
     auto clips = detail::gather_clip_volumes(scene, frame.clip_volumes, frame.floats, frame.camera.position);
     if (!clips) return clips.error();
@@ -370,7 +446,7 @@ Result<Renderer::Impl::Planned> Renderer::Impl::plan_frame(const FrameInfo& fram
 }
 
 // The plan into the slot's mapped buffers and its descriptor set.
-Status Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
+Status Renderer::Impl::upload(View& view, Slot& slot, Planned& p, bool scene_copy) {
     // The shore pages as they are now: tiles streamed in since the slot's last frame.
     const std::span<const std::uint32_t> pages = shore.pages_now();
     if (!slot.shore_pages.handle() || slot.shore_pages.size() < pages.size_bytes()) {
@@ -390,10 +466,10 @@ Status Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
     slot.terrain_first = p.terrain.first;
     slot.terrain_count = p.terrain.count;
     const std::uint64_t patch_vertices = (gpu::kTerrainPatchQuads + 1) * (gpu::kTerrainPatchQuads + 1);
-    last_terrain_vertices = last_terrain_triangles = 0;
+    view.terrain_vertices = view.terrain_triangles = 0;
     for (std::size_t g = 0; g < 5; ++g) {
-        last_terrain_vertices += slot.terrain_count[g] * patch_vertices;
-        last_terrain_triangles +=
+        view.terrain_vertices += slot.terrain_count[g] * patch_vertices;
+        view.terrain_triangles +=
             slot.terrain_count[g] * (g == 0 ? terrain->index_count : terrain->quadrant_index_count) / 3;
     }
     std::memcpy(slot.frame.mapped(), &p.plan.frame, sizeof(p.plan.frame));
@@ -405,32 +481,58 @@ Status Renderer::Impl::upload(Slot& slot, Planned& p, bool scene_copy) {
     if (!draws.river_waves.empty())
         std::memcpy(slot.river_waves.mapped(), draws.river_waves.data(),
                     sizeof(gpu::GpuRiverWave) * draws.river_waves.size());
-    write_descriptors(slot, scene_copy);
+    write_descriptors(view, slot, scene_copy);
     return {};
 }
 
-Status Renderer::Impl::prepare_slot(const FrameInfo& frame, VkExtent2D extent, bool scene_copy, Slot*& slot,
-                                    detail::FramePlan& plan) {
-    if (auto st = validate_frame(frame, extent); !st) return st;
-    slot = &take_slot(frame.frame_index);
-    auto planned = plan_frame(frame, extent, scene_copy);
+Status Renderer::Impl::prepare_slot(View& view, const FrameInfo& frame, VkExtent2D extent, VkOffset2D offset,
+                                    bool scene_copy, Slot*& slot, detail::FramePlan& plan) {
+    slot = &take_slot(view, frame.frame_index);
+    auto planned = plan_frame(frame, extent, offset, scene_copy);
     if (!planned) return planned.error();
-    // Over the budget, the full-resolution shore tiles nearest the camera come in.
-    shore_streamed = info.shore_stream_bytes_per_frame == 0
-                         ? 0
-                         : shore.stream(glm::dvec2(frame.camera.position.x, frame.camera.position.z), frame.frame_index,
-                                        static_cast<std::uint32_t>(slots.size()), info.shore_stream_bytes_per_frame);
-    if (auto st = upload(*slot, *planned, scene_copy); !st) return st;
-    last_camera = planned->camera;
-    last_clips = planned->clips.total;
-    last_clips_left_out = planned->clips.left_out;
+    if (auto st = upload(view, *slot, *planned, scene_copy); !st) return st;
+    view.camera = planned->camera;
+    view.clips = planned->clips.total;
+    view.clips_left_out = planned->clips.left_out;
     plan = std::move(planned->plan);
     return {};
 }
 
-void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkExtent2D extent, DebugView view) {
+void Renderer::Impl::record_passes(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan,
+                                   DebugView debug_view, const FrameTargets& t) {
     const detail::VulkanFunctions& vk = this->vk();
-    detail::set_viewport(vk, cmd, extent);
+    const auto slot_index = static_cast<std::uint32_t>(&slot - view.slots.data());
+    const VkRect2D area{t.offset, t.extent};
+    detail::SceneCopies& copies = *view.copies;
+    detail::FrameTimer& timer = view.timer;
+    timer.begin(vk, cmd, slot_index);
+
+    const bool msaa = copies.multisampled();
+    detail::FramePasses passes(t, depth_target->attachment_layout, msaa ? copies.depth_resolve_view() : VK_NULL_HANDLE);
+    if (msaa) copies.depth_to_resolve(vk, cmd);
+    timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
+    vk.CmdBeginRendering(cmd, &passes.rendering);
+    draw_opaque(cmd, slot, area, debug_view);
+    vk.CmdEndRendering(cmd);
+    timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
+    if (msaa) copies.depth_resolved(vk, cmd);
+    timer.mark(vk, cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+
+    copies.record_copy(vk, cmd, t);  // the opaque scene, for refraction and reflection
+    timer.mark(vk, cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
+
+    passes.load_for_water(t);
+    timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
+    vk.CmdBeginRendering(cmd, &passes.rendering);
+    draw_water(cmd, view, slot, plan, area, debug_view);
+    vk.CmdEndRendering(cmd);
+    timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
+    timer.mark(vk, cmd, slot_index, detail::FrameTimer::water_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+}
+
+void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkRect2D area, DebugView view) {
+    const detail::VulkanFunctions& vk = this->vk();
+    detail::set_viewport(vk, cmd, area);
     const VkPipelineLayout layout = pipelines.layout.get();
     vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &slot.set, 0, nullptr);
     vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
@@ -465,13 +567,13 @@ void Renderer::Impl::draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkExtent
     vk.CmdDraw(cmd, 3, 1, 0, 0);
 }
 
-void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const detail::FramePlan& plan, VkExtent2D extent,
-                                DebugView view) {
+void Renderer::Impl::draw_water(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan,
+                                VkRect2D area, DebugView debug_view) {
     const detail::VulkanFunctions& vk = this->vk();
-    detail::set_viewport(vk, cmd, extent);
+    detail::set_viewport(vk, cmd, area);
     vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
     vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                       (view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
+                       (debug_view == DebugView::wireframe ? pipelines.draws.water_wire : pipelines.draws.water).get());
     // One draw per body: the ocean, each lake, each river (water_draw.glsl).
     std::uint64_t patches = 0;
     for (std::uint32_t i = 0; i < plan.water_draws.size(); ++i) {
@@ -481,7 +583,7 @@ void Renderer::Impl::draw_water(VkCommandBuffer cmd, const Slot& slot, const det
         vk.CmdDraw(cmd, 4, plan.water_draws[i], 0, 0);
         patches += plan.water_draws[i];
     }
-    last_patches = patches;
+    view.patches = patches;
 }
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -589,15 +691,14 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererInitInfo& info)
     TW_VK_TRY(detail::make_owned(c, impl->upload_pool, [&](VkCommandPool* out) {
         return c.vk().CreateCommandPool(c.device, &cp, c.allocator, out);
     }));
-    if (auto st = impl->create_slots(); !st) return st.error();
-    auto timer = detail::FrameTimer::create(c, info.frames_in_flight);
-    if (!timer) return timer.error();
-    impl->timer = std::move(timer).value();
     impl->color_target = color_target;
     impl->depth_target = depth_target;
-    auto copies = detail::SceneCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target, info.samples);
-    if (!copies) return copies.error();
-    impl->copies = std::move(copies).value();
+    auto main_view = impl->make_view(std::nullopt);  // sized by resize()
+    if (!main_view) return main_view.error();
+    impl->views.emplace(kMainView.value, std::move(main_view).value());
+    auto placeholders = detail::PlaceholderCopies::create(c, impl->upload_pool.get(), *color_target, *depth_target);
+    if (!placeholders) return placeholders.error();
+    impl->placeholders = std::move(placeholders).value();
     auto sky = detail::SkyTable::create(c, impl->upload_pool.get());
     if (!sky) return sky.error();
     impl->sky = std::move(sky).value();
@@ -621,9 +722,11 @@ Status Renderer::set_scene(const Scene& scene) {
     TW_VK_TRY(m.vk().DeviceWaitIdle(m.ctx().device));  // the old terrain may be in use by frames in flight
     auto bodies = detail::BodyBuffers::create(m.ctx(), scene);
     if (!bodies) return bodies.error();
-    if (auto st = m.size_slots(1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size(), waves, river_waves);
-        !st)
-        return st;
+    m.slot_draws = 1 + detail::kOceanRings + scene.lakes.size() + scene.rivers.size();
+    m.slot_waves = waves;
+    m.slot_river_waves = river_waves;
+    for (auto& [id, view] : m.views)
+        if (auto st = m.size_slots(*view); !st) return st;
     // A terrain edited from the one drawn (a brush stroke): its changed texels written in
     // place. Otherwise a new upload, whose height texture may take half the budget; the
     // shore fields and bodies the rest. A failure after the texture was written leaves no
@@ -661,13 +764,49 @@ Status Renderer::set_scene(const Scene& scene) {
     return {};
 }
 
-Status Renderer::resize(VkExtent2D extent) {
+Status Renderer::resize(VkExtent2D extent, ViewId id) {
     Impl& m = *impl_;
-    const VkExtent2D before = m.copies.extent();
-    if (auto st = m.copies.resize(m.ctx(), m.upload_pool.get(), extent); !st) return st;
-    if (before.width != extent.width || before.height != extent.height)
-        m.log(fmt::format("tidewater: refraction copies resized to {}x{}", extent.width, extent.height));
+    Impl::View* view = m.find_view(id);
+    if (!view)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: resize: view {} is not there (removed, or never added)", id.value)};
+    if (view->copies && view->copies->extent().width == extent.width && view->copies->extent().height == extent.height)
+        return {};
+    auto copies = detail::SceneCopies::create(m.ctx(), *m.color_target, *m.depth_target, m.info.samples, extent);
+    if (!copies) return copies.error();
+    // No wait: frames in flight may still read the old copies, which go once they are done.
+    if (view->copies) m.retired.push_back({{}, std::move(view->copies), nullptr, m.next_frame});
+    view->copies = std::move(copies).value();
+    m.log(fmt::format("tidewater: view {}'s refraction copies sized {}x{}", id.value, extent.width, extent.height));
     return {};
+}
+
+Result<ViewId> Renderer::add_view(VkExtent2D extent) {
+    Impl& m = *impl_;
+    auto view = m.make_view(extent);
+    if (!view) return view.error();
+    const ViewId id{m.next_view++};
+    m.views.emplace(id.value, std::move(view).value());
+    return id;
+}
+
+Status Renderer::remove_view(ViewId id) {
+    Impl& m = *impl_;
+    if (id == kMainView) return Error{ErrorCode::invalid_argument, "renderer: the main view cannot be removed"};
+    const auto it = m.views.find(id.value);
+    if (it == m.views.end())
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: remove_view: view {} is not there (removed, or never added)", id.value)};
+    // No wait: its buffers and copies go once the frames in flight are done.
+    m.retired.push_back({{}, std::nullopt, std::move(it->second), m.next_frame});
+    m.views.erase(it);
+    return {};
+}
+
+std::vector<ViewId> Renderer::views() const {
+    std::vector<ViewId> ids;
+    for (const auto& entry : impl_->views) ids.push_back(ViewId{entry.first});
+    return ids;
 }
 
 Status Renderer::set_water(const WaterBody& water) {
@@ -699,74 +838,89 @@ Status Renderer::set_water(const WaterBody& water) {
         std::size_t waves = water.waves().size();
         for (const SceneLake& lake : impl_->scene.lakes) waves += lake.body.waves().size();
         TW_VK_TRY(impl_->vk().DeviceWaitIdle(impl_->ctx().device));
-        if (auto st = impl_->size_slots(
-                1 + detail::kOceanRings + impl_->scene.lakes.size() + impl_->scene.rivers.size(), waves, 1);
-            !st)
-            return st;
+        impl_->slot_waves = waves;
+        for (auto& [id, view] : impl_->views)
+            if (auto st = impl_->size_slots(*view); !st) return st;
     }
     impl_->scene.ocean = water;
     return {};
 }
 
-Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& t) {
+Status Renderer::record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets) {
+    const ViewFrame main{kMainView, frame, targets};
+    return record_views(cmd, std::span<const ViewFrame>(&main, 1));
+}
+
+Status Renderer::record_views(VkCommandBuffer cmd, std::span<const ViewFrame> views) {
     Impl& m = *impl_;
-    const detail::VulkanFunctions& vk = m.vk();
-    if (!cmd || !t.color_image || !t.color_view || !t.depth_image || !t.depth_view)
-        return Error{ErrorCode::invalid_argument,
-                     "renderer: record_frame needs a command buffer and the colour and depth images and views"};
-    const VkExtent2D sized = m.copies.extent();
-    if (t.extent.width != sized.width || t.extent.height != sized.height)
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format("renderer: the frame's targets are {}x{} but the renderer is sized for {}x{}: call resize() "
-                        "whenever the targets change size (record_frame never waits)",
-                        t.extent.width, t.extent.height, sized.width, sized.height)};
-    Impl::Slot* slot = nullptr;
-    detail::FramePlan plan;
-    if (auto st = m.prepare_slot(frame, t.extent, true, slot, plan); !st) return st;
-    const auto slot_index = static_cast<std::uint32_t>(slot - m.slots.data());
-    m.sky.record(vk, cmd, plan.frame.sky);  // a 256-texel square: cheaper redrawn than tracked across frames
-    m.timer.begin(vk, cmd, slot_index);
-
-    const bool msaa = m.copies.multisampled();
-    detail::FramePasses passes(t, m.depth_target->attachment_layout,
-                               msaa ? m.copies.depth_resolve_view() : VK_NULL_HANDLE);
-    if (msaa) m.copies.depth_to_resolve(vk, cmd);
-    m.timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
-    vk.CmdBeginRendering(cmd, &passes.rendering);
-    m.draw_opaque(cmd, *slot, t.extent, frame.view);
-    vk.CmdEndRendering(cmd);
-    m.timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::opaque_pass);
-    if (msaa) m.copies.depth_resolved(vk, cmd);
-    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::opaque_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-
-    m.copies.record_copy(vk, cmd, t);  // the opaque scene, for refraction and reflection
-    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::copy_done, VK_PIPELINE_STAGE_TRANSFER_BIT);
-
-    passes.load_for_water(t);
-    m.timer.begin_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
-    vk.CmdBeginRendering(cmd, &passes.rendering);
-    m.draw_water(cmd, *slot, plan, t.extent, frame.view);
-    vk.CmdEndRendering(cmd);
-    m.timer.end_pass(vk, cmd, slot_index, detail::FrameTimer::water_pass);
-    m.timer.mark(vk, cmd, slot_index, detail::FrameTimer::water_done, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+    if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_views needs a command buffer"};
+    if (views.empty()) return Error{ErrorCode::invalid_argument, "renderer: record_views needs at least one view"};
+    // Every view checked before any is written: a refusal records nothing.
+    std::vector<glm::dvec2> cameras;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const ViewFrame& v = views[i];
+        if (auto st = m.validate_view_frame(v); !st) return st;
+        const FrameInfo& first = views[0].frame;
+        for (std::size_t j = 0; j < i; ++j)
+            if (views[j].view == v.view)
+                return Error{ErrorCode::invalid_argument,
+                             fmt::format("renderer: record_views: view {} is given twice", v.view.value)};
+        if (v.frame.frame_index != first.frame_index)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("renderer: record_views: view {} has frame_index {}, the first view {}: one "
+                                     "frame's views share its index",
+                                     v.view.value, v.frame.frame_index, first.frame_index)};
+        if (v.frame.sun_direction != first.sun_direction || v.frame.sky_turbidity != first.sky_turbidity)
+            return Error{ErrorCode::invalid_argument,
+                         fmt::format("renderer: record_views: view {} has another sun or turbidity than the first: "
+                                     "one frame's views share the sky table (record them in frames of their own)",
+                                     v.view.value)};
+        cameras.emplace_back(v.frame.camera.position.x, v.frame.camera.position.z);
+    }
+    m.stream_shores(cameras, views[0].frame.frame_index);
+    struct Prepared {
+        Impl::View* view = nullptr;
+        Impl::Slot* slot = nullptr;
+        detail::FramePlan plan;
+    };
+    std::vector<Prepared> prepared(views.size());
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const ViewFrame& v = views[i];
+        prepared[i].view = m.find_view(v.view);
+        if (auto st = m.prepare_slot(*prepared[i].view, v.frame, v.targets.extent, v.targets.offset, true,
+                                     prepared[i].slot, prepared[i].plan);
+            !st)
+            return st;
+    }
+    // One sky table for every view: a 256-texel square, cheaper redrawn than tracked across frames.
+    m.sky.record(m.vk(), cmd, prepared[0].plan.frame.sky);
+    for (std::size_t i = 0; i < views.size(); ++i)
+        m.record_passes(cmd, *prepared[i].view, *prepared[i].slot, prepared[i].plan, views[i].frame.view,
+                        views[i].targets);
     return {};
 }
 
-Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent) {
+Status Renderer::record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent, ViewId id) {
     Impl& m = *impl_;
     if (!cmd) return Error{ErrorCode::invalid_argument, "renderer: record_in_pass needs a command buffer"};
+    Impl::View* view = m.find_view(id);
+    if (!view)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: record_in_pass: view {} is not there (removed, or never added)", id.value)};
     // Refused before the frame takes its slot: nothing of it is written.
-    if (auto st = validate_sky(frame); !st) return st;
+    if (auto st = m.validate_frame(frame, extent); !st) return st;
     if (!m.sky.holds(detail::gpu_sky(frame.sun_direction, frame.sky_turbidity)))
         return Error{ErrorCode::invalid_argument,
                      "renderer: the sky table holds another sun or turbidity than this frame's: call "
                      "record_sky(cmd, frame) before the pass begins"};
+    const glm::dvec2 camera(frame.camera.position.x, frame.camera.position.z);
+    m.stream_shores(std::span<const glm::dvec2>(&camera, 1), frame.frame_index);
     Impl::Slot* slot = nullptr;
     detail::FramePlan plan;
-    if (auto st = m.prepare_slot(frame, extent, false, slot, plan); !st) return st;
-    m.draw_opaque(cmd, *slot, extent, frame.view);
-    m.draw_water(cmd, *slot, plan, extent, frame.view);
+    if (auto st = m.prepare_slot(*view, frame, extent, VkOffset2D{}, false, slot, plan); !st) return st;
+    const VkRect2D area{{0, 0}, extent};
+    m.draw_opaque(cmd, *slot, area, frame.view);
+    m.draw_water(cmd, *view, *slot, plan, area, frame.view);
     return {};
 }
 
@@ -790,18 +944,22 @@ Status Renderer::reload_shaders(const ShaderSpirv& spirv) {
     auto draws = m.pipelines.make_draws(m.ctx(), m.draw_options(), lookup);
     if (!draws) return draws.error();  // the current pipelines keep drawing
     // No device-wide wait: the old pipelines live until the frames in flight are done.
-    m.retired.push_back({std::move(m.pipelines.draws), m.next_frame});
+    m.retired.push_back({std::move(m.pipelines.draws), std::nullopt, nullptr, m.next_frame});
     m.pipelines.draws = std::move(draws).value();
     return {};
 }
 
-Result<PassTimings> Renderer::timings(std::uint64_t frame_index) {
+Result<PassTimings> Renderer::timings(std::uint64_t frame_index, ViewId id) {
     Impl& m = *impl_;
-    const std::size_t s = frame_index % m.slots.size();
-    if (m.timer.available() && m.slots[s].recorded_frame != frame_index)
+    const Impl::View* view = m.find_view(id);
+    if (!view)
+        return Error{ErrorCode::not_found,
+                     fmt::format("renderer: timings: view {} is not there (removed, or never added)", id.value)};
+    const std::size_t s = frame_index % view->slots.size();
+    if (view->timer.available() && view->slots[s].recorded_frame != frame_index)
         return Error{ErrorCode::not_found,
                      fmt::format("renderer: frame {} is not the last recorded in its slot", frame_index)};
-    return m.timer.read(m.ctx(), static_cast<std::uint32_t>(s));
+    return view->timer.read(m.ctx(), static_cast<std::uint32_t>(s));
 }
 
 Result<std::vector<PipelineStageStatistics>> Renderer::pipeline_statistics() const {
@@ -812,10 +970,8 @@ const QualitySettings& Renderer::quality() const {
     return impl_->quality;
 }
 
-RendererStats Renderer::stats() const {
+RendererStats Renderer::stats(ViewId id) const {
     RendererStats s;
-    s.terrain_vertices = impl_->last_terrain_vertices;
-    s.terrain_triangles = impl_->last_terrain_triangles;
     s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
     s.shore_bytes = impl_->shore.bytes();
     s.shore_stride = static_cast<std::uint32_t>(impl_->shore.stride());
@@ -824,11 +980,15 @@ RendererStats Renderer::stats() const {
     s.shore_streamed_bytes = impl_->shore_streamed;
     s.shore_tiles_reading = impl_->shore.reading_tiles();
     s.scene_upload_bytes = impl_->last_upload_bytes;
-    s.camera = impl_->last_camera;
-    s.clip_volumes = impl_->last_clips;
-    s.clip_volumes_left_out = impl_->last_clips_left_out;
-    s.water_patches = impl_->last_patches;
     s.waves = static_cast<std::uint32_t>(impl_->scene.ocean.waves().size());
+    if (const Impl::View* view = impl_->find_view(id)) {
+        s.terrain_vertices = view->terrain_vertices;
+        s.terrain_triangles = view->terrain_triangles;
+        s.camera = view->camera;
+        s.clip_volumes = view->clips;
+        s.clip_volumes_left_out = view->clips_left_out;
+        s.water_patches = view->patches;
+    }
     return s;
 }
 

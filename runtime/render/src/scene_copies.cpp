@@ -16,12 +16,8 @@ constexpr VkPipelineStageFlags kDepthStage =
     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 }  // namespace
 
-Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, const ColorTarget& color_target,
-                                        const DepthTarget& depth_target, VkSampleCountFlagBits samples) {
-    SceneCopies c;
-    c.samples_ = samples;
-    c.color_target_ = &color_target;
-    c.depth_target_ = &depth_target;
+Result<PlaceholderCopies> PlaceholderCopies::create(const Device& ctx, VkCommandPool pool,
+                                                    const ColorTarget& color_target, const DepthTarget& depth_target) {
     auto color = GpuImage::create(ctx, {1, 1}, color_target.format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
     auto depth = GpuImage::create(ctx, {1, 1}, depth_target.format, kCopyUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
@@ -34,46 +30,34 @@ Result<SceneCopies> SceneCopies::create(const Device& ctx, VkCommandPool pool, c
                                depth_target.aspects);
         !st)
         return st.error();
-    c.placeholder_color_ = std::move(color).value();
-    c.placeholder_depth_ = std::move(depth).value();
-    return c;
+    return PlaceholderCopies{std::move(color).value(), std::move(depth).value()};
 }
 
-Status SceneCopies::resize(const Device& ctx, VkCommandPool pool, VkExtent2D extent) {
+Result<SceneCopies> SceneCopies::create(const Device& ctx, const ColorTarget& color_target,
+                                        const DepthTarget& depth_target, VkSampleCountFlagBits samples,
+                                        VkExtent2D extent) {
     if (extent.width == 0 || extent.height == 0 || extent.width > 16384 || extent.height > 16384)
         return Error{ErrorCode::invalid_argument,
                      fmt::format("renderer: extent {}x{} is out of range (1 to 16384)", extent.width, extent.height)};
-    if (color_.handle() && extent.width == extent_.width && extent.height == extent_.height) return {};
-    // Frames in flight may still sample the old copies.
-    TW_VK_TRY(ctx.vk().DeviceWaitIdle(ctx.device));
-    color_.reset();
-    depth_.reset();
-    extent_ = {};
-    auto color = GpuImage::create(ctx, extent, color_target_->format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
+    SceneCopies c;
+    c.samples_ = samples;
+    c.color_target_ = &color_target;
+    c.depth_target_ = &depth_target;
+    auto color = GpuImage::create(ctx, extent, color_target.format, kCopyUsage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
     // Multisampled targets resolve their depth into the copy as an attachment.
     const VkImageUsageFlags depth_usage =
-        kCopyUsage | (multisampled() ? static_cast<VkImageUsageFlags>(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)
-                                     : VkImageUsageFlags{0});
-    auto depth = GpuImage::create(ctx, extent, depth_target_->format, depth_usage, VK_IMAGE_ASPECT_DEPTH_BIT);
+        kCopyUsage | (c.multisampled() ? static_cast<VkImageUsageFlags>(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)
+                                       : VkImageUsageFlags{0});
+    auto depth = GpuImage::create(ctx, extent, depth_target.format, depth_usage, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (!depth) return depth.error();
-    // Give the new images a defined layout before any frame samples them.
-    Status st = submit_and_wait(ctx, pool, [&](VkCommandBuffer cmd) {
-        transition(ctx.vk(), cmd, color->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-        transition(ctx.vk(), cmd, depth->handle(), depth_target_->aspects, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-    });
-    if (!st) return st;
-    color_ = std::move(color).value();
-    depth_ = std::move(depth).value();
-    extent_ = extent;
-    return {};
+    c.color_ = std::move(color).value();
+    c.depth_ = std::move(depth).value();
+    c.extent_ = extent;
+    return c;
 }
 
-void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& t) const {
+void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& t) {
     transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
@@ -87,17 +71,23 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
         VkImage source;
         const GpuImage& copy;
         VkImageAspectFlags aspect, barrier_aspects;
-    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
-                  {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects}};
+        bool& laid_out;
+    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT, color_laid_out_},
+                  {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects, depth_laid_out_}};
     for (const auto& p : pairs) {
         if (multisampled() && &p.copy == &depth_) continue;
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
-        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        // A copy no frame has written yet has no layout to keep.
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects,
+                   p.laid_out ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                    VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        p.laid_out = true;
+        const VkOffset3D from{t.offset.x, t.offset.y, 0};
         if (multisampled()) {
             VkImageResolve region{};
             region.srcSubresource = {p.aspect, 0, 0, 1};
+            region.srcOffset = from;
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
             vk.CmdResolveImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(),
@@ -105,6 +95,7 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
         } else {
             VkImageCopy region{};
             region.srcSubresource = {p.aspect, 0, 0, 1};
+            region.srcOffset = from;
             region.dstSubresource = {p.aspect, 0, 0, 1};
             region.extent = {t.extent.width, t.extent.height, 1};
             vk.CmdCopyImage(cmd, p.source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, p.copy.handle(),
@@ -122,11 +113,14 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
-void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) const {
+void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) {
     const DepthTarget& d = *depth_target_;
-    transition(vk, cmd, depth_.handle(), d.aspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, d.attachment_layout,
-               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, kDepthStage | kColorStage,
+    transition(vk, cmd, depth_.handle(), d.aspects,
+               depth_laid_out_ ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+               d.attachment_layout, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+               kDepthStage | kColorStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    depth_laid_out_ = true;
 }
 
 void SceneCopies::depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const {
@@ -152,7 +146,7 @@ FramePasses::FramePasses(const FrameTargets& t, VkImageLayout depth_layout, VkIm
         depth.resolveImageView = depth_resolve;
         depth.resolveImageLayout = depth_layout;
     }
-    rendering.renderArea = {{0, 0}, t.extent};
+    rendering.renderArea = {t.offset, t.extent};
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &color;

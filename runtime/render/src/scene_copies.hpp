@@ -11,39 +11,49 @@
 
 namespace tidewater::render::detail {
 
+/// What a pass without a scene copy samples in its place (record_in_pass): black, and
+/// reversed-Z's far plane, one texel each. One set for every view.
+struct PlaceholderCopies {
+    GpuImage color, depth;
+    /// Uploads both (submits on `pool` and waits for it).
+    static Result<PlaceholderCopies> create(const Device& ctx, VkCommandPool pool, const ColorTarget& color,
+                                            const DepthTarget& depth);
+};
+
+/// One view's copies of the opaque scene, the size of its targets. Made without GPU work
+/// or waits (a view added or resized never stalls the frames in flight): the first frame
+/// that copies into them gives them their layout. With multisampled targets (`samples` > 1)
+/// the colour copy is resolved (averaged) and the depth copy is written by the opaque
+/// pass's depth resolve (sample 0).
 class SceneCopies {
   public:
-    /// 1x1 placeholders (bound by record_in_pass, which has no copy) and no copies yet.
-    /// With multisampled targets (`samples` > 1) the colour copy is resolved (averaged)
-    /// and the depth copy is written by the opaque pass's depth resolve (sample 0).
-    static Result<SceneCopies> create(const Device& ctx, VkCommandPool pool, const ColorTarget& color,
-                                      const DepthTarget& depth, VkSampleCountFlagBits samples);
-
-    /// (Re)makes the copies at `extent`: waits for the device, then gives them a layout. A
-    /// failed wait (a lost device) is returned before anything is replaced.
-    Status resize(const Device& ctx, VkCommandPool pool, VkExtent2D extent);
+    static Result<SceneCopies> create(const Device& ctx, const ColorTarget& color, const DepthTarget& depth,
+                                      VkSampleCountFlagBits samples, VkExtent2D extent);
     VkExtent2D extent() const { return extent_; }
 
-    /// Records the copy of the host's targets into the copies. The targets go from
-    /// attachment layouts to TRANSFER_SRC and back; the copies end SHADER_READ_ONLY.
-    void record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& targets) const;
+    /// Records the copy of the view's rectangle of the host's targets (targets.offset,
+    /// targets.extent) into the copies. The targets go from attachment layouts to
+    /// TRANSFER_SRC and back; the copies end SHADER_READ_ONLY.
+    void record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& targets);
     /// Multisampled targets: the depth copy's layout around the opaque pass that resolves
     /// into it (before: waits for the last frame's reads; after: ready to sample).
-    void depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) const;
+    void depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd);
     void depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const;
     bool multisampled() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
     VkImageView depth_resolve_view() const { return depth_.view(); }
 
-    VkImageView color_view(bool copied) const { return (copied ? color_ : placeholder_color_).view(); }
-    VkImageView depth_view(bool copied) const { return (copied ? depth_ : placeholder_depth_).view(); }
+    VkImageView color_view() const { return color_.view(); }
+    VkImageView depth_view() const { return depth_.view(); }
 
   private:
     const ColorTarget* color_target_ = nullptr;
     const DepthTarget* depth_target_ = nullptr;
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
-    GpuImage placeholder_color_, placeholder_depth_;
     GpuImage color_, depth_;
     VkExtent2D extent_{};
+    // Whether a recorded frame has given each image its layout (SHADER_READ_ONLY between
+    // frames); until then it is UNDEFINED.
+    bool color_laid_out_ = false, depth_laid_out_ = false;
 };
 
 /// The colour and depth attachments of the host's targets and the rendering info over them.

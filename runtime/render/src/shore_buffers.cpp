@@ -358,10 +358,10 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     return true;
 }
 
-std::uint64_t ShoreBuffers::stream(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight,
-                                   std::uint64_t max_bytes) {
+std::uint64_t ShoreBuffers::stream(std::span<const glm::dvec2> cameras, std::uint64_t frame,
+                                   std::uint32_t frames_in_flight, std::uint64_t max_bytes) {
     if (stride_ <= 1) return 0;
-    return stream_.step(camera, frame, frames_in_flight, max_bytes, page_values_,
+    return stream_.step(cameras, frame, frames_in_flight, max_bytes, page_values_,
                         static_cast<glm::vec4*>(shared_.mapped()), static_cast<glm::vec4*>(per_wave_.mapped()));
 }
 

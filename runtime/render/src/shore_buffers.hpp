@@ -117,11 +117,12 @@ class ShoreBuffers {
     Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
         return upload(ctx, Models{shore});
     }
-    /// Over the budget: brings the full-resolution tiles nearest `camera` (world xz, m)
+    /// Over the budget: brings the full-resolution tiles nearest `cameras` (world xz, m;
+    /// each tile's distance is to the nearest of them, the views of one frame)
     /// into the pools, at most `max_bytes` (at least one tile), for frame `frame`; pool
     /// slots given up are rewritten only once the `frames_in_flight` frames that could read
     /// them are done. Pages change (pages_now()); the bytes written are returned.
-    std::uint64_t stream(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight,
+    std::uint64_t stream(std::span<const glm::dvec2> cameras, std::uint64_t frame, std::uint32_t frames_in_flight,
                          std::uint64_t max_bytes);
 
     /// Bytes of the buffers (resident).

@@ -1,6 +1,7 @@
 #include "shore_stream.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "host_device.h"
 #include "shore_buffers.hpp"
@@ -12,15 +13,19 @@ namespace {
 constexpr std::uint32_t kFirstPoolPage = gpu::kShoreFirstStoredSlot;  // pool slot p is page p + this
 constexpr std::size_t kMaxReads = 32;  // tiles asked of the bake folder and not packed, at most
 
-/// Squared distance from `camera` to the centre of tile `t` of `layer`, m^2.
-double tile_distance2(const StreamedLayer& layer, std::uint32_t t, glm::dvec2 camera) {
+/// Squared distance from the nearest of `cameras` to the centre of tile `t` of `layer`, m^2.
+double tile_distance2(const StreamedLayer& layer, std::uint32_t t, std::span<const glm::dvec2> cameras) {
     const int per_side = layer.tiles->tiles_per_side;
     const double side = static_cast<double>(ShoreTiles::kTile) * layer.grid.texel;
     const glm::dvec2 centre =
         layer.grid.corner + side * glm::dvec2(static_cast<double>(static_cast<int>(t) % per_side) + 0.5,
                                               static_cast<double>(static_cast<int>(t) / per_side) + 0.5);
-    const glm::dvec2 d = centre - camera;
-    return d.x * d.x + d.y * d.y;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const glm::dvec2 camera : cameras) {
+        const glm::dvec2 d = centre - camera;
+        nearest = std::min(nearest, d.x * d.x + d.y * d.y);
+    }
+    return nearest;
 }
 
 }  // namespace
@@ -61,9 +66,9 @@ std::uint64_t ShoreStream::pack(std::size_t l, std::size_t p, std::uint32_t t, c
     return per_slot * sizeof(glm::vec4);
 }
 
-std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight,
-                                std::uint64_t max_bytes, std::span<std::uint32_t> pages, glm::vec4* shared_out,
-                                glm::vec4* per_wave_out) {
+std::uint64_t ShoreStream::step(std::span<const glm::dvec2> cameras, std::uint64_t frame,
+                                std::uint32_t frames_in_flight, std::uint64_t max_bytes, std::span<std::uint32_t> pages,
+                                glm::vec4* shared_out, glm::vec4* per_wave_out) {
     std::uint64_t written = 0;
     for (ShoreSlotReader::Read& r : reader_.take()) read_.push_back(std::move(r));
     std::vector<double> dist2;
@@ -74,9 +79,9 @@ std::uint64_t ShoreStream::step(glm::dvec2 camera, std::uint64_t frame, std::uin
         Pool& pool = pools_[l];
         const std::size_t keep = std::min(layer.pool_slots, pool.candidates.size());
         if (keep == 0) continue;
-        // The `keep` stored tiles nearest the camera.
+        // The `keep` stored tiles nearest the cameras.
         dist2.resize(pool.slot_of.size());
-        for (std::uint32_t t : pool.candidates) dist2[t] = tile_distance2(layer, t, camera);
+        for (std::uint32_t t : pool.candidates) dist2[t] = tile_distance2(layer, t, cameras);
         order = pool.candidates;
         auto nearer = [&](std::uint32_t a, std::uint32_t b) {
             return dist2[a] < dist2[b] || (dist2[a] == dist2[b] && a < b);

@@ -39,14 +39,15 @@ class ShoreStream {
     /// Starts over with `layers`, none of their tiles resident.
     void reset(std::vector<StreamedLayer> layers);
 
-    /// Frame `frame` looks from `camera` (world xz, m): each layer's pool is to hold its
-    /// stored tiles nearest the camera. Tiles that are wanted and not resident are packed,
+    /// Frame `frame` looks from `cameras` (world xz, m; its views'): each layer's pool is to
+    /// hold its stored tiles nearest any of them. Tiles that are wanted and not resident are packed,
     /// nearest first, into pool slots no frame in flight can read, into `shared_out` or
     /// `per_wave_out` (the mapped buffers), until `max_bytes` are written (at least one
     /// tile); resident tiles no longer wanted give their slots up when the wanted ones
     /// need them. `pages` (every model's, as packed) are updated. Returns the bytes written.
-    std::uint64_t step(glm::dvec2 camera, std::uint64_t frame, std::uint32_t frames_in_flight, std::uint64_t max_bytes,
-                       std::span<std::uint32_t> pages, glm::vec4* shared_out, glm::vec4* per_wave_out);
+    std::uint64_t step(std::span<const glm::dvec2> cameras, std::uint64_t frame, std::uint32_t frames_in_flight,
+                       std::uint64_t max_bytes, std::span<std::uint32_t> pages, glm::vec4* shared_out,
+                       glm::vec4* per_wave_out);
 
     /// After an edit re-baked the models into ones laid out alike: layer i reads `tiles[i]`
     /// from now on, and its resident tiles whose slot changed are packed again. No GPU work

@@ -63,11 +63,18 @@ void transition(const VulkanFunctions& vk, VkCommandBuffer cmd, VkImage image, V
 }
 
 void set_viewport(const VulkanFunctions& vk, VkCommandBuffer cmd, VkExtent2D extent) {
-    const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
-                              0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    set_viewport(vk, cmd, VkRect2D{{0, 0}, extent});
+}
+
+void set_viewport(const VulkanFunctions& vk, VkCommandBuffer cmd, VkRect2D area) {
+    const VkViewport viewport{static_cast<float>(area.offset.x),
+                              static_cast<float>(area.offset.y),
+                              static_cast<float>(area.extent.width),
+                              static_cast<float>(area.extent.height),
+                              0.0f,
+                              1.0f};
     vk.CmdSetViewport(cmd, 0, 1, &viewport);
-    vk.CmdSetScissor(cmd, 0, 1, &scissor);
+    vk.CmdSetScissor(cmd, 0, 1, &area);
 }
 
 }  // namespace tidewater::render::detail

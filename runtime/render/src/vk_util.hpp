@@ -20,6 +20,8 @@ void transition(const VulkanFunctions& vk, VkCommandBuffer cmd, VkImage image, V
 
 /// Full-extent viewport and scissor (both dynamic in every Tidewater pipeline).
 void set_viewport(const VulkanFunctions& vk, VkCommandBuffer cmd, VkExtent2D extent);
+/// Viewport and scissor over `area` of the targets (a view's rectangle).
+void set_viewport(const VulkanFunctions& vk, VkCommandBuffer cmd, VkRect2D area);
 
 }  // namespace tidewater::render::detail
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "tidewater/render/renderer.hpp"
@@ -29,8 +30,12 @@ class OffscreenTarget {
     OffscreenTarget(const OffscreenTarget&) = delete;
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;
 
-    /// Renders one frame and returns its pixels.
+    /// Renders one frame of the renderer's main view over the whole image and returns its pixels.
     Result<RgbaImage> render(Renderer& renderer, const FrameInfo& frame);
+    /// Renders one frame of several views (split screen) and returns the picture: each
+    /// view draws its rectangle, targets.offset to offset + extent, which must lie in the
+    /// image (the target fills in its images; each view is sized to its extent first).
+    Result<RgbaImage> render_views(Renderer& renderer, std::span<const ViewFrame> views);
     /// Formats to give RendererInitInfo for this target.
     static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;

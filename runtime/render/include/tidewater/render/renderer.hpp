@@ -6,8 +6,9 @@
 //   lends them through RendererInitInfo, which the renderer copies.
 // - The renderer only records into the host's command buffers. It never
 //   presents, never owns a swapchain, and submits to the queue or waits for the
-//   device only inside set_scene / set_water / resize (explicit calls that wait
-//   for completion). record_frame and record_in_pass never submit or wait.
+//   device only inside create / set_scene / set_water (explicit calls that wait
+//   for completion). record_frame, record_views, record_in_pass, add_view,
+//   remove_view and resize never submit or wait.
 // - Depth is reversed-Z: clear to 0, nearer is larger (compare GREATER_OR_EQUAL).
 //   Host geometry that shares a depth buffer with Tidewater must use the same.
 // - record_frame() renders a whole frame into the host's images (it begins and
@@ -15,6 +16,11 @@
 //   terrain and water passes). record_in_pass() draws into a pass the host
 //   has begun, without refraction of the host's geometry, after record_sky()
 //   outside that pass.
+// - Several views a frame (split screen, editor viewports, a reflection probe):
+//   add_view() gives a view its own refraction copies, frame constants, draws and
+//   timings over the scene's uploads, which every view shares; record_views()
+//   records any number of them into one command buffer. The main view is there from
+//   create() on; record_frame() draws it.
 //
 // Lifetime: destroy the Renderer before the device it was given; a
 // Renderer is move-less and lives behind a unique_ptr.
@@ -128,7 +134,12 @@ struct FrameTargets {
     VkImageView color_view = VK_NULL_HANDLE;
     VkImage depth_image = VK_NULL_HANDLE;
     VkImageView depth_view = VK_NULL_HANDLE;
+    /// The view's size (px): the size its renderer view was given (resize, add_view).
     VkExtent2D extent{};
+    /// Where the view's rectangle starts in the images (px): views side by side in one
+    /// image (split screen) each draw their rectangle, offset to offset + extent, which
+    /// must lie inside the images. Single-sample targets only; (0, 0) for multisampled ones.
+    VkOffset2D offset{};
     bool clear = true;  ///< Clear colour and depth first (false: draw over the host's content).
     /// Multisampled targets: a single-sample colour image (COLOR_ATTACHMENT_OPTIMAL, the
     /// colour format) the water pass resolves the frame into; null: the host resolves.
@@ -175,6 +186,23 @@ struct FrameInfo {
     std::span<const ClipVolume> clip_volumes = {};
 };
 
+/// A view of the scene the renderer draws (Renderer::add_view): its own refraction copies,
+/// frame constants, draws and timings over the scene's uploads. Ids are not reused.
+struct ViewId {
+    std::uint32_t value = 0;
+    bool operator==(const ViewId&) const = default;
+};
+/// The view every renderer has from create() on (record_frame draws it).
+inline constexpr ViewId kMainView{};
+
+/// One view's part of a frame (Renderer::record_views): which view, its frame (camera,
+/// time, debug view, floats, clip volumes) and its targets.
+struct ViewFrame {
+    ViewId view = kMainView;
+    FrameInfo frame;
+    FrameTargets targets;
+};
+
 /// How many times each stage ran in one pass, from a pipeline statistics query.
 struct PassInvocations {
     std::uint64_t vertex = 0;                ///< vertex shader invocations
@@ -202,9 +230,11 @@ struct PassTimings {
     PassInvocations opaque_invocations, water_invocations;
 };
 
+/// Renderer::stats(view): the scene's uploads, which every view shares, and what the
+/// view's last frame recorded drew.
 struct RendererStats {
-    std::uint64_t terrain_vertices = 0;   ///< Drawn by the last frame recorded (its level-of-detail nodes).
-    std::uint64_t terrain_triangles = 0;  ///< Drawn by the last frame recorded.
+    std::uint64_t terrain_vertices = 0;   ///< Drawn by the view's last frame (its level-of-detail nodes).
+    std::uint64_t terrain_triangles = 0;  ///< Drawn by the view's last frame.
     std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
     std::uint64_t shore_bytes = 0;        ///< Resident: the shore models' fields.
     /// The shore fields' coarse level is every k-th texel (1: the models' own grids, all resident).
@@ -276,13 +306,30 @@ class Renderer {
     /// dropped silently): re-bake the scene with the new water instead
     /// (docs/embedding.md, "Preset swap"), or pass a body carrying a model baked for it.
     Status set_water(const WaterBody& water);
-    /// Sizes the refraction copies for the host's targets (waits for the device when the
-    /// size changes). Call it before the first record_frame and whenever the targets
-    /// change size (swapchain recreation); record_frame refuses targets of another size.
-    Status resize(VkExtent2D extent);
+    /// Sizes a view's refraction copies for its targets. Call it before the view's first
+    /// frame and whenever its targets change size (swapchain recreation); a frame whose
+    /// targets are of another size is refused. Never waits: the old copies are destroyed
+    /// once no frame in flight can read them, and the other views are untouched.
+    Status resize(VkExtent2D extent, ViewId view = kMainView);
+    /// A new view, its copies sized `extent`, ready for record_views. Never waits; the
+    /// views already there are untouched.
+    Result<ViewId> add_view(VkExtent2D extent);
+    /// Removes a view (not the main view). Never waits: its buffers and copies are destroyed
+    /// once no frame in flight can read them.
+    Status remove_view(ViewId view);
+    /// The views there now, the main view first.
+    std::vector<ViewId> views() const;
 
+    /// Records the main view's frame (record_views with it alone).
     Status record_frame(VkCommandBuffer cmd, const FrameInfo& frame, const FrameTargets& targets);
-    Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent);
+    /// Records a frame of several views into `cmd`: the sky table once, then each view's
+    /// passes (opaque, scene copy, water) into its targets, in the order given. Every view
+    /// at most once, with the same frame_index, sun and turbidity (one sky table); the
+    /// shore tiles stream toward the nearest of their cameras. Refused as a whole, nothing
+    /// recorded, when one of them is. The same views recorded one per command buffer give
+    /// the same pictures.
+    Status record_views(VkCommandBuffer cmd, std::span<const ViewFrame> views);
+    Status record_in_pass(VkCommandBuffer cmd, const FrameInfo& frame, VkExtent2D extent, ViewId view = kMainView);
     /// Records the refresh of the sky table (the sky, less the sun's disc, that the water
     /// reflects and the fog fades to: a 256 x 256 texture drawn from `frame`'s sun and
     /// turbidity) outside any pass. record_frame does it itself; a host drawing with
@@ -304,9 +351,10 @@ class Renderer {
     /// constants, vertex inputs) must stay the built-in shaders'.
     Status reload_shaders(const ShaderSpirv& spirv);
 
-    /// Pass timings of the frame recorded with `frame_index`, once the host knows it has finished.
-    Result<PassTimings> timings(std::uint64_t frame_index);
-    RendererStats stats() const;
+    /// Pass timings of `view`'s frame recorded with `frame_index`, once the host knows it has finished.
+    Result<PassTimings> timings(std::uint64_t frame_index, ViewId view = kMainView);
+    /// The scene's uploads, and what `view`'s last frame drew (zero for a view not there).
+    RendererStats stats(ViewId view = kMainView) const;
     /// Every stage of the renderer's pipelines as the driver compiled them, where the device
     /// has DeviceContext::pipeline_executable_info; fails with ErrorCode::unsupported,
     /// saying so, where it has not. Reads what the pipelines captured when they were built.
