@@ -212,7 +212,7 @@ TEST(Editor, TwoViewportsSideBySideShowTheSceneFromTwoCameras) {
     for (int y = img->height / 2; y < img->height; ++y)
         for (int x = 0; x < 512; ++x)
             for (int half = 0; half < 2; ++half) {
-                const std::size_t k = (static_cast<std::size_t>(y) * img->width + x + 512 * half) * 4;
+                const std::size_t k = static_cast<std::size_t>((y * img->width + x + 512 * half) * 4);
                 const int r8 = img->pixels[k], g8 = img->pixels[k + 1], b8 = img->pixels[k + 2];
                 water[half] += b8 > r8 + 20 && b8 >= g8 ? 1 : 0;
                 land[half] += g8 > r8 + 10 && g8 > b8 + 10 ? 1 : 0;

@@ -129,6 +129,13 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
                 frames.back()["invocations"] = {{"opaque", counts(t->opaque_invocations)},
                                                 {"water", counts(t->water_invocations)}};
             }
+            // Split screen: the second view's passes, timed apart from the first's.
+            if (views.size() > 1)
+                if (auto second = (*renderer)->timings(frame.frame_index, views[1].view); second)
+                    frames.back()["second_view"] = {{"sky_and_terrain_ms", second->sky_and_terrain_ms},
+                                                    {"scene_copy_ms", second->scene_copy_ms},
+                                                    {"water_ms", second->water_ms},
+                                                    {"total_ms", second->total_ms}};
         }
     }
     const render::RendererStats s = (*renderer)->stats();
