@@ -13,6 +13,15 @@ float clip_distance(GpuClipVolume c, vec3 p) {
         return length(max(q, vec3(0.0))) + min(max(q.x, max(q.y, q.z)), 0.0);
     }
     if (shape == kClipSphere) return length(local) - c.axis_x.w;
+    if (shape == kClipConvex) {
+        float outside = -1e30;
+        uint first = uint(c.axis_x.w), count = uint(c.axis_y.w);
+        for (uint i = first; i < first + count; ++i) {
+            vec4 plane = frame.clip_planes[i];
+            outside = max(outside, dot(plane.xyz, local) - plane.w);
+        }
+        return outside;
+    }
     return length(local - vec3(0.0, clamp(local.y, -c.axis_y.w, c.axis_y.w), 0.0)) - c.axis_x.w;
 }
 

@@ -267,15 +267,19 @@ TW_CONST uint kViewFoam = 11u;
 TW_CONST uint kViewCount = 12u;  // tidewater::render::DebugView holds the same order (static_assert in renderer.cpp)
 
 // Clip volumes (tidewater/clip_volume.hpp, shaders/clip_volumes.glsl): where the water is
-// removed, at most kMaxClipVolumes a frame.
+// removed, at most kMaxClipVolumes a frame, whose convex ones share kMaxClipPlanes planes.
 TW_CONST uint kMaxClipVolumes = 32u;
+TW_CONST uint kMaxClipPlanes = 96u;
+TW_CONST uint kMaxClipPlanesPerVolume = 24u;  // tidewater::ClipVolume::kMaxPlanes
 TW_CONST uint kClipBox = 0u;
 TW_CONST uint kClipSphere = 1u;
 TW_CONST uint kClipCapsule = 2u;
+TW_CONST uint kClipConvex = 3u;
 struct GpuClipVolume {
     vec4 center;  // xyz: centre relative to O (m); w: shape (kClip*)
-    vec4 axis_x;  // xyz: the volume's x axis (world, unit); w: a box's half extent along it, or the radius
-    vec4 axis_y;  // xyz: its y axis; w: a box's half extent, or a capsule's half length
+    vec4 axis_x;  // xyz: the volume's x axis (world, unit); w: a box's half extent along it, the radius, or a
+                  // convex volume's first plane in GpuFrame.clip_planes
+    vec4 axis_y;  // xyz: its y axis; w: a box's half extent, a capsule's half length, or a convex volume's planes
     vec4 axis_z;  // xyz: its z axis; w: a box's half extent
 };
 
@@ -349,6 +353,7 @@ struct GpuFrame {
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
     vec4 clips;                      // x: clip volumes in clip_volumes; yzw: unused
     GpuClipVolume clip_volumes[kMaxClipVolumes];
+    vec4 clip_planes[kMaxClipPlanes];  // convex clip volumes' planes in their own frames: xyz outward normal, w offset
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with
@@ -433,7 +438,8 @@ static_assert(sizeof(GpuSky) == 112);  // within the 128 bytes of push constants
 static_assert(sizeof(GpuBodyDraw) == 13 * 16 + 64);
 static_assert(sizeof(GpuClipVolume) == 64);
 static_assert(sizeof(GpuFrame) ==
-              2 * 64 + 18 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes + sizeof(GpuClipVolume) * kMaxClipVolumes);
+              2 * 64 + 18 * 16 + sizeof(GpuSky) + 16 * kMaxWakeBoxes + sizeof(GpuClipVolume) * kMaxClipVolumes +
+                  16 * kMaxClipPlanes);
 static_assert(sizeof(GpuTerrainNode) == 32);
 }  // namespace tidewater::gpu
 #undef TW_CONST

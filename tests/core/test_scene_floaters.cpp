@@ -1,6 +1,7 @@
 // The scene's boats and floats riding its water (tidewater/scene_floaters.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -48,6 +49,22 @@ TEST(SceneFloaters, BoatsKeepToTheirPathsAndFloatsSettleAtTheirDraft) {
     const HullMesh& hull = floaters->bodies()[0].hull;
     ASSERT_TRUE(hull.validate().ok());
     EXPECT_NEAR(hull.volume(), HullMesh::boat_plan_area(20.0, 6.0) * 3.0 + 5.0 * 3.0 * 2.25, 1e-9);
+    // It keeps the water out of its hull, bow included: every hull vertex under the deck
+    // lies within 2 % of the hull's length of its clip's surface, on or outside it, and the
+    // clip reaches no further than the hull (a point just past the beam or the deck is out).
+    const ClipVolume& dry = floaters->bodies()[0].clip;
+    ASSERT_EQ(dry.shape, ClipVolume::Shape::convex);
+    ASSERT_TRUE(validate(dry, "boat").ok());
+    double bow = -1e9;
+    for (const glm::dvec3& v : hull.vertices) {
+        if (v.y > 1.5 + 1e-9) continue;  // the deckhouse
+        bow = std::max(bow, v.x);
+        EXPECT_LT(clip_distance(dry, v), 0.02 * 20.0) << v.x << " " << v.y << " " << v.z;
+        EXPECT_GT(clip_distance(dry, v), -1e-9) << "the clip lies inside the hull";
+    }
+    EXPECT_LT(clip_distance(dry, {bow - 2.0, 0.0, 0.0}), 0.0) << "the bow is dry inside";
+    EXPECT_GT(clip_distance(dry, {0.0, 0.0, 3.05}), 0.0) << "past the beam";
+    EXPECT_GT(clip_distance(dry, {0.0, 1.55, 0.0}), 0.0) << "above the deck";
     EXPECT_EQ(floaters->bodies()[1].name, "barrel");
     // The crate (1 x 0.6 x 0.8 m, 150 kg): its centre 0.3 m above its bottom, averaged over 10 s.
     double crate_y = 0.0;

@@ -1,9 +1,12 @@
 // Clip volumes on lavapipe under the validation layer: an open hull floating in waves is
-// dry inside, and a host's clip sphere removes the water where the CPU queries say the
-// surface is dry.
+// dry inside, and a host's clip sphere and convex mesh remove the water where the CPU
+// queries say the surface is dry.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <vector>
 
 #include "render_fixture.hpp"
 
@@ -78,50 +81,71 @@ TEST_F(RenderTest, AnOpenHullIsDryInside) {
 /// against the same frame without it are those whose surface point query_world, given the
 /// same volume, reports dry (the surface found along each pixel's ray from the CPU's heights),
 /// but for at most 4 % of them along the edge.
-TEST_F(RenderTest, AHostsClipSphereRemovesTheWaterWhereTheQueriesSayDry) {
-    const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -8}},
-        "ocean": {"waves": [{"direction": 10, "wavelength": 10, "amplitude": 0.08, "steepness": 0.4}]}})");
-    const ClipVolume sphere = ClipVolume::sphere({0.0, 0.0, 0.0}, 3.0);
-    render::FrameInfo frame;
-    frame.time = 2.0;
-    frame.camera.position = {0.0, 12.0, -14.0};
-    frame.camera.target = {0.0, 0.0, 0.0};
-    frame.camera.fov_y_deg = 50.0;
-    const int w = 320, h = 240;
-    const auto plain = render(scene, frame, w, h);
-    frame.clip_volumes = std::span<const ClipVolume>(&sphere, 1);
-    const auto clipped = render(scene, frame, w, h);
-    ASSERT_GT(plain.width, 0u);
-    ASSERT_GT(clipped.width, 0u);
-    EXPECT_EQ(renderer_->stats().clip_volumes, 1u);
-    QueryOptions options;
-    options.clip_volumes = frame.clip_volumes;
-    int dry = 0, changed = 0, mismatched = 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
-            if (d.y >= -0.05) continue;
-            // The ray's meeting with the surface: fixed-point steps on the CPU's heights.
-            double t = -frame.camera.position.y / d.y;
-            WorldPoint water;
-            for (int i = 0; i < 6; ++i) {
-                const glm::dvec2 xz(frame.camera.position.x + t * d.x, frame.camera.position.z + t * d.z);
-                if (!query_world(scene, frame.time, std::span<const glm::dvec2>(&xz, 1),
-                                 std::span<WorldPoint>(&water, 1), options))
-                    FAIL();
-                t = (water.surface.height - frame.camera.position.y) / d.y;
+/// A host's clip volume removes the water where the CPU queries say the surface is dry:
+/// rendered with and without it, the pixels that change are the pixels whose ray meets a
+/// dry surface (fixed-point steps on the CPU's heights), within 4 % of them.
+class ClipParity : public RenderTest {
+  protected:
+    void expect_dry_where_the_queries_say(const ClipVolume& volume, const char* name) {
+        const Scene scene = scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -8}},
+            "ocean": {"waves": [{"direction": 10, "wavelength": 10, "amplitude": 0.08, "steepness": 0.4}]}})");
+        render::FrameInfo frame;
+        frame.time = 2.0;
+        frame.camera.position = {0.0, 12.0, -14.0};
+        frame.camera.target = {0.0, 0.0, 0.0};
+        frame.camera.fov_y_deg = 50.0;
+        const int w = 320, h = 240;
+        const auto plain = render(scene, frame, w, h);
+        frame.clip_volumes = std::span<const ClipVolume>(&volume, 1);
+        const auto clipped = render(scene, frame, w, h);
+        ASSERT_GT(plain.width, 0u);
+        ASSERT_GT(clipped.width, 0u);
+        EXPECT_EQ(renderer_->stats().clip_volumes, 1u);
+        QueryOptions options;
+        options.clip_volumes = frame.clip_volumes;
+        int dry = 0, changed = 0, mismatched = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
+                if (d.y >= -0.05) continue;
+                double t = -frame.camera.position.y / d.y;
+                WorldPoint water;
+                for (int i = 0; i < 6; ++i) {
+                    const glm::dvec2 xz(frame.camera.position.x + t * d.x, frame.camera.position.z + t * d.z);
+                    if (!query_world(scene, frame.time, std::span<const glm::dvec2>(&xz, 1),
+                                     std::span<WorldPoint>(&water, 1), options))
+                        FAIL();
+                    t = (water.surface.height - frame.camera.position.y) / d.y;
+                }
+                const bool is_dry = !water.surface.wet;
+                const bool is_changed =
+                    largest_difference(test::pixel(plain, x, y), test::pixel(clipped, x, y)) > 2.0 / 255.0;
+                dry += is_dry;
+                changed += is_changed;
+                mismatched += is_dry != is_changed;
             }
-            const bool is_dry = !water.surface.wet;
-            const bool is_changed =
-                largest_difference(test::pixel(plain, x, y), test::pixel(clipped, x, y)) > 2.0 / 255.0;
-            dry += is_dry;
-            changed += is_changed;
-            mismatched += is_dry != is_changed;
-        }
-    std::printf("clip sphere: %d pixels dry by the queries, %d changed in the frame, %d disagree\n", dry, changed,
-                mismatched);
-    ASSERT_GT(dry, 1500);
-    EXPECT_LE(mismatched, 0.04 * dry);
+        std::printf("%s: %d pixels dry by the queries, %d changed in the frame, %d disagree\n", name, dry, changed,
+                    mismatched);
+        ASSERT_GT(dry, 1500);
+        EXPECT_LE(mismatched, 0.04 * dry);
+    }
+};
+
+TEST_F(ClipParity, AHostsClipSphereRemovesTheWaterWhereTheQueriesSayDry) {
+    expect_dry_where_the_queries_say(ClipVolume::sphere({0.0, 0.0, 0.0}, 3.0), "clip sphere");
+}
+
+// A convex mesh (an octahedron 4 m from centre to corner, turned 30 degrees about y and
+// 20 about x) through the frame's shared planes: the same parity.
+TEST_F(ClipParity, AHostsConvexMeshRemovesTheWaterWhereTheQueriesSayDry) {
+    const std::vector<glm::dvec3> corners = {{0, 4, 0}, {4, 0, 0}, {0, 0, 4}, {-4, 0, 0}, {0, 0, -4}, {0, -4, 0}};
+    const std::vector<std::array<std::uint32_t, 3>> faces = {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 1, 4},
+                                                             {5, 1, 2}, {5, 2, 3}, {5, 3, 4}, {5, 4, 1}};
+    const glm::dquat turn = glm::angleAxis(glm::radians(30.0), glm::dvec3(0.0, 1.0, 0.0)) *
+                            glm::angleAxis(glm::radians(20.0), glm::dvec3(1.0, 0.0, 0.0));
+    auto octahedron = ClipVolume::convex_mesh({0.0, 0.0, 0.0}, corners, faces, turn);
+    ASSERT_TRUE(octahedron.ok()) << octahedron.error().message;
+    expect_dry_where_the_queries_say(*octahedron, "convex clip volume");
 }
 
 }  // namespace

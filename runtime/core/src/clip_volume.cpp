@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
 
 namespace tidewater {
 
@@ -34,6 +37,71 @@ ClipVolume ClipVolume::capsule(glm::dvec3 center, double half_length, double rad
     return v;
 }
 
+ClipVolume ClipVolume::convex(glm::dvec3 center, std::vector<glm::dvec4> planes, glm::dquat orientation) {
+    ClipVolume v;
+    v.shape = Shape::convex;
+    v.center = center;
+    v.orientation = orientation;
+    for (glm::dvec4& plane : planes) {
+        const double length = glm::length(glm::dvec3(plane));
+        if (length > 0.0) plane /= length;  // a zero normal stays for validate to refuse
+    }
+    v.planes = std::move(planes);
+    return v;
+}
+
+Result<ClipVolume> ClipVolume::convex_mesh(glm::dvec3 center, std::span<const glm::dvec3> vertices,
+                                           std::span<const std::array<std::uint32_t, 3>> triangles,
+                                           glm::dquat orientation) {
+    auto refuse = [](const std::string& what) {
+        return Error{ErrorCode::invalid_argument, fmt::format("convex clip volume: {}", what)};
+    };
+    if (vertices.size() < 4 || triangles.size() < 4) return refuse("a closed mesh needs 4 vertices and 4 triangles");
+    double extent = 0.0;
+    for (const glm::dvec3& v : vertices) {
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return refuse("a vertex is not finite");
+        extent = std::max({extent, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    }
+    // Closed: every edge is shared by exactly two triangles, once each way.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+    for (const auto& t : triangles)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = t[static_cast<std::size_t>(e)], b = t[static_cast<std::size_t>((e + 1) % 3)];
+            if (a >= vertices.size() || b >= vertices.size()) return refuse("a triangle's index is out of range");
+            ++edges[{a, b}];
+        }
+    for (const auto& [edge, count] : edges)
+        if (count != 1 || edges.count({edge.second, edge.first}) == 0 || edges.at({edge.second, edge.first}) != 1)
+            return refuse(
+                fmt::format("the mesh is not closed and consistently wound (edge {}-{})", edge.first, edge.second));
+    const double tolerance = 1e-6 * std::max(extent, 1.0);
+    std::vector<glm::dvec4> planes;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        const glm::dvec3 a = vertices[triangles[i][0]], b = vertices[triangles[i][1]], c = vertices[triangles[i][2]];
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        const double area2 = glm::length(n);
+        if (!(area2 > tolerance * tolerance)) continue;  // a sliver adds no face
+        const glm::dvec3 unit = n / area2;
+        const glm::dvec4 plane(unit, glm::dot(unit, a));
+        const bool known = std::any_of(planes.begin(), planes.end(), [&](const glm::dvec4& q) {
+            return glm::dot(glm::dvec3(q), unit) > 1.0 - 1e-9 && std::abs(q.w - plane.w) <= tolerance;
+        });
+        if (!known) planes.push_back(plane);
+    }
+    if (planes.size() < 4) return refuse("the mesh is flat (fewer than 4 faces with area)");
+    if (planes.size() > kMaxPlanes)
+        return refuse(fmt::format("{} faces; at most {} (simplify the mesh)", planes.size(), kMaxPlanes));
+    // Convex and outward: no vertex in front of a face.
+    for (std::size_t p = 0; p < planes.size(); ++p)
+        for (std::size_t v = 0; v < vertices.size(); ++v)
+            if (glm::dot(glm::dvec3(planes[p]), vertices[v]) > planes[p].w + tolerance)
+                return refuse(
+                    fmt::format("the mesh is not convex (or not wound outward): vertex {} lies {:.3g} m in "
+                                "front of a face",
+                                v, glm::dot(glm::dvec3(planes[p]), vertices[v]) - planes[p].w));
+    return convex(center, std::move(planes), orientation);
+}
+
 double clip_distance(const ClipVolume& volume, glm::dvec3 p) {
     // In the volume's own frame.
     const glm::dvec3 local = glm::conjugate(glm::normalize(volume.orientation)) * (p - volume.center);
@@ -48,6 +116,11 @@ double clip_distance(const ClipVolume& volume, glm::dvec3 p) {
         case ClipVolume::Shape::capsule: {
             const double y = std::clamp(local.y, -volume.half_length, volume.half_length);
             return glm::length(local - glm::dvec3(0.0, y, 0.0)) - volume.radius;
+        }
+        case ClipVolume::Shape::convex: {
+            double d = -std::numeric_limits<double>::infinity();
+            for (const glm::dvec4& plane : volume.planes) d = std::max(d, glm::dot(glm::dvec3(plane), local) - plane.w);
+            return volume.planes.empty() ? 1.0 : d;
         }
     }
     return 1.0;
@@ -82,6 +155,20 @@ Status validate(const ClipVolume& volume, const std::string& context) {
         case ClipVolume::Shape::sphere:
             if (!size_ok(volume.radius))
                 return error("radius", fmt::format("{} is out of range (0 < value <= 1e5 m)", volume.radius));
+            break;
+        case ClipVolume::Shape::convex:
+            if (volume.planes.size() < 4 || volume.planes.size() > ClipVolume::kMaxPlanes)
+                return error("planes", fmt::format("{} planes; a convex volume has 4 to {}", volume.planes.size(),
+                                                   ClipVolume::kMaxPlanes));
+            for (std::size_t i = 0; i < volume.planes.size(); ++i) {
+                const glm::dvec4& plane = volume.planes[i];
+                const double length = glm::length(glm::dvec3(plane));
+                if (!std::isfinite(length) || std::abs(length - 1.0) > 1e-6)
+                    return error(fmt::format("planes/{}", i).c_str(), "the normal must be a finite unit vector");
+                if (!std::isfinite(plane.w) || std::abs(plane.w) > 1e5)
+                    return error(fmt::format("planes/{}", i).c_str(),
+                                 fmt::format("offset {} is out of range (|value| <= 1e5 m)", plane.w));
+            }
             break;
     }
     return {};

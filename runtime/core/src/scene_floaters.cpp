@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <span>
+#include <vector>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/world_query.hpp"
@@ -50,14 +53,42 @@ ClipVolume float_clip(const SceneFloat& f) {
     return ClipVolume::capsule(glm::dvec3(0.0), std::max(0.5 * f.size.y - r, 0.0), r);
 }
 
-/// A boat's dry inside (HullMesh::boat): the box of its straight-sided aft 70 %, keel to
-/// deck, a hair inside the hull.
-ClipVolume boat_clip(const HullMesh& hull, double length, double beam, double draft) {
-    double aft = 0.0;
-    for (const glm::dvec3& v : hull.vertices) aft = std::min(aft, v.x);
+/// A boat's dry inside (HullMesh::boat): the convex prism of its hull, keel to deck (the
+/// plan's corners at the keel, a hair inside the hull), bow included; the deckhouse above
+/// the deck is out of the water anyway.
+ClipVolume boat_clip(const HullMesh& hull, double draft) {
+    std::vector<glm::dvec2> plan;
+    for (const glm::dvec3& v : hull.vertices)
+        if (std::abs(v.y + draft) < 1e-9 * std::max(draft, 1.0)) plan.emplace_back(v.x, v.z);
+    glm::dvec2 centre(0.0);
+    for (const glm::dvec2& q : plan) centre += q / static_cast<double>(plan.size());
+    // The plan's convex outline (Andrew's monotone chain), shrunk 2 % toward its centre.
+    std::sort(plan.begin(), plan.end(),
+              [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    auto turn = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::dvec2> outline;
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t start = outline.size();
+        for (std::size_t k = 0; k < plan.size(); ++k) {
+            const glm::dvec2 q = plan[pass == 0 ? k : plan.size() - 1 - k];
+            while (outline.size() >= start + 2 && turn(outline[outline.size() - 2], outline.back(), q) <= 0.0)
+                outline.pop_back();
+            outline.push_back(q);
+        }
+        outline.pop_back();
+    }
     constexpr double kInset = 0.98;
-    const double half = 0.35 * length * kInset;
-    return ClipVolume::box(glm::dvec3(aft + 0.35 * length, 0.0, 0.0), glm::dvec3(half, draft, 0.5 * beam) * kInset);
+    std::vector<glm::dvec4> planes = {{0.0, 1.0, 0.0, draft * kInset}, {0.0, -1.0, 0.0, draft * kInset}};
+    for (std::size_t k = 0; k < outline.size(); ++k) {
+        const glm::dvec2 a = centre + kInset * (outline[k] - centre);
+        const glm::dvec2 b = centre + kInset * (outline[(k + 1) % outline.size()] - centre);
+        glm::dvec2 n = glm::normalize(glm::dvec2(b.y - a.y, a.x - b.x));
+        if (glm::dot(n, centre - a) > 0.0) n = -n;  // outward
+        planes.emplace_back(n.x, 0.0, n.y, glm::dot(n, a));
+    }
+    return ClipVolume::convex(glm::dvec3(0.0), std::move(planes));
 }
 
 /// Where the body frame's origin rests in calm water above the surface: the bottom sits
@@ -125,8 +156,8 @@ Result<SceneFloaters> SceneFloaters::create(std::shared_ptr<const Scene> scene, 
         s.velocity = glm::dvec3(ahead.x - at.x, 0.0, ahead.y - at.y) / step;  // under way from the start
         auto id = f.world_.add(props, s);
         if (!id) return Error{id.error().code, fmt::format("boats/{} ({}): {}", i, b.name, id.error().message)};
-        f.bodies_.push_back({b.name, props.hull, glm::vec3(0.62f, 0.16f, 0.10f), true,
-                             boat_clip(props.hull, b.hull.length, b.hull.beam, b.hull.draft)});
+        f.bodies_.push_back(
+            {b.name, props.hull, glm::vec3(0.62f, 0.16f, 0.10f), true, boat_clip(props.hull, b.hull.draft)});
     }
     for (std::size_t i = 0; i < scene->floats.size(); ++i) {
         const SceneFloat& sf = scene->floats[i];

@@ -8,7 +8,16 @@ namespace tidewater::render::detail {
 
 namespace {
 
-gpu::GpuClipVolume gpu_clip(const ClipVolume& v, glm::dvec2 origin) {
+static_assert(ClipVolume::kMaxPlanes == gpu::kMaxClipPlanesPerVolume);
+
+std::size_t planes_of(std::span<const ClipVolume> volumes) {
+    std::size_t n = 0;
+    for (const ClipVolume& v : volumes) n += v.planes.size();
+    return n;
+}
+
+/// The volume relative to O; a convex one's planes from `first_plane` on in the frame.
+gpu::GpuClipVolume gpu_clip(const ClipVolume& v, glm::dvec2 origin, std::size_t first_plane) {
     const glm::dquat q = glm::normalize(v.orientation);
     const glm::dvec3 x = q * glm::dvec3(1.0, 0.0, 0.0), y = q * glm::dvec3(0.0, 1.0, 0.0),
                      z = q * glm::dvec3(0.0, 0.0, 1.0);
@@ -22,6 +31,9 @@ gpu::GpuClipVolume gpu_clip(const ClipVolume& v, glm::dvec2 origin) {
     } else if (v.shape == ClipVolume::Shape::capsule) {
         shape = static_cast<float>(gpu::kClipCapsule);
         sizes = glm::dvec3(v.radius, v.half_length, 0.0);
+    } else if (v.shape == ClipVolume::Shape::convex) {
+        shape = static_cast<float>(gpu::kClipConvex);
+        sizes = glm::dvec3(static_cast<double>(first_plane), static_cast<double>(v.planes.size()), 0.0);
     }
     g.center = glm::vec4(glm::vec3(c), shape);
     g.axis_x = glm::vec4(glm::vec3(x), static_cast<float>(sizes.x));
@@ -44,6 +56,12 @@ Result<FrameClips> gather_clip_volumes(const Scene& scene, std::span<const ClipV
         if (auto st = validate(host[i], fmt::format("renderer: FrameInfo::clip_volumes/{}", i)); !st) return st.error();
         out.host_and_floats.push_back(host[i]);
     }
+    const std::size_t fixed_planes = planes_of(scene.clip_volumes) + planes_of(host);
+    if (fixed_planes > gpu::kMaxClipPlanes)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("renderer: FrameInfo::clip_volumes: the convex volumes have {} planes with the "
+                                 "scene's; at most {} in all",
+                                 fixed_planes, gpu::kMaxClipPlanes)};
     std::vector<ClipVolume> of_floats;
     for (std::size_t i = 0; i < floats.size(); ++i) {
         const FloatDraw& f = floats[i];
@@ -64,15 +82,31 @@ Result<FrameClips> gather_clip_volumes(const Scene& scene, std::span<const ClipV
         out.left_out = static_cast<std::uint32_t>(of_floats.size() - room);
         of_floats.resize(room);
     }
+    // The floats' convex hulls take the planes left, the nearest first.
+    std::sort(of_floats.begin(), of_floats.end(), [&](const ClipVolume& a, const ClipVolume& b) {
+        return clip_distance(a, camera) < clip_distance(b, camera);
+    });
+    std::size_t planes_left = gpu::kMaxClipPlanes - fixed_planes;
+    const auto no_room = std::remove_if(of_floats.begin(), of_floats.end(), [&](const ClipVolume& v) {
+        if (v.planes.size() > planes_left) return true;
+        planes_left -= v.planes.size();
+        return false;
+    });
+    out.left_out += static_cast<std::uint32_t>(of_floats.end() - no_room);
+    of_floats.erase(no_room, of_floats.end());
     out.host_and_floats.insert(out.host_and_floats.end(), of_floats.begin(), of_floats.end());
     out.total = static_cast<std::uint32_t>(scene.clip_volumes.size() + out.host_and_floats.size());
     return out;
 }
 
 void pack_clip_volumes(const Scene& scene, const FrameClips& clips, glm::dvec2 origin, gpu::GpuFrame& frame) {
-    std::size_t n = 0;
-    for (const ClipVolume& v : scene.clip_volumes) frame.clip_volumes[n++] = gpu_clip(v, origin);
-    for (const ClipVolume& v : clips.host_and_floats) frame.clip_volumes[n++] = gpu_clip(v, origin);
+    std::size_t n = 0, planes = 0;  // gather_clip_volumes kept both within the frame's room
+    auto pack = [&](const ClipVolume& v) {
+        frame.clip_volumes[n++] = gpu_clip(v, origin, planes);
+        for (const glm::dvec4& plane : v.planes) frame.clip_planes[planes++] = glm::vec4(plane);
+    };
+    for (const ClipVolume& v : scene.clip_volumes) pack(v);
+    for (const ClipVolume& v : clips.host_and_floats) pack(v);
     frame.clips = glm::vec4(static_cast<float>(n), 0.0f, 0.0f, 0.0f);
 }
 

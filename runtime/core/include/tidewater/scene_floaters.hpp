@@ -34,8 +34,8 @@ class SceneFloaters {
         glm::vec3 color{0.8f};  ///< paint, linear RGB
         bool boat = false;      ///< a scene boat (kept to its path) or a free float
         /// Body frame: where it keeps the water out (tidewater/clip_volume.hpp): a box's,
-        /// a sphere's own shape, the capsule inside a barrel, a boat's straight-sided
-        /// midbody (inside its hull).
+        /// a sphere's own shape, the capsule inside a barrel, a boat's hull (the convex
+        /// prism of its plan, keel to deck, a hair inside).
         ClipVolume clip;
     };
     struct Pose {
