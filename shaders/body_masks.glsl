@@ -1,7 +1,9 @@
 // Which draw owns a fragment's water: a river owns its texels (channel, mouth and
-// plume); a lake its mask; the ocean the rest. Needs water_draw.glsl.
+// plume); a lake its mask; the ocean the rest. Needs frame.glsl (the draws).
 #ifndef TIDEWATER_BODY_MASKS_GLSL
 #define TIDEWATER_BODY_MASKS_GLSL
+
+layout(std430, set = kFrameSet, binding = eFrameBodyMasks) readonly buffer BodyMasks { float body_masks[]; };  // river texel kinds, lake masks
 
 // Draw d's mask texel under `xz` (relative to O): a river's texel kind, a lake's extent
 // flag; 0 (kRiverTexelNone) outside its grid.

@@ -1,5 +1,5 @@
-// Caustics: the sun's light on ground under the ocean, focused and spread by the waves over
-// it: the same waves, shore model and ripples the water pass draws. Light refracted by a
+// Caustics: the sun's light on ground under the ocean or a lake, focused and spread by the
+// waves over it: the same waves, shore model and ripples the water pass draws. Light refracted by a
 // surface of height eta(x) reaches a depth h at x + D grad(eta) (small slopes), D = h' (1 -
 // 1/n) with h' the refracted sun's path down to that depth; the light per unit area there
 // is 1 / |det(I + D H)|, H the surface's Hessian, taken where that light entered (first
@@ -11,7 +11,7 @@
 #define TIDEWATER_CAUSTICS_GLSL
 
 uint g_wave_first = 0u, g_wave_count = 0u;
-GpuBodyDraw g_caustic_draw;  // the ocean's
+GpuBodyDraw g_caustic_draw;  // the ocean's or the lake's over the point
 #define SHORE_LAYER_BASE g_caustic_draw.shore_base.x
 #define WAVE_FIRST g_wave_first
 #define WAVE_COUNT g_wave_count
@@ -42,15 +42,17 @@ const float kCausticMinDeterminant = 0.2;
 // does not show: the gain is left at 1.
 const float kCausticFaintLight = 0.02;
 
-// The gain of the sun's light on ground at `p` (relative to O) `depth` m under the ocean's
-// rest level, whose pixel covers `footprint` m: 1 in calm water, without an ocean, and
+// The gain of the sun's light on ground at `p` (relative to O) `depth` m under the rest
+// level of the body drawn by `draw` (the ocean's or a lake's, water_over.glsl), through
+// `optics`, whose pixel covers `footprint` m: 1 in calm water, without such a body, and
 // where the water leaves too little of the sun's light to show it.
-float caustic_gain(vec3 p, float depth, float footprint) {
+float caustic_gain(vec3 p, float depth, float footprint, uint draw, WaterOptics optics) {
     if (!kCaustics || depth <= 0.0 || frame.sun.y <= 0.0) return 1.0;
-    vec3 sun_left = sunlight_under_water(depth);
+    vec3 sun_left = sunlight_under_water(optics, depth);
     if (max(sun_left.r, max(sun_left.g, sun_left.b)) < kCausticFaintLight) return 1.0;
-    g_caustic_draw = draws[0];
-    if (uint(g_caustic_draw.body.x) != kBodyOcean) return 1.0;
+    g_caustic_draw = draws[draw];
+    uint kind = uint(g_caustic_draw.body.x);
+    if (kind != kBodyOcean && kind != kBodyLake) return 1.0;
     g_wave_first = uint(g_caustic_draw.body.z);
     g_wave_count = uint(g_caustic_draw.body.w);
     // The refracted sun's path down to the ground, and where it entered the water.

@@ -10,6 +10,8 @@
 #include "water_quality.glsl"
 #include "water_medium.glsl"
 #include "caustics.glsl"
+#include "body_masks.glsl"
+#include "water_over.glsl"
 #include "clip_volumes.glsl"
 layout(location = 0) in vec3 world_pos;
 layout(location = 1) in vec3 normal;
@@ -24,12 +26,14 @@ void main() {
     if (dot(n, v) < 0.0) n = -n;  // the inside of a hull seen through a gap
     float diffuse = max(dot(n, frame.sun.xyz), 0.0);
     float sky_light = 0.5 + 0.5 * n.y;
-    // Under the ocean's surface as the terrain (water_medium.glsl, caustics.glsl).
-    float depth = frame.params.x - world_pos.y;
+    // Under the ocean's or a lake's surface as the terrain (water_over.glsl, caustics.glsl).
+    WaterOver water = water_over(world_pos);
+    float depth = water.depth;
     vec3 sun_lit = vec3(1.0), sky_lit = vec3(1.0);
     if (depth > 0.0 && !seen_side_in_clip_volumes(world_pos, n)) {  // not the inside of a dry hold
-        sun_lit = sunlight_under_water(depth) * caustic_gain(world_pos, depth, distance / frame.params.z);
-        sky_lit = skylight_under_water(depth);
+        sun_lit = sunlight_under_water(water.optics, depth) *
+                  caustic_gain(world_pos, depth, distance / frame.params.z, water.draw, water.optics);
+        sky_lit = skylight_under_water(water.optics, depth);
     }
     vec3 color = paint.rgb * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
     // A little sheen: painted hulls and barrels are glossy.

@@ -380,7 +380,8 @@ struct GpuBodyDraw {
     vec4 river;       // x, y: grid texels along x and z; z: first river wave; w: river wave count
     vec4 extra;       // x: whitecap Jacobian J* (crest_foam); y: first patch in the patch list;
                       // z: highest rest surface above the level (m); w: largest wave displacement (m)
-    vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own)
+    vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own);
+                      // z: first lake draw (the lakes' draws run to x); w: unused
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
     // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
     vec4 shore;       // xy: its shared grid's corner relative to O (m); z: texel (m); w: resolution (0 = none)

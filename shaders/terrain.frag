@@ -1,7 +1,7 @@
 #version 450
 // Terrain shading: the ground's material (terrain_material.glsl), caustics on submerged
-// ground from the ocean's waves (caustics.glsl), light that fades with depth under the
-// water, a wet film where the swash runs, and the same fog as the water (through the
+// ground from the waves of the ocean or lake over it (caustics.glsl, water_over.glsl),
+// light that fades with depth under that water, a wet film where the swash runs, and the same fog as the water (through the
 // water from under its surface). Lighting is a plain Lambert sun plus sky ambient: a host
 // with its own lighting replaces this shader (docs/embedding.md).
 #extension GL_GOOGLE_include_directive : require
@@ -10,6 +10,8 @@
 #include "water_quality.glsl"
 #include "water_medium.glsl"
 #include "caustics.glsl"
+#include "body_masks.glsl"
+#include "water_over.glsl"
 #include "clip_volumes.glsl"
 #include "terrain_material.glsl"
 layout(location = 0) in vec3 world_pos;
@@ -30,13 +32,14 @@ void main() {
     float footprint = distance / frame.params.z / max(abs(dot(v, geo_n)), 0.1);
     // Under the water (not inside a clip volume, which is dry) the sun's light through the
     // waves is focused and spread: caustics (first, while little else is live).
-    float depth = inside_clip_volumes(world_pos) ? 0.0 : level - h;
-    float focus = depth > 0.0 ? caustic_gain(world_pos, depth, footprint) : 1.0;
+    WaterOver water = water_over(world_pos);
+    float depth = inside_clip_volumes(world_pos) ? 0.0 : water.depth;
+    float focus = depth > 0.0 ? caustic_gain(world_pos, depth, footprint, water.draw, water.optics) : 1.0;
     TerrainMaterial m = terrain_material(world_pos, geo_n, footprint);
     vec3 n = m.n;
     // Under the water the sun's and the sky's light fade with depth (water_medium.glsl).
-    vec3 sun_lit = depth > 0.0 ? sunlight_under_water(depth) : vec3(1.0);
-    vec3 sky_lit = depth > 0.0 ? skylight_under_water(depth) : vec3(1.0);
+    vec3 sun_lit = depth > 0.0 ? sunlight_under_water(water.optics, depth) : vec3(1.0);
+    vec3 sky_lit = depth > 0.0 ? skylight_under_water(water.optics, depth) : vec3(1.0);
     vec3 color = terrain_light(m, sky_lit, sun_lit * focus);
     // A wet film on the ground the swash leaves bare reflects the sky and the sun (not
     // on ground under the water, which the water's own surface covers).

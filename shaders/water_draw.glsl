@@ -1,5 +1,6 @@
 // What the water stages of one draw share: the draw's description (the ocean, a lake
-// or a river), the rivers' fields and waves, the lakes' masks and the patch list.
+// or a river), the rivers' fields and waves and the patch list (the rivers' and lakes'
+// masks are body_masks.glsl's).
 // Set kFrameSet, bindings eFrameRiverTexels to eFrameWakePoints (host_device.h; the draws
 // themselves are frame.glsl's); the push constant at kPushDrawIndex picks the draw.
 #ifndef TIDEWATER_WATER_DRAW_GLSL
@@ -7,7 +8,6 @@
 
 layout(std430, set = kFrameSet, binding = eFrameRiverTexels) readonly buffer RiverTexels { float river_texels[]; };   // kRiverQueryStride per texel
 layout(std430, set = kFrameSet, binding = eFrameRiverChannel) readonly buffer RiverChannel { vec4 river_channel[]; };  // s, n (m), flow x, z (m/s)
-layout(std430, set = kFrameSet, binding = eFrameBodyMasks) readonly buffer BodyMasks { float body_masks[]; };      // river texel kinds, lake masks
 layout(std430, set = kFrameSet, binding = eFrameRiverWaves) readonly buffer RiverWaves { GpuRiverWave river_waves[]; };
 layout(std430, set = kFrameSet, binding = eFramePatchList) readonly buffer PatchList { uint patch_list[]; };       // x | z << 16
 layout(std430, set = kFrameSet, binding = eFrameWakePoints) readonly buffer WakePoints { vec4 wake_blocks[kMaxWakeBlocks]; GpuWakePoint wake_points[]; };  // chains in order, relative to O

@@ -63,8 +63,10 @@ vec3 with_water_line(vec3 color) {
 
 // The sun's and the sky's light `depth` metres under the surface, relative to above it:
 // the sun's along its slanted path, the sky's straight down.
-vec3 sunlight_under_water(float depth) { return water_transmittance(camera_water(), max(depth, 0.0) / max(frame.sun.y, 0.1)); }
-vec3 skylight_under_water(float depth) { return water_transmittance(camera_water(), max(depth, 0.0)); }
+vec3 sunlight_under_water(WaterOptics water, float depth) { return water_transmittance(water, max(depth, 0.0) / max(frame.sun.y, 0.1)); }
+vec3 skylight_under_water(WaterOptics water, float depth) { return water_transmittance(water, max(depth, 0.0)); }
+vec3 sunlight_under_water(float depth) { return sunlight_under_water(camera_water(), depth); }
+vec3 skylight_under_water(float depth) { return skylight_under_water(camera_water(), depth); }
 
 // What the water scatters toward an eye `depth` metres under the surface: its colour far
 // along a level path there.

@@ -140,7 +140,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
     };
     const std::size_t ocean_draws = scene.has_ocean ? 1 + plan.ocean_rings.size() : 0;
     const float first_river = static_cast<float>(ocean_draws + scene.lakes.size());
-    const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), 0.0f, 0.0f);
+    const glm::vec4 rivers(first_river, static_cast<float>(scene.rivers.size()), static_cast<float>(ocean_draws), 0.0f);
     // Each still body's waves: where they start in the frame's wave buffer.
     std::vector<std::uint32_t> lake_first(scene.lakes.size(), 0);
     if (scene.has_ocean) out.waves = plan.waves;
