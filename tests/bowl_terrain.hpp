@@ -1,11 +1,12 @@
 // A test terrain with a basin in the hills: a bowl 500 m across, floor 10 m, rising to
-// 40 m at r = 300 m (a 16-bit heightmap 1 km square, centred on the origin).
+// 40 m at r = 300 m (a 16-bit heightmap 1 km square, centred on the origin), and a lake in it.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
+#include "tidewater/scene.hpp"
 #include "tidewater/terrain.hpp"
 
 namespace tidewater::test {
@@ -28,6 +29,15 @@ inline Terrain bowl_terrain() {
     map.max_height = 100.0;
     map.image = std::move(image);
     return Terrain(map);
+}
+
+/// The bowl alone with a lake, "bowl", at 30 m in it (parsed, not baked).
+inline Result<Scene> bowl_lake_scene() {
+    auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
+      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
+                              "lake.json");
+    if (parsed) parsed->terrain = bowl_terrain();
+    return parsed;
 }
 
 }  // namespace tidewater::test

@@ -207,11 +207,8 @@ TEST(WorldQuery, KernelMatchesTheDoubleReference) {
 }
 
 TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
-    auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
-      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
-                              "lake.json");
+    auto parsed = test::bowl_lake_scene();
     ASSERT_TRUE(parsed) << parsed.error().message;
-    parsed->terrain = test::bowl_terrain();
     const auto scene = bake_or_die(*parsed);
     ASSERT_TRUE(scene->lakes[0].body.shore()) << "the lake has its own shore model";
     auto spread = [&](glm::dvec2 p) {

@@ -137,11 +137,8 @@ TEST_F(RenderTest, RiverMeetsTheSeaWithoutASeam) {
 // A lake at 30 m in a bowl of an inland scene (no ocean): water inside its waterline
 // (r = 245 m), dry slopes outside it; the floor at 10 m would hide water at any lower level.
 TEST_F(RenderTest, LakeSitsAtItsLevelInTheHills) {
-    auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
-      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
-                              "lake.json");
+    auto parsed = test::bowl_lake_scene();
     ASSERT_TRUE(parsed) << parsed.error().message;
-    parsed->terrain = test::bowl_terrain();
     auto scene = test::baked(*parsed);
     ASSERT_TRUE(scene) << scene.error().message;
     render::FrameInfo frame;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "../bowl_terrain.hpp"
 #include "render_fixture.hpp"
@@ -18,6 +19,21 @@ struct TierFrame {
     render::RgbaImage image;
     render::PassInvocations water;
 };
+
+/// The mean and the spread of the luminance over columns [x0, x1) and rows [y0, y1).
+std::pair<double, double> luminance_in(const render::RgbaImage& img, int x0, int x1, int y0, int y1) {
+    double sum = 0.0, sum2 = 0.0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n) {
+            const test::Rgb c = test::pixel(img, x, y);
+            const double l = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
+            sum += l;
+            sum2 += l * l;
+        }
+    const double mean = sum / n;
+    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean))};
+}
 
 class QualityTest : public test::RenderTest {
   protected:
@@ -131,18 +147,7 @@ TEST_F(QualityTest, CausticsAreTheTiersChoice) {
     const Scene shallow =
         scene_from(R"({"version": 1, "water_level": 0, "terrain": {"flat": {"height": -3}}, )"
                    R"("ocean": {"waves": [{"direction": 0, "wavelength": 3, "amplitude": 0.06, "steepness": 0.3}]}})");
-    auto luminance = [](const render::RgbaImage& img) {
-        double sum = 0.0, sum2 = 0.0;
-        int n = 0;
-        for (int y = 100; y < 170; ++y)
-            for (int x = 60; x < 260; ++x, ++n) {
-                const test::Rgb c = test::pixel(img, x, y);
-                const double l = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
-                sum += l;
-                sum2 += l * l;
-            }
-        return std::pair{sum / n, std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)))};
-    };
+    auto luminance = [](const render::RgbaImage& img) { return luminance_in(img, 60, 260, 100, 170); };
     const TierFrame with = render_tier(shallow, frame, render::Quality::high, 320, 180, {});
     const TierFrame without = render_tier(shallow, frame, render::Quality::high, 320, 180, {.caustics = false});
     ASSERT_FALSE(with.image.pixels.empty());
@@ -163,11 +168,8 @@ TEST_F(QualityTest, CausticsAreTheTiersChoice) {
 // taken where the light enters, not where it lands, which over the lake's ripples
 // (D k^2 A past 1) brightens the mean by the first-order model's known bias.
 TEST_F(QualityTest, CausticsLightALakesBedFromItsOwnWaves) {
-    auto parsed = parse_scene(R"({ "version": 1, "name": "hills", "terrain": { "flat": { "height": 0.0 } },
-      "lakes": [ { "name": "bowl", "level": 30.0, "at": [0, 0] } ] })",
-                              "lake.json");
+    auto parsed = test::bowl_lake_scene();
     ASSERT_TRUE(parsed) << parsed.error().message;
-    parsed->terrain = test::bowl_terrain();
     auto scene = test::baked(*parsed);
     ASSERT_TRUE(scene) << scene.error().message;
     render::FrameInfo frame;
@@ -180,18 +182,7 @@ TEST_F(QualityTest, CausticsLightALakesBedFromItsOwnWaves) {
     const TierFrame without = render_tier(*scene, frame, render::Quality::high, 320, 180, {.caustics = false});
     ASSERT_FALSE(with.image.pixels.empty());
     ASSERT_FALSE(without.image.pixels.empty());
-    auto luminance = [](const render::RgbaImage& img) {
-        double sum = 0.0, sum2 = 0.0;
-        int n = 0;
-        for (int y = 60; y < 150; ++y)
-            for (int x = 80; x < 240; ++x, ++n) {
-                const test::Rgb c = test::pixel(img, x, y);
-                const double l = 0.3 * c.r + 0.6 * c.g + 0.1 * c.b;
-                sum += l;
-                sum2 += l * l;
-            }
-        return std::pair{sum / n, std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)))};
-    };
+    auto luminance = [](const render::RgbaImage& img) { return luminance_in(img, 80, 240, 60, 150); };
     const auto [mean_with, spread_with] = luminance(with.image);
     const auto [mean_without, spread_without] = luminance(without.image);
     std::printf("a lake's bed under 2 m: luminance %.4f +- %.4f with caustics, %.4f +- %.4f without\n", mean_with,
