@@ -4,9 +4,10 @@
 // them alive until the Tidewater objects built on them are destroyed.
 // Tidewater never destroys, resets or presents on them.
 // Threading: Tidewater submits to `queue` and waits for the device only inside its
-// explicit upload, resize and query calls (Renderer::set_scene, set_water, resize,
-// GpuQuery's queries) and when destroyed; record_frame and record_in_pass only record
-// into the host's command buffer and never wait. The host must not use the queue from
+// explicit creation, upload and query calls (Renderer::create, set_scene, set_water,
+// GpuQuery's queries, OffscreenTarget::render) and when destroyed; recording
+// (record_frame, record_views, record_in_pass) and the views' add_view, remove_view and
+// resize never submit or wait. The host must not use the queue from
 // another thread during those calls.
 #pragma once
 
