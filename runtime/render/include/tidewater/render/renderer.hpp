@@ -136,15 +136,16 @@ struct FrameTargets {
     VkImageView depth_view = VK_NULL_HANDLE;
     /// The view's size (px): the size its renderer view was given (resize, add_view).
     VkExtent2D extent{};
-    /// Where the view's rectangle starts in the images (px): views side by side in one
-    /// image (split screen) each draw their rectangle, offset to offset + extent, which
-    /// must lie inside the images. Single-sample targets only; (0, 0) for multisampled ones.
-    VkOffset2D offset{};
     bool clear = true;  ///< Clear colour and depth first (false: draw over the host's content).
     /// Multisampled targets: a single-sample colour image (COLOR_ATTACHMENT_OPTIMAL, the
     /// colour format) the water pass resolves the frame into; null: the host resolves.
     VkImage resolve_image = VK_NULL_HANDLE;
     VkImageView resolve_view = VK_NULL_HANDLE;
+    /// Where the view's rectangle starts in the images (px): views side by side in one
+    /// image (split screen) each draw their rectangle, offset to offset + extent, which
+    /// must lie inside the images. Single-sample targets only; (0, 0) for multisampled ones.
+    /// Last, so that a host's positional initialisers keep their meaning.
+    VkOffset2D offset{};
 };
 
 /// A floating body to draw (a boat, a barrel: SceneFloaters gives the scene's): its
