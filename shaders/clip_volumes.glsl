@@ -3,6 +3,27 @@
 #ifndef TIDEWATER_CLIP_VOLUMES_GLSL
 #define TIDEWATER_CLIP_VOLUMES_GLSL
 
+layout(std430, set = kFrameSet, binding = eFrameClipTextures) readonly buffer ClipTextures { float clip_texture_samples[]; };
+
+// A distance texture's distance at `local`: trilinear between the samples of the box's
+// nearest point, plus the distance to it (DistanceTexture::distance). `head` holds the box's
+// half extents and the first sample, `sides` the samples along x, y and z.
+float texture_distance(vec4 head, vec3 sides, vec3 local) {
+    vec3 h = head.xyz;
+    vec3 nearest = clamp(local, -h, h);
+    float outside = length(local - nearest);
+    vec3 u = (nearest + h) / (2.0 * h) * (sides - 1.0);
+    vec3 cell = min(floor(u), sides - 2.0);
+    vec3 f = u - cell;
+    uint row = uint(sides.x), slice = row * uint(sides.y);
+    uint base = uint(head.w) + uint(cell.x) + row * uint(cell.y) + slice * uint(cell.z);
+    float x00 = mix(clip_texture_samples[base], clip_texture_samples[base + 1u], f.x);
+    float x10 = mix(clip_texture_samples[base + row], clip_texture_samples[base + row + 1u], f.x);
+    float x01 = mix(clip_texture_samples[base + slice], clip_texture_samples[base + slice + 1u], f.x);
+    float x11 = mix(clip_texture_samples[base + slice + row], clip_texture_samples[base + slice + row + 1u], f.x);
+    return mix(mix(x00, x10, f.y), mix(x01, x11, f.y), f.z) + outside;
+}
+
 // The signed distance from `p` (relative to O) to the volume's surface, m: < 0 inside.
 float clip_distance(GpuClipVolume c, vec3 p) {
     vec3 d = p - c.center.xyz;
@@ -21,6 +42,10 @@ float clip_distance(GpuClipVolume c, vec3 p) {
             outside = max(outside, dot(plane.xyz, local) - plane.w);
         }
         return outside;
+    }
+    if (shape == kClipTexture) {
+        uint first = uint(c.axis_x.w);
+        return texture_distance(frame.clip_planes[first], frame.clip_planes[first + 1u].xyz, local);
     }
     return length(local - vec3(0.0, clamp(local.y, -c.axis_y.w, c.axis_y.w), 0.0)) - c.axis_x.w;
 }

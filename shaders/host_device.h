@@ -209,7 +209,8 @@ TW_BINDINGS(FrameBinding)
     eFrameShoreLayers = 15u,  // GpuShoreLayer[], model after model
     eFrameSkyTable = 16u,     // sampler2D, the sky table (kSkyTableSide, sky.glsl)
     eFrameFoamNoise = 17u,    // sampler2D (repeating), the foam's noise (kFoamNoiseSide, foam_noise.frag)
-    eFrameBindingCount = 18u
+    eFrameClipTextures = 18u, // float[] the frame's distance textures' samples, texture after texture (clip_volumes.glsl)
+    eFrameBindingCount = 19u
 TW_BINDINGS_END();
 
 // Specialization constants of the water's shaders: what the quality tier
@@ -275,6 +276,8 @@ TW_CONST uint kClipBox = 0u;
 TW_CONST uint kClipSphere = 1u;
 TW_CONST uint kClipCapsule = 2u;
 TW_CONST uint kClipConvex = 3u;
+TW_CONST uint kClipTexture = 4u;  // a distance texture: two clip_planes (half extents and first sample; samples a side)
+TW_CONST uint kMaxClipTextureSamples = 1u << 22;  // a frame's distance textures' samples (floats, eFrameClipTextures)
 struct GpuClipVolume {
     vec4 center;  // xyz: centre relative to O (m); w: shape (kClip*)
     vec4 axis_x;  // xyz: the volume's x axis (world, unit); w: a box's half extent along it, the radius, or a
@@ -353,7 +356,8 @@ struct GpuFrame {
     vec4 wake_boxes[kMaxWakeBoxes];  // xy: min, zw: max (relative to O) of where the wakes can be felt
     vec4 clips;                      // x: clip volumes in clip_volumes; yzw: unused
     GpuClipVolume clip_volumes[kMaxClipVolumes];
-    vec4 clip_planes[kMaxClipPlanes];  // convex clip volumes' planes in their own frames: xyz outward normal, w offset
+    vec4 clip_planes[kMaxClipPlanes];  // convex clip volumes' planes in their own frames: xyz outward normal, w offset;
+                                       // a distance texture's head (kClipTexture)
 };
 
 // A body's flow-mapped detail settings for one frame (tidewater::FlowDetailSpec with

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "tidewater/detail/distance_texture_png.hpp"
+
 namespace tidewater::detail {
 
 namespace {
@@ -97,6 +99,20 @@ Status write_png_gray16_rows(const std::filesystem::path& path, int width, int h
         const bool written = write_gray16_rows(file, width, height, row, samples.data());
         return std::fclose(file) == 0 && written;
     });
+}
+
+Status write_distance_texture_png(const std::filesystem::path& path, const DistanceTexture& texture, double range) {
+    if (!(std::isfinite(range) && range > 0.0))
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: range {} must be positive", path.string(), range)};
+    const glm::uvec3 size = texture.size();
+    const std::span<const float> d = texture.distances();
+    return write_png_gray16_rows(path, static_cast<int>(size.x), static_cast<int>(size.y * size.z),
+                                 [&](int row, std::uint16_t* samples) {
+                                     const std::size_t k = static_cast<std::size_t>(row) / size.y;
+                                     const std::size_t j = size.y - 1 - static_cast<std::size_t>(row) % size.y;
+                                     for (std::size_t i = 0; i < size.x; ++i)
+                                         samples[i] = texel_of_distance(d[i + size.x * (j + size.y * k)], range);
+                                 });
 }
 
 }  // namespace tidewater::detail

@@ -4,11 +4,56 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <map>
 #include <utility>
 
 namespace tidewater {
+
+Result<std::shared_ptr<const DistanceTexture>> DistanceTexture::create(glm::uvec3 size, std::vector<float> distances) {
+    auto refuse = [](const std::string& what) {
+        return Error{ErrorCode::invalid_argument, fmt::format("distance texture: {}", what)};
+    };
+    for (int c = 0; c < 3; ++c)
+        if (size[c] < kMinSide || size[c] > kMaxSide)
+            return refuse(
+                fmt::format("{} samples along {}; each side has {} to {}", size[c], "xyz"[c], kMinSide, kMaxSide));
+    const std::size_t samples = std::size_t{size.x} * size.y * size.z;
+    if (distances.size() != samples)
+        return refuse(fmt::format("{} distances for {} x {} x {} samples ({})", distances.size(), size.x, size.y,
+                                  size.z, samples));
+    bool inside = false;
+    for (std::size_t i = 0; i < samples; ++i) {
+        if (!std::isfinite(distances[i]) || std::abs(distances[i]) > 1e5f)
+            return refuse(fmt::format("sample {} is {} (finite, |value| <= 1e5 m)", i, distances[i]));
+        inside = inside || distances[i] < 0.0f;
+    }
+    if (!inside) return refuse("no sample is negative: the texture is nowhere inside");
+    return std::shared_ptr<const DistanceTexture>(new DistanceTexture(size, std::move(distances)));
+}
+
+// Trilinear between the samples of the box's nearest point, plus the distance to it; the
+// twin of clip_volumes.glsl's texture_distance.
+double DistanceTexture::distance(glm::dvec3 local, glm::dvec3 half_extents) const {
+    const glm::dvec3 nearest = glm::clamp(local, -half_extents, half_extents);
+    const double outside = glm::length(local - nearest);
+    const glm::dvec3 last = glm::dvec3(size_) - 1.0;
+    const glm::dvec3 u = (nearest + half_extents) / (2.0 * half_extents) * last;
+    const glm::dvec3 cell = glm::min(glm::floor(u), last - 1.0);
+    const glm::dvec3 f = u - cell;
+    const std::size_t i = static_cast<std::size_t>(cell.x), j = static_cast<std::size_t>(cell.y),
+                      k = static_cast<std::size_t>(cell.z);
+    const std::size_t row = size_.x, slice = std::size_t{size_.x} * size_.y;
+    auto at = [&](std::size_t di, std::size_t dj, std::size_t dk) {
+        return static_cast<double>(distances_[(i + di) + row * (j + dj) + slice * (k + dk)]);
+    };
+    auto along_x = [&](std::size_t dj, std::size_t dk) { return glm::mix(at(0, dj, dk), at(1, dj, dk), f.x); };
+    const double near_z = glm::mix(along_x(0, 0), along_x(1, 0), f.y);
+    const double far_z = glm::mix(along_x(0, 1), along_x(1, 1), f.y);
+    return glm::mix(near_z, far_z, f.z) + outside;
+}
 
 ClipVolume ClipVolume::box(glm::dvec3 center, glm::dvec3 half_extents, glm::dquat orientation) {
     ClipVolume v;
@@ -102,6 +147,17 @@ Result<ClipVolume> ClipVolume::convex_mesh(glm::dvec3 center, std::span<const gl
     return convex(center, std::move(planes), orientation);
 }
 
+ClipVolume ClipVolume::distance_texture(glm::dvec3 center, glm::dvec3 half_extents,
+                                        std::shared_ptr<const DistanceTexture> texture, glm::dquat orientation) {
+    ClipVolume v;
+    v.shape = Shape::distance_texture;
+    v.center = center;
+    v.half_extents = half_extents;
+    v.texture = std::move(texture);
+    v.orientation = orientation;
+    return v;
+}
+
 double clip_distance(const ClipVolume& volume, glm::dvec3 p) {
     // In the volume's own frame.
     const glm::dvec3 local = glm::conjugate(glm::normalize(volume.orientation)) * (p - volume.center);
@@ -122,6 +178,8 @@ double clip_distance(const ClipVolume& volume, glm::dvec3 p) {
             for (const glm::dvec4& plane : volume.planes) d = std::max(d, glm::dot(glm::dvec3(plane), local) - plane.w);
             return volume.planes.empty() ? 1.0 : d;
         }
+        case ClipVolume::Shape::distance_texture:
+            return volume.texture ? volume.texture->distance(local, volume.half_extents) : 1.0;
     }
     return 1.0;
 }
@@ -142,6 +200,9 @@ Status validate(const ClipVolume& volume, const std::string& context) {
     const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
     if (!std::isfinite(norm) || norm < 1e-9) return error("orientation", "must be a finite, non-zero quaternion");
     switch (volume.shape) {
+        case ClipVolume::Shape::distance_texture:
+            if (!volume.texture) return error("texture", "a distance-texture volume needs its texture");
+            [[fallthrough]];
         case ClipVolume::Shape::box:
             for (int c = 0; c < 3; ++c)
                 if (!size_ok(volume.half_extents[c]))

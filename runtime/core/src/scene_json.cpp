@@ -380,7 +380,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
     if (auto st = detail::read_rivers(*r, base_dir, scene.rivers, scene.warnings); !st) return st.error();
     if (auto st = detail::read_boats(*r, scene.boats); !st) return st.error();
     if (auto st = detail::read_floats(*r, scene.floats); !st) return st.error();
-    if (auto st = detail::read_clip_volumes(*r, scene.clip_volumes); !st) return st.error();
+    if (auto st = detail::read_clip_volumes(*r, base_dir, scene.clip_volumes); !st) return st.error();
     if (!scene.has_ocean && scene.lakes.empty() && scene.rivers.empty())
         return r->error("ocean",
                         "a scene needs water: give an ocean (a preset name, a file or an object), lakes or rivers");

@@ -28,24 +28,16 @@ inline constexpr VkDescriptorType kTexture = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_S
 
 /// Set gpu::kFrameSet of the render pipelines (frame.glsl, water_draw.glsl).
 inline constexpr std::array<BindingRow, gpu::eFrameBindingCount> kFrameSetRows = {{
-    {gpu::eFrameConstants, binding_types::kUniform},
-    {gpu::eFrameWaves, binding_types::kStorage},
-    {gpu::eFrameTerrainHeight, binding_types::kTexture},
-    {gpu::eFrameSceneColor, binding_types::kTexture},
-    {gpu::eFrameSceneDepth, binding_types::kTexture},
-    {gpu::eFrameShoreWaves, binding_types::kStorage},
-    {gpu::eFrameShoreShared, binding_types::kStorage},
-    {gpu::eFrameBodyDraws, binding_types::kStorage},
-    {gpu::eFrameRiverTexels, binding_types::kStorage},
-    {gpu::eFrameRiverChannel, binding_types::kStorage},
-    {gpu::eFrameBodyMasks, binding_types::kStorage},
-    {gpu::eFrameRiverWaves, binding_types::kStorage},
-    {gpu::eFramePatchList, binding_types::kStorage},
-    {gpu::eFrameWakePoints, binding_types::kStorage},
-    {gpu::eFrameShorePages, binding_types::kStorage},
-    {gpu::eFrameShoreLayers, binding_types::kStorage},
-    {gpu::eFrameSkyTable, binding_types::kTexture},
-    {gpu::eFrameFoamNoise, binding_types::kTexture},
+    {gpu::eFrameConstants, binding_types::kUniform},     {gpu::eFrameWaves, binding_types::kStorage},
+    {gpu::eFrameTerrainHeight, binding_types::kTexture}, {gpu::eFrameSceneColor, binding_types::kTexture},
+    {gpu::eFrameSceneDepth, binding_types::kTexture},    {gpu::eFrameShoreWaves, binding_types::kStorage},
+    {gpu::eFrameShoreShared, binding_types::kStorage},   {gpu::eFrameBodyDraws, binding_types::kStorage},
+    {gpu::eFrameRiverTexels, binding_types::kStorage},   {gpu::eFrameRiverChannel, binding_types::kStorage},
+    {gpu::eFrameBodyMasks, binding_types::kStorage},     {gpu::eFrameRiverWaves, binding_types::kStorage},
+    {gpu::eFramePatchList, binding_types::kStorage},     {gpu::eFrameWakePoints, binding_types::kStorage},
+    {gpu::eFrameShorePages, binding_types::kStorage},    {gpu::eFrameShoreLayers, binding_types::kStorage},
+    {gpu::eFrameSkyTable, binding_types::kTexture},      {gpu::eFrameFoamNoise, binding_types::kTexture},
+    {gpu::eFrameClipTextures, binding_types::kStorage},
 }};
 
 /// Set gpu::kQuerySet of the GPU query pipeline (query.comp).
@@ -66,7 +58,7 @@ inline constexpr std::array<BindingRow, gpu::eQueryBindingCount> kQuerySetRows =
 }};
 
 /// The most bindings a set has (write_set writes a set without allocating).
-inline constexpr std::size_t kMaxSetBindings = 18;
+inline constexpr std::size_t kMaxSetBindings = 19;
 static_assert(gpu::eFrameBindingCount <= kMaxSetBindings && gpu::eQueryBindingCount <= kMaxSetBindings);
 
 /// Row i describes binding i: what a set's writes index by.

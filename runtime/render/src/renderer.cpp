@@ -111,9 +111,11 @@ struct Renderer::Impl {
     /// Per frame in flight of a view: what the CPU writes for it, and its descriptor set.
     struct Slot {
         GpuBuffer frame, waves, draws, river_waves, wake_points, float_vertices, terrain_nodes;
-        GpuBuffer shore_pages;  // the shore pages as this frame reads them (tiles stream between frames)
-        std::vector<detail::FloatUpload::Draw> float_draws;             // this frame's, into float_vertices
-        std::array<std::uint32_t, 5> terrain_first{}, terrain_count{};  // this frame's, into terrain_nodes
+        GpuBuffer shore_pages;    // the shore pages as this frame reads them (tiles stream between frames)
+        GpuBuffer clip_textures;  // the distance textures' samples (eFrameClipTextures)
+        std::vector<std::shared_ptr<const DistanceTexture>> clip_textures_held;  // what clip_textures holds
+        std::vector<detail::FloatUpload::Draw> float_draws;                      // this frame's, into float_vertices
+        std::array<std::uint32_t, 5> terrain_first{}, terrain_count{};           // this frame's, into terrain_nodes
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::uint64_t recorded_frame = ~0ull;
     };
@@ -304,6 +306,7 @@ void Renderer::Impl::write_descriptors(const View& view, Slot& slot, bool with_s
     r[gpu::eFrameWakePoints] = bound_buffer(slot.wake_points.handle());
     r[gpu::eFrameSkyTable] = bound_texture(pipelines.linear.get(), sky.view());
     r[gpu::eFrameFoamNoise] = bound_texture(pipelines.linear_repeat.get(), foam_noise.view());
+    r[gpu::eFrameClipTextures] = bound_buffer(slot.clip_textures.handle());
     detail::write_set(ctx(), slot.set, detail::kFrameSetRows, r);
 }
 
@@ -455,6 +458,17 @@ Status Renderer::Impl::upload(View& view, Slot& slot, Planned& p, bool scene_cop
         slot.shore_pages = std::move(made).value();
     }
     std::memcpy(slot.shore_pages.mapped(), pages.data(), pages.size_bytes());
+    // The distance textures, copied only when the frame's are not the slot's last ones.
+    if (!slot.clip_textures.handle() || slot.clip_textures_held != p.clips.textures) {
+        const std::size_t bytes = std::max<std::size_t>(sizeof(float) * detail::texture_samples(p.clips.textures), 16);
+        if (!slot.clip_textures.handle() || slot.clip_textures.size() < bytes) {
+            auto made = GpuBuffer::create(ctx(), bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            if (!made) return made.error();
+            slot.clip_textures = std::move(made).value();
+        }
+        detail::write_texture_samples(p.clips.textures, static_cast<float*>(slot.clip_textures.mapped()));
+        slot.clip_textures_held = p.clips.textures;
+    }
     detail::write_wake_buffer(p.wakes, slot.wake_points.mapped());
     if (!p.floats.vertices.empty())
         std::memcpy(slot.float_vertices.mapped(), p.floats.vertices.data(),

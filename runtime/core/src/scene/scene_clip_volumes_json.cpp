@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/scene_json_parts.hpp"
+#include "tidewater/detail/distance_texture_png.hpp"
 
 namespace tidewater::detail {
 
@@ -22,6 +23,9 @@ constexpr std::size_t kMaxSceneClipVolumes = 16;
 constexpr std::size_t kMaxSceneClipPlanes = 48;
 /// A convex volume's mesh, at most (it has at most ClipVolume::kMaxPlanes faces).
 constexpr std::size_t kMaxConvexVertices = 256, kMaxConvexTriangles = 512;
+/// The scene's distance textures' samples, at most: half the frame's (host_device.h
+/// kMaxClipTextureSamples).
+constexpr std::size_t kMaxSceneTextureSamples = std::size_t{1} << 21;
 
 /// "vertices": [[x, y, z], ...] and "triangles": [[i, j, k], ...] of a convex volume's mesh.
 Result<ClipVolume> read_convex(const ObjectReader& r, glm::dvec3 center) {
@@ -66,11 +70,31 @@ Result<ClipVolume> read_convex(const ObjectReader& r, glm::dvec3 center) {
     return made;
 }
 
-Result<ClipVolume> read_clip_volume(const json& value, const std::string& source, const std::string& path) {
+/// "file" (a 16-bit PNG of "slices" slices), "range" (m): a distance texture's samples.
+Result<std::shared_ptr<const DistanceTexture>> read_texture(const ObjectReader& r,
+                                                            const std::filesystem::path& base_dir) {
+    std::string file;
+    if (auto st = r.string("file", file, true); !st) return st.error();
+    std::int64_t slices = 0;
+    if (auto st = r.integer("slices", slices, DistanceTexture::kMinSide, DistanceTexture::kMaxSide, true); !st)
+        return st.error();
+    if (!r.has("range")) return r.error("range", "required (the distance at 0 and 65535, m) is missing");
+    double range = 0.0;
+    if (auto st = r.number("range", range); !st) return st.error();
+    if (auto st = check_range(r, "range", range, 1e-3, 1e5, " m"); !st) return st.error();
+    std::filesystem::path path = file;
+    if (path.is_relative() && !base_dir.empty()) path = base_dir / path;
+    auto texture = read_distance_texture_png(path, static_cast<std::uint32_t>(slices), range);
+    if (!texture) return r.error("file", texture.error().message);
+    return texture;
+}
+
+Result<ClipVolume> read_clip_volume(const json& value, const std::string& source, const std::string& path,
+                                    const std::filesystem::path& base_dir) {
     auto r = ObjectReader::open(value, source, path);
     if (!r) return r.error();
     if (auto st = r->allow_only({"shape", "center", "half_extents", "radius", "half_length", "vertices", "triangles",
-                                 "yaw", "pitch", "roll"});
+                                 "file", "slices", "range", "yaw", "pitch", "roll"});
         !st)
         return st.error();
     std::string shape;
@@ -84,8 +108,12 @@ Result<ClipVolume> read_clip_volume(const json& value, const std::string& source
         v.shape = ClipVolume::Shape::capsule;
     } else if (shape == "convex") {
         v.shape = ClipVolume::Shape::convex;
+    } else if (shape == "distance_texture") {
+        v.shape = ClipVolume::Shape::distance_texture;
     } else {
-        return r->error("shape", fmt::format("\"{}\" is not a shape (allowed: box, sphere, capsule, convex)", shape));
+        return r->error("shape", fmt::format("\"{}\" is not a shape (allowed: box, sphere, capsule, convex, "
+                                             "distance_texture)",
+                                             shape));
     }
     if (!r->has("center")) return r->error("center", "required [x, y, z] is missing");
     if (auto st = read_numbers(*r, "center", 3, -1e7, 1e7, " m", &v.center.x); !st) return st.error();
@@ -99,7 +127,16 @@ Result<ClipVolume> read_clip_volume(const json& value, const std::string& source
         if (!made) return made.error();
         v = std::move(made).value();
     }
-    const bool box = v.shape == ClipVolume::Shape::box;
+    const bool textured = v.shape == ClipVolume::Shape::distance_texture;
+    for (const char* key : {"file", "slices", "range"})
+        if (!textured && r->has(key)) return r->error(key, "is for distance textures");
+    if (textured) {
+        auto texture = read_texture(*r, base_dir);
+        if (!texture) return texture.error();
+        v.texture = std::move(texture).value();
+    }
+    // A distance texture spans a box: it takes what a box does.
+    const bool box = v.shape == ClipVolume::Shape::box || textured;
     const bool capsule = v.shape == ClipVolume::Shape::capsule;
     if (!convex && box != r->has("half_extents"))
         return r->error("half_extents", box ? "required [x, y, z] is missing" : "is for boxes");
@@ -125,18 +162,24 @@ Result<ClipVolume> read_clip_volume(const json& value, const std::string& source
 
 }  // namespace
 
-Status read_clip_volumes(const ObjectReader& scene, std::vector<ClipVolume>& volumes) {
+Status read_clip_volumes(const ObjectReader& scene, const std::filesystem::path& base_dir,
+                         std::vector<ClipVolume>& volumes) {
     if (!scene.has("clip_volumes")) return {};
     const json& list = scene.at("clip_volumes");
     if (!list.is_array())
         return scene.error("clip_volumes", fmt::format("expected an array of objects, found {}", json_type_name(list)));
     if (list.size() > kMaxSceneClipVolumes)
         return scene.error("clip_volumes", fmt::format("{} volumes; at most {}", list.size(), kMaxSceneClipVolumes));
-    std::size_t planes = 0;
+    std::size_t planes = 0, samples = 0;
     for (std::size_t i = 0; i < list.size(); ++i) {
-        auto v = read_clip_volume(list[i], scene.source(), fmt::format("{}/{}", scene.child_path("clip_volumes"), i));
+        auto v = read_clip_volume(list[i], scene.source(), fmt::format("{}/{}", scene.child_path("clip_volumes"), i),
+                                  base_dir);
         if (!v) return v.error();
         planes += v->planes.size();
+        samples += v->texture ? v->texture->distances().size() : 0;
+        if (samples > kMaxSceneTextureSamples)
+            return scene.error("clip_volumes", fmt::format("the distance textures have {} samples in all; at most {}",
+                                                           samples, kMaxSceneTextureSamples));
         if (planes > kMaxSceneClipPlanes)
             return scene.error("clip_volumes", fmt::format("the convex volumes have {} faces in all; at most {}",
                                                            planes, kMaxSceneClipPlanes));

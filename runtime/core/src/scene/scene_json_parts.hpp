@@ -44,9 +44,10 @@ Status read_rivers(const ObjectReader& scene, const std::filesystem::path& base_
 /// The scene's "boats" (absent: none): scripted boats whose wakes the queries and the
 /// renderer add; their wakes together must fit kMaxWakePoints.
 Status read_boats(const ObjectReader& scene, std::vector<SceneBoat>& boats);
-/// "clip_volumes": boxes, spheres and capsules where the water is removed
-/// (scene_clip_volumes_json.cpp).
-Status read_clip_volumes(const ObjectReader& scene, std::vector<ClipVolume>& volumes);
+/// "clip_volumes": boxes, spheres, capsules, convex meshes and distance textures (their
+/// files relative to `base_dir`) where the water is removed (scene_clip_volumes_json.cpp).
+Status read_clip_volumes(const ObjectReader& scene, const std::filesystem::path& base_dir,
+                         std::vector<ClipVolume>& volumes);
 /// "floats": barrels, boxes and spheres set afloat (scene_floats_json.cpp).
 Status read_floats(const ObjectReader& scene, std::vector<SceneFloat>& floats);
 /// Points (x, z) at "path": at least two, finite, consecutive points apart.

@@ -9,6 +9,7 @@
 #include <functional>
 #include <span>
 
+#include "tidewater/clip_volume.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/result.hpp"
 
@@ -25,5 +26,10 @@ Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& im
 /// field is written without an image of it in memory.
 Status write_png_gray16_rows(const std::filesystem::path& path, int width, int height,
                              const std::function<void(int, std::uint16_t*)>& row);
+
+/// Writes a distance texture as the 16-bit PNG the scene's "distance_texture" volumes read
+/// (distance_texture_png.hpp): its slices stacked from the top, the distances over
+/// [-range, range] m (those beyond it clamped).
+Status write_distance_texture_png(const std::filesystem::path& path, const DistanceTexture& texture, double range);
 
 }  // namespace tidewater::detail
