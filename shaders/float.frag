@@ -24,8 +24,6 @@ void main() {
     float distance = length(to_camera);
     vec3 v = to_camera / distance;
     if (dot(n, v) < 0.0) n = -n;  // the inside of a hull seen through a gap
-    float diffuse = max(dot(n, frame.sun.xyz), 0.0);
-    float sky_light = 0.5 + 0.5 * n.y;
     // Under the ocean's or a lake's surface as the terrain (water_over.glsl, caustics.glsl).
     WaterOver water = water_over(world_pos);
     float depth = water.depth;
@@ -35,10 +33,10 @@ void main() {
                   caustic_gain(world_pos, depth, distance / frame.params.z, water.draw, water.optics);
         sky_lit = skylight_under_water(water.optics, depth);
     }
-    vec3 color = paint.rgb * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
+    vec3 color = paint.rgb * ground_light(n, sky_lit, sun_lit);
     // A little sheen: painted hulls and barrels are glossy.
     vec3 h = normalize(v + frame.sun.xyz);
-    color += 0.08 * pow(max(dot(n, h), 0.0), 40.0) * diffuse;
+    color += 0.08 * pow(max(dot(n, h), 0.0), 40.0) * max(dot(n, frame.sun.xyz), 0.0);
     uint view = uint(frame.params.w);
     if (view == kViewNormals) color = n * 0.5 + 0.5;
     if (view == kViewShaded)

@@ -66,6 +66,21 @@ vec3 heat_color(float t) {
 vec4 target_color(vec3 c) { return vec4(frame.options.y > 0.5 ? srgb_to_linear(c) : c, 1.0); }
 vec3 from_scene_copy(vec3 sampled) { return frame.options.y > 0.5 ? linear_to_srgb(sampled) : sampled; }
 
+// The light on an opaque surface facing `n` (the terrain, floats, a host's geometry under
+// water): sky ambient and a Lambert sun, each scaled by what reaches it (sky_lit,
+// sun_lit: 1 in the air).
+vec3 ground_light(vec3 n, vec3 sky_lit, vec3 sun_lit) {
+    float diffuse = max(dot(n, frame.sun.xyz), 0.0);
+    float sky_light = 0.5 + 0.5 * n.y;
+    return (0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit;
+}
+
+// The point (relative to O) the view's depth `depth` shows at `uv` (0..1 across the view).
+vec3 world_from_depth(vec2 uv, float depth) {
+    vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
+    return p.xyz / p.w;
+}
+
 // Ripple slope (d/dx, d/dz) at xz relative to O of a body's ripples (GpuBodyDraw's
 // ripple and ripple_offset); the origin enters reduced modulo the noise period.
 vec2 ripple_slope(vec2 xz, vec4 ripple, vec4 offset) {

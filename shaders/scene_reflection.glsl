@@ -12,11 +12,6 @@
 #include "water_quality.glsl"
 #include "terrain_material.glsl"
 
-vec3 world_from_depth(vec2 uv, float depth) {
-    vec4 p = frame.inv_view_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-    return p.xyz / p.w;
-}
-
 struct SceneReflection {
     vec3 color;   // the scene's colour where the reflections meet it
     float share;  // the share of the pixel's reflection it takes (0..1); the sky has the rest

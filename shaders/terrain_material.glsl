@@ -66,10 +66,6 @@ TerrainMaterial terrain_material(vec3 p, vec3 geo_n, float footprint) {
 
 // Its light: the sky's ambient and the sun's Lambert, each scaled per channel by what
 // reaches it (1 in the air; under the water, what the water leaves and the caustics).
-vec3 terrain_light(TerrainMaterial m, vec3 sky_lit, vec3 sun_lit) {
-    float diffuse = max(dot(m.n, frame.sun.xyz), 0.0);
-    float sky_light = 0.5 + 0.5 * m.n.y;
-    return m.albedo * ((0.22 + 0.18 * sky_light) * sky_lit + 0.75 * diffuse * sun_lit);
-}
+vec3 terrain_light(TerrainMaterial m, vec3 sky_lit, vec3 sun_lit) { return m.albedo * ground_light(m.n, sky_lit, sun_lit); }
 
 #endif

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 #include <optional>
@@ -13,6 +14,7 @@
 
 #include "frame_constants.hpp"
 #include "tidewater/render/offscreen.hpp"
+#include "tidewater/render/renderer.hpp"
 
 namespace tidewater::test {
 
@@ -24,6 +26,15 @@ inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
     const std::size_t i =
         (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.pixels[i] / 255.0, img.pixels[i + 1] / 255.0, img.pixels[i + 2] / 255.0};
+}
+
+/// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame
+/// (rows down from the top), from the near plane's corners.
+inline glm::dvec3 pixel_ray(const render::Camera& camera, int w, int h, int x, int y) {
+    const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
+    const double u = (x + 0.5) / w, v = 1.0 - (y + 0.5) / h;  // v up from the bottom
+    const glm::dvec3 bottom = c[0] + (c[1] - c[0]) * u, top = c[3] + (c[2] - c[3]) * u;
+    return glm::normalize(bottom + (top - bottom) * v - camera.position);
 }
 
 /// Mean |a - b| over the colour channels of two pictures of one size, 0..1.

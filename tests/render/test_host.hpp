@@ -29,10 +29,13 @@ class TestHost : public examples::ExampleDevice {
         VkImage image = VK_NULL_HANDLE;
         VkDeviceMemory memory = VK_NULL_HANDLE;
         VkImageView view = VK_NULL_HANDLE;
-    } color, depth;
+    } color, depth, resolved;  // resolved: multisampled hosts only
     VkBuffer readback = VK_NULL_HANDLE;
     VkDeviceMemory readback_memory = VK_NULL_HANDLE;
     VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM, depth_format = VK_FORMAT_D32_SFLOAT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    /// The image a frame ends in: the colour image, or its resolve.
+    const Image& shown() const { return samples == VK_SAMPLE_COUNT_1_BIT ? color : resolved; }
     static constexpr std::uint32_t kWidth = 256, kHeight = 144;
 
     bool has_stencil() const { return depth_format == VK_FORMAT_D32_SFLOAT_S8_UINT; }
@@ -60,14 +63,15 @@ class TestHost : public examples::ExampleDevice {
         return 0;
     }
 
-    Image make_image(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+    Image make_image(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect,
+                     VkSampleCountFlagBits image_samples = VK_SAMPLE_COUNT_1_BIT) {
         Image img;
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
         info.format = format;
         info.extent = {kWidth, kHeight, 1};
         info.mipLevels = info.arrayLayers = 1;
-        info.samples = VK_SAMPLE_COUNT_1_BIT;
+        info.samples = image_samples;
         info.usage = usage;
         EXPECT_EQ(vkCreateImage(device, &info, nullptr, &img.image), VK_SUCCESS);
         VkMemoryRequirements req;
@@ -86,9 +90,13 @@ class TestHost : public examples::ExampleDevice {
         return img;
     }
 
-    void create(VkFormat color_fmt = VK_FORMAT_R8G8B8A8_UNORM, VkFormat depth_fmt = VK_FORMAT_D32_SFLOAT) {
+    /// The device and the images; `image_samples` > 1: multisampled colour and depth, and a
+    /// single-sample `resolved` colour image the frame resolves into (read back instead).
+    void create(VkFormat color_fmt = VK_FORMAT_R8G8B8A8_UNORM, VkFormat depth_fmt = VK_FORMAT_D32_SFLOAT,
+                VkSampleCountFlagBits image_samples = VK_SAMPLE_COUNT_1_BIT) {
         color_format = color_fmt;
         depth_format = depth_fmt;
+        samples = image_samples;
         examples::ExampleDeviceOptions options;
         options.application = "tidewater embedding test";
         options.on_message = &on_message;
@@ -98,9 +106,12 @@ class TestHost : public examples::ExampleDevice {
         pi.queueFamilyIndex = family;
         vkCreateCommandPool(device, &pi, nullptr, &pool);
         color = make_image(color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                           VK_IMAGE_ASPECT_COLOR_BIT);
+                           VK_IMAGE_ASPECT_COLOR_BIT, samples);
         depth = make_image(depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                           depth_aspects());
+                           depth_aspects(), samples);
+        if (samples != VK_SAMPLE_COUNT_1_BIT)
+            resolved = make_image(color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT);
         VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         bi.size = kWidth * kHeight * 8;  // up to 8-byte texels (R16G16B16A16_SFLOAT)
         bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -120,7 +131,8 @@ class TestHost : public examples::ExampleDevice {
         vkDeviceWaitIdle(device);
         vkDestroyBuffer(device, readback, nullptr);
         vkFreeMemory(device, readback_memory, nullptr);
-        for (Image* img : {&color, &depth}) {
+        for (Image* img : {&color, &depth, &resolved}) {
+            if (!img->image) continue;
             vkDestroyImageView(device, img->view, nullptr);
             vkDestroyImage(device, img->image, nullptr);
             vkFreeMemory(device, img->memory, nullptr);
@@ -151,6 +163,9 @@ inline void begin_attachments(TestHost& host, VkCommandBuffer cmd) {
     barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     barrier(cmd, host.depth.image, host.depth_aspects(), VK_IMAGE_LAYOUT_UNDEFINED, host.depth_layout());
+    if (host.resolved.image)
+        barrier(cmd, host.resolved.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
 }
 
 /// A fresh primary command buffer, begun, with the host's images moved to attachment layouts.
@@ -172,12 +187,13 @@ inline bool submit_and_wait(TestHost& host, VkCommandBuffer cmd) {
     return vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE) == VK_SUCCESS && vkQueueWaitIdle(host.queue) == VK_SUCCESS;
 }
 
-/// The renderer for the host's images: their formats, one frame in flight.
+/// The renderer for the host's images: their formats and samples, one frame in flight.
 inline render::RendererInitInfo renderer_info(const TestHost& host) {
     render::RendererInitInfo init;
     init.device = host.context();
     init.color_format = host.color_format;
     init.depth_format = host.depth_format;
+    init.samples = host.samples;
     init.frames_in_flight = 1;
     return init;
 }
@@ -201,12 +217,12 @@ inline std::uint8_t srgb_code(float linear) {
 /// Ends `cmd` after copying the host's colour image out, submits, waits, frees it and
 /// returns the picture as display RGBA8, whatever the target's format.
 inline render::RgbaImage finish_and_read(TestHost& host, VkCommandBuffer cmd) {
-    barrier(cmd, host.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+    barrier(cmd, host.shown().image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {TestHost::kWidth, TestHost::kHeight, 1};
-    vkCmdCopyImageToBuffer(cmd, host.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, host.shown().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.readback, 1, &region);
     VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

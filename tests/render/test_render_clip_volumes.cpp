@@ -14,14 +14,6 @@
 namespace tidewater {
 namespace {
 
-/// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame.
-glm::dvec3 pixel_ray(const render::Camera& camera, int w, int h, int x, int y) {
-    const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
-    const double u = (x + 0.5) / w, v = 1.0 - (y + 0.5) / h;
-    const glm::dvec3 bottom = c[0] + (c[1] - c[0]) * u, top = c[3] + (c[2] - c[3]) * u;
-    return glm::normalize(bottom + (top - bottom) * v - camera.position);
-}
-
 double largest_difference(Rgb a, Rgb b) {
     return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
 }
@@ -63,7 +55,7 @@ TEST_F(RenderTest, AnOpenHullIsDryInside) {
     int inside = 0, same = 0, flooded_differs = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
+            const glm::dvec3 d = test::pixel_ray(frame.camera, w, h, x, y);
             const glm::dvec3 p = frame.camera.position + d * ((rim - frame.camera.position.y) / d.y);
             if (std::abs(p.x - at.x) > 0.5 * size.x - 0.05 || std::abs(p.z - at.z) > 0.5 * size.z - 0.05) continue;
             ++inside;
@@ -107,7 +99,7 @@ class ClipParity : public RenderTest {
         int dry = 0, changed = 0, mismatched = 0;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
-                const glm::dvec3 d = pixel_ray(frame.camera, w, h, x, y);
+                const glm::dvec3 d = test::pixel_ray(frame.camera, w, h, x, y);
                 if (d.y >= -0.05) continue;
                 double t = -frame.camera.position.y / d.y;
                 WorldPoint water;

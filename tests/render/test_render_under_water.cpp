@@ -16,15 +16,6 @@
 namespace tidewater {
 namespace {
 
-/// The unit direction from the camera through the centre of pixel (x, y) of a w x h frame
-/// (rows down from the top), from the near plane's corners.
-glm::dvec3 pixel_direction(const render::Camera& camera, int w, int h, int x, int y) {
-    const auto c = render::near_plane_corners(camera, static_cast<double>(w) / h);
-    const double u = (x + 0.5) / w, v = 1.0 - (y + 0.5) / h;  // v up from the bottom
-    const glm::dvec3 bottom = c[0] + (c[1] - c[0]) * u, top = c[3] + (c[2] - c[3]) * u;
-    return glm::normalize(bottom + (top - bottom) * v - camera.position);
-}
-
 /// The default scene seen level from 3 m under the sea (the view, 9 m over the
 /// seabed) and from 15 m (13 m over it, further out), and looking 50 degrees up from 3 m: the frame is
 /// drawn from under the surface, as query_submersion says of the camera, and no pixel shows
@@ -68,7 +59,7 @@ TEST_F(RenderTest, UnderTheSeaNoPixelShowsTheSkyButThroughTheSurface) {
             int outside = 0, inside = 0;
             for (int y = 0; y < static_cast<int>(img.height); ++y)
                 for (int x = 0; x < static_cast<int>(img.width); ++x) {
-                    const double zenith = std::acos(pixel_direction(frame.camera, img.width, img.height, x, y).y);
+                    const double zenith = std::acos(test::pixel_ray(frame.camera, img.width, img.height, x, y).y);
                     if (!is_sky(test::pixel(img, x, y))) continue;
                     if (zenith > 60.0 * kPi / 180.0) ++outside;
                     if (zenith < 40.0 * kPi / 180.0) ++inside;
@@ -99,7 +90,7 @@ TEST_F(RenderTest, SnellsWindowFromBelowIsFortyEightAndAHalfDegrees) {
     std::map<int, std::pair<double, int>> bins;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const double zenith = std::acos(pixel_direction(frame.camera, w, h, x, y).y) * 180.0 / kPi;
+            const double zenith = std::acos(test::pixel_ray(frame.camera, w, h, x, y).y) * 180.0 / kPi;
             const Rgb c = test::pixel(img, x, y);
             auto& bin = bins[static_cast<int>(std::floor(zenith * 2.0))];
             bin.first += (c.r + c.g + c.b) / 3.0;
@@ -165,7 +156,7 @@ TEST_F(RenderTest, UnderWaterTheSeabedFadesAsBeerLambertSays) {
         int water_n = 0;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
-                const glm::dvec3 d = pixel_direction(frame.camera, w, h, x, y);
+                const glm::dvec3 d = test::pixel_ray(frame.camera, w, h, x, y);
                 const Rgb c = test::pixel(img, x, y);
                 if (d.y > 0.05) {
                     water.r += c.r;
@@ -248,7 +239,7 @@ TEST_F(RenderTest, CausticsFocusTheSunUnderTheCrestsAsTheSurfacesCurvatureSays) 
     std::map<int, std::pair<double, int>> bins;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const glm::dvec3 d = pixel_direction(frame.camera, w, h, x, y);
+            const glm::dvec3 d = test::pixel_ray(frame.camera, w, h, x, y);
             const double path = -5.5 / d.y;
             const glm::dvec3 p = frame.camera.position + path * d;
             if (std::abs(p.z) > 0.5) continue;

@@ -69,9 +69,13 @@ Status read_pipeline_statistics(const Device& ctx, VkPipeline pipeline, std::str
 
 Result<std::vector<PipelineStageStatistics>> draw_pipeline_statistics(const Device& ctx, const DrawPipelines& draws) {
     std::vector<PipelineStageStatistics> out;
-    const std::pair<const char*, VkPipeline> named[] = {
-        {"sky", draws.sky.get()},       {"terrain", draws.terrain.get()}, {"terrain_wire", draws.terrain_wire.get()},
-        {"floats", draws.floats.get()}, {"water", draws.water.get()},     {"water_wire", draws.water_wire.get()}};
+    const std::pair<const char*, VkPipeline> named[] = {{"sky", draws.sky.get()},
+                                                        {"terrain", draws.terrain.get()},
+                                                        {"terrain_wire", draws.terrain_wire.get()},
+                                                        {"floats", draws.floats.get()},
+                                                        {"water", draws.water.get()},
+                                                        {"water_wire", draws.water_wire.get()},
+                                                        {"host_light", draws.host_light.get()}};
     for (const auto& [name, pipeline] : named)
         if (pipeline)
             if (auto st = read_pipeline_statistics(ctx, pipeline, name, out); !st) return st.error();

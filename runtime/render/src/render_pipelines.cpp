@@ -139,7 +139,7 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& d) {
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = d.samples;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = VK_TRUE;
+    depth.depthTestEnable = d.depth_test ? VK_TRUE : VK_FALSE;
     depth.depthWriteEnable = d.depth_write ? VK_TRUE : VK_FALSE;
     depth.depthCompareOp = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reversed-Z
     VkPipelineColorBlendAttachmentState blend{};
@@ -246,6 +246,12 @@ Result<DrawPipelines> FramePipelines::make_draws(const Device& ctx, const DrawOp
     sky.fragment = "sky.frag";
     sky.depth_write = false;
     if (auto st = make(p.sky, sky); !st) return st.error();
+    PipelineDesc host_light = sky;  // full screen, over the copy of the host's colour and depth
+    host_light.fragment = "host_light.frag";
+    host_light.depth_test = false;
+    host_light.depth_format = VK_FORMAT_UNDEFINED;  // drawn without the depth attachment, reading its copy
+    host_light.water = &options.water;              // its caustics
+    if (auto st = make(p.host_light, host_light); !st) return st.error();
     PipelineDesc terrain = base;
     terrain.vertex = "terrain.vert";
     terrain.fragment = "terrain.frag";

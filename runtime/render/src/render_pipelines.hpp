@@ -45,6 +45,7 @@ struct PipelineDesc {
     /// grid vertices (vec2) and, per instance, a GpuTerrainNode.
     enum class Vertices { none, mesh, terrain_patch } vertices = Vertices::none;
     bool depth_write = true;
+    bool depth_test = true;  ///< false: every fragment passes (a full-screen pass over a depth copy)
     VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
     ShaderLookup shaders;                 ///< overrides of the embedded SPIR-V (hot reload); null: none
     const WaterShading* water = nullptr;  ///< the water shaders' specialization; null: their defaults
@@ -56,6 +57,7 @@ Result<VkPipeline> create_pipeline(const Device& ctx, const PipelineDesc& desc);
 /// only when asked for (they need fillModeNonSolid).
 struct DrawPipelines {
     OwnedPipeline sky, terrain, terrain_wire, floats, water, water_wire;
+    OwnedPipeline host_light;  ///< the host's geometry under the water (host_light.frag)
 };
 
 /// What the draw pipelines are made for: the targets' formats and samples, and the water's shading.

@@ -203,7 +203,9 @@ struct Renderer::Impl {
                         Slot*& slot, detail::FramePlan& plan);
     /// One view's passes into its targets: opaque, the scene copy, water.
     void record_passes(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan,
-                       DebugView debug_view, const FrameTargets& targets);
+                       const FrameInfo& frame, const FrameTargets& targets);
+    /// The host's geometry already in the targets, lit under the water where it lies (host_light.frag).
+    void light_host_geometry(VkCommandBuffer cmd, View& view, const Slot& slot, const FrameTargets& targets);
     void draw_opaque(VkCommandBuffer cmd, const Slot& slot, VkRect2D area, DebugView view);
     void draw_water(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan, VkRect2D area,
                     DebugView debug_view);
@@ -512,14 +514,37 @@ Status Renderer::Impl::prepare_slot(View& view, const FrameInfo& frame, VkExtent
     return {};
 }
 
+void Renderer::Impl::light_host_geometry(VkCommandBuffer cmd, View& view, const Slot& slot, const FrameTargets& t) {
+    const detail::VulkanFunctions& vk = this->vk();
+    view.copies->record_host_copy(vk, cmd, t);
+    detail::FramePasses pass(t, depth_target->attachment_layout, VK_NULL_HANDLE);
+    pass.color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    pass.rendering.pDepthAttachment = nullptr;  // the pass reads the depth's copy
+    vk.CmdBeginRendering(cmd, &pass.rendering);
+    detail::set_viewport(vk, cmd, {t.offset, t.extent});
+    vk.CmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout.get(), 0, 1, &slot.set, 0, nullptr);
+    vk.CmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.draws.host_light.get());
+    vk.CmdDraw(cmd, 3, 1, 0, 0);
+    vk.CmdEndRendering(cmd);
+    // The opaque pass draws over what this one wrote.
+    constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    detail::transition(vk, cmd, t.color_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                       kColorStage, VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
 void Renderer::Impl::record_passes(VkCommandBuffer cmd, View& view, const Slot& slot, const detail::FramePlan& plan,
-                                   DebugView debug_view, const FrameTargets& t) {
+                                   const FrameInfo& frame, const FrameTargets& t) {
     const detail::VulkanFunctions& vk = this->vk();
     const auto slot_index = static_cast<std::uint32_t>(&slot - view.slots.data());
     const VkRect2D area{t.offset, t.extent};
+    const DebugView debug_view = frame.view;
     detail::SceneCopies& copies = *view.copies;
     detail::FrameTimer& timer = view.timer;
     timer.begin(vk, cmd, slot_index);
+    // What the host drew before the frame is lit under the water before Tidewater draws over it.
+    if (!t.clear && frame.light_host_geometry && debug_view == DebugView::shaded)
+        light_host_geometry(cmd, view, slot, t);
 
     const bool msaa = copies.multisampled();
     detail::FramePasses passes(t, depth_target->attachment_layout, msaa ? copies.depth_resolve_view() : VK_NULL_HANDLE);
@@ -909,8 +934,7 @@ Status Renderer::record_views(VkCommandBuffer cmd, std::span<const ViewFrame> vi
     // One sky table for every view: a 256-texel square, cheaper redrawn than tracked across frames.
     m.sky.record(m.vk(), cmd, prepared[0].plan.frame.sky);
     for (std::size_t i = 0; i < views.size(); ++i)
-        m.record_passes(cmd, *prepared[i].view, *prepared[i].slot, prepared[i].plan, views[i].frame.view,
-                        views[i].targets);
+        m.record_passes(cmd, *prepared[i].view, *prepared[i].slot, prepared[i].plan, views[i].frame, views[i].targets);
     return {};
 }
 

@@ -113,6 +113,18 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
+void SceneCopies::record_host_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& t) {
+    if (multisampled()) {
+        depth_to_resolve(vk, cmd);
+        FramePasses resolve(t, depth_target_->attachment_layout, depth_.view());
+        resolve.color.loadOp = resolve.depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        vk.CmdBeginRendering(cmd, &resolve.rendering);
+        vk.CmdEndRendering(cmd);
+        depth_resolved(vk, cmd);
+    }
+    record_copy(vk, cmd, t);
+}
+
 void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) {
     const DepthTarget& d = *depth_target_;
     transition(vk, cmd, depth_.handle(), d.aspects,

@@ -35,6 +35,9 @@ class SceneCopies {
     /// targets.extent) into the copies. The targets go from attachment layouts to
     /// TRANSFER_SRC and back; the copies end SHADER_READ_ONLY.
     void record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& targets);
+    /// The same of what the host drew before the frame (the depth of multisampled targets
+    /// resolved by a pass that draws nothing), for the pass that lights it under the water.
+    void record_host_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, const FrameTargets& targets);
     /// Multisampled targets: the depth copy's layout around the opaque pass that resolves
     /// into it (before: waits for the last frame's reads; after: ready to sample).
     void depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd);

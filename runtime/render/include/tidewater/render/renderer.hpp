@@ -185,6 +185,14 @@ struct FrameInfo {
     /// left, nearest the camera first (RendererStats::clip_volumes_left_out counts the
     /// rest). Read during record_frame only.
     std::span<const ClipVolume> clip_volumes = {};
+    /// The host's own geometry, drawn into the targets before record_frame or record_views
+    /// (FrameTargets::clear false), lit as the terrain is where it lies under a body's
+    /// surface: the sun's and the sky's light it loses to the water over it and the
+    /// caustics of that water's waves (its normal taken from the depth), and from an eye
+    /// under the surface the water it is seen through. False: left as the host drew it (a
+    /// host that lights its geometry under the water itself). record_in_pass cannot (it
+    /// draws into the host's pass, whose geometry it does not copy).
+    bool light_host_geometry = true;
 };
 
 /// A view of the scene the renderer draws (Renderer::add_view): its own refraction copies,
