@@ -2,6 +2,9 @@
 // makes, as a distance texture sampled from its exact signed distance.
 #pragma once
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <memory>
@@ -32,6 +35,24 @@ struct ClipTorus {
                 }
         auto made = DistanceTexture::create(size, std::move(d));
         return made ? std::move(made).value() : nullptr;
+    }
+    /// The ring as a closed mesh: `around` quads along its centre line, `across` round the
+    /// tube, wound outward.
+    void mesh(unsigned around, unsigned across, std::vector<glm::dvec3>& vertices,
+              std::vector<std::array<std::uint32_t, 3>>& triangles) const {
+        const double tau = 6.283185307179586;
+        for (unsigned i = 0; i < around; ++i)
+            for (unsigned j = 0; j < across; ++j) {
+                const double a = tau * i / around, b = tau * j / across;
+                const double r = major + minor * std::cos(b);
+                vertices.emplace_back(r * std::cos(a), minor * std::sin(b), r * std::sin(a));
+            }
+        auto at = [&](unsigned i, unsigned j) { return (i % around) * across + (j % across); };
+        for (unsigned i = 0; i < around; ++i)
+            for (unsigned j = 0; j < across; ++j) {
+                triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
+                triangles.push_back({at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
+            }
     }
 };
 

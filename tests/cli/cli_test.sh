@@ -397,6 +397,32 @@ JSON
     sed 's|"bake": "baked"|"bake": "baked", "resolution": 64|' loads_bake.json > both.json
     expect_error "bake and resolution together" "/shore/bake" "$TW" query --scene both.json --points points.csv --time 0
     ;;
+  clip_texture)
+    # A ring (a torus 3.5 m round, its tube 1.5 m thick) as an OBJ, baked into a distance texture.
+    awk 'BEGIN { pi = atan2(0, -1); na = 48; nb = 16
+      for (i = 0; i < na; i++) for (j = 0; j < nb; j++) {
+        a = 2 * pi * i / na; b = 2 * pi * j / nb; r = 3.5 + 1.5 * cos(b)
+        printf "v %.6f %.6f %.6f\n", r * cos(a), 1.5 * sin(b), r * sin(a) }
+      for (i = 0; i < na; i++) for (j = 0; j < nb; j++) {
+        p = i * nb + j + 1; q = i * nb + (j + 1) % nb + 1; s = ((i + 1) % na) * nb + j + 1; t = ((i + 1) % na) * nb + (j + 1) % nb + 1
+        printf "f %d %d %d\nf %d %d %d\n", p, q, s, s, q, t } }' > ring.obj
+    "$TW" clip-texture --obj ring.obj --out ring.png --samples 40 > key.json 2> log.txt
+    check "clip-texture exits 0" test $? -eq 0
+    check "wrote the texture" test -s ring.png
+    check "prints the scene key" grep -q '"shape": "distance_texture".*"slices": ' key.json
+    # A scene whose clip volume is the printed key: the ring's tube is dry, its hole wet.
+    { printf '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -10}}, "ocean": "ocean_rolling", '
+      printf '"shore": {"enabled": false}, "clip_volumes": [%s]}\n' "$(cat key.json)"; } > ring_scene.json
+    printf 'x,z\n3.5,0\n0,-3.5\n0,0\n7,0\n' > ring_points.csv
+    "$TW" query --scene ring_scene.json --points ring_points.csv --time 0 --out ring_wet.csv 2> query_log.txt
+    check "the scene with the texture queries" test -s ring_wet.csv
+    check "dry in the tube, wet in the hole and outside" bash -c "awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if (\$i == \"wet\") c = i; next } { printf \"%s\", \$c }' ring_wet.csv | grep -qx '0011'"
+    sed '$d' ring.obj > open.obj  # the ring less its last face
+    expect_error "an open mesh is refused" "not closed" "$TW" clip-texture --obj open.obj --out open.png
+    check "nothing written for it" no_file open.png
+    expect_error "a missing mesh is named" "missing.obj" "$TW" clip-texture --obj missing.obj --out missing.png
+    expect_error "samples out of range" "--samples" "$TW" clip-texture --obj ring.obj --out r.png --samples 1
+    ;;
   fit)
     # Data made by the runtime: three waves at a gauge at the origin, deep water.
     cat > waves.json <<'JSON'

@@ -24,8 +24,9 @@ int main(int argc, char** argv) {
             "tidewater"};
         app.set_version_flag("--version", TIDEWATER_VERSION_STRING);
         app.require_subcommand(1);
-        std::vector<Verb> verbs = {add_query_verb(app), add_drift_verb(app), add_bench_verb(app),  add_demo_verb(app),
-                                   add_bake_verb(app),  add_fit_verb(app),   add_inspect_verb(app)};
+        std::vector<Verb> verbs = {add_query_verb(app),   add_drift_verb(app),       add_bench_verb(app),
+                                   add_demo_verb(app),    add_bake_verb(app),        add_fit_verb(app),
+                                   add_inspect_verb(app), add_clip_texture_verb(app)};
 #if defined(TIDEWATER_HAVE_RENDER)
         verbs.push_back(add_render_verb(app));
         verbs.push_back(add_shader_stats_verb(app));

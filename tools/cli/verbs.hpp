@@ -19,6 +19,7 @@ Verb add_demo_verb(CLI::App& app);
 Verb add_bake_verb(CLI::App& app);
 Verb add_fit_verb(CLI::App& app);
 Verb add_inspect_verb(CLI::App& app);
+Verb add_clip_texture_verb(CLI::App& app);
 #if defined(TIDEWATER_HAVE_RENDER)
 Verb add_render_verb(CLI::App& app);
 Verb add_shader_stats_verb(CLI::App& app);
