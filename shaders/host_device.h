@@ -34,10 +34,12 @@ TW_CONST float kNewtonToleranceScale = 1.2e-5f;   // per metre of sum(Q A)
 TW_CONST float kNewtonRadiusSlack = 1.001f;
 TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
 
-// Waves die out over the last metres of water: amplitudes scale by
-// clamp(depth / kWaterlineRampDepth, 0, 1) at the rest position, so the surface is
-// continuous across the waterline (the Eulerian solve has a root there) and rests on land.
-TW_CONST float kWaterlineRampDepth = 0.5f;  // m
+// Waves die out at the waterline, so that the surface is continuous across it (the
+// Eulerian solve has a root there) and rests on land. A shore model's waves scale by
+// clamp(shore distance / its grid's texel, 0, 1) at the rest position: over the last texel
+// of water, where its fields blend wet and dry texels (a length of the scene's, so the
+// shore has none of its own). A river's by clamp(depth / kRiverBankRampDepth, 0, 1).
+TW_CONST float kRiverBankRampDepth = 0.5f;  // m
 
 // The shore model in tiles (tidewater::ShoreTiles): the grid is cut into tiles of
 // kShoreTileTexels texels a side, and a page per tile names the slot that holds it.

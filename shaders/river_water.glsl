@@ -1,7 +1,7 @@
 // A river's water at a rest position: the GLSL twin of RiverWater and PlumeWater in
 // runtime/core/src/water/river_water.hpp. The river's waves run in its channel frame
 // (k_s downstream, k_n across to the left); at the rest position they turn with the
-// downstream tangent there, die out over the last kWaterlineRampDepth of water and over
+// downstream tangent there, die out over the last kRiverBankRampDepth of water and over
 // the still water the river runs into, and ride the falling surface (one more term of
 // the sums: its height above the mouth level and its gradient).
 //
@@ -79,7 +79,7 @@ SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, WaveLod lod) {
     float len2 = dot(tangent, tangent);
     tangent *= inversesqrt(len2 > 0.0 ? len2 : 1.0);
     vec2 left = vec2(-tangent.y, tangent.x);
-    float depth_ramp = depth > 0.0 ? (depth < kWaterlineRampDepth ? depth / kWaterlineRampDepth : 1.0) : 0.0;
+    float depth_ramp = depth > 0.0 ? (depth < kRiverBankRampDepth ? depth / kRiverBankRampDepth : 1.0) : 0.0;
     float ramp = depth_ramp * weight;
     SurfaceSums s = surface_zero();
     for (uint i = 0u; i < RIVER_WAVE_COUNT; ++i) {

@@ -66,7 +66,8 @@ SurfaceSums water_at(vec2 rel, vec2 shore_rel, bool shore, WaveLod lod) {
             vec4 local = tap_waves(tap, layer, i - layer.waves.x);
             theta += local.x;
             kvec = local.zw;
-            a *= local.y * clamp(g_shore_fields.x / kWaterlineRampDepth, 0.0, 1.0);
+            // Over the last texel of water (host_device.h): zero on land.
+            a *= local.y * (g_shore_fields.x > 0.0 ? clamp(g_shore_fields.w / shore_layers[SHORE_LAYER_BASE].grid.z, 0.0, 1.0) : 0.0);
             q *= g_shore_fields.z;
         } else if (!WAVE_DRAWN(w)) {
             continue;

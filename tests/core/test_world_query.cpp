@@ -223,10 +223,19 @@ TEST(WorldQuery, LakeSitsAtItsLevelAndFeelsItsBeaches) {
         EXPECT_NEAR(sum / 48.0, 30.0, 0.02);
         return hi - lo;
     };
-    // Radius of the waterline: 300 sqrt(20 / 30) = 245 m. Waves die out on the beach.
-    const double centre = spread({0.0, 0.0}), beach = spread({244.5, 0.0});  // 7 cm of water
+    // Radius of the waterline: about 245 m. Toward it the waves are held under the breaking
+    // cap (0.78 of the depth, the ripples' 2 cm besides) and die out on the beach.
+    const double centre = spread({0.0, 0.0});
     EXPECT_GT(centre, 0.02);
-    EXPECT_LT(beach, 0.35 * centre);
+    double last = centre;
+    for (double x : {243.0, 244.5, 244.8}) {
+        const double depth = query_world_point(*scene, 0.0, {x, 0.0}).surface.depth;
+        const double beach = spread({x, 0.0});
+        EXPECT_LT(beach, 0.78 * depth + 0.02) << "at x = " << x << " m, " << depth << " m of water";
+        EXPECT_LT(beach, last) << "at x = " << x << " m";
+        last = beach;
+    }
+    EXPECT_LT(last, 0.35 * centre);
     const WorldPoint land = query_world_point(*scene, 0.0, {260.0, 0.0});
     EXPECT_EQ(land.body.kind, BodyKind::none);
     EXPECT_NEAR(land.surface.height, scene->terrain.height_at({260.0, 0.0}), 1e-9)

@@ -18,8 +18,6 @@ struct Overloaded : Fs... {
 template <class... Fs>
 Overloaded(Fs...) -> Overloaded<Fs...>;
 
-constexpr double kUnboundedHalfSize = 3000.0;
-
 double sample_heightmap(const HeightmapTerrain& t, glm::dvec2 p) {
     const Gray16Image& img = *t.image;
     // Pixel centres span the extent: u = 0 at the first centre, width-1 at the last.
@@ -156,14 +154,14 @@ glm::dvec2 Terrain::extent_center() const {
 }
 
 double Terrain::extent_half_size() const {
-    return std::visit(Overloaded{[](const FlatTerrain&) { return kUnboundedHalfSize; },
-                                 [](const PlaneTerrain&) { return kUnboundedHalfSize; },
-                                 [](const HeightmapTerrain& h) {
-                                     // The heightmap and its fade to the seabed: the ground a bake must see.
-                                     return 0.5 * std::max(h.size.x, h.size.y) + heightmap_edge_fade(h).distance;
-                                 },
-                                 [](const IslandTerrain& i) { return 2.5 * i.radius; }},
-                      shape_);
+    return std::visit(
+        Overloaded{[](const FlatTerrain& f) { return f.half_size; }, [](const PlaneTerrain& p) { return p.half_size; },
+                   [](const HeightmapTerrain& h) {
+                       // The heightmap and its fade to the seabed: the ground a bake must see.
+                       return 0.5 * std::max(h.size.x, h.size.y) + heightmap_edge_fade(h).distance;
+                   },
+                   [](const IslandTerrain& i) { return 2.5 * i.radius; }},
+        shape_);
 }
 
 }  // namespace tidewater

@@ -19,15 +19,21 @@ struct Gray16Image {
     std::vector<std::uint16_t> pixels;
 };
 
+/// What a bake of an unbounded terrain (flat, plane) spans about the origin by default:
+/// the half-size of the square, m. A scene at another scale gives its own ("half_size").
+inline constexpr double kDefaultUnboundedHalfSize = 3000.0;
+
 struct FlatTerrain {
-    double height = -100.0;  ///< m
+    double height = -100.0;                        ///< m
+    double half_size = kDefaultUnboundedHalfSize;  ///< m: the square the bakes span about the origin
     bool operator==(const FlatTerrain&) const = default;
 };
 
 /// h(x, z) = height + slope.x * x + slope.y * z.
 struct PlaneTerrain {
-    double height = -100.0;  ///< m at the origin
-    glm::dvec2 slope{0.0};   ///< dh/dx, dh/dz (dimensionless)
+    double height = -100.0;                        ///< m at the origin
+    glm::dvec2 slope{0.0};                         ///< dh/dx, dh/dz (dimensionless)
+    double half_size = kDefaultUnboundedHalfSize;  ///< m: the square the bakes span about the origin
     bool operator==(const PlaneTerrain&) const = default;
 };
 

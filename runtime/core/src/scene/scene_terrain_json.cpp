@@ -170,6 +170,12 @@ Result<Terrain> read_island(const ObjectReader& r) {
     return Terrain(t);
 }
 
+/// An unbounded terrain's "half_size": the square its bakes span about the origin, m.
+Status read_half_size(const ObjectReader& shape, double& half_size) {
+    if (auto st = shape.number("half_size", half_size); !st) return st;
+    return check_range(shape, "half_size", half_size, 1e-3, kMaxTerrainSize, " m");
+}
+
 }  // namespace
 
 Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::path& base_dir) {
@@ -190,19 +196,21 @@ Result<Terrain> read_terrain(const ObjectReader& scene, const std::filesystem::p
         if (k == "heightmap") return read_heightmap(*shape, base_dir);
         if (k == "island") return read_island(*shape);
         if (k == "flat") {
-            if (auto st = shape->allow_only({"height"}); !st) return st.error();
+            if (auto st = shape->allow_only({"height", "half_size"}); !st) return st.error();
             FlatTerrain flat;
             if (auto st = shape->number("height", flat.height, true); !st) return st.error();
             if (auto st = check_range(*shape, "height", flat.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
                 return st.error();
+            if (auto st = read_half_size(*shape, flat.half_size); !st) return st.error();
             return Terrain(flat);
         }
-        if (auto st = shape->allow_only({"height", "slope"}); !st) return st.error();
+        if (auto st = shape->allow_only({"height", "slope", "half_size"}); !st) return st.error();
         PlaneTerrain plane;
         if (auto st = shape->number("height", plane.height, true); !st) return st.error();
         if (auto st = check_range(*shape, "height", plane.height, -kMaxAbsHeight, kMaxAbsHeight, " m"); !st)
             return st.error();
         if (auto st = read_pair(*shape, "slope", plane.slope, true, 10.0); !st) return st.error();
+        if (auto st = read_half_size(*shape, plane.half_size); !st) return st.error();
         return Terrain(plane);
     }
     return Error{ErrorCode::schema_error, fmt::format("{}: no terrain shape", r->context())};

@@ -7,7 +7,7 @@
 // K = k_s t + k_n n, with t the downstream tangent there and n = (-t_z, t_x) the left
 // normal; its phase is the one formed at the query point (in channel coordinates, with
 // the Doppler shift of the river's mean speed, see prepare_river_waves) plus K . e.
-// Its amplitude dies out over the last kWaterlineRampDepth of water, like the shore's,
+// Its amplitude dies out over the last kRiverBankRampDepth of water, like the shore's,
 // and over a blend width of the still water it runs into, whose own waves take over.
 // The river's falling surface is one more term of the sums: its height above the mouth
 // level adds to eta and its gradient to the slope (0 through the plume, whose still
@@ -121,8 +121,8 @@ class RiverWater {
     }
 
     static constexpr std::size_t kFields = gpu::kRiverQueryStride + 2;
-    const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));
-    const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kWaterlineRampDepth));
+    const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kRiverBankRampDepth));
+    const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kRiverBankRampDepth));
     const PreparedWaves<Scalar>& w_;
     const RiverBake& river_;
     const double* px_;

@@ -118,9 +118,10 @@ class ShoreWater {
     template <typename Add>
     void each_wave(const T& ex, const T& ez, Add&& add) {
         locate(ex, ez);
-        // Waves die out over the last kWaterlineRampDepth of water: continuous, and zero on land.
-        const T ramp =
-            Ops::select(depth_ > T(0.0), Ops::select(depth_ < ramp_depth_, depth_ * inv_ramp_depth_, T(1.0)), T(0.0));
+        // Waves die out over the last texel of water (host_device.h): continuous, and zero on land.
+        const T shore_texels = blend(cursors_[0], 3) * cursors_[0].inv_texel_t;
+        const T ramp = Ops::select(depth_ > T(0.0) && shore_texels > T(0.0),
+                                   Ops::select(shore_texels < T(1.0), shore_texels, T(1.0)), T(0.0));
         const T steepness_scale = blend(cursors_[0], 2);
         for (std::size_t l = 1; l <= layers_; ++l) {
             const Cursor& c = cursors_[l];
@@ -250,8 +251,6 @@ class ShoreWater {
                             Ops::mul_add(c.u_frac, Ops::load(rows_[1].data() + at), Ops::load(rows_[0].data() + at)));
     }
 
-    const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kWaterlineRampDepth));
-    const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kWaterlineRampDepth));
     const PreparedWaves<Scalar>& w_;
     const Scalar* base_;
     std::array<Cursor, 1 + gpu::kShoreMaxLayers> cursors_;  // the shared layer's, then each run's
