@@ -37,6 +37,30 @@ inline glm::dvec3 pixel_ray(const render::Camera& camera, int w, int h, int x, i
     return glm::normalize(bottom + (top - bottom) * v - camera.position);
 }
 
+/// `measured` against `theory` times one scale (least squares through the origin), and
+/// the share of measured's variance about its mean the scaled theory explains.
+struct ScaleFit {
+    double scale = 0.0;
+    double r2 = 0.0;
+};
+inline ScaleFit fit_one_scale(const std::vector<double>& measured, const std::vector<double>& theory) {
+    double mt = 0.0, tt = 0.0, mean = 0.0;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        mt += measured[i] * theory[i];
+        tt += theory[i] * theory[i];
+        mean += measured[i] / static_cast<double>(measured.size());
+    }
+    ScaleFit fit;
+    fit.scale = mt / tt;
+    double residual = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        residual += std::pow(measured[i] - fit.scale * theory[i], 2.0);
+        total += std::pow(measured[i] - mean, 2.0);
+    }
+    fit.r2 = 1.0 - residual / total;
+    return fit;
+}
+
 /// Mean |a - b| over the colour channels of two pictures of one size, 0..1.
 inline double mean_difference(const render::RgbaImage& a, const render::RgbaImage& b) {
     double sum = 0.0;

@@ -140,19 +140,7 @@ TEST(HostGeometry, CausticsFocusTheSunOnTheHostsPlateAsTheSurfacesCurvatureSays)
             theory.push_back(1.0 / (1.0 - depth_factor * k * k * eta) - 1.0);
         }
         ASSERT_GT(measured.size(), 40u);
-        double mt = 0.0, tt = 0.0, mean = 0.0;
-        for (std::size_t i = 0; i < measured.size(); ++i) {
-            mt += measured[i] * theory[i];
-            tt += theory[i] * theory[i];
-            mean += measured[i] / static_cast<double>(measured.size());
-        }
-        const double scale = mt / tt;
-        double residual = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < measured.size(); ++i) {
-            residual += std::pow(measured[i] - scale * theory[i], 2.0);
-            total += std::pow(measured[i] - mean, 2.0);
-        }
-        const double r2 = 1.0 - residual / total;
+        const auto [scale, r2] = test::fit_one_scale(measured, theory);
         std::printf(
             "host plate %.2f m down: %zu bins over %.1f m, the gain's swing %.2f to %.2f in theory, fit R^2 %.3f "
             "(scale %.3f); without the pass the caustics change no pixel by more than %.4f\n",
