@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "../island_heightmap.hpp"
+#include "../shore_model_compare.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/scene_bake.hpp"
@@ -89,9 +90,11 @@ std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* 
 
 /// A shoal 2 m high, 40 m round, 95 m off the shore in 4.75 m of water, re-baked where it
 /// reaches on the test island with its distance field at `distance_resolution` (0: the
-/// model's grid), against full bakes before and after.
+/// model's grid), against full bakes before and after. The rays alone: a diffracted wave
+/// changes downstream of the stroke to the model's end.
 void check_seabed_stroke(int distance_resolution) {
     Scene scene = island_scene(island_pixels());
+    scene.shore.diffraction = false;
     scene.shore.distance_resolution = distance_resolution;
     auto first = bake_scene(scene);
     ASSERT_TRUE(first.ok()) << first.error().message;
@@ -99,6 +102,7 @@ void check_seabed_stroke(int distance_resolution) {
     options.previous = *first;
 
     Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    shoal.shore.diffraction = false;
     shoal.shore.distance_resolution = distance_resolution;
     const auto t0 = std::chrono::steady_clock::now();
     auto local = bake_scene(shoal, options);
@@ -154,6 +158,21 @@ TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
 // where its rows need them.
 TEST(ShoreWaterEdit, AStrokeOnTheSeabedUnderAFinerDistanceFieldIsReBakedWhereItReaches) {
     check_seabed_stroke(512);
+}
+
+TEST(ShoreWaterEdit, AStrokeOnTheSeabedUnderDiffractedWavesIsBakedInFull) {
+    auto first = bake_scene(island_scene(island_pixels()));
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+    const Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    ASSERT_TRUE(shoal.shore.diffraction);
+    auto edited = bake_scene(shoal, options);
+    ASSERT_TRUE(edited.ok()) << edited.error().message;
+    EXPECT_FALSE((*edited)->bake->reused.ocean_shore_water_edit);
+    auto full = bake_scene(shoal);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    EXPECT_TRUE(test::same_tiles(*(*edited)->bake->ocean_shore, *(*full)->bake->ocean_shore));
 }
 
 TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineIsBakedInFull) {

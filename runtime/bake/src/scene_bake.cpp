@@ -59,8 +59,9 @@ std::shared_ptr<const ShoreWaves> unchanged_lake_shore(const Scene& scene, const
     const detail::LakeBake &now = bodies.lakes[l], &then = old.bodies->lakes[l];
     if (!old.lake_shores[l] || old.shore.resolution != scene.shore.resolution ||
         old.shore.breaking_index != scene.shore.breaking_index ||
-        old.shore.texels_per_wavelength != scene.shore.texels_per_wavelength || now.level != then.level ||
-        now.inside != then.inside || !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
+        old.shore.texels_per_wavelength != scene.shore.texels_per_wavelength ||
+        old.shore.diffraction != scene.shore.diffraction || now.level != then.level || now.inside != then.inside ||
+        !(now.grid.corner == then.grid.corner) || now.grid.nx != then.grid.nx ||
         !same_waves(scene.lakes[l].body.waves(), previous->lakes[l].body.waves()))
         return nullptr;
     const SquareRegion region = detail::lake_basin_region(now);
@@ -91,6 +92,7 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
         model_options.resolution = scene.shore.resolution;
         model_options.region = detail::lake_basin_region(bodies.lakes[l]);
         model_options.breaking_index = scene.shore.breaking_index;
+        model_options.diffraction = scene.shore.diffraction;
         model_options.texels_per_wavelength = scene.shore.texels_per_wavelength;
         model_options.threads = options.threads;
         model_options.cancel = options.cancel;
@@ -117,7 +119,8 @@ bool same_ocean_shore_inputs(const Scene& scene, int distance_resolution, const 
     return old.water_level == scene.water_level() && old.shore.resolution == scene.shore.resolution &&
            old.shore.breaking_index == scene.shore.breaking_index &&
            old.shore.texels_per_wavelength == scene.shore.texels_per_wavelength &&
-           old.distance_resolution == distance_resolution && same_waves(previous->ocean.waves(), scene.ocean.waves());
+           old.shore.diffraction == scene.shore.diffraction && old.distance_resolution == distance_resolution &&
+           same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
 /// The ocean's shore model and the distance field it samples: the previous bake's when
@@ -154,13 +157,15 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             take(edit, &SceneBake::Reused::ocean_shore_land_edit);
             return {};
         }
-        // An edit of the seabed, under the water: the waves re-marched where it reaches.
-        if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
-                                                  scene.ocean.waves().waves(), scene.shore.breaking_index,
-                                                  old.shoreline, old.ocean_shore, options.threads)) {
-            take(edit, &SceneBake::Reused::ocean_shore_water_edit);
-            return {};
-        }
+        // An edit of the seabed, under the water: the waves re-marched where it reaches (the
+        // rays' fields only: a diffracted wave changes downstream of an edit to the model's end).
+        if (!scene.shore.diffraction)
+            if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
+                                                      scene.ocean.waves().waves(), scene.shore.breaking_index,
+                                                      old.shoreline, old.ocean_shore, options.threads)) {
+                take(edit, &SceneBake::Reused::ocean_shore_water_edit);
+                return {};
+            }
     }
     // One shoreline bake serves the distance field and the shore model, which samples
     // it: it may be finer than the model's grid, never coarser.
@@ -184,6 +189,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     ShoreWaveOptions model_options;
     model_options.resolution = scene.shore.resolution;
     model_options.breaking_index = scene.shore.breaking_index;
+    model_options.diffraction = scene.shore.diffraction;
     model_options.texels_per_wavelength = scene.shore.texels_per_wavelength;
     model_options.threads = options.threads;
     model_options.cancel = options.cancel;

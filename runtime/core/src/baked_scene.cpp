@@ -147,7 +147,7 @@ bool Scene::baked() const {
     if (!(shore.enabled && has_ocean)) return true;
     if (bake->water_level != water_level() || bake->shore.enabled != shore.enabled ||
         bake->shore.resolution != shore.resolution || bake->shore.breaking_index != shore.breaking_index ||
-        bake->shore.bake_folder != shore.bake_folder)
+        bake->shore.diffraction != shore.diffraction || bake->shore.bake_folder != shore.bake_folder)
         return false;
     const auto& model = bake->ocean_shore;
     const bool felt = model && !model->trivial();

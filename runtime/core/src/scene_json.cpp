@@ -199,13 +199,17 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
     if (!scene.has("shore")) return shore;
     auto r = ObjectReader::open(scene.at("shore"), scene.source(), "/shore");
     if (!r) return r.error();
-    if (auto st = r->allow_only(
-            {"enabled", "resolution", "distance_resolution", "breaking_index", "texels_per_wavelength", "bake"});
+    if (auto st = r->allow_only({"enabled", "resolution", "distance_resolution", "breaking_index",
+                                 "texels_per_wavelength", "diffraction", "bake"});
         !st)
         return st.error();
     if (r->has("enabled")) {
         if (!r->at("enabled").is_boolean()) return r->error("enabled", "expected true or false");
         shore.enabled = r->at("enabled").get<bool>();
+    }
+    if (r->has("diffraction")) {
+        if (!r->at("diffraction").is_boolean()) return r->error("diffraction", "expected true or false");
+        shore.diffraction = r->at("diffraction").get<bool>();
     }
     std::int64_t resolution = shore.resolution;
     if (auto st = r->integer("resolution", resolution, 16, 8192); !st) return st.error();
@@ -225,10 +229,10 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
             return st.error();
     if (r->has("bake")) {
         if (r->has("resolution") || r->has("distance_resolution") || r->has("breaking_index") ||
-            r->has("texels_per_wavelength"))
+            r->has("texels_per_wavelength") || r->has("diffraction"))
             return r->error("bake",
-                            "a saved bake fixes the resolutions, breaking index and texels per wavelength: give "
-                            "either bake or those");
+                            "a saved bake fixes the resolutions, breaking index, texels per wavelength and "
+                            "diffraction: give either bake or those");
         std::string folder;
         if (auto st = r->string("bake", folder); !st) return st.error();
         if (folder.empty()) return r->error("bake", "expected a folder written by tidewater bake");

@@ -64,25 +64,43 @@ inline double cap_ratio(std::span<const Wave> waves, std::span<const RunTilesVie
     return std::sqrt(energy) / (0.5 * breaking_index * h);
 }
 
+/// What the diffracted waves (shore_diffraction.hpp) tell the foam at a texel: the
+/// energy (sum of A^2, m^2) whose fields the march gives and the part of it that is
+/// breaking there.
+struct DiffractedEnergy {
+    double marched = 0.0, breaking = 0.0;
+};
+
 /// Shared texel (i, j)'s rows (depth h, signed shore distance): depth and distance,
-/// breaking (all waves together: the foam rises toward the cap) and the steepness scale
-/// (Q is scaled where the waves together, capped, would fold), into t[0..3]. Reads the
-/// runs before their caps; `ratio` is their cap_ratio there (read where h > 0).
+/// breaking (all waves together: the foam rises toward the cap where the rays give the
+/// waves, and is the breaking share of the energy where the march gives them) and the
+/// steepness scale (Q is scaled where the waves together, capped, would fold), into
+/// t[0..3]. Reads the runs before their caps; `ratio` is their cap_ratio there (read
+/// where h > 0).
 inline void shared_texel_rows(std::span<const Wave> waves, std::span<const RunTilesView> runs, const ShoreGrid& grid,
-                              int i, int j, float depth, float distance, double ratio, float* t) {
+                              int i, int j, float depth, float distance, double ratio, float* t,
+                              DiffractedEnergy diffracted = {}) {
     const double h = static_cast<double>(depth);
     t[0] = depth;
     t[1] = 0.0f;
     t[2] = 1.0f;
     t[3] = distance;
     if (h <= 0.0) return;
-    t[1] = static_cast<float>(std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0));
+    const double ray_foam = std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0);
     const double scale = ratio > 1.0 ? 1.0 / ratio : 1.0;
-    double fold = 0.0;
+    double fold = 0.0, energy = 0.0;
     each_run_wave(runs, grid, i, j, grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5),
                   [&](std::size_t w, double factor, double kx, double kz) {
-                      fold += waves[w].steepness * std::sqrt(kx * kx + kz * kz) * waves[w].amplitude * factor * scale;
+                      const double a = waves[w].amplitude * factor;
+                      fold += waves[w].steepness * std::sqrt(kx * kx + kz * kz) * a * scale;
+                      energy += a * a;
                   });
+    double foam = ray_foam;
+    if (energy > 0.0 && diffracted.marched > 0.0) {
+        const double marched = std::min(diffracted.marched / energy, 1.0);
+        foam = std::min(diffracted.breaking / energy, marched) + (1.0 - marched) * ray_foam;
+    }
+    t[1] = static_cast<float>(std::clamp(foam, 0.0, 1.0));
     if (fold > kMaxFold) t[2] = static_cast<float>(kMaxFold / fold);
 }
 

@@ -12,9 +12,11 @@
 #include <glm/vec2.hpp>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 
 #include "shore/fast_marching.hpp"
+#include "shore/shore_diffraction.hpp"
 #include "shore/shore_rows.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -219,14 +221,31 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
     });
 }
 
+/// What the march of a run's waves leaves beside their tiles for the cap and the foam: per
+/// stored texel and wave, the march's share of the wave's fields (0..255) and its amplitude
+/// factor, which the cap blends with the rays' (the tiles hold the rays' until then); per
+/// texel of the
+/// run's grid, the marched energy and its breaking part (diffracted waves only), in
+/// quanta of the sea's energy: integers, so that the sums do not depend on the order the
+/// waves finish in.
+struct RunDiffraction {
+    std::vector<std::uint8_t> marched;  ///< stored texel * count + wave
+    std::vector<float> amplitude;       ///< stored texel * count + wave
+    std::vector<std::uint64_t> energy, breaking;
+    double quantum = 0.0;  ///< m^2
+    std::mutex lock;
+};
+
 /// Wave w of a run's rows of every stored texel from its marched phase: the phase residual,
 /// the local wavevector (k0 D + grad residual, of length exactly k(h)) and the amplitude
-/// factor from shoaling (energy flux) and refraction (rays against the shore normal).
-void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m, std::size_t w, TilePlan& plan) {
+/// factor from shoaling (energy flux) and refraction (rays against the shore normal), or
+/// the march's (`diffracted`, its share recorded in `record`) where it holds.
+void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
+               const detail::DiffractedWave* diffracted, std::size_t w, TilePlan& plan, RunDiffraction* record) {
     const int n = field.resolution;
     const std::size_t nw = plan.tiles.stride / 4;
     auto phase = [&](int a, int b) { return m.phase[field.index(a, b)]; };
-    each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t) {
+    each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t at) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
@@ -234,6 +253,15 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
             detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
                                static_cast<double>(field.depth[k]), static_cast<double>(m.slowness[k]), normal,
                                m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
+        if (diffracted && diffracted->share[k] > 0.0f && (v.kx != 0.0f || v.kz != 0.0f)) {
+            const double turned =
+                std::acos(std::clamp((static_cast<double>(v.kx) * wave.dir_x + static_cast<double>(v.kz) * wave.dir_z) /
+                                         std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz)),
+                                     -1.0, 1.0));
+            const double share = static_cast<double>(diffracted->share[k]) * detail::march_share_at_angle(turned);
+            record->marched[at * nw + w] = static_cast<std::uint8_t>(std::lround(255.0 * share));
+            record->amplitude[at * nw + w] = diffracted->amplitude[k];
+        }
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
         t[2 * nw + w] = v.kx;
@@ -246,7 +274,54 @@ struct RunBake {
     std::size_t first = 0, count = 0;
     std::shared_ptr<const ShoreField> field;  ///< its grid: the model's (not owned), or its own
     TilePlan plan;
+    std::unique_ptr<RunDiffraction> diffraction;  ///< with ShoreWaveOptions::diffraction
 };
+
+/// Adds a diffracted wave's energy (the march's share) and its breaking part to its run's record.
+void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffraction& record) {
+    const std::lock_guard<std::mutex> guard(record.lock);
+    for (std::size_t k = 0; k < d.share.size(); ++k) {
+        if (d.share[k] <= 0.0f) continue;
+        const double a = wave.amplitude * static_cast<double>(d.amplitude[k]);
+        const auto e =
+            static_cast<std::uint64_t>(std::llround(a * a * static_cast<double>(d.share[k]) / record.quantum));
+        record.energy[k] += e;
+        if (d.broken[k]) record.breaking[k] += e;
+    }
+}
+
+/// The runs' diffracted energy at world xz `p`, texel (i, j) of `grid`: read where a run
+/// lies on that grid, sampled bilinearly elsewhere.
+detail::DiffractedEnergy diffracted_energy(const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j,
+                                           glm::dvec2 p) {
+    detail::DiffractedEnergy sum;
+    for (const RunBake& r : runs) {
+        if (!r.diffraction) continue;
+        const ShoreGrid& g = r.plan.grid;
+        const int n = g.resolution;
+        auto at = [&](int a, int b) {
+            return static_cast<std::size_t>(b) * static_cast<std::size_t>(n) + static_cast<std::size_t>(a);
+        };
+        const double q = r.diffraction->quantum;
+        if (g == grid) {
+            sum.marched += q * static_cast<double>(r.diffraction->energy[at(i, j)]);
+            sum.breaking += q * static_cast<double>(r.diffraction->breaking[at(i, j)]);
+            continue;
+        }
+        const glm::dvec2 f = (p - g.corner) / g.texel - 0.5;
+        const int a = std::clamp(static_cast<int>(std::floor(f.x)), 0, n - 2);
+        const int b = std::clamp(static_cast<int>(std::floor(f.y)), 0, n - 2);
+        const double u = std::clamp(f.x - a, 0.0, 1.0), v = std::clamp(f.y - b, 0.0, 1.0);
+        auto lerp = [&](const std::vector<std::uint64_t>& sums) {
+            auto get = [&](int c, int d) { return q * static_cast<double>(sums[at(c, d)]); };
+            return (1 - u) * ((1 - v) * get(a, b) + v * get(a, b + 1)) +
+                   u * ((1 - v) * get(a + 1, b) + v * get(a + 1, b + 1));
+        };
+        sum.marched += lerp(r.diffraction->energy);
+        sum.breaking += lerp(r.diffraction->breaking);
+    }
+    return sum;
+}
 
 /// The runs as the cap reads them.
 std::vector<RunTilesView> run_views(const std::vector<RunBake>& runs) {
@@ -267,7 +342,8 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const double h = static_cast<double>(field.depth[k]);
         const double ratio = h > 0.0 ? detail::cap_ratio(waves, views, plan.grid, i, j, h, breaking_index) : 0.0;
-        detail::shared_texel_rows(waves, views, plan.grid, i, j, field.depth[k], field.signed_distance[k], ratio, t);
+        detail::shared_texel_rows(waves, views, plan.grid, i, j, field.depth[k], field.signed_distance[k], ratio, t,
+                                  diffracted_energy(runs, plan.grid, i, j, field.texel_center(i, j)));
     });
 }
 
@@ -293,7 +369,12 @@ void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<Ru
         each_stored_texel(runs[r].plan, threads, [&](float* t, std::size_t k, std::size_t at) {
             const double h = static_cast<double>(runs[r].field->depth[k]);
             const double ratio = static_cast<double>(ratios[r][at]);
-            for (std::size_t w = 0; w < nw; ++w) t[nw + w] = detail::capped_amplitude(t[nw + w], h, ratio);
+            const RunDiffraction* d = runs[r].diffraction.get();
+            for (std::size_t w = 0; w < nw; ++w) {
+                const float rays = detail::capped_amplitude(t[nw + w], h, ratio);
+                const float share = d ? static_cast<float>(d->marched[at * nw + w]) / 255.0f : 0.0f;
+                t[nw + w] = share > 0.0f && h > 0.0 ? share * d->amplitude[at * nw + w] + (1.0f - share) * rays : rays;
+            }
         });
     }
 }
@@ -410,10 +491,11 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         const std::size_t nw = waves.size();
         std::vector<glm::dvec2> open;
         for (const Wave& w : waves) open.push_back(w.k * glm::dvec2(w.dir_x, w.dir_z));
+        const detail::SeaState sea = detail::sea_state(waves);
         // Each run on its own grid: the model's, or every scale-th texel's size from the same corner.
         std::vector<RunBake> runs;
         for (const Run& r : plan_runs(waves, field->texel, field->resolution, options.texels_per_wavelength)) {
-            RunBake run{r.first, r.count, nullptr, {}};
+            RunBake run{r.first, r.count, nullptr, {}, nullptr};
             if (r.scale == 1) {
                 run.field = field;
             } else {
@@ -425,6 +507,16 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             run.plan = plan_tiles(detail::open_sea_test(waves, r.first, r.count),
                                   std::span<const glm::dvec2>(open).subspan(r.first, r.count), *run.field,
                                   options.breaking_index, options.store_every_tile, options.threads);
+            if (options.diffraction) {
+                run.diffraction = std::make_unique<RunDiffraction>();
+                const std::size_t texels =
+                    static_cast<std::size_t>(run.field->resolution) * static_cast<std::size_t>(run.field->resolution);
+                run.diffraction->marched.assign(run.plan.tile.size() * ShoreTiles::kSlotTexels * r.count, 0);
+                run.diffraction->amplitude.assign(run.diffraction->marched.size(), 0.0f);
+                run.diffraction->energy.assign(texels, 0);
+                run.diffraction->breaking.assign(texels, 0);
+                run.diffraction->quantum = std::ldexp(std::max(sea.energy, 1e-30), -32);
+            }
             runs.push_back(std::move(run));
         }
         std::vector<std::size_t> run_of(nw);
@@ -444,8 +536,20 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             std::call_once(slots_made[run_of[w]], [&] {
                 make_slots(run.plan, std::span<const glm::dvec2>(open).subspan(run.first, run.count));
             });
-            if (!run.plan.tile.empty())
-                wave_rows(waves[w], *run.field, march_phase(waves[w], *run.field), w - run.first, run.plan);
+            if (!run.plan.tile.empty()) {
+                const MarchedPhase m = march_phase(waves[w], *run.field);
+                std::optional<detail::DiffractedWave> diffracted;
+                if (run.diffraction) {
+                    const ShoreField& f = *run.field;
+                    diffracted = detail::diffract_wave(waves[w], sea, f, [&](std::size_t k) {
+                        return !std::isfinite(m.phase[k]) ||
+                               (m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(f.depth[k])));
+                    });
+                    record_energy(waves[w], *diffracted, *run.diffraction);
+                }
+                wave_rows(waves[w], *run.field, m, diffracted ? &*diffracted : nullptr, w - run.first, run.plan,
+                          run.diffraction.get());
+            }
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);

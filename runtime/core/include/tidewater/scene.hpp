@@ -47,6 +47,11 @@ struct SceneShore {
     /// long waves are baked on grids of 2, 4, 8 ... times the model's texel (depth, breaking
     /// and shore distance stay on the model's). 0: every wave on the model's grid.
     double texels_per_wavelength = kDefaultShoreTexelsPerWavelength;
+    /// Refraction with diffraction, nonlinear shoaling and breaking by dissipation from the
+    /// depth (the parabolic mild-slope march of each wave) where it holds; false: the rays
+    /// alone, shoaled linearly and capped at breaking_index (which caps the rays' share in
+    /// either case). An edit under the water re-bakes the whole model when true.
+    bool diffraction = true;
     std::filesystem::path bake_folder;  ///< A saved bake for bake_scene to load (empty: bake).
 };
 

@@ -32,6 +32,10 @@ struct ShoreWaveOptions {
     /// model's texel (the breaking, depth and shore distance stay on the model's grid).
     /// 0: every wave on the model's grid.
     double texels_per_wavelength = kDefaultShoreTexelsPerWavelength;
+    /// Each wave marched by the parabolic mild-slope equation too (refraction with
+    /// diffraction, nonlinear shoaling, breaking by dissipation), its fields put in the
+    /// rays' place where the march holds (shore_diffraction.hpp).
+    bool diffraction = true;
 };
 
 /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed

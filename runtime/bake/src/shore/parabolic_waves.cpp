@@ -1,0 +1,347 @@
+#include "shore/parabolic_waves.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "shore/fast_marching.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/dispersion.hpp"
+
+namespace tidewater::detail {
+
+namespace {
+
+using Complex = std::complex<double>;
+
+/// Linear dispersion without units: k h and the group velocity's share n = cg / c as
+/// functions of s = sqrt(omega^2 h / g), tabulated up to deep water (k h = kDeepKh) and
+/// read linearly: within 1e-6 of the solve, at a tenth of its cost.
+class DispersionTable {
+  public:
+    DispersionTable() {
+        const double last = std::sqrt(kDeepKh);  // omega^2 h / g <= k h: past it, the water is deep
+        step_ = last / (kEntries - 1);
+        for (std::size_t e = 0; e < kEntries; ++e) {
+            const double s = std::max(static_cast<double>(e) * step_, 1e-9), x = s * s;
+            const double kh = wavenumber_at_depth(1.0, x * kGravity) * x * kGravity;  // omega = 1: h = g x
+            kh_[e] = kh;
+            n_[e] = kh > 20.0 ? 0.5 : 0.5 * (1.0 + 2.0 * kh / std::sinh(2.0 * kh));
+        }
+    }
+    /// k h and n at s (0 <= s < sqrt(kDeepKh)).
+    void at(double s, double& kh, double& n) const {
+        const double f = s / step_;
+        const std::size_t e = std::min(static_cast<std::size_t>(f), kEntries - 2);
+        const double t = f - static_cast<double>(e);
+        kh = kh_[e] + t * (kh_[e + 1] - kh_[e]);
+        n = n_[e] + t * (n_[e + 1] - n_[e]);
+    }
+
+  private:
+    static constexpr std::size_t kEntries = 4096;
+    double step_ = 0.0;
+    std::array<double, kEntries> kh_{}, n_{};
+};
+
+const DispersionTable& dispersion_table() {
+    static const DispersionTable table;
+    return table;
+}
+
+/// What the march reads of a row: wavenumber, group velocity and depth per point (the
+/// depth at least a thousandth of the deep-water wavelength over 2 pi, so that the
+/// dispersion stays defined next to land), which points are water, and which are deep
+/// (k h >= kDeepKh), where the wave is the open sea's, as the rays take it: k = omega^2 / g.
+struct RowMedium {
+    std::vector<double> k, cg, h;
+    std::vector<char> wet, deep;
+};
+
+RowMedium row_medium(const ParabolicInput& in, const std::vector<float>& depths) {
+    const int n = in.grid.across;
+    RowMedium r;
+    r.k.resize(static_cast<std::size_t>(n));
+    r.cg.resize(r.k.size());
+    r.h.resize(r.k.size());
+    r.wet.resize(r.k.size());
+    r.deep.resize(r.k.size());
+    const double k_deep = in.omega * in.omega / kGravity;
+    const double shallowest = 1e-3 / k_deep;
+    const DispersionTable& table = dispersion_table();
+    for (int j = 0; j < n; ++j) {
+        const auto at = static_cast<std::size_t>(j);
+        const double depth = static_cast<double>(depths[at]);
+        r.wet[at] = depth > 0.0;
+        r.h[at] = std::max(depth, shallowest);
+        double kh = kDeepKh, share = 0.5;
+        // k(h) >= omega^2 / g: water that deep for the deep-water k is deep without a look-up.
+        if (k_deep * r.h[at] < kDeepKh) table.at(std::sqrt(k_deep * r.h[at]), kh, share);
+        r.deep[at] = kh >= kDeepKh;
+        r.k[at] = r.deep[at] ? k_deep : kh / r.h[at];
+        r.cg[at] = r.deep[at] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[at];
+    }
+    return r;
+}
+
+/// Solves the tridiagonal system lower_j x_{j-1} + diag_j x_j + upper_j x_{j+1} = rhs_j
+/// (Thomas); `diag` and `rhs` are overwritten, the answer left in `rhs`.
+void solve_tridiagonal(const std::vector<Complex>& lower, std::vector<Complex>& diag, const std::vector<Complex>& upper,
+                       std::vector<Complex>& rhs) {
+    // 1 / z as conj(z) / |z|^2: the library's complex division guards against overflow
+    // that these coefficients (of order 1) cannot reach, at several times the cost.
+    auto inverse = [](Complex z) { return std::conj(z) / std::norm(z); };
+    const std::size_t n = diag.size();
+    diag[0] = inverse(diag[0]);
+    for (std::size_t j = 1; j < n; ++j) {
+        const Complex m = lower[j] * diag[j - 1];
+        diag[j] = inverse(diag[j] - m * upper[j - 1]);
+        rhs[j] -= m * rhs[j - 1];
+    }
+    rhs[n - 1] *= diag[n - 1];
+    for (std::size_t j = n - 1; j-- > 0;) rhs[j] = (rhs[j] - upper[j] * rhs[j + 1]) * diag[j];
+}
+
+}  // namespace
+
+double amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear) {
+    if (!(amplitude * k_linear > 1e-3)) return k_linear;  // under 1e-5 of k in deep water
+    // Kirby and Dalrymple's (1986) composite of Stokes' third order in deep and
+    // intermediate water with Hedges' shallow-water form:
+    // omega^2 = g k (1 + f1 (k a)^2 D) tanh(k h + f2 k a), f1 = tanh^5(kh), f2 = (kh / sinh kh)^4.
+    auto residual = [&](double k) {
+        const double kh = k * depth, ka = k * amplitude;
+        if (kh > 20.0) return kGravity * k * (1.0 + ka * ka) - omega * omega;
+        const double e = std::exp(-2.0 * kh);  // tanh, sinh and cosh from one exponential
+        const double t = (1.0 - e) / (1.0 + e), sh = (1.0 - e) / (2.0 * std::sqrt(e));
+        const double sh2 = sh * sh, t2 = t * t, r = kh / sh, r2 = r * r;
+        const double cosh4 = 1.0 + 8.0 * sh2 * (1.0 + sh2);  // cosh(4x) = 1 + 8 sinh^2 x cosh^2 x
+        const double d = (cosh4 + 8.0 - 2.0 * t2) / (8.0 * sh2 * sh2);
+        const double e_shift = e * std::exp(-2.0 * r2 * r2 * ka);  // tanh(kh + f2 k a) from exp(-2 (kh + f2 k a))
+        return kGravity * k * (1.0 + t2 * t2 * t * ka * ka * d) * (1.0 - e_shift) / (1.0 + e_shift) - omega * omega;
+    };
+    // The dispersion shifts k by a few per cent: secant steps from the linear k.
+    double k0 = k_linear, k1 = k_linear * 0.98;
+    double r0 = residual(k0), r1 = residual(k1);
+    for (int i = 0; i < 8 && r1 != r0; ++i) {
+        const double k2 = k1 - r1 * (k1 - k0) / (r1 - r0);
+        k0 = k1;
+        r0 = r1;
+        k1 = std::clamp(k2, 0.5 * k_linear, 1.5 * k_linear);
+        if (std::abs(k1 - k0) < 1e-6 * k_linear) break;
+        r1 = residual(k1);
+    }
+    return std::isfinite(k1) ? k1 : k_linear;
+}
+
+double weggel_breaker_index(double slope, double height, double period) {
+    const double m = std::clamp(slope, 0.0, 0.1);
+    const double a = 43.8 * (1.0 - std::exp(-19.0 * m));
+    const double b = 1.56 / (1.0 + std::exp(-19.5 * m));
+    return std::max(0.6, b - a * height / (kGravity * period * period));
+}
+
+double shuto_exponent(double ursell) {
+    if (!(ursell >= 30.0)) return std::numeric_limits<double>::quiet_NaN();
+    if (ursell <= 50.0) return -2.0 / 7.0;
+    // H h^(5/2) (s - 2 sqrt 3) = const with s = sqrt(U), d ln s = d ln H / 2 - d ln h.
+    const double s = std::sqrt(ursell), r3 = std::sqrt(3.0);
+    return (5.0 * r3 - 1.5 * s) / (1.5 * s - 2.0 * r3);
+}
+
+namespace {
+
+/// Steps a breaking row takes a local wavelength at least: where waves break, the march
+/// steps that finely (the onset and the surf zone's decay length are short), elsewhere
+/// at the grid's spacing.
+inline constexpr double kSurfStepsPerWavelength = 16.0;
+inline constexpr int kMostSubsteps = 8;
+
+/// The march's state from row to row.
+class Marcher {
+  public:
+    explicit Marcher(const ParabolicInput& in) : in_(in), n_(static_cast<std::size_t>(in.grid.across)) {
+        period_ = in.sea_period > 0.0 ? in.sea_period : kTwoPi / in.omega;
+        for (auto* v : {&a, &lower_, &diag_, &upper_, &rhs_, &half_turn_, &start_}) v->assign(n_, Complex(0.0));
+        for (auto* v : {&psi, &k_, &kn_, &p_, &s_}) v->assign(n_, 0.0);
+        broken.assign(n_, 0);
+    }
+
+    void enter(const RowMedium& row) {
+        for (std::size_t j = 0; j < n_; ++j) {
+            const double shoaled = in_.incident_in_deep_water ? shoaling_coefficient(in_.omega, row.h[j]) : 1.0;
+            a[j] = row.wet[j] ? Complex(in_.incident_amplitude * shoaled) : Complex(0.0);
+        }
+    }
+
+    /// Substeps the step from `here` to `next` needs: more where the waves break or near.
+    int substeps(const RowMedium& here, double dx) const {
+        double finest = dx;
+        for (std::size_t j = 0; j < n_; ++j) {
+            if (!here.wet[j] || !in_.breaking) continue;
+            const double height = 2.0 * std::abs(a[j]) * in_.sea_over_component;
+            if (broken[j] || height > 0.5 * here.h[j])
+                finest = std::min(finest, kTwoPi / here.k[j] / kSurfStepsPerWavelength);
+        }
+        return std::clamp(static_cast<int>(std::ceil(dx / finest - 1e-9)), 1, kMostSubsteps);
+    }
+
+    void advance(const RowMedium& here, const RowMedium& next, double dx);
+
+    std::vector<Complex> a;
+    std::vector<double> psi;
+    std::vector<char> broken;
+    double theta = 0.0;
+
+  private:
+    const ParabolicInput& in_;
+    std::size_t n_;
+    double period_ = 0.0;
+    std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_, start_;
+    std::vector<double> k_, kn_, p_, s_;
+};
+
+void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
+    const std::size_t un = n_;
+    const double dy2 = in_.grid.dy * in_.grid.dy;
+    auto& k = k_;
+    auto& kn = kn_;
+    auto& p = p_;
+    auto& s = s_;
+    // The row's mean wavenumber over its water carries the fast phase: A varies slowly.
+    double k_sum = 0.0;
+    int wet = 0;
+    for (std::size_t j = 0; j < un; ++j) {
+        k[j] = 0.5 * (here.k[j] + next.k[j]);
+        const double cg = 0.5 * (here.cg[j] + next.cg[j]);
+        p[j] = in_.omega / k[j] * cg;
+        if (here.wet[j] && next.wet[j]) {
+            k_sum += k[j];
+            ++wet;
+        }
+    }
+    const double k_bar = wet > 0 ? k_sum / wet : in_.omega * in_.omega / kGravity;
+    for (std::size_t j = 0; j < un; ++j) {
+        // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
+        const double dln_cg = std::log(next.cg[j] / here.cg[j]);
+        double decay = 0.5 * dln_cg / dx;
+        const double h = here.h[j];
+        const double height = 2.0 * std::abs(a[j]) * in_.sea_over_component;
+        if (in_.breaking && here.wet[j]) {
+            const double slope = std::max(0.0, (here.h[j] - next.h[j]) / dx);
+            if (!broken[j] && height > weggel_breaker_index(slope, height, period_) * h) broken[j] = 1;
+            if (broken[j] && height < in_.surf.stable_index * h) broken[j] = 0;
+        } else {
+            broken[j] = 0;
+        }
+        if (broken[j]) {
+            // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
+            const double stable = in_.surf.stable_index * h / height;
+            decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
+        } else if (in_.nonlinear_shoaling && here.wet[j] && next.h[j] < h) {
+            const double depth = 0.5 * (h + next.h[j]);
+            const double n_nl = shuto_exponent(kGravity * height * period_ * period_ / (depth * depth));
+            // Grows as H ~ h^n where that is faster than linear shoaling.
+            if (std::isfinite(n_nl)) decay = std::min(decay, -n_nl * std::log(next.h[j] / h) / dx);
+        }
+        s[j] = decay;
+        // The phase travels at the amplitude's own speed (amplitude dispersion).
+        kn[j] = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
+                    ? amplitude_dispersed_wavenumber(in_.omega, 0.5 * (h + next.h[j]), std::abs(a[j]), k[j])
+                    : k[j];
+    }
+    // A_x = (i (k - k_bar) - s) A + R A, R = i / (2 k) L, L A = (p A_y)_y / p (walls at
+    // the sides), split (Strang): the phase and the growth or decay taken exactly over
+    // each half step, whatever the step against the wavelength or the surf zone's decay
+    // length (Crank-Nicolson would turn a strong decay into a flip of sign); Crank-
+    // Nicolson between for the diffraction, (1 - dx/2 R) A' = (1 + dx/2 R) A.
+    for (std::size_t j = 0; j < un; ++j) {
+        half_turn_[j] = std::polar(std::exp(-0.5 * s[j] * dx), 0.5 * (kn[j] - k_bar) * dx);
+        start_[j] = a[j];
+        a[j] *= half_turn_[j];
+    }
+    for (std::size_t j = 0; j < un; ++j) {
+        const double p_lo = j > 0 ? 0.5 * (p[j] + p[j - 1]) : 0.0;
+        const double p_hi = j + 1 < un ? 0.5 * (p[j] + p[j + 1]) : 0.0;
+        const double l_lo = p_lo / (p[j] * dy2), l_hi = p_hi / (p[j] * dy2), l_mid = -(l_lo + l_hi);
+        const Complex alpha(0.0, -0.25 * dx / k[j]), beta(0.0, 0.25 * dx / k[j]);
+        if (!next.wet[j]) {
+            lower_[j] = upper_[j] = 0.0;
+            diag_[j] = 1.0;
+            rhs_[j] = 0.0;
+            continue;
+        }
+        lower_[j] = alpha * l_lo;
+        upper_[j] = alpha * l_hi;
+        diag_[j] = 1.0 + alpha * l_mid;
+        Complex sum = (1.0 + beta * l_mid) * a[j];
+        if (j > 0) sum += beta * l_lo * a[j - 1];
+        if (j + 1 < un) sum += beta * l_hi * a[j + 1];
+        rhs_[j] = sum;
+    }
+    solve_tridiagonal(lower_, diag_, upper_, rhs_);
+    theta += k_bar * dx;
+    for (std::size_t j = 0; j < un; ++j) {
+        a[j] = rhs_[j] * half_turn_[j];
+        // The phase: the exact turn, and what diffraction added to it (a small angle).
+        const Complex turned = start_[j] * half_turn_[j] * half_turn_[j];
+        const Complex added = a[j] * std::conj(turned);
+        psi[j] += kn[j] * dx + (added != Complex(0.0) ? std::arg(added) : 0.0);
+    }
+}
+
+}  // namespace
+
+void march_parabolic(const ParabolicInput& in, const std::function<void(const ParabolicRow&)>& row_done) {
+    const ParabolicGrid& g = in.grid;
+    const auto un = static_cast<std::size_t>(g.across);
+    if (g.steps <= 0 || un == 0) return;
+    std::vector<float> here_depths(un), next_depths(un), between(un);
+    in.depth_row(0, here_depths);
+    RowMedium here = row_medium(in, here_depths);
+    Marcher m(in);
+    m.enter(here);
+    row_done({0, m.theta, m.a, m.psi, m.broken});
+    for (int step = 0; step + 1 < g.steps; ++step) {
+        in.depth_row(step + 1, next_depths);
+        const RowMedium next = row_medium(in, next_depths);
+        const int parts = m.substeps(here, g.dx);
+        RowMedium from = here;
+        for (int part = 1; part <= parts; ++part) {
+            if (part == parts) {
+                m.advance(from, next, g.dx / parts);
+                break;
+            }
+            const float t = static_cast<float>(part) / static_cast<float>(parts);
+            for (std::size_t j = 0; j < un; ++j) between[j] = here_depths[j] + t * (next_depths[j] - here_depths[j]);
+            RowMedium to = row_medium(in, between);
+            m.advance(from, to, g.dx / parts);
+            from = std::move(to);
+        }
+        here = next;
+        std::swap(here_depths, next_depths);
+        row_done({step + 1, m.theta, m.a, m.psi, m.broken});
+    }
+}
+
+ParabolicField march_parabolic(const ParabolicInput& in) {
+    const ParabolicGrid& g = in.grid;
+    ParabolicField f;
+    f.grid = g;
+    f.amplitude.assign(g.size(), {});
+    f.phase.assign(g.size(), 0.0f);
+    f.breaking.assign(g.size(), 0.0f);
+    march_parabolic(in, [&](const ParabolicRow& row) {
+        for (int j = 0; j < g.across; ++j) {
+            const std::size_t at = g.index(row.step, j);
+            const auto from = static_cast<std::size_t>(j);
+            f.amplitude[at] = std::complex<float>(row.amplitude[from]);
+            f.phase[at] = static_cast<float>(row.phase[from]);
+            f.breaking[at] = row.broken[from] ? 1.0f : 0.0f;
+        }
+    });
+    return f;
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,99 @@
+// One wave component over the depth by the parabolic mild-slope equation: refraction and
+// diffraction together, marched along the wave's offshore direction with Crank-Nicolson
+// steps (Radder 1979; Kirby and Dalrymple 1983, whose amplitude dispersion it keeps in
+// Kirby and Dalrymple's 1986 composite form). The small-angle form: Padé's and Kirby's
+// wide-angle forms made the focus behind Berkhoff's shoal depend on the grid across the
+// march, and each wave is marched along its own direction, so that only refraction and
+// diffraction turn it. Near breaking the height grows as Shuto's (1974) nonlinear
+// shoaling says; breaking starts where the height passes Weggel's (1972) index for the
+// local beach slope and steepness, and the broken wave loses energy as Dally, Dean and
+// Dalrymple (1985) say until it is stable again. Everything is in the scene's own units:
+// no length or time of its own. Private to the bake.
+#pragma once
+
+#include <complex>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace tidewater::detail {
+
+/// A grid in the wave's frame: `steps` rows along the march (x', the wave's offshore
+/// direction), `across` points a row (y'), row-major by step.
+struct ParabolicGrid {
+    int steps = 0, across = 0;
+    double dx = 0.0, dy = 0.0;  ///< m
+    std::size_t index(int step, int j) const {
+        return static_cast<std::size_t>(step) * static_cast<std::size_t>(across) + static_cast<std::size_t>(j);
+    }
+    std::size_t size() const { return static_cast<std::size_t>(steps) * static_cast<std::size_t>(across); }
+};
+
+/// Dally, Dean and Dalrymple's (1985) surf zone: a broken wave loses energy flux at
+/// decay * cg / h * (E - E_stable) until its height is stable_index * h.
+struct SurfZone {
+    double decay = 0.15;        ///< K
+    double stable_index = 0.4;  ///< Gamma
+};
+
+/// What a march reads: the grid, the wave, its depth row by row, and the physics it keeps.
+struct ParabolicInput {
+    ParabolicGrid grid;
+    double omega = 0.0;  ///< rad/s
+    /// Fills a row's still-water depth (m, <= 0: land), `across` values; called once a row,
+    /// rows in order.
+    std::function<void(int step, std::span<float> depth)> depth_row;
+    /// The amplitude along the first row (m, phase 0 there): the wave as it enters; with
+    /// `incident_in_deep_water`, the deep-water amplitude, shoaled linearly to each point.
+    double incident_amplitude = 0.0;
+    bool incident_in_deep_water = false;
+    /// The sea's height over this component's where it breaks (sqrt of the sea's energy
+    /// over the component's, as they enter), and the sea's mean period (s; 0: the
+    /// component's): every component breaks and shoals nonlinearly where the sea does.
+    double sea_over_component = 1.0;
+    double sea_period = 0.0;
+    SurfZone surf;
+    bool breaking = true;              ///< false: no breaking, no dissipation
+    bool nonlinear_shoaling = true;    ///< false: linear shoaling only
+    bool amplitude_dispersion = true;  ///< false: the phase at the linear speed
+};
+
+/// One row as the march leaves it: the complex amplitude A (m) of the surface elevation
+/// A exp(i (reference_phase - omega t)), the total phase (reference_phase + arg A)
+/// unwrapped along each row of points, and where the wave is broken.
+struct ParabolicRow {
+    int step = 0;
+    double reference_phase = 0.0;  ///< integral of the rows' mean k from the first row, rad
+    std::span<const std::complex<double>> amplitude;
+    std::span<const double> phase;
+    std::span<const char> broken;
+};
+
+/// Marches `input` from its first row to its last, calling `row_done` with each row (the
+/// first included) in order. The sides are walls (no flux across).
+void march_parabolic(const ParabolicInput& input, const std::function<void(const ParabolicRow&)>& row_done);
+
+/// Every row of a march kept: for tests and tools on small grids.
+struct ParabolicField {
+    ParabolicGrid grid;
+    std::vector<std::complex<float>> amplitude;  ///< A per grid point
+    std::vector<float> phase;                    ///< reference phase + arg A, unwrapped along each row
+    std::vector<float> breaking;                 ///< 1 where the wave is broken, else 0
+};
+ParabolicField march_parabolic(const ParabolicInput& input);
+
+/// The wavenumber of a wave of amplitude `amplitude` (m) at depth `depth` (m), whose linear
+/// wavenumber is `k_linear`: Kirby and Dalrymple's (1986) amplitude dispersion, Stokes'
+/// third order where the water is deep enough, Hedges' form where it is shallow.
+double amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear);
+
+/// Weggel's (1972) breaker index H_b / h_b on a beach of slope `slope` (>= 0, used up to
+/// 0.1) for a wave of height H (m) and period T (s): b - a H / (g T^2), at least 0.6.
+double weggel_breaker_index(double slope, double height, double period);
+
+/// Shuto's (1974) exponent n of H ~ h^n for nonlinear shoaling at Ursell number
+/// U = g H T^2 / h^2: none (NaN) under 30, where linear shoaling holds; -2/7 to 50; then
+/// from H h^(5/2) (sqrt(U) - 2 sqrt(3)) = const.
+double shuto_exponent(double ursell);
+
+}  // namespace tidewater::detail

@@ -1,0 +1,58 @@
+// A wave's refraction, diffraction, nonlinear shoaling and breaking over a shore grid by
+// the parabolic march (parabolic_waves.hpp) along the wave's offshore direction: its
+// amplitude is put in the place of the rays' where the march holds (where the wave
+// travels within a small angle of the march and the march resolves its local
+// wavelength); elsewhere, and in deep water, the rays' amplitude stays. The phase stays
+// the rays' first arrival everywhere: the two phases differ by whole wavelengths over a
+// coast (the march keeps the amplitude's own dispersion, and crossing waves), and a
+// texel field cannot pass from one to the other without a crease. Private to the bake.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "tidewater/detail/shore_bake.hpp"
+#include "tidewater/waves.hpp"
+
+namespace tidewater::detail {
+
+/// The sea a component breaks with: every component breaks where the sea does.
+struct SeaState {
+    double energy = 0.0;       ///< sum of A^2, m^2
+    double mean_period = 0.0;  ///< energy-weighted mean period, s
+};
+SeaState sea_state(std::span<const Wave> waves);
+
+/// Per texel of the grid: the march's share of the wave's amplitude as far as its
+/// resolution goes (0: the rays' stand, 1: the march's; march_share_at_angle takes its
+/// direction in), the march's amplitude factor (over the open-sea amplitude) and whether
+/// the wave is broken there.
+struct DiffractedWave {
+    std::vector<float> share, amplitude;
+    std::vector<std::uint8_t> broken;
+};
+
+/// Marches `wave` over `field` along its direction; texels where `keep` holds (deep water,
+/// where the open sea's fields stand) and land are left at share 0.
+DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
+                             const std::function<bool(std::size_t)>& keep);
+
+/// The march holds a wave's amplitude fully within this angle of its direction and not
+/// past the second (the small-angle form's wavenumber along the march is 1.6 % off at 35
+/// degrees, 6 % at 50; the amplitude, which is all the model takes, suffers less); the
+/// angle is the rays' (their first arrival turns smoothly, where crossing waves make the
+/// march's own phase a poor guide).
+inline constexpr double kFullAngle = 35.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kNoAngle = 50.0 * 3.14159265358979323846 / 180.0;
+/// 0 under `none`, 1 over `full`, linear between.
+double ramp(double value, double none, double full);
+/// The march's share of a wave turned `angle` (rad) from its offshore direction.
+double march_share_at_angle(double angle);
+
+/// The most points a wave's march holds at once in its rows is small; the points it
+/// visits are at most this many (its spacing grows past that).
+inline constexpr double kMaxDiffractionPoints = 64.0e6;
+
+}  // namespace tidewater::detail
