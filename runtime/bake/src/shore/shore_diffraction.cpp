@@ -120,7 +120,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                              const std::function<bool(std::size_t)>& keep) {
     const std::size_t count = static_cast<std::size_t>(field.resolution) * static_cast<std::size_t>(field.resolution);
     DiffractedWave out;
-    out.share.assign(count, 0.0f);
+    out.share.assign(count, 0);
     out.amplitude.assign(count, 0.0f);
     out.broken.assign(count, 0);
     if (!(wave.amplitude > 0.0)) return out;
@@ -172,7 +172,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                 const double points = kTwoPi / wavenumber_at_depth(wave.omega, h) / s;
                 double share = ramp(points, kNoPoints, kFullPoints);
                 if (std::max({m00, m01, m10, m11}) <= 1e-6 * wave.amplitude) share = 0.0;
-                out.share[k] = static_cast<float>(share);
+                out.share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
                 out.amplitude[k] = static_cast<float>(magnitude / wave.amplitude);
                 out.broken[k] = brk >= 0.5 ? 1 : 0;
             }

@@ -30,8 +30,10 @@ SeaState sea_state(std::span<const Wave> waves);
 /// direction in), the march's amplitude factor (over the open-sea amplitude) and whether
 /// the wave is broken there.
 struct DiffractedWave {
-    std::vector<float> share, amplitude;
+    std::vector<std::uint8_t> share;  ///< 0..255
+    std::vector<float> amplitude;
     std::vector<std::uint8_t> broken;
+    double share_of(std::size_t k) const { return share[k] / 255.0; }
 };
 
 /// Marches `wave` over `field` along its direction; texels where `keep` holds (deep water,

@@ -226,12 +226,12 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 /// factor, which the cap blends with the rays' (the tiles hold the rays' until then); per
 /// texel of the
 /// run's grid, the marched energy and its breaking part (diffracted waves only), in
-/// quanta of the sea's energy: integers, so that the sums do not depend on the order the
-/// waves finish in.
+/// quanta of 2^-24 of the sea's energy: integers, so that the sums do not depend on the
+/// order the waves finish in.
 struct RunDiffraction {
     std::vector<std::uint8_t> marched;  ///< stored texel * count + wave
     std::vector<float> amplitude;       ///< stored texel * count + wave
-    std::vector<std::uint64_t> energy, breaking;
+    std::vector<std::uint32_t> energy, breaking;
     double quantum = 0.0;  ///< m^2
     std::mutex lock;
 };
@@ -253,12 +253,12 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
             detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
                                static_cast<double>(field.depth[k]), static_cast<double>(m.slowness[k]), normal,
                                m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
-        if (diffracted && diffracted->share[k] > 0.0f && (v.kx != 0.0f || v.kz != 0.0f)) {
+        if (diffracted && diffracted->share[k] != 0 && (v.kx != 0.0f || v.kz != 0.0f)) {
             const double turned =
                 std::acos(std::clamp((static_cast<double>(v.kx) * wave.dir_x + static_cast<double>(v.kz) * wave.dir_z) /
                                          std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz)),
                                      -1.0, 1.0));
-            const double share = static_cast<double>(diffracted->share[k]) * detail::march_share_at_angle(turned);
+            const double share = diffracted->share_of(k) * detail::march_share_at_angle(turned);
             record->marched[at * nw + w] = static_cast<std::uint8_t>(std::lround(255.0 * share));
             record->amplitude[at * nw + w] = diffracted->amplitude[k];
         }
@@ -281,12 +281,15 @@ struct RunBake {
 void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffraction& record) {
     const std::lock_guard<std::mutex> guard(record.lock);
     for (std::size_t k = 0; k < d.share.size(); ++k) {
-        if (d.share[k] <= 0.0f) continue;
+        if (d.share[k] == 0) continue;
         const double a = wave.amplitude * static_cast<double>(d.amplitude[k]);
         const auto e =
-            static_cast<std::uint64_t>(std::llround(a * a * static_cast<double>(d.share[k]) / record.quantum));
-        record.energy[k] += e;
-        if (d.broken[k]) record.breaking[k] += e;
+            static_cast<std::uint32_t>(std::min(std::llround(a * a * d.share_of(k) / record.quantum), 0xFFFFFFFFll));
+        auto add = [e](std::uint32_t& sum) {
+            sum = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{sum} + e, 0xFFFFFFFFu));
+        };
+        add(record.energy[k]);
+        if (d.broken[k]) add(record.breaking[k]);
     }
 }
 
@@ -312,7 +315,7 @@ detail::DiffractedEnergy diffracted_energy(const std::vector<RunBake>& runs, con
         const int a = std::clamp(static_cast<int>(std::floor(f.x)), 0, n - 2);
         const int b = std::clamp(static_cast<int>(std::floor(f.y)), 0, n - 2);
         const double u = std::clamp(f.x - a, 0.0, 1.0), v = std::clamp(f.y - b, 0.0, 1.0);
-        auto lerp = [&](const std::vector<std::uint64_t>& sums) {
+        auto lerp = [&](const std::vector<std::uint32_t>& sums) {
             auto get = [&](int c, int d) { return q * static_cast<double>(sums[at(c, d)]); };
             return (1 - u) * ((1 - v) * get(a, b) + v * get(a, b + 1)) +
                    u * ((1 - v) * get(a + 1, b) + v * get(a + 1, b + 1));
@@ -515,7 +518,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                 run.diffraction->amplitude.assign(run.diffraction->marched.size(), 0.0f);
                 run.diffraction->energy.assign(texels, 0);
                 run.diffraction->breaking.assign(texels, 0);
-                run.diffraction->quantum = std::ldexp(std::max(sea.energy, 1e-30), -32);
+                run.diffraction->quantum = std::ldexp(std::max(sea.energy, 1e-30), -24);
             }
             runs.push_back(std::move(run));
         }
