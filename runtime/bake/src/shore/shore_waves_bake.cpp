@@ -222,12 +222,11 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 }
 
 /// What the march of a run's waves leaves beside their tiles for the cap and the foam: per
-/// stored texel and wave, the march's share of the wave's fields (0..255) and its amplitude
-/// factor, which the cap blends with the rays' (the tiles hold the rays' until then); per
-/// texel of the
-/// run's grid, the marched energy and its breaking part (diffracted waves only), in
-/// quanta of 2^-24 of the sea's energy: integers, so that the sums do not depend on the
-/// order the waves finish in.
+/// stored texel and wave, the march's share of the wave's amplitude (0..255) and its
+/// amplitude factor, which the cap blends with the rays' (the tiles hold the rays' until
+/// then); per texel of the run's grid, the marched energy and its breaking part, in quanta
+/// of 2^-24 of the sea's energy: integers, so that the sums do not depend on the order the
+/// waves finish in.
 struct RunDiffraction {
     std::vector<std::uint8_t> marched;  ///< stored texel * count + wave
     std::vector<float> amplitude;       ///< stored texel * count + wave
@@ -239,9 +238,10 @@ struct RunDiffraction {
 /// Wave w of a run's rows of every stored texel from its marched phase: the phase residual,
 /// the local wavevector (k0 D + grad residual, of length exactly k(h)) and the amplitude
 /// factor from shoaling (energy flux) and refraction (rays against the shore normal), or
-/// the march's (`diffracted`, its share recorded in `record`) where it holds.
-void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
-               const detail::DiffractedWave* diffracted, std::size_t w, TilePlan& plan, RunDiffraction* record) {
+/// the march's (`diffracted`) where it holds: its share there, the rays' direction taken
+/// in, is written back to `diffracted` and recorded in `record`.
+void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m, detail::DiffractedWave* diffracted,
+               std::size_t w, TilePlan& plan, RunDiffraction* record) {
     const int n = field.resolution;
     const std::size_t nw = plan.tiles.stride / 4;
     auto phase = [&](int a, int b) { return m.phase[field.index(a, b)]; };
@@ -259,7 +259,8 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
                                          std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz)),
                                      -1.0, 1.0));
             const double share = diffracted->share_of(k) * detail::march_share_at_angle(turned);
-            record->marched[at * nw + w] = static_cast<std::uint8_t>(std::lround(255.0 * share));
+            diffracted->share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
+            record->marched[at * nw + w] = diffracted->share[k];
             record->amplitude[at * nw + w] = diffracted->amplitude[k];
         }
         t[w] = v.residual;
@@ -277,7 +278,8 @@ struct RunBake {
     std::unique_ptr<RunDiffraction> diffraction;  ///< with ShoreWaveOptions::diffraction
 };
 
-/// Adds a diffracted wave's energy (the march's share) and its breaking part to its run's record.
+/// Adds a diffracted wave's energy (the march's share, at the stored texels as wave_rows
+/// left it) and its breaking part to its run's record.
 void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffraction& record) {
     const std::lock_guard<std::mutex> guard(record.lock);
     for (std::size_t k = 0; k < d.share.size(); ++k) {
@@ -548,10 +550,10 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                         return !std::isfinite(m.phase[k]) ||
                                (m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(f.depth[k])));
                     });
-                    record_energy(waves[w], *diffracted, *run.diffraction);
                 }
                 wave_rows(waves[w], *run.field, m, diffracted ? &*diffracted : nullptr, w - run.first, run.plan,
                           run.diffraction.get());
+                if (diffracted) record_energy(waves[w], *diffracted, *run.diffraction);
             }
             const std::size_t done = ++waves_done;
             if (options.progress) {
