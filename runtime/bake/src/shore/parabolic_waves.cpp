@@ -59,30 +59,26 @@ struct RowMedium {
     std::vector<char> wet, deep;
 };
 
-RowMedium row_medium(const ParabolicInput& in, const std::vector<float>& depths) {
-    const int n = in.grid.across;
-    RowMedium r;
-    r.k.resize(static_cast<std::size_t>(n));
-    r.cg.resize(r.k.size());
-    r.h.resize(r.k.size());
-    r.wet.resize(r.k.size());
-    r.deep.resize(r.k.size());
+/// Fills `r` for a row of `depths` (its vectors are reused from row to row).
+void fill_row_medium(const ParabolicInput& in, std::span<const float> depths, RowMedium& r) {
+    const std::size_t n = depths.size();
+    for (auto* v : {&r.k, &r.cg, &r.h}) v->resize(n);
+    r.wet.resize(n);
+    r.deep.resize(n);
     const double k_deep = in.omega * in.omega / kGravity;
     const double shallowest = 1e-3 / k_deep;
     const DispersionTable& table = dispersion_table();
-    for (int j = 0; j < n; ++j) {
-        const auto at = static_cast<std::size_t>(j);
-        const double depth = static_cast<double>(depths[at]);
-        r.wet[at] = depth > 0.0;
-        r.h[at] = std::max(depth, shallowest);
+    for (std::size_t j = 0; j < n; ++j) {
+        const double depth = static_cast<double>(depths[j]);
+        r.wet[j] = depth > 0.0;
+        r.h[j] = std::max(depth, shallowest);
         double kh = kDeepKh, share = 0.5;
         // k(h) >= omega^2 / g: water that deep for the deep-water k is deep without a look-up.
-        if (k_deep * r.h[at] < kDeepKh) table.at(std::sqrt(k_deep * r.h[at]), kh, share);
-        r.deep[at] = kh >= kDeepKh;
-        r.k[at] = r.deep[at] ? k_deep : kh / r.h[at];
-        r.cg[at] = r.deep[at] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[at];
+        if (k_deep * r.h[j] < kDeepKh) table.at(std::sqrt(k_deep * r.h[j]), kh, share);
+        r.deep[j] = kh >= kDeepKh;
+        r.k[j] = r.deep[j] ? k_deep : kh / r.h[j];
+        r.cg[j] = r.deep[j] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[j];
     }
-    return r;
 }
 
 /// Solves the tridiagonal system lower_j x_{j-1} + diag_j x_j + upper_j x_{j+1} = rhs_j
@@ -157,14 +153,20 @@ namespace {
 /// at the grid's spacing.
 inline constexpr double kSurfStepsPerWavelength = 16.0;
 inline constexpr int kMostSubsteps = 8;
+/// Weggel's index is never under this: a wave lower than this times the depth, and not
+/// yet broken, does not break in the step.
+inline constexpr double kLowestBreakerIndex = 0.6;
+/// Shuto's nonlinear shoaling starts at this Ursell number.
+inline constexpr double kShutoUrsell = 30.0;
 
 /// The march's state from row to row.
 class Marcher {
   public:
     explicit Marcher(const ParabolicInput& in) : in_(in), n_(static_cast<std::size_t>(in.grid.across)) {
         period_ = in.sea_period > 0.0 ? in.sea_period : kTwoPi / in.omega;
-        for (auto* v : {&a, &lower_, &diag_, &upper_, &rhs_, &half_turn_, &start_}) v->assign(n_, Complex(0.0));
-        for (auto* v : {&psi, &k_, &kn_, &p_, &s_}) v->assign(n_, 0.0);
+        k_deep_ = in.omega * in.omega / kGravity;
+        for (auto* v : {&a, &lower_, &diag_, &upper_, &rhs_, &half_turn_}) v->assign(n_, Complex(0.0));
+        for (auto* v : {&k_, &p_}) v->assign(n_, 0.0);
         broken.assign(n_, 0);
     }
 
@@ -177,12 +179,14 @@ class Marcher {
 
     /// Substeps the step from `here` to `next` needs: more where the waves break or near.
     int substeps(const RowMedium& here, double dx) const {
+        if (!in_.breaking) return 1;
         double finest = dx;
+        const double sea = in_.sea_over_component;
         for (std::size_t j = 0; j < n_; ++j) {
-            if (!here.wet[j] || !in_.breaking) continue;
-            const double height = 2.0 * std::abs(a[j]) * in_.sea_over_component;
-            if (broken[j] || height > 0.5 * here.h[j])
-                finest = std::min(finest, kTwoPi / here.k[j] / kSurfStepsPerWavelength);
+            if (!here.wet[j]) continue;
+            // The height over half the depth, squared: no square root a point.
+            const bool near_breaking = 16.0 * std::norm(a[j]) * sea * sea > here.h[j] * here.h[j];
+            if (broken[j] || near_breaking) finest = std::min(finest, kTwoPi / here.k[j] / kSurfStepsPerWavelength);
         }
         return std::clamp(static_cast<int>(std::ceil(dx / finest - 1e-9)), 1, kMostSubsteps);
     }
@@ -190,82 +194,86 @@ class Marcher {
     void advance(const RowMedium& here, const RowMedium& next, double dx);
 
     std::vector<Complex> a;
-    std::vector<double> psi;
     std::vector<char> broken;
-    double theta = 0.0;
 
   private:
+    /// The half step's turn of point j: the phase against the row's mean wavenumber, and
+    /// the growth or decay (shoaling, breaking, nonlinear shoaling).
+    Complex half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx);
+
     const ParabolicInput& in_;
     std::size_t n_;
-    double period_ = 0.0;
-    std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_, start_;
-    std::vector<double> k_, kn_, p_, s_;
+    double period_ = 0.0, k_deep_ = 0.0;
+    std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_;
+    std::vector<double> k_, p_;
 };
+
+Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx) {
+    const double h = here.h[j];
+    const double height = 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
+    const double depth = 0.5 * (h + next.h[j]);
+    const double ursell = kGravity * height * period_ * period_ / (depth * depth);
+    const bool shoals_nonlinearly = in_.nonlinear_shoaling && here.wet[j] && next.h[j] < h && ursell >= kShutoUrsell;
+    // Deep water, a wave too low to break and shoaling linearly: the open sea's wave, whose
+    // group velocity does not change (no growth) and whose phase is the deep-water one.
+    if (here.deep[j] && next.deep[j] && !broken[j] && !shoals_nonlinearly &&
+        !(in_.breaking && here.wet[j] && height > kLowestBreakerIndex * h))
+        return std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
+    // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
+    double decay = here.cg[j] == next.cg[j] ? 0.0 : 0.5 * std::log(next.cg[j] / here.cg[j]) / dx;
+    if (in_.breaking && here.wet[j]) {
+        const double slope = std::max(0.0, (h - next.h[j]) / dx);
+        if (!broken[j] && height > kLowestBreakerIndex * h && height > weggel_breaker_index(slope, height, period_) * h)
+            broken[j] = 1;
+        if (broken[j] && height < in_.surf.stable_index * h) broken[j] = 0;
+    } else {
+        broken[j] = 0;
+    }
+    if (broken[j]) {
+        // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
+        const double stable = in_.surf.stable_index * h / height;
+        decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
+    } else if (shoals_nonlinearly) {
+        // Grows as H ~ h^n where that is faster than linear shoaling.
+        decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+    }
+    // The phase travels at the amplitude's own speed (amplitude dispersion).
+    const double kn = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
+                          ? amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
+                          : k_[j];
+    return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
+}
 
 void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
     const std::size_t un = n_;
     const double dy2 = in_.grid.dy * in_.grid.dy;
-    auto& k = k_;
-    auto& kn = kn_;
-    auto& p = p_;
-    auto& s = s_;
     // The row's mean wavenumber over its water carries the fast phase: A varies slowly.
     double k_sum = 0.0;
     int wet = 0;
     for (std::size_t j = 0; j < un; ++j) {
-        k[j] = 0.5 * (here.k[j] + next.k[j]);
+        k_[j] = 0.5 * (here.k[j] + next.k[j]);
         const double cg = 0.5 * (here.cg[j] + next.cg[j]);
-        p[j] = in_.omega / k[j] * cg;
+        p_[j] = in_.omega / k_[j] * cg;
         if (here.wet[j] && next.wet[j]) {
-            k_sum += k[j];
+            k_sum += k_[j];
             ++wet;
         }
     }
-    const double k_bar = wet > 0 ? k_sum / wet : in_.omega * in_.omega / kGravity;
-    for (std::size_t j = 0; j < un; ++j) {
-        // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
-        const double dln_cg = std::log(next.cg[j] / here.cg[j]);
-        double decay = 0.5 * dln_cg / dx;
-        const double h = here.h[j];
-        const double height = 2.0 * std::abs(a[j]) * in_.sea_over_component;
-        if (in_.breaking && here.wet[j]) {
-            const double slope = std::max(0.0, (here.h[j] - next.h[j]) / dx);
-            if (!broken[j] && height > weggel_breaker_index(slope, height, period_) * h) broken[j] = 1;
-            if (broken[j] && height < in_.surf.stable_index * h) broken[j] = 0;
-        } else {
-            broken[j] = 0;
-        }
-        if (broken[j]) {
-            // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
-            const double stable = in_.surf.stable_index * h / height;
-            decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
-        } else if (in_.nonlinear_shoaling && here.wet[j] && next.h[j] < h) {
-            const double depth = 0.5 * (h + next.h[j]);
-            const double n_nl = shuto_exponent(kGravity * height * period_ * period_ / (depth * depth));
-            // Grows as H ~ h^n where that is faster than linear shoaling.
-            if (std::isfinite(n_nl)) decay = std::min(decay, -n_nl * std::log(next.h[j] / h) / dx);
-        }
-        s[j] = decay;
-        // The phase travels at the amplitude's own speed (amplitude dispersion).
-        kn[j] = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
-                    ? amplitude_dispersed_wavenumber(in_.omega, 0.5 * (h + next.h[j]), std::abs(a[j]), k[j])
-                    : k[j];
-    }
+    const double k_bar = wet > 0 ? k_sum / wet : k_deep_;
     // A_x = (i (k - k_bar) - s) A + R A, R = i / (2 k) L, L A = (p A_y)_y / p (walls at
     // the sides), split (Strang): the phase and the growth or decay taken exactly over
     // each half step, whatever the step against the wavelength or the surf zone's decay
     // length (Crank-Nicolson would turn a strong decay into a flip of sign); Crank-
     // Nicolson between for the diffraction, (1 - dx/2 R) A' = (1 + dx/2 R) A.
     for (std::size_t j = 0; j < un; ++j) {
-        half_turn_[j] = std::polar(std::exp(-0.5 * s[j] * dx), 0.5 * (kn[j] - k_bar) * dx);
-        start_[j] = a[j];
+        half_turn_[j] = half_turn(here, next, j, k_bar, dx);
         a[j] *= half_turn_[j];
     }
     for (std::size_t j = 0; j < un; ++j) {
-        const double p_lo = j > 0 ? 0.5 * (p[j] + p[j - 1]) : 0.0;
-        const double p_hi = j + 1 < un ? 0.5 * (p[j] + p[j + 1]) : 0.0;
-        const double l_lo = p_lo / (p[j] * dy2), l_hi = p_hi / (p[j] * dy2), l_mid = -(l_lo + l_hi);
-        const Complex alpha(0.0, -0.25 * dx / k[j]), beta(0.0, 0.25 * dx / k[j]);
+        const double p_lo = j > 0 ? 0.5 * (p_[j] + p_[j - 1]) : 0.0;
+        const double p_hi = j + 1 < un ? 0.5 * (p_[j] + p_[j + 1]) : 0.0;
+        const double l_lo = p_lo / (p_[j] * dy2), l_hi = p_hi / (p_[j] * dy2), l_mid = -(l_lo + l_hi);
+        const Complex alpha(0.0, -0.25 * dx / k_[j]), beta(0.0, 0.25 * dx / k_[j]);
         if (!next.wet[j]) {
             lower_[j] = upper_[j] = 0.0;
             diag_[j] = 1.0;
@@ -281,14 +289,7 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
         rhs_[j] = sum;
     }
     solve_tridiagonal(lower_, diag_, upper_, rhs_);
-    theta += k_bar * dx;
-    for (std::size_t j = 0; j < un; ++j) {
-        a[j] = rhs_[j] * half_turn_[j];
-        // The phase: the exact turn, and what diffraction added to it (a small angle).
-        const Complex turned = start_[j] * half_turn_[j] * half_turn_[j];
-        const Complex added = a[j] * std::conj(turned);
-        psi[j] += kn[j] * dx + (added != Complex(0.0) ? std::arg(added) : 0.0);
-    }
+    for (std::size_t j = 0; j < un; ++j) a[j] = rhs_[j] * half_turn_[j];
 }
 
 }  // namespace
@@ -299,49 +300,34 @@ void march_parabolic(const ParabolicInput& in, const std::function<void(const Pa
     if (g.steps <= 0 || un == 0) return;
     std::vector<float> here_depths(un), next_depths(un), between(un);
     in.depth_row(0, here_depths);
-    RowMedium here = row_medium(in, here_depths);
+    RowMedium here, next, from, to;
+    fill_row_medium(in, here_depths, here);
     Marcher m(in);
     m.enter(here);
-    row_done({0, m.theta, m.a, m.psi, m.broken});
+    row_done({0, m.a, m.broken});
     for (int step = 0; step + 1 < g.steps; ++step) {
         in.depth_row(step + 1, next_depths);
-        const RowMedium next = row_medium(in, next_depths);
+        fill_row_medium(in, next_depths, next);
         const int parts = m.substeps(here, g.dx);
-        RowMedium from = here;
-        for (int part = 1; part <= parts; ++part) {
-            if (part == parts) {
-                m.advance(from, next, g.dx / parts);
-                break;
+        if (parts == 1) {
+            m.advance(here, next, g.dx);
+        } else {
+            // Substeps through depths between the rows' (linearly).
+            from = here;
+            for (int part = 1; part < parts; ++part) {
+                const float t = static_cast<float>(part) / static_cast<float>(parts);
+                for (std::size_t j = 0; j < un; ++j)
+                    between[j] = here_depths[j] + t * (next_depths[j] - here_depths[j]);
+                fill_row_medium(in, between, to);
+                m.advance(from, to, g.dx / parts);
+                std::swap(from, to);
             }
-            const float t = static_cast<float>(part) / static_cast<float>(parts);
-            for (std::size_t j = 0; j < un; ++j) between[j] = here_depths[j] + t * (next_depths[j] - here_depths[j]);
-            RowMedium to = row_medium(in, between);
-            m.advance(from, to, g.dx / parts);
-            from = std::move(to);
+            m.advance(from, next, g.dx / parts);
         }
-        here = next;
+        std::swap(here, next);
         std::swap(here_depths, next_depths);
-        row_done({step + 1, m.theta, m.a, m.psi, m.broken});
+        row_done({step + 1, m.a, m.broken});
     }
-}
-
-ParabolicField march_parabolic(const ParabolicInput& in) {
-    const ParabolicGrid& g = in.grid;
-    ParabolicField f;
-    f.grid = g;
-    f.amplitude.assign(g.size(), {});
-    f.phase.assign(g.size(), 0.0f);
-    f.breaking.assign(g.size(), 0.0f);
-    march_parabolic(in, [&](const ParabolicRow& row) {
-        for (int j = 0; j < g.across; ++j) {
-            const std::size_t at = g.index(row.step, j);
-            const auto from = static_cast<std::size_t>(j);
-            f.amplitude[at] = std::complex<float>(row.amplitude[from]);
-            f.phase[at] = static_cast<float>(row.phase[from]);
-            f.breaking[at] = row.broken[from] ? 1.0f : 0.0f;
-        }
-    });
-    return f;
 }
 
 }  // namespace tidewater::detail

@@ -14,7 +14,6 @@
 #include <complex>
 #include <functional>
 #include <span>
-#include <vector>
 
 namespace tidewater::detail {
 
@@ -59,28 +58,17 @@ struct ParabolicInput {
 };
 
 /// One row as the march leaves it: the complex amplitude A (m) of the surface elevation
-/// A exp(i (reference_phase - omega t)), the total phase (reference_phase + arg A)
-/// unwrapped along each row of points, and where the wave is broken.
+/// A exp(i (phase - omega t)), whose phase is the integral of the rows' mean wavenumber
+/// plus arg A, and where the wave is broken.
 struct ParabolicRow {
     int step = 0;
-    double reference_phase = 0.0;  ///< integral of the rows' mean k from the first row, rad
     std::span<const std::complex<double>> amplitude;
-    std::span<const double> phase;
     std::span<const char> broken;
 };
 
 /// Marches `input` from its first row to its last, calling `row_done` with each row (the
 /// first included) in order. The sides are walls (no flux across).
 void march_parabolic(const ParabolicInput& input, const std::function<void(const ParabolicRow&)>& row_done);
-
-/// Every row of a march kept: for tests and tools on small grids.
-struct ParabolicField {
-    ParabolicGrid grid;
-    std::vector<std::complex<float>> amplitude;  ///< A per grid point
-    std::vector<float> phase;                    ///< reference phase + arg A, unwrapped along each row
-    std::vector<float> breaking;                 ///< 1 where the wave is broken, else 0
-};
-ParabolicField march_parabolic(const ParabolicInput& input);
 
 /// The wavenumber of a wave of amplitude `amplitude` (m) at depth `depth` (m), whose linear
 /// wavenumber is `k_linear`: Kirby and Dalrymple's (1986) amplitude dispersion, Stokes'

@@ -17,8 +17,13 @@ namespace {
 
 /// Points a local wavelength the march needs: all of it from the first, none under the second.
 inline constexpr double kFullPoints = 3.0, kNoPoints = 2.0;
-/// The march's spacing: at most the grid's texel and this part of the deep-water wavelength.
+/// The march's spacing: at most the grid's texel and this part of the deep-water wavelength,
+/// but no finer than this part of the texel: the amplitude is kept per texel, so a wave
+/// the grid cannot resolve is left to the rays (the march's share falls with its points a
+/// local wavelength), and a march visits at most 8 times the grid's texels (its frame is
+/// turned), not the area over the shortest wave's wavelength squared.
 inline constexpr double kPointsPerDeepWavelength = 8.0;
+inline constexpr double kPointsPerTexel = 2.0;
 
 /// The march's frame over the grid: x' along the wave, y' across; its first point and spacing.
 struct MarchFrame {
@@ -42,7 +47,8 @@ MarchFrame march_frame(const Wave& wave, const ShoreField& field) {
         f.y0 = std::min(f.y0, glm::dot(p, f.across));
         y1 = std::max(y1, glm::dot(p, f.across));
     }
-    f.spacing = std::min(field.texel, kTwoPi / wave.k / kPointsPerDeepWavelength);
+    f.spacing =
+        std::max(field.texel / kPointsPerTexel, std::min(field.texel, kTwoPi / wave.k / kPointsPerDeepWavelength));
     const double area = (x1 - f.x0) * (y1 - f.y0);
     if (area / (f.spacing * f.spacing) > kMaxDiffractionPoints) f.spacing = std::sqrt(area / kMaxDiffractionPoints);
     f.steps = static_cast<int>(std::ceil((x1 - f.x0) / f.spacing)) + 2;
@@ -82,14 +88,13 @@ RowBuckets bucket_texels(const ShoreField& field, const MarchFrame& f, const std
     return b;
 }
 
-/// A row kept for the step after it.
+/// A row's magnitudes |A| and breaking, kept for the step after it.
 struct KeptRow {
-    std::vector<double> magnitude, phase;
+    std::vector<double> magnitude;
     std::vector<char> broken;
     void keep(const ParabolicRow& row) {
         magnitude.resize(row.amplitude.size());
-        for (std::size_t j = 0; j < magnitude.size(); ++j) magnitude[j] = std::abs(row.amplitude[j]);
-        phase.assign(row.phase.begin(), row.phase.end());
+        for (std::size_t j = 0; j < magnitude.size(); ++j) magnitude[j] = std::sqrt(std::norm(row.amplitude[j]));
         broken.assign(row.broken.begin(), row.broken.end());
     }
 };
@@ -125,6 +130,9 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     out.broken.assign(count, 0);
     if (!(wave.amplitude > 0.0)) return out;
     const MarchFrame frame = march_frame(wave, field);
+    // Fewer points than the share needs to a deep-water wavelength: fewer still to any
+    // local one (a wave shortens as it shoals), so the rays stand everywhere.
+    if (kTwoPi / wave.k / frame.spacing < kNoPoints) return out;
     const RowBuckets buckets = bucket_texels(field, frame, keep);
     if (buckets.texels.empty()) return out;
     // Rows before the first texel to fill or land are open sea: the march starts just before.
@@ -145,9 +153,10 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
     in.sea_period = sea.mean_period;
 
-    KeptRow before;
+    KeptRow before, after;
     const double s = frame.spacing;
     march_parabolic(in, [&](const ParabolicRow& row) {
+        after.keep(row);
         if (row.step > 0) {
             const int r = start + row.step - 1;  // the texels between the row before and this one
             for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
@@ -162,7 +171,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                     static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor(fy)), 0, frame.points - 2));
                 const double v = std::clamp(fy - static_cast<double>(j0), 0.0, 1.0);
                 const double m00 = before.magnitude[j0], m01 = before.magnitude[j0 + 1];
-                const double m10 = std::abs(row.amplitude[j0]), m11 = std::abs(row.amplitude[j0 + 1]);
+                const double m10 = after.magnitude[j0], m11 = after.magnitude[j0 + 1];
                 auto lerp = [&](double q00, double q01, double q10, double q11) {
                     return (1 - u) * ((1 - v) * q00 + v * q01) + u * ((1 - v) * q10 + v * q11);
                 };
@@ -177,7 +186,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                 out.broken[k] = brk >= 0.5 ? 1 : 0;
             }
         }
-        before.keep(row);
+        std::swap(before, after);
     });
     return out;
 }
