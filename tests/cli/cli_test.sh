@@ -47,6 +47,14 @@ write_mill_scene() {
 JSON
 }
 
+# saved_default: the bundled default scene baked once to dflt/, and default_saved.json, the
+# same scene loading that bake (as a user's scene would after `tidewater bake`).
+saved_default() {
+  "$TW" bake --scene "$EXAMPLES/scenes/default.json" --out dflt --quiet > /dev/null &&
+    sed 's|"water_level": 0.0,|"water_level": 0.0, "shore": { "bake": "dflt" },|' "$EXAMPLES/scenes/default.json" > default_saved.json &&
+    grep -q '"bake": "dflt"' default_saved.json
+}
+
 case "$CASE" in
   help)
     for verb in query bench demo; do
@@ -219,47 +227,50 @@ JSON
       check "stats has $key" grep -q "$key" stats.json
     done
     check "prints the file" grep -q "still.png" log.txt
+    # The other pictures load the scene's saved bake (RenderTest checks it draws what the bake in memory does).
+    check "the default scene bakes to a folder" saved_default
     check "stats say why lavapipe has no shader statistics" grep -q '"pipelines_unavailable"' stats.json
     check "stats count the water's fragment invocations" grep -q '"tessellation_evaluation"' stats.json
     check "stats name the quality tier, high by default" grep -q '"tier": "high"' stats.json
-    "$TW" render --size 160x90 --time 2 --quality low --out low.png --stats low.json --validate > loglow.txt
+    "$TW" render --scene default_saved.json --size 160x90 --time 2 --quality low --out low.png --stats low.json --validate > loglow.txt
     check "the low tier renders under validation" test $? -eq 0
     check "with its vertices further apart" grep -q '"water_pixels_per_vertex": 12' low.json
     check "and its foam's lags" grep -q '"foam_lags": 0' low.json
     check "reflecting the sky alone" grep -q '"scene_reflection": false' low.json
     check "without caustics" grep -q '"caustics": false' low.json
     check "with fewer, larger patches to the horizon" grep -q '"far_field_ring_patches": 16' low.json
-    "$TW" render --size 160x90 --time 2 --split-camera -160 14 -60 -40 0 0 --out split.png --stats split.json \
+    "$TW" render --scene default_saved.json --size 160x90 --time 2 --split-camera -160 14 -60 -40 0 0 --out split.png --stats split.json \
       --validate > logsplit.txt
     check "split screen: two views of one frame render under validation" test $? -eq 0
     check "  and the stats say two views" grep -q '"views": 2' split.json
     check "  the picture is the whole size" bash -c "[ \"\$(od -An -tu1 -j16 -N8 split.png | tr -s ' ' | sed 's/^ //')\" = '0 0 0 160 0 0 0 90' ]"
-    "$TW" render --size 160x90 --split-camera 1 2 3 1 2 3 --out bad.png > logbad.txt 2>&1
+    "$TW" render --scene default_saved.json --size 160x90 --split-camera 1 2 3 1 2 3 --out bad.png > logbad.txt 2>&1
     check "a split camera looking nowhere is refused" test $? -ne 0
     check "  naming the flag" grep -q -- "--split-camera" logbad.txt
-    "$TW" render --size 96x54 --time 2 --quality low --caustics true --scene-reflection true --out lowc.png \
+    "$TW" render --scene default_saved.json --size 96x54 --time 2 --quality low --caustics true --scene-reflection true --out lowc.png \
       --stats lowc.json > loglowc.txt
     check "a tier's caustics and scene reflection are overridden" grep -q '"caustics": true' lowc.json
     check "  (the scene's reflection too)" grep -q '"scene_reflection": true' lowc.json
-    "$TW" render --size 96x54 --time 2 --waves-drawn 6 --out capped.png --stats capped.json --validate > logcap.txt
+    "$TW" render --scene default_saved.json --size 96x54 --time 2 --waves-drawn 6 --out capped.png --stats capped.json --validate > logcap.txt
     check "six waves drawn one by one, under validation" test $? -eq 0
     check "  (the stats say so)" grep -q '"waves_drawn": 6' capped.json
-    "$TW" render --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
+    "$TW" render --scene default_saved.json --size 96x54 --time 2 --gpu-memory 16 --out small.png --stats small.json --validate > logsmall.txt
     check "a 16 MiB budget renders under validation" test $? -eq 0
     check "its shore tiles stream in" grep -Eq '"shore_streamed_tiles": [1-9]' small.json
-    "$TW" render --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
+    "$TW" render --scene default_saved.json --size 160x90 --time 2 --samples 4 --out still4.png --validate > log4.txt
     check "multisampled still under validation" test $? -eq 0
     check "multisampled PNG written" test -s still4.png
-    "$TW" render --size 96x54 --time 2 --samples 4 --water-per-sample --out still4s.png --validate > log4s.txt
+    "$TW" render --scene default_saved.json --size 96x54 --time 2 --samples 4 --water-per-sample --out still4s.png --validate > log4s.txt
     check "water shaded per sample under validation" test $? -eq 0
     check "per-sample PNG written" test -s still4s.png
     ;;
   render_sequence)
-    "$TW" render --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
+    check "the default scene bakes to a folder" saved_default
+    "$TW" render --scene default_saved.json --size 64x36 --frames 3 --fps 10 --out-dir seq --view jacobian > /dev/null
     check "exit 0" test $? -eq 0
     check "three frames" test "$(ls seq/frame_*.png | wc -l)" -eq 3
     for view in shaded height normals jacobian depth lod wireframe shore breaking; do
-      check "view $view renders" "$TW" render --size 32x32 --view "$view" --out "v_$view.png"
+      check "view $view renders" "$TW" render --scene default_saved.json --size 32x32 --view "$view" --out "v_$view.png"
     done
     ;;
   render_bad_input)
@@ -533,6 +544,12 @@ JSON
     "$TW" bake --scene "$HILO" --out hilo --quiet > bake.txt
     check "Hilo Bay bakes at the scene's resolutions" grep -q "shore model 512x512 .* signed distance 1024x1024" bake.txt
     check "its coast has land polygons and shoreline segments" grep -qE "[0-9]+ shoreline segments, [1-9][0-9]* land polygons" bake.txt
+    # The query, the picture and the export load that bake, as a user's would: the scene
+    # with "shore": {"bake": ...} (and its terrain's path made absolute).
+    SAVED="$WORK/hilo_bay_saved.json"
+    sed -e "s|\"shore\": {[^}]*}|\"shore\": { \"bake\": \"hilo\" }|" -e "s|\.\./terrain/|$EXAMPLES/terrain/|" "$HILO" > "$SAVED"
+    check "the saved scene names the bake" grep -q '"bake": "hilo"' "$SAVED"
+    HILO="$SAVED"
     # Points across the breakwater and the harbour (the breakwater runs from about (150, -820) to (1000, -230)).
     printf 'x,z\n2500,-2200\n600,-1200\n700,-300\n-200,200\n-2000,2000\n' > hilo_points.csv
     "$TW" query --scene "$HILO" --points hilo_points.csv --time 30 --out hilo.csv 2>/dev/null

@@ -122,27 +122,38 @@ int run_inspect(const InspectArgs& a) {
         for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
         return fail(verb, fmt::format("--field \"{}\" is unknown (fields: {})", a.field, names));
     }
-    auto loaded = load_scene_option(a.scene);
-    if (!loaded) return fail(verb, loaded.error().message);
-    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
+    // Every option read before the scene's bake, which can take minutes.
     inspect::SampleGrid grid;
     auto res = parse_pair(a.resolution, "--resolution");
     if (!res) return fail(verb, res.error().message);
     grid.nx = res->first, grid.nz = res->second;
-    if (a.extent.empty()) {
-        const double half = scene->terrain.extent_half_size();
-        grid.min = scene->terrain.extent_center() - glm::dvec2(half);
-        grid.max = scene->terrain.extent_center() + glm::dvec2(half);
-    } else {
+    if (!a.extent.empty()) {
         char extra = 0;
         if (std::sscanf(a.extent.c_str(), "%lf:%lf,%lf:%lf%c", &grid.min.x, &grid.max.x, &grid.min.y, &grid.max.y,
                         &extra) != 4)
             return fail(verb, fmt::format("--extent \"{}\": expected x0:x1,z0:z1 in metres", a.extent));
+    } else {
+        grid.min = glm::dvec2(0.0), grid.max = glm::dvec2(1.0);  // the resolution checked alone; the extent below
     }
     if (auto st = inspect::validate_grid(grid); !st) return fail(verb, "--resolution/--extent: " + st.error().message);
     auto parsed_times = times_from_options(a.time, a.times);
     if (!parsed_times) return fail(verb, parsed_times.error().message);
     const std::vector<double> times = std::move(parsed_times).value();
+    std::vector<glm::dvec2> track;
+    if (!a.track.empty()) {
+        auto read = read_points_csv(a.track);
+        if (!read) return fail(verb, "--track: " + read.error().message);
+        track = std::move(read).value();
+    }
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
+    if (a.extent.empty()) {
+        const double half = scene->terrain.extent_half_size();
+        grid.min = scene->terrain.extent_center() - glm::dvec2(half);
+        grid.max = scene->terrain.extent_center() + glm::dvec2(half);
+        if (auto st = inspect::validate_grid(grid); !st) return fail(verb, "--extent: " + st.error().message);
+    }
     if (!a.export_dir.empty()) {
         int last = -10;
         auto progress = [&](double f) {
@@ -201,11 +212,7 @@ int run_inspect(const InspectArgs& a) {
         o.field = a.field;
         o.width = size->first, o.height = size->second;
         o.glyphs = a.glyphs;
-        if (!a.track.empty()) {
-            auto track = read_points_csv(a.track);
-            if (!track) return fail(verb, "--track: " + track.error().message);
-            o.track = std::move(track).value();
-        }
+        o.track = std::move(track);
         if (auto st = inspect::screenshot(*scene, grid, times.front(), o, a.screenshot); !st)
             return fail(verb, st.error().message);
         std::printf("rendered %s at t = %g s to %s\n", a.field.c_str(), times.front(), a.screenshot.c_str());

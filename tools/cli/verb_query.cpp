@@ -56,13 +56,9 @@ int run_query(const QueryArgs& a) {
     auto parsed_times = times_from_options(a.time, a.times);
     if (!parsed_times) return fail(verb, parsed_times.error().message);
     const std::vector<double> times = std::move(parsed_times).value();
-    auto loaded = load_scene_option(a.scene, OceanNeed::optional);
-    if (!loaded) return fail(verb, loaded.error().message);
-    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
-    for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
+    // The points and the output first: a bad one is told before the scene's bake.
     auto points = read_points_csv(a.points);
     if (!points) return fail(verb, points.error().message);
-
     // A file output goes to a temporary that is renamed only after the last row:
     // any failure on the way leaves no partial file.
     std::unique_ptr<AtomicFile> file;
@@ -70,6 +66,10 @@ int run_query(const QueryArgs& a) {
         file = std::make_unique<AtomicFile>(a.out);
         if (!file->status()) return fail(verb, file->status().error().message);
     }
+    auto loaded = load_scene_option(a.scene, OceanNeed::optional);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
+    for (const std::string& w : scene->warnings) std::fprintf(stderr, "tidewater query: warning: %s\n", w.c_str());
     const auto sink = [&](const std::string& chunk) {
         if (file) {
             file->stream().write(chunk.data(), static_cast<std::streamsize>(chunk.size()));

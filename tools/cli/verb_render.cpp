@@ -68,10 +68,6 @@ int run_render(const RenderArgs& a) {
     if (a.frames > 1 && a.out_dir.empty()) return fail(verb, "--frames > 1 needs --out-dir");
     if (check_time(a.time + (a.frames - 1) / a.fps, "--time").ok() == false)
         return fail(verb, "--time: the sequence ends out of range");
-    auto loaded = load_scene_option(a.scene);
-    if (!loaded) return fail(verb, loaded.error().message);
-    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
-
     RenderJob job;
     job.extent = *extent;
     job.start_time = a.time;
@@ -121,6 +117,24 @@ int run_render(const RenderArgs& a) {
     override_with(o.scene_reflection, a.scene_reflection, "--scene-reflection");
     override_with(o.caustics, a.caustics, "--caustics");
     if (!refused.empty()) return fail(verb, refused);
+    if (!a.split_camera.empty()) {
+        for (double v : a.split_camera)
+            if (!std::isfinite(v)) return fail(verb, "--split-camera: the six numbers must be finite");
+        if (glm::length(glm::dvec3(a.split_camera[3] - a.split_camera[0], a.split_camera[4] - a.split_camera[1],
+                                   a.split_camera[5] - a.split_camera[2])) < 1e-6)
+            return fail(verb, "--split-camera: the position and the target must differ");
+        if (extent->width < 32) return fail(verb, "--split-camera: the image needs at least 32 pixels across");
+    }
+    // Check the stats path before the bake and minutes of rendering.
+    std::unique_ptr<AtomicFile> stats_file;
+    if (!a.stats.empty()) {
+        stats_file = std::make_unique<AtomicFile>(a.stats);
+        if (!stats_file->status()) return fail(verb, stats_file->status().error().message);
+    }
+    // Every option checked: the scene's bake, which can take minutes, comes last.
+    auto loaded = load_scene_option(a.scene);
+    if (!loaded) return fail(verb, loaded.error().message);
+    const std::shared_ptr<const Scene> scene = std::move(loaded).value();
     if (!a.camera.empty() || !a.target.empty() || a.fov != 0.0) {
         render::Camera cam = default_camera(*scene);
         if (!a.camera.empty()) cam.position = {a.camera[0], a.camera[1], a.camera[2]};
@@ -129,21 +143,10 @@ int run_render(const RenderArgs& a) {
         job.camera = cam;
     }
     if (!a.split_camera.empty()) {
-        for (double v : a.split_camera)
-            if (!std::isfinite(v)) return fail(verb, "--split-camera: the six numbers must be finite");
         render::Camera second = job.camera.value_or(default_camera(*scene));
         second.position = {a.split_camera[0], a.split_camera[1], a.split_camera[2]};
         second.target = {a.split_camera[3], a.split_camera[4], a.split_camera[5]};
-        if (glm::length(second.target - second.position) < 1e-6)
-            return fail(verb, "--split-camera: the position and the target must differ");
-        if (extent->width < 32) return fail(verb, "--split-camera: the image needs at least 32 pixels across");
         job.split_camera = second;
-    }
-    // Check the stats path before minutes of rendering.
-    std::unique_ptr<AtomicFile> stats_file;
-    if (!a.stats.empty()) {
-        stats_file = std::make_unique<AtomicFile>(a.stats);
-        if (!stats_file->status()) return fail(verb, stats_file->status().error().message);
     }
     auto result = run_render_job(*scene, job);
     if (!result) return fail(verb, result.error().message);
