@@ -40,11 +40,22 @@ float river_field(RiverTap t, uint field) {
            t.w.z * river_texels[base + t.k01 * kRiverQueryStride] + t.w.w * river_texels[base + t.k11 * kRiverQueryStride];
 }
 
-// Channel coordinates (s, n, m) and current (m/s) at a tap.
+// Channel coordinates (s, n, m) and current (m/s) at a tap: the current weighted by the
+// texels' water columns too, so that depth times current is the bilinear h u where the
+// four are wet (tidewater::detail::sample_river's twin).
 vec4 river_channel_at(RiverTap t) {
     uint first = RIVER_FIRST_TEXEL;
-    return t.w.x * river_channel[first + t.k00] + t.w.y * river_channel[first + t.k10] + t.w.z * river_channel[first + t.k01] +
-           t.w.w * river_channel[first + t.k11];
+    vec4 c00 = river_channel[first + t.k00], c10 = river_channel[first + t.k10];
+    vec4 c01 = river_channel[first + t.k01], c11 = river_channel[first + t.k11];
+    uint depth = RIVER_FIRST_TEXEL * kRiverQueryStride + kRiverQueryDepth;
+    vec4 column = max(vec4(river_texels[depth + t.k00 * kRiverQueryStride], river_texels[depth + t.k10 * kRiverQueryStride],
+                           river_texels[depth + t.k01 * kRiverQueryStride], river_texels[depth + t.k11 * kRiverQueryStride]),
+                      vec4(0.0));
+    vec4 wh = t.w * column;
+    float water = wh.x + wh.y + wh.z + wh.w;
+    vec2 sn = t.w.x * c00.xy + t.w.y * c10.xy + t.w.z * c01.xy + t.w.w * c11.xy;
+    vec2 flow = water > 0.0 ? (wh.x * c00.zw + wh.y * c10.zw + wh.z * c01.zw + wh.w * c11.zw) / water : vec2(0.0);
+    return vec4(sn, flow);
 }
 
 // A river wave's phase at channel coordinates sn (the CPU's base_phases in the channel

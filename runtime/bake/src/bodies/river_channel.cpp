@@ -7,6 +7,7 @@
 
 #include "bodies/monotone_cubic.hpp"
 #include "bodies/river_blend.hpp"
+#include "bodies/river_discharge.hpp"
 #include "bodies/stream_function.hpp"
 #include "host_device.h"
 
@@ -408,6 +409,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     river.channel_n = frame.across;
     river.tangent_x = frame.tx;
     river.tangent_z = frame.tz;
+    match_queried_discharge(river);
     pack_query_texels(river, river_weight, still_weight);
     // Mean speed: discharge over the mean section (wet area / length).
     const double mean_area = area_sum * g.texel * g.texel / std::max(mouth, g.texel);

@@ -28,9 +28,22 @@ RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
     RiverSample out;
     out.s = taps(river.channel_s);
     out.n = taps(river.channel_n);
-    out.flow_x = taps(river.flow_x);
-    out.flow_z = taps(river.flow_z);
     out.depth = taps(river.depth);
+    // The current: the texels' currents weighted by their water columns too, so that the
+    // depth times the current is the bilinear field of h u wherever the four are wet, and
+    // the current stays within the texels' own next to the banks (river_water.glsl's twin).
+    const auto column = [&](std::size_t k) { return std::max(static_cast<double>(river.depth[k]), 0.0); };
+    const double w00 = taps.w00 * column(taps.k00), w10 = taps.w10 * column(taps.k10),
+                 w01 = taps.w01 * column(taps.k01), w11 = taps.w11 * column(taps.k11);
+    const double water = w00 + w10 + w01 + w11;
+    if (water > 0.0) {
+        auto weighted = [&](const std::vector<float>& f) {
+            const auto at = [&](std::size_t k) { return static_cast<double>(f[k]); };
+            return (w00 * at(taps.k00) + w10 * at(taps.k10) + w01 * at(taps.k01) + w11 * at(taps.k11)) / water;
+        };
+        out.flow_x = weighted(river.flow_x);
+        out.flow_z = weighted(river.flow_z);
+    }
     out.surface = taps(river.surface_height);
     return out;
 }
