@@ -1,7 +1,9 @@
 // The shore model against wave-tank measurements (../shared/refdata, skipped when absent):
 // Berkhoff, Booij and Radder's (1982) elliptic shoal (refraction with diffraction) and
 // Hansen and Svendsen's (1979) spilling breaker on a plane beach (nonlinear shoaling,
-// breaking, the surf zone). Each tank is a scene, baked and queried as a user would; the
+// breaking, the surf zone), and a random sea's inner surf zone on a plane beach against
+// the H_rms / h Thornton and Guza (1982) measured on one. Each tank is a scene, baked
+// and queried as a user would; the
 // wave heights are the queries' crest-to-trough range over a period. With
 // TIDEWATER_NEARSHORE_CSV=dir the measured and computed profiles are written there
 // (tools/plot_nearshore.py draws docs/nearshore_*.svg from them).
@@ -226,6 +228,53 @@ TEST(NearshoreMeasurements, HansenSvendsensBeachShoalsBreaksAndDissipates) {
     EXPECT_LE(rms(surf), 0.20);
     EXPECT_NEAR(peak / measured_peak, 1.0, 0.15);
     EXPECT_NEAR(peak_at, measured_at, 0.4);
+}
+
+// A random sea breaks as a whole (Battjes and Janssen 1978, H_max = 0.73 h): a JONSWAP
+// sea of 24 components (12 m/s, H_rms 1.7 m offshore) on a 1:50 plane beach. In the inner
+// surf zone, where the water is 0.6 to 1.2 times the offshore H_rms deep, H_rms / h (from
+// the queried surface's variance, H_rms = sqrt(8 var)) against the 0.42 Thornton and Guza
+// (1982) measured on Torrey Pines beach (about 1:50): 0.47 to 0.55 (mean 0.50, +19 %; the
+// one-dimensional Battjes-Janssen balance gives 0.43 to 0.49 there). Each component broke
+// and decayed as a regular wave of the sea's height before (Weggel, Dally): 0.54 to 0.66.
+TEST(NearshoreMeasurements, ARandomSeasInnerSurfZoneHasThorntonAndGuzasHeightOverDepth) {
+    constexpr double kSlope = 0.02, kToe = -12.0;
+    auto scene = test::baked(parse_scene(fmt::format(R"({{"version": 1, "name": "beach", "water_level": 0,
+        "shore": {{"resolution": 512}},
+        "terrain": {{"plane": {{"height": {}, "slope": [{}, 0], "half_size": 800}}}},
+        "ocean": {{"spectrum": {{"type": "jonswap", "wind_speed": 12, "fetch": 100000, "peak_enhancement": 3.3,
+                    "direction": 0, "spreading": 30, "wave_count": 24, "seed": 5, "steepness": 0.5}}}}}})",
+                                                     kToe, kSlope),
+                                         "beach.json"));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const double shoreline = -kToe / kSlope;
+    // H_rms over 300 s at three points along the shore, `depth` deep.
+    auto rms_height = [&](double depth) {
+        double sum = 0.0, sum2 = 0.0;
+        int n = 0;
+        for (int i = 0; i < 1200; ++i)
+            for (const double z : {-100.0, 0.0, 100.0}) {
+                const double y = query_world_point(*scene, 0.25 * i, {shoreline - depth / kSlope, z}).surface.height;
+                sum += y;
+                sum2 += y * y;
+                ++n;
+            }
+        const double mean = sum / n;
+        return std::sqrt(8.0 * (sum2 / n - mean * mean));
+    };
+    const double offshore = rms_height(10.0);
+    std::printf("offshore (10 m deep): H_rms %.3f m\n", offshore);
+    double sum = 0.0;
+    int n = 0;
+    for (const double share : {0.6, 0.75, 0.9, 1.05, 1.2}) {
+        const double depth = share * offshore, ratio = rms_height(depth) / depth;
+        std::printf("%.2f m deep (%.2f H_rms offshore): H_rms / h %.3f\n", depth, share, ratio);
+        sum += ratio;
+        ++n;
+    }
+    const double mean = sum / n;
+    std::printf("inner surf zone: H_rms / h %.3f on average (Thornton and Guza: 0.42)\n", mean);
+    EXPECT_NEAR(mean, 0.42, 0.25 * 0.42);
 }
 
 }  // namespace

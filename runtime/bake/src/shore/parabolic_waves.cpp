@@ -15,6 +15,12 @@ namespace {
 
 using Complex = std::complex<double>;
 
+/// H_rms / H_max under which Battjes and Janssen's share of broken waves is nought (under 1e-10).
+inline constexpr double kNoBrokenShare = 0.2;
+/// A random sea's highest waves over the depth, H_max / h: Battjes and Janssen's 0.73
+/// (SWAN's default).
+inline constexpr double kRandomSeaBreakerIndex = 0.73;
+
 /// Linear dispersion without units: k h and the group velocity's share n = cg / c as
 /// functions of s = sqrt(omega^2 h / g), tabulated up to deep water (k h = kDeepKh) and
 /// read linearly: within 1e-6 of the solve, at a tenth of its cost.
@@ -138,6 +144,20 @@ double weggel_breaker_index(double slope, double height, double period) {
     return std::max(0.6, b - a * height / (kGravity * period * period));
 }
 
+double broken_share(double rms_over_max) {
+    const double b = rms_over_max;
+    if (!(b > kNoBrokenShare)) return 0.0;
+    if (b >= 1.0) return 1.0;
+    // f(Q) = 1 - Q + b^2 ln Q rises from -inf at 0 to 0 at Q = 1, through one root below
+    // 1 (f' = 0 at Q = b^2 < 1): bisection between a point where it is negative and b^2.
+    double lo = 1e-12, hi = b * b;
+    for (int i = 0; i < 60 && hi - lo > 1e-9; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (1.0 - mid + b * b * std::log(mid) < 0.0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 double shuto_exponent(double ursell) {
     if (!(ursell >= 30.0)) return std::numeric_limits<double>::quiet_NaN();
     if (ursell <= 50.0) return -2.0 / 7.0;
@@ -165,6 +185,9 @@ class Marcher {
     explicit Marcher(const ParabolicInput& in) : in_(in), n_(static_cast<std::size_t>(in.grid.across)) {
         period_ = in.sea_period > 0.0 ? in.sea_period : kTwoPi / in.omega;
         k_deep_ = in.omega * in.omega / kGravity;
+        // Under this height over the depth nothing breaks: Weggel's least index, or where
+        // Battjes and Janssen's share of broken waves is nought.
+        lowest_breaking_ = in.random_sea ? kNoBrokenShare * kRandomSeaBreakerIndex : kLowestBreakerIndex;
         for (auto* v : {&a, &lower_, &diag_, &upper_, &rhs_, &half_turn_}) v->assign(n_, Complex(0.0));
         for (auto* v : {&k_, &p_}) v->assign(n_, 0.0);
         broken.assign(n_, 0);
@@ -203,7 +226,7 @@ class Marcher {
 
     const ParabolicInput& in_;
     std::size_t n_;
-    double period_ = 0.0, k_deep_ = 0.0;
+    double period_ = 0.0, k_deep_ = 0.0, lowest_breaking_ = 0.0;
     std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_;
     std::vector<double> k_, p_;
 };
@@ -217,10 +240,28 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
     // Deep water, a wave too low to break and shoaling linearly: the open sea's wave, whose
     // group velocity does not change (no growth) and whose phase is the deep-water one.
     if (here.deep[j] && next.deep[j] && !broken[j] && !shoals_nonlinearly &&
-        !(in_.breaking && here.wet[j] && height > kLowestBreakerIndex * h))
+        !(in_.breaking && here.wet[j] && height > lowest_breaking_ * h))
         return std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
     // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
     double decay = here.cg[j] == next.cg[j] ? 0.0 : 0.5 * std::log(next.cg[j] / here.cg[j]) / dx;
+    if (in_.breaking && in_.random_sea && here.wet[j]) {
+        // Battjes and Janssen: the sea loses D = (alpha / 4) rho g f Q_b H_max^2 (alpha 1,
+        // f its mean frequency) of its energy flux E cg, E = rho g H_rms^2 / 8; each
+        // component at the sea's rate.
+        const double highest = kRandomSeaBreakerIndex * h;
+        const double share = broken_share(height / highest);
+        broken[j] = share >= 0.5 ? 1 : 0;
+        if (share > 0.0) {
+            const double ratio = highest / height;
+            decay += share * ratio * ratio / (period_ * here.cg[j]);
+        } else if (shoals_nonlinearly) {
+            decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+        }
+        const double kn = in_.amplitude_dispersion && !(here.deep[j] && next.deep[j])
+                              ? amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
+                              : k_[j];
+        return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
+    }
     if (in_.breaking && here.wet[j]) {
         const double slope = std::max(0.0, (h - next.h[j]) / dx);
         if (!broken[j] && height > kLowestBreakerIndex * h && height > weggel_breaker_index(slope, height, period_) * h)

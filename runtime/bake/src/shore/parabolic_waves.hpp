@@ -7,7 +7,8 @@
 // diffraction turn it. Near breaking the height grows as Shuto's (1974) nonlinear
 // shoaling says; breaking starts where the height passes Weggel's (1972) index for the
 // local beach slope and steepness, and the broken wave loses energy as Dally, Dean and
-// Dalrymple (1985) say until it is stable again. Everything is in the scene's own units:
+// Dalrymple (1985) say until it is stable again; a random sea breaks as a whole as
+// Battjes and Janssen (1978) say. Everything is in the scene's own units:
 // no length or time of its own. Private to the bake.
 #pragma once
 
@@ -51,6 +52,10 @@ struct ParabolicInput {
     /// component's): every component breaks and shoals nonlinearly where the sea does.
     double sea_over_component = 1.0;
     double sea_period = 0.0;
+    /// A random sea (more than one component): it breaks as Battjes and Janssen (1978)
+    /// say, a share Q_b of its waves broken at any point, instead of as one regular wave
+    /// (Weggel's onset, Dally's decay).
+    bool random_sea = false;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation
     bool nonlinear_shoaling = true;    ///< false: linear shoaling only
@@ -78,6 +83,11 @@ double amplitude_dispersed_wavenumber(double omega, double depth, double amplitu
 /// Weggel's (1972) breaker index H_b / h_b on a beach of slope `slope` (>= 0, used up to
 /// 0.1) for a wave of height H (m) and period T (s): b - a H / (g T^2), at least 0.6.
 double weggel_breaker_index(double slope, double height, double period);
+
+/// Battjes and Janssen's (1978) share Q_b of broken waves in a Rayleigh sea of rms height
+/// H_rms whose highest waves are H_max: 1 - Q_b = -(H_rms / H_max)^2 ln Q_b (0 where
+/// H_rms / H_max <= 0.2, 1 from 1 up).
+double broken_share(double rms_over_max);
 
 /// Shuto's (1974) exponent n of H ~ h^n for nonlinear shoaling at Ursell number
 /// U = g H T^2 / h^2: none (NaN) under 30, where linear shoaling holds; -2/7 to 50; then

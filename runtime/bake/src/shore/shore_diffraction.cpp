@@ -114,6 +114,7 @@ SeaState sea_state(std::span<const Wave> waves) {
     double weighted = 0.0;
     for (const Wave& w : waves) {
         const double e = w.amplitude * w.amplitude;
+        if (e > 0.0) ++s.components;
         s.energy += e;
         weighted += e * w.period();
     }
@@ -152,6 +153,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     in.incident_in_deep_water = true;
     in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
     in.sea_period = sea.mean_period;
+    in.random_sea = sea.components > 1;
 
     KeptRow before, after;
     const double s = frame.spacing;

@@ -22,6 +22,7 @@ namespace tidewater::detail {
 struct SeaState {
     double energy = 0.0;       ///< sum of A^2, m^2
     double mean_period = 0.0;  ///< energy-weighted mean period, s
+    int components = 0;        ///< with an amplitude: more than one is a random sea
 };
 SeaState sea_state(std::span<const Wave> waves);
 
