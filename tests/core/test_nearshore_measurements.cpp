@@ -234,7 +234,7 @@ TEST(NearshoreMeasurements, HansenSvendsensBeachShoalsBreaksAndDissipates) {
 // sea of 24 components (12 m/s, H_rms 1.7 m offshore) on a 1:50 plane beach. In the inner
 // surf zone, where the water is 0.6 to 1.2 times the offshore H_rms deep, H_rms / h (from
 // the queried surface's variance, H_rms = sqrt(8 var)) against the 0.42 Thornton and Guza
-// (1982) measured on Torrey Pines beach (about 1:50): 0.47 to 0.55 (mean 0.50, +19 %; the
+// (1982) measured on Torrey Pines beach (about 1:50): 0.47 to 0.53 (mean 0.49, +17 %; the
 // one-dimensional Battjes-Janssen balance gives 0.43 to 0.49 there). Each component broke
 // and decayed as a regular wave of the sea's height before (Weggel, Dally): 0.54 to 0.66.
 TEST(NearshoreMeasurements, ARandomSeasInnerSurfZoneHasThorntonAndGuzasHeightOverDepth) {

@@ -15,13 +15,14 @@ namespace tidewater::detail {
 
 namespace {
 
-/// Points a local wavelength the march needs: all of it from the first, none under the second.
+/// Points the march needs across a wave's crests (a wavelength across the march): all of
+/// its share from the first, none under the second.
 inline constexpr double kFullPoints = 3.0, kNoPoints = 2.0;
 /// The march's spacing: at most the grid's texel and this part of the deep-water wavelength,
 /// but no finer than this part of the texel: the amplitude is kept per texel, so a wave
-/// the grid cannot resolve is left to the rays (the march's share falls with its points a
-/// local wavelength), and a march visits at most 8 times the grid's texels (its frame is
-/// turned), not the area over the shortest wave's wavelength squared.
+/// shorter than the texel is left to the rays, and a march visits at most 8 times the
+/// grid's texels (its frame is turned), not the area over the shortest wave's wavelength
+/// squared.
 inline constexpr double kPointsPerDeepWavelength = 8.0;
 inline constexpr double kPointsPerTexel = 2.0;
 
@@ -105,8 +106,10 @@ double ramp(double value, double none, double full) {
     return std::clamp((value - none) / (full - none), 0.0, 1.0);
 }
 
-double march_share_at_angle(double angle) {
-    return ramp(angle, kNoAngle, kFullAngle);
+double march_share(double angle, double wavelength, double spacing) {
+    const double across = std::abs(std::sin(angle)) * spacing;  // the march's spacing along the crests' normal
+    const double points = across > 0.0 ? wavelength / across : kFullPoints;
+    return ramp(angle, kNoAngle, kFullAngle) * ramp(points, kNoPoints, kFullPoints);
 }
 
 SeaState sea_state(std::span<const Wave> waves) {
@@ -131,8 +134,9 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     out.broken.assign(count, 0);
     if (!(wave.amplitude > 0.0)) return out;
     const MarchFrame frame = march_frame(wave, field);
-    // Fewer points than the share needs to a deep-water wavelength: fewer still to any
-    // local one (a wave shortens as it shoals), so the rays stand everywhere.
+    out.spacing = frame.spacing;
+    // A wave shorter than the texel (under 2 points a deep-water wavelength at the finest
+    // spacing) is left to the rays: one amplitude a texel cannot hold what it would do.
     if (kTwoPi / wave.k / frame.spacing < kNoPoints) return out;
     const RowBuckets buckets = bucket_texels(field, frame, keep);
     if (buckets.texels.empty()) return out;
@@ -179,11 +183,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                 };
                 const double magnitude = lerp(m00, m01, m10, m11);
                 const double brk = lerp(before.broken[j0], before.broken[j0 + 1], row.broken[j0], row.broken[j0 + 1]);
-                const double h = static_cast<double>(field.depth[k]);
-                const double points = kTwoPi / wavenumber_at_depth(wave.omega, h) / s;
-                double share = ramp(points, kNoPoints, kFullPoints);
-                if (std::max({m00, m01, m10, m11}) <= 1e-6 * wave.amplitude) share = 0.0;
-                out.share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
+                out.share[k] = std::max({m00, m01, m10, m11}) > 1e-6 * wave.amplitude ? 255 : 0;
                 out.amplitude[k] = static_cast<float>(magnitude / wave.amplitude);
                 out.broken[k] = brk >= 0.5 ? 1 : 0;
             }

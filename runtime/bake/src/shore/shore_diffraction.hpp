@@ -26,14 +26,15 @@ struct SeaState {
 };
 SeaState sea_state(std::span<const Wave> waves);
 
-/// Per texel of the grid: the march's share of the wave's amplitude as far as its
-/// resolution goes (0: the rays' stand, 1: the march's; march_share_at_angle takes its
-/// direction in), the march's amplitude factor (over the open-sea amplitude) and whether
-/// the wave is broken there.
+/// Per texel of the grid: where the march reached (share 255; 0: the rays' stand; the
+/// bake puts march_share in its place, once the rays' direction there is known), the
+/// march's amplitude factor (over the open-sea amplitude) and whether the wave is broken
+/// there; and the march's spacing.
 struct DiffractedWave {
     std::vector<std::uint8_t> share;  ///< 0..255
     std::vector<float> amplitude;
     std::vector<std::uint8_t> broken;
+    double spacing = 0.0;  ///< between the march's points, m
     double share_of(std::size_t k) const { return share[k] / 255.0; }
 };
 
@@ -51,8 +52,12 @@ inline constexpr double kFullAngle = 35.0 * 3.14159265358979323846 / 180.0;
 inline constexpr double kNoAngle = 50.0 * 3.14159265358979323846 / 180.0;
 /// 0 under `none`, 1 over `full`, linear between.
 double ramp(double value, double none, double full);
-/// The march's share of a wave turned `angle` (rad) from its offshore direction.
-double march_share_at_angle(double angle);
+/// The march's share of a wave turned `angle` (rad) from its offshore direction, whose
+/// local wavelength is `wavelength` (m), on a march `spacing` m apart: by the angle, and
+/// by the points the march has across the wave's crests (its wavelength across the march,
+/// wavelength / sin(angle): along the march the phase is taken exactly). A wave running
+/// along the march needs no points across it.
+double march_share(double angle, double wavelength, double spacing);
 
 /// The most points a wave's march holds at once in its rows is small; the points it
 /// visits are at most this many (its spacing grows past that).

@@ -258,7 +258,9 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
                 std::acos(std::clamp((static_cast<double>(v.kx) * wave.dir_x + static_cast<double>(v.kz) * wave.dir_z) /
                                          std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz)),
                                      -1.0, 1.0));
-            const double share = diffracted->share_of(k) * detail::march_share_at_angle(turned);
+            const double wavelength =
+                kTwoPi / std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz));  // |k| = k(h)
+            const double share = diffracted->share_of(k) * detail::march_share(turned, wavelength, diffracted->spacing);
             diffracted->share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
             record->marched[at * nw + w] = diffracted->share[k];
             record->amplitude[at * nw + w] = diffracted->amplitude[k];
