@@ -12,9 +12,9 @@ namespace {
 inline constexpr double kSamplesPerTexel = 8.0;
 /// How far past the half width a section reaches (the wet edge wanders a texel or so).
 inline constexpr double kReachTexels = 3.0;
-/// The most a section's scale may change the current: more says the section is not a
-/// clean crossing (a confluence, an island's tip, a sheet of water a millimetre deep on a
-/// steep reach), and it is left nearer as it was.
+/// The most a section's scale may change the current, over all passes: more says the
+/// section is not a clean crossing (a confluence, an island's tip, a sheet of water a
+/// millimetre deep on a steep reach), and it is left nearer as it was.
 inline constexpr double kMostScale = 1.1;
 /// Sections a texel along the channel: a texel's current weighs in the sections within
 /// a texel of it, so the scales are taken finer than that.
@@ -55,17 +55,18 @@ SectionDischarge section_discharge(const RiverBake& river, double along) {
 namespace {
 
 /// Scales the current by each section's field over queried discharge, interpolated
-/// along the channel between sections.
-void scale_once(RiverBake& river) {
-    const std::size_t samples = river.centreline.size();
-    if (samples < 2 || river.along.size() != samples) return;
-    const double first = river.along.front(), last = river.along.back();
-    const double spacing = river.grid.texel / kSectionsPerTexel;
-    const auto stations = static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1;
+/// along the channel between sections, `first` + `spacing` m apart; `total` holds each
+/// section's scale so far, which stays within kMostScale of 1 over every pass.
+void scale_once(RiverBake& river, double first, double spacing, std::vector<double>& total) {
+    const std::size_t stations = total.size();
+    const double last = river.along.back();
     std::vector<double> scale(stations, 1.0);
     for (std::size_t m = 0; m < stations; ++m) {
         const SectionDischarge q = section_discharge(river, std::min(first + static_cast<double>(m) * spacing, last));
-        if (q.field > 0.0 && q.queried > 0.0) scale[m] = std::clamp(q.field / q.queried, 1.0 / kMostScale, kMostScale);
+        if (!(q.field > 0.0 && q.queried > 0.0)) continue;
+        const double wanted = std::clamp(total[m] * q.field / q.queried, 1.0 / kMostScale, kMostScale);
+        scale[m] = wanted / total[m];
+        total[m] = wanted;
     }
     for (std::size_t t = 0; t < river.flow_x.size(); ++t) {
         if (river.flow_x[t] == 0.0f && river.flow_z[t] == 0.0f) continue;
@@ -78,10 +79,16 @@ void scale_once(RiverBake& river) {
         river.flow_z[t] = static_cast<float>(static_cast<double>(river.flow_z[t]) * f);
     }
 }
+
 }  // namespace
 
 void match_queried_discharge(RiverBake& river) {
-    for (int pass = 0; pass < kPasses; ++pass) scale_once(river);
+    const std::size_t samples = river.centreline.size();
+    if (samples < 2 || river.along.size() != samples) return;
+    const double first = river.along.front(), last = river.along.back();
+    const double spacing = river.grid.texel / kSectionsPerTexel;
+    std::vector<double> total(static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1, 1.0);
+    for (int pass = 0; pass < kPasses; ++pass) scale_once(river, first, spacing, total);
 }
 
 }  // namespace tidewater::detail

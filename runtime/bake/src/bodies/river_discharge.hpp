@@ -22,8 +22,8 @@ struct SectionDischarge {
 SectionDischarge section_discharge(const RiverBake& river, double along);
 
 /// Scales `river`'s current (flow_x, flow_z) so that the queried discharge through
-/// sections a quarter texel apart along the centreline is the field's (by at most 10 %
-/// a pass, three passes); between sections the scale is interpolated along the channel
+/// sections a quarter texel apart along the centreline is the field's (three passes, by
+/// at most 10 % in all); between sections the scale is interpolated along the channel
 /// (channel_s), past the mouth it is the mouth's. Needs the texels' kinds (mouths
 /// marked), the depth, the h u field and the channel coordinates.
 void match_queried_discharge(RiverBake& river);
