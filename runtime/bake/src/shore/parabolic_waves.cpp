@@ -257,26 +257,25 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
         } else if (shoals_nonlinearly) {
             decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
         }
-        const double kn = in_.amplitude_dispersion && !(here.deep[j] && next.deep[j])
-                              ? amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
-                              : k_[j];
-        return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
-    }
-    if (in_.breaking && here.wet[j]) {
-        const double slope = std::max(0.0, (h - next.h[j]) / dx);
-        if (!broken[j] && height > kLowestBreakerIndex * h && height > weggel_breaker_index(slope, height, period_) * h)
-            broken[j] = 1;
-        if (broken[j] && height < in_.surf.stable_index * h) broken[j] = 0;
     } else {
-        broken[j] = 0;
-    }
-    if (broken[j]) {
-        // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
-        const double stable = in_.surf.stable_index * h / height;
-        decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
-    } else if (shoals_nonlinearly) {
-        // Grows as H ~ h^n where that is faster than linear shoaling.
-        decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+        // A regular wave: it breaks past Weggel's index and decays as Dally et al. say.
+        if (in_.breaking && here.wet[j]) {
+            const double slope = std::max(0.0, (h - next.h[j]) / dx);
+            if (!broken[j] && height > kLowestBreakerIndex * h &&
+                height > weggel_breaker_index(slope, height, period_) * h)
+                broken[j] = 1;
+            if (broken[j] && height < in_.surf.stable_index * h) broken[j] = 0;
+        } else {
+            broken[j] = 0;
+        }
+        if (broken[j]) {
+            // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
+            const double stable = in_.surf.stable_index * h / height;
+            decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
+        } else if (shoals_nonlinearly) {
+            // Grows as H ~ h^n where that is faster than linear shoaling.
+            decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+        }
     }
     // The phase travels at the amplitude's own speed (amplitude dispersion).
     const double kn = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
