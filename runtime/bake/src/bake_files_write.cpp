@@ -13,14 +13,27 @@ namespace tidewater::detail {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+FieldEncoding encoding_of(const std::vector<float>& values) {
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    return FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo),
+                                   values.empty() ? 0.0 : static_cast<double>(*hi));
+}
+
+}  // namespace
+
+void round_to_saved_encoding(std::vector<float>& values) {
+    const FieldEncoding e = encoding_of(values);
+    for (float& v : values) v = static_cast<float>(e.decode(e.encode(static_cast<double>(v))));
+}
+
 Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& name, const std::vector<float>& values,
                                        int nx, int nz, const char* unit) {
     if (values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz))
         return Error{ErrorCode::internal,
                      fmt::format("field {}: {} values for a {}x{} grid", name, values.size(), nx, nz)};
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    const FieldEncoding e = FieldEncoding::covering(values.empty() ? 0.0 : static_cast<double>(*lo),
-                                                    values.empty() ? 0.0 : static_cast<double>(*hi));
+    const FieldEncoding e = encoding_of(values);
     const std::string file = name + ".png";
     const auto width = static_cast<std::size_t>(nx);
     // Encoded a row at a time: a field of 8192² is written without a 128 MiB image of it.

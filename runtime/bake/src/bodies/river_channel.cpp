@@ -10,6 +10,7 @@
 #include "bodies/river_discharge.hpp"
 #include "bodies/stream_function.hpp"
 #include "host_device.h"
+#include "tidewater/detail/bake_files_write.hpp"
 
 namespace tidewater::detail {
 
@@ -409,6 +410,9 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     river.channel_n = frame.across;
     river.tangent_x = frame.tx;
     river.tangent_z = frame.tz;
+    // The query weighs the current by the texels' depths: the depth the discharge is matched
+    // with is the one a saved bake reads back, so a saved river carries the same current.
+    round_to_saved_encoding(river.depth);
     match_queried_discharge(river);
     pack_query_texels(river, river_weight, still_weight);
     // Mean speed: discharge over the mean section (wet area / length).

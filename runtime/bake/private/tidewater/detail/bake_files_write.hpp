@@ -16,6 +16,10 @@ namespace tidewater::detail {
 Result<nlohmann::json> write_field_png(const std::filesystem::path& dir, const std::string& name,
                                        const std::vector<float>& values, int nx, int nz, const char* unit);
 
+/// Rounds `values` to the encoding write_field_png would save them with, so a field that
+/// other baked values were fitted to reads back from a saved bake as it was baked.
+void round_to_saved_encoding(std::vector<float>& values);
+
 /// Writes text to a file, failing with the path when it cannot.
 Status write_text_file(const std::filesystem::path& path, const std::string& text);
 
