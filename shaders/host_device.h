@@ -38,8 +38,12 @@ TW_CONST float kNewtonRadiusFloor = 1.0e-6f;
 // Eulerian solve has a root there) and rests on land. A shore model's waves scale by
 // clamp(shore distance / its grid's texel, 0, 1) at the rest position: over the last texel
 // of water, where its fields blend wet and dry texels (a length of the scene's, so the
-// shore has none of its own). A river's by clamp(depth / kRiverBankRampDepth, 0, 1).
-TW_CONST float kRiverBankRampDepth = 0.5f;  // m
+// shore has none of its own). A river's by clamp(depth / ramp, 0, 1), ramp the depth
+// its waves' highest crest-to-trough height 2 sum(a) breaks in, over this index: they
+// never stand higher than a depth-limited breaker (a depth of the river's own waves, so
+// its waves have no length of their own either). Per river: GpuBodyDraw.rivers.w and
+// GpuQueryParams.river_bank_ramp (tidewater::detail::river_bank_ramp_depth).
+TW_CONST float kRiverBankBreakerIndex = 0.78f;
 
 // The shore model in tiles (tidewater::ShoreTiles): the grid is cut into tiles of
 // kShoreTileTexels texels a side, and a page per tile names the slot that holds it.
@@ -387,7 +391,7 @@ struct GpuBodyDraw {
     vec4 extra;       // x: whitecap Jacobian J* (crest_foam); y: first patch in the patch list;
                       // z: highest rest surface above the level (m); w: largest wave displacement (m)
     vec4 rivers;      // x: first river draw; y: river draw count (every draw skips the rivers' texels but a river's own);
-                      // z: first lake draw (the lakes' draws run to x); w: unused
+                      // z: first lake draw (the lakes' draws run to x); w: a river's bank ramp depth (m; see kRiverBankBreakerIndex)
     GpuFlowDetail flow;  // a river's flow-mapped detail (strength 0: none)
     // The still water's shore model (the ocean's, a lake's, or the one a river runs into):
     vec4 shore;       // xy: its shared grid's corner relative to O (m); z: texel (m); w: resolution (0 = none)
@@ -415,7 +419,7 @@ struct GpuQueryParams {
     uint wake_count;        // wake points (still water only; 0: none)
     uint wake_turbulent;    // how many of the first carry turbulence
     float wake_radius;      // how far the wakes can move a particle sideways, m (widens the solve's radius)
-    float wake_pad;
+    float river_bank_ramp;  // m: where the river's waves die out (see kRiverBankBreakerIndex)
 };
 
 // The shore fields (tidewater::ShoreWaves), as storage buffers read with the

@@ -35,6 +35,7 @@ layout(push_constant) uniform Push { GpuQueryParams params; };
 #define RIVER_FIRST_TEXEL 0u
 #define RIVER_FIRST_WAVE 0u
 #define RIVER_WAVE_COUNT params.river_wave_count
+#define RIVER_BANK_RAMP params.river_bank_ramp
 #define WAKE_COUNT params.wake_count
 #define WAKE_TURBULENT params.wake_turbulent
 #define TW_WATER_NEWTON

@@ -1,14 +1,14 @@
 // A river's water at a rest position: the GLSL twin of RiverWater and PlumeWater in
 // runtime/core/src/water/river_water.hpp. The river's waves run in its channel frame
 // (k_s downstream, k_n across to the left); at the rest position they turn with the
-// downstream tangent there, die out over the last kRiverBankRampDepth of water and over
+// downstream tangent there, die out over the last RIVER_BANK_RAMP of water and over
 // the still water the river runs into, and ride the falling surface (one more term of
 // the sums: its height above the mouth level and its gradient).
 //
 // The includer declares river_texels[] (kRiverQueryStride floats per texel of this
 // river, from RIVER_FIRST_TEXEL), river_channel[] (s, n, flow x, z per texel, from the
 // same index) and river_waves[] (GpuRiverWave), and defines RIVER_NX, RIVER_NZ,
-// RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_FIRST_WAVE and RIVER_WAVE_COUNT.
+// RIVER_TEXEL, RIVER_FIRST_TEXEL, RIVER_FIRST_WAVE, RIVER_WAVE_COUNT and RIVER_BANK_RAMP.
 #ifndef TIDEWATER_RIVER_WATER_GLSL
 #define TIDEWATER_RIVER_WATER_GLSL
 
@@ -90,7 +90,7 @@ SurfaceSums river_water_at(vec2 rel, vec2 e, vec2 sn, WaveLod lod) {
     float len2 = dot(tangent, tangent);
     tangent *= inversesqrt(len2 > 0.0 ? len2 : 1.0);
     vec2 left = vec2(-tangent.y, tangent.x);
-    float depth_ramp = depth > 0.0 ? (depth < kRiverBankRampDepth ? depth / kRiverBankRampDepth : 1.0) : 0.0;
+    float depth_ramp = depth > 0.0 ? (depth < RIVER_BANK_RAMP ? depth / RIVER_BANK_RAMP : 1.0) : 0.0;
     float ramp = depth_ramp * weight;
     SurfaceSums s = surface_zero();
     for (uint i = 0u; i < RIVER_WAVE_COUNT; ++i) {

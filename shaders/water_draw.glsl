@@ -22,6 +22,7 @@ GpuBodyDraw g_draw;
 #define RIVER_FIRST_TEXEL uint(g_draw.grid.w)
 #define RIVER_FIRST_WAVE uint(g_draw.river.z)
 #define RIVER_WAVE_COUNT uint(g_draw.river.w)
+#define RIVER_BANK_RAMP g_draw.rivers.w
 
 
 // Whether rest position xz (relative to O) lies where the frame's wakes can be felt

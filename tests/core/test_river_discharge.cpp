@@ -4,7 +4,7 @@
 // Sections fall anywhere along the river (not only on its centreline samples), up to its
 // mouth. A bent river of widths 15 to 40 m on a 0.5 % slope into the sea, 8 texels
 // across where narrowest: without the bake's scaling of the current the query carried
-// 1.5 to 5 % short (river_discharge.hpp); with it, 0.81 % at worst over 162 sections.
+// 1.5 to 5 % short (river_discharge.hpp); with it, 0.77 % at worst over 162 sections.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,7 +27,7 @@ constexpr double kStep = 0.25;  // m between the points of a section
 /// What the query carries across the section through the centreline at `along` (m from
 /// the source), m^3/s: depth times the current along the river, where the query finds
 /// this river's water.
-double queried_discharge(const Scene& scene, int river, double along) {
+double queried_discharge(const Scene& scene, int river, double along, bool* crosses_island = nullptr) {
     const RiverBake& r = scene.bake->bodies->rivers[static_cast<std::size_t>(river)];
     std::size_t k = 1;
     while (k + 1 < r.along.size() && r.along[k] < along) ++k;
@@ -41,28 +41,45 @@ double queried_discharge(const Scene& scene, int river, double along) {
     std::vector<WorldPoint> out(points.size());
     EXPECT_TRUE(query_world(scene, 2.0, points, out).ok());
     double q = 0.0;
+    int runs = 0;  // stretches of this river's water along the section
+    bool in_water = false;
     for (const WorldPoint& o : out) {
-        if (o.body.kind != BodyKind::river || o.body.index != river || !(o.surface.depth > 0.0)) continue;
-        q += o.surface.depth * glm::dot(o.flow, t) * kStep;
+        const bool water = o.body.kind == BodyKind::river && o.body.index == river && o.surface.depth > 0.0;
+        if (water && !in_water) ++runs;
+        in_water = water;
+        if (water) q += o.surface.depth * glm::dot(o.flow, t) * kStep;
     }
+    if (crosses_island) *crosses_island = runs > 1;
     return q;
 }
 
 /// The largest error of the queried discharge over sections every `spacing` m (starting
 /// off the centreline's samples) and in the last metres before the mouth; `expected`
-/// gives Q at a distance from the source.
+/// gives Q at a distance from the source (NaN: no section there). With
+/// `worst_across_islands`, sections that cross an island are left out of the result and
+/// their largest error is put there.
 template <class Expected>
-double worst_error(const Scene& scene, int river, double spacing, const Expected& expected) {
+double worst_error(const Scene& scene, int river, double spacing, const Expected& expected,
+                   double* worst_across_islands = nullptr) {
     const RiverBake& r = scene.bake->bodies->rivers[static_cast<std::size_t>(river)];
     const double length = r.along.back();
     std::vector<double> places;
     for (double s = 0.37 * spacing; s < length - 5.0; s += spacing) places.push_back(s);
     for (double to_mouth : {20.0, 10.0, 5.0, 2.0}) places.push_back(length - to_mouth);
-    double worst = 0.0, at = 0.0;
+    double worst = 0.0, at = 0.0, islands = 0.0;
     for (const double s : places) {
-        const double q = queried_discharge(scene, river, s), e = std::abs(q / expected(s) - 1.0);
+        if (std::isnan(expected(s))) continue;
+        bool island = false;
+        const double q = queried_discharge(scene, river, s, &island), e = std::abs(q / expected(s) - 1.0);
+        if (island && worst_across_islands) {
+            islands = std::max(islands, e);
+            std::printf("river \"%s\": %.2f %% across an island %.1f m from the source\n",
+                        scene.rivers[static_cast<std::size_t>(river)].name.c_str(), 100.0 * e, s);
+            continue;
+        }
         if (e > worst) worst = e, at = s;
     }
+    if (worst_across_islands) *worst_across_islands = islands;
     std::printf(
         "river \"%s\": %zu sections over %.0f m, worst %.2f %% at %.1f m from the source (%.1f m above the "
         "mouth)\n",
@@ -83,6 +100,36 @@ TEST(RiverDischarge, TheQueriedCurrentCarriesQThroughEverySectionOfABentRiver) {
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     EXPECT_EQ(scene->bake->bodies->rivers[0].end, detail::RiverEnd::ocean);
     EXPECT_LT(worst_error(*scene, 0, 23.0, [](double) { return 30.0; }), 0.01);
+}
+
+// The default island's brook and rill, steep (up to 28 %) and crossing hillsides: the rill
+// joins the brook, which carries its own water above the junction and both below it
+// (across the rill's mouth, its width each side, the water is joining). Where the ground
+// fell across a channel the surface used to stand at the centreline's ground, a film
+// over the high side with the water below the low bank: 33 % and 18 % off there. A
+// section across the brook's knoll (an island) is up to 10 % short: next to the knoll's
+// steep sides the query's bilinear depth holds less water than the stream function's
+// texels, and the bake's scaling of the current stops at 10 %; below the knoll, 2 m
+// above the mouth, 1.2 % over. Elsewhere both are within 1 %.
+TEST(RiverDischarge, TheDefaultIslandsBrookAndRillCarryTheirsToTheSea) {
+    auto scene = test::baked(default_scene());
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    const auto& rivers = scene->bake->bodies->rivers;
+    ASSERT_EQ(rivers.size(), 2u);
+    const RiverBake& brook = rivers[0];
+    const double joins = rivers[1].key.joins_at, joining = rivers[1].width.back();
+    double across_islands = 0.0;
+    EXPECT_LT(worst_error(
+                  *scene, 0, 7.0,
+                  [&](double s) {
+                      if (std::abs(s - joins) < joining) return std::nan("");
+                      return s < joins ? brook.own_discharge : brook.discharge;
+                  },
+                  &across_islands),
+              0.013);
+    EXPECT_GT(across_islands, 0.0) << "the brook's sections cross its knoll";
+    EXPECT_LT(across_islands, 0.11);
+    EXPECT_LT(worst_error(*scene, 1, 7.0, [&](double) { return rivers[1].discharge; }), 0.01);
 }
 
 }  // namespace

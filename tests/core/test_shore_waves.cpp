@@ -113,6 +113,33 @@ TEST(ShoreWaves, PlanarBeachShoalsAsLinearTheory) {
     EXPECT_LT(worst, 0.10);
 }
 
+// Oblique incidence (20 and 40 degrees): before breaking the amplitude follows linear
+// shoaling and refraction, a0 sqrt(cg0 / cg(h)) sqrt(cos(theta0) / cos(theta(h))) with
+// Snell's sin(theta) = sin(theta0) k0 / k, within 10 %. The march turns with the rays
+// here (its own direction stays the offshore one), so this checks its wide-angle operator.
+TEST(ShoreWaves, ObliqueWavesShoalAndRefractAsLinearTheory) {
+    const Beach beach = planar_beach();
+    const double omega = deep_water_omega(100.0), a0 = 0.3, k0 = omega * omega / kGravity;
+    for (const double theta0 : {20.0, 40.0}) {
+        const WaveSet set = single_wave(omega, a0, 0.5, theta0);
+        auto shore = bake_shore_waves(set, Terrain(beach.plane), 0.0, grid(512));
+        ASSERT_TRUE(shore.ok()) << shore.error().message;
+        const double sin0 = std::sin(theta0 * kPi / 180.0);
+        double worst = 0.0;
+        for (double h : {40.0, 20.0, 10.0, 6.0, 4.0, 3.0}) {
+            const double x = (-beach.plane.height - h) / beach.plane.slope.x;
+            const double sin_h = sin0 * k0 / wavenumber_at_depth(omega, h);
+            const double refraction = std::sqrt(std::sqrt(1.0 - sin0 * sin0) / std::sqrt(1.0 - sin_h * sin_h));
+            const double expected = a0 * shoaling_coefficient(omega, h) * refraction;
+            const auto [a, height] = amplitude_and_height(set, **shore, {x, 0.0}, kTwoPi / omega);
+            std::printf("oblique %.0f deg, %4.1f m of water: a / linear theory %.4f\n", theta0, h, a / expected);
+            worst = std::max(worst, std::abs(a / expected - 1.0));
+        }
+        std::printf("oblique %.0f deg: worst shoaling and refraction error %.2f%%\n", theta0, 100.0 * worst);
+        EXPECT_LT(worst, 0.10) << theta0;
+    }
+}
+
 // Breaking: the height never exceeds Weggel's (1972) breaker index on a 1:50 beach
 // (b(m) = 1.56 / (1 + exp(-19.5 m)) = 0.92 for the lowest waves) + 5 cm; the waves break
 // between 0.7 h and that index, and the surf zone's heights fall below the breaker's

@@ -229,6 +229,7 @@ BodyDraws plan_body_draws(const Scene& scene, const BodyBuffers& bodies, double 
         d.lod.x = static_cast<float>(preset.waves().mean_square_slope() +
                                      (still_count > 0 ? still.waves().mean_square_slope() : 0.0));
         d.rivers = rivers;
+        d.rivers.w = static_cast<float>(tidewater::detail::river_bank_ramp_depth(preset.waves()));
         if (into_ocean) use_shore(d, 0);
         if (into_lake) use_shore(d, 1 + static_cast<std::size_t>(river.receiver));
         d.flow = gpu_flow_detail(preset.profile().flow, preset.local_time(time), b.corner);

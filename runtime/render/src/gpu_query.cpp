@@ -253,6 +253,7 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
         params.river_nz = static_cast<std::uint32_t>(river->river->grid.nz);
         params.river_texel = static_cast<float>(river->river->grid.texel);
         params.still = river->still ? 1.0f : 0.0f;
+        params.river_bank_ramp = static_cast<float>(tidewater::detail::river_bank_ramp_depth(river->body->waves()));
         params.flow = detail::gpu_flow_detail(river->body->profile().flow, river->body->local_time(time), zero);
     }
     params.wake_count = static_cast<std::uint32_t>(wake_upload.points.size());

@@ -228,6 +228,11 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
         return i >= 0 && j >= 0 && i < g.nx && j < g.nz && !std::isnan(psi[g.index(i, j)]);
     };
     auto flowing = [&](int i, int j) { return has(i, j) && problem.cell[g.index(i, j)] == FlowCell::wet; };
+    // The current is h u over a depth no shallower than a share of the section's deepest
+    // (its surface over its bed): the waterline's texels hold almost no water, and the
+    // floor is the river's own depth, not a length of its own.
+    std::vector<double> section_depth(river.along.size());
+    for (std::size_t k = 0; k < section_depth.size(); ++k) section_depth[k] = river.surface[k] - river.bed[k];
     auto next_to_land = [&](int i, int j) {
         for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
             const int a = i + di, b = j + dj;
@@ -273,7 +278,10 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
             river.discharge_x[t] = static_cast<float>(qx);
             river.discharge_z[t] = static_cast<float>(qz);
             if (wet) {
-                const double h = std::max(static_cast<double>(problem.depth[t]), 0.05);
+                const double floor =
+                    kShallowestCurrentDepth *
+                    at_along(river.along, section_depth, std::min(static_cast<double>(frame.along[t]), mouth));
+                const double h = std::max(static_cast<double>(problem.depth[t]), floor);  // wet: depth > 0
                 double ux = qx / h, uz = qz / h;
                 // At the waterline the staircase of texels bends the discrete contours of psi;
                 // the current there keeps the no-flux condition: nothing across the bank,

@@ -95,8 +95,10 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
             section[k][j] = in.terrain->height_at(samples.points[k] + offset * across);
             low = std::min(low, section[k][j]);
         }
-        // A carved channel follows the terrain on its line; a natural one its lowest point.
-        lowest[k] = in.carve ? section[k][kSectionSamples / 2] : low;
+        // The surface can stand no higher than the section's lowest ground: where the
+        // ground falls across the channel (a path along a hillside) water above it would
+        // spill over the low bank, and a carved channel would be a sheet over the high side.
+        lowest[k] = low;
     }
     // The bed follows the terrain downhill and never rises: a running minimum.
     std::vector<double> bed(n);

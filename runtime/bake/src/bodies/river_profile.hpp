@@ -33,6 +33,9 @@ inline constexpr double kMouthRampSlope = 0.15;
 inline constexpr double kIslandFreeboard = 1.0;
 /// The fewest texels a knoll must cover to stay: smaller ones are shaved with the channel.
 inline constexpr int kIslandMinimumTexels = 4;
+/// The current is the depth-integrated current over a depth no shallower than this share
+/// of its section's deepest (next to the waterline the water column vanishes).
+inline constexpr double kShallowestCurrentDepth = 0.1;
 /// The gentlest slope Manning's formula is given (pools and flat reaches).
 inline constexpr double kMinimumSlope = 1e-4;
 

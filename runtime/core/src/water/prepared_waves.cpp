@@ -73,11 +73,16 @@ template <typename Scalar>
 PreparedWaves<Scalar> prepare_river_waves(const WaveSet& set, double local_time, double level, double mean_speed) {
     PreparedWaves<Scalar> p = prepare_waves<Scalar>(set, local_time, level);
     for (std::size_t i = 0; i < p.count; ++i) p.offset[i] = wrap_angle(p.offset[i] - p.kx[i] * mean_speed * local_time);
+    p.bank_ramp_depth = river_bank_ramp_depth(set);
     return p;
 }
 
 template PreparedWaves<float> prepare_river_waves<float>(const WaveSet&, double, double, double);
 template PreparedWaves<double> prepare_river_waves<double>(const WaveSet&, double, double, double);
+
+double river_bank_ramp_depth(const WaveSet& waves) {
+    return 2.0 * waves.max_elevation() / static_cast<double>(gpu::kRiverBankBreakerIndex);
+}
 
 std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed) {
     const PreparedWaves<double> p = prepare_river_waves<double>(waves, local_time, 0.0, mean_speed);

@@ -29,6 +29,7 @@ struct PreparedWaves {
     double radius = 0.0;      ///< newton_radius(max_offset), m
     double level = 0.0;       ///< rest water level added to heights, m
     double whitecap_jacobian = kDefaultWhitecapJacobian;  ///< the body's J*, where its crest foam turns on
+    double bank_ramp_depth = 0.0;  ///< a river's: the depth its waves die out over (river_bank_ramp_depth), m
 };
 
 template <typename Scalar>

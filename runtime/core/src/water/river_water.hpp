@@ -7,7 +7,7 @@
 // K = k_s t + k_n n, with t the downstream tangent there and n = (-t_z, t_x) the left
 // normal; its phase is the one formed at the query point (in channel coordinates, with
 // the Doppler shift of the river's mean speed, see prepare_river_waves) plus K . e.
-// Its amplitude dies out over the last kRiverBankRampDepth of water, like the shore's,
+// Its amplitude dies out over the last PreparedWaves::bank_ramp_depth of water, like the shore's,
 // and over a blend width of the still water it runs into, whose own waves take over.
 // The river's falling surface is one more term of the sums: its height above the mouth
 // level adds to eta and its gradient to the slope (0 through the plume, whose still
@@ -40,7 +40,13 @@ class RiverWater {
     /// [wave * kLanes + lane]; (px, pz) are the query points, world m.
     RiverWater(const PreparedWaves<Scalar>& waves, const RiverBake& river, const double* px, const double* pz,
                const Scalar* base)
-        : w_(waves), river_(river), px_(px), pz_(pz), base_(base) {}
+        : ramp_depth_(constant<T>(waves.bank_ramp_depth)),
+          inv_ramp_depth_(constant<T>(waves.bank_ramp_depth > 0.0 ? 1.0 / waves.bank_ramp_depth : 0.0)),
+          w_(waves),
+          river_(river),
+          px_(px),
+          pz_(pz),
+          base_(base) {}
 
     template <bool kVelocity>
     SurfaceSums<T> evaluate(const T& ex, const T& ez) {
@@ -121,8 +127,7 @@ class RiverWater {
     }
 
     static constexpr std::size_t kFields = gpu::kRiverQueryStride + 2;
-    const T ramp_depth_ = constant<T>(static_cast<double>(gpu::kRiverBankRampDepth));
-    const T inv_ramp_depth_ = constant<T>(1.0 / static_cast<double>(gpu::kRiverBankRampDepth));
+    const T ramp_depth_, inv_ramp_depth_;
     const PreparedWaves<Scalar>& w_;
     const RiverBake& river_;
     const double* px_;

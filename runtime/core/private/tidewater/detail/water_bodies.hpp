@@ -150,6 +150,11 @@ struct RiverWaveAt {
 /// `waves` of a river's preset at the body's local time.
 std::vector<RiverWaveAt> river_waves_at(const WaveSet& waves, double local_time, double mean_speed);
 
+/// The depth over which a river's `waves` die out toward its banks, m: the depth their
+/// highest crest-to-trough height (2 sum(a)) breaks in, 2 sum(a) / kRiverBankBreakerIndex
+/// (host_device.h); 0 for no waves.
+double river_bank_ramp_depth(const WaveSet& waves);
+
 /// Packs what the water evaluation samples (RiverBake::query_texels) from the river's
 /// surface, depth and tangent fields and the weights of its waves and the still water's.
 void pack_query_texels(RiverBake& river, const std::vector<float>& river_weight,
