@@ -16,6 +16,9 @@ inline constexpr double kReachTexels = 3.0;
 /// section is not a clean crossing (a confluence, an island's tip, a sheet of water a
 /// millimetre deep on a steep reach), and it is left nearer as it was.
 inline constexpr double kMostScale = 1.1;
+/// A section across an island crosses four waterlines, not two, each next to ground as
+/// steep as the island's sides: it may be scaled further.
+inline constexpr double kMostScaleAcrossIsland = 1.5;
 /// Sections a texel along the channel: a texel's current weighs in the sections within
 /// a texel of it, so the scales are taken finer than that.
 inline constexpr double kSectionsPerTexel = 4.0;
@@ -24,7 +27,7 @@ inline constexpr int kPasses = 3;
 
 }  // namespace
 
-SectionDischarge section_discharge(const RiverBake& river, double along) {
+SectionDischarge section_discharge(const RiverBake& river, const std::vector<FlowCell>& cells, double along) {
     const FieldGrid& g = river.grid;
     const std::vector<double>& a = river.along;
     const auto above = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
@@ -45,6 +48,7 @@ SectionDischarge section_discharge(const RiverBake& river, double along) {
         out.field += (g.sample(river.discharge_x, p) * t.x + g.sample(river.discharge_z, p) * t.y) * step;
         int i = 0, j = 0;
         g.texel_of(p, i, j);
+        if (cells[g.index(i, j)] == FlowCell::island) out.crosses_island = true;
         if (!river_water(river.texel[g.index(i, j)])) continue;
         const RiverSample at = sample_river(river, p);  // what the query reads
         if (at.depth > 0.0) out.queried += at.depth * (at.flow_x * t.x + at.flow_z * t.y) * step;
@@ -56,15 +60,19 @@ namespace {
 
 /// Scales the current by each section's field over queried discharge, interpolated
 /// along the channel between sections, `first` + `spacing` m apart; `total` holds each
-/// section's scale so far, which stays within kMostScale of 1 over every pass.
-void scale_once(RiverBake& river, double first, double spacing, std::vector<double>& total) {
+/// section's scale so far, which stays within kMostScale of 1 over every pass
+/// (kMostScaleAcrossIsland where the section crosses an island).
+void scale_once(RiverBake& river, const std::vector<FlowCell>& cells, double first, double spacing,
+                std::vector<double>& total) {
     const std::size_t stations = total.size();
     const double last = river.along.back();
     std::vector<double> scale(stations, 1.0);
     for (std::size_t m = 0; m < stations; ++m) {
-        const SectionDischarge q = section_discharge(river, std::min(first + static_cast<double>(m) * spacing, last));
+        const SectionDischarge q =
+            section_discharge(river, cells, std::min(first + static_cast<double>(m) * spacing, last));
         if (!(q.field > 0.0 && q.queried > 0.0)) continue;
-        const double wanted = std::clamp(total[m] * q.field / q.queried, 1.0 / kMostScale, kMostScale);
+        const double most = q.crosses_island ? kMostScaleAcrossIsland : kMostScale;
+        const double wanted = std::clamp(total[m] * q.field / q.queried, 1.0 / most, most);
         scale[m] = wanted / total[m];
         total[m] = wanted;
     }
@@ -82,13 +90,13 @@ void scale_once(RiverBake& river, double first, double spacing, std::vector<doub
 
 }  // namespace
 
-void match_queried_discharge(RiverBake& river) {
+void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cells) {
     const std::size_t samples = river.centreline.size();
     if (samples < 2 || river.along.size() != samples) return;
     const double first = river.along.front(), last = river.along.back();
     const double spacing = river.grid.texel / kSectionsPerTexel;
     std::vector<double> total(static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1, 1.0);
-    for (int pass = 0; pass < kPasses; ++pass) scale_once(river, first, spacing, total);
+    for (int pass = 0; pass < kPasses; ++pass) scale_once(river, cells, first, spacing, total);
 }
 
 }  // namespace tidewater::detail

@@ -9,6 +9,9 @@
 // integrates to what the h u field does.
 #pragma once
 
+#include <vector>
+
+#include "bodies/stream_function.hpp"
 #include "tidewater/detail/water_bodies.hpp"
 
 namespace tidewater::detail {
@@ -18,14 +21,16 @@ namespace tidewater::detail {
 /// water and the depth is positive).
 struct SectionDischarge {
     double field = 0.0, queried = 0.0;
+    bool crosses_island = false;  ///< through land inside the channel (the stream problem's islands)
 };
-SectionDischarge section_discharge(const RiverBake& river, double along);
+SectionDischarge section_discharge(const RiverBake& river, const std::vector<FlowCell>& cells, double along);
 
 /// Scales `river`'s current (flow_x, flow_z) so that the queried discharge through
 /// sections a quarter texel apart along the centreline is the field's (three passes, by
-/// at most 10 % in all); between sections the scale is interpolated along the channel
+/// at most 10 % in all, 50 % across an island); between sections the scale is interpolated along the channel
 /// (channel_s), past the mouth it is the mouth's. Needs the texels' kinds (mouths
-/// marked), the depth, the h u field and the channel coordinates.
-void match_queried_discharge(RiverBake& river);
+/// marked), the depth, the h u field, the channel coordinates and the stream problem's
+/// cells (its islands).
+void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cells);
 
 }  // namespace tidewater::detail
