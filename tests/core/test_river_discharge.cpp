@@ -5,10 +5,12 @@
 // mouth. A bent river of widths 15 to 40 m on a 0.5 % slope into the sea, 8 texels
 // across where narrowest: without the bake's scaling of the current the query carried
 // 1.5 to 5 % short (river_discharge.hpp); with it, 0.77 % at worst over 162 sections.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "../baked_scene.hpp"
@@ -174,6 +176,61 @@ TEST(RiverDischarge, TheDefaultIslandsBrookAndRillCarryTheirsToTheSea) {
     const DenseScan rill_dense = dense_scan(*scene, 1, [&](double) { return rivers[1].discharge; });
     EXPECT_LT(rill_dense.worst, 0.08);
     EXPECT_LT(rill_dense.share_over_1_percent, 0.05);
+}
+
+// A river has no length or time of its own: a carved river on a sloping plane into the
+// sea, and the same scaled by 10 in length (its discharge by 10^2.5, Manning's n by
+// 10^(1/6), as Froude similarity scales them), give the same depths and currents, as
+// fractions of the scale's length and speed, along and across the channel.
+TEST(RiverDischarge, ARiverScaledByFroudeHasTheSameDepthsAndCurrents) {
+    struct Sample {
+        double depth = 0.0, speed = 0.0;
+    };
+    auto river_at = [](double scale) {
+        const std::string json = fmt::format(
+            R"({{"version": 1, "name": "scaled", "water_level": 0.0, "shore": {{"enabled": false}},
+                "terrain": {{"plane": {{"height": {}, "slope": [-0.01, 0.0], "half_size": {}}}}},
+                "ocean": {{"waves": [{{"direction": 0, "wavelength": {}, "amplitude": {}, "steepness": 0}}]}},
+                "rivers": [{{"name": "r", "path": [[{}, 0], [0, {}], [{}, 0]], "width": [{}, {}, {}],
+                             "discharge": {}, "manning": {}}}]}})",
+            1.0 * scale, 400.0 * scale, 20.0 * scale, 0.1 * scale, -150.0 * scale, 30.0 * scale, 180.0 * scale,
+            8.0 * scale, 14.0 * scale, 12.0 * scale, 2.0 * std::pow(scale, 2.5), 0.03 * std::pow(scale, 1.0 / 6.0));
+        auto scene = test::baked(parse_scene(json, "scaled.json"));
+        std::vector<Sample> out;
+        EXPECT_TRUE(scene.ok()) << scene.error().message;
+        if (!scene.ok()) return out;
+        std::vector<glm::dvec2> points;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = -3; j <= 3; ++j) {
+                const double x = -140.0 + 7.0 * i;  // at 1:1, along the river's two reaches
+                const double z = 30.0 * (1.0 - std::abs(x) / (x < 0.0 ? 150.0 : 180.0)) + 1.2 * j;
+                points.push_back(glm::dvec2(x, z) * scale);
+            }
+        std::vector<WorldPoint> q(points.size());
+        EXPECT_TRUE(query_world(*scene, 0.0, points, q).ok());
+        for (const WorldPoint& o : q)
+            out.push_back({o.body.kind == BodyKind::river ? o.surface.depth / scale : -1.0,
+                           glm::length(o.flow) / std::sqrt(scale)});
+        return out;
+    };
+    const std::vector<Sample> small = river_at(1.0), large = river_at(10.0);
+    ASSERT_EQ(small.size(), large.size());
+    double deepest = 0.0, fastest = 0.0, depth_error = 0.0, speed_error = 0.0;
+    int in_river = 0;
+    for (std::size_t k = 0; k < small.size(); ++k) {
+        ASSERT_EQ(small[k].depth < 0.0, large[k].depth < 0.0) << "point " << k << " is in one river only";
+        if (small[k].depth < 0.0) continue;
+        ++in_river;
+        deepest = std::max(deepest, small[k].depth);
+        fastest = std::max(fastest, small[k].speed);
+        depth_error = std::max(depth_error, std::abs(large[k].depth - small[k].depth));
+        speed_error = std::max(speed_error, std::abs(large[k].speed - small[k].speed));
+    }
+    std::printf("%d points in the river: depth within %.3g of %.3f m, speed within %.3g of %.3f m/s (at 1:1)\n",
+                in_river, depth_error, deepest, speed_error, fastest);
+    EXPECT_GT(in_river, 200);
+    EXPECT_LT(depth_error, 0.01 * deepest);
+    EXPECT_LT(speed_error, 0.01 * fastest);
 }
 
 }  // namespace

@@ -210,6 +210,14 @@ Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& ri
     return c;
 }
 
+/// Each centreline sample's section depth, its surface over its bed, m: the river's own
+/// depth, which the shallowest depths the stream solve and the current take are shares of.
+std::vector<double> section_depths(const RiverBake& river) {
+    std::vector<double> depth(river.along.size());
+    for (std::size_t k = 0; k < depth.size(); ++k) depth[k] = river.surface[k] - river.bed[k];
+    return depth;
+}
+
 /// The depth-integrated current h u = (-d psi/dz, d psi/dx) and the current u on the wet
 /// texels from the solved stream function; returns the summed depth of the river's own
 /// texels (its wet area over texel^2).
@@ -231,8 +239,7 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
     // The current is h u over a depth no shallower than a share of the section's deepest
     // (its surface over its bed): the waterline's texels hold almost no water, and the
     // floor is the river's own depth, not a length of its own.
-    std::vector<double> section_depth(river.along.size());
-    for (std::size_t k = 0; k < section_depth.size(); ++k) section_depth[k] = river.surface[k] - river.bed[k];
+    const std::vector<double> section_depth = section_depths(river);
     auto next_to_land = [&](int i, int j) {
         for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
             const int a = i + di, b = j + dj;
@@ -315,12 +322,14 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     FieldGrid& g = river.grid;
     const ChannelFrame frame = nearest_on_line(g, channel->line, along, channel->reach);
     const MonotoneCubic surface_at(river.along, river.surface);
+    const std::vector<double> section_depth = section_depths(river);
 
     StreamProblem problem;
     problem.grid = g;
     problem.cell.assign(g.size(), FlowCell::open_end);
     problem.depth.assign(g.size(), 0.0f);
     problem.bank_value.assign(g.size(), 0.0);
+    problem.shallowest_face.assign(g.size(), 0.0f);
     std::vector<std::uint8_t> dry_inside(g.size(), 0), still(g.size(), 0);
     river.texel.assign(g.size(), static_cast<std::uint8_t>(RiverTexel::none));
     river.surface_height.assign(g.size(), 0.0f);
@@ -342,11 +351,15 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
             const bool plume = s > mouth;
             surface[t] = plume ? river.surface.back() : surface_at(s);
             ground_at[t] = in.terrain->height_at(g.center(i, j));
+            problem.shallowest_face[t] =
+                static_cast<float>(kShallowestCurrentDepth * at_along(river.along, section_depth, std::min(s, mouth)));
             // Clear of the banks by a texel: a knoll must be ringed by these.
             const bool inside =
                 frame.beyond[t] == 0 && !plume && std::abs(n) < 0.5 * at_along(along, width, s) - g.texel;
             clear[t] = inside ? 1 : 0;
-            standing[t] = in.carve && inside && ground_at[t] > surface[t] + kIslandFreeboard ? 1 : 0;
+            // Ground standing several channel depths above the surface is a knoll, not a bump to cut.
+            const double freeboard = kIslandFreeboard * at_along(river.along, in.centre_depth, std::min(s, mouth));
+            standing[t] = in.carve && inside && ground_at[t] > surface[t] + freeboard ? 1 : 0;
         }
     const std::vector<std::uint8_t> knoll = knolls(g, standing, clear);
     for (int j = 0; j < g.nz; ++j)

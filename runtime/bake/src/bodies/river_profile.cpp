@@ -21,9 +21,16 @@ glm::dvec2 tangent_at(const CentrelineSamples& s, std::size_t k) {
     return d / std::sqrt(d.x * d.x + d.y * d.y);
 }
 
-/// Bisection for the root of a function increasing in x over [lo, hi].
+/// The root above `from` of a function increasing in x, negative at `from`: its bracket
+/// grows from `scale` (a length of the problem's own: a section's width) by doubling,
+/// then bisection. No length of its own: a flume's millimetres and a delta's metres alike.
 template <typename F>
-double increasing_root(F f, double lo, double hi) {
+double increasing_root_above(F f, double from, double scale) {
+    double lo = from, hi = from + scale;
+    for (int grow = 0; grow < 64 && f(hi) < 0.0; ++grow) {
+        lo = hi;
+        hi = from + 2.0 * (hi - from);
+    }
     for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
         (f(mid) < 0.0 ? lo : hi) = mid;
@@ -137,7 +144,7 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
                                          in.manning) -
                        in.discharge[k];
             };
-            centre_depth[k] = increasing_root(shape, 1e-3, 500.0);
+            centre_depth[k] = increasing_root_above(shape, 0.0, w);
             shape(centre_depth[k]);
             bed[k] = *std::min_element(carved.begin(), carved.end());
         }
@@ -145,13 +152,13 @@ std::vector<double> bake_profile(const CentrelineSamples& samples, const Profile
         for (std::size_t k = 0; k < n; ++k) {
             slope[k] = slope_of(bed, k);
             const double dn = samples.width[k] / (kSectionSamples - 1.0);
-            surface[k] = increasing_root(
+            surface[k] = increasing_root_above(
                 [&](double eta) {
                     return manning_discharge(section[k].data(), static_cast<int>(kSectionSamples), dn, eta, slope[k],
                                              in.manning) -
                            in.discharge[k];
                 },
-                bed[k], bed[k] + 500.0);
+                bed[k], samples.width[k]);
         }
         for (std::size_t k = 1; k < n; ++k) surface[k] = std::min(surface[k], surface[k - 1]);
         meet_mouth(surface);

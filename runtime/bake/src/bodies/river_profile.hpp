@@ -28,9 +28,10 @@ inline constexpr double kCarvedBankSlope = 0.5;
 /// The steepest a surface falls into the body it ends in (vertical / horizontal): a
 /// mountain stream's 15%, so steep rivers keep their fall and a berm at the mouth is cut.
 inline constexpr double kMouthRampSlope = 0.15;
-/// Ground inside a carved channel that stands this far above the surface and clear of
-/// both banks is a knoll the river goes round (an island), not terrain to cut, m.
-inline constexpr double kIslandFreeboard = 1.0;
+/// Ground inside a carved channel that stands this many times the channel's centre depth
+/// above the surface and clear of both banks is a knoll the river goes round (an
+/// island), not terrain to cut.
+inline constexpr double kIslandFreeboard = 4.0;
 /// The fewest texels a knoll must cover to stay: smaller ones are shaved with the channel.
 inline constexpr int kIslandMinimumTexels = 4;
 /// The current is the depth-integrated current over a depth no shallower than this share

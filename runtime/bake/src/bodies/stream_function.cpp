@@ -11,10 +11,6 @@ namespace tidewater::detail {
 
 namespace {
 
-/// The depth a face conducts through is never taken below this, m: the bank texel's
-/// water column is a fraction of a texel and 1/h must stay bounded.
-constexpr double kMinimumFaceDepth = 0.02;
-
 constexpr int kDi[4] = {1, -1, 0, 0};
 constexpr int kDj[4] = {0, 0, 1, -1};
 
@@ -72,7 +68,10 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(static_cast<std::size_t>(count) * 5);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(total);
-    auto face = [](double ha, double hb) { return 1.0 / std::max(0.5 * (ha + hb), kMinimumFaceDepth); };
+    auto face = [&](std::size_t a, std::size_t b, double ha, double hb) {
+        const double floor = static_cast<double>(std::max(p.shallowest_face[a], p.shallowest_face[b]));
+        return 1.0 / std::max(0.5 * (ha + hb), floor);
+    };
     for (int j = 0; j < g.nz; ++j)
         for (int i = 0; i < g.nx; ++i) {
             const std::size_t t = g.index(i, j);
@@ -86,13 +85,13 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
                 switch (p.cell[n]) {
                     case FlowCell::wet: {
                         if (unknown[n] < 0) break;
-                        const double c = face(ha, p.depth[n]);
+                        const double c = face(t, n, ha, p.depth[n]);
                         entries.emplace_back(row, row, c);
                         entries.emplace_back(row, unknown[n], -c);
                         break;
                     }
                     case FlowCell::bank: {
-                        const double c = face(ha, 0.0);
+                        const double c = face(t, n, ha, 0.0);
                         entries.emplace_back(row, row, c);
                         rhs[row] += c * p.bank_value[n];
                         break;
@@ -100,7 +99,7 @@ Result<StreamSolution> solve_stream_function(const StreamProblem& p) {
                     case FlowCell::island: {
                         // The island's row gathers these same faces: its net flux is zero,
                         // which is no net circulation around it.
-                        const double c = face(ha, 0.0);
+                        const double c = face(t, n, ha, 0.0);
                         const int isl = count + p.island_of[n];
                         entries.emplace_back(row, row, c);
                         entries.emplace_back(row, isl, -c);

@@ -30,6 +30,10 @@ struct StreamProblem {
     std::vector<double> bank_value;  ///< psi on bank texels, m^3/s
     std::vector<int> island_of;      ///< island index on island texels
     int islands = 0;
+    /// m per texel: the depth a face conducts through is never taken below the larger of
+    /// its two texels' (next to a bank the water column is a fraction of a texel, and 1/h
+    /// must stay bounded); a share of the river's own depth there, no length of its own.
+    std::vector<float> shallowest_face;
 };
 
 struct StreamSolution {
