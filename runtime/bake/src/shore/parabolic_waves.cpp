@@ -216,6 +216,8 @@ class Marcher {
 
     void advance(const RowMedium& here, const RowMedium& next, double dx);
 
+    /// The sea's rms height along the row the next step leaves (empty: none given).
+    std::vector<float> sea_height;
     std::vector<Complex> a;
     std::vector<char> broken;
 
@@ -233,7 +235,8 @@ class Marcher {
 
 Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx) {
     const double h = here.h[j];
-    const double height = 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
+    const double own = 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
+    const double height = !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j]) : own;
     const double depth = 0.5 * (h + next.h[j]);
     const double ursell = kGravity * height * period_ * period_ / (depth * depth);
     const bool shoals_nonlinearly = in_.nonlinear_shoaling && here.wet[j] && next.h[j] < h && ursell >= kShutoUrsell;
@@ -345,7 +348,9 @@ void march_parabolic(const ParabolicInput& in, const std::function<void(const Pa
     Marcher m(in);
     m.enter(here);
     row_done({0, m.a, m.broken});
+    if (in.sea_height_row) m.sea_height.resize(un);
     for (int step = 0; step + 1 < g.steps; ++step) {
+        if (in.sea_height_row) in.sea_height_row(step, m.sea_height);
         in.depth_row(step + 1, next_depths);
         fill_row_medium(in, next_depths, next);
         const int parts = m.substeps(here, g.dx);

@@ -56,6 +56,11 @@ struct ParabolicInput {
     /// say, a share Q_b of its waves broken at any point, instead of as one regular wave
     /// (Weggel's onset, Dally's decay).
     bool random_sea = false;
+    /// Where the sea has been marched as a whole (march_sea), its rms height there (m; <= 0
+    /// where it was not: the component's height times sea_over_component stands in), `across`
+    /// values a row, called once a row, rows in order: every component breaks and shoals
+    /// nonlinearly at the sea's own height, not at its own estimate of it.
+    std::function<void(int step, std::span<float> height)> sea_height_row;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation
     bool nonlinear_shoaling = true;    ///< false: linear shoaling only

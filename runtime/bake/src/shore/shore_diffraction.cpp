@@ -5,10 +5,12 @@
 #include <complex>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <utility>
 
 #include "shore/fast_marching.hpp"
 #include "shore/parabolic_waves.hpp"
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/dispersion.hpp"
 
 namespace tidewater::detail {
@@ -126,7 +128,7 @@ SeaState sea_state(std::span<const Wave> waves) {
 }
 
 DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
-                             const std::function<bool(std::size_t)>& keep) {
+                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height) {
     const std::size_t count = static_cast<std::size_t>(field.resolution) * static_cast<std::size_t>(field.resolution);
     DiffractedWave out;
     out.share.assign(count, 0);
@@ -158,6 +160,13 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
     in.sea_period = sea.mean_period;
     in.random_sea = sea.components > 1;
+    if (in.random_sea && sea_height != nullptr)
+        in.sea_height_row = [&](int step, std::span<float> height) {
+            const double x = x_start + step * frame.spacing;
+            for (std::size_t j = 0; j < height.size(); ++j)
+                height[j] = static_cast<float>(
+                    sea_height->at(frame.world(x, frame.y0 + static_cast<double>(j) * frame.spacing)));
+        };
 
     KeptRow before, after;
     const double s = frame.spacing;
@@ -190,6 +199,45 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
         }
         std::swap(before, after);
     });
+    return out;
+}
+
+double SeaHeight::at(glm::dvec2 p) const {
+    if (field == nullptr || height.empty()) return 0.0;
+    const GridTaps taps = grid_taps(field->corner, field->texel, field->resolution, field->resolution, p);
+    double sum = 0.0, weight = 0.0;
+    for (const auto& [k, w] : {std::pair{taps.k00, taps.w00}, std::pair{taps.k10, taps.w10},
+                               std::pair{taps.k01, taps.w01}, std::pair{taps.k11, taps.w11}}) {
+        if (!(height[k] > 0.0f) || w <= 0.0) continue;
+        sum += w * static_cast<double>(height[k]);
+        weight += w;
+    }
+    return weight > 0.0 ? sum / weight : 0.0;
+}
+
+SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> grid) {
+    SeaHeight out;
+    if (!grid) return out;
+    const ShoreField& field = *grid;
+    out.field = std::move(grid);
+    glm::dvec2 heading(0.0);
+    for (const Wave& w : waves) heading += w.amplitude * w.amplitude * glm::dvec2(w.dir_x, w.dir_z);
+    const double length = glm::length(heading);
+    if (sea.components < 2 || !(sea.mean_period > 0.0) || !(length > 0.0)) return out;
+    Wave whole;
+    whole.dir_x = heading.x / length;
+    whole.dir_z = heading.y / length;
+    whole.omega = kTwoPi / sea.mean_period;
+    whole.k = whole.omega * whole.omega / kGravity;
+    whole.amplitude = std::sqrt(sea.energy);
+    // Deep water for the sea's mean wave is the open sea's: nothing breaks there.
+    const DiffractedWave marched = diffract_wave(whole, sea, field, [&](std::size_t k) {
+        return static_cast<double>(field.depth.values()[k]) * whole.k >= kDeepKh;
+    });
+    out.height.assign(marched.amplitude.size(), 0.0f);
+    for (std::size_t k = 0; k < out.height.size(); ++k)
+        if (marched.share[k] > 0)
+            out.height[k] = static_cast<float>(2.0 * whole.amplitude * static_cast<double>(marched.amplitude[k]));
     return out;
 }
 

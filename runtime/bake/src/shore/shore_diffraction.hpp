@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <glm/vec2.hpp>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -38,10 +40,26 @@ struct DiffractedWave {
     double share_of(std::size_t k) const { return share[k] / 255.0; }
 };
 
+/// A random sea marched as a whole: one wave of its mean period and energy-weighted mean
+/// direction carrying all its energy (amplitude sqrt(sum A^2), so twice its amplitude is
+/// the sea's H_rms), broken as Battjes and Janssen say. Its rms height per texel of the
+/// grid it was marched on (m; 0 on land, in deep water and where the march did not
+/// reach). Battjes and Janssen's balance is of the sea's energy: a component that judged
+/// the sea by its own amplitude (scaled as the sea's was where they entered) shoaled and
+/// turned with its own period and direction, and the spectrum as a whole broke too little.
+struct SeaHeight {
+    std::shared_ptr<const ShoreField> field;
+    std::vector<float> height;
+    /// At a world point: bilinear over the texels that have a height, 0 where none has.
+    double at(glm::dvec2 p) const;
+};
+SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field);
+
 /// Marches `wave` over `field` along its direction; texels where `keep` holds (deep water,
-/// where the open sea's fields stand) and land are left at share 0.
+/// where the open sea's fields stand) and land are left at share 0. With `sea_height`,
+/// the component breaks at the sea's marched height (a random sea).
 DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
-                             const std::function<bool(std::size_t)>& keep);
+                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height = nullptr);
 
 /// The march holds a wave's amplitude fully within this angle of its direction and not
 /// past the second (the small-angle form's wavenumber along the march is 1.6 % off at 35

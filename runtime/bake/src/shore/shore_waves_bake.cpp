@@ -529,6 +529,17 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         std::vector<std::size_t> run_of(nw);
         for (std::size_t r = 0; r < runs.size(); ++r)
             for (std::size_t w = runs[r].first; w < runs[r].first + runs[r].count; ++w) run_of[w] = r;
+        // A random sea breaks as a whole: marched once as one wave, on the grid of the run
+        // whose waves' periods are nearest its mean period (its wavelength needs no finer),
+        // its height is where every component breaks.
+        std::optional<detail::SeaHeight> sea_height;
+        if (options.diffraction && sea.components > 1) {
+            std::size_t nearest = 0;
+            for (std::size_t w = 1; w < nw; ++w)
+                if (std::abs(waves[w].period() - sea.mean_period) < std::abs(waves[nearest].period() - sea.mean_period))
+                    nearest = w;
+            sea_height = detail::march_sea(waves, sea, runs[run_of[nearest]].field);
+        }
         std::atomic<std::size_t> waves_done{0};
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
         // The shortest waves first: their runs lie on the finest grids, whose marches take
@@ -548,10 +559,13 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                 std::optional<detail::DiffractedWave> diffracted;
                 if (run.diffraction) {
                     const ShoreField& f = *run.field;
-                    diffracted = detail::diffract_wave(waves[w], sea, f, [&](std::size_t k) {
-                        return !std::isfinite(m.phase[k]) ||
-                               (m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(f.depth[k])));
-                    });
+                    diffracted = detail::diffract_wave(
+                        waves[w], sea, f,
+                        [&](std::size_t k) {
+                            return !std::isfinite(m.phase[k]) ||
+                                   (m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(f.depth[k])));
+                        },
+                        sea_height ? &*sea_height : nullptr);
                 }
                 wave_rows(waves[w], *run.field, m, diffracted ? &*diffracted : nullptr, w - run.first, run.plan,
                           run.diffraction.get());
