@@ -311,6 +311,52 @@ double current_from_psi(const ChannelInputs& in, const StreamProblem& problem, c
     return area_sum;
 }
 
+/// The dry texels beside the river's own water (banks and islands alongside the channel)
+/// are the river's too: a point belongs to the texel nearest it, and within half a texel
+/// of a bank the water is still up to 0.4 of the channel's depth. The query and the draw
+/// then find the river out to its bilinear waterline; the texels keep no current (their
+/// water column is none), so the current there is the wet neighbours'.
+void claim_bank_ring(const ChannelInputs& in, const FieldGrid& g, const StreamProblem& problem,
+                     const ChannelFrame& frame, double mouth, RiverBake& river) {
+    // Ground under the water of the river this one joins, or cut by a river baked before,
+    // is that river's.
+    auto joined = [&](glm::dvec2 p) {
+        if (in.terrain->height_at(p) < in.terrain->shape_height_at(p)) return true;
+        if (!in.receiver_river || !in.receiver_river->grid.contains(p)) return false;
+        int a = 0, b = 0;
+        in.receiver_river->grid.texel_of(p, a, b);
+        return in.receiver_river->texel[in.receiver_river->grid.index(a, b)] !=
+               static_cast<std::uint8_t>(RiverTexel::none);
+    };
+    // Where a tributary comes in, its water there is its own (it is baked after this one):
+    // the bank is left along its width and a texel each side, on its side.
+    auto tributary = [&](std::size_t t) {
+        const double s = frame.along[t], n = frame.across[t];
+        for (const Inflow& f : in.inflows)
+            if (std::abs(s - f.along) < 0.5 * f.width + g.texel && n * f.side > 0.0) return true;
+        return false;
+    };
+    const auto own = static_cast<std::uint8_t>(RiverTexel::river);
+    std::vector<std::size_t> ring;
+    for (int j = 0; j < g.nz; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t t = g.index(i, j);
+            const FlowCell c = problem.cell[t];
+            if (river.texel[t] != static_cast<std::uint8_t>(RiverTexel::none) || frame.beyond[t] != 0 ||
+                static_cast<double>(frame.along[t]) > mouth || (c != FlowCell::bank && c != FlowCell::island) ||
+                tributary(t) || joined(g.center(i, j)))
+                continue;
+            for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+                const int a = i + di, b = j + dj;
+                if (a >= 0 && b >= 0 && a < g.nx && b < g.nz && river.texel[g.index(a, b)] == own) {
+                    ring.push_back(t);
+                    break;
+                }
+            }
+        }
+    for (const std::size_t t : ring) river.texel[t] = own;
+}
+
 }  // namespace
 
 Status bake_channel(const ChannelInputs& in, RiverBake& river) {
@@ -425,6 +471,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     const std::vector<double>& psi = solved->psi;
 
     const double area_sum = current_from_psi(in, problem, psi, frame, mouth, river);
+    claim_bank_ring(in, g, problem, frame, mouth, river);
     std::vector<float> river_weight, still_weight;
     blend_with_still_water(g, still, std::max(mouth_width, 2.0 * g.texel), river.texel, river_weight, still_weight);
     river.channel_s = frame.along;
