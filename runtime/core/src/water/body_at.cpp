@@ -15,12 +15,15 @@ PointBody BodyFinder::find(glm::dvec2 p) const {
             if (!river.grid.contains(p)) continue;
             int i = 0, j = 0;
             river.grid.texel_of(p, i, j);
-            const std::uint8_t texel = river.texel[river.grid.index(i, j)];
+            const std::size_t t = river.grid.index(i, j);
+            const std::uint8_t texel = river.texel[t];
             const int index = static_cast<int>(r);
             if (river_water(texel)) {
+                const RiverSample at = sample_river(river, p);
+                // A dry texel beside the water (a bank) is the river's out to its waterline.
+                if (!(river.depth[t] > 0.0f) && !(at.depth > 0.0)) continue;
                 // Mouth texels blend with the still water: the plume's evaluation answers them.
                 const bool blends = texel == static_cast<std::uint8_t>(RiverTexel::mouth);
-                const RiverSample at = sample_river(river, p);
                 return {
                     {BodyKind::river, index}, {at.flow_x, at.flow_z}, std::nan(""), river_evaluation(index, blends)};
             }
