@@ -18,6 +18,9 @@ namespace {
 
 /// The largest river grid, texels per side.
 constexpr int kMaxRiverGrid = 4096;
+/// Texels the channel runs on above its source: more than a bilinear tap's reach (a
+/// texel's diagonal), so every tap of the source's section is water.
+constexpr double kSourceHeadTexels = 2.0;
 
 /// Where each texel lies relative to the centreline: its nearest point on it.
 struct ChannelFrame {
@@ -173,6 +176,17 @@ Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& ri
     std::vector<double>& along = c.along;
     std::vector<double>& width = c.width;
     std::vector<double>& reach = c.reach;
+    // The channel begins a head of kSourceHeadTexels before its source: the texels up to
+    // two texels above the source are then water carrying the whole discharge, so
+    // the source's section, sampled bilinearly, carries it too.
+    {
+        const glm::dvec2 d = line[1] - line[0];
+        const glm::dvec2 t = d / std::sqrt(d.x * d.x + d.y * d.y);
+        const double head = kSourceHeadTexels * in.texel;
+        line.insert(line.begin(), line.front() - head * t);
+        along.insert(along.begin(), along.front() - head);
+        width.insert(width.begin(), width.front());
+    }
     if (in.plume_length > 0.0) {
         const glm::dvec2 d = line.back() - line[line.size() - 2];
         const glm::dvec2 t = d / std::sqrt(d.x * d.x + d.y * d.y);
@@ -208,6 +222,17 @@ Result<ChannelLine> channel_line_and_grid(const ChannelInputs& in, RiverBake& ri
     g.nx = static_cast<int>(nx);
     g.nz = static_cast<int>(nz);
     return c;
+}
+
+/// Whether p lies in the water of the river this one joins: a texel of its water, not
+/// of the dry banks beside it that are its own only where its water reaches them.
+bool in_receiver_water(const ChannelInputs& in, glm::dvec2 p) {
+    const RiverBake* receiver = in.receiver_river;
+    if (receiver == nullptr || !receiver->grid.contains(p)) return false;
+    int a = 0, b = 0;
+    receiver->grid.texel_of(p, a, b);
+    const std::size_t r = receiver->grid.index(a, b);
+    return river_water(receiver->texel[r]) && receiver->depth[r] > 0.0f;
 }
 
 /// Each centreline sample's section depth, its surface over its bed, m: the river's own
@@ -321,12 +346,7 @@ void claim_bank_ring(const ChannelInputs& in, const FieldGrid& g, const StreamPr
     // Ground under the water of the river this one joins, or cut by a river baked before,
     // is that river's.
     auto joined = [&](glm::dvec2 p) {
-        if (in.terrain->height_at(p) < in.terrain->shape_height_at(p)) return true;
-        if (!in.receiver_river || !in.receiver_river->grid.contains(p)) return false;
-        int a = 0, b = 0;
-        in.receiver_river->grid.texel_of(p, a, b);
-        return in.receiver_river->texel[in.receiver_river->grid.index(a, b)] !=
-               static_cast<std::uint8_t>(RiverTexel::none);
+        return in.terrain->height_at(p) < in.terrain->shape_height_at(p) || in_receiver_water(in, p);
     };
     // Where a tributary comes in, its water there is its own (it is baked after this one):
     // the bank is left along its width and a texel each side, on its side.
@@ -446,14 +466,9 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
             }
             bool wet = depth > 0.0;
             if (plume) wet = wet && in.in_receiver && in.in_receiver(p, ground);
-            if (wet && in.receiver_river) {
-                int a = 0, b = 0;
-                in.receiver_river->grid.texel_of(p, a, b);
-                const std::size_t r = in.receiver_river->grid.index(a, b);
-                if (in.receiver_river->grid.contains(p) && river_water(in.receiver_river->texel[r])) {
-                    problem.cell[t] = FlowCell::open_end;  // the river it joins owns this water
-                    continue;
-                }
+            if (wet && in_receiver_water(in, p)) {
+                problem.cell[t] = FlowCell::open_end;  // the river it joins owns this water
+                continue;
             }
             if (wet) {
                 problem.cell[t] = FlowCell::wet;
