@@ -55,6 +55,56 @@ saved_default() {
     grep -q '"bake": "dflt"' default_saved.json
 }
 
+# kill_during MOMENTS OUT REFERENCE COMMAND...: runs COMMAND once to the end (its output
+# OUT, a file or folder, copied to REFERENCE) and times it; then, for each moment, runs it
+# again and kills it with SIGKILL: a number is that share of the first run's time (during
+# the computation), wS is S seconds after OUT's temporary appears (during the writing).
+# After each kill OUT is absent or the previous complete one (equal to REFERENCE, file for
+# file). Then a run to the end succeeds, gives REFERENCE again, and leaves nothing of the
+# killed runs beside OUT, nor a temporary planted as a killed run's (PLANT, default OUT.tmp-,
+# with a gone process's id) where no kill happened to land in the writing. TEMPS, when set,
+# is the glob of the temporaries (frames in OUT).
+# any_exists PATHS...: whether any of them exists (an unmatched glob stays as it is, and does not).
+any_exists() {
+  local p
+  for p in "$@"; do [ -e "$p" ] && return 0; done
+  return 1
+}
+kill_during() {
+  local fractions="$1" out="$2" reference="$3"; shift 3
+  local t0 t1 ms
+  t0=$(date +%s%N)
+  "$@" > /dev/null 2>&1 || { echo "FAIL: $out: the first run failed"; fails=$((fails + 1)); return; }
+  t1=$(date +%s%N)
+  ms=$(( (t1 - t0) / 1000000 ))
+  cp -r "$out" "$reference"
+  local f pid temps="${TEMPS:-$out.tmp-* $out.old-*}"
+  left=0  # kills that left a temporary beside OUT (read by the caller)
+  for f in $fractions; do
+    "$@" > /dev/null 2>&1 &
+    pid=$!
+    case "$f" in
+      w*)
+        while kill -0 "$pid" 2> /dev/null && ! any_exists $temps; do sleep 0.002; done
+        sleep "${f#w}" ;;
+      *) sleep "$(awk -v ms="$ms" -v f="$f" 'BEGIN { printf "%.3f", ms * f / 1000 }')" ;;
+    esac
+    kill -KILL "$pid" 2> /dev/null
+    wait "$pid" 2> /dev/null
+    check "$out killed at $f of ${ms} ms: absent or the previous whole" bash -c "test ! -e '$out' || diff -rq '$out' '$reference'"
+    if any_exists $temps; then left=$((left + 1)); fi
+  done
+  echo "  $out: $left of the kills left a temporary beside it"
+  ( exit 0 ) &
+  local gone=$!
+  wait "$gone"
+  echo "half-written" > "${PLANT:-$out.tmp-}$gone"
+  "$@" > /dev/null 2>&1
+  check "$out: the run after the kills succeeds" test $? -eq 0
+  check "$out: the run after the kills gives the same output" diff -rq "$out" "$reference"
+  check "$out: nothing of the killed runs is left" bash -c "for p in $temps; do test ! -e \"\$p\" || exit 1; done"
+}
+
 case "$CASE" in
   help)
     for verb in query bench demo; do
@@ -407,6 +457,32 @@ JSON
     expect_error "missing bake folder" "nowhere" "$TW" query --scene missing_bake.json --points points.csv --time 0
     sed 's|"bake": "baked"|"bake": "baked", "resolution": 64|' loads_bake.json > both.json
     expect_error "bake and resolution together" "/shore/bake" "$TW" query --scene both.json --points points.csv --time 0
+    ;;
+  kills)
+    # Every verb that writes, killed during its computation and during its writing.
+    kill_during "0.2 0.6 w0 w0.1 w0.4" baked baked.ref "$TW" bake --resolution 256 --out baked --quiet
+    check "a bake killed while writing left its temporary folder, and the next bake removed it" test "$left" -gt 0
+    awk 'BEGIN { print "x,z"; for (k = 0; k < 200000; k++) printf "%d,%d\n", (k * 37) % 1400 - 700, (k * 53) % 1400 - 700 }' > many.csv
+    kill_during "0.2 0.6 w0 w0.1" many_out.csv many_ref.csv "$TW" query --points many.csv --time 2 --out many_out.csv
+    cat > river.json <<'JSON'
+{ "version": 1, "name": "mill", "water_level": 0.0, "shore": { "enabled": false },
+  "terrain": { "plane": { "height": 20.0, "slope": [-0.01, 0.0] } }, "ocean": "ocean_rolling",
+  "rivers": [ { "name": "mill", "path": [[-1500, 0], [2300, 0]], "width": 20, "discharge": 30.0 } ] }
+JSON
+    kill_during "0.2 0.6 w0 w0.05" track.csv track_ref.csv "$TW" drift --scene river.json --start=-1000,0 --duration 600 --dt 0.02 --out track.csv
+    if "$TW" fit --help > /dev/null 2>&1; then
+      echo '{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -500}}, "shore": {"enabled": false}, "ocean": "ocean_rolling"}' > deep.json
+      printf 'x,z\n0,0\n' > gauge.csv
+      "$TW" query --scene deep.json --points gauge.csv --times 0:600:0.25 --out series.csv
+      kill_during "0.2 0.6 w0" fitted.json fitted_ref.json "$TW" fit --data series.csv --column z=height --waves 6 --preset fitted.json --quiet
+    fi
+    if ! "$TW" inspect --time 0 2>&1 | grep -q "no inspector"; then
+      kill_during "0.2 0.6 w0 w0.1" series series.ref "$TW" inspect --resolution 96x96 --extent=-500:500,-400:400 --times 0:10:0.5 --export series --quiet
+    fi
+    if "$TW" render --help > /dev/null 2>&1; then
+      check "the default scene bakes to a folder" saved_default
+      TEMPS="seq/frame_*.png.tmp-*" PLANT="seq/frame_0002.png.tmp-" kill_during "0.3 0.6 w0 w0.2" seq seq.ref "$TW" render --scene default_saved.json --size 96x54 --frames 4 --fps 10 --out-dir seq
+    fi
     ;;
   clip_texture)
     # A ring (a torus 3.5 m round, its tube 1.5 m thick) as an OBJ, baked into a distance texture.

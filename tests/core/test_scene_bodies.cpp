@@ -1,8 +1,12 @@
 // Lakes and rivers in scene files: what loads, what is refused (with the file and JSON
 // path), and a lake's extent as baked.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tidewater/detail/water_bodies.hpp"
@@ -12,6 +16,8 @@
 
 namespace tidewater {
 namespace {
+
+namespace fs = std::filesystem;
 
 /// A bowl around the origin: 30 m at its rim, 10 m at the bottom, under an ocean far below.
 std::string scene_with(const std::string& bodies,
@@ -109,6 +115,33 @@ TEST(SceneBodies, ALakeFillsItsBasinAndRefusesToSpill) {
     EXPECT_NE(refused.error().message.find("/lakes/0/at: the terrain there is 0.00 m, not under the lake's level -1 m"),
               std::string::npos)
         << refused.error().message;
+}
+
+TEST(SceneBodies, ABakeErrorNamesTheSceneFileEvenWithoutAName) {
+    // A scene with no "name", read from a file: what the bake finds wrong names the file.
+    const fs::path dir = fs::temp_directory_path() / fmt::format("tidewater_unnamed_{}", ::getpid());
+    fs::create_directories(dir);
+    const fs::path file = dir / "unnamed.json";
+    {
+        std::ofstream out(file);
+        out << R"({ "version": 1, "water_level": 0.0, "ocean": "ocean_rolling", "shore": { "enabled": false },
+          "terrain": { "plane": { "height": 0.0, "slope": [0.0, 0.0] } },
+          "lakes": [ { "name": "high", "level": -1.0, "at": [0, 0] } ] })";
+    }
+    auto scene = load_scene(file);
+    fs::remove_all(dir);
+    ASSERT_TRUE(scene) << scene.error().message;
+    EXPECT_EQ(scene->source, file.string());
+    auto refused = bake_scene(*scene);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.error().message.rfind(file.string() + ": /lakes/0/at: the terrain there is 0.00 m", 0), 0u)
+        << refused.error().message;
+    // A scene built in code has no file: its name, else "the scene".
+    Scene built = *scene;
+    built.source.clear();
+    EXPECT_EQ(scene_label(built), "the scene");
+    built.name = "pond";
+    EXPECT_EQ(scene_label(built), "scene \"pond\"");
 }
 
 TEST(SceneBodies, BakingReportsProgressToTheEndAndReBakingDoesNotCutTwice) {

@@ -1,13 +1,14 @@
 #include "atomic_file.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
+
+#include "tidewater/detail/atomic_sibling.hpp"
 
 namespace tidewater::cli {
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-    temp_ = target_;
-    temp_ += fmt::format(".tmp-{}", ::getpid());
+    detail::sweep_stale_siblings(target_);
+    temp_ = detail::temporary_sibling(target_);
     out_.open(temp_, std::ios::binary | std::ios::trunc);
     if (!out_) status_ = Error{ErrorCode::io_error, fmt::format("{}: cannot create file", target_.string())};
 }

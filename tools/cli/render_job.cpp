@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "tidewater/detail/atomic_sibling.hpp"
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/image_write.hpp"
 #include "tidewater/render/offscreen.hpp"
@@ -107,6 +108,7 @@ Result<RenderResult> run_render_job(const Scene& scene, const RenderJob& job) {
             job.frames == 1 && !job.single_output.empty()
                 ? job.single_output
                 : (std::filesystem::path(job.output_dir) / fmt::format("frame_{:04}.png", i)).string();
+        detail::sweep_stale_siblings(path);  // what a killed render of this frame left
         if (auto st = detail::write_png_rgba8(path, image->width, image->height, image->pixels); !st) return st.error();
         result.files.push_back(path);
         if (auto t = (*renderer)->timings(frame.frame_index); t) {

@@ -53,9 +53,8 @@ int run_bake(const BakeArgs& a) {
     const bool bodies = !scene->lakes.empty() || !scene->rivers.empty();
     const bool ocean_shore = scene->shore.enabled && scene->has_ocean;
     if (!ocean_shore && !bodies)
-        return fail(verb,
-                    fmt::format("scene \"{}\" has its shore disabled and no lakes or rivers: there is nothing to bake",
-                                scene->name));
+        return fail(verb, fmt::format("{} has its shore disabled and no lakes or rivers: there is nothing to bake",
+                                      scene_label(*scene)));
     // This verb makes the scene's bake: a saved one it names is not loaded but redone.
     scene->shore.bake_folder.clear();
     // The scene's resolutions unless the command line overrides them.

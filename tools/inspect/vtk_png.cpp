@@ -1,11 +1,12 @@
 #include "vtk_png.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
+
+#include "tidewater/detail/atomic_sibling.hpp"
 
 namespace tidewater::inspect {
 
@@ -15,8 +16,8 @@ Status save_window_png(vtkRenderWindow* window, const std::filesystem::path& png
     capture->SetInput(window);
     capture->ReadFrontBufferOff();
     capture->Update();
-    std::filesystem::path temp = png;
-    temp += fmt::format(".tmp-{}", ::getpid());
+    detail::sweep_stale_siblings(png);
+    const std::filesystem::path temp = detail::temporary_sibling(png);
     vtkNew<vtkPNGWriter> writer;
     writer->SetFileName(temp.c_str());
     writer->SetInputConnection(capture->GetOutputPort());

@@ -5,12 +5,12 @@
 #include <fmt/format.h>
 #include <png.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
 #include <csetjmp>
 #include <cstdio>
 #include <vector>
 
+#include "tidewater/detail/atomic_sibling.hpp"
 #include "tidewater/detail/distance_texture_png.hpp"
 
 namespace tidewater::detail {
@@ -45,8 +45,7 @@ bool write_gray16_rows(std::FILE* file, int width, int height, const std::functi
 /// Encodes with `encode(temp_path)` and renames onto `path` on success.
 template <typename Encode>
 Status write_atomically(const std::filesystem::path& path, const Encode& encode) {
-    std::filesystem::path temp = path;
-    temp += fmt::format(".tmp-{}", ::getpid());
+    const std::filesystem::path temp = detail::temporary_sibling(path);
     if (!encode(temp.string())) {
         std::error_code ignored;
         std::filesystem::remove(temp, ignored);

@@ -101,7 +101,7 @@ Result<std::vector<std::shared_ptr<const ShoreWaves>>> bake_lake_shores(const Sc
             bake_shore_waves(scene.lakes[l].body.waves(), bodies.terrain, bodies.lakes[l].level, model_options);
         if (!model) {
             Error e = model.error();
-            e.message = fmt::format("scene \"{}\" /lakes/{}: its shore: {}", scene.name, l, e.message);
+            e.message = fmt::format("{}: /lakes/{}: its shore: {}", scene_label(scene), l, e.message);
             return e;
         }
         models.push_back(std::move(model).value());
@@ -250,11 +250,11 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         }
         if (auto st = bake_ocean_shore(scene, terrain, options, progress, bodies_share, *bake); !st) return st.error();
         if (options.cancel.stop_requested())
-            return Error{ErrorCode::cancelled, fmt::format("scene \"{}\": the bake was cancelled", scene.name)};
+            return Error{ErrorCode::cancelled, fmt::format("{}: the bake was cancelled", scene_label(scene))};
         bake->terrain = terrain;
         return detail::finish_scene_bake(scene, std::move(bake), start);
     } catch (const std::exception& e) {
-        return Error{ErrorCode::internal, fmt::format("scene \"{}\": the bake failed: {}", scene.name, e.what())};
+        return Error{ErrorCode::internal, fmt::format("{}: the bake failed: {}", scene_label(scene), e.what())};
     }
 }
 
@@ -263,13 +263,12 @@ Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
     const bool bodies = baked.bake && baked.bake->bodies;
     if (!ocean && !bodies)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("scene \"{}\" has no bake to save: {}", baked.name,
+                     fmt::format("{} has no bake to save: {}", scene_label(baked),
                                  !baked.bake ? "pass it through bake_scene first"
                                              : "its shore is disabled and it has no lakes or rivers")};
     if (!baked.baked())
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format("scene \"{}\" was edited after its bake: pass it through bake_scene again", baked.name)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{} was edited after its bake: pass it through bake_scene again", scene_label(baked))};
     return detail::write_folder_atomically(dir, [&](const std::filesystem::path& temp) -> Status {
         if (ocean) {
             ShoreBakeContents contents;

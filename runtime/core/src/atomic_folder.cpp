@@ -1,7 +1,8 @@
 #include "tidewater/detail/atomic_folder.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
+
+#include "tidewater/detail/atomic_sibling.hpp"
 
 namespace tidewater::detail {
 
@@ -9,8 +10,8 @@ namespace fs = std::filesystem;
 
 Status write_folder_atomically(const fs::path& dir, const std::function<Status(const fs::path&)>& fill) {
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "give a folder name"};
-    fs::path temp = dir;
-    temp += fmt::format(".tmp-{}", ::getpid());
+    sweep_stale_siblings(dir);
+    const fs::path temp = temporary_sibling(dir);
     std::error_code ec;
     fs::remove_all(temp, ec);
     fs::create_directories(temp, ec);
@@ -25,8 +26,7 @@ Status write_folder_atomically(const fs::path& dir, const std::function<Status(c
     } cleanup{temp};
     if (auto st = fill(temp); !st) return st;
     // Swap the finished folder into place; an old one survives any failure.
-    fs::path old = dir;
-    old += fmt::format(".old-{}", ::getpid());
+    const fs::path old = replaced_sibling(dir);
     const bool had = fs::exists(dir, ec);
     if (had) fs::rename(dir, old, ec);
     if (!ec) fs::rename(temp, dir, ec);

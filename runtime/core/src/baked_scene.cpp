@@ -38,7 +38,7 @@ bool same_bodies(const Scene& scene, const SceneBake& bake) {
 }  // namespace
 
 Error detail::in_shore(const Scene& scene, Error e) {
-    e.message = fmt::format("scene \"{}\" /shore: {}", scene.name, e.message);
+    e.message = fmt::format("{}: /shore: {}", scene_label(scene), e.message);
     return e;
 }
 
@@ -117,8 +117,7 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
         report(1.0);
         return detail::finish_scene_bake(scene, std::move(bake), start);
     } catch (const std::exception& e) {
-        return Error{ErrorCode::internal,
-                     fmt::format("scene \"{}\": loading its bake failed: {}", scene.name, e.what())};
+        return Error{ErrorCode::internal, fmt::format("{}: loading its bake failed: {}", scene_label(scene), e.what())};
     }
 }
 

@@ -42,10 +42,9 @@ Result<std::vector<DriftSample>> drift(const Scene& scene, glm::dvec2 start, con
                                  options.dt, kMaxDriftSteps)};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && !scene.baked())
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format("drift: scene \"{}\" has lakes or rivers but is not baked: pass it through bake_scene first",
-                        scene.name)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("drift: {} has lakes or rivers but is not baked: pass it through bake_scene first",
+                                 scene_label(scene))};
 
     const detail::BodyFinder finder(scene, bodies_of(scene));
     const detail::PointBody first = finder.find(start);

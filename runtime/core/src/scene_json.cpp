@@ -353,6 +353,7 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
         return st.error();
     if (auto st = read_version(*r); !st) return st.error();
     Scene scene;
+    scene.source = source;
     if (auto st = r->string("name", scene.name); !st) return st.error();
     if (!r->has("ocean") && !r->has("lakes") && !r->has("rivers"))
         return r->error("ocean",
@@ -399,6 +400,12 @@ Result<Scene> parse_scene(std::string_view json_text, const std::string& source,
         scene.camera = *camera;
     }
     return scene;
+}
+
+std::string scene_label(const Scene& scene) {
+    if (!scene.source.empty()) return scene.source;
+    if (!scene.name.empty()) return fmt::format("scene \"{}\"", scene.name);
+    return "the scene";
 }
 
 Result<Scene> load_scene(const std::filesystem::path& path) {

@@ -141,11 +141,10 @@ Status query_world(const Scene& scene, double time, std::span<const glm::dvec2> 
                      fmt::format("query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format("query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass it "
-                        "through bake_scene first",
-                        scene.name)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("query_world: {} has lakes or rivers but is not baked (or was edited since): pass it "
+                                 "through bake_scene first",
+                                 scene_label(scene))};
     if (points.empty()) return {};
     try {
         return run_world(scene, time, points, out, options);

@@ -323,12 +323,10 @@ Status GpuQuery::query_world(const Scene& scene, double time, std::span<const gl
                      fmt::format("GPU query_world: {} points but room for {} results", points.size(), out.size())};
     const bool has_bodies = !scene.lakes.empty() || !scene.rivers.empty();
     if (has_bodies && (!scene.bake || !scene.bake->bodies || !scene.baked()))
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format(
-                "GPU query_world: scene \"{}\" has lakes or rivers but is not baked (or was edited since): pass "
-                "it through bake_scene first",
-                scene.name)};
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("GPU query_world: {} has lakes or rivers but is not baked (or was edited since): pass "
+                                 "it through bake_scene first",
+                                 scene_label(scene))};
     if (points.empty()) return {};
     if (points.size() > (1u << 26))
         return Error{ErrorCode::invalid_argument,

@@ -751,10 +751,10 @@ Status Renderer::set_scene(const Scene& scene) {
     Impl& m = *impl_;
     if (!scene.baked())
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("renderer: scene \"{}\" has a shore but is not baked, or was edited "
+                     fmt::format("renderer: {} has a shore but is not baked, or was edited "
                                  "since its bake: pass it through bake_scene (or disable its shore) "
                                  "before set_scene",
-                                 scene.name)};
+                                 scene_label(scene))};
     std::size_t waves = scene.has_ocean ? scene.ocean.waves().size() : 0, river_waves = 0;
     for (const SceneLake& lake : scene.lakes) waves += lake.body.waves().size();
     for (const SceneRiver& river : scene.rivers) river_waves += river.body.waves().size();

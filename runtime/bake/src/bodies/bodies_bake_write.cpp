@@ -63,7 +63,7 @@ Status write_fields(const fs::path& dir, const std::string& prefix, const FieldG
 
 Status write_bodies_bake_into(const fs::path& dir, const Scene& baked) {
     if (!baked.bake || !baked.bake->bodies)
-        return Error{ErrorCode::invalid_argument, fmt::format("scene \"{}\" has no baked lakes or rivers", baked.name)};
+        return Error{ErrorCode::invalid_argument, fmt::format("{} has no baked lakes or rivers", scene_label(baked))};
     const detail::WaterBodiesBake& bodies = *baked.bake->bodies;
     const Terrain uncut = baked.terrain.with_cuts({});
     const FieldGrid shape_grid = detail::saved_lake_grid(uncut, baked.shore.resolution);

@@ -25,7 +25,7 @@ Error named(const std::string& where, Error e) {
 }
 
 std::string river_path(const Scene& scene, std::size_t r) {
-    return fmt::format("scene \"{}\" /rivers/{}", scene.name, r);
+    return fmt::format("{}: /rivers/{}", scene_label(scene), r);
 }
 
 /// Distance from p to the polyline and the distance along it of the nearest point.
@@ -68,7 +68,7 @@ Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& grou
     const std::vector<float> heights = sample_terrain(ground, grid);
     for (std::size_t i = 0; i < scene.lakes.size(); ++i) {
         auto lake =
-            find_lake_extent(scene.lakes[i], grid, heights, fmt::format("scene \"{}\" /lakes/{}", scene.name, i));
+            find_lake_extent(scene.lakes[i], grid, heights, fmt::format("{}: /lakes/{}", scene_label(scene), i));
         if (!lake) return lake.error();
         lakes.push_back(std::move(lake).value());
     }
@@ -82,10 +82,9 @@ Result<std::vector<LakeBake>> find_lakes(const Scene& scene, const Terrain& grou
                     int bi = 0, bj = 0;
                     lb.grid.texel_of(p, bi, bj);
                     if (lb.inside[lb.grid.index(bi, bj)])
-                        return Error{
-                            ErrorCode::invalid_argument,
-                            fmt::format("scene \"{}\" /lakes/{}: lake \"{}\" overlaps lake \"{}\" at [{:.1f}, {:.1f}]",
-                                        scene.name, b, lb.name, la.name, p.x, p.y)};
+                        return Error{ErrorCode::invalid_argument,
+                                     fmt::format("{}: /lakes/{}: lake \"{}\" overlaps lake \"{}\" at [{:.1f}, {:.1f}]",
+                                                 scene_label(scene), b, lb.name, la.name, p.x, p.y)};
                 }
         }
     return lakes;

@@ -95,6 +95,10 @@ struct SceneBake;
 
 struct Scene {
     std::string name;
+    /// Where the scene was read from: load_scene's path, or parse_scene's `source`
+    /// ("<default scene>" for the bundled one); empty for a scene built in code. Errors
+    /// found later (baking, loading its bake) name the scene by it (scene_label).
+    std::string source;
     Terrain terrain;
     /// The water; its level() is the scene's rest water level (stored only there) and its
     /// shore() the model the waves feel: null as parsed, set by bake_scene unless the
@@ -125,6 +129,10 @@ struct Scene {
     /// its model. A copy edited since its bake (say, a new terrain) is not baked.
     bool baked() const;
 };
+
+/// How messages name a scene: its `source` (a file's path), else `scene "NAME"`, else
+/// "the scene".
+std::string scene_label(const Scene& scene);
 
 /// Parses scene JSON text. `source` names it in messages (a path or "<default scene>");
 /// relative preset files and bake folders resolve against `base_dir`. Reads and

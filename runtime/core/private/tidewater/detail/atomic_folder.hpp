@@ -1,5 +1,6 @@
 // Folders that appear whole or not at all (bakes, exports). Internal: not part of the API.
-// Threading: reentrant. The temporary folder is named after the target and the process.
+// Threading: reentrant. The temporary folder is named after the target and the process
+// (atomic_sibling.hpp), and what killed writers left beside the target is swept first.
 #pragma once
 
 #include <filesystem>
