@@ -45,7 +45,15 @@ bool parse_cell(const std::string& cell, double& out) {
     return ec == std::errc() && ptr == last;
 }
 
+/// The largest record file read (a year of a 1.28 Hz buoy is about 1 GB of CSV):
+/// refused before a line of it is kept.
+constexpr std::uintmax_t kMaxRecordFileBytes = std::uintmax_t{1} << 30;
+
 Result<std::ifstream> open(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxRecordFileBytes)
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} bytes, at most {} read: not a record this reads",
+                                                              path.string(), size, kMaxRecordFileBytes)};
     std::ifstream in(path);
     if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path.string())};
     return in;

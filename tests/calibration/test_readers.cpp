@@ -55,5 +55,17 @@ TEST(Readers, CsvSkipsAndCountsMissingAndFlaggedSamples) {
     fs::remove(path);
 }
 
+TEST(Readers, ARecordOverAGigabyteIsRefusedBeforeItIsRead) {
+    const fs::path path = temp_path("huge.csv");
+    std::ofstream(path) << "t,z\n";
+    fs::resize_file(path, (std::uintmax_t{1} << 30) + 1);  // sparse: nothing is written
+    CsvColumns columns;
+    auto r = read_csv_record(path, RecordKind::gauge, columns);
+    fs::remove(path);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message,
+              path.string() + ": 1073741825 bytes, at most 1073741824 read: not a record this reads");
+}
+
 }  // namespace
 }  // namespace tidewater::calibration

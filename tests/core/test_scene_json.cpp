@@ -198,6 +198,27 @@ TEST(SceneJson, MissingSceneFileNamesThePath) {
     EXPECT_NE(scene.error().message.find("/no/such/dir/scene.json"), std::string::npos);
 }
 
+TEST(SceneJson, SizesADocumentCanAskForAreBounded) {
+    // Nesting: a scene's deepest is 6; 40 arrays within each other are refused by name.
+    const std::string deep = R"({"version": 1, "name": )" + std::string(40, '[') + std::string(40, ']') + "}";
+    auto nested = parse_scene(deep, "deep.json");
+    ASSERT_FALSE(nested.ok());
+    EXPECT_EQ(nested.error().message, "deep.json: nested deeper than 32 objects and arrays");
+    // A name of 100 000 bytes.
+    auto long_name = parse_scene(
+        R"({"version": 1, "name": ")" + std::string(100000, 'x') + R"(", "ocean": "pool_calm"})", "long.json");
+    ASSERT_FALSE(long_name.ok());
+    EXPECT_EQ(long_name.error().message, "long.json: a string of 100000 bytes (at most 65536)");
+    // A file of 80 MiB is refused before it is read (a sparse file: nothing is written).
+    const std::filesystem::path big = std::filesystem::temp_directory_path() / "tidewater_big_scene.json";
+    std::ofstream(big).put(' ');
+    std::filesystem::resize_file(big, std::uintmax_t{80} << 20);
+    auto huge = load_scene(big);
+    std::filesystem::remove(big);
+    ASSERT_FALSE(huge.ok());
+    EXPECT_EQ(huge.error().message, big.string() + ": 83886080 bytes, at most 67108864 read: not a file this reads");
+}
+
 TEST(SceneJson, DefaultSceneIsBundled) {
     auto scene = default_scene();
     ASSERT_TRUE(scene.ok()) << scene.error().message;

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "tidewater/detail/json_reader.hpp"
+
 namespace tidewater::cli {
 
 namespace {
@@ -88,11 +90,9 @@ Result<std::vector<glm::dvec2>> parse_points_csv(const std::string& text, const 
 }
 
 Result<std::vector<glm::dvec2>> read_points_csv(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path)};
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return parse_points_csv(ss.str(), path);
+    auto text = detail::read_text_file(path, detail::kMaxTextFileBytes);
+    if (!text) return text.error();
+    return parse_points_csv(*text, path);
 }
 
 }  // namespace tidewater::cli

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -14,9 +15,15 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
     // nlohmann keeps the last of duplicate keys; a repeated key is almost always
     // an editing mistake, so it is an error here (with the enclosing object's keys tracked).
     std::vector<std::set<std::string>> keys_in_object;
-    std::string duplicate;
-    const auto track_keys = [&](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    std::string duplicate, limit;
+    const auto track_keys = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
         using Event = nlohmann::json::parse_event_t;
+        if ((event == Event::object_start || event == Event::array_start) && depth >= kMaxJsonDepth && limit.empty())
+            limit = fmt::format("nested deeper than {} objects and arrays", kMaxJsonDepth);
+        if ((event == Event::key || event == Event::value) && parsed.is_string() &&
+            parsed.get_ref<const std::string&>().size() > kMaxJsonString && limit.empty())
+            limit = fmt::format("a string of {} bytes (at most {})", parsed.get_ref<const std::string&>().size(),
+                                kMaxJsonString);
         if (event == Event::object_start) {
             keys_in_object.emplace_back();
         } else if (event == Event::object_end && !keys_in_object.empty()) {
@@ -29,6 +36,7 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
     };
     try {
         nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), track_keys);
+        if (!limit.empty()) return Error{ErrorCode::parse_error, fmt::format("{}: {}", source, limit)};
         if (!duplicate.empty()) {
             return Error{
                 ErrorCode::schema_error,
@@ -44,7 +52,11 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
     }
 }
 
-Result<std::string> read_text_file(const std::string& path) {
+Result<std::string> read_text_file(const std::string& path, std::uintmax_t max_bytes) {
+    std::error_code ec;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > max_bytes)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: {} bytes, at most {} read: not a file this reads", path, size, max_bytes)};
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path)};
     std::ostringstream ss;

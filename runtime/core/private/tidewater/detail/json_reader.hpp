@@ -12,11 +12,23 @@
 
 namespace tidewater::detail {
 
-/// Parses text as JSON; a syntax error reports line and column.
+/// The most a JSON document may nest (objects and arrays within each other): the
+/// deepest a scene, preset or sidecar goes is 6.
+inline constexpr int kMaxJsonDepth = 32;
+/// The longest string a JSON document may hold (a name, a path, a description), bytes.
+inline constexpr std::size_t kMaxJsonString = 65536;
+/// The largest JSON file read (scenes, presets, sidecars; a 16 km bake's is 3 MB).
+inline constexpr std::uintmax_t kMaxJsonFileBytes = std::uintmax_t{64} << 20;
+/// The largest other text file read whole (points CSV), bytes.
+inline constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t{1} << 30;
+
+/// Parses text as JSON; a syntax error reports line and column. Deeper nesting than
+/// kMaxJsonDepth and strings longer than kMaxJsonString are refused.
 Result<nlohmann::json> parse_json_text(std::string_view text, const std::string& source);
 
-/// Reads text from a file; errors name the path.
-Result<std::string> read_text_file(const std::string& path);
+/// Reads text from a file; errors name the path. A file over `max_bytes` is refused
+/// before it is read.
+Result<std::string> read_text_file(const std::string& path, std::uintmax_t max_bytes = kMaxJsonFileBytes);
 
 class ObjectReader {
   public:
