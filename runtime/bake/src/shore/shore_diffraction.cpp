@@ -59,10 +59,13 @@ MarchFrame march_frame(const Wave& wave, const ShoreField& field) {
     return f;
 }
 
-/// The texels to fill, grouped by the march row just before them.
+/// The texels to fill, grouped by the march row just before them. On the finest grids two
+/// waves' buckets are held at once, so they are small: texel indices in 32 bits (a grid
+/// is at most 8192 texels a side), and each texel's row found twice, in a counting pass
+/// and a placing pass, with a byte a texel between them rather than its row.
 struct RowBuckets {
     std::vector<std::size_t> offsets;  ///< per row, into texels (one past the last row too)
-    std::vector<std::size_t> texels;
+    std::vector<std::uint32_t> texels;
     int first_row = 0;  ///< the first row that holds a texel to fill or land
 };
 
@@ -70,24 +73,30 @@ RowBuckets bucket_texels(const ShoreField& field, const MarchFrame& f, const std
     const int n = field.resolution;
     RowBuckets b;
     b.offsets.assign(static_cast<std::size_t>(f.steps) + 1, 0);
-    std::vector<int> row_of(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), -1);
     b.first_row = f.steps;
+    auto row_of = [&](int i, int j) {
+        const double x = (glm::dot(field.texel_center(i, j), f.along) - f.x0) / f.spacing;
+        return std::clamp(static_cast<int>(std::floor(x)), 0, f.steps - 2);
+    };
+    std::vector<std::uint8_t> fill(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const std::size_t k = field.index(i, j);
-            const double x = (glm::dot(field.texel_center(i, j), f.along) - f.x0) / f.spacing;
-            const int row = std::clamp(static_cast<int>(std::floor(x)), 0, f.steps - 2);
             const bool land = field.depth[k] <= 0.0f;
-            if (land || !keep(k)) b.first_row = std::min(b.first_row, row);
-            if (land || keep(k)) continue;
-            row_of[k] = row;
-            ++b.offsets[static_cast<std::size_t>(row) + 1];
+            const bool kept = keep(k);
+            if (land || !kept) b.first_row = std::min(b.first_row, row_of(i, j));
+            if (land || kept) continue;
+            fill[k] = 1;
+            ++b.offsets[static_cast<std::size_t>(row_of(i, j)) + 1];
         }
     for (std::size_t r = 1; r < b.offsets.size(); ++r) b.offsets[r] += b.offsets[r - 1];
     b.texels.resize(b.offsets.back());
     std::vector<std::size_t> next(b.offsets.begin(), b.offsets.end() - 1);
-    for (std::size_t k = 0; k < row_of.size(); ++k)
-        if (row_of[k] >= 0) b.texels[next[static_cast<std::size_t>(row_of[k])]++] = k;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = field.index(i, j);
+            if (fill[k]) b.texels[next[static_cast<std::size_t>(row_of(i, j))]++] = static_cast<std::uint32_t>(k);
+        }
     return b;
 }
 
