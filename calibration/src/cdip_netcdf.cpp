@@ -16,6 +16,10 @@ namespace tidewater::calibration {
 
 namespace {
 
+/// The most values one variable may hold (2^27 doubles, 1 GiB: a year of CDIP's 1.28 Hz
+/// displacements is 40 million).
+constexpr std::size_t kMaxVariableValues = std::size_t{1} << 27;
+
 class NcFile {
   public:
     explicit NcFile(const std::filesystem::path& path) : name_(path.string()) {
@@ -55,6 +59,11 @@ class NcFile {
             for (int id : ids) {
                 std::size_t len = 0;
                 nc_inq_dimlen(g, id, &len);
+                // The header says how many values there are: bounded before they are allocated.
+                if (len > 0 && count > kMaxVariableValues / len)
+                    return Error{ErrorCode::invalid_argument,
+                                 fmt::format("{}: {}/{} holds more than {} values: not a record this reads", name_,
+                                             group, var, kMaxVariableValues)};
                 count *= len;
             }
         }

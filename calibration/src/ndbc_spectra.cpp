@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "record_file.hpp"
 #include "spectrum_direction.hpp"
 
 namespace tidewater::calibration {
@@ -20,8 +21,9 @@ struct Row {
 
 /// Rows of "YY MM DD hh mm [skip] value (freq) value (freq) ...", keyed by time.
 Result<std::map<double, Row>> read_rows(const std::filesystem::path& path, int skip) {
-    std::ifstream in(path);
-    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path.string())};
+    auto file = open_record_file(path);
+    if (!file) return file.error();
+    std::ifstream& in = *file;
     std::map<double, Row> rows;
     std::string line;
     std::size_t line_no = 0;

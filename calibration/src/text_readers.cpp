@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "record_file.hpp"
 #include "tidewater/calibration/readers.hpp"
 
 namespace tidewater::calibration {
@@ -45,20 +46,6 @@ bool parse_cell(const std::string& cell, double& out) {
     return ec == std::errc() && ptr == last;
 }
 
-/// The largest record file read (a year of a 1.28 Hz buoy is about 1 GB of CSV):
-/// refused before a line of it is kept.
-constexpr std::uintmax_t kMaxRecordFileBytes = std::uintmax_t{1} << 30;
-
-Result<std::ifstream> open(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxRecordFileBytes)
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} bytes, at most {} read: not a record this reads",
-                                                              path.string(), size, kMaxRecordFileBytes)};
-    std::ifstream in(path);
-    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path.string())};
-    return in;
-}
-
 /// Puts the axis in seconds (or metres) from the first kept sample.
 void rebase(MeasuredRecord& r) {
     if (r.axis.empty()) return;
@@ -86,7 +73,7 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
             return Error{
                 ErrorCode::invalid_argument,
                 fmt::format("{}: scale for \"{}\" must be a known role and a finite, non-zero number", name, role)};
-    auto in = open(path);
+    auto in = open_record_file(path);
     if (!in) return in.error();
     std::string line;
     if (!std::getline(*in, line) || trim(line).empty())
@@ -164,7 +151,7 @@ Result<MeasuredRecord> read_csv_record(const std::filesystem::path& path, Record
 }
 
 Result<MeasuredRecord> read_datawell_raw(const std::filesystem::path& path) {
-    auto in = open(path);
+    auto in = open_record_file(path);
     if (!in) return in.error();
     MeasuredRecord r;
     r.kind = RecordKind::buoy;
@@ -201,7 +188,7 @@ Result<MeasuredRecord> read_datawell_raw(const std::filesystem::path& path) {
 }
 
 Result<MeasuredRecord> read_two_column(const std::filesystem::path& path, RecordKind kind) {
-    auto in = open(path);
+    auto in = open_record_file(path);
     if (!in) return in.error();
     MeasuredRecord r;
     r.kind = kind;
@@ -229,6 +216,16 @@ Result<MeasuredRecord> read_two_column(const std::filesystem::path& path, Record
     rebase(r);
     if (auto st = validate_record(r); !st) return st.error();
     return r;
+}
+
+Result<std::ifstream> open_record_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxRecordFileBytes)
+        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} bytes, at most {} read: not a record this reads",
+                                                              path.string(), size, kMaxRecordFileBytes)};
+    std::ifstream in(path);
+    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path.string())};
+    return in;
 }
 
 }  // namespace tidewater::calibration

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "tidewater/calibration/readers.hpp"
+#include "tidewater/calibration/spectrum.hpp"
 
 namespace tidewater::calibration {
 namespace {
@@ -65,6 +66,34 @@ TEST(Readers, ARecordOverAGigabyteIsRefusedBeforeItIsRead) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().message,
               path.string() + ": 1073741825 bytes, at most 1073741824 read: not a record this reads");
+}
+
+TEST(Readers, SpectraThatAskForTooMuchAreRefusedBeforeTheyAreRead) {
+    // An NDBC spectral file over a gigabyte (sparse: nothing is written).
+    const fs::path ndbc = temp_path("huge.data_spec");
+    std::ofstream(ndbc) << "#YY  MM DD hh mm\n";
+    fs::resize_file(ndbc, (std::uintmax_t{1} << 30) + 1);
+    auto spectra = read_ndbc_spectra(ndbc);
+    fs::remove(ndbc);
+    ASSERT_FALSE(spectra.ok());
+    EXPECT_EQ(spectra.error().message,
+              ndbc.string() + ": 1073741825 bytes, at most 1073741824 read: not a record this reads");
+    // A CDIP file whose header sizes a variable at 2^28 values (none written: chunked, the
+    // file stays small).
+    const fs::path cdip = temp_path("huge.nc");
+    int nc = 0, dim = 0, var = 0;
+    ASSERT_EQ(nc_create(cdip.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), NC_NOERR);
+    ASSERT_EQ(nc_def_dim(nc, "waveFrequency", std::size_t{1} << 28, &dim), NC_NOERR);
+    ASSERT_EQ(nc_def_var(nc, "waveFrequency", NC_DOUBLE, 1, &dim, &var), NC_NOERR);
+    const std::size_t chunk = 1024;
+    ASSERT_EQ(nc_def_var_chunking(nc, var, NC_CHUNKED, &chunk), NC_NOERR);
+    ASSERT_EQ(nc_close(nc), NC_NOERR);
+    EXPECT_LT(fs::file_size(cdip), std::uintmax_t{1} << 20);
+    auto cdip_spectra = read_cdip_spectra(cdip);
+    fs::remove(cdip);
+    ASSERT_FALSE(cdip_spectra.ok());
+    EXPECT_EQ(cdip_spectra.error().message,
+              cdip.string() + ": /waveFrequency holds more than 134217728 values: not a record this reads");
 }
 
 }  // namespace
