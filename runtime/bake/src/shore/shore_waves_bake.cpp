@@ -16,6 +16,7 @@
 #include <span>
 
 #include "shore/fast_marching.hpp"
+#include "shore/march_record.hpp"
 #include "shore/shore_diffraction.hpp"
 #include "shore/shore_rows.hpp"
 #include "tidewater/constants.hpp"
@@ -221,18 +222,18 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
     });
 }
 
-/// What the march of a run's waves leaves beside their tiles for the cap and the foam: per
-/// stored texel and wave, the march's share of the wave's amplitude (0..255) and its
-/// amplitude factor, which the cap blends with the rays' (the tiles hold the rays' until
-/// then); per texel of the run's grid, the marched energy and its breaking part, in quanta
-/// of 2^-24 of the sea's energy: integers, so that the sums do not depend on the order the
-/// waves finish in.
+/// What the march of a run's waves leaves beside their tiles for the cap and the foam
+/// (march_record.hpp): per stored texel and wave, the march's share of the wave's amplitude
+/// and its amplitude factor, which the cap blends with the rays' (the tiles hold the rays'
+/// until then); per texel of the run's grid, the marched energy and its breaking part in
+/// quanta of 2^-24 of the sea's energy: integers, so that the sums do not depend on the
+/// order the waves finish in.
 struct RunDiffraction {
-    std::vector<std::uint8_t> marched;  ///< stored texel * count + wave
-    std::vector<float> amplitude;       ///< stored texel * count + wave
-    std::vector<std::uint32_t> energy, breaking;
-    double quantum = 0.0;  ///< m^2
-    std::mutex lock;
+    RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum)
+        : marched(stored_slots, waves), energy(resolution, quantum) {}
+    detail::MarchedAmplitudes marched;
+    detail::MarchedEnergy energy;
+    std::mutex lock;  ///< held while a wave's energy is added
 };
 
 /// Wave w of a run's rows of every stored texel from its marched phase: the phase residual,
@@ -262,8 +263,7 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
                 kTwoPi / std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz));  // |k| = k(h)
             const double share = diffracted->share_of(k) * detail::march_share(turned, wavelength, diffracted->spacing);
             diffracted->share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
-            record->marched[at * nw + w] = diffracted->share[k];
-            record->amplitude[at * nw + w] = diffracted->amplitude[k];
+            record->marched.set(at, w, diffracted->share[k], diffracted->amplitude[k]);
         }
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
@@ -280,20 +280,29 @@ struct RunBake {
     std::unique_ptr<RunDiffraction> diffraction;  ///< with ShoreWaveOptions::diffraction
 };
 
+/// A coarse run's grid once its waves are marched, before the shared fields' slots are
+/// made: only its depth, which breaking reads (the model's grid is kept whole).
+void keep_depth_only(RunBake& run, const std::shared_ptr<const ShoreField>& model) {
+    if (run.field == model) return;
+    auto depth_only = std::make_shared<ShoreField>();
+    depth_only->corner = run.field->corner;
+    depth_only->texel = run.field->texel;
+    depth_only->resolution = run.field->resolution;
+    depth_only->depth = run.field->depth;  // shared, not copied
+    run.field = std::move(depth_only);
+}
+
 /// Adds a diffracted wave's energy (the march's share, at the stored texels as wave_rows
 /// left it) and its breaking part to its run's record.
 void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffraction& record) {
     const std::lock_guard<std::mutex> guard(record.lock);
+    const double quantum = record.energy.quantum();
     for (std::size_t k = 0; k < d.share.size(); ++k) {
         if (d.share[k] == 0) continue;
         const double a = wave.amplitude * static_cast<double>(d.amplitude[k]);
         const auto e =
-            static_cast<std::uint32_t>(std::min(std::llround(a * a * d.share_of(k) / record.quantum), 0xFFFFFFFFll));
-        auto add = [e](std::uint32_t& sum) {
-            sum = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{sum} + e, 0xFFFFFFFFu));
-        };
-        add(record.energy[k]);
-        if (d.broken[k]) add(record.breaking[k]);
+            static_cast<std::uint32_t>(std::min(std::llround(a * a * d.share_of(k) / quantum), 0xFFFFFFFFll));
+        record.energy.add(k, e, d.broken[k] != 0);
     }
 }
 
@@ -306,26 +315,24 @@ detail::DiffractedEnergy diffracted_energy(const std::vector<RunBake>& runs, con
         if (!r.diffraction) continue;
         const ShoreGrid& g = r.plan.grid;
         const int n = g.resolution;
-        auto at = [&](int a, int b) {
-            return static_cast<std::size_t>(b) * static_cast<std::size_t>(n) + static_cast<std::size_t>(a);
-        };
-        const double q = r.diffraction->quantum;
+        const detail::MarchedEnergy& energy = r.diffraction->energy;
         if (g == grid) {
-            sum.marched += q * static_cast<double>(r.diffraction->energy[at(i, j)]);
-            sum.breaking += q * static_cast<double>(r.diffraction->breaking[at(i, j)]);
+            const detail::DiffractedEnergy e = energy.at(i, j);
+            sum.marched += e.marched;
+            sum.breaking += e.breaking;
             continue;
         }
         const glm::dvec2 f = (p - g.corner) / g.texel - 0.5;
         const int a = std::clamp(static_cast<int>(std::floor(f.x)), 0, n - 2);
         const int b = std::clamp(static_cast<int>(std::floor(f.y)), 0, n - 2);
         const double u = std::clamp(f.x - a, 0.0, 1.0), v = std::clamp(f.y - b, 0.0, 1.0);
-        auto lerp = [&](const std::vector<std::uint32_t>& sums) {
-            auto get = [&](int c, int d) { return q * static_cast<double>(sums[at(c, d)]); };
-            return (1 - u) * ((1 - v) * get(a, b) + v * get(a, b + 1)) +
-                   u * ((1 - v) * get(a + 1, b) + v * get(a + 1, b + 1));
+        const detail::DiffractedEnergy e00 = energy.at(a, b), e01 = energy.at(a, b + 1), e10 = energy.at(a + 1, b),
+                                       e11 = energy.at(a + 1, b + 1);
+        auto lerp = [&](double detail::DiffractedEnergy::*part) {
+            return (1 - u) * ((1 - v) * (e00.*part) + v * (e01.*part)) + u * ((1 - v) * (e10.*part) + v * (e11.*part));
         };
-        sum.marched += lerp(r.diffraction->energy);
-        sum.breaking += lerp(r.diffraction->breaking);
+        sum.marched += lerp(&detail::DiffractedEnergy::marched);
+        sum.breaking += lerp(&detail::DiffractedEnergy::breaking);
     }
     return sum;
 }
@@ -379,8 +386,9 @@ void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<Ru
             const RunDiffraction* d = runs[r].diffraction.get();
             for (std::size_t w = 0; w < nw; ++w) {
                 const float rays = detail::capped_amplitude(t[nw + w], h, ratio);
-                const float share = d ? static_cast<float>(d->marched[at * nw + w]) / 255.0f : 0.0f;
-                t[nw + w] = share > 0.0f && h > 0.0 ? share * d->amplitude[at * nw + w] + (1.0f - share) * rays : rays;
+                const float share = d ? static_cast<float>(d->marched.share(at, w)) / 255.0f : 0.0f;
+                t[nw + w] =
+                    share > 0.0f && h > 0.0 ? share * d->marched.amplitude(at, w) + (1.0f - share) * rays : rays;
             }
         });
     }
@@ -515,14 +523,8 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                                   std::span<const glm::dvec2>(open).subspan(r.first, r.count), *run.field,
                                   options.breaking_index, options.store_every_tile, options.threads);
             if (options.diffraction) {
-                run.diffraction = std::make_unique<RunDiffraction>();
-                const std::size_t texels =
-                    static_cast<std::size_t>(run.field->resolution) * static_cast<std::size_t>(run.field->resolution);
-                run.diffraction->marched.assign(run.plan.tile.size() * ShoreTiles::kSlotTexels * r.count, 0);
-                run.diffraction->amplitude.assign(run.diffraction->marched.size(), 0.0f);
-                run.diffraction->energy.assign(texels, 0);
-                run.diffraction->breaking.assign(texels, 0);
-                run.diffraction->quantum = std::ldexp(std::max(sea.energy, 1e-30), -24);
+                run.diffraction = std::make_unique<RunDiffraction>(run.plan.tile.size(), r.count, run.field->resolution,
+                                                                   std::ldexp(std::max(sea.energy, 1e-30), -24));
             }
             runs.push_back(std::move(run));
         }
@@ -547,6 +549,8 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         // most tiles, have their slots made (a run's slots are made as its first wave starts):
         // the waves start in that order whichever worker takes them.
         std::vector<std::once_flag> slots_made(runs.size());
+        std::vector<std::atomic<std::size_t>> waves_left(runs.size());
+        for (std::size_t r = 0; r < runs.size(); ++r) waves_left[r] = runs[r].count;
         detail::parallel_in_order(nw, options.threads, [&](std::size_t i) {
             if (options.cancel.stop_requested()) return;  // the fields are thrown away below
             const std::size_t w = nw - 1 - i;
@@ -571,6 +575,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                           run.diffraction.get());
                 if (diffracted) record_energy(waves[w], *diffracted, *run.diffraction);
             }
+            if (--waves_left[run_of[w]] == 0) keep_depth_only(run, field);
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);
@@ -578,17 +583,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             }
         });
         if (options.cancel.stop_requested()) return cancelled();
-        // The waves are marched: a coarse run's grid keeps only its depth, which breaking
-        // reads, before the shared fields' slots are made.
-        for (RunBake& r : runs) {
-            if (r.field == field) continue;
-            auto depth_only = std::make_shared<ShoreField>();
-            depth_only->corner = r.field->corner;
-            depth_only->texel = r.field->texel;
-            depth_only->resolution = r.field->resolution;
-            depth_only->depth = r.field->depth;  // shared, not copied
-            r.field = std::move(depth_only);
-        }
+        sea_height.reset();  // holds a run's whole grid
         TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
         make_slots(shared, {});

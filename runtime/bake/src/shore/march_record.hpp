@@ -1,0 +1,126 @@
+// What the march of a run's waves leaves for the cap and the foam, kept until the cap:
+// per stored texel and wave, the march's share and amplitude factor (MarchedAmplitudes);
+// per texel of the run's grid, the marched energy summed over the waves (MarchedEnergy).
+// Both are held in blocks made where a wave's march first leaves something, so that they
+// take memory where the waves feel the bottom, not over every stored tile: a run's long
+// waves store most tiles of a large world, its short ones few. Internal to the shore bake.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/gtc/packing.hpp>
+#include <memory>
+#include <vector>
+
+#include "shore/shore_rows.hpp"
+#include "tidewater/detail/shore_tiles.hpp"
+
+namespace tidewater::detail {
+
+/// A run's marched energy and its breaking part per texel of its grid, summed over its
+/// waves as each one's march finishes, in tiles of the grid. Threading: add() from one
+/// thread at a time; the reads once every add is done.
+class MarchedEnergy {
+  public:
+    /// Sums over a grid of `resolution` texels a side, in quanta of `quantum` m^2.
+    MarchedEnergy(int resolution, double quantum)
+        : resolution_(resolution),
+          tiles_per_side_((resolution + kTile - 1) / kTile),
+          quantum_(quantum),
+          tiles_(static_cast<std::size_t>(tiles_per_side_) * static_cast<std::size_t>(tiles_per_side_)) {}
+
+    double quantum() const { return quantum_; }
+
+    /// Adds `quanta` to grid texel k's energy, and to its breaking part when `broken`:
+    /// integers, saturating, so that the sums do not depend on the order of the adds.
+    void add(std::size_t k, std::uint32_t quanta, bool broken) {
+        const std::size_t n = static_cast<std::size_t>(resolution_);
+        const int i = static_cast<int>(k % n), j = static_cast<int>(k / n);
+        std::unique_ptr<Tile>& tile = tiles_[tile_of(i, j)];
+        if (!tile) tile = std::make_unique<Tile>();
+        const std::size_t at = texel_in_tile(i, j);
+        saturating_add(tile->energy[at], quanta);
+        if (broken) saturating_add(tile->breaking[at], quanta);
+    }
+
+    /// Texel (i, j)'s sums in m^2 (0 where no wave left energy).
+    DiffractedEnergy at(int i, int j) const {
+        const Tile* tile = tiles_[tile_of(i, j)].get();
+        if (!tile) return {};
+        const std::size_t k = texel_in_tile(i, j);
+        return {quantum_ * static_cast<double>(tile->energy[k]), quantum_ * static_cast<double>(tile->breaking[k])};
+    }
+
+    /// Bytes held by the tiles made so far.
+    std::size_t bytes() const {
+        return sizeof(Tile) * static_cast<std::size_t>(std::count_if(tiles_.begin(), tiles_.end(),
+                                                                     [](const auto& t) { return t != nullptr; }));
+    }
+
+  private:
+    static constexpr int kTile = ShoreTiles::kTile;
+    static constexpr std::size_t kTileTexels = static_cast<std::size_t>(kTile) * static_cast<std::size_t>(kTile);
+    struct Tile {
+        std::array<std::uint32_t, kTileTexels> energy{}, breaking{};
+    };
+
+    std::size_t tile_of(int i, int j) const {
+        return static_cast<std::size_t>(j / kTile) * static_cast<std::size_t>(tiles_per_side_) +
+               static_cast<std::size_t>(i / kTile);
+    }
+    static std::size_t texel_in_tile(int i, int j) {
+        return static_cast<std::size_t>(j % kTile) * static_cast<std::size_t>(kTile) +
+               static_cast<std::size_t>(i % kTile);
+    }
+    static void saturating_add(std::uint32_t& sum, std::uint32_t quanta) {
+        sum = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{sum} + quanta, 0xFFFFFFFFu));
+    }
+
+    int resolution_;
+    int tiles_per_side_;
+    double quantum_;
+    std::vector<std::unique_ptr<Tile>> tiles_;
+};
+
+/// Per stored texel of a run's tiles and wave of the run, the march's share of the wave's
+/// amplitude (0..255; 0 where the march did not hold) and its amplitude factor in half
+/// precision (2^-11 relative), in blocks of a stored slot and a wave. Threading: distinct
+/// waves may be set from distinct threads; the reads once every set is done.
+class MarchedAmplitudes {
+  public:
+    MarchedAmplitudes(std::size_t stored_slots, std::size_t waves) : waves_(waves), blocks_(stored_slots * waves) {}
+
+    /// Stored texel `at` (stored slot * kSlotTexels + texel in the slot), wave w.
+    void set(std::size_t at, std::size_t w, std::uint8_t share, float amplitude) {
+        std::unique_ptr<Block>& block = blocks_[block_of(at, w)];
+        if (!block) {
+            if (share == 0) return;
+            block = std::make_unique<Block>();
+        }
+        const std::size_t k = at % ShoreTiles::kSlotTexels;
+        block->share[k] = share;
+        block->amplitude[k] = glm::packHalf1x16(amplitude);
+    }
+    std::uint8_t share(std::size_t at, std::size_t w) const {
+        const Block* block = blocks_[block_of(at, w)].get();
+        return block ? block->share[at % ShoreTiles::kSlotTexels] : 0;
+    }
+    float amplitude(std::size_t at, std::size_t w) const {
+        const Block* block = blocks_[block_of(at, w)].get();
+        return block ? glm::unpackHalf1x16(block->amplitude[at % ShoreTiles::kSlotTexels]) : 0.0f;
+    }
+
+  private:
+    struct Block {
+        std::array<std::uint8_t, ShoreTiles::kSlotTexels> share{};
+        std::array<std::uint16_t, ShoreTiles::kSlotTexels> amplitude{};
+    };
+    std::size_t block_of(std::size_t at, std::size_t w) const { return (at / ShoreTiles::kSlotTexels) * waves_ + w; }
+
+    std::size_t waves_;
+    std::vector<std::unique_ptr<Block>> blocks_;
+};
+
+}  // namespace tidewater::detail

@@ -1,0 +1,50 @@
+// What the shore bake keeps of each wave's march until the cap (shore/march_record.hpp):
+// sums and amplitudes held in blocks made only where a march leaves something, so that a
+// large world's long waves, which store most tiles, do not take memory for the short
+// waves that feel the bottom in a narrow band.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "shore/march_record.hpp"
+
+namespace tidewater::detail {
+namespace {
+
+TEST(MarchRecord, EnergyTakesMemoryOnlyInTheTilesAMarchReached) {
+    const int n = 8 * ShoreTiles::kTile;
+    MarchedEnergy sums(n, 0.5);
+    EXPECT_EQ(sums.bytes(), 0u);
+    const auto index = [n](int i, int j) { return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i); };
+    sums.add(index(3, 4), 10, false);
+    sums.add(index(5, 4), 6, true);
+    const std::size_t one_tile = sums.bytes();
+    EXPECT_GT(one_tile, 0u);
+    sums.add(index(n - 1, n - 1), 2, false);
+    EXPECT_EQ(sums.bytes(), 2 * one_tile);
+    EXPECT_DOUBLE_EQ(sums.at(3, 4).marched, 5.0);
+    EXPECT_DOUBLE_EQ(sums.at(3, 4).breaking, 0.0);
+    EXPECT_DOUBLE_EQ(sums.at(5, 4).breaking, 3.0);
+    EXPECT_DOUBLE_EQ(sums.at(n - 1, n - 1).marched, 1.0);
+    EXPECT_DOUBLE_EQ(sums.at(n / 2, n / 2).marched, 0.0);  // a tile no march reached
+    sums.add(index(3, 4), 0xFFFFFFFFu, true);              // saturates rather than wraps
+    EXPECT_DOUBLE_EQ(sums.at(3, 4).marched, 0.5 * 0xFFFFFFFFu);
+}
+
+TEST(MarchRecord, AmplitudesKeepHalfPrecisionPerWaveAndNothingWhereTheMarchDidNotHold) {
+    MarchedAmplitudes record(3, 2);
+    const std::size_t texel = ShoreTiles::kSlotTexels + 17;  // stored slot 1
+    record.set(texel, 0, 0, 1.5f);                           // share 0 makes no block
+    EXPECT_EQ(record.share(texel, 0), 0);
+    EXPECT_EQ(record.amplitude(texel, 0), 0.0f);
+    record.set(texel, 1, 200, 1.2345f);
+    EXPECT_EQ(record.share(texel, 1), 200);
+    EXPECT_NEAR(record.amplitude(texel, 1), 1.2345f, 1.2345f * std::ldexp(1.0f, -11));
+    EXPECT_EQ(record.share(texel, 0), 0);  // the other wave of the same slot
+    EXPECT_EQ(record.share(texel + 1, 1), 0);
+    EXPECT_EQ(record.share(2 * ShoreTiles::kSlotTexels + 17, 1), 0);  // the next slot
+}
+
+}  // namespace
+}  // namespace tidewater::detail
