@@ -3,6 +3,7 @@
 #   ./run.sh demo    install missing packages, build, run the demo on the default scene
 #   ./run.sh test    install missing packages, build, run the whole test suite
 #   ./run.sh bench   build, then run the query benchmark (not part of the test suite)
+#   ./run.sh fuzz [SECONDS]   build the fuzz targets, run each for SECONDS (default 60)
 # Each step is skipped when already done, so a second run is quick.
 set -euo pipefail
 
@@ -16,7 +17,7 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libfmt-dev libcli11-dev libxsimd-dev
   libgtest-dev libbenchmark-dev libstb-dev libpng-dev libgdal-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools glslang-dev
-  clang-format
+  clang-format clang libclang-rt-dev
 )
 
 log() { printf '==> %s\n' "$*"; }
@@ -64,6 +65,45 @@ check_format() {
     xargs -0 clang-format --dry-run --Werror)
 }
 
+# The sanitizer build: Clang with ASan + UBSan, every target instrumented for libFuzzer,
+# so the unit tests under the sanitizers and the fuzz targets share one build.
+SANITIZE_BUILD="$BUILD-sanitize"
+configure_sanitize() {
+  CC=clang CXX=clang++ configure "$SANITIZE_BUILD" -DTIDEWATER_SANITIZE=ON -DTIDEWATER_FUZZ=ON \
+    -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+}
+
+# Runs every fuzz target for $1 seconds from its seeds (tests/fuzz/corpus, examples/), in a
+# corpus kept in the build folder between runs. A crash, leak, timeout, sanitizer report
+# or an allocation over 512 MiB fails the step; the input is kept under fuzz/artifacts.
+run_fuzzers() {
+  local seconds="$1" failed=()
+  local bin="$SANITIZE_BUILD/bin" work="$SANITIZE_BUILD/fuzz"
+  for target in scene_json images rasters points_csv records obj_mesh bake_folder; do
+    local corpus="$work/corpus/$target" artifacts="$work/artifacts/$target/"
+    mkdir -p "$corpus" "$artifacts"
+    local seeds=() dict=()
+    [ -d "$ROOT/tests/fuzz/corpus/$target" ] && seeds+=("$ROOT/tests/fuzz/corpus/$target")
+    case "$target" in
+      scene_json) seeds+=("$ROOT/examples/scenes" "$ROOT/examples/presets"); dict=(-dict="$ROOT/tests/fuzz/fuzz.dict") ;;
+      bake_folder) dict=(-dict="$ROOT/tests/fuzz/fuzz.dict") ;;
+    esac
+    log "fuzzing $target for ${seconds} s"
+    if ! "$bin/fuzz_$target" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -malloc_limit_mb=512 \
+        -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" "${dict[@]}" "$corpus" "${seeds[@]}" \
+        >"$work/$target.log" 2>&1; then
+      tail -n 60 "$work/$target.log" >&2
+      failed+=("$target")
+    fi
+    grep -h "stat::number_of_executed_units\|stat::peak_rss_mb" "$work/$target.log" | tr '\n' ' ' | sed 's/^/    /'
+    echo
+  done
+  if [ ${#failed[@]} -ne 0 ]; then
+    echo "fuzzing found a fault in: ${failed[*]} (inputs under $work/artifacts)" >&2
+    return 1
+  fi
+}
+
 cmd="${1:-}"
 case "$cmd" in
   demo)
@@ -80,11 +120,19 @@ case "$cmd" in
     build "$BUILD"
     log "running the test suite"
     ctest --test-dir "$BUILD" --output-on-failure --parallel "$JOBS" --timeout 900
-    # The unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
-    configure "$BUILD-asan" -DTIDEWATER_SANITIZE=ON -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-    build "$BUILD-asan" --target tidewater_core_tests tidewater_calibration_tests
+    # The unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer, then every
+    # fuzz target for a bounded time (TIDEWATER_FUZZ_SECONDS each).
+    configure_sanitize
+    build "$SANITIZE_BUILD" --target tidewater_core_tests tidewater_calibration_tests tidewater_fuzz_targets
     log "running the unit tests under ASan + UBSan"
-    ctest --test-dir "$BUILD-asan" --output-on-failure --parallel "$JOBS" --timeout 900 -L unit
+    ctest --test-dir "$SANITIZE_BUILD" --output-on-failure --parallel "$JOBS" --timeout 900 -L unit
+    run_fuzzers "${TIDEWATER_FUZZ_SECONDS:-30}"
+    ;;
+  fuzz)
+    install_packages
+    configure_sanitize
+    build "$SANITIZE_BUILD" --target tidewater_fuzz_targets
+    run_fuzzers "${2:-60}"
     ;;
   bench)
     install_packages
@@ -93,7 +141,7 @@ case "$cmd" in
     "$BUILD/bin/tidewater" bench --out "$BUILD/bench/query_bench.json" --markdown "$BUILD/bench/query_bench.md"
     ;;
   *)
-    echo "usage: ./run.sh demo|test|bench" >&2
+    echo "usage: ./run.sh demo|test|bench|fuzz [SECONDS]" >&2
     exit 2
     ;;
 esac

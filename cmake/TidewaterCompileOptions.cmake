@@ -8,6 +8,11 @@ function(tidewater_target_defaults target)
       -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Wunused
       -Woverloaded-virtual -Wdouble-promotion -Wformat=2
       -Wimplicit-fallthrough)
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+      # Clang also flags a float widened to double where it is passed or stored, which is
+      # exact; GCC's builds check the promotions inside arithmetic.
+      target_compile_options(${target} PRIVATE -Wno-double-promotion)
+    endif()
     if(TIDEWATER_WARNINGS_AS_ERRORS)
       target_compile_options(${target} PRIVATE -Werror)
     endif()
@@ -27,4 +32,13 @@ if(TIDEWATER_SANITIZE)
     add_compile_options(-Wno-maybe-uninitialized)
   endif()
   add_link_options(-fsanitize=address,undefined)
+endif()
+
+# libFuzzer: every target is instrumented for coverage (the fuzz targets link the fuzzer's
+# main; the unit tests of the same build run as they are).
+if(TIDEWATER_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang" OR NOT TIDEWATER_SANITIZE)
+    message(FATAL_ERROR "TIDEWATER_FUZZ needs Clang and TIDEWATER_SANITIZE=ON")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
 endif()

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <map>
 
+#include "netcdf_classic_header.hpp"
 #include "spectrum_direction.hpp"
 #include "tidewater/calibration/readers.hpp"
 #include "tidewater/calibration/spectrum.hpp"
@@ -23,6 +24,12 @@ constexpr std::size_t kMaxVariableValues = std::size_t{1} << 27;
 class NcFile {
   public:
     explicit NcFile(const std::filesystem::path& path) : name_(path.string()) {
+        // A classic file's header is checked first: netCDF sizes its buffers from it.
+        misfit_ = classic_header_misfit(path);
+        if (!misfit_.empty()) {
+            status_ = NC_ENOTNC;
+            return;
+        }
         status_ = nc_open(name_.c_str(), NC_NOWRITE, &id_);
     }
     ~NcFile() {
@@ -33,8 +40,8 @@ class NcFile {
 
     Status opened() const {
         if (status_ == NC_NOERR) return {};
-        return Error{ErrorCode::io_error,
-                     fmt::format("{}: not a readable netCDF file ({})", name_, nc_strerror(status_))};
+        return Error{ErrorCode::io_error, fmt::format("{}: not a readable netCDF file ({})", name_,
+                                                      misfit_.empty() ? nc_strerror(status_) : misfit_)};
     }
     Result<int> group(const char* name) const {
         int g = 0;
@@ -120,6 +127,7 @@ class NcFile {
     std::string name_;
     int id_ = 0;
     int status_ = NC_NOERR;
+    std::string misfit_;  ///< why a classic header does not fit its file
 };
 
 }  // namespace

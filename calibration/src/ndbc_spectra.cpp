@@ -58,6 +58,15 @@ Result<std::map<double, Row>> read_rows(const std::filesystem::path& path, int s
         }
         if (row.values.empty())
             return Error{ErrorCode::parse_error, fmt::format("{}:{}: no spectrum on the line", path.string(), line_no)};
+        // Each band's width is taken from its neighbours.
+        if (row.values.size() < 2)
+            return Error{ErrorCode::parse_error,
+                         fmt::format("{}:{}: a spectrum needs two frequencies or more", path.string(), line_no)};
+        for (std::size_t k = 1; k < row.freqs.size(); ++k)
+            if (!(row.freqs[k] > row.freqs[k - 1]))
+                return Error{ErrorCode::parse_error,
+                             fmt::format("{}:{}: the frequencies do not increase ({} after {})", path.string(), line_no,
+                                         row.freqs[k], row.freqs[k - 1])};
         rows[row.time] = std::move(row);
     }
     if (rows.empty()) return Error{ErrorCode::parse_error, fmt::format("{}: no spectra in the file", path.string())};

@@ -33,6 +33,54 @@ TEST(Readers, NetcdfWithoutXyzGroupIsRefused) {
     fs::remove(path);
 }
 
+TEST(Readers, AClassicNetcdfHeaderPastItsFileIsRefusedBeforeNetcdfReadsIt) {
+    // netCDF's classic reader allocates a name by the length its header declares: here
+    // 1.6 GB for a 28-byte file (what fuzzing found). A classic file written by netCDF
+    // itself still reads.
+    const fs::path path = temp_path("classic_bomb.nc");
+    {
+        std::ofstream out(path, std::ios::binary);
+        const unsigned char header[] = {'C', 'D', 'F',  1, 0, 0, 0,   0,   0,   0,   0, 0x0A, 0, 0,
+                                        0,   1,   0x60, 0, 0, 0, 'a', 'b', 'c', 'd', 0, 0,    0, 4};
+        out.write(reinterpret_cast<const char*>(header), sizeof header);
+    }
+    auto r = read_cdip_spectra(path);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find(path.string() + ": not a readable netCDF file"), std::string::npos)
+        << r.error().message;
+    EXPECT_NE(r.error().message.find("past the end of the file"), std::string::npos) << r.error().message;
+
+    const fs::path classic = temp_path("classic.nc");
+    int nc = 0, dim = 0, var = 0;
+    ASSERT_EQ(nc_create(classic.c_str(), NC_CLOBBER, &nc), NC_NOERR);
+    ASSERT_EQ(nc_def_dim(nc, "waveFrequency", 3, &dim), NC_NOERR);
+    ASSERT_EQ(nc_def_var(nc, "waveEnergyDensity", NC_FLOAT, 1, &dim, &var), NC_NOERR);
+    ASSERT_EQ(nc_put_att_text(nc, NC_GLOBAL, "title", 5, "tests"), NC_NOERR);
+    ASSERT_EQ(nc_close(nc), NC_NOERR);
+    auto opened = read_cdip_spectra(classic);  // refused for what it lacks, not for its header
+    ASSERT_FALSE(opened.ok());
+    EXPECT_EQ(opened.error().message.find("not a readable netCDF file"), std::string::npos) << opened.error().message;
+    fs::remove(path);
+    fs::remove(classic);
+}
+
+TEST(Readers, AnNdbcSpectrumOfOneBandOrUnorderedBandsIsRefusedByLine) {
+    // One band read its neighbour past the end of the row (what fuzzing found).
+    const fs::path path = temp_path("one_band.data_spec");
+    for (const auto& [line, expected] :
+         {std::pair<std::string, std::string>{"2020 06 08 03 50 0.2 0.500 (0.033)", ":2: a spectrum needs two"},
+          {"2020 06 08 03 50 0.2 0.5 (0.05) 0.7 (0.04)", ":2: the frequencies do not increase"}}) {
+        {
+            std::ofstream out(path);
+            out << "#YY  MM DD hh mm Sep_Freq  < spec_1 (freq_1) ... >\n" << line << "\n";
+        }
+        auto r = read_ndbc_spectra(path);
+        ASSERT_FALSE(r.ok()) << line;
+        EXPECT_NE(r.error().message.find(path.string() + expected), std::string::npos) << r.error().message;
+    }
+    fs::remove(path);
+}
+
 TEST(Readers, CsvSkipsAndCountsMissingAndFlaggedSamples) {
     const fs::path path = temp_path("gauge.csv");
     {

@@ -13,10 +13,10 @@ namespace tidewater::detail {
 namespace {
 
 TEST(MarchRecord, EnergyTakesMemoryOnlyInTheTilesAMarchReached) {
-    const int n = 8 * ShoreTiles::kTile;
+    constexpr int n = 8 * ShoreTiles::kTile;
     MarchedEnergy sums(n, 0.5);
     EXPECT_EQ(sums.bytes(), 0u);
-    const auto index = [n](int i, int j) { return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i); };
+    const auto index = [](int i, int j) { return static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i); };
     sums.add(index(3, 4), 10, false);
     sums.add(index(5, 4), 6, true);
     const std::size_t one_tile = sums.bytes();

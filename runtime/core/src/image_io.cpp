@@ -5,9 +5,52 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 
 namespace tidewater::detail {
+
+namespace {
+
+/// Pixels an image may hold: 2^28 (16384^2).
+constexpr long long kMaxImagePixels = 1LL << 28;
+
+std::uint32_t big_endian_u32(const unsigned char* b) {
+    return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | std::uint32_t{b[3]};
+}
+
+/// Whether `f` is a PNG whose chunks all lie within the file, up to IEND: stb sizes its
+/// buffer for the compressed data by a chunk's declared length before reading it, so a
+/// 100-byte file that declares a 1 GB chunk would allocate 1 GB. Leaves `f` at its start.
+Status png_chunks_fit(std::FILE* f, const std::string& name) {
+    static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    auto error = [&](const std::string& why) {
+        return Error{ErrorCode::parse_error, fmt::format("{}: {}", name, why)};
+    };
+    if (std::fseek(f, 0, SEEK_END) != 0) return error("cannot read the file");
+    const long size = std::ftell(f);
+    std::rewind(f);
+    unsigned char head[8];
+    if (size < 8 || std::fread(head, 1, 8, f) != 8 || !std::equal(head, head + 8, kSignature))
+        return error("not a readable image (no PNG signature)");
+    long at = 8;
+    for (;;) {
+        unsigned char chunk[8];
+        if (std::fread(chunk, 1, 8, f) != 8) return error("corrupt PNG (it ends before its IEND chunk)");
+        const std::uint32_t length = big_endian_u32(chunk);
+        if (length > 0x7FFFFFFFu || static_cast<long long>(at) + 12 + length > size)
+            return error(fmt::format("corrupt PNG (a chunk at byte {} declares {} bytes, past the end of the file)", at,
+                                     length));
+        if (std::equal(chunk + 4, chunk + 8, "IEND")) break;
+        at += 12 + static_cast<long>(length);
+        if (std::fseek(f, at, SEEK_SET) != 0) return error("cannot read the file");
+    }
+    std::rewind(f);
+    return {};
+}
+
+}  // namespace
 
 Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
     const std::string name = path.string();
@@ -17,6 +60,10 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
 }
 
 Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
+    if (auto fits = png_chunks_fit(f, name); !fits) {
+        std::fclose(f);
+        return fits.error();
+    }
     int w = 0, h = 0, channels = 0;
     const int ok = stbi_info_from_file(f, &w, &h, &channels);
     const bool is16 = ok && stbi_is_16_bit_from_file(f);
@@ -30,7 +77,7 @@ Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
                      fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name, channels,
                                  is16 ? 16 : 8)};
     }
-    if (w < 1 || h < 1 || static_cast<long long>(w) * h > (1LL << 28)) {
+    if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels) {
         std::fclose(f);
         return Error{ErrorCode::schema_error,
                      fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
@@ -48,13 +95,25 @@ Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
 
 Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path) {
     const std::string name = path.string();
+    std::FILE* f = std::fopen(name.c_str(), "rb");
+    if (!f) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+    if (auto fits = png_chunks_fit(f, name); !fits) {
+        std::fclose(f);
+        return fits.error();
+    }
     int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
-    if (!data) {
-        if (!std::filesystem::exists(path))
-            return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+    if (!stbi_info_from_file(f, &w, &h, &channels)) {
+        std::fclose(f);
         return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
     }
+    if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels) {
+        std::fclose(f);
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
+    }
+    stbi_uc* data = stbi_load_from_file(f, &w, &h, &channels, 4);
+    std::fclose(f);
+    if (!data) return Error{ErrorCode::parse_error, fmt::format("{}: corrupt PNG ({})", name, stbi_failure_reason())};
     Rgba8Image img;
     img.width = w;
     img.height = h;

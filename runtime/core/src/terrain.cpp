@@ -112,7 +112,8 @@ double TerrainCut::depth_at(glm::dvec2 p) const {
     const double fu = u - i0, fv = v - j0;
     auto at = [&](int i, int j) -> double {
         if (i < 0 || j < 0 || i >= nx || j >= nz) return 0.0;
-        return depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)];
+        return static_cast<double>(
+            depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)]);
     };
     return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) +
            fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));

@@ -552,8 +552,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     model_ratio.assign(shared_rows, 1, 0.0);
     const auto on_model =
         std::find_if(runs.begin(), runs.end(), [&](const RunEdit& r) { return r.layer->grid == model_grid; });
+    const auto& model_depths_after = model_after;  // Clang 14 does not capture a structured binding
     each_texel(shared_rows, threads, [&](int i, int j) {
-        const float h = on_model != runs.end() ? *on_model->depth_after(i, j) : model_after.at(i, j);
+        const float h = on_model != runs.end() ? *on_model->depth_after(i, j) : model_depths_after.at(i, j);
         *model_depth(i, j) = h;
         if (h > 0.0f)
             *model_ratio(i, j) = cap_ratio(waves, before_cap, model_grid, i, j, static_cast<double>(h), breaking_index);

@@ -53,7 +53,7 @@ Result<SceneFloat> read_float(const json& value, const std::string& source, cons
     if (auto st = read_numbers(*r, "size", 3, 0.05, 40.0, " m", &f.size.x); !st) return st.error();
     if (auto st = r->number("mass", f.mass, true); !st) return st.error();
     if (auto st = check_range(*r, "mass", f.mass, 0.1, 1e7, " kg"); !st) return st.error();
-    double color[3] = {f.color.r, f.color.g, f.color.b};
+    double color[3] = {static_cast<double>(f.color.r), static_cast<double>(f.color.g), static_cast<double>(f.color.b)};
     if (auto st = read_numbers(*r, "color", 3, 0.0, 1.0, "", color); !st) return st.error();
     f.color = glm::vec3(static_cast<float>(color[0]), static_cast<float>(color[1]), static_cast<float>(color[2]));
     const double volume = boxed                                  ? f.size.x * f.size.y * f.size.z

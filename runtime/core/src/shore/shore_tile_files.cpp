@@ -101,8 +101,8 @@ Status ShoreTileFiles::read(std::size_t slot, float* out) const {
         const std::size_t g = shape_.grid_index(tile, texel);
         const glm::dvec2 p = c.grid.corner + c.grid.texel * (glm::dvec2(g % n, g / n) + 0.5);
         const double depth = c.water_level - c.terrain.height_at(p);
-        const std::string misfit =
-            shore_depth_misfit(depth, p, static_cast<std::uint32_t>(slot), out[texel * stride], c.tolerance);
+        const std::string misfit = shore_depth_misfit(depth, p, static_cast<std::uint32_t>(slot),
+                                                      static_cast<double>(out[texel * stride]), c.tolerance);
         if (!misfit.empty()) return Error{ErrorCode::invalid_argument, fmt::format("{}: {}", path.string(), misfit)};
     }
     return {};

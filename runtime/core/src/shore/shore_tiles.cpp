@@ -33,7 +33,8 @@ TileKind classify(const ShoreWaveFields& f, std::span<const glm::dvec2> open, co
     for (std::size_t s = 0; s < ShoreTiles::kSlotTexels && (is_open || is_dry); ++s) {
         const std::size_t k = t.grid_index(tile, s);
         is_open = is_open && open_sea_texel(f, open, k);
-        is_dry = is_dry && far_dry_land(f.depth[k], f.shore_distance[k], f.texel);
+        is_dry =
+            is_dry && far_dry_land(static_cast<double>(f.depth[k]), static_cast<double>(f.shore_distance[k]), f.texel);
     }
     return is_open ? TileKind::open_sea : is_dry ? TileKind::dry_land : TileKind::stored;
 }

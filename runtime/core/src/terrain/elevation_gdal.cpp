@@ -93,6 +93,13 @@ Result<glm::dvec2> pixel_metres(GDALDataset& ds, const std::string& name, std::s
 
 }  // namespace
 
+/// The raster formats elevation and bathymetry come in (docs/scene-format.md): GDAL opens
+/// only these. Its other drivers include formats whose headers size buffers before any
+/// check (a 135-byte CTable2 file asked for 1.4 GB), and none of them holds terrain.
+constexpr const char* kElevationDrivers[] = {"GTiff", "AAIGrid", "GRASSASCIIGrid", "XYZ",  "EHdr", "ENVI",
+                                             "HFA",   "SRTMHGT", "USGSDEM",        "DTED", "BT",   "GSAG",
+                                             "GSBG",  "GS7BG",   "netCDF",         "BAG",  nullptr};
+
 Result<ElevationGrid> read_gdal_elevation(const std::filesystem::path& path, bool depth, std::int64_t max_pixels) {
     const std::string name = path.string();
     std::error_code ec;
@@ -100,10 +107,10 @@ Result<ElevationGrid> read_gdal_elevation(const std::filesystem::path& path, boo
         return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
     QuietGdal quiet;
     GDALDatasetUniquePtr ds(
-        GDALDataset::Open(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+        GDALDataset::Open(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, kElevationDrivers, nullptr, nullptr));
     if (!ds)
-        return Error{ErrorCode::parse_error,
-                     fmt::format("{}: not a raster GDAL can read ({})", name, QuietGdal::last_message())};
+        return Error{ErrorCode::parse_error, fmt::format("{}: not a raster GDAL can read in an elevation format ({})",
+                                                         name, QuietGdal::last_message())};
     const int w = ds->GetRasterXSize(), h = ds->GetRasterYSize();
     if (ds->GetRasterCount() != 1)
         return Error{ErrorCode::schema_error,
