@@ -79,7 +79,7 @@ configure_sanitize() {
 run_fuzzers() {
   local seconds="$1" failed=()
   local bin="$SANITIZE_BUILD/bin" work="$SANITIZE_BUILD/fuzz"
-  for target in scene_json images rasters points_csv records obj_mesh bake_folder; do
+  for target in scene_json images rasters points_csv records obj_mesh bake_folder editor_script; do
     local corpus="$work/corpus/$target" artifacts="$work/artifacts/$target/"
     mkdir -p "$corpus" "$artifacts"
     local seeds=() dict=()

@@ -4,109 +4,118 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <variant>
 
 #include "editor.hpp"
+#include "editor_script_parse.hpp"
 #include "terrain_brush.hpp"
 
 namespace tidewater::editor {
 
-// A script for CI and pictures, one command a line:
-//   camera PX PY PZ TX TY TZ [FOV]     view NAME     preset NAME     probe X Y     time T
-//   brush X Z RADIUS HEIGHT     (a stroke of the terrain brush, re-baked in the background)
-//   river NAME discharge Q      (as the Rivers panel's slider, re-baked in the background)
-//   clip X Y Z RADIUS           (a clip sphere, as the Clip volumes panel places one)
-//   viewports 1|2               (one viewport, or two side by side, as the View panel's box)
-//   second PX PY PZ TX TY TZ [FOV]  (the right viewport's camera; two viewports from then on)
-//   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
-//   at N screenshot PATH        (the frame N, panels included)
+namespace {
+
+/// Calls the overload of `visit` for each alternative's type.
+template <typename... F>
+struct Overloaded : F... {
+    using F::operator()...;
+};
+template <typename... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+std::string read_script(const std::string& path, Status& status) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        status = Error{ErrorCode::io_error, fmt::format("{}: cannot open the script", path)};
+        return {};
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+// A script for CI and pictures (editor_script_parse.hpp): parsed whole, then each command
+// run as the panel it stands for would.
 Status Editor::run_script(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open the script", path)};
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        std::istringstream words(line);
-        std::string command;
-        if (!(words >> command) || command[0] == '#') continue;
-        auto bad = [&] {
-            return Error{ErrorCode::parse_error, fmt::format("{}:{}: cannot read \"{}\"", path, number, line)};
-        };
-        if (command == "camera") {
-            glm::dvec3 p, t;
-            double fov = camera_.fov_y_deg;
-            if (!(words >> p.x >> p.y >> p.z >> t.x >> t.y >> t.z)) return bad();
-            words >> fov;
-            camera_ = OrbitCamera::looking(p, t, fov);
-        } else if (command == "viewports") {
-            int count = 0;
-            if (!(words >> count) || (count != 1 && count != 2)) return bad();
-            two_viewports_ = count == 2;
-        } else if (command == "second") {
-            glm::dvec3 p, t;
-            double fov = camera_.fov_y_deg;
-            if (!(words >> p.x >> p.y >> p.z >> t.x >> t.y >> t.z)) return bad();
-            words >> fov;
-            second_camera_ = OrbitCamera::looking(p, t, fov);
-            second_camera_set_ = true;
-            two_viewports_ = true;
-        } else if (command == "view") {
-            std::string name;
-            words >> name;
-            const auto view = render::parse_debug_view(name);
-            if (!view) return bad();
-            const auto all = render::all_debug_views();
-            view_ = static_cast<int>(std::find(all.begin(), all.end(), *view) - all.begin());
-        } else if (command == "preset") {
-            std::string name;
-            words >> name;
-            const auto names = bundled_preset_names();
-            const auto at = std::find(names.begin(), names.end(), name);
-            if (at == names.end()) return bad();
-            preset_ = static_cast<int>(at - names.begin());
-            choose_preset(name);
-        } else if (command == "probe") {
-            glm::dvec2 px;
-            if (!(words >> px.x >> px.y)) return bad();
-            script_probe_ = px;
-        } else if (command == "brush") {
-            glm::dvec2 at;
-            double radius = 0.0, height = 0.0;
-            if (!(words >> at.x >> at.y >> radius >> height) || !(radius > 0.0)) return bad();
-            brush_radius_ = static_cast<float>(radius);
-            scripted_brush_ = std::make_pair(at, scene_->terrain.height_at(at));
-            paint(at, height);
-            Scene edited = *scene_;
-            edited.terrain = *stroke_;
-            stroke_.reset();
-            bake_.start(std::move(edited), scene_);
-        } else if (command == "river") {
-            std::string name, field;
-            double value = 0.0;
-            if (!(words >> name >> field >> value) || field != "discharge" || !(value > 0.0)) return bad();
-            Scene edited = *scene_;
-            const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(),
-                                         [&](const SceneRiver& r) { return r.name == name; });
-            if (it == edited.rivers.end()) return bad();
-            it->discharge = value;
-            bake_.start(std::move(edited), scene_);
-        } else if (command == "clip") {
-            glm::dvec3 at;
-            double radius = 0.0;
-            if (!(words >> at.x >> at.y >> at.z >> radius)) return bad();
-            place_clip(at, radius);
-        } else if (command == "at") {
-            Step step;
-            if (!(words >> step.frame >> step.kind) || (step.kind != "replace" && step.kind != "screenshot"))
-                return bad();
-            std::getline(words >> std::ws, step.argument);
-            if (step.argument.empty()) return bad();
-            steps_.push_back(step);
-        } else if (command == "time") {
-            double t = 0.0;
-            if (!(words >> t)) return bad();
-            clock_.set_time(t);
-        } else {
-            return bad();
-        }
+    Status read;
+    const std::string text = read_script(path, read);
+    if (!read) return read;
+    auto commands = parse_script(text, path);
+    if (!commands) return commands.error();
+    for (const auto& [number, command] : *commands) {
+        const std::string where = fmt::format("{}:{}", path, number);
+        Status ran = std::visit(
+            Overloaded{
+                [&](const ScriptCamera& c) -> Status {
+                    OrbitCamera& camera = c.second ? second_camera_ : camera_;
+                    const double fov = c.fov_y_deg > 0.0 ? c.fov_y_deg : camera_.fov_y_deg;
+                    camera = OrbitCamera::looking(c.position, c.target, fov);
+                    if (c.second) second_camera_set_ = two_viewports_ = true;
+                    return {};
+                },
+                [&](const ScriptViewports& v) -> Status {
+                    two_viewports_ = v.count == 2;
+                    return {};
+                },
+                [&](const ScriptView& v) -> Status {
+                    const auto view = render::parse_debug_view(v.name);
+                    if (!view)
+                        return Error{ErrorCode::invalid_argument, fmt::format("{}: no view \"{}\"", where, v.name)};
+                    const auto all = render::all_debug_views();
+                    view_ = static_cast<int>(std::find(all.begin(), all.end(), *view) - all.begin());
+                    return {};
+                },
+                [&](const ScriptPreset& p) -> Status {
+                    const auto names = bundled_preset_names();
+                    const auto at = std::find(names.begin(), names.end(), p.name);
+                    if (at == names.end())
+                        return Error{ErrorCode::invalid_argument,
+                                     fmt::format("{}: no bundled preset \"{}\"", where, p.name)};
+                    preset_ = static_cast<int>(at - names.begin());
+                    choose_preset(p.name);
+                    return {};
+                },
+                [&](const ScriptProbe& p) -> Status {
+                    script_probe_ = p.at;
+                    return {};
+                },
+                [&](const ScriptBrush& b) -> Status {
+                    brush_radius_ = static_cast<float>(b.radius);
+                    scripted_brush_ = std::make_pair(b.at, scene_->terrain.height_at(b.at));
+                    paint(b.at, b.height);
+                    Scene edited = *scene_;
+                    edited.terrain = *stroke_;
+                    stroke_.reset();
+                    bake_.start(std::move(edited), scene_);
+                    return {};
+                },
+                [&](const ScriptRiver& r) -> Status {
+                    Scene edited = *scene_;
+                    const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(),
+                                                 [&](const SceneRiver& river) { return river.name == r.name; });
+                    if (it == edited.rivers.end())
+                        return Error{ErrorCode::invalid_argument,
+                                     fmt::format("{}: the scene has no river \"{}\"", where, r.name)};
+                    it->discharge = r.discharge;
+                    bake_.start(std::move(edited), scene_);
+                    return {};
+                },
+                [&](const ScriptClip& c) -> Status {
+                    place_clip(c.at, c.radius);
+                    return {};
+                },
+                [&](const ScriptStep& s) -> Status {
+                    steps_.push_back({s.frame, s.kind, s.argument});
+                    return {};
+                },
+                [&](const ScriptTime& t) -> Status {
+                    clock_.set_time(t.seconds);
+                    return {};
+                },
+            },
+            command);
+        if (!ran) return ran;
     }
     return {};
 }

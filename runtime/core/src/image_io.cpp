@@ -20,9 +20,22 @@ std::uint32_t big_endian_u32(const unsigned char* b) {
     return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | std::uint32_t{b[3]};
 }
 
-/// Whether `f` is a PNG whose chunks all lie within the file, up to IEND: stb sizes its
-/// buffer for the compressed data by a chunk's declared length before reading it, so a
-/// 100-byte file that declares a 1 GB chunk would allocate 1 GB. Leaves `f` at its start.
+/// The most bytes deflate can expand one compressed byte into.
+constexpr long long kMaxDeflateRatio = 1032;
+
+/// Bytes of filtered scanlines an IHDR's image decodes to (Adam7's passes add a filter
+/// byte a row of each pass: 8 rows' worth at most).
+long long png_raw_bytes(const unsigned char* ihdr) {
+    const long long w = big_endian_u32(ihdr), h = big_endian_u32(ihdr + 4);
+    const int depth = ihdr[8], colour = ihdr[9];
+    const int channels = colour == 2 ? 3 : colour == 4 ? 2 : colour == 6 ? 4 : 1;
+    return (h + 8) * (1 + (w * channels * depth + 7) / 8);
+}
+
+/// Whether `f` is a PNG whose chunks all lie within the file, up to IEND, and whose pixels
+/// could come from its compressed data: stb sizes its buffers by a chunk's declared length
+/// and by the image's size before decoding, so a 100-byte file that declares a 1 GB chunk,
+/// or a 2^28-pixel image, would allocate 1 GB. Leaves `f` at its start.
 Status png_chunks_fit(std::FILE* f, const std::string& name) {
     static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     auto error = [&](const std::string& why) {
@@ -35,6 +48,7 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
     if (size < 8 || std::fread(head, 1, 8, f) != 8 || !std::equal(head, head + 8, kSignature))
         return error("not a readable image (no PNG signature)");
     long at = 8;
+    long long compressed = 0, raw = 0;
     for (;;) {
         unsigned char chunk[8];
         if (std::fread(chunk, 1, 8, f) != 8) return error("corrupt PNG (it ends before its IEND chunk)");
@@ -43,9 +57,18 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
             return error(fmt::format("corrupt PNG (a chunk at byte {} declares {} bytes, past the end of the file)", at,
                                      length));
         if (std::equal(chunk + 4, chunk + 8, "IEND")) break;
+        if (std::equal(chunk + 4, chunk + 8, "IDAT")) compressed += length;
+        unsigned char ihdr[13];
+        if (at == 8 && std::equal(chunk + 4, chunk + 8, "IHDR") && length == 13) {
+            if (std::fread(ihdr, 1, 13, f) != 13) return error("cannot read the file");
+            raw = png_raw_bytes(ihdr);
+        }
         at += 12 + static_cast<long>(length);
         if (std::fseek(f, at, SEEK_SET) != 0) return error("cannot read the file");
     }
+    if (raw > kMaxDeflateRatio * compressed + 4096)
+        return error(fmt::format("corrupt PNG (its pixels take {} bytes, more than its {} compressed bytes can hold)",
+                                 raw, compressed));
     std::rewind(f);
     return {};
 }
