@@ -6,6 +6,7 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 
@@ -24,12 +25,13 @@ std::uint32_t big_endian_u32(const unsigned char* b) {
 constexpr long long kMaxDeflateRatio = 1032;
 
 /// Bytes of filtered scanlines an IHDR's image decodes to (Adam7's passes add a filter
-/// byte a row of each pass: 8 rows' worth at most).
-long long png_raw_bytes(const unsigned char* ihdr) {
-    const long long w = big_endian_u32(ihdr), h = big_endian_u32(ihdr + 4);
+/// byte a row of each pass: 8 rows' worth at most), in double: the header's sides and
+/// depth are whatever the file says.
+double png_raw_bytes(const unsigned char* ihdr) {
+    const double w = big_endian_u32(ihdr), h = big_endian_u32(ihdr + 4);
     const int depth = ihdr[8], colour = ihdr[9];
     const int channels = colour == 2 ? 3 : colour == 4 ? 2 : colour == 6 ? 4 : 1;
-    return (h + 8) * (1 + (w * channels * depth + 7) / 8);
+    return (h + 8.0) * (1.0 + std::ceil(w * channels * depth / 8.0));
 }
 
 /// Whether `f` is a PNG whose chunks all lie within the file, up to IEND, and whose pixels
@@ -48,7 +50,8 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
     if (size < 8 || std::fread(head, 1, 8, f) != 8 || !std::equal(head, head + 8, kSignature))
         return error("not a readable image (no PNG signature)");
     long at = 8;
-    long long compressed = 0, raw = 0;
+    long long compressed = 0;
+    double raw = 0.0;
     for (;;) {
         unsigned char chunk[8];
         if (std::fread(chunk, 1, 8, f) != 8) return error("corrupt PNG (it ends before its IEND chunk)");
@@ -66,7 +69,7 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
         at += 12 + static_cast<long>(length);
         if (std::fseek(f, at, SEEK_SET) != 0) return error("cannot read the file");
     }
-    if (raw > kMaxDeflateRatio * compressed + 4096)
+    if (raw > static_cast<double>(kMaxDeflateRatio * compressed + 4096))
         return error(fmt::format("corrupt PNG (its pixels take {} bytes, more than its {} compressed bytes can hold)",
                                  raw, compressed));
     std::rewind(f);
