@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 
 namespace tidewater::detail {
 
@@ -76,6 +77,33 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
     return {};
 }
 
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using OpenFile = std::unique_ptr<std::FILE, FileCloser>;
+
+/// A PNG's size and channels from its header, once its chunks are checked and before any
+/// pixel is decoded.
+struct PngHeader {
+    int width = 0, height = 0, channels = 0;
+    bool sixteen_bit = false;
+};
+Result<PngHeader> checked_png_header(std::FILE* f, const std::string& name) {
+    if (auto fits = png_chunks_fit(f, name); !fits) return fits.error();
+    PngHeader h;
+    if (!stbi_info_from_file(f, &h.width, &h.height, &h.channels))
+        return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
+    h.sixteen_bit = stbi_is_16_bit_from_file(f) != 0;
+    return h;
+}
+
+Status check_pixels(const PngHeader& h, const std::string& name) {
+    if (h.width < 1 || h.height < 1 || static_cast<long long>(h.width) * h.height > kMaxImagePixels)
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, h.width, h.height)};
+    return {};
+}
+
 }  // namespace
 
 Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
@@ -86,30 +114,16 @@ Result<Gray16Image> read_png_gray16(const std::filesystem::path& path) {
 }
 
 Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
-    if (auto fits = png_chunks_fit(f, name); !fits) {
-        std::fclose(f);
-        return fits.error();
-    }
+    const OpenFile file(f);
+    auto header = checked_png_header(f, name);
+    if (!header) return header.error();
+    if (!header->sixteen_bit || header->channels != 1)
+        return Error{ErrorCode::schema_error,
+                     fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name,
+                                 header->channels, header->sixteen_bit ? 16 : 8)};
+    if (auto st = check_pixels(*header, name); !st) return st.error();
     int w = 0, h = 0, channels = 0;
-    const int ok = stbi_info_from_file(f, &w, &h, &channels);
-    const bool is16 = ok && stbi_is_16_bit_from_file(f);
-    if (!ok) {
-        std::fclose(f);
-        return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
-    }
-    if (!is16 || channels != 1) {
-        std::fclose(f);
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: expected a 16-bit greyscale PNG (found {} channel(s), {}-bit)", name, channels,
-                                 is16 ? 16 : 8)};
-    }
-    if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels) {
-        std::fclose(f);
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
-    }
     stbi_us* data = stbi_load_from_file_16(f, &w, &h, &channels, 1);
-    std::fclose(f);
     if (!data) return Error{ErrorCode::parse_error, fmt::format("{}: corrupt PNG ({})", name, stbi_failure_reason())};
     Gray16Image img;
     img.width = w;
@@ -121,24 +135,13 @@ Result<Gray16Image> read_png_gray16(std::FILE* f, const std::string& name) {
 
 Result<Rgba8Image> read_png_rgba8(const std::filesystem::path& path) {
     const std::string name = path.string();
-    std::FILE* f = std::fopen(name.c_str(), "rb");
-    if (!f) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
-    if (auto fits = png_chunks_fit(f, name); !fits) {
-        std::fclose(f);
-        return fits.error();
-    }
+    const OpenFile file(std::fopen(name.c_str(), "rb"));
+    if (!file) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", name)};
+    auto header = checked_png_header(file.get(), name);
+    if (!header) return header.error();
+    if (auto st = check_pixels(*header, name); !st) return st.error();
     int w = 0, h = 0, channels = 0;
-    if (!stbi_info_from_file(f, &w, &h, &channels)) {
-        std::fclose(f);
-        return Error{ErrorCode::parse_error, fmt::format("{}: not a readable image ({})", name, stbi_failure_reason())};
-    }
-    if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels) {
-        std::fclose(f);
-        return Error{ErrorCode::schema_error,
-                     fmt::format("{}: {}x{} pixels is out of range (1x1 to 2^28 pixels)", name, w, h)};
-    }
-    stbi_uc* data = stbi_load_from_file(f, &w, &h, &channels, 4);
-    std::fclose(f);
+    stbi_uc* data = stbi_load_from_file(file.get(), &w, &h, &channels, 4);
     if (!data) return Error{ErrorCode::parse_error, fmt::format("{}: corrupt PNG ({})", name, stbi_failure_reason())};
     Rgba8Image img;
     img.width = w;
