@@ -8,17 +8,26 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <string_view>
 
 namespace tidewater::fuzz {
 
-/// This process's scratch folder, made on first use.
+/// This process's scratch folder, made on first use and removed when the process exits
+/// (a crash leaves it, beside the input that caused it).
 inline const std::filesystem::path& scratch_folder() {
+    // The exit handler reads the name from a buffer that outlives every static.
+    static char name[4096] = {};
     static const std::filesystem::path folder = [] {
         auto f = std::filesystem::temp_directory_path() / ("tidewater-fuzz-" + std::to_string(::getpid()));
         std::filesystem::create_directories(f);
+        std::snprintf(name, sizeof name, "%s", f.c_str());
+        std::atexit([] {
+            std::error_code ignored;
+            std::filesystem::remove_all(name, ignored);
+        });
         return f;
     }();
     return folder;
