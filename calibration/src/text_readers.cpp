@@ -10,6 +10,7 @@
 
 #include "record_file.hpp"
 #include "tidewater/calibration/readers.hpp"
+#include "tidewater/detail/json_reader.hpp"
 
 namespace tidewater::calibration {
 
@@ -219,10 +220,8 @@ Result<MeasuredRecord> read_two_column(const std::filesystem::path& path, Record
 }
 
 Result<std::ifstream> open_record_file(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxRecordFileBytes)
-        return Error{ErrorCode::invalid_argument, fmt::format("{}: {} bytes, at most {} read: not a record this reads",
-                                                              path.string(), size, kMaxRecordFileBytes)};
+    if (auto fits = detail::check_file_size(path, kMaxRecordFileBytes, "a record this reads"); !fits)
+        return fits.error();
     std::ifstream in(path);
     if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path.string())};
     return in;

@@ -9,18 +9,13 @@
 #include "editor.hpp"
 #include "editor_script_parse.hpp"
 #include "terrain_brush.hpp"
+#include "tidewater/detail/overloaded.hpp"
 
 namespace tidewater::editor {
 
 namespace {
 
-/// Calls the overload of `visit` for each alternative's type.
-template <typename... F>
-struct Overloaded : F... {
-    using F::operator()...;
-};
-template <typename... F>
-Overloaded(F...) -> Overloaded<F...>;
+using detail::Overloaded;
 
 std::string read_script(const std::string& path, Status& status) {
     std::ifstream in(path, std::ios::binary);

@@ -52,11 +52,16 @@ Result<nlohmann::json> parse_json_text(std::string_view text, const std::string&
     }
 }
 
-Result<std::string> read_text_file(const std::string& path, std::uintmax_t max_bytes) {
+Status check_file_size(const std::filesystem::path& path, std::uintmax_t max_bytes, const char* what) {
     std::error_code ec;
     if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > max_bytes)
         return Error{ErrorCode::invalid_argument,
-                     fmt::format("{}: {} bytes, at most {} read: not a file this reads", path, size, max_bytes)};
+                     fmt::format("{}: {} bytes, at most {} read: not {}", path.string(), size, max_bytes, what)};
+    return {};
+}
+
+Result<std::string> read_text_file(const std::string& path, std::uintmax_t max_bytes) {
+    if (auto fits = check_file_size(path, max_bytes, "a file this reads"); !fits) return fits.error();
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{ErrorCode::io_error, fmt::format("{}: cannot open file", path)};
     std::ostringstream ss;

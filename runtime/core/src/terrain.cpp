@@ -5,18 +5,14 @@
 #include <glm/common.hpp>
 
 #include "tidewater/constants.hpp"
+#include "tidewater/detail/overloaded.hpp"
 #include "tidewater/ripples.hpp"
 
 namespace tidewater {
 
 namespace {
 
-template <class... Fs>
-struct Overloaded : Fs... {
-    using Fs::operator()...;
-};
-template <class... Fs>
-Overloaded(Fs...) -> Overloaded<Fs...>;
+using detail::Overloaded;
 
 double sample_heightmap(const HeightmapTerrain& t, glm::dvec2 p) {
     const Gray16Image& img = *t.image;

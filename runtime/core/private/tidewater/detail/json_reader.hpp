@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -25,6 +26,10 @@ inline constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t{1} << 30;
 /// Parses text as JSON; a syntax error reports line and column. Deeper nesting than
 /// kMaxJsonDepth and strings longer than kMaxJsonString are refused.
 Result<nlohmann::json> parse_json_text(std::string_view text, const std::string& source);
+
+/// Refuses a file over `max_bytes` before it is read: "PATH: N bytes, at most M read: not
+/// WHAT". Ok where its size cannot be read (opening it then says why).
+Status check_file_size(const std::filesystem::path& path, std::uintmax_t max_bytes, const char* what);
 
 /// Reads text from a file; errors name the path. A file over `max_bytes` is refused
 /// before it is read.
