@@ -71,18 +71,16 @@ void SceneCopies::record_copy(const VulkanFunctions& vk, VkCommandBuffer cmd, co
         VkImage source;
         const GpuImage& copy;
         VkImageAspectFlags aspect, barrier_aspects;
-        bool& laid_out;
-    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT, color_laid_out_},
-                  {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects, depth_laid_out_}};
+    } pairs[2] = {{t.color_image, color_, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
+                  {t.depth_image, depth_, VK_IMAGE_ASPECT_DEPTH_BIT, d.aspects}};
     for (const auto& p : pairs) {
         if (multisampled() && &p.copy == &depth_) continue;
         // The previous frame's water pass sampled the copy: wait for it before overwriting.
-        // A copy no frame has written yet has no layout to keep.
-        transition(vk, cmd, p.copy.handle(), p.barrier_aspects,
-                   p.laid_out ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+        // Every texel is written again, so the old contents and layout go (from UNDEFINED:
+        // no layout is assumed from a frame the host may not have submitted).
+        transition(vk, cmd, p.copy.handle(), p.barrier_aspects, VK_IMAGE_LAYOUT_UNDEFINED,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                    VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        p.laid_out = true;
         const VkOffset3D from{t.offset.x, t.offset.y, 0};
         if (multisampled()) {
             VkImageResolve region{};
@@ -127,12 +125,9 @@ void SceneCopies::record_host_copy(const VulkanFunctions& vk, VkCommandBuffer cm
 
 void SceneCopies::depth_to_resolve(const VulkanFunctions& vk, VkCommandBuffer cmd) {
     const DepthTarget& d = *depth_target_;
-    transition(vk, cmd, depth_.handle(), d.aspects,
-               depth_laid_out_ ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
-               d.attachment_layout, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
-               kDepthStage | kColorStage,
+    transition(vk, cmd, depth_.handle(), d.aspects, VK_IMAGE_LAYOUT_UNDEFINED, d.attachment_layout,
+               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, kDepthStage | kColorStage,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    depth_laid_out_ = true;
 }
 
 void SceneCopies::depth_resolved(const VulkanFunctions& vk, VkCommandBuffer cmd) const {

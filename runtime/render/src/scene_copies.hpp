@@ -21,8 +21,9 @@ struct PlaceholderCopies {
 };
 
 /// One view's copies of the opaque scene, the size of its targets. Made without GPU work
-/// or waits (a view added or resized never stalls the frames in flight): the first frame
-/// that copies into them gives them their layout. With multisampled targets (`samples` > 1)
+/// or waits (a view added or resized never stalls the frames in flight): each frame's
+/// copy writes every texel and gives them their layout anew, so a recorded frame the
+/// host never submitted leaves nothing for the next one to assume. With multisampled targets (`samples` > 1)
 /// the colour copy is resolved (averaged) and the depth copy is written by the opaque
 /// pass's depth resolve (sample 0).
 class SceneCopies {
@@ -54,9 +55,6 @@ class SceneCopies {
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     GpuImage color_, depth_;
     VkExtent2D extent_{};
-    // Whether a recorded frame has given each image its layout (SHADER_READ_ONLY between
-    // frames); until then it is UNDEFINED.
-    bool color_laid_out_ = false, depth_laid_out_ = false;
 };
 
 /// The colour and depth attachments of the host's targets and the rendering info over them.
