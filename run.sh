@@ -4,6 +4,7 @@
 #   ./run.sh test    install missing packages, build, run the whole test suite
 #   ./run.sh bench   build, then run the query benchmark (not part of the test suite)
 #   ./run.sh fuzz [SECONDS]   build the fuzz targets, run each for SECONDS (default 60)
+#   ./run.sh tsan    build with ThreadSanitizer, run the threaded tests (part of test)
 # Each step is skipped when already done, so a second run is quick.
 set -euo pipefail
 
@@ -73,6 +74,20 @@ configure_sanitize() {
     -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 }
 
+# The ThreadSanitizer build: Clang, the core library, its tests and the command line only;
+# it runs the threaded tests (ctest -L threads).
+TSAN_BUILD="$BUILD-tsan"
+configure_tsan() {
+  CC=clang CXX=clang++ configure "$TSAN_BUILD" -DTIDEWATER_SANITIZE=thread -DTIDEWATER_BUILD_BENCHMARKS=OFF \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo
+}
+run_threads_under_tsan() {
+  configure_tsan
+  build "$TSAN_BUILD" --target tidewater_core_tests tidewater
+  log "running the threaded tests under ThreadSanitizer"
+  ctest --test-dir "$TSAN_BUILD" --output-on-failure --parallel "$JOBS" --timeout 1200 -L threads
+}
+
 # Runs every fuzz target for $1 seconds from its seeds (tests/fuzz/corpus, examples/), in a
 # corpus kept in the build folder between runs. A crash, leak, timeout, sanitizer report
 # or an allocation over 512 MiB fails the step; the input is kept under fuzz/artifacts.
@@ -123,10 +138,16 @@ case "$cmd" in
     # The unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer, then every
     # fuzz target for a bounded time (TIDEWATER_FUZZ_SECONDS each).
     configure_sanitize
-    build "$SANITIZE_BUILD" --target tidewater_core_tests tidewater_calibration_tests tidewater_fuzz_targets
-    log "running the unit tests under ASan + UBSan"
-    ctest --test-dir "$SANITIZE_BUILD" --output-on-failure --parallel "$JOBS" --timeout 900 -L unit
+    build "$SANITIZE_BUILD" --target tidewater_core_tests tidewater_calibration_tests tidewater_fuzz_targets \
+      tidewater_vulkan_fault_tests
+    log "running the unit tests and the Vulkan fault tests under ASan + UBSan"
+    ctest --test-dir "$SANITIZE_BUILD" --output-on-failure --parallel "$JOBS" --timeout 1500 -L 'unit|vulkan_faults'
     run_fuzzers "${TIDEWATER_FUZZ_SECONDS:-30}"
+    run_threads_under_tsan
+    ;;
+  tsan)
+    install_packages
+    run_threads_under_tsan
     ;;
   fuzz)
     install_packages
@@ -141,7 +162,7 @@ case "$cmd" in
     "$BUILD/bin/tidewater" bench --out "$BUILD/bench/query_bench.json" --markdown "$BUILD/bench/query_bench.md"
     ;;
   *)
-    echo "usage: ./run.sh demo|test|bench|fuzz [SECONDS]" >&2
+    echo "usage: ./run.sh demo|test|bench|tsan|fuzz [SECONDS]" >&2
     exit 2
     ;;
 esac

@@ -17,6 +17,7 @@
 
 #include "bake_worker.hpp"
 #include "editor_options.hpp"
+#include "editor_script_parse.hpp"
 #include "editor_window.hpp"
 #include "orbit_camera.hpp"
 #include "shader_reload.hpp"
@@ -76,12 +77,16 @@ class Editor {
     std::unique_ptr<ShaderReload> shaders_;
     std::string shader_dir_;
     std::string shader_line_;
-    /// Script steps run at a given frame: "at N replace FILE|OLD|NEW", "at N screenshot PATH".
-    struct Step {
-        long frame = 0;
-        std::string kind, argument;
+    /// The script's lines that run at a given frame ("at N ..."), and the script's path.
+    std::vector<ScriptLine> scheduled_;
+    std::string script_path_;
+    /// After the first re-bake swapped in, and how many were: the soak's memory report.
+    struct MemoryMark {
+        std::uint64_t resident_bytes = 0, device_bytes = 0;
     };
-    std::vector<Step> steps_;
+    std::optional<MemoryMark> after_first_rebake_;
+    int rebakes_ = 0;
+    MemoryMark memory_now() const;
     bool force_reload_ = false;
     bool brushing_ = false;  // the Terrain panel's brush is on (left drag paints)
     float brush_radius_ = 60.0f, brush_height_ = 2.0f;
@@ -98,7 +103,10 @@ class Editor {
     void place_clip(glm::dvec3 at, double radius);
     void drag_points();
     std::optional<ImVec2> project(glm::dvec3 p) const;
-    Status run_step(const Step& step, std::string& screenshot);
+    /// One script line, as the panel it stands for would; a screenshot step names the file
+    /// the frame is written to.
+    Status run_command(const ScriptLine& line, std::string& screenshot);
+    Status run_step(const ScriptStep& step, std::string& screenshot);
 };
 
 }  // namespace tidewater::editor

@@ -22,6 +22,8 @@
 #include <fmt/format.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
+#include <malloc.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -106,6 +108,24 @@ Status Editor::start(const Options& options) {
     return {};
 }
 
+// What the soak watches: the process's resident set (/proc/self/statm) and the device
+// memory the renderer holds. The heap's free pages go back to the system first (glibc
+// keeps them otherwise), so that the figure is what the process still uses.
+Editor::MemoryMark Editor::memory_now() const {
+    MemoryMark mark;
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+    std::uint64_t pages = 0, resident = 0;
+    if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(statm, "%lu %lu", &pages, &resident) == 2)
+            mark.resident_bytes = resident * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
+        std::fclose(statm);
+    }
+    mark.device_bytes = renderer_->stats().device_memory_bytes;
+    return mark;
+}
+
 int Editor::run(const Options& options) {
     if (auto st = start(options); !st) {
         std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
@@ -129,12 +149,15 @@ int Editor::run(const Options& options) {
         if (auto done = bake_.ready()) swap_in(std::move(*done));
         const auto frame_start = std::chrono::steady_clock::now();
         std::string step_screenshot;
-        for (const Step& step : steps_)
-            if (step.frame == i)
-                if (auto st = run_step(step, step_screenshot); !st) {
+        for (const ScriptLine& line : scheduled_)
+            if (line.frame == i) {
+                // A scripted edit waits for the re-bake before it, as a panel waits for its bar.
+                if (bake_.running()) swap_in(bake_.job.get());
+                if (auto st = run_command(line, step_screenshot); !st) {
                     std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
                     ok = false;
                 }
+            }
         if (shaders_ && (shaders_->changed() || force_reload_)) {
             // A saved shader: compiled and swapped in before this frame records.
             force_reload_ = false;
@@ -241,6 +264,15 @@ int Editor::run(const Options& options) {
         std::printf("terrain at the probe: %.3f m\n", scene_->terrain.height_at({probe_->point.x, probe_->point.z}));
         std::printf("gpu: terrain %.3f ms, copy %.3f ms, water %.3f ms, total %.3f ms\n", timings_.sky_and_terrain_ms,
                     timings_.scene_copy_ms, timings_.water_ms, timings_.total_ms);
+    }
+    if (after_first_rebake_) {
+        const MemoryMark end = memory_now(), first = *after_first_rebake_;
+        std::printf(
+            "memory after the first of %d re-bakes: resident %.1f MiB, renderer's device memory %.1f MiB; at the end: "
+            "%.1f MiB, %.1f MiB\n",
+            rebakes_, static_cast<double>(first.resident_bytes) / 1048576.0,
+            static_cast<double>(first.device_bytes) / 1048576.0, static_cast<double>(end.resident_bytes) / 1048576.0,
+            static_cast<double>(end.device_bytes) / 1048576.0);
     }
     if (bake_.running()) bake_.job.wait();
     vkDeviceWaitIdle(window_.context().device);

@@ -41,6 +41,7 @@ void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
         return;
     }
     scene_ = std::move(baked).value();
+    if (++rebakes_ == 1) after_first_rebake_ = memory_now();
     refloat();
     message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
                            scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);

@@ -30,92 +30,97 @@ std::string read_script(const std::string& path, Status& status) {
 
 }  // namespace
 
-// A script for CI and pictures (editor_script_parse.hpp): parsed whole, then each command
-// run as the panel it stands for would.
+// A script for CI, pictures and soaks (editor_script_parse.hpp): parsed whole; the lines
+// without a frame run now, the others before their frame (run_command from the frame loop).
 Status Editor::run_script(const std::string& path) {
     Status read;
     const std::string text = read_script(path, read);
     if (!read) return read;
     auto commands = parse_script(text, path);
     if (!commands) return commands.error();
-    for (const auto& [number, command] : *commands) {
-        const std::string where = fmt::format("{}:{}", path, number);
-        Status ran = std::visit(
-            Overloaded{
-                [&](const ScriptCamera& c) -> Status {
-                    OrbitCamera& camera = c.second ? second_camera_ : camera_;
-                    const double fov = c.fov_y_deg > 0.0 ? c.fov_y_deg : camera_.fov_y_deg;
-                    camera = OrbitCamera::looking(c.position, c.target, fov);
-                    if (c.second) second_camera_set_ = two_viewports_ = true;
-                    return {};
-                },
-                [&](const ScriptViewports& v) -> Status {
-                    two_viewports_ = v.count == 2;
-                    return {};
-                },
-                [&](const ScriptView& v) -> Status {
-                    const auto view = render::parse_debug_view(v.name);
-                    if (!view)
-                        return Error{ErrorCode::invalid_argument, fmt::format("{}: no view \"{}\"", where, v.name)};
-                    const auto all = render::all_debug_views();
-                    view_ = static_cast<int>(std::find(all.begin(), all.end(), *view) - all.begin());
-                    return {};
-                },
-                [&](const ScriptPreset& p) -> Status {
-                    const auto names = bundled_preset_names();
-                    const auto at = std::find(names.begin(), names.end(), p.name);
-                    if (at == names.end())
-                        return Error{ErrorCode::invalid_argument,
-                                     fmt::format("{}: no bundled preset \"{}\"", where, p.name)};
-                    preset_ = static_cast<int>(at - names.begin());
-                    choose_preset(p.name);
-                    return {};
-                },
-                [&](const ScriptProbe& p) -> Status {
-                    script_probe_ = p.at;
-                    return {};
-                },
-                [&](const ScriptBrush& b) -> Status {
-                    brush_radius_ = static_cast<float>(b.radius);
-                    scripted_brush_ = std::make_pair(b.at, scene_->terrain.height_at(b.at));
-                    paint(b.at, b.height);
-                    Scene edited = *scene_;
-                    edited.terrain = *stroke_;
-                    stroke_.reset();
-                    bake_.start(std::move(edited), scene_);
-                    return {};
-                },
-                [&](const ScriptRiver& r) -> Status {
-                    Scene edited = *scene_;
-                    const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(),
-                                                 [&](const SceneRiver& river) { return river.name == r.name; });
-                    if (it == edited.rivers.end())
-                        return Error{ErrorCode::invalid_argument,
-                                     fmt::format("{}: the scene has no river \"{}\"", where, r.name)};
-                    it->discharge = r.discharge;
-                    bake_.start(std::move(edited), scene_);
-                    return {};
-                },
-                [&](const ScriptClip& c) -> Status {
-                    place_clip(c.at, c.radius);
-                    return {};
-                },
-                [&](const ScriptStep& s) -> Status {
-                    steps_.push_back({s.frame, s.kind, s.argument});
-                    return {};
-                },
-                [&](const ScriptTime& t) -> Status {
-                    clock_.set_time(t.seconds);
-                    return {};
-                },
-            },
-            command);
-        if (!ran) return ran;
+    script_path_ = path;
+    std::string no_screenshot;
+    for (const ScriptLine& line : *commands) {
+        if (line.frame >= 0) {
+            scheduled_.push_back(line);
+        } else if (auto ran = run_command(line, no_screenshot); !ran) {
+            return ran;
+        }
     }
     return {};
 }
 
-Status Editor::run_step(const Step& step, std::string& screenshot) {
+Status Editor::run_command(const ScriptLine& line, std::string& screenshot) {
+    const std::string where = fmt::format("{}:{}", script_path_, line.number);
+    return std::visit(
+        Overloaded{
+            [&](const ScriptCamera& c) -> Status {
+                OrbitCamera& camera = c.second ? second_camera_ : camera_;
+                const double fov = c.fov_y_deg > 0.0 ? c.fov_y_deg : camera_.fov_y_deg;
+                camera = OrbitCamera::looking(c.position, c.target, fov);
+                if (c.second) second_camera_set_ = two_viewports_ = true;
+                return {};
+            },
+            [&](const ScriptViewports& v) -> Status {
+                two_viewports_ = v.count == 2;
+                return {};
+            },
+            [&](const ScriptView& v) -> Status {
+                const auto view = render::parse_debug_view(v.name);
+                if (!view) return Error{ErrorCode::invalid_argument, fmt::format("{}: no view \"{}\"", where, v.name)};
+                const auto all = render::all_debug_views();
+                view_ = static_cast<int>(std::find(all.begin(), all.end(), *view) - all.begin());
+                return {};
+            },
+            [&](const ScriptPreset& p) -> Status {
+                const auto names = bundled_preset_names();
+                const auto at = std::find(names.begin(), names.end(), p.name);
+                if (at == names.end())
+                    return Error{ErrorCode::invalid_argument,
+                                 fmt::format("{}: no bundled preset \"{}\"", where, p.name)};
+                preset_ = static_cast<int>(at - names.begin());
+                choose_preset(p.name);
+                return {};
+            },
+            [&](const ScriptProbe& p) -> Status {
+                script_probe_ = p.at;
+                return {};
+            },
+            [&](const ScriptBrush& b) -> Status {
+                brush_radius_ = static_cast<float>(b.radius);
+                scripted_brush_ = std::make_pair(b.at, scene_->terrain.height_at(b.at));
+                paint(b.at, b.height);
+                Scene edited = *scene_;
+                edited.terrain = *stroke_;
+                stroke_.reset();
+                bake_.start(std::move(edited), scene_);
+                return {};
+            },
+            [&](const ScriptRiver& r) -> Status {
+                Scene edited = *scene_;
+                const auto it = std::find_if(edited.rivers.begin(), edited.rivers.end(),
+                                             [&](const SceneRiver& river) { return river.name == r.name; });
+                if (it == edited.rivers.end())
+                    return Error{ErrorCode::invalid_argument,
+                                 fmt::format("{}: the scene has no river \"{}\"", where, r.name)};
+                it->discharge = r.discharge;
+                bake_.start(std::move(edited), scene_);
+                return {};
+            },
+            [&](const ScriptClip& c) -> Status {
+                place_clip(c.at, c.radius);
+                return {};
+            },
+            [&](const ScriptStep& s) -> Status { return run_step(s, screenshot); },
+            [&](const ScriptTime& t) -> Status {
+                clock_.set_time(t.seconds);
+                return {};
+            },
+        },
+        line.command);
+}
+
+Status Editor::run_step(const ScriptStep& step, std::string& screenshot) {
     if (step.kind == "screenshot") {
         screenshot = step.argument;
         return {};

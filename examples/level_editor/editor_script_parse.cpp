@@ -84,13 +84,9 @@ std::optional<ScriptCommand> parse_line(const std::string& command, Words& w) {
         if (!w.point(c.at) || !w.number(c.radius, 1e-3, kScriptMaxCoordinate) || !w.done()) return std::nullopt;
         return c;
     }
-    if (command == "at") {
+    if (command == "replace" || command == "screenshot") {  // only after "at N"
         ScriptStep s;
-        double frame = 0.0;
-        if (!w.number(frame, 0.0, 1e9) || frame != std::floor(frame) || !w.word(s.kind) ||
-            (s.kind != "replace" && s.kind != "screenshot"))
-            return std::nullopt;
-        s.frame = static_cast<long>(frame);
+        s.kind = command;
         s.argument = w.rest();
         if (s.argument.empty()) return std::nullopt;
         return s;
@@ -113,10 +109,21 @@ Result<std::vector<ScriptLine>> parse_script(std::string_view text, const std::s
         Words words(line);
         std::string command;
         if (!words.word(command) || command[0] == '#') continue;
-        auto parsed = parse_line(command, words);
+        // "at N COMMAND": the command runs before frame N is drawn; without it, at the start.
+        long frame = -1;
+        std::optional<ScriptCommand> parsed;
+        if (command == "at") {
+            double at = 0.0;
+            if (words.number(at, 0.0, 1e9) && at == std::floor(at) && words.word(command) && command != "at") {
+                frame = static_cast<long>(at);
+                parsed = parse_line(command, words);
+            }
+        } else if (command != "replace" && command != "screenshot") {
+            parsed = parse_line(command, words);
+        }
         if (!parsed)
             return Error{ErrorCode::parse_error, fmt::format("{}:{}: cannot read \"{}\"", source, number, line)};
-        commands.push_back({number, std::move(*parsed)});
+        commands.push_back({number, frame, std::move(*parsed)});
     }
     return commands;
 }

@@ -10,6 +10,8 @@
 //   second PX PY PZ TX TY TZ [FOV]  (the right viewport's camera; two viewports from then on)
 //   at N replace FILE|OLD|NEW   (a shader in --shader-dir, at frame N: a hot reload follows)
 //   at N screenshot PATH        (the frame N, panels included)
+//   at N COMMAND                (any command above, run before frame N is drawn; a re-bake
+//                                it starts is swapped in before the next frame)
 // Lengths in metres, angles in degrees, times in seconds, discharge in m^3/s. Names
 // (views, presets, rivers) are checked when the command runs.
 #pragma once
@@ -55,7 +57,6 @@ struct ScriptClip {
     double radius = 0.0;
 };
 struct ScriptStep {
-    long frame = 0;
     std::string kind, argument;  ///< "replace" FILE|OLD|NEW, or "screenshot" PATH
 };
 struct ScriptTime {
@@ -64,9 +65,11 @@ struct ScriptTime {
 using ScriptCommand = std::variant<ScriptCamera, ScriptViewports, ScriptView, ScriptPreset, ScriptProbe, ScriptBrush,
                                    ScriptRiver, ScriptClip, ScriptStep, ScriptTime>;
 
-/// A command and the line it is on (from 1).
+/// A command, the line it is on (from 1) and the frame before which it runs (-1: at the
+/// start; a ScriptStep always has one).
 struct ScriptLine {
     int number = 0;
+    long frame = -1;
     ScriptCommand command;
 };
 

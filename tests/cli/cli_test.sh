@@ -458,6 +458,18 @@ JSON
     sed 's|"bake": "baked"|"bake": "baked", "resolution": 64|' loads_bake.json > both.json
     expect_error "bake and resolution together" "/shore/bake" "$TW" query --scene both.json --points points.csv --time 0
     ;;
+  threads)
+    # The verbs on several threads answer as on one (the ThreadSanitizer build runs this case).
+    "$TW" bake --resolution 256 --threads 2 --out two --quiet
+    check "a bake on two threads exits 0" test -s two/shore.json
+    "$TW" bake --resolution 256 --threads 1 --out one --quiet
+    check "two threads bake the one thread's distance field" cmp one/distance_signed_distance.png two/distance_signed_distance.png
+    awk 'BEGIN { print "x,z"; for (k = 0; k < 3000; k++) printf "%d,%d\n", (k * 37) % 1400 - 700, (k * 53) % 1400 - 700 }' > coast.csv
+    sed 's|"ocean": "ocean_rolling",|"ocean": "ocean_rolling", "shore": {"bake": "two"},|' "$EXAMPLES/scenes/default.json" > loads_two.json
+    "$TW" query --scene loads_two.json --points coast.csv --time 4 --threads 1 --out q1.csv
+    "$TW" query --scene loads_two.json --points coast.csv --time 4 --threads 2 --out q2.csv
+    check "a query on two threads answers as on one" cmp q1.csv q2.csv
+    ;;
   kills)
     # Every verb that writes, killed during its computation and during its writing.
     kill_during "0.2 0.6 w0 w0.1 w0.4" baked baked.ref "$TW" bake --resolution 256 --out baked --quiet

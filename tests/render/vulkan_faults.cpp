@@ -1,9 +1,23 @@
 #include "vulkan_faults.hpp"
 
+#include <dlfcn.h>
+
 #include <cstring>
 #include <vector>
 
 namespace tidewater::test {
+
+namespace {
+// The loader unloads the driver and the validation layer with the instance. LeakSanitizer
+// reads the stacks of what is left at exit, and an unloaded library's frames have no name
+// for lsan_vulkan_driver.supp to match: loaded here first, they stay (RTLD_NODELETE).
+// Absent ones (another driver) are skipped.
+const bool g_vulkan_libraries_kept = [] {
+    for (const char* name : {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"})
+        static_cast<void>(dlopen(name, RTLD_LAZY | RTLD_NODELETE));
+    return true;
+}();
+}  // namespace
 
 VulkanFaults& vulkan_faults() {
     static VulkanFaults plan;

@@ -107,8 +107,8 @@ std::vector<std::string> budget_breaches(const std::vector<TierStage>& stages, s
         const std::string name = fmt::format("{} / {} / {}", tier, st.pipeline, st.stage);
         if (st.value("Spilled VGPRs", 0.0) > 0.0 || st.value("Spilled SGPRs", 0.0) > 0.0)
             out.push_back(fmt::format("{} spills registers", name));
-        auto row = std::find_if(budget.begin(), budget.end(), [&](const BudgetRow& r) {
-            return r.tier == tier && r.pipeline == st.pipeline && r.stage == st.stage;
+        auto row = std::find_if(budget.begin(), budget.end(), [&, &t = tier, &s = st](const BudgetRow& r) {
+            return r.tier == t && r.pipeline == s.pipeline && r.stage == s.stage;
         });
         if (row == budget.end()) {
             out.push_back(fmt::format("{} has no row in the budget: add one", name));

@@ -30,7 +30,14 @@ Result<VkDeviceMemory> allocate(const Device& ctx, VkMemoryRequirements req, VkM
     info.memoryTypeIndex = *type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     TW_VK_TRY(ctx.vk().AllocateMemory(ctx.device, &info, ctx.allocator, &memory));
+    ctx.vk().device_memory_bytes += req.size;
     return memory;
+}
+
+void free_memory(const VulkanFunctions& vk, VkDevice device, VkDeviceMemory memory, VkDeviceSize bytes,
+                 const VkAllocationCallbacks* allocator) {
+    vk.FreeMemory(device, memory, allocator);
+    vk.device_memory_bytes -= bytes;
 }
 
 }  // namespace
@@ -59,6 +66,7 @@ Result<GpuBuffer> GpuBuffer::create(const Device& ctx, VkDeviceSize size, VkBuff
         allocate(ctx, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "buffer");
     if (!memory) return memory.error();
     b.memory_ = *memory;
+    b.memory_bytes_ = req.size;
     TW_VK_TRY(ctx.vk().BindBufferMemory(ctx.device, b.buffer_, b.memory_, 0));
     TW_VK_TRY(ctx.vk().MapMemory(ctx.device, b.memory_, 0, VK_WHOLE_SIZE, 0, &b.mapped_));
     return b;
@@ -72,6 +80,7 @@ GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
         functions_ = std::move(other.functions_);
         buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        memory_bytes_ = std::exchange(other.memory_bytes_, 0);
         mapped_ = std::exchange(other.mapped_, nullptr);
         size_ = std::exchange(other.size_, 0);
     }
@@ -81,7 +90,7 @@ GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
 void GpuBuffer::reset() {
     if (!device_) return;
     if (buffer_) functions_->DestroyBuffer(device_, buffer_, allocator_);
-    if (memory_) functions_->FreeMemory(device_, memory_, allocator_);  // unmaps implicitly
+    if (memory_) free_memory(*functions_, device_, memory_, memory_bytes_, allocator_);  // unmaps implicitly
     buffer_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     mapped_ = nullptr;
@@ -120,6 +129,7 @@ Result<GpuImage> GpuImage::create(const Device& ctx, VkExtent2D extent, VkFormat
     auto memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "image");
     if (!memory) return memory.error();
     img.memory_ = *memory;
+    img.memory_bytes_ = req.size;
     TW_VK_TRY(ctx.vk().BindImageMemory(ctx.device, img.image_, img.memory_, 0));
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = img.image_;
@@ -138,6 +148,7 @@ GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
         functions_ = std::move(other.functions_);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        memory_bytes_ = std::exchange(other.memory_bytes_, 0);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
         format_ = other.format_;
         extent_ = other.extent_;
@@ -149,7 +160,7 @@ void GpuImage::reset() {
     if (!device_) return;
     if (view_) functions_->DestroyImageView(device_, view_, allocator_);
     if (image_) functions_->DestroyImage(device_, image_, allocator_);
-    if (memory_) functions_->FreeMemory(device_, memory_, allocator_);
+    if (memory_) free_memory(*functions_, device_, memory_, memory_bytes_, allocator_);
     view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;

@@ -40,6 +40,7 @@ class GpuBuffer {
     std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize memory_bytes_ = 0;  // counted in functions_->device_memory_bytes
     void* mapped_ = nullptr;
     VkDeviceSize size_ = 0;
 };
@@ -68,6 +69,7 @@ class GpuImage {
     std::shared_ptr<const VulkanFunctions> functions_;  // those it was made with
     VkImage image_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize memory_bytes_ = 0;  // counted in functions_->device_memory_bytes
     VkImageView view_ = VK_NULL_HANDLE;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};

@@ -1012,6 +1012,7 @@ RendererStats Renderer::stats(ViewId id) const {
     RendererStats s;
     s.terrain_bytes = impl_->terrain ? impl_->terrain->resident_bytes : 0;
     s.shore_bytes = impl_->shore.bytes();
+    s.device_memory_bytes = impl_->vk().device_memory_bytes.load();
     s.shore_stride = static_cast<std::uint32_t>(impl_->shore.stride());
     s.shore_streamed_tiles = impl_->shore.streamed_tiles();
     s.shore_streamable_tiles = impl_->shore.streamable_tiles();

@@ -9,6 +9,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include "tidewater/render/device_context.hpp"
@@ -116,6 +118,9 @@ struct VulkanFunctions {
     TIDEWATER_VK_DEVICE_FUNCTIONS(TIDEWATER_VK_MEMBER)
     TIDEWATER_VK_PIPELINE_EXECUTABLE_FUNCTIONS(TIDEWATER_VK_MEMBER)
 #undef TIDEWATER_VK_MEMBER
+    /// Bytes of device memory allocated through this table and not yet freed (GpuBuffer,
+    /// GpuImage): what one Device's owner, a renderer say, holds. Any thread.
+    mutable std::atomic<std::uint64_t> device_memory_bytes{0};
 };
 
 /// The host's device as Tidewater's code calls it: the context the host lent and the

@@ -246,6 +246,9 @@ struct RendererStats {
     std::uint64_t terrain_triangles = 0;  ///< Drawn by the view's last frame.
     std::uint64_t terrain_bytes = 0;      ///< Resident: the terrain's height texture and patch.
     std::uint64_t shore_bytes = 0;        ///< Resident: the shore models' fields.
+    /// Every byte of device memory the renderer holds now (its buffers and images, the two
+    /// above included, and those kept until the frames in flight that use them are done).
+    std::uint64_t device_memory_bytes = 0;
     /// The shore fields' coarse level is every k-th texel (1: the models' own grids, all resident).
     std::uint32_t shore_stride = 1;
     /// Over the budget (shore_stride > 1): the full-resolution shore tiles drawn over the
