@@ -74,12 +74,14 @@ configure_sanitize() {
     -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 }
 
-# The ThreadSanitizer build: Clang, the core library, its tests and the command line only;
-# it runs the threaded tests (ctest -L threads).
+# The ThreadSanitizer build: Clang, the core and bake libraries, their tests and a command
+# line without the renderer, the calibration and the inspector; it runs the threaded tests
+# (ctest -L threads).
 TSAN_BUILD="$BUILD-tsan"
 configure_tsan() {
   CC=clang CXX=clang++ configure "$TSAN_BUILD" -DTIDEWATER_SANITIZE=thread -DTIDEWATER_BUILD_BENCHMARKS=OFF \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    -DTIDEWATER_BUILD_RENDER=OFF -DTIDEWATER_BUILD_CALIBRATION=OFF -DTIDEWATER_BUILD_INSPECTOR=OFF \
+    -DTIDEWATER_BUILD_EDITOR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 }
 run_threads_under_tsan() {
   configure_tsan

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../shore_model_compare.hpp"
+#include "../small_island.hpp"
 #include "test_helpers.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -22,9 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kSmallIsland = R"({"version": 1, "name": "small island", "water_level": 0,
-    "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
-    "ocean": "ocean_rolling", "shore": {"resolution": 64}})";
+using test::kSmallIsland;
 
 std::vector<glm::dvec2> beach_points() {
     std::vector<glm::dvec2> points;

@@ -14,6 +14,7 @@
 
 #include "../../examples/level_editor/bake_worker.hpp"
 #include "../island_heightmap.hpp"
+#include "../small_island.hpp"
 #include "tidewater/query.hpp"
 #include "tidewater/scene.hpp"
 #include "tidewater/scene_bake.hpp"
@@ -22,9 +23,7 @@
 namespace tidewater {
 namespace {
 
-constexpr const char* kSmallIsland = R"({"version": 1, "name": "small island", "water_level": 0,
-    "terrain": {"island": {"seed": 7, "radius": 300, "height": 40, "seabed": -30}},
-    "ocean": "ocean_rolling", "shore": {"resolution": 64}})";
+using test::kSmallIsland;
 
 std::vector<glm::dvec2> coast_points() {
     std::vector<glm::dvec2> points;

@@ -22,6 +22,16 @@ struct Rgb {
     double r = 0, g = 0, b = 0;  // 0..1
 };
 
+/// The default island seen from 30 m up and 160 m out, at 2 s: a frame tests draw when
+/// what it shows does not matter.
+inline render::FrameInfo island_frame() {
+    render::FrameInfo frame;
+    frame.camera.position = {0.0, 30.0, 160.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    frame.time = 2.0;
+    return frame;
+}
+
 inline Rgb pixel(const render::RgbaImage& img, int x, int y) {
     const std::size_t i =
         (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../baked_scene.hpp"
+#include "render_helpers.hpp"
 #include "tidewater/render/gpu_query.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/renderer.hpp"
@@ -225,14 +226,6 @@ class LoaderHookTest : public test::VulkanTest {
     }
 };
 
-render::FrameInfo a_frame() {
-    render::FrameInfo frame;
-    frame.camera.position = {0.0, 30.0, 160.0};
-    frame.camera.target = {0.0, 0.0, 0.0};
-    frame.time = 2.0;
-    return frame;
-}
-
 TEST_F(LoaderHookTest, EveryHandleIsDestroyedThroughTheHostsLoaderFromAnotherThread) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -244,7 +237,7 @@ TEST_F(LoaderHookTest, EveryHandleIsDestroyedThroughTheHostsLoaderFromAnotherThr
     ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
     auto target = render::OffscreenTarget::create(hooked_context(), 96, 64);
     ASSERT_TRUE(target.ok()) << target.error().message;
-    auto image = (*target)->render(**renderer, a_frame());
+    auto image = (*target)->render(**renderer, test::island_frame());
     ASSERT_TRUE(image.ok()) << image.error().message;
     auto query = render::GpuQuery::create(hooked_context());
     ASSERT_TRUE(query.ok()) << query.error().message;
@@ -291,7 +284,7 @@ TEST_F(LoaderHookTest, AddingResizingAndRemovingViewsNeitherSubmitsNorWaits) {
     // Frames still draw after it (through a target of their own, which submits and waits).
     auto target = render::OffscreenTarget::create(hooked_context(), 120, 64);
     ASSERT_TRUE(target.ok()) << target.error().message;
-    auto image = (*target)->render(r, a_frame());
+    auto image = (*target)->render(r, test::island_frame());
     ASSERT_TRUE(image.ok()) << image.error().message;
     EXPECT_GT(g_ledger.submits, 0) << "the hook counts submissions";
 }
@@ -316,7 +309,7 @@ TEST_F(LoaderHookTest, ALostDeviceComesBackAsAnErrorFromEveryCallThatMeetsIt) {
         EXPECT_NE(st.error().message.find("VK_ERROR_DEVICE_LOST"), std::string::npos) << st.error().message;
     };
     expect_lost((*renderer)->set_scene(*scene), "set_scene (an upload)");
-    auto image = (*target)->render(**renderer, a_frame());
+    auto image = (*target)->render(**renderer, test::island_frame());
     ASSERT_FALSE(image.ok());
     EXPECT_EQ(image.error().vk_result, VK_ERROR_DEVICE_LOST) << image.error().message;
     const std::vector<glm::dvec2> points = {{10.0, 20.0}};

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../baked_scene.hpp"
+#include "render_helpers.hpp"
 #include "tidewater/render/gpu_query.hpp"
 #include "tidewater/render/offscreen.hpp"
 #include "tidewater/render/renderer.hpp"
@@ -26,14 +27,6 @@ namespace {
 
 using test::FaultKind;
 using test::vulkan_faults;
-
-render::FrameInfo a_frame() {
-    render::FrameInfo frame;
-    frame.camera.position = {0.0, 30.0, 160.0};
-    frame.camera.target = {0.0, 0.0, 0.0};
-    frame.time = 2.0;
-    return frame;
-}
 
 /// Every how many calls a sweep fails one (1: each; the sanitizer build's ctest sets 3).
 int fault_stride() {
@@ -87,7 +80,7 @@ class VulkanFaultTest : public test::VulkanTest {
     }
 
     Status render_frame() {
-        auto image = target_->render(*renderer_, a_frame());
+        auto image = target_->render(*renderer_, test::island_frame());
         if (!image) return image.error();
         return {};
     }

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -85,114 +86,97 @@ namespace {
 
 using CallKind = VulkanFaults::CallKind;
 
-// A function that fails as the plan says, or else calls the driver's.
+// A function that fails as the plan says, or else calls the driver's. Its Tag names it,
+// says what kind of call it is and, where the spec shapes a failure, what a failed call
+// leaves (`failed`: outputs set to null, a wait that still lets the work finish).
 template <typename Tag, typename Pfn>
 struct Faulty;
 template <typename Tag, typename... Args>
 struct Faulty<Tag, VkResult(VKAPI_PTR*)(Args...)> {
     static inline VkResult(VKAPI_PTR* real)(Args...) = nullptr;
     static VKAPI_ATTR VkResult VKAPI_CALL call(Args... args) {
-        const VkResult fault = vulkan_faults().on_call(Tag::name, CallKind::other);
-        return fault != VK_SUCCESS ? fault : real(args...);
+        const VkResult fault = vulkan_faults().on_call(Tag::name, Tag::kind);
+        if (fault == VK_SUCCESS) return real(args...);
+        if constexpr (requires { Tag::failed(args...); }) Tag::failed(args...);
+        return fault;
     }
 };
 
-#define TW_FAULTY_TAG(fn)                             \
-    struct Tag##fn {                                  \
-        static constexpr const char* name = "vk" #fn; \
+#define TW_FAULTY_TAG(fn, call_kind)                          \
+    struct Tag##fn {                                          \
+        static constexpr const char* name = "vk" #fn;         \
+        static constexpr CallKind kind = CallKind::call_kind; \
     };
-#define TW_GENERIC_FUNCTIONS(X)  \
-    X(AllocateMemory)            \
-    X(BeginCommandBuffer)        \
-    X(BindBufferMemory)          \
-    X(BindImageMemory)           \
-    X(CreateBuffer)              \
-    X(CreateCommandPool)         \
-    X(CreateDescriptorPool)      \
-    X(CreateDescriptorSetLayout) \
-    X(CreateFence)               \
-    X(CreateImage)               \
-    X(CreateImageView)           \
-    X(CreatePipelineLayout)      \
-    X(CreateQueryPool)           \
-    X(CreateSampler)             \
-    X(CreateShaderModule)        \
-    X(EndCommandBuffer)          \
-    X(MapMemory)                 \
-    X(ResetCommandPool)
-TW_GENERIC_FUNCTIONS(TW_FAULTY_TAG)
+#define TW_PLAIN_FUNCTIONS(X)           \
+    X(AllocateMemory, other)            \
+    X(BeginCommandBuffer, other)        \
+    X(BindBufferMemory, other)          \
+    X(BindImageMemory, other)           \
+    X(CreateBuffer, other)              \
+    X(CreateCommandPool, other)         \
+    X(CreateDescriptorPool, other)      \
+    X(CreateDescriptorSetLayout, other) \
+    X(CreateFence, other)               \
+    X(CreateImage, other)               \
+    X(CreateImageView, other)           \
+    X(CreatePipelineLayout, other)      \
+    X(CreateQueryPool, other)           \
+    X(CreateSampler, other)             \
+    X(CreateShaderModule, other)        \
+    X(EndCommandBuffer, other)          \
+    X(MapMemory, other)                 \
+    X(ResetCommandPool, other)          \
+    X(QueueSubmit, submit)              \
+    X(GetQueryPoolResults, read)
+TW_PLAIN_FUNCTIONS(TW_FAULTY_TAG)
 #undef TW_FAULTY_TAG
 
-// The functions whose failure the spec shapes: outputs set to null, a loss reported by
-// submissions, waits and reads.
-PFN_vkAllocateCommandBuffers real_allocate_command_buffers = nullptr;
-PFN_vkAllocateDescriptorSets real_allocate_descriptor_sets = nullptr;
-PFN_vkCreateGraphicsPipelines real_create_graphics_pipelines = nullptr;
-PFN_vkCreateComputePipelines real_create_compute_pipelines = nullptr;
-PFN_vkQueueSubmit real_queue_submit = nullptr;
-PFN_vkWaitForFences real_wait_for_fences = nullptr;
-PFN_vkDeviceWaitIdle real_device_wait_idle = nullptr;
-PFN_vkGetQueryPoolResults real_get_query_pool_results = nullptr;
-
-VKAPI_ATTR VkResult VKAPI_CALL faulty_allocate_command_buffers(VkDevice device, const VkCommandBufferAllocateInfo* info,
-                                                               VkCommandBuffer* out) {
-    const VkResult fault = vulkan_faults().on_call("vkAllocateCommandBuffers", CallKind::other);
-    if (fault == VK_SUCCESS) return real_allocate_command_buffers(device, info, out);
-    for (std::uint32_t i = 0; i < info->commandBufferCount; ++i) out[i] = VK_NULL_HANDLE;
-    return fault;
+// Failed allocations and pipeline creations leave their outputs null.
+struct TagAllocateCommandBuffers {
+    static constexpr const char* name = "vkAllocateCommandBuffers";
+    static constexpr CallKind kind = CallKind::other;
+    static void failed(VkDevice, const VkCommandBufferAllocateInfo* info, VkCommandBuffer* out) {
+        std::fill_n(out, info->commandBufferCount, VK_NULL_HANDLE);
+    }
+};
+struct TagAllocateDescriptorSets {
+    static constexpr const char* name = "vkAllocateDescriptorSets";
+    static constexpr CallKind kind = CallKind::other;
+    static void failed(VkDevice, const VkDescriptorSetAllocateInfo* info, VkDescriptorSet* out) {
+        std::fill_n(out, info->descriptorSetCount, VK_NULL_HANDLE);
+    }
+};
+template <typename Info>
+void no_pipelines(VkDevice, VkPipelineCache, std::uint32_t count, const Info*, const VkAllocationCallbacks*,
+                  VkPipeline* out) {
+    std::fill_n(out, count, VK_NULL_HANDLE);
 }
-VKAPI_ATTR VkResult VKAPI_CALL faulty_allocate_descriptor_sets(VkDevice device, const VkDescriptorSetAllocateInfo* info,
-                                                               VkDescriptorSet* out) {
-    const VkResult fault = vulkan_faults().on_call("vkAllocateDescriptorSets", CallKind::other);
-    if (fault == VK_SUCCESS) return real_allocate_descriptor_sets(device, info, out);
-    for (std::uint32_t i = 0; i < info->descriptorSetCount; ++i) out[i] = VK_NULL_HANDLE;
-    return fault;
-}
-VKAPI_ATTR VkResult VKAPI_CALL faulty_create_graphics_pipelines(VkDevice device, VkPipelineCache cache,
-                                                                std::uint32_t count,
-                                                                const VkGraphicsPipelineCreateInfo* infos,
-                                                                const VkAllocationCallbacks* allocator,
-                                                                VkPipeline* out) {
-    const VkResult fault = vulkan_faults().on_call("vkCreateGraphicsPipelines", CallKind::other);
-    if (fault == VK_SUCCESS) return real_create_graphics_pipelines(device, cache, count, infos, allocator, out);
-    for (std::uint32_t i = 0; i < count; ++i) out[i] = VK_NULL_HANDLE;
-    return fault;
-}
-VKAPI_ATTR VkResult VKAPI_CALL faulty_create_compute_pipelines(VkDevice device, VkPipelineCache cache,
-                                                               std::uint32_t count,
-                                                               const VkComputePipelineCreateInfo* infos,
-                                                               const VkAllocationCallbacks* allocator,
-                                                               VkPipeline* out) {
-    const VkResult fault = vulkan_faults().on_call("vkCreateComputePipelines", CallKind::other);
-    if (fault == VK_SUCCESS) return real_create_compute_pipelines(device, cache, count, infos, allocator, out);
-    for (std::uint32_t i = 0; i < count; ++i) out[i] = VK_NULL_HANDLE;
-    return fault;
-}
-VKAPI_ATTR VkResult VKAPI_CALL faulty_queue_submit(VkQueue queue, std::uint32_t count, const VkSubmitInfo* submits,
-                                                   VkFence fence) {
-    const VkResult fault = vulkan_faults().on_call("vkQueueSubmit", CallKind::submit);
-    return fault != VK_SUCCESS ? fault : real_queue_submit(queue, count, submits, fence);  // failed: nothing submitted
-}
-// A failed wait still lets the work it waited for finish first, as the driver's own
-// failure would leave it running: the fault tests what the caller does with the error.
-VKAPI_ATTR VkResult VKAPI_CALL faulty_wait_for_fences(VkDevice device, std::uint32_t count, const VkFence* fences,
-                                                      VkBool32 all, std::uint64_t timeout) {
-    const VkResult fault = vulkan_faults().on_call("vkWaitForFences", CallKind::wait);
-    if (fault == VK_SUCCESS) return real_wait_for_fences(device, count, fences, all, timeout);
-    static_cast<void>(real_device_wait_idle(device));
-    return fault;
-}
-VKAPI_ATTR VkResult VKAPI_CALL faulty_device_wait_idle(VkDevice device) {
-    const VkResult fault = vulkan_faults().on_call("vkDeviceWaitIdle", CallKind::wait);
-    const VkResult waited = real_device_wait_idle(device);
-    return fault != VK_SUCCESS ? fault : waited;
-}
-VKAPI_ATTR VkResult VKAPI_CALL faulty_get_query_pool_results(VkDevice device, VkQueryPool pool, std::uint32_t first,
-                                                             std::uint32_t count, std::size_t size, void* data,
-                                                             VkDeviceSize stride, VkQueryResultFlags flags) {
-    const VkResult fault = vulkan_faults().on_call("vkGetQueryPoolResults", CallKind::read);
-    return fault != VK_SUCCESS ? fault
-                               : real_get_query_pool_results(device, pool, first, count, size, data, stride, flags);
+struct TagCreateGraphicsPipelines {
+    static constexpr const char* name = "vkCreateGraphicsPipelines";
+    static constexpr CallKind kind = CallKind::other;
+    static constexpr auto failed = &no_pipelines<VkGraphicsPipelineCreateInfo>;
+};
+struct TagCreateComputePipelines {
+    static constexpr const char* name = "vkCreateComputePipelines";
+    static constexpr CallKind kind = CallKind::other;
+    static constexpr auto failed = &no_pipelines<VkComputePipelineCreateInfo>;
+};
+// A failed wait still lets the work it waited for finish, as the driver's own failure
+// would leave it running: the fault tests what the caller does with the error.
+struct TagDeviceWaitIdle {
+    static constexpr const char* name = "vkDeviceWaitIdle";
+    static constexpr CallKind kind = CallKind::wait;
+    static void failed(VkDevice device);
+};
+struct TagWaitForFences {
+    static constexpr const char* name = "vkWaitForFences";
+    static constexpr CallKind kind = CallKind::wait;
+    static void failed(VkDevice device, std::uint32_t, const VkFence*, VkBool32, std::uint64_t) {
+        TagDeviceWaitIdle::failed(device);
+    }
+};
+void TagDeviceWaitIdle::failed(VkDevice device) {
+    static_cast<void>(Faulty<TagDeviceWaitIdle, PFN_vkDeviceWaitIdle>::real(device));
 }
 
 struct Wrapped {
@@ -201,32 +185,26 @@ struct Wrapped {
     void (*keep_real)(PFN_vkVoidFunction);
 };
 
-template <typename Pfn>
-void store(Pfn& slot, PFN_vkVoidFunction real) {
-    slot = reinterpret_cast<Pfn>(real);
+template <typename Tag, typename Pfn>
+Wrapped wrap() {
+    using F = Faulty<Tag, Pfn>;
+    return {Tag::name, reinterpret_cast<PFN_vkVoidFunction>(&F::call),
+            [](PFN_vkVoidFunction real) { F::real = reinterpret_cast<Pfn>(real); }};
 }
 
+// The functions whose Tag says what a failure leaves (above).
+#define TW_SHAPED_FUNCTIONS(X) \
+    X(AllocateCommandBuffers)  \
+    X(AllocateDescriptorSets)  \
+    X(CreateGraphicsPipelines) \
+    X(CreateComputePipelines)  \
+    X(DeviceWaitIdle)          \
+    X(WaitForFences)
+
 const std::vector<Wrapped>& wrapped() {
-#define TW_WRAP_GENERIC(fn)                                                                     \
-    Wrapped{"vk" #fn, reinterpret_cast<PFN_vkVoidFunction>(&Faulty<Tag##fn, PFN_vk##fn>::call), \
-            [](PFN_vkVoidFunction real) { store(Faulty<Tag##fn, PFN_vk##fn>::real, real); }},
-#define TW_WRAP(fn, wrapper, slot)                                                                                   \
-    Wrapped {                                                                                                        \
-        "vk" #fn, reinterpret_cast<PFN_vkVoidFunction>(&wrapper), [](PFN_vkVoidFunction real) { store(slot, real); } \
-    }
-    static const std::vector<Wrapped> table = {
-        TW_GENERIC_FUNCTIONS(TW_WRAP_GENERIC)  //
-        TW_WRAP(AllocateCommandBuffers, faulty_allocate_command_buffers, real_allocate_command_buffers),
-        TW_WRAP(AllocateDescriptorSets, faulty_allocate_descriptor_sets, real_allocate_descriptor_sets),
-        TW_WRAP(CreateGraphicsPipelines, faulty_create_graphics_pipelines, real_create_graphics_pipelines),
-        TW_WRAP(CreateComputePipelines, faulty_create_compute_pipelines, real_create_compute_pipelines),
-        TW_WRAP(QueueSubmit, faulty_queue_submit, real_queue_submit),
-        TW_WRAP(WaitForFences, faulty_wait_for_fences, real_wait_for_fences),
-        TW_WRAP(DeviceWaitIdle, faulty_device_wait_idle, real_device_wait_idle),
-        TW_WRAP(GetQueryPoolResults, faulty_get_query_pool_results, real_get_query_pool_results),
-    };
+#define TW_WRAP(fn, ...) wrap<Tag##fn, PFN_vk##fn>(),
+    static const std::vector<Wrapped> table = {TW_PLAIN_FUNCTIONS(TW_WRAP) TW_SHAPED_FUNCTIONS(TW_WRAP)};
 #undef TW_WRAP
-#undef TW_WRAP_GENERIC
     return table;
 }
 
