@@ -11,7 +11,7 @@ namespace tidewater::test {
 namespace {
 // The loader unloads the driver and the validation layer with the instance. LeakSanitizer
 // reads the stacks of what is left at exit, and an unloaded library's frames have no name
-// for lsan_vulkan_driver.supp to match: loaded here first, they stay (RTLD_NODELETE).
+// for the suppressions below to match: loaded here first, they stay (RTLD_NODELETE).
 // Absent ones (another driver) are skipped.
 const bool g_vulkan_libraries_kept = [] {
     for (const char* name : {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"})
@@ -231,3 +231,13 @@ render::DeviceContext VulkanFaults::hooked(render::DeviceContext ctx) {
 }
 
 }  // namespace tidewater::test
+
+// LeakSanitizer's suppressions for these tests (ASan builds): what lavapipe, the LLVM it
+// compiles shaders with, the validation layer and the loader keep until exit. Each names
+// a library, not a function, so a leak allocated by Tidewater's code is still reported.
+extern "C" const char* __lsan_default_suppressions() {
+    return "leak:libvulkan_lvp.so\n"
+           "leak:libLLVM-15.so\n"
+           "leak:libVkLayer_khronos_validation.so\n"
+           "leak:libvulkan.so\n";
+}
