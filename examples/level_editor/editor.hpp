@@ -82,7 +82,7 @@ class Editor {
     std::string script_path_;
     /// After the first re-bake swapped in, and how many were: the soak's memory report.
     struct MemoryMark {
-        std::uint64_t resident_bytes = 0, device_bytes = 0;
+        std::uint64_t resident_bytes = 0, device_bytes = 0, heap_bytes = 0;
     };
     std::optional<MemoryMark> after_first_rebake_;
     int rebakes_ = 0;

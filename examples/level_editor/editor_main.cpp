@@ -108,9 +108,11 @@ Status Editor::start(const Options& options) {
     return {};
 }
 
-// What the soak watches: the process's resident set (/proc/self/statm) and the device
-// memory the renderer holds. The heap's free pages go back to the system first (glibc
-// keeps them otherwise), so that the figure is what the process still uses.
+// What the soak watches: the process's resident set (/proc/self/statm), the bytes the
+// heap has handed out and not had back (glibc's mallinfo2: what a leak grows, whatever
+// the fragmentation), and the device memory the renderer holds. The heap's free pages go
+// back to the system first (glibc keeps them otherwise), so that the resident figure is
+// what the process still uses.
 Editor::MemoryMark Editor::memory_now() const {
     MemoryMark mark;
 #ifdef __GLIBC__
@@ -123,6 +125,10 @@ Editor::MemoryMark Editor::memory_now() const {
         std::fclose(statm);
     }
     mark.device_bytes = renderer_->stats().device_memory_bytes;
+#ifdef __GLIBC__
+    const struct mallinfo2 heap = mallinfo2();
+    mark.heap_bytes = heap.uordblks + heap.hblkhd;
+#endif
     return mark;
 }
 
@@ -267,12 +273,12 @@ int Editor::run(const Options& options) {
     }
     if (after_first_rebake_) {
         const MemoryMark end = memory_now(), first = *after_first_rebake_;
+        const auto mib = [](std::uint64_t bytes) { return static_cast<double>(bytes) / 1048576.0; };
         std::printf(
-            "memory after the first of %d re-bakes: resident %.1f MiB, renderer's device memory %.1f MiB; at the end: "
-            "%.1f MiB, %.1f MiB\n",
-            rebakes_, static_cast<double>(first.resident_bytes) / 1048576.0,
-            static_cast<double>(first.device_bytes) / 1048576.0, static_cast<double>(end.resident_bytes) / 1048576.0,
-            static_cast<double>(end.device_bytes) / 1048576.0);
+            "memory after the first of %d re-bakes: resident %.1f MiB, heap in use %.1f MiB, renderer's device memory "
+            "%.1f MiB; at the end: %.1f MiB, %.1f MiB, %.1f MiB\n",
+            rebakes_, mib(first.resident_bytes), mib(first.heap_bytes), mib(first.device_bytes), mib(end.resident_bytes),
+            mib(end.heap_bytes), mib(end.device_bytes));
     }
     if (bake_.running()) bake_.job.wait();
     vkDeviceWaitIdle(window_.context().device);
@@ -293,6 +299,14 @@ int Editor::run(const Options& options) {
 }  // namespace tidewater::editor
 
 int main(int argc, char** argv) {
+#ifdef __GLIBC__
+    // Every re-bake allocates and frees fields of megabytes on worker threads. glibc
+    // raises its mmap threshold to the largest block freed, after which such blocks come
+    // from the threads' arenas and leave fragments resident, re-bake after re-bake (the
+    // soak in docs/PERFORMANCE.md). A fixed threshold keeps them mapped, and unmapped
+    // whole when freed.
+    mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+#endif
     const auto options = tidewater::editor::parse(argc, argv);
     if (!options) {
         std::fprintf(stderr,
