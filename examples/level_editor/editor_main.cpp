@@ -277,8 +277,8 @@ int Editor::run(const Options& options) {
         std::printf(
             "memory after the first of %d re-bakes: resident %.1f MiB, heap in use %.1f MiB, renderer's device memory "
             "%.1f MiB; at the end: %.1f MiB, %.1f MiB, %.1f MiB\n",
-            rebakes_, mib(first.resident_bytes), mib(first.heap_bytes), mib(first.device_bytes), mib(end.resident_bytes),
-            mib(end.heap_bytes), mib(end.device_bytes));
+            rebakes_, mib(first.resident_bytes), mib(first.heap_bytes), mib(first.device_bytes),
+            mib(end.resident_bytes), mib(end.heap_bytes), mib(end.device_bytes));
     }
     if (bake_.running()) bake_.job.wait();
     vkDeviceWaitIdle(window_.context().device);
