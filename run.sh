@@ -74,18 +74,18 @@ configure_sanitize() {
     -DTIDEWATER_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 }
 
-# The ThreadSanitizer build: Clang, the core and bake libraries, their tests and a command
-# line without the renderer, the calibration and the inspector; it runs the threaded tests
-# (ctest -L threads).
+# The ThreadSanitizer build: Clang, the core, bake and render libraries, the tests with
+# threads and a command line without the calibration and the inspector; it runs the
+# threaded tests (ctest -L threads), the renderer's on lavapipe.
 TSAN_BUILD="$BUILD-tsan"
 configure_tsan() {
   CC=clang CXX=clang++ configure "$TSAN_BUILD" -DTIDEWATER_SANITIZE=thread -DTIDEWATER_BUILD_BENCHMARKS=OFF \
-    -DTIDEWATER_BUILD_RENDER=OFF -DTIDEWATER_BUILD_CALIBRATION=OFF -DTIDEWATER_BUILD_INSPECTOR=OFF \
+    -DTIDEWATER_BUILD_RENDER=ON -DTIDEWATER_BUILD_CALIBRATION=OFF -DTIDEWATER_BUILD_INSPECTOR=OFF \
     -DTIDEWATER_BUILD_EDITOR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 }
 run_threads_under_tsan() {
   configure_tsan
-  build "$TSAN_BUILD" --target tidewater_core_tests tidewater
+  build "$TSAN_BUILD" --target tidewater_core_tests tidewater tidewater_render_thread_tests
   log "running the threaded tests under ThreadSanitizer"
   ctest --test-dir "$TSAN_BUILD" --output-on-failure --parallel "$JOBS" --timeout 1200 --no-tests=error -L threads
 }

@@ -1,10 +1,7 @@
-// Lakes and rivers on lavapipe under the validation layer, and a re-bake swapped in
-// between frames.
+// Lakes and rivers on lavapipe under the validation layer.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <future>
 #include <optional>
 #include <utility>
 
@@ -14,46 +11,6 @@
 
 namespace tidewater {
 namespace {
-
-// An editor's terrain edit: a worker thread re-bakes while the last good scene keeps
-// drawing, and the new one is swapped in between frames.
-TEST_F(RenderTest, AReBakeOnAWorkerThreadIsSwappedInBetweenFrames) {
-    auto first = test::baked(default_scene());
-    ASSERT_TRUE(first);
-    auto current = std::make_shared<const Scene>(*first);
-    ASSERT_TRUE(renderer_->set_scene(*current).ok());
-    // The edit: a knoll 30 m high raised in the open sea in front of the camera.
-    Scene edited = *current;
-    auto island = std::get<IslandTerrain>(edited.terrain.shape());
-    island.knolls.push_back({{640.0, 330.0}, 120.0, 30.0});
-    edited.terrain = Terrain(island);
-    render::FrameInfo frame;
-    frame.camera.position = {900.0, 300.0, 500.0};
-    frame.camera.target = {120.0, 0.0, 20.0};
-    const auto before = render(*current, frame);
-    SceneBakeOptions options;
-    options.previous = current;
-    std::atomic<bool> finished{false};
-    auto job = std::async(std::launch::async, [&] {
-        auto baked = bake_scene(edited, options);
-        finished = true;
-        return baked;
-    });
-    int frames_while_baking = 0;
-    while (!finished) {  // the last good scene keeps drawing
-        auto img = target_->render(*renderer_, frame);
-        ASSERT_TRUE(img.ok()) << img.error().message;
-        ++frames_while_baking;
-    }
-    auto rebaked = job.get();
-    ASSERT_TRUE(rebaked) << rebaked.error().message;
-    EXPECT_EQ((*rebaked)->bake->reused.rivers, current->rivers.size()) << "the brook and rill are not in the edit";
-    ASSERT_TRUE(renderer_->set_scene(**rebaked).ok());  // between frames
-    const auto after = render(**rebaked, frame);
-    std::printf("%d frame(s) drawn while the worker re-baked in %.2f s\n", frames_while_baking,
-                (*rebaked)->bake->seconds);
-    EXPECT_GT(test::mean_difference(before, after), 0.01) << "the new knoll is drawn";
-}
 
 // Lakes and rivers (issue: rivers and lakes).
 

@@ -1,18 +1,19 @@
 // Over the memory budget the shore fields are drawn from a coarse level, and the
 // full-resolution tiles nearest the camera stream in as frames are recorded: the picture
 // converges on the one drawn with the whole model resident, without a validation message.
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <string>
 
 #include "render_fixture.hpp"
+#include "saved_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 
 namespace tidewater {
 namespace {
+
+using test::kept_slots;
+using test::save_default_bake;
 
 /// Frames 0 .. frames - 1 of `frame` through a renderer of its own whose memory budget is
 /// `budget` bytes and that streams at most `per_frame` bytes of shore tiles a frame; the last.
@@ -83,13 +84,6 @@ TEST_F(RenderTest, ShoreTilesNearTheCameraStreamInOverFrames) {
     }
 }
 
-/// Slots the model's saved-bake readers have read and keep in host memory.
-std::size_t kept_slots(const ShoreWaves& model) {
-    std::size_t kept = model.shared().lazy ? model.shared().lazy->read_count() : 0;
-    for (const ShoreWaveLayer& l : model.layers()) kept += l.tiles.lazy ? l.tiles.lazy->read_count() : 0;
-    return kept;
-}
-
 /// The slots of `named`'s saved bake that a CPU query of the camera's submersion reads and
 /// keeps (the renderer asks it each frame): all a renderer drawing that bake may keep.
 std::size_t camera_query_slots(const Scene& named, const render::FrameInfo& frame) {
@@ -103,30 +97,6 @@ std::size_t camera_query_slots(const Scene& named, const render::FrameInfo& fram
     EXPECT_TRUE(
         query_submersion(**probe, frame.time, std::span<const glm::dvec3>(&eye, 1), std::span<Submersion>(&s, 1)).ok());
     return kept_slots(*(*probe)->bake->ocean_shore);
-}
-
-/// The default island baked, its bake saved in a temporary folder `dir` (the test removes
-/// it), and the default scene naming that folder as its bake.
-struct SavedDefaultBake {
-    Scene baked, named;
-    std::filesystem::path dir;
-};
-std::optional<SavedDefaultBake> save_default_bake(const std::string& name) {
-    auto baked = test::baked(default_scene());
-    auto named = default_scene();
-    if (!baked.ok() || !named.ok()) {
-        ADD_FAILURE() << "the default scene: " << (baked.ok() ? named.error() : baked.error()).message;
-        return std::nullopt;
-    }
-    SavedDefaultBake saved{*baked, *named,
-                           std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()))};
-    std::filesystem::remove_all(saved.dir);
-    if (auto st = save_scene_bake(saved.dir, saved.baked); !st) {
-        ADD_FAILURE() << st.error().message;
-        return std::nullopt;
-    }
-    saved.named.shore.bake_folder = saved.dir;
-    return saved;
 }
 
 // Over the budget a saved bake is not read whole: the coarse level reads each tile once
