@@ -4,6 +4,7 @@
 //
 //   tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png]
 //                    [--probe X,Y] [--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]
+//                    [--memory-log]
 //
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
 // background), shore (breaking index, re-baked with progress), terrain (a brush), rivers
@@ -18,7 +19,8 @@
 // "shader reload: ok (N ms)" or "shader reload: FILE:LINE: message" on stderr.
 // Scripted mode (--frames) draws N frames, writes the last one with its panels to
 // --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
-// validation message).
+// validation message). After a script's re-bakes it prints the memory after the first and
+// at the end; --memory-log prints it after every re-bake (resident, heap in use, device).
 #include <fmt/format.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
@@ -143,6 +145,7 @@ int Editor::run(const Options& options) {
             return 1;
         }
     if (options.probe) script_probe_ = options.probe;
+    memory_log_ = options.memory_log;
     bool ok = true;
     auto last = std::chrono::steady_clock::now();
     double frame_seconds = 0.0;
@@ -311,7 +314,7 @@ int main(int argc, char** argv) {
     if (!options) {
         std::fprintf(stderr,
                      "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
-                     "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]\n");
+                     "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation] [--memory-log]\n");
         return 2;
     }
     tidewater::editor::Editor editor;

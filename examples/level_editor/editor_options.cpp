@@ -32,6 +32,8 @@ std::optional<Options> parse(int argc, char** argv) {
             o.probe = glm::dvec2(x, y);
         } else if (a == "--no-validation")
             o.validation = false;
+        else if (a == "--memory-log")
+            o.memory_log = true;
         else
             return std::nullopt;
     }

@@ -13,6 +13,7 @@ struct Options {
     long frames = -1, resize_at = -1;
     std::optional<glm::dvec2> probe;
     bool validation = true;
+    bool memory_log = false;
 };
 
 /// The options, or none when an argument is not understood.

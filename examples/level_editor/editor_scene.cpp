@@ -41,7 +41,16 @@ void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
         return;
     }
     scene_ = std::move(baked).value();
-    if (++rebakes_ == 1) after_first_rebake_ = memory_now();
+    ++rebakes_;
+    if (rebakes_ == 1 || memory_log_) {
+        const MemoryMark now = memory_now();
+        if (rebakes_ == 1) after_first_rebake_ = now;
+        if (memory_log_)
+            std::printf("memory after re-bake %d: resident %.1f MiB, heap in use %.1f MiB, device %.1f MiB\n", rebakes_,
+                        static_cast<double>(now.resident_bytes) / 1048576.0,
+                        static_cast<double>(now.heap_bytes) / 1048576.0,
+                        static_cast<double>(now.device_bytes) / 1048576.0);
+    }
     refloat();
     message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
                            scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);

@@ -221,7 +221,7 @@ TEST(Editor, ASoakOfReBakesAndShaderReloadsHoldsItsMemory) {
         }
     }
     const std::string common = "--frames " + std::to_string(frames) + " --size 320x240 --shader-dir " + dir.string();
-    const EditorRun r = run_editor(common + " --script " + script.string());
+    const EditorRun r = run_editor(common + " --memory-log --script " + script.string());
     const EditorRun c = run_editor(common + " --script " + control.string());
     fs::remove(script);
     fs::remove(control);
@@ -243,6 +243,14 @@ TEST(Editor, ASoakOfReBakesAndShaderReloadsHoldsItsMemory) {
         frames, m->rebakes, reloaded, m->resident_first, m->resident_end, m->heap_first, m->heap_end,
         base->resident_first, base->resident_end, base->heap_first, base->heap_end, m->device_first, m->device_end);
     EXPECT_EQ(m->rebakes, rebakes) << r.output;
+    // The curve, re-bake by re-bake (--memory-log).
+    int logged = 0;
+    for (auto at = r.output.find("memory after re-bake "); at != std::string::npos;
+         at = r.output.find("memory after re-bake ", at + 1)) {
+        if (full) std::printf("%s\n", r.output.substr(at, r.output.find('\n', at) - at).c_str());
+        ++logged;
+    }
+    EXPECT_EQ(logged, rebakes) << r.output;
     EXPECT_LE(m->heap_end - driver_heap, 1.01 * m->heap_first) << "the heap in use grew over the soak";
     EXPECT_LE(m->resident_end - driver, 1.05 * m->resident_first) << "the resident set grew over the soak";
     EXPECT_LE(m->device_end, 1.05 * m->device_first) << "the renderer's device memory grew over the soak";
