@@ -1,18 +1,20 @@
 // The renderer beside other threads, as its API allows them (renderer.hpp, gpu_query.hpp,
 // device_context.hpp): a re-bake on a worker swapped in between frames; CPU queries on
 // another thread of the very scene whose saved bake the renderer streams from its folder
-// on its reader thread; GPU queries on one thread while another draws, the queue used by
-// one at a time. Each answer is the one given alone. Built also under ThreadSanitizer
-// (TIDEWATER_SANITIZE=thread, ctest -L threads).
+// on its reader thread; GPU queries on one thread while another records frames on a
+// host's own device, the queue used by one at a time. Each answer is the one given alone.
+// Built also under ThreadSanitizer (TIDEWATER_SANITIZE=thread, ctest -L threads).
 #include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <future>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 #include "render_fixture.hpp"
 #include "saved_bake.hpp"
+#include "test_host.hpp"
 #include "tidewater/render/gpu_query.hpp"
 
 namespace tidewater {
@@ -37,6 +39,13 @@ bool same(const WorldPoint& a, const WorldPoint& b) {
            eq(s.shore_distance, t.shore_distance) && s.wet == t.wet && eq(s.foam, t.foam) && a.body == b.body &&
            eq(a.flow, b.flow);
 }
+
+/// Ends the other thread's loop when the test leaves its scope, by an assertion too: it is
+/// declared after the future that waits for that thread, so it is destroyed first.
+struct StopWhenLeaving {
+    std::atomic<bool>& running;
+    ~StopWhenLeaving() { running = false; }
+};
 
 std::size_t differing(const std::vector<WorldPoint>& a, const std::vector<WorldPoint>& b) {
     std::size_t n = a.size() == b.size() ? 0 : std::max(a.size(), b.size());
@@ -112,6 +121,7 @@ TEST_F(RenderThreads, CpuQueriesOfTheSceneWhoseSavedBakeTheRendererStreams) {
         } while (drawing);
         return rounds;
     });
+    const StopWhenLeaving stop{drawing};
     render::FrameInfo frame = test::scene_camera_frame(**drawn, 3.0);
     int frames = 0, frames_reading = 0;
     for (; frames < 24; ++frames) {
@@ -142,54 +152,78 @@ TEST_F(RenderThreads, CpuQueriesOfTheSceneWhoseSavedBakeTheRendererStreams) {
     std::filesystem::remove_all(saved->dir);
 }
 
-// GPU queries on one thread while another draws: both submit to the one queue, which the
-// host hands to one of them at a time (device_context.hpp); Tidewater shares no other
-// state between them. The queries and the frame are those given alone.
-TEST_F(RenderThreads, GpuQueriesOnOneThreadWhileAnotherDraws) {
+// GPU queries on one thread while another records frames, on a host's own device: a
+// recording never submits or waits (device_context.hpp), so it overlaps the queries; the
+// frame's submission and each query take the host's lock of the queue. Tidewater shares no
+// other state between them: the queries and the frames are those given alone.
+TEST(RenderThreadsOnAHost, GpuQueriesOnOneThreadWhileAnotherRecordsFrames) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
-    ASSERT_TRUE(renderer_->set_scene(*scene).ok());
-    auto query = render::GpuQuery::create(context());
-    ASSERT_TRUE(query.ok()) << query.error().message;
-    auto target = render::OffscreenTarget::create(context(), 320, 180);
-    ASSERT_TRUE(target.ok()) << target.error().message;
-    const std::vector<glm::dvec2> points = coast_points();
-    const render::FrameInfo frame = test::scene_camera_frame(*scene, 3.0);
+    test::TestHost host;
+    host.create();
+    ASSERT_NE(host.device, VK_NULL_HANDLE);
+    {
+        auto renderer = render::Renderer::create(test::renderer_info(host));
+        ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+        ASSERT_TRUE((*renderer)->set_scene(*scene).ok());
+        render::FrameTargets targets;
+        targets.color_image = host.color.image;
+        targets.color_view = host.color.view;
+        targets.depth_image = host.depth.image;
+        targets.depth_view = host.depth.view;
+        targets.extent = {test::TestHost::kWidth, test::TestHost::kHeight};
+        ASSERT_TRUE((*renderer)->resize(targets.extent).ok());
+        auto query = render::GpuQuery::create(host.context());
+        ASSERT_TRUE(query.ok()) << query.error().message;
+        const std::vector<glm::dvec2> points = coast_points();
+        const render::FrameInfo frame = test::scene_camera_frame(*scene, 3.0);
 
-    std::vector<WorldPoint> alone(points.size());
-    ASSERT_TRUE((*query)->query_world(*scene, 2.0, points, alone).ok());
-    auto alone_frame = (*target)->render(*renderer_, frame);
-    ASSERT_TRUE(alone_frame.ok()) << alone_frame.error().message;
+        std::vector<WorldPoint> alone(points.size());
+        ASSERT_TRUE((*query)->query_world(*scene, 2.0, points, alone).ok());
+        VkCommandBuffer cmd = test::begin_commands(host);
+        ASSERT_TRUE((*renderer)->record_frame(cmd, frame, targets).ok());
+        const render::RgbaImage alone_frame = test::finish_and_read(host, cmd);
 
-    std::mutex queue;  // the host's: one user of the queue at a time
-    std::atomic<bool> drawing{true};
-    auto asking = std::async(std::launch::async, [&] {
-        std::size_t differ = 0;
-        int rounds = 0;
-        std::vector<WorldPoint> answer(points.size());
-        do {
-            {
-                const std::lock_guard<std::mutex> hold(queue);
-                if (!(*query)->query_world(*scene, 2.0, points, answer).ok()) return std::pair<int, std::size_t>{-1, 0};
-            }
-            differ += differing(answer, alone);
-            ++rounds;
-        } while (drawing);
-        return std::pair<int, std::size_t>{rounds, differ};
-    });
-    render::RgbaImage last;
-    for (int f = 0; f < 12; ++f) {
-        const std::lock_guard<std::mutex> hold(queue);
-        auto img = (*target)->render(*renderer_, frame);
-        ASSERT_TRUE(img.ok()) << img.error().message;
-        last = std::move(img).value();
+        std::mutex queue;  // the host's: one user of the queue at a time
+        std::atomic<bool> drawing{true};
+        std::atomic<int> rounds_done{0};
+        auto asking = std::async(std::launch::async, [&] {
+            std::size_t differ = 0;
+            std::vector<WorldPoint> answer(points.size());
+            do {
+                {
+                    const std::lock_guard<std::mutex> hold(queue);
+                    if (!(*query)->query_world(*scene, 2.0, points, answer).ok()) return std::size_t{1} << 40;
+                }
+                differ += differing(answer, alone);
+                ++rounds_done;
+                std::this_thread::yield();
+            } while (drawing);
+            return differ;
+        });
+        const StopWhenLeaving stop{drawing};
+        render::RgbaImage last;
+        int frames = 0;
+        // At least 12 frames, and on until the queries have run beside them three times.
+        for (; frames < 12 || (rounds_done < 3 && frames < 200); ++frames) {
+            cmd = test::begin_commands(host);
+            ASSERT_NE(cmd, VK_NULL_HANDLE);
+            ASSERT_TRUE((*renderer)->record_frame(cmd, frame, targets).ok());  // beside a query
+            const std::lock_guard<std::mutex> hold(queue);
+            last = test::finish_and_read(host, cmd);
+        }
+        drawing = false;
+        const std::size_t differ = asking.get();
+        std::printf("%d rounds of %zu GPU queries beside %d frames recorded\n", rounds_done.load(), points.size(),
+                    frames);
+        EXPECT_GE(rounds_done, 3) << "the queries ran beside the frames";
+        EXPECT_EQ(differ, 0u) << "GPU answers beside the frames differ from those alone";
+        EXPECT_EQ(last.pixels, alone_frame.pixels) << "the frame beside the queries differs from the one alone";
+        query->reset();
+        renderer->reset();
     }
-    drawing = false;
-    const auto [rounds, differ] = asking.get();
-    std::printf("%d rounds of %zu GPU queries beside 12 frames\n", rounds, points.size());
-    EXPECT_GT(rounds, 0) << "the queries ran";
-    EXPECT_EQ(differ, 0u) << "GPU answers beside the frames differ from those alone";
-    EXPECT_EQ(last.pixels, alone_frame->pixels) << "the frame beside the queries differs from the one alone";
+    host.destroy();
+    for (const auto& m : host.messages) ADD_FAILURE() << m;
 }
 
 }  // namespace
