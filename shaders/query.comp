@@ -69,6 +69,11 @@ SurfaceSums water_at_offset(vec2 e) {
     return s;
 }
 
+// The open sea's waves are the same everywhere (no shore, river or wakes).
+bool water_sums_jacobian_exact() {
+    return !river_mode() && params.shore_resolution == 0u && params.wake_count == 0u;
+}
+
 // The waves' earlier compression at rest offset e (LaggedCompression): the still
 // water's, faded in as its waves are (a river's own waves ride its current and keep none).
 vec4 lagged_jacobian_at(vec2 e) {

@@ -181,8 +181,10 @@ float newton_radius(float max_offset) {
 }
 
 #ifdef TW_WATER_NEWTON
-// The includer defines the water at rest offset e from its query point.
+// The includer defines the water at rest offset e from its query point, and whether its
+// sums' Jacobian is the map's (the open sea: no secant correction; sums_jacobian_exact).
 SurfaceSums water_at_offset(vec2 e);
+bool water_sums_jacobian_exact();
 
 struct NewtonResult {
     SurfaceSums sums;  // at the last evaluation
@@ -192,8 +194,9 @@ struct NewtonResult {
     float converged;
 };
 
-// Solves e + d(p + e) = 0 for the rest offset e = x0 - p: the same steps, stopping
-// rule, back-off and radius as solve_rest_offset in newton.hpp.
+// Solves e + d(p + e) = 0 for the rest offset e = x0 - p: the same steps, secant
+// correction (SecantCorrection), stopping rule, back-off and radius as solve_rest_offset
+// in newton.hpp.
 NewtonResult solve_rest_offset(float tolerance, float radius) {
     NewtonResult r;
     r.e = vec2(0.0);
@@ -201,13 +204,34 @@ NewtonResult solve_rest_offset(float tolerance, float radius) {
     r.converged = 0.0;
     vec2 last_e = vec2(0.0);
     float last_f2 = 3.0e38;
+    // The secant's correction C (columns: d/dex, d/dez) and the last evaluation's e, F and
+    // sums' Jacobian (xx, xz, zz).
+    mat2 c = mat2(0.0);
+    vec2 prev_e = vec2(0.0), prev_f = vec2(0.0);
+    vec3 prev_j = vec3(0.0);
+    float min_step2 = 0.01 * tolerance * tolerance;
+    bool secant = !water_sums_jacobian_exact();
     for (int it = 0; it < kMaxNewtonIterations; ++it) {
         r.sums = water_at_offset(r.e);
         r.iterations += 1.0;
         vec3 j = surface_jacobian_matrix(r.sums);
-        float det = j.x * j.z - j.y * j.y;
         vec2 f = r.e + r.sums.disp;
-        r.step_e = vec2(j.y * f.y - j.z * f.x, j.y * f.x - j.x * f.y) / det;
+        if (secant && it > 0) {
+            vec2 de = r.e - prev_e;
+            float de2 = dot(de, de);
+            if (de2 > min_step2) {
+                vec3 m = 0.5 * (j + prev_j);
+                vec2 miss = (f - prev_f) - (mat2(m.x, m.y, m.y, m.z) + c) * de;
+                c += outerProduct(miss / de2, de);
+            }
+        }
+        prev_e = r.e;
+        prev_f = f;
+        prev_j = j;
+        mat2 jc = mat2(j.x, j.y, j.y, j.z) + c;
+        float det = jc[0][0] * jc[1][1] - jc[1][0] * jc[0][1];
+        // -(jc^-1) f, with jc[col][row].
+        r.step_e = vec2(jc[1][0] * f.y - jc[1][1] * f.x, jc[0][1] * f.x - jc[0][0] * f.y) / det;
         float f2 = dot(f, f);
         if (f2 <= tolerance * tolerance) {
             r.converged = 1.0;

@@ -7,6 +7,8 @@
 // `tidewater bench` measures the same with accuracy figures, as JSON.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -151,6 +153,33 @@ void BM_ShoreBand(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
     state.SetLabel(std::string(full ? "surface" : "heights") + (without_shore ? ", no shore model" : ", shore"));
+    if (full) {
+        // Newton's evaluations: per point, and per batch of 8 lanes grouped by 4x4-texel
+        // tile (about as the kernel orders them), where the slowest lane sets the batch's.
+        const ShoreWaves& shore = *scene.ocean.shore();
+        std::vector<std::size_t> order(pts.size());
+        std::vector<long> tile(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            const glm::dvec2 t = (pts[i] - shore.corner()) / (4.0 * shore.texel());
+            tile[i] = static_cast<long>(std::floor(t.y)) * 4096 + static_cast<long>(std::floor(t.x));
+            order[i] = i;
+        }
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tile[a] < tile[b]; });
+        double per_point = 0.0, per_batch = 0.0, unconverged = 0.0;
+        for (std::size_t b = 0; b < order.size(); b += 8) {
+            int most = 0;
+            for (std::size_t l = b; l < b + 8 && l < order.size(); ++l) {
+                const SurfacePoint& o = out[order[l]];
+                per_point += o.iterations;
+                most = std::max(most, o.iterations);
+                unconverged += o.converged ? 0.0 : 1.0;
+            }
+            per_batch += most;
+        }
+        state.counters["evals_per_point"] = per_point / static_cast<double>(pts.size());
+        state.counters["evals_per_batch"] = per_batch / std::ceil(static_cast<double>(pts.size()) / 8.0);
+        state.counters["unconverged"] = unconverged;
+    }
 }
 
 /// 4096 points scattered over a 24 m river's channel (and, with Arg 1, its mouth and the

@@ -14,6 +14,8 @@ class OpenSeaWater {
   public:
     using Ops = NumberOps<T>;
     using Scalar = typename Ops::Scalar;
+    /// Every wave is the same everywhere: the sums' Jacobian is the map's (newton.hpp).
+    static constexpr bool kSumsJacobianExact = true;
 
     /// `base` holds each wave's phase at the query points, [wave * kLanes + lane].
     OpenSeaWater(const PreparedWaves<Scalar>& waves, const Scalar* base) : w_(waves), base_(base) {}

@@ -6,9 +6,13 @@
 // is symmetric and positive definite while the surface does not fold.
 // - A point stops at the first evaluation whose residual is under the tolerance, so its
 //   answer does not depend on its batch neighbours or thread.
-// - Newton treats the local waves as constant across a step. Near the waterline they
-//   change within a texel and a step can overshoot: where |F| grew, the next try is
-//   halfway back to the last better point.
+// - The sums give M for waves that are constant across a step. Near a shore a wave's
+//   amplitude, direction and phase gradient change within a wavelength, and that M alone
+//   slows Newton to linear convergence. A secant correction C (SecantCorrection) learns
+//   what M misses from each step's change of F, so J = I - M + C. Over the open sea M is
+//   exact and C is left out (sums_jacobian_exact).
+// - Near the waterline the waves change within a texel and a step can overshoot: where
+//   |F| grew, the next try is halfway back to the last better point.
 // - The rest position is within sum(Q A) of the point: a wild step is pulled back inside.
 // - Results carry the last (tiny) step to first order: height + slope . step.
 #pragma once
@@ -42,6 +46,47 @@ struct NewtonResult {
     T converged = T(0.0);                ///< 1 where the residual met the tolerance
 };
 
+/// The correction C to the sums' Jacobian that the steps teach (Dennis and Walker's
+/// structured secant update, in the rank-one form of Broyden's "good" method): after a
+/// step de that changed F by dF, C takes the smallest change that makes
+/// (J_mean + C) de = dF, J_mean being the sums' Jacobian averaged over the step's two ends
+/// (so that C learns only what the sums lack, not their own change along the step). Steps
+/// under a tenth of the tolerance teach nothing: their dF is mostly rounding.
+template <typename T>
+struct SecantCorrection {
+    using Ops = NumberOps<T>;
+    T xx = T(0.0), xz = T(0.0), zx = T(0.0), zz = T(0.0);  ///< C, row-major
+    T ex = T(0.0), ez = T(0.0), fx = T(0.0), fz = T(0.0);  ///< the last evaluation's e and F
+    T jxx = T(0.0), jxz = T(0.0), jzz = T(0.0);            ///< and its sums' Jacobian
+
+    /// Learns from the step from the last evaluation to (ex1, ez1), where F = (fx1, fz1)
+    /// and the sums' Jacobian is f's; then remembers this evaluation.
+    void learn(const SurfaceFrame<T>& f, const T& ex1, const T& ez1, const T& fx1, const T& fz1, const T& min_step2) {
+        const T half(0.5), one(1.0), zero(0.0);
+        const T dex = ex1 - ex, dez = ez1 - ez;
+        const T de2 = dex * dex + dez * dez;
+        const auto teaches = de2 > min_step2;
+        const T inv = Ops::select(teaches, one / Ops::select(teaches, de2, one), zero);
+        const T mxx = half * (f.jxx + jxx), mxz = half * (f.jxz + jxz), mzz = half * (f.jzz + jzz);
+        const T rx = ((fx1 - fx) - Ops::mul_add(mxx + xx, dex, (mxz + xz) * dez)) * inv;
+        const T rz = ((fz1 - fz) - Ops::mul_add(mxz + zx, dex, (mzz + zz) * dez)) * inv;
+        xx = Ops::mul_add(rx, dex, xx);
+        xz = Ops::mul_add(rx, dez, xz);
+        zx = Ops::mul_add(rz, dex, zx);
+        zz = Ops::mul_add(rz, dez, zz);
+        remember(f, ex1, ez1, fx1, fz1);
+    }
+    void remember(const SurfaceFrame<T>& f, const T& ex1, const T& ez1, const T& fx1, const T& fz1) {
+        ex = ex1;
+        ez = ez1;
+        fx = fx1;
+        fz = fz1;
+        jxx = f.jxx;
+        jxz = f.jxz;
+        jzz = f.jzz;
+    }
+};
+
 template <typename T>
 SurfaceSums<T> select_sums(typename NumberOps<T>::Mask m, const SurfaceSums<T>& a, const SurfaceSums<T>& b) {
     using Ops = NumberOps<T>;
@@ -71,6 +116,17 @@ concept EulerianWater = requires(W& water, const T& ex, const T& ez, const typen
     water.record(finished);
 };
 
+/// Whether W's sums give the exact Jacobian of its map (W::kSumsJacobianExact, as over the
+/// open sea, whose waves are the same everywhere): its steps need no secant correction.
+template <typename W>
+constexpr bool sums_jacobian_exact() {
+    if constexpr (requires { W::kSumsJacobianExact; }) {
+        return W::kSumsJacobianExact;
+    } else {
+        return false;
+    }
+}
+
 /// Solves for the rest offset of each lane of `water`, the water at rest offsets from
 /// the query points.
 template <bool kVelocity, typename T, EulerianWater<T> Water>
@@ -79,7 +135,9 @@ NewtonResult<T> solve_rest_offset(Water& water, double tolerance, double radius)
     using Mask = typename Ops::Mask;
     const T zero(0.0), one(1.0), half(0.5);
     const T tol2 = constant<T>(tolerance * tolerance), radius2 = constant<T>(radius * radius);
+    const T min_step2 = constant<T>(0.01 * tolerance * tolerance);
     T ex(0.0), ez(0.0), last_ex(0.0), last_ez(0.0), last_f2 = constant<T>(3.0e38);
+    SecantCorrection<T> c;
     Mask active = zero == zero;
     NewtonResult<T> r;
     for (int it = 0; it < kMaxNewtonIterations; ++it) {
@@ -87,9 +145,22 @@ NewtonResult<T> solve_rest_offset(Water& water, double tolerance, double radius)
         const SurfaceFrame<T> f = surface_frame(s);
         r.iterations = Ops::select(active, r.iterations + one, r.iterations);
         const T fx = ex + s.dx, fz = ez + s.dz;
-        const T inv_det = one / f.det;
-        const T step_x = (f.jxz * fz - f.jzz * fx) * inv_det;
-        const T step_z = (f.jxz * fx - f.jxx * fz) * inv_det;
+        T step_x, step_z;
+        if constexpr (sums_jacobian_exact<Water>()) {
+            const T inv_det = one / f.det;
+            step_x = (f.jxz * fz - f.jzz * fx) * inv_det;
+            step_z = (f.jxz * fx - f.jxx * fz) * inv_det;
+        } else {
+            if (it == 0) {
+                c.remember(f, ex, ez, fx, fz);
+            } else {
+                c.learn(f, ex, ez, fx, fz, min_step2);
+            }
+            const T jxx = f.jxx + c.xx, jxz = f.jxz + c.xz, jzx = f.jxz + c.zx, jzz = f.jzz + c.zz;
+            const T inv_det = one / (jxx * jzz - jxz * jzx);
+            step_x = (jxz * fz - jzz * fx) * inv_det;
+            step_z = (jzx * fx - jxx * fz) * inv_det;
+        }
         const T f2 = fx * fx + fz * fz;
         const Mask converged = f2 <= tol2;
         const Mask finish = active && converged;
