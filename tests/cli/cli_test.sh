@@ -47,6 +47,36 @@ write_mill_scene() {
 JSON
 }
 
+# fit_job: six gauge records made by the runtime (two waves each, 240 s at 2 Hz) in
+# records/, and manifest.json, a batch fit of them: windows of 120 s, a whole record and
+# a spectral fit; record 3 is unreadable until mend_fit_job puts it right.
+fit_job() {
+  local s
+  mkdir -p records
+  printf 'x,z\n0,0\n' > gauge.csv
+  for s in 0 1 2 3 4 5; do
+    cat > waves$s.json <<JSON
+{"version": 1, "water_level": 0, "terrain": {"flat": {"height": -500}}, "shore": {"enabled": false},
+ "ocean": {"waves": [{"direction": 0, "wavelength": $((50 + 10 * s)), "amplitude": 0.5, "steepness": 0.4, "phase": 1.0},
+                     {"direction": 0, "wavelength": $((100 + 7 * s)), "amplitude": 0.8, "steepness": 0.3, "phase": 2.0}]}}
+JSON
+    "$TW" query --scene waves$s.json --points gauge.csv --times 0:240:0.5 --out records/station$s.csv || return 1
+  done
+  cat > manifest.json <<'JSON'
+{"version": 1, "units": [
+ {"data": "records/station0.csv", "station": "S0", "columns": {"z": "height"}, "waves": 2, "windows": ["0:120", "120:240"]},
+ {"data": "records/station1.csv", "station": "S1", "columns": {"z": "height"}, "waves": 2, "windows": ["0:120", "120:240"]},
+ {"data": "records/station2.csv", "station": "S2", "columns": {"z": "height"}, "waves": 2},
+ {"data": "records/station3.csv", "station": "S3", "columns": {"z": "height"}, "waves": 2, "windows": ["0:120", "120:240"]},
+ {"data": "records/station4.csv", "station": "S4", "columns": {"z": "height"}, "waves": 8, "method": "spectral"},
+ {"data": "records/station5.csv", "station": "S5", "columns": {"z": "height"}, "waves": 2, "windows": ["0:120", "120:240"]}
+]}
+JSON
+  mv records/station3.csv station3.good
+  printf 'this is not a record\n' > records/station3.csv
+}
+mend_fit_job() { mv station3.good records/station3.csv; }
+
 # saved_default: the bundled default scene baked once to dflt/, and default_saved.json, the
 # same scene loading that bake (as a user's scene would after `tidewater bake`).
 saved_default() {
@@ -596,6 +626,91 @@ JSON
     else
       echo "skipped: spectral-file checks ($REFDATA is absent)"
     fi
+    ;;
+  fit_manifest)
+    # A batch fit as a farmed job, unit by unit on this machine (docs/scale-out.md).
+    fit_job
+    for t in 0 1 2 3 4 5; do "$TW" fit --manifest manifest.json --out job --task $t --quiet > task$t.txt 2> task$t.err; echo $? > task$t.rc; done
+    check "the five readable units succeed" bash -c 'for t in 0 1 2 4 5; do test "$(cat task$t.rc)" -eq 0 || exit 1; done'
+    check "the unreadable unit fails alone, naming its file" bash -c 'test "$(cat task3.rc)" -ne 0 && grep -q "unit 3: window 0:120: records/station3.csv" task3.err'
+    check "a unit's folder is whole, a failed unit's error kept beside it" bash -c 'test -s job/units/00000/S0_t0s.json && test -s job/units/00000/S0_t120s.report.json && test -s job/units/00000/unit.json && test ! -e job/units/00003 && grep -q "no column" job/units/00003.failed'
+    "$TW" fit --manifest manifest.json --out job --status > status.txt
+    check "--status lists the failed unit with its error" grep -q "^unit 3 (records/station3.csv): failed: window 0:120: " status.txt
+    check "--status gives the tasks to submit again" grep -qx "todo: 3" status.txt
+    expect_error "the merge refuses while a unit failed" "unit 3 (records/station3.csv) failed" "$TW" fit --manifest manifest.json --out job --merge
+    check "no library from a refused merge" bash -c '! ls -d job/library job/library.tmp-* 2>/dev/null'
+    cp -r job/units/00000 unit0_before
+    "$TW" fit --manifest manifest.json --out job --task 0 > again.txt
+    check "a unit already done is skipped, its folder as it was" bash -c 'grep -q "done already" again.txt && diff -r unit0_before job/units/00000'
+    mend_fit_job
+    "$TW" fit --manifest manifest.json --out job --task 3 --quiet > /dev/null
+    check "the mended unit succeeds and its failure file goes" bash -c 'test -d job/units/00003 && test ! -e job/units/00003.failed'
+    "$TW" fit --manifest manifest.json --out job --status > status2.txt
+    check "--status: all done" bash -c 'grep -qx "done: 6 of 6" status2.txt && grep -qx "todo: none" status2.txt'
+    "$TW" fit --manifest manifest.json --out job --merge > merge.txt
+    check "the library holds a preset per record and window, named by station and time" bash -c 'test "$(ls job/library/*.json | wc -l)" -eq 10 && test -s job/library/S3_t120s.json && test -s job/library/S2_t0s.json'
+    check "the summary has a row per preset with Hs, Tp, direction, R^2 and convergence" bash -c 'head -1 job/library/summary.csv | grep -q "hs_m,tp_s,mean_travel_deg,r2,converged" && test "$(wc -l < job/library/summary.csv)" -eq 11 && grep -q "^S1_t120s,S1,records/station1.csv,window 120:240,120.000,2.66" job/library/summary.csv'
+    "$TW" fit --manifest manifest.json --out serial --quiet > serial.txt
+    check "a serial run of the whole job gives the same library" diff -r serial/library job/library
+    echo "{\"version\": 1, \"water_level\": 0, \"terrain\": {\"flat\": {\"height\": -500}}, \"shore\": {\"enabled\": false}, \"ocean\": \"$WORK/job/library/S5_t0s.json\"}" > refit.json
+    "$TW" query --scene refit.json --points gauge.csv --times 0:119.5:0.5 --out replay.csv
+    head -n 241 records/station5.csv > first_window.csv
+    check "a library preset reproduces its window within 1 mm" same_heights first_window.csv replay.csv 0.001 240
+    # Bad manifests and options: the file and field named, a non-zero exit, nothing written.
+    printf '{"version": 1, "units": [' > broken.json
+    expect_error "malformed manifest" "broken.json" "$TW" fit --manifest broken.json --out bad1 --task 0
+    echo '{"version": 1, "units": [{"data": "records/station0.csv", "windws": ["0:10"]}]}' > typo.json
+    expect_error "unknown key, named with its path" "/units/0" "$TW" fit --manifest typo.json --out bad2 --task 0
+    echo '{"version": 1, "units": [{"station": "S"}]}' > nodata.json
+    expect_error "a unit without its data" "data" "$TW" fit --manifest nodata.json --out bad3 --task 0
+    echo '{"version": 1, "units": []}' > empty.json
+    expect_error "no units" "non-empty" "$TW" fit --manifest empty.json --out bad4 --task 0
+    echo '{"version": 1, "units": [{"data": "records/station0.csv", "station": "a/b"}]}' > slash.json
+    expect_error "a station that is a path" "station" "$TW" fit --manifest slash.json --out bad5 --task 0
+    expect_error "a task past the last unit" "--task 6: the manifest has units 0 to 5" "$TW" fit --manifest manifest.json --out bad6 --task 6
+    expect_error "a job without its folder" "--out" "$TW" fit --manifest manifest.json --task 0
+    expect_error "--data beside a manifest" "leave out --data" "$TW" fit --manifest manifest.json --out bad7 --data records/station0.csv
+    expect_error "--status without a manifest" "give --manifest" "$TW" fit --status --out job
+    expect_error "a missing manifest" "no_such.json" "$TW" fit --manifest no_such.json --out bad8 --task 0
+    check "nothing written by refused jobs" bash -c '! ls -d bad1 bad2 bad3 bad4 bad5 bad6 bad7 bad8 2>/dev/null'
+    ;;
+  slurm_fit)
+    # The batch fit under a real Slurm: a single-node cluster of Debian's slurmctld, slurmd
+    # and munge (tools/slurm/single_node_cluster.sh), six units two at a time.
+    SLURM_TOOLS="$EXAMPLES/../tools/slurm"
+    if [ "$(id -u)" -ne 0 ] || ! command -v slurmctld > /dev/null || ! command -v munged > /dev/null; then
+      echo "skipped: a single-node Slurm cluster needs root and Debian's slurmctld, slurmd and munge"; exit 77
+    fi
+    fit_job
+    export TIDEWATER_SLURM_PORT=$((20000 + RANDOM % 20000)) TIDEWATER="$TW"
+    trap '"$SLURM_TOOLS/single_node_cluster.sh" stop "$WORK/cluster"; rm -rf "$WORK"' EXIT
+    "$SLURM_TOOLS/single_node_cluster.sh" start "$WORK/cluster" || { echo "FAIL: the cluster did not start"; exit 1; }
+    export SLURM_CONF="$WORK/cluster/slurm.conf"
+    rc=0; first="$(sbatch --parsable --array=0-5%2 "$SLURM_TOOLS/fit_units.sbatch" manifest.json job)" || rc=$?
+    check "the array is submitted" test "$rc" -eq 0
+    most=0  # the most of its tasks running at once, polled until the array is gone
+    while [ -n "$(squeue -h -j "${first%%;*}" 2> /dev/null)" ]; do
+      running="$(squeue -h -r -t R -j "${first%%;*}" 2> /dev/null | wc -l)"
+      [ "$running" -gt "$most" ] && most="$running"
+      sleep 0.1
+    done
+    echo "  at most $most units ran at once"
+    check "the array ran at most two units at once" test "$most" -le 2 -a "$most" -ge 1
+    "$TW" fit --manifest manifest.json --out job --status > status.txt
+    check "five units done, the unreadable one failed alone" bash -c 'grep -qx "done: 5 of 6" status.txt && grep -q "^unit 3 (records/station3.csv): failed: " status.txt'
+    todo="$(sed -n 's/^todo: //p' status.txt)"
+    check "--status names the task to submit again" test "$todo" = 3
+    mend_fit_job
+    job="$(sbatch --parsable --wait --array="$todo" "$SLURM_TOOLS/fit_units.sbatch" manifest.json job)"
+    check "the resubmitted unit succeeds" test $? -eq 0
+    "$TW" fit --manifest manifest.json --out job --status > status2.txt
+    check "all units done" grep -qx "todo: none" status2.txt
+    sbatch --wait --dependency="afterok:${job%%;*}" "$SLURM_TOOLS/fit_merge.sbatch" manifest.json job > merge.txt
+    check "the merge runs after the units (afterok)" test $? -eq 0
+    rc=0; sbatch --wait --array=0-5%2 "$SLURM_TOOLS/fit_units.sbatch" manifest.json job > again.txt || rc=$?
+    check "submitting the whole array again is safe: every unit skips" bash -c "test $rc -eq 0 && test \$(cat tidewater-fit-*_*.out | grep -c 'done already') -eq 6"
+    "$TW" fit --manifest manifest.json --out serial --quiet > serial.txt
+    check "the library equals a serial run of the whole job" diff -r serial/library job/library
     ;;
   inspect)
     "$TW" inspect --resolution 24x20 --extent=-500:500,-400:400 --times 0:2:0.5 --export series --quiet > log.txt
