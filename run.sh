@@ -19,7 +19,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev libstb-dev libpng-dev libgdal-dev libcgal-dev libboost-dev libceres-dev libnetcdf-dev libeigen3-dev libvtk9-dev libglfw3-dev libimgui-dev xvfb xauth
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools glslang-dev
   clang-format clang libclang-rt-dev
-  slurmctld slurmd slurm-client munge
+  slurmctld slurmd slurm-client munge openmpi-bin libopenmpi-dev
 )
 
 log() { printf '==> %s\n' "$*"; }

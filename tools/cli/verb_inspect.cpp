@@ -117,6 +117,11 @@ int run_inspect(const InspectArgs& a) {
         return fail(verb, "give --view (interactive), --export DIR, --screenshot PNG and/or --plot PNG --probe x,z");
     if (a.plot.empty() != a.probe.empty())
         return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
+    // Started among other MPI processes (mpirun -np N): they share the export; a picture or a
+    // view would be made N times.
+    const bool mpi = inspect::started_by_mpi();
+    if (mpi && (a.export_dir.empty() || !a.screenshot.empty() || !a.plot.empty() || a.view))
+        return fail(verb, "under MPI (mpirun) only --export runs: each process writes its band of the grid");
     if (!inspect::find_field(a.field)) {
         std::string names;
         for (const auto& f : inspect::field_infos()) names += (names.empty() ? "" : ", ") + std::string(f.name);
@@ -161,15 +166,27 @@ int run_inspect(const InspectArgs& a) {
             if (!a.quiet && percent >= last + 10) std::fprintf(stderr, "inspect: export %d%%\n", last = percent);
         };
         inspect::ExportStats stats;
-        if (auto st = inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress, &stats); !st)
-            return fail(verb, st.error().message);
+        inspect::ExportProcesses processes;
+        const Status st =
+            mpi ? inspect::export_series_mpi(a.export_dir, *scene, grid, times, a.threads, progress, &stats, &processes)
+                : inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress, &stats);
+        if (!st)
+            return fail(verb, processes.ranks > 1 ? fmt::format("MPI process {} of {}: {}", processes.rank,
+                                                                processes.ranks, st.error().message)
+                                                  : st.error().message);
+        if (processes.rank != 0) return 0;  // process 0 reports for all
         const double points = static_cast<double>(grid.points()) * static_cast<double>(times.size());
+        const std::string by = processes.ranks > 1 ? fmt::format(
+                                                         " by {} MPI processes (process 0's share of the "
+                                                         "time)",
+                                                         processes.ranks)
+                                                   : "";
         std::printf(
-            "exported %zu time step(s) of a %dx%d grid to %s/ (surface.pvd opens in ParaView): sampling %.3g points/s "
-            "(%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
-            times.size(), grid.nx, grid.nz, a.export_dir.c_str(), points / std::max(stats.sample_seconds, 1e-9),
-            stats.sample_seconds, points / std::max(stats.write_seconds, 1e-9), stats.write_seconds,
-            static_cast<double>(stats.bytes) / 1e6);
+            "exported %zu time step(s) of a %dx%d grid to %s/%s (surface.pvd opens in ParaView): sampling %.3g "
+            "points/s (%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
+            times.size(), grid.nx, grid.nz, a.export_dir.c_str(), by.c_str(),
+            points / std::max(stats.sample_seconds, 1e-9), stats.sample_seconds,
+            points / std::max(stats.write_seconds, 1e-9), stats.write_seconds, static_cast<double>(stats.bytes) / 1e6);
     }
     if (!a.plot.empty()) {
         auto parsed = parse_point(a.probe, "--probe");

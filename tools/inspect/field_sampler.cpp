@@ -11,7 +11,9 @@
 namespace tidewater::inspect {
 
 Status validate_grid(const SampleGrid& g) {
-    if (g.nx < 2 || g.nz < 2)
+    if (g.is_piece() ? g.nx < 1 || g.nz < 1 || g.whole_nx < 2 || g.whole_nz < 2 || g.first_i < 0 || g.first_j < 0 ||
+                           g.first_i + g.nx > g.whole_nx || g.first_j + g.nz > g.whole_nz
+                     : g.nx < 2 || g.nz < 2)
         return Error{ErrorCode::invalid_argument, fmt::format("grid {}x{}: at least 2x2 points", g.nx, g.nz)};
     const double points = static_cast<double>(g.nx) * static_cast<double>(g.nz);
     if (points > static_cast<double>(kMaxGridPoints))

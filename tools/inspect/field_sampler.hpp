@@ -13,24 +13,38 @@
 
 namespace tidewater::inspect {
 
-/// A regular grid of surface positions (x, z) over [min, max], nx by nz points.
+/// A regular grid of surface positions (x, z) over [min, max], nx by nz points; or a
+/// piece of one (a parallel export's band): nx by nz of the whole grid's points from
+/// (first_i, first_j), each at exactly the whole grid's position.
 struct SampleGrid {
     glm::dvec2 min{-50.0}, max{50.0};
     int nx = 64, nz = 64;
+    int first_i = 0, first_j = 0;    ///< a piece's first point in the whole grid
+    int whole_nx = 0, whole_nz = 0;  ///< a piece's whole grid (0: this grid is whole)
     std::size_t points() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz); }
     std::size_t index(int i, int j) const {
         return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i);
     }
+    bool is_piece() const { return whole_nx > 0; }
     /// The world (x, z) of point (i, j), m.
     glm::dvec2 point(int i, int j) const {
-        return min + (max - min) * glm::dvec2(i / double(nx - 1), j / double(nz - 1));
+        const int wx = is_piece() ? whole_nx : nx, wz = is_piece() ? whole_nz : nz;
+        return min + (max - min) * glm::dvec2((first_i + i) / double(wx - 1), (first_j + j) / double(wz - 1));
+    }
+    /// The piece of this whole grid from point (i0, j0) to (i1, j1), both included.
+    SampleGrid piece(int i0, int i1, int j0, int j1) const {
+        SampleGrid p = *this;
+        p.first_i = i0, p.first_j = j0, p.whole_nx = nx, p.whole_nz = nz;
+        p.nx = i1 - i0 + 1, p.nz = j1 - j0 + 1;
+        return p;
     }
 };
 
 /// The largest grid sampled in one go (about 1.6 GB of arrays).
 inline constexpr std::size_t kMaxGridPoints = 16'000'000;
 
-/// Checks a grid: at least 2 x 2, at most kMaxGridPoints, finite extent with max > min.
+/// Checks a grid: at least 2 x 2 (a piece: 1 x 1 within its whole grid), at most
+/// kMaxGridPoints, finite extent with max > min.
 Status validate_grid(const SampleGrid& grid);
 
 /// One array the inspector knows: name, components and unit.

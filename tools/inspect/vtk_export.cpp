@@ -13,18 +13,16 @@
 #include <fstream>
 
 #include "tidewater/detail/atomic_folder.hpp"
+#include "vtk_export_parts.hpp"
 #include "vtk_output.hpp"
 
 namespace tidewater::inspect {
 
-namespace {
+namespace exporting {
 
-namespace fs = std::filesystem;
-
-/// A structured grid over `grid` with the given point heights.
 vtkNew<vtkStructuredGrid> make_grid(const SampleGrid& grid, const std::vector<glm::dvec3>& positions) {
     vtkNew<vtkStructuredGrid> sg;
-    sg->SetDimensions(grid.nx, grid.nz, 1);
+    sg->SetExtent(grid.first_i, grid.first_i + grid.nx - 1, grid.first_j, grid.first_j + grid.nz - 1, 0, 0);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
@@ -34,10 +32,36 @@ vtkNew<vtkStructuredGrid> make_grid(const SampleGrid& grid, const std::vector<gl
     return sg;
 }
 
-void add_units(vtkStructuredGrid* sg, double time, const std::vector<std::string>& bodies) {
+vtkNew<vtkStructuredGrid> terrain_grid(const Scene& scene, const SampleGrid& grid) {
+    const std::vector<double> ground = sample_terrain(scene, grid);
+    std::vector<glm::dvec3> positions(grid.points());
+    for (int j = 0; j < grid.nz; ++j)
+        for (int i = 0; i < grid.nx; ++i) {
+            const std::size_t k = grid.index(i, j);
+            const glm::dvec2 p = grid.point(i, j);
+            positions[k] = {p.x, ground[k], p.y};
+        }
+    return make_grid(grid, positions);
+}
+
+vtkNew<vtkStructuredGrid> surface_grid(const FieldSample& sample) {
+    const SampleGrid& grid = sample.grid;
+    auto sg = make_grid(grid, sample.surface);
+    for (const FieldInfo& f : field_infos()) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName(f.name);
+        a->SetNumberOfComponents(f.components);
+        a->SetNumberOfTuples(static_cast<vtkIdType>(grid.points()));
+        double* out = a->WritePointer(0, static_cast<vtkIdType>(grid.points()) * f.components);
+        for (std::size_t k = 0; k < grid.points(); ++k)
+            for (int c = 0; c < f.components; ++c)
+                out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] =
+                    sample.value(f.name, k, c);
+        sg->GetPointData()->AddArray(a);
+    }
     vtkNew<vtkStringArray> names;
     names->SetName("body_names");  // body id k is names[k]
-    for (const std::string& b : bodies) names->InsertNextValue(b);
+    for (const std::string& b : sample.body_names) names->InsertNextValue(b);
     sg->GetFieldData()->AddArray(names);
     vtkNew<vtkStringArray> units;
     units->SetName("units");
@@ -46,71 +70,66 @@ void add_units(vtkStructuredGrid* sg, double time, const std::vector<std::string
     sg->GetFieldData()->AddArray(units);
     vtkNew<vtkDoubleArray> t;
     t->SetName("TimeValue");
-    t->InsertNextValue(time);
+    t->InsertNextValue(sample.time);
     sg->GetFieldData()->AddArray(t);
+    return sg;
 }
+
+void configure_writer(vtkXMLWriter& writer) {
+    writer.SetDataModeToAppended();
+    writer.EncodeAppendedDataOff();
+    writer.SetCompressorTypeToLZ4();
+}
+
+std::string step_name(std::size_t step) {
+    return fmt::format("surface_{:04}", step);
+}
+
+std::string pvd_text(const std::vector<double>& times, const std::vector<std::string>& step_files,
+                     const std::string& terrain_file) {
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    for (std::size_t step = 0; step < times.size(); ++step)
+        pvd +=
+            fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", times[step], step_files[step]);
+    pvd += fmt::format("    <DataSet timestep=\"0\" part=\"1\" file=\"{}\"/>\n  </Collection>\n</VTKFile>\n",
+                       terrain_file);
+    return pvd;
+}
+
+}  // namespace exporting
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace exporting;
 
 Status write(vtkStructuredGrid* sg, const fs::path& path) {
     vtkNew<vtkXMLStructuredGridWriter> writer;
     writer->SetFileName(path.c_str());
     writer->SetInputData(sg);
-    // Raw appended binary with LZ4: several times faster to write than base64 + zlib.
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToLZ4();
+    configure_writer(*writer);
     if (writer->Write() != 1)
         return Error{ErrorCode::io_error, fmt::format("{}: VTK could not write the file", path.string())};
     return {};
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
                     unsigned threads, const std::function<void(double)>& progress, ExportStats& stats) {
-    // The terrain: a second surface.
-    const std::vector<double> ground = sample_terrain(scene, grid);
-    std::vector<glm::dvec3> terrain_points(grid.points());
-    for (int j = 0; j < grid.nz; ++j)
-        for (int i = 0; i < grid.nx; ++i) {
-            const std::size_t k = grid.index(i, j);
-            const glm::dvec2 p = grid.point(i, j);
-            terrain_points[k] = {p.x, ground[k], p.y};
-        }
-    auto terrain = make_grid(grid, terrain_points);
-    if (auto st = write(terrain, temp / "terrain.vts"); !st) return st;
-
-    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    if (auto st = write(terrain_grid(scene, grid), temp / "terrain.vts"); !st) return st;
+    std::vector<std::string> files;
     for (std::size_t step = 0; step < times.size(); ++step) {
         auto t0 = std::chrono::steady_clock::now();
         auto sample = sample_field(scene, grid, times[step], threads);
         if (!sample) return sample.error();
         stats.sample_seconds += seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        auto sg = make_grid(grid, sample->surface);
-        for (const FieldInfo& f : field_infos()) {
-            vtkNew<vtkDoubleArray> a;
-            a->SetName(f.name);
-            a->SetNumberOfComponents(f.components);
-            a->SetNumberOfTuples(static_cast<vtkIdType>(grid.points()));
-            double* out = a->WritePointer(0, static_cast<vtkIdType>(grid.points()) * f.components);
-            for (std::size_t k = 0; k < grid.points(); ++k)
-                for (int c = 0; c < f.components; ++c)
-                    out[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] =
-                        sample->value(f.name, k, c);
-            sg->GetPointData()->AddArray(a);
-        }
-        add_units(sg, times[step], sample->body_names);
-        const std::string name = fmt::format("surface_{:04}.vts", step);
-        if (auto st = write(sg, temp / name); !st) return st;
+        files.push_back(step_name(step) + ".vts");
+        if (auto st = write(surface_grid(*sample), temp / files.back()); !st) return st;
         stats.write_seconds += seconds_since(t0);
-        pvd += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", times[step], name);
         if (progress) progress(static_cast<double>(step + 1) / static_cast<double>(times.size()));
     }
-    pvd += "    <DataSet timestep=\"0\" part=\"1\" file=\"terrain.vts\"/>\n  </Collection>\n</VTKFile>\n";
     std::ofstream out(temp / "surface.pvd");
-    out << pvd;
+    out << pvd_text(times, files, "terrain.vts");
     out.close();
     if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", (temp / "surface.pvd").string())};
     return {};

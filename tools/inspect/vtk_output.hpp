@@ -1,5 +1,5 @@
 // The inspector's VTK side: ParaView files and offscreen pictures of sampled fields.
-// Everything that includes VTK lives in vtk_export.cpp and vtk_view.cpp.
+// VTK is included only by the vtk_*.cpp files; MPI only by vtk_export_mpi.cpp.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +26,27 @@ struct ExportStats {
 Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid,
                      const std::vector<double>& times, unsigned threads,
                      const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr);
+
+/// Whether an MPI launcher (mpirun, mpiexec, srun) started this process among others.
+bool started_by_mpi();
+
+/// Which process of how many wrote a parallel export.
+struct ExportProcesses {
+    int rank = 0, ranks = 1;
+};
+
+/// export_series over the processes an MPI launcher started, every one calling it with
+/// the same arguments: each samples its band of the grid (VTK's block split) and writes
+/// it as a piece; per time step surface_NNNN.pvts joins the pieces surface_NNNN_R.vts,
+/// terrain.pvts the terrain's, and surface.pvd lists them. Read back (ParaView, VTK's
+/// parallel reader) it equals the serial export, array for array. `dir` appears whole
+/// or not at all (process 0 renames it into place once every piece is written; the
+/// folder must be on a file system every process sees). A process's `stats` are its
+/// own share; process 0's `bytes` is the whole folder's. Initialises and finalises MPI.
+Status export_series_mpi(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid,
+                         const std::vector<double>& times, unsigned threads,
+                         const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr,
+                         ExportProcesses* processes = nullptr);
 
 struct ScreenshotOptions {
     std::string field = "height";
