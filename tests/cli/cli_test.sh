@@ -674,9 +674,10 @@ JSON
     expect_error "a missing manifest" "no_such.json" "$TW" fit --manifest no_such.json --out bad8 --task 0
     check "nothing written by refused jobs" bash -c '! ls -d bad1 bad2 bad3 bad4 bad5 bad6 bad7 bad8 2>/dev/null'
     ;;
-  slurm_fit)
-    # The batch fit under a real Slurm: a single-node cluster of Debian's slurmctld, slurmd
-    # and munge (tools/slurm/single_node_cluster.sh), six units two at a time.
+  slurm_jobs)
+    # Farmed jobs under a real Slurm: a single-node cluster of Debian's slurmctld, slurmd
+    # and munge (tools/slurm/single_node_cluster.sh): a batch fit of six units two at a
+    # time, and a long export in chunks.
     SLURM_TOOLS="$EXAMPLES/../tools/slurm"
     if [ "$(id -u)" -ne 0 ] || ! command -v slurmctld > /dev/null || ! command -v munged > /dev/null; then
       echo "skipped: a single-node Slurm cluster needs root and Debian's slurmctld, slurmd and munge"; exit 77
@@ -689,7 +690,8 @@ JSON
     rc=0; first="$(sbatch --parsable --array=0-5%2 "$SLURM_TOOLS/fit_units.sbatch" manifest.json job)" || rc=$?
     check "the array is submitted" test "$rc" -eq 0
     most=0  # the most of its tasks running at once, polled until the array is gone
-    while [ -n "$(squeue -h -j "${first%%;*}" 2> /dev/null)" ]; do
+    deadline=$((SECONDS + 300))
+    while [ -n "$(squeue -h -j "${first%%;*}" 2> /dev/null)" ] && [ $SECONDS -lt $deadline ]; do
       running="$(squeue -h -r -t R -j "${first%%;*}" 2> /dev/null | wc -l)"
       [ "$running" -gt "$most" ] && most="$running"
       sleep 0.1
@@ -701,16 +703,25 @@ JSON
     todo="$(sed -n 's/^todo: //p' status.txt)"
     check "--status names the task to submit again" test "$todo" = 3
     mend_fit_job
-    job="$(sbatch --parsable --wait --array="$todo" "$SLURM_TOOLS/fit_units.sbatch" manifest.json job)"
+    job="$(timeout 300 sbatch --parsable --wait --array="$todo" "$SLURM_TOOLS/fit_units.sbatch" manifest.json job)"
     check "the resubmitted unit succeeds" test $? -eq 0
     "$TW" fit --manifest manifest.json --out job --status > status2.txt
     check "all units done" grep -qx "todo: none" status2.txt
-    sbatch --wait --dependency="afterok:${job%%;*}" "$SLURM_TOOLS/fit_merge.sbatch" manifest.json job > merge.txt
+    timeout 300 sbatch --wait --kill-on-invalid-dep=yes --dependency="afterok:${job%%;*}" "$SLURM_TOOLS/fit_merge.sbatch" manifest.json job > merge.txt
     check "the merge runs after the units (afterok)" test $? -eq 0
-    rc=0; sbatch --wait --array=0-5%2 "$SLURM_TOOLS/fit_units.sbatch" manifest.json job > again.txt || rc=$?
+    rc=0; timeout 300 sbatch --wait --array=0-5%2 "$SLURM_TOOLS/fit_units.sbatch" manifest.json job > again.txt || rc=$?
     check "submitting the whole array again is safe: every unit skips" bash -c "test $rc -eq 0 && test \$(cat tidewater-fit-*_*.out | grep -c 'done already') -eq 6"
     "$TW" fit --manifest manifest.json --out serial --quiet > serial.txt
     check "the library equals a serial run of the whole job" diff -r serial/library job/library
+    # A long export as an array of chunks, then its merge after them.
+    COMPARE="$4"
+    ARGS=(--resolution 33x25 --extent=-600:600,-500:500 --times 0:4:0.5 --quiet)
+    "$TW" inspect "${ARGS[@]}" --export whole > /dev/null
+    exported="$(timeout 300 sbatch --parsable --wait --array=0-2 "$SLURM_TOOLS/export_chunks.sbatch" "${ARGS[@]}" --export chunked --chunk-steps 4)"
+    check "the export's chunks run as an array" test $? -eq 0
+    timeout 300 sbatch --wait --kill-on-invalid-dep=yes --dependency="afterok:${exported%%;*}" \
+      --wrap "$TW inspect ${ARGS[*]} --export chunked --chunk-steps 4 --merge" > /dev/null
+    check "merged after them, the chunked export equals a single run's array for array" "$COMPARE" whole chunked
     ;;
   mpi_export)
     # The ParaView export under Open MPI's mpirun: each process writes its band of the grid
@@ -731,6 +742,15 @@ JSON
     check "the comparison tells exports apart (other times)" bash -c "! '$COMPARE' serial later > /dev/null"
     mpirun -np 3 "$TW" "${ARGS[@]}" --export three > /dev/null
     check "three processes give the same export" "$COMPARE" serial three
+    # A long export in chunks (a farmed job; each chunk by both processes), merged.
+    mpirun -np 2 "$TW" "${ARGS[@]}" --export chunked --chunk-steps 2 --task 1 > chunk1.txt
+    "$TW" "${ARGS[@]}" --export chunked --chunk-steps 2 --status > chunk_status.txt
+    check "--status lists the chunks not yet exported" bash -c 'grep -qx "done: 1 of 3" chunk_status.txt && grep -qx "todo: 0,2" chunk_status.txt'
+    expect_error "a chunk asked with other options" "--chunk-steps 2 where this run gives --chunk-steps 3" "$TW" "${ARGS[@]}" --export chunked --chunk-steps 3 --task 0
+    expect_error "the merge before every chunk is done" "2 of 3 units are not done" "$TW" "${ARGS[@]}" --export chunked --chunk-steps 2 --merge
+    mpirun -np 2 "$TW" "${ARGS[@]}" --export chunked --chunk-steps 2 > chunks.txt
+    check "the remaining chunks run, the done one is skipped, then the merge" bash -c 'grep -q "chunk 1: done already" chunks.txt && grep -q "merged 3 chunk(s) of 5 time step(s)" chunks.txt'
+    check "the chunked export equals the serial one array for array" "$COMPARE" serial chunked
     rc=0; mpirun -np 2 "$TW" "${ARGS[@]}" --export parallel/surface.pvd/inside > bad.txt 2> bad.err || rc=$?
     check "an export folder that cannot be made fails every process, naming it" bash -c "test $rc -ne 0 && grep -q 'surface.pvd/inside' bad.err"
     expect_error "under MPI only --export runs" "only --export" mpirun -np 2 "$TW" inspect --resolution 8x8 --time 0 --screenshot s.png

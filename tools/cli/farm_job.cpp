@@ -32,24 +32,33 @@ UnitStatus JobFolder::status(std::size_t task) const {
     return {UnitState::failed, error};
 }
 
-Status JobFolder::run_unit(std::size_t task, const std::function<Status(const fs::path&)>& work, bool& skipped) const {
-    skipped = status(task).state == UnitState::done;
-    if (skipped) return {};
+Status JobFolder::prepare() const {
     std::error_code ec;
     fs::create_directories(out_ / "units", ec);
     if (ec)
         return Error{ErrorCode::io_error,
                      fmt::format("{}: cannot create the job's folder: {}", (out_ / "units").string(), ec.message())};
-    Status done = detail::write_folder_atomically(unit_folder(task), work);
-    if (done) {
+    return {};
+}
+
+Status JobFolder::record_outcome(std::size_t task, const Status& outcome) const {
+    if (outcome) {
+        std::error_code ec;
         fs::remove(failure_file(task), ec);
         return {};
     }
     AtomicFile failure(failure_file(task));
-    if (Status st = failure.write_and_commit(done.error().message + "\n"); !st)
-        return Error{done.error().code,
-                     fmt::format("{} (and its failure file: {})", done.error().message, st.error().message)};
-    return done;
+    if (Status st = failure.write_and_commit(outcome.error().message + "\n"); !st)
+        return Error{outcome.error().code,
+                     fmt::format("{} (and its failure file: {})", outcome.error().message, st.error().message)};
+    return outcome;
+}
+
+Status JobFolder::run_unit(std::size_t task, const std::function<Status(const fs::path&)>& work, bool& skipped) const {
+    skipped = status(task).state == UnitState::done;
+    if (skipped) return {};
+    if (Status st = prepare(); !st) return st;
+    return record_outcome(task, detail::write_folder_atomically(unit_folder(task), work));
 }
 
 std::string array_spec(const std::vector<std::size_t>& tasks) {

@@ -43,6 +43,13 @@ class JobFolder {
     Status run_unit(std::size_t task, const std::function<Status(const std::filesystem::path&)>& work,
                     bool& skipped) const;
 
+    /// For units that write their folder themselves (whole or not at all): makes the units'
+    /// parent folder, before the unit runs.
+    Status prepare() const;
+    /// Keeps a unit's outcome: on success its failure file goes; on failure the failure
+    /// file gets the error, which is returned (with the failure file's own, if any).
+    Status record_outcome(std::size_t task, const Status& outcome) const;
+
   private:
     std::filesystem::path out_;
 };

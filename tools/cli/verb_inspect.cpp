@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "data_options.hpp"
+#include "export_chunks.hpp"
 #include "points_csv.hpp"
 #include "scene_option.hpp"
 #include "time_range.hpp"
@@ -30,6 +31,7 @@ struct InspectArgs : DataOptions {
     std::string scene, extent, resolution = "128x128", times, field = "height", export_dir, screenshot,
                                size = "1280x720", probe, plot, preset, track;
     std::optional<double> time;
+    ExportChunks chunks;
     unsigned threads = 0;
     std::size_t play = 0;
     bool quiet = false, view = false, glyphs = false;
@@ -110,6 +112,64 @@ int run_overlay(const InspectArgs& a) {
 #endif
 }
 
+/// The merge of a chunked export: DIR from DIR.job's chunks, once all are done.
+bool merge_chunks(const InspectArgs& a, const std::vector<double>& times) {
+    const ExportChunks& c = a.chunks;
+    const farm::JobFolder job = c.job();
+    const std::size_t count = c.chunks(times.size());
+    auto describe = [&](std::size_t t) { return fmt::format("chunk {}", t); };
+    if (auto st = farm::require_all_done(job, count, describe); !st) return fail("inspect", st.error().message), false;
+    std::vector<std::filesystem::path> folders;
+    for (std::size_t t = 0; t < count; ++t) folders.push_back(job.unit_folder(t));
+    if (auto st = inspect::merge_export_chunks(c.dir, folders, times); !st)
+        return fail("inspect", st.error().message), false;
+    std::printf("merged %zu chunk(s) of %zu time step(s) into %s/ (surface.pvd opens in ParaView)\n", count,
+                times.size(), c.dir.string().c_str());
+    return true;
+}
+
+/// Chunk --task of a chunked export (or every chunk not done, then the merge), each into
+/// its unit's folder; under mpirun every process takes part in each chunk.
+int export_chunks(const InspectArgs& a, const Scene& scene, const inspect::SampleGrid& grid,
+                  const std::vector<double>& times, const inspect::MpiProcesses* mpi) {
+    const ExportChunks& c = a.chunks;
+    const farm::JobFolder job = c.job();
+    if (auto st = job.prepare(); !st) return fail("inspect", st.error().message);
+    const std::size_t count = c.chunks(times.size());
+    const std::size_t first = c.task >= 0 ? static_cast<std::size_t>(c.task) : 0;
+    const std::size_t last = c.task >= 0 ? first + 1 : count;
+    const int rank = mpi ? mpi->rank() : 0;
+    int failed = 0;
+    for (std::size_t t = first; t < last; ++t) {
+        if (job.status(t).state == farm::UnitState::done) {
+            if (rank == 0) std::printf("chunk %zu: done already\n", t);
+            continue;
+        }
+        const std::size_t begin = t * c.chunk_steps, end = std::min(begin + c.chunk_steps, times.size());
+        const std::vector<double> steps(times.begin() + static_cast<std::ptrdiff_t>(begin),
+                                        times.begin() + static_cast<std::ptrdiff_t>(end));
+        const inspect::ExportPart part{begin, t == 0, false};
+        const Status st =
+            mpi ? inspect::export_series_mpi(*mpi, job.unit_folder(t), scene, grid, steps, a.threads, {}, nullptr, part)
+                : inspect::export_series(job.unit_folder(t), scene, grid, steps, a.threads, {}, nullptr, part);
+        if (rank == 0) {
+            if (auto kept = job.record_outcome(t, st); !kept) {
+                fail("inspect", fmt::format("chunk {}: {}", t, kept.error().message));
+                ++failed;
+                continue;
+            }
+            std::printf("chunk %zu: steps %zu to %zu exported\n", t, begin, end - 1);
+        } else if (!st) {
+            fail("inspect",
+                 fmt::format("chunk {}: MPI process {} of {}: {}", t, rank, mpi->ranks(), st.error().message));
+            ++failed;
+        }
+    }
+    if (failed > 0) return 1;
+    if (c.task >= 0 || rank != 0) return 0;
+    return merge_chunks(a, times) ? 0 : 1;
+}
+
 int run_inspect(const InspectArgs& a) {
     constexpr const char* verb = "inspect";
     if (!a.data.empty()) return run_overlay(a);
@@ -119,8 +179,8 @@ int run_inspect(const InspectArgs& a) {
         return fail(verb, "--plot and --probe go together: --plot probe.png --probe x,z");
     // Started among other MPI processes (mpirun -np N): they share the export; a picture or a
     // view would be made N times.
-    const bool mpi = inspect::started_by_mpi();
-    if (mpi && (a.export_dir.empty() || !a.screenshot.empty() || !a.plot.empty() || a.view))
+    const bool under_mpi = inspect::started_by_mpi();
+    if (under_mpi && (a.export_dir.empty() || !a.screenshot.empty() || !a.plot.empty() || a.view))
         return fail(verb, "under MPI (mpirun) only --export runs: each process writes its band of the grid");
     if (!inspect::find_field(a.field)) {
         std::string names;
@@ -144,6 +204,34 @@ int run_inspect(const InspectArgs& a) {
     auto parsed_times = times_from_options(a.time, a.times);
     if (!parsed_times) return fail(verb, parsed_times.error().message);
     const std::vector<double> times = std::move(parsed_times).value();
+    const ExportChunks& chunked = a.chunks;
+    if (chunked.chunk_steps == 0 && (chunked.task >= 0 || chunked.status || chunked.merge))
+        return fail(verb, "--task, --status and --merge belong to a chunked export: give --chunk-steps K");
+    if (chunked.chunk_steps > 0) {
+        if (a.export_dir.empty()) return fail(verb, "--chunk-steps splits an export: give --export DIR");
+        if ((chunked.task >= 0) + chunked.status + chunked.merge > 1)
+            return fail(verb, "give one of --task, --status and --merge");
+        if (under_mpi && (chunked.status || chunked.merge))
+            return fail(verb, "--status and --merge run once, without mpirun");
+        const std::size_t count = chunked.chunks(times.size());
+        if (chunked.task >= static_cast<int>(count))
+            return fail(verb, fmt::format("--task {}: the export has chunks 0 to {} ({} steps of --times, {} a chunk)",
+                                          chunked.task, count - 1, times.size(), chunked.chunk_steps));
+        const farm::JobFolder job = chunked.job();
+        const std::string options = fmt::format(
+            "--scene {}\n--extent {}\n--resolution {}\n--time {}\n--times {}\n--chunk-steps {}\n", a.scene, a.extent,
+            a.resolution, a.time ? fmt::format("{:.17g}", *a.time) : "", a.times, chunked.chunk_steps);
+        if (auto st = check_job_options(job, options); !st) return fail(verb, st.error().message);
+        auto describe = [&](std::size_t t) {
+            const std::size_t first = t * chunked.chunk_steps;
+            return fmt::format("steps {} to {}", first, std::min(first + chunked.chunk_steps, times.size()) - 1);
+        };
+        if (chunked.status) {
+            std::fputs(farm::status_report(job, count, describe).c_str(), stdout);
+            return 0;
+        }
+        if (chunked.merge) return merge_chunks(a, times) ? 0 : 1;
+    }
     std::vector<glm::dvec2> track;
     if (!a.track.empty()) {
         auto read = read_points_csv(a.track);
@@ -165,22 +253,22 @@ int run_inspect(const InspectArgs& a) {
             const int percent = static_cast<int>(100.0 * f);
             if (!a.quiet && percent >= last + 10) std::fprintf(stderr, "inspect: export %d%%\n", last = percent);
         };
+        // MPI lives from here to the end of the run: it cannot be initialised twice.
+        std::unique_ptr<inspect::MpiProcesses> mpi;
+        if (under_mpi) mpi = std::make_unique<inspect::MpiProcesses>();
+        if (chunked.chunk_steps > 0) return export_chunks(a, *scene, grid, times, mpi.get());
         inspect::ExportStats stats;
-        inspect::ExportProcesses processes;
         const Status st =
-            mpi ? inspect::export_series_mpi(a.export_dir, *scene, grid, times, a.threads, progress, &stats, &processes)
+            mpi ? inspect::export_series_mpi(*mpi, a.export_dir, *scene, grid, times, a.threads, progress, &stats)
                 : inspect::export_series(a.export_dir, *scene, grid, times, a.threads, progress, &stats);
+        const int rank = mpi ? mpi->rank() : 0, ranks = mpi ? mpi->ranks() : 1;
         if (!st)
-            return fail(verb, processes.ranks > 1 ? fmt::format("MPI process {} of {}: {}", processes.rank,
-                                                                processes.ranks, st.error().message)
-                                                  : st.error().message);
-        if (processes.rank != 0) return 0;  // process 0 reports for all
+            return fail(verb, ranks > 1 ? fmt::format("MPI process {} of {}: {}", rank, ranks, st.error().message)
+                                        : st.error().message);
+        if (rank != 0) return 0;  // process 0 reports for all
         const double points = static_cast<double>(grid.points()) * static_cast<double>(times.size());
-        const std::string by = processes.ranks > 1 ? fmt::format(
-                                                         " by {} MPI processes (process 0's share of the "
-                                                         "time)",
-                                                         processes.ranks)
-                                                   : "";
+        const std::string by =
+            ranks > 1 ? fmt::format(" by {} MPI processes (process 0's share of the time)", ranks) : std::string();
         std::printf(
             "exported %zu time step(s) of a %dx%d grid to %s/%s (surface.pvd opens in ParaView): sampling %.3g "
             "points/s (%.2f s), writing %.3g points/s (%.2f s, %.1f MB)\n",
@@ -255,6 +343,16 @@ Verb add_inspect_verb(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--export", a->export_dir,
                     "Write .vts per time step, terrain.vts and surface.pvd to this folder (whole or not at all)");
+    cmd->add_option("--chunk-steps", a->chunks.chunk_steps,
+                    "Split the export into chunks of this many time steps, one unit each of a farmed job kept in "
+                    "DIR.job/ (with --task, --status, --merge; docs/scale-out.md)");
+    cmd->add_option("--task", a->chunks.task,
+                    "With --chunk-steps: export chunk N only (for example $SLURM_ARRAY_TASK_ID)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--status", a->chunks.status,
+                  "With --chunk-steps: list the chunks not done and the tasks to run again");
+    cmd->add_flag("--merge", a->chunks.merge,
+                  "With --chunk-steps: once every chunk is done, write the export's folder");
     cmd->add_option("--screenshot", a->screenshot, "Render the field at the first time offscreen to this PNG");
     cmd->add_option("--size", a->size, "Screenshot size WxH")->capture_default_str();
     cmd->add_flag("--glyphs", a->glyphs,
@@ -275,7 +373,10 @@ Verb add_inspect_verb(CLI::App& app) {
     cmd->add_flag("--view", a->view,
                   "Open the interactive viewer over --times (time slider, play/pause, fields, glyphs, probe)");
 #if defined(TIDEWATER_HAVE_INSPECT)
-    return {cmd, [a] { return run_inspect(*a); }};
+    return {cmd, [a] {
+                a->chunks.dir = a->export_dir;
+                return run_inspect(*a);
+            }};
 #else
     return {cmd, [] {
                 return fail(

@@ -114,8 +114,10 @@ Status write(vtkStructuredGrid* sg, const fs::path& path) {
 }
 
 Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
-                    unsigned threads, const std::function<void(double)>& progress, ExportStats& stats) {
-    if (auto st = write(terrain_grid(scene, grid), temp / "terrain.vts"); !st) return st;
+                    unsigned threads, const std::function<void(double)>& progress, ExportStats& stats,
+                    const ExportPart& part) {
+    if (part.terrain)
+        if (auto st = write(terrain_grid(scene, grid), temp / "terrain.vts"); !st) return st;
     std::vector<std::string> files;
     for (std::size_t step = 0; step < times.size(); ++step) {
         auto t0 = std::chrono::steady_clock::now();
@@ -123,11 +125,12 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
         if (!sample) return sample.error();
         stats.sample_seconds += seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        files.push_back(step_name(step) + ".vts");
+        files.push_back(step_name(part.first_step + step) + ".vts");
         if (auto st = write(surface_grid(*sample), temp / files.back()); !st) return st;
         stats.write_seconds += seconds_since(t0);
         if (progress) progress(static_cast<double>(step + 1) / static_cast<double>(times.size()));
     }
+    if (!part.collection) return {};
     std::ofstream out(temp / "surface.pvd");
     out << pvd_text(times, files, "terrain.vts");
     out.close();
@@ -138,13 +141,15 @@ Status write_series(const fs::path& temp, const Scene& scene, const SampleGrid& 
 }  // namespace
 
 Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& grid, const std::vector<double>& times,
-                     unsigned threads, const std::function<void(double)>& progress, ExportStats* stats_out) {
+                     unsigned threads, const std::function<void(double)>& progress, ExportStats* stats_out,
+                     const ExportPart& part) {
     if (auto st = validate_grid(grid); !st) return st;
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
     ExportStats stats;
     auto st = detail::write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
-        if (auto written = write_series(temp, scene, grid, times, threads, progress, stats); !written) return written;
+        if (auto written = write_series(temp, scene, grid, times, threads, progress, stats, part); !written)
+            return written;
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(temp, ec))
             if (e.is_regular_file(ec)) stats.bytes += e.file_size(ec);
@@ -152,6 +157,45 @@ Status export_series(const fs::path& dir, const Scene& scene, const SampleGrid& 
     });
     if (st && stats_out) *stats_out = stats;
     return st;
+}
+
+Status merge_export_chunks(const fs::path& dir, const std::vector<fs::path>& chunks, const std::vector<double>& times) {
+    if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
+    return detail::write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
+        for (const fs::path& chunk : chunks) {
+            std::error_code ec;
+            for (const auto& e : fs::directory_iterator(chunk, ec)) {
+                if (!e.is_regular_file(ec)) continue;
+                const fs::path to = temp / e.path().filename();
+                // A hard link costs no copy; across file systems the file is copied.
+                fs::create_hard_link(e.path(), to, ec);
+                if (ec) fs::copy_file(e.path(), to, ec);
+                if (ec)
+                    return Error{ErrorCode::io_error, fmt::format("{}: cannot link or copy it into {}: {}",
+                                                                  e.path().string(), dir.string(), ec.message())};
+            }
+            if (ec) return Error{ErrorCode::io_error, fmt::format("{}: cannot read: {}", chunk.string(), ec.message())};
+        }
+        auto present = [&](const std::string& stem) -> Result<std::string> {
+            for (const char* ext : {".pvts", ".vts"})
+                if (fs::exists(temp / (stem + ext))) return stem + ext;
+            return Error{ErrorCode::not_found,
+                         fmt::format("{}: no {}.vts or .pvts among the chunks' files", dir.string(), stem)};
+        };
+        std::vector<std::string> files;
+        for (std::size_t step = 0; step < times.size(); ++step) {
+            auto file = present(step_name(step));
+            if (!file) return file.error();
+            files.push_back(*file);
+        }
+        auto terrain = present("terrain");
+        if (!terrain) return terrain.error();
+        std::ofstream out(temp / "surface.pvd");
+        out << pvd_text(times, files, *terrain);
+        out.close();
+        if (!out) return Error{ErrorCode::io_error, fmt::format("{}: write failed", (temp / "surface.pvd").string())};
+        return {};
+    });
 }
 
 }  // namespace tidewater::inspect

@@ -25,27 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace exporting;
 
-/// MPI for the export's length: initialised on construction, finalised on destruction.
-class MpiSession {
-  public:
-    MpiSession() {
-        controller_->Initialize(nullptr, nullptr);
-        vtkMultiProcessController::SetGlobalController(controller_);
-    }
-    ~MpiSession() {
-        vtkMultiProcessController::SetGlobalController(nullptr);
-        controller_->Finalize();
-    }
-    MpiSession(const MpiSession&) = delete;
-    MpiSession& operator=(const MpiSession&) = delete;
-    vtkMPIController* controller() const { return controller_; }
-    int rank() const { return controller_->GetLocalProcessId(); }
-    int ranks() const { return controller_->GetNumberOfProcesses(); }
-
-  private:
-    vtkNew<vtkMPIController> controller_;
-};
-
 /// Whether every process succeeded: each gives its own status, all learn the worst. A
 /// process that failed keeps its own error; the others report that one failed.
 Status agree(vtkMultiProcessController* c, const Status& mine, const char* what) {
@@ -81,11 +60,12 @@ Status write_piece(vtkMPIController* c, vtkStructuredGrid* sg, const SampleGrid&
 /// Every process's part of the export into `temp`, step by step in lockstep.
 Status write_pieces(vtkMPIController* c, const fs::path& temp, const Scene& scene, const SampleGrid& whole,
                     const SampleGrid& piece, const std::vector<double>& times, unsigned threads,
-                    const std::function<void(double)>& progress, ExportStats& stats) {
-    if (auto st =
-            agree(c, write_piece(c, terrain_grid(scene, piece), whole, temp / "terrain.pvts"), "writing the terrain");
-        !st)
-        return st;
+                    const std::function<void(double)>& progress, ExportStats& stats, const ExportPart& part) {
+    if (part.terrain)
+        if (auto st = agree(c, write_piece(c, terrain_grid(scene, piece), whole, temp / "terrain.pvts"),
+                            "writing the terrain");
+            !st)
+            return st;
     std::vector<std::string> files;
     for (std::size_t step = 0; step < times.size(); ++step) {
         auto t0 = std::chrono::steady_clock::now();
@@ -93,14 +73,14 @@ Status write_pieces(vtkMPIController* c, const fs::path& temp, const Scene& scen
         if (auto st = agree(c, sample ? Status{} : Status{sample.error()}, "sampling"); !st) return st;
         stats.sample_seconds += seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        files.push_back(step_name(step) + ".pvts");
+        files.push_back(step_name(part.first_step + step) + ".pvts");
         if (auto st = agree(c, write_piece(c, surface_grid(*sample), whole, temp / files.back()), "writing"); !st)
             return st;
         stats.write_seconds += seconds_since(t0);
         if (progress && c->GetLocalProcessId() == 0)
             progress(static_cast<double>(step + 1) / static_cast<double>(times.size()));
     }
-    if (c->GetLocalProcessId() != 0) return {};
+    if (c->GetLocalProcessId() != 0 || !part.collection) return {};
     std::ofstream out(temp / "surface.pvd");
     out << pvd_text(times, files, "terrain.pvts");
     out.close();
@@ -119,6 +99,28 @@ std::string broadcast(vtkMultiProcessController* c, std::string text) {
 
 }  // namespace
 
+struct MpiProcesses::Session {
+    vtkNew<vtkMPIController> controller;
+};
+
+MpiProcesses::MpiProcesses() : session_(std::make_unique<Session>()) {
+    session_->controller->Initialize(nullptr, nullptr);
+    vtkMultiProcessController::SetGlobalController(session_->controller);
+}
+
+MpiProcesses::~MpiProcesses() {
+    vtkMultiProcessController::SetGlobalController(nullptr);
+    session_->controller->Finalize();
+}
+
+int MpiProcesses::rank() const {
+    return session_->controller->GetLocalProcessId();
+}
+
+int MpiProcesses::ranks() const {
+    return session_->controller->GetNumberOfProcesses();
+}
+
 bool started_by_mpi() {
     // Open MPI's mpirun, Hydra (MPICH) and PMIx launchers (Slurm's srun) name the processes' count or rank.
     for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
@@ -126,16 +128,13 @@ bool started_by_mpi() {
     return std::getenv("PMIX_RANK") != nullptr;
 }
 
-Status export_series_mpi(const fs::path& dir, const Scene& scene, const SampleGrid& whole,
+Status export_series_mpi(const MpiProcesses& mpi, const fs::path& dir, const Scene& scene, const SampleGrid& whole,
                          const std::vector<double>& times, unsigned threads,
-                         const std::function<void(double)>& progress, ExportStats* stats_out,
-                         ExportProcesses* processes) {
+                         const std::function<void(double)>& progress, ExportStats* stats_out, const ExportPart& part) {
     if (auto st = validate_grid(whole); !st) return st;
     if (times.empty()) return Error{ErrorCode::invalid_argument, "export: the time range holds no time"};
     if (dir.empty() || !dir.has_filename()) return Error{ErrorCode::invalid_argument, "export: give a folder name"};
-    MpiSession mpi;
-    vtkMPIController* c = mpi.controller();
-    if (processes) *processes = {mpi.rank(), mpi.ranks()};
+    vtkMPIController* c = mpi.session().controller;
     int whole_extent[6] = {0, whole.nx - 1, 0, whole.nz - 1, 0, 0}, extent[6] = {};
     vtkNew<vtkExtentTranslator> split;
     split->PieceToExtentThreadSafe(mpi.rank(), mpi.ranks(), 0, whole_extent, extent, vtkExtentTranslator::BLOCK_MODE,
@@ -150,7 +149,8 @@ Status export_series_mpi(const fs::path& dir, const Scene& scene, const SampleGr
         result = detail::write_folder_atomically(dir, [&](const fs::path& temp) -> Status {
             broadcast(c, temp.string());
             told = true;
-            if (auto st = write_pieces(c, temp, scene, whole, piece, times, threads, progress, stats); !st) return st;
+            if (auto st = write_pieces(c, temp, scene, whole, piece, times, threads, progress, stats, part); !st)
+                return st;
             std::error_code ec;
             for (const auto& e : fs::directory_iterator(temp, ec))
                 if (e.is_regular_file(ec)) stats.bytes += e.file_size(ec);
@@ -166,7 +166,7 @@ Status export_series_mpi(const fs::path& dir, const Scene& scene, const SampleGr
             result = Error{ErrorCode::io_error,
                            fmt::format("{}: MPI process 0 could not make the export's folder", dir.string())};
         } else {
-            result = write_pieces(c, temp, scene, whole, piece, times, threads, progress, stats);
+            result = write_pieces(c, temp, scene, whole, piece, times, threads, progress, stats, part);
             int all = 0;
             c->Broadcast(&all, 1, 0);
             if (result && all == 0)

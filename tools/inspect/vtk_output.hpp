@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,19 +21,47 @@ struct ExportStats {
     std::uintmax_t bytes = 0;     ///< Size of the folder written.
 };
 
+/// Which part of a longer export to write (a chunk of a farmed export): its steps are
+/// numbered from `first_step`; the terrain and the .pvd are written only when asked.
+struct ExportPart {
+    std::size_t first_step = 0;
+    bool terrain = true, collection = true;
+};
+
 /// Writes `dir` whole or not at all: surface_NNNN.vts per time (a structured grid of
 /// the displaced surface with every field_infos() array and their units in the field
 /// data), terrain.vts, and surface.pvd, the time collection ParaView opens.
 Status export_series(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid,
                      const std::vector<double>& times, unsigned threads,
-                     const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr);
+                     const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr,
+                     const ExportPart& part = {});
+
+/// The export of `times` from its chunks' folders (each written by export_series or
+/// export_series_mpi with ExportPart{first step, terrain in the first only, no .pvd}), in
+/// order: every file linked (or copied) into `dir`, and surface.pvd listing the steps.
+/// `dir` appears whole or not at all; the chunks' folders are left as they were.
+Status merge_export_chunks(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& chunks,
+                           const std::vector<double>& times);
 
 /// Whether an MPI launcher (mpirun, mpiexec, srun) started this process among others.
 bool started_by_mpi();
 
-/// Which process of how many wrote a parallel export.
-struct ExportProcesses {
-    int rank = 0, ranks = 1;
+/// MPI in a process an MPI launcher started: initialised on construction, finalised on
+/// destruction. One per process, alive while its parallel exports run (MPI cannot be
+/// initialised twice). Not copyable; used from one thread.
+class MpiProcesses {
+  public:
+    MpiProcesses();
+    ~MpiProcesses();
+    MpiProcesses(const MpiProcesses&) = delete;
+    MpiProcesses& operator=(const MpiProcesses&) = delete;
+    int rank() const;
+    int ranks() const;
+    struct Session;
+    Session& session() const { return *session_; }
+
+  private:
+    std::unique_ptr<Session> session_;
 };
 
 /// export_series over the processes an MPI launcher started, every one calling it with
@@ -42,11 +71,11 @@ struct ExportProcesses {
 /// parallel reader) it equals the serial export, array for array. `dir` appears whole
 /// or not at all (process 0 renames it into place once every piece is written; the
 /// folder must be on a file system every process sees). A process's `stats` are its
-/// own share; process 0's `bytes` is the whole folder's. Initialises and finalises MPI.
-Status export_series_mpi(const std::filesystem::path& dir, const Scene& scene, const SampleGrid& grid,
-                         const std::vector<double>& times, unsigned threads,
+/// own share; process 0's `bytes` is the whole folder's.
+Status export_series_mpi(const MpiProcesses& mpi, const std::filesystem::path& dir, const Scene& scene,
+                         const SampleGrid& grid, const std::vector<double>& times, unsigned threads,
                          const std::function<void(double)>& progress = {}, ExportStats* stats = nullptr,
-                         ExportProcesses* processes = nullptr);
+                         const ExportPart& part = {});
 
 struct ScreenshotOptions {
     std::string field = "height";
