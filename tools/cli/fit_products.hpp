@@ -4,20 +4,15 @@
 // units (fit_farm.hpp) write them each in their own way.
 #pragma once
 
-#if defined(TIDEWATER_HAVE_CALIBRATION)
-
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
 #include "data_options.hpp"
-#include "tidewater/calibration/spectrum.hpp"
-#include "tidewater/result.hpp"
 
 namespace tidewater::cli {
 
-/// The fit's settings, as `tidewater fit`'s options give them.
+/// The fit's settings, as `tidewater fit`'s options give them (also in a build without
+/// the calibration library, whose `fit` only says so).
 struct FitArgs : DataOptions {
     std::string method = "phase", preset, report, series, plot, name, window;
     double depth = 0.0;
@@ -26,6 +21,19 @@ struct FitArgs : DataOptions {
     std::uint64_t seed = 1;
     bool quiet = false;
 };
+
+}  // namespace tidewater::cli
+
+#if defined(TIDEWATER_HAVE_CALIBRATION)
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "tidewater/calibration/spectrum.hpp"
+#include "tidewater/result.hpp"
+
+namespace tidewater::cli {
 
 /// The sea state a fit found, for summaries.
 struct FitSummary {

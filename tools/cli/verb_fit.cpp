@@ -73,15 +73,6 @@ int run_fit(const FitArgs& a) {
     }
     return 0;
 }
-#else
-struct FitArgs : DataOptions {
-    std::string method = "phase", preset, report, series, plot, name, window;
-    double depth = 0.0;
-    int waves = 0, max_waves = 32, record_index = 0;
-    unsigned threads = 1;
-    std::uint64_t seed = 1;
-    bool quiet = false;
-};
 #endif
 
 }  // namespace
