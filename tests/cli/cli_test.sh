@@ -740,6 +740,8 @@ JSON
     cat compare.txt
     "$TW" inspect --resolution 41x33 --extent=-600:600,-500:500 --times 0.25:3.25:0.75 --quiet --export later > /dev/null
     check "the comparison tells exports apart (other times)" bash -c "! '$COMPARE' serial later > /dev/null"
+    mpirun -np 1 "$TW" "${ARGS[@]}" --export one > /dev/null
+    check "one MPI process writes the serial layout" bash -c "test -s one/surface_0000.vts && ! ls one/*.pvts 2> /dev/null && '$COMPARE' serial one > /dev/null"
     mpirun -np 3 "$TW" "${ARGS[@]}" --export three > /dev/null
     check "three processes give the same export" "$COMPARE" serial three
     # A long export in chunks (a farmed job; each chunk by both processes), merged.

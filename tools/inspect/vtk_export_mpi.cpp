@@ -122,10 +122,15 @@ int MpiProcesses::ranks() const {
 }
 
 bool started_by_mpi() {
-    // Open MPI's mpirun, Hydra (MPICH) and PMIx launchers (Slurm's srun) name the processes' count or rank.
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-        if (const char* v = std::getenv(name); v != nullptr && std::atoi(v) > 1) return true;
-    return std::getenv("PMIX_RANK") != nullptr;
+    auto more_than_one = [](const char* name) {
+        const char* v = std::getenv(name);
+        return v != nullptr && std::atoi(v) > 1;
+    };
+    // Open MPI's mpirun and Hydra (MPICH) name the processes' count; Slurm's srun names its
+    // step's tasks (a batch script's own process, or srun of one task, is not among others).
+    return more_than_one("OMPI_COMM_WORLD_SIZE") || more_than_one("PMI_SIZE") ||
+           ((std::getenv("PMIX_RANK") != nullptr || std::getenv("PMI_RANK") != nullptr) &&
+            more_than_one("SLURM_STEP_NUM_TASKS"));
 }
 
 Status export_series_mpi(const MpiProcesses& mpi, const fs::path& dir, const Scene& scene, const SampleGrid& whole,
