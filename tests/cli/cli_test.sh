@@ -665,6 +665,10 @@ JSON
     expect_error "a unit without its data" "data" "$TW" fit --manifest nodata.json --out bad3 --task 0
     echo '{"version": 1, "units": []}' > empty.json
     expect_error "no units" "non-empty" "$TW" fit --manifest empty.json --out bad4 --task 0
+    echo '{"version": 1, "units": [{"data": "records/station0.csv", "method": "phases"}]}' > method.json
+    expect_error "an unknown method, by its path" "method.json: /units/0/method" "$TW" fit --manifest method.json --out bad9 --task 0
+    echo '{"version": 1, "units": [{"data": "records/station0.csv", "kind": "tide"}]}' > kind.json
+    expect_error "an unknown kind, by its path" "kind.json: /units/0/kind" "$TW" fit --manifest kind.json --out bad10 --task 0
     echo '{"version": 1, "units": [{"data": "records/station0.csv", "station": "a/b"}]}' > slash.json
     expect_error "a station that is a path" "station" "$TW" fit --manifest slash.json --out bad5 --task 0
     expect_error "a task past the last unit" "--task 6: the manifest has units 0 to 5" "$TW" fit --manifest manifest.json --out bad6 --task 6
@@ -672,7 +676,7 @@ JSON
     expect_error "--data beside a manifest" "leave out --data" "$TW" fit --manifest manifest.json --out bad7 --data records/station0.csv
     expect_error "--status without a manifest" "give --manifest" "$TW" fit --status --out job
     expect_error "a missing manifest" "no_such.json" "$TW" fit --manifest no_such.json --out bad8 --task 0
-    check "nothing written by refused jobs" bash -c '! ls -d bad1 bad2 bad3 bad4 bad5 bad6 bad7 bad8 2>/dev/null'
+    check "nothing written by refused jobs" bash -c '! ls -d bad1 bad2 bad3 bad4 bad5 bad6 bad7 bad8 bad9 bad10 2>/dev/null'
     ;;
   slurm_jobs)
     # Farmed jobs under a real Slurm: a single-node cluster of Debian's slurmctld, slurmd

@@ -74,7 +74,12 @@ Result<std::vector<FitUnit>> read_manifest(const std::string& path, const FitArg
             if (auto st = r->string(key, *out); !st) return st.error();
         if (unit.station.empty() || unit.station.find_first_of("/\\") != std::string::npos)
             return r->error("station", "must be a name without slashes (it names the presets)");
+        if (auto kind = parse_kind(unit.args.kind); !kind) return r->error("kind", kind.error().message);
+        if (unit.args.method != "phase" && unit.args.method != "spectral")
+            return r->error("method", fmt::format("\"{}\": use phase or spectral", unit.args.method));
         if (auto st = r->number("depth", unit.args.depth); !st) return st.error();
+        if (!(unit.args.depth >= 0.0) || !std::isfinite(unit.args.depth))
+            return r->error("depth", "must be a finite number of metres (0 = deep water)");
         if (auto st = r->integer("waves", waves, 0, 256); !st) return st.error();
         if (auto st = r->integer("max_waves", max_waves, 1, 256); !st) return st.error();
         if (r->has("seed")) {
