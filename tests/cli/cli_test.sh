@@ -38,6 +38,36 @@ same_heights() {
 
 printf 'x,z\n0,0\n12.5,-3\n1200,400\n' > points.csv
 
+# seam_points: points.csv along the seams of a 2x2 tiling of the default island (x = 0 and
+# z = 0), either side of them, for comparing two bakes' queries there.
+seam_points() {
+  local k
+  printf 'x,z\n' > seam_points.csv
+  for k in $(seq -1400 35 1400); do
+    printf '%s,%s\n%s,%s\n%s,%s\n%s,%s\n' "$k" -3 "$k" 3 -3 "$k" 3 "$k" >> seam_points.csv
+  done
+}
+# scene_on_bake NAME FOLDER: NAME.json, the default scene loading the bake in FOLDER.
+scene_on_bake() {
+  sed "s|\"ocean\": \"ocean_rolling\",|\"ocean\": \"ocean_rolling\", \"shore\": {\"bake\": \"$2\"},|" "$EXAMPLES/scenes/default.json" > "$1.json"
+}
+# same_tiled_bake WHOLE TILED: the tiled bake's distances are the whole bake's bit for bit,
+# and so are its shore fields and everything else it wrote; queries along the seams agree.
+same_tiled_bake() {
+  local f
+  for f in distance_signed_distance distance_gradient_x distance_gradient_z distance_depth; do
+    check "the tiled bake's $f is the whole bake's, bit for bit" cmp "$1/$f.png" "$2/$f.png"
+  done
+  check "the tiled bake's folder is the whole bake's (shore model tiles, lakes, rivers)" diff -r "$1" "$2"
+  seam_points
+  scene_on_bake on_whole "$1"
+  scene_on_bake on_tiled "$2"
+  "$TW" query --scene on_whole.json --points seam_points.csv --time 7.5 --out seams_whole.csv 2> /dev/null
+  "$TW" query --scene on_tiled.json --points seam_points.csv --time 7.5 --out seams_tiled.csv 2> /dev/null
+  check "queries along the seams agree (heights within 1 um)" same_heights seams_whole.csv seams_tiled.csv 0.000001 324
+}
+
+
 # A river on a plane falling 1% toward the sea at x = 2000: river.json.
 write_mill_scene() {
   cat > river.json <<'JSON'
@@ -678,6 +708,39 @@ JSON
     expect_error "a missing manifest" "no_such.json" "$TW" fit --manifest no_such.json --out bad8 --task 0
     check "nothing written by refused jobs" bash -c '! ls -d bad1 bad2 bad3 bad4 bad5 bad6 bad7 bad8 bad9 bad10 2>/dev/null'
     ;;
+  tiled_bake)
+    # The default island baked whole and as a farmed job over 2x2 tiles, step by step.
+    "$TW" bake --out whole --quiet > /dev/null
+    B=(bake --out tiled --tiles 2 --quiet)
+    expect_error "stitch before the contours" "unit 0 (column 0, row 0) is missing" "$TW" "${B[@]}" --step stitch
+    for t in 0 1 2 3; do "$TW" "${B[@]}" --step contours --task $t > /dev/null; done
+    check "the contours step is done" bash -c "'$TW' ${B[*]} --step contours --status | grep -qx 'todo: none'"
+    expect_error "distances before the stitch" "run --step stitch first" "$TW" "${B[@]}" --step distances --task 0
+    check "--status names a tile whose distances failed" bash -c "'$TW' ${B[*]} --step distances --status | grep -q '^unit 0 (column 0, row 0): failed: .*stitch'"
+    # A corrupt contour file is refused by the stitch, naming it.
+    cp tiled.job/contours/units/00002/contour.bin contour.good
+    head -c 100 contour.good > tiled.job/contours/units/00002/contour.bin
+    expect_error "a truncated contour file" "00002/contour.bin: it is truncated" "$TW" "${B[@]}" --step stitch
+    check "no shoreline after a refused stitch" no_file tiled.job/shoreline.bin
+    cp contour.good tiled.job/contours/units/00002/contour.bin
+    "$TW" "${B[@]}" --step stitch > /dev/null
+    check "the stitch writes the shoreline" test -s tiled.job/shoreline.bin
+    for t in 3 1 0; do "$TW" "${B[@]}" --step distances --task $t > /dev/null; done
+    expect_error "the merge waits for every tile" "unit 2 (column 0, row 1) is missing" "$TW" "${B[@]}" --merge
+    check "no bake folder before every tile is done" test ! -e tiled
+    expect_error "a task with other options" "started with tiles 2 where this run gives tiles 4" "$TW" bake --out tiled --tiles 4 --step distances --task 2
+    expect_error "a tiling that does not divide the grid" "must be a multiple of 32 times the tiles" "$TW" bake --out other --tiles 3
+    expect_error "--task without a step" "--step contours or --step distances" "$TW" "${B[@]}" --task 1
+    expect_error "--merge without --tiles" "give --tiles T" "$TW" bake --out x --merge
+    "$TW" "${B[@]}" --step distances --task 2 > /dev/null
+    "$TW" "${B[@]}" --merge > merge.txt
+    check "the merge exits 0" test $? -eq 0
+    same_tiled_bake whole tiled
+    check "the bake folder has a GDAL VRT of the distance field" bash -c "grep -q '<SourceFilename relativeToVRT=\"1\">distance_signed_distance.png' tiled/distance.vrt && grep -q '\"gis\": \"distance.vrt\"' tiled/shore.json"
+    check "running a done step again skips every tile" bash -c "'$TW' bake --out tiled --tiles 2 --step distances | grep -c 'done already' | grep -qx 4"
+    "$TW" bake --out serial --tiles 2 --quiet > /dev/null
+    check "without --step every step runs in turn, the same bake" diff -r whole serial
+    ;;
   slurm_jobs)
     # Farmed jobs under a real Slurm: a single-node cluster of Debian's slurmctld, slurmd
     # and munge (tools/slurm/single_node_cluster.sh): a batch fit of six units two at a
@@ -726,6 +789,28 @@ JSON
     timeout 300 sbatch --wait --kill-on-invalid-dep=yes --dependency="afterok:${exported%%;*}" \
       --wrap "$TW inspect ${ARGS[*]} --export chunked --chunk-steps 4 --merge" > /dev/null
     check "merged after them, the chunked export equals a single run's array for array" "$COMPARE" whole chunked
+    ;;
+  slurm_tiled_bake)
+    # The tiled bake's three steps and merge as Slurm jobs, each after the one before
+    # (afterok), the arrays two tiles at a time; the result is the whole bake.
+    SLURM_TOOLS="$EXAMPLES/../tools/slurm"
+    if [ "$(id -u)" -ne 0 ] || ! command -v slurmctld > /dev/null || ! command -v munged > /dev/null; then
+      echo "skipped: a single-node Slurm cluster needs root and Debian's slurmctld, slurmd and munge"; exit 77
+    fi
+    "$TW" bake --out whole --quiet > /dev/null
+    export TIDEWATER_SLURM_PORT=$((20000 + RANDOM % 20000)) TIDEWATER="$TW"
+    trap '"$SLURM_TOOLS/single_node_cluster.sh" stop "$WORK/cluster"; rm -rf "$WORK"' EXIT
+    "$SLURM_TOOLS/single_node_cluster.sh" start "$WORK/cluster" || { echo "FAIL: the cluster did not start"; exit 1; }
+    export SLURM_CONF="$WORK/cluster/slurm.conf"
+    T=(--out tiled --tiles 2)
+    AFTER=(--kill-on-invalid-dep=yes --dependency)
+    a="$(sbatch --parsable --array=0-3%2 "$SLURM_TOOLS/tiled_bake.sbatch" contours "${T[@]}")"
+    b="$(sbatch --parsable "${AFTER[@]}" "afterok:${a%%;*}" "$SLURM_TOOLS/tiled_bake.sbatch" stitch "${T[@]}")"
+    c="$(sbatch --parsable --array=0-3%2 "${AFTER[@]}" "afterok:${b%%;*}" "$SLURM_TOOLS/tiled_bake.sbatch" distances "${T[@]}")"
+    rc=0; timeout 300 sbatch --wait "${AFTER[@]}" "afterok:${c%%;*}" "$SLURM_TOOLS/tiled_bake.sbatch" merge "${T[@]}" > merge.txt || rc=$?
+    check "contours, stitch, distances and merge run in order under Slurm" test "$rc" -eq 0
+    check "each array ran a task per tile" bash -c 'test "$(ls tidewater-bake-*_[0-3].out | wc -l)" -eq 8'
+    same_tiled_bake whole tiled
     ;;
   mpi_export)
     # The ParaView export under Open MPI's mpirun: each process writes its band of the grid

@@ -25,8 +25,4 @@ struct ExportChunks {
     std::size_t chunks(std::size_t steps) const { return (steps + chunk_steps - 1) / chunk_steps; }
 };
 
-/// Keeps the options that define the job (`options`, one line each) in job.options, or
-/// checks them against the ones kept there; names the first that differs.
-Status check_job_options(const farm::JobFolder& job, const std::string& options);
-
 }  // namespace tidewater::cli

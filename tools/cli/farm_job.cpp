@@ -106,4 +106,29 @@ Status require_all_done(const JobFolder& job, std::size_t units,
                              job.out().string(), not_done.size(), units, list)};
 }
 
+Status check_job_options(const JobFolder& job, const std::string& options, const std::string& new_job) {
+    const std::filesystem::path kept = job.out() / "job.options";
+    std::ifstream in(kept);
+    if (!in) {
+        std::error_code ec;
+        fs::create_directories(job.out(), ec);
+        if (ec)
+            return Error{ErrorCode::io_error,
+                         fmt::format("{}: cannot create the job's folder: {}", job.out().string(), ec.message())};
+        AtomicFile out(kept);
+        return out.write_and_commit(options);
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    if (text.str() == options) return {};
+    std::istringstream was(text.str()), now(options);
+    std::string a, b;
+    while (std::getline(was, a) && std::getline(now, b))
+        if (a != b) break;
+    return Error{ErrorCode::invalid_argument,
+                 fmt::format("{}: the job was started with {} where this run gives {}: run every task with the same "
+                             "options, or start a new job ({})",
+                             job.out().string(), a, b, new_job)};
+}
+
 }  // namespace tidewater::cli::farm

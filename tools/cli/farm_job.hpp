@@ -67,4 +67,9 @@ std::string array_spec(const std::vector<std::size_t>& tasks);
 Status require_all_done(const JobFolder& job, std::size_t units,
                         const std::function<std::string(std::size_t)>& describe);
 
+/// Keeps the options that define the job (`options`, one line each) in job.options, or
+/// checks them against the ones kept there; names the first that differs and says how to
+/// start a new job (`new_job`, e.g. "another --export folder").
+Status check_job_options(const JobFolder& job, const std::string& options, const std::string& new_job);
+
 }  // namespace tidewater::cli::farm

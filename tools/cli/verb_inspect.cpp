@@ -221,7 +221,8 @@ int run_inspect(const InspectArgs& a) {
         const std::string options = fmt::format(
             "--scene {}\n--extent {}\n--resolution {}\n--time {}\n--times {}\n--chunk-steps {}\n", a.scene, a.extent,
             a.resolution, a.time ? fmt::format("{:.17g}", *a.time) : "", a.times, chunked.chunk_steps);
-        if (auto st = check_job_options(job, options); !st) return fail(verb, st.error().message);
+        if (auto st = farm::check_job_options(job, options, "another --export folder"); !st)
+            return fail(verb, st.error().message);
         auto describe = [&](std::size_t t) {
             const std::size_t first = t * chunked.chunk_steps;
             return fmt::format("steps {} to {}", first, std::min(first + chunked.chunk_steps, times.size()) - 1);

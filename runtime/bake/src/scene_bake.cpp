@@ -17,6 +17,7 @@
 #include "tidewater/detail/shore_land_edit.hpp"
 #include "tidewater/detail/shore_water_edit.hpp"
 #include "tidewater/detail/shore_waves_bake.hpp"
+#include "tidewater/detail/tiled_shore.hpp"
 #include "tidewater/detail/water_bodies_bake.hpp"
 
 namespace tidewater {
@@ -123,16 +124,48 @@ bool same_ocean_shore_inputs(const Scene& scene, int distance_resolution, const 
            same_waves(previous->ocean.waves(), scene.ocean.waves());
 }
 
+/// The ocean's distance field, baked over `terrain` at `resolution`.
+Result<std::shared_ptr<const ShoreField>> bake_shoreline(const Scene& scene, const Terrain& terrain,
+                                                         const SceneBakeOptions& options, int resolution,
+                                                         const std::function<void(double)>& progress) {
+    BakeOptions shoreline_options;
+    shoreline_options.resolution = resolution;
+    shoreline_options.threads = options.threads;
+    shoreline_options.cancel = options.cancel;
+    shoreline_options.progress = progress;
+    progress(0.0);
+    auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
+    if (!shoreline) return detail::in_shore(scene, shoreline.error());
+    return std::make_shared<const ShoreField>(std::move(shoreline).value());
+}
+
+/// The lakes' and rivers' bake options for `scene` (no progress, no previous bake).
+detail::BodiesBakeOptions bodies_options_for(const Scene& scene, const SceneBakeOptions& options) {
+    detail::BodiesBakeOptions bodies;
+    bodies.lake_resolution = scene.shore.resolution;
+    bodies.cancel = options.cancel;
+    return bodies;
+}
+
 /// The ocean's shore model and the distance field it samples: the previous bake's when
-/// nothing it depends on changed (the edit was inland), else baked over `terrain`, with
-/// progress from `begin` to the end of the whole bake.
+/// nothing it depends on changed (the edit was inland), else baked over `terrain` (on the
+/// distance field `given`, where not null), with progress from `begin` to the end of the whole bake.
 Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneBakeOptions& options,
-                        BakeProgress& progress, double begin, SceneBake& bake) {
+                        BakeProgress& progress, double begin, std::shared_ptr<const ShoreField> given,
+                        SceneBake& bake) {
     if (!(scene.shore.enabled && scene.has_ocean)) return {};
     const int distance_resolution = options.distance_resolution != 0       ? options.distance_resolution
                                     : scene.shore.distance_resolution != 0 ? scene.shore.distance_resolution
                                                                            : scene.shore.resolution;
-    if (same_ocean_shore_inputs(scene, distance_resolution, options.previous.get())) {
+    if (given) {
+        const double half = terrain.extent_half_size();
+        if (given->resolution != distance_resolution || given->texel != 2.0 * half / distance_resolution ||
+            given->corner != terrain.extent_center() - glm::dvec2(half))
+            return detail::in_shore(scene, Error{ErrorCode::invalid_argument,
+                                                 fmt::format("the distance field given ({0}x{0}) is not the one the "
+                                                             "scene's terrain and distance resolution ({1}x{1}) make",
+                                                             given->resolution, distance_resolution)});
+    } else if (same_ocean_shore_inputs(scene, distance_resolution, options.previous.get())) {
         const SceneBake& old = *options.previous->bake;
         if (old.terrain == terrain) {
             bake.ocean_shore = old.ocean_shore;
@@ -176,14 +209,13 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
                                      "which samples it: give a distance resolution of at least {1}",
                                      distance_resolution, scene.shore.resolution)});
     const double shoreline_share = begin + 0.3 * (1.0 - begin);
-    BakeOptions shoreline_options;
-    shoreline_options.resolution = distance_resolution;
-    shoreline_options.threads = options.threads;
-    shoreline_options.cancel = options.cancel;
-    shoreline_options.progress = [&](double f) { progress.report("shoreline", begin, shoreline_share, f); };
-    progress.report("shoreline", begin, shoreline_share, 0.0);
-    auto shoreline = bake_shore(terrain, scene.water_level(), shoreline_options);
-    if (!shoreline) return detail::in_shore(scene, shoreline.error());
+    std::shared_ptr<const ShoreField> shoreline = std::move(given);
+    if (!shoreline) {
+        auto baked = bake_shoreline(scene, terrain, options, distance_resolution,
+                                    [&](double f) { progress.report("shoreline", begin, shoreline_share, f); });
+        if (!baked) return baked.error();
+        shoreline = std::move(baked).value();
+    }
     progress.report("shore waves", shoreline_share, 1.0, 0.0);
 
     ShoreWaveOptions model_options;
@@ -194,17 +226,17 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     model_options.threads = options.threads;
     model_options.cancel = options.cancel;
     model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
-    auto model = bake_shore_waves(scene.ocean.waves(), terrain, scene.water_level(), model_options, &*shoreline);
+    auto model = bake_shore_waves(scene.ocean.waves(), terrain, scene.water_level(), model_options, shoreline.get());
     if (!model) return detail::in_shore(scene, model.error());
     bake.ocean_shore = std::move(model).value();
-    bake.shoreline = std::make_shared<const ShoreField>(std::move(shoreline).value());
+    bake.shoreline = std::move(shoreline);
     bake.distance_resolution = distance_resolution;
     return {};
 }
 
-}  // namespace
-
-Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options) {
+/// bake_scene, on the ocean's distance field `given` where not null.
+Result<std::shared_ptr<const Scene>> bake_scene_given(const Scene& scene, const SceneBakeOptions& options,
+                                                      std::shared_ptr<const ShoreField> given) {
     const auto start = std::chrono::steady_clock::now();
     if (options.distance_resolution != 0 && (options.distance_resolution < 8 || options.distance_resolution > 8192))
         return Error{
@@ -226,9 +258,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         const double bodies_share = total > 0.0 && lake_shores ? bodies_end + 1.0 / total : bodies_end;
         if (has_bodies) {
             progress.report("water bodies", 0.0, bodies_end, 0.0);
-            detail::BodiesBakeOptions bodies_options;
-            bodies_options.lake_resolution = scene.shore.resolution;
-            bodies_options.cancel = options.cancel;
+            detail::BodiesBakeOptions bodies_options = bodies_options_for(scene, options);
             bodies_options.progress = [&](double f) { progress.report("water bodies", 0.0, bodies_end, f); };
             const Scene* previous = options.previous.get();
             if (previous && previous->bake && previous->bake->bodies)
@@ -248,7 +278,8 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
             if (!models) return models.error();
             bake->lake_shores = std::move(models).value();
         }
-        if (auto st = bake_ocean_shore(scene, terrain, options, progress, bodies_share, *bake); !st) return st.error();
+        if (auto st = bake_ocean_shore(scene, terrain, options, progress, bodies_share, std::move(given), *bake); !st)
+            return st.error();
         if (options.cancel.stop_requested())
             return Error{ErrorCode::cancelled, fmt::format("{}: the bake was cancelled", scene_label(scene))};
         bake->terrain = terrain;
@@ -257,6 +288,34 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
         return Error{ErrorCode::internal, fmt::format("{}: the bake failed: {}", scene_label(scene), e.what())};
     }
 }
+
+}  // namespace
+
+Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneBakeOptions& options) {
+    return bake_scene_given(scene, options, nullptr);
+}
+
+namespace tiled {
+
+Result<Terrain> shore_terrain(const Scene& scene, unsigned) {
+    // As bake_scene: a river carves the terrain the shore is baked over.
+    if (scene.lakes.empty() && scene.rivers.empty()) return scene.terrain.with_cuts({});
+    auto bodies = detail::bake_water_bodies(scene, bodies_options_for(scene, {}));
+    if (!bodies) return bodies.error();
+    return bodies->terrain;
+}
+
+Result<std::shared_ptr<const Scene>> bake_scene_on_shoreline(const Scene& scene, const SceneBakeOptions& options,
+                                                             std::shared_ptr<const ShoreField> shoreline) {
+    if (!shoreline) return Error{ErrorCode::invalid_argument, "bake_scene_on_shoreline: no distance field given"};
+    if (!scene.shore.bake_folder.empty() || !scene.shore.enabled || !scene.has_ocean)
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("{}: a distance field is given for an ocean shore the scene does not bake",
+                                 scene_label(scene))};
+    return bake_scene_given(scene, options, std::move(shoreline));
+}
+
+}  // namespace tiled
 
 Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
     const bool ocean = baked.bake && baked.bake->ocean_shore;

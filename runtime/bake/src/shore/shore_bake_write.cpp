@@ -25,6 +25,30 @@ Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name,
     return detail::write_field_png(dir, name, values, n, n, unit);
 }
 
+/// The distance field's PNGs as one GDAL raster (a VRT) for GIS tools: a band per field,
+/// each with its PNG's scale and offset, so GDAL reads metres; georeferenced north-up with
+/// x east and z south (Tidewater's axes), in local metres.
+Status write_distance_vrt(const fs::path& temp, const ShoreField& d, const nlohmann::json& fields) {
+    std::string vrt = fmt::format("<VRTDataset rasterXSize=\"{0}\" rasterYSize=\"{0}\">\n", d.resolution);
+    // Image row j lies at z = corner + (j + 0.5) texel; GIS y (north) is -z.
+    vrt += fmt::format("  <GeoTransform>{:.17g}, {:.17g}, 0, {:.17g}, 0, {:.17g}</GeoTransform>\n", d.corner.x, d.texel,
+                       -d.corner.y, -d.texel);
+    int band = 1;
+    for (const char* name : {"signed_distance", "gradient_x", "gradient_z", "depth"}) {
+        const nlohmann::json& f = fields.at(name);
+        const double step = f.at("step").get<double>();
+        const double zero = f.at("zero_pixel").get<double>();
+        vrt += fmt::format(
+            "  <VRTRasterBand dataType=\"UInt16\" band=\"{}\">\n    <Description>{}</Description>\n"
+            "    <UnitType>{}</UnitType>\n    <Offset>{:.17g}</Offset>\n    <Scale>{:.17g}</Scale>\n"
+            "    <SimpleSource>\n      <SourceFilename relativeToVRT=\"1\">{}</SourceFilename>\n"
+            "      <SourceBand>1</SourceBand>\n    </SimpleSource>\n  </VRTRasterBand>\n",
+            band++, name, f.at("unit").get<std::string>(), -zero * step, step, f.at("file").get<std::string>());
+    }
+    vrt += "</VRTDataset>\n";
+    return detail::write_text_file(temp / kDistanceVrt, vrt);
+}
+
 /// One layer's tiles: which tiles are stored, and a 16-bit grey PNG per stored tile (in
 /// tiles/`layer`/) whose row r holds field row r at the slot's texels, each row encoded over
 /// its range across every stored tile. `first` and `waves`: the layer's run of waves (0
@@ -157,6 +181,8 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
             if (!e) return e.error();
             dist["fields"][name] = *e;
         }
+        if (auto st = write_distance_vrt(temp, *d, dist["fields"]); !st) return st;
+        dist["gis"] = kDistanceVrt;
         nlohmann::json lines = nlohmann::json::array();
         for (const ShoreLine& l : d->shorelines) {
             nlohmann::json pts = nlohmann::json::array();

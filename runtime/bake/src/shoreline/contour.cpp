@@ -14,23 +14,18 @@ constexpr int kOpposite[4] = {2, 3, 0, 1};
 constexpr int kStepI[4] = {0, 1, 0, -1};
 constexpr int kStepJ[4] = {-1, 0, 1, 0};
 
-/// One piece of contour inside cell (i, j), entering through edge `from_edge` and
-/// leaving through `to_edge`, land on its left.
-struct Segment {
-    int i, j;
-    int from_edge, to_edge;
-    glm::dvec2 from, to;
-};
+using Segment = ContourCell;
 
-/// Marching squares over row j of cells; appends that row's segments in order of i.
-void row_segments(const std::vector<double>& v, int n, int j, std::vector<Segment>& out) {
+/// Marching squares over row j of the window's cells; appends that row's segments in order of i.
+void row_segments(const std::vector<double>& v, const CellWindow& w, int j, std::vector<Segment>& out) {
     // Exact zeros count as land and cross as a tiny positive value, so no crossing sits on a grid point.
+    const std::size_t width = static_cast<std::size_t>(w.i1 - w.i0 + 1);
     auto at = [&](int i, int jj) {
-        const double x = v[static_cast<std::size_t>(jj) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)];
+        const double x = v[static_cast<std::size_t>(jj - w.j0) * width + static_cast<std::size_t>(i - w.i0)];
         return x >= 0.0 ? std::max(x, 1e-9) : x;
     };
     auto cross = [](glm::dvec2 a, glm::dvec2 b, double va, double vb) { return a + (b - a) * (va / (va - vb)); };
-    for (int i = 0; i + 1 < n; ++i) {
+    for (int i = w.i0; i < w.i1; ++i) {
         const double c00 = at(i, j), c10 = at(i + 1, j), c11 = at(i + 1, j + 1), c01 = at(i, j + 1);
         const bool l00 = c00 >= 0, l10 = c10 >= 0, l11 = c11 >= 0, l01 = c01 >= 0;
         if (l00 == l10 && l10 == l11 && l11 == l01) continue;
@@ -74,19 +69,24 @@ void row_segments(const std::vector<double>& v, int n, int j, std::vector<Segmen
 
 }  // namespace
 
-std::vector<ContourChain> extract_contours(const std::vector<double>& values, int n, unsigned threads) {
+std::vector<ContourCell> contour_cells(const std::vector<double>& values, const CellWindow& window, unsigned threads) {
     // Rows of cells are independent: find their segments in parallel.
-    const int cell_rows = n - 1;
-    std::vector<std::vector<Segment>> rows(static_cast<std::size_t>(std::max(cell_rows, 0)));
+    std::vector<std::vector<Segment>> rows(static_cast<std::size_t>(std::max(window.j1 - window.j0, 0)));
     parallel_for_each(rows.size(), threads,
-                      [&](std::size_t j) { row_segments(values, n, static_cast<int>(j), rows[j]); });
-
+                      [&](std::size_t r) { row_segments(values, window, window.j0 + static_cast<int>(r), rows[r]); });
     std::vector<Segment> segments;
-    std::vector<std::size_t> row_start(rows.size() + 1, 0);
-    for (std::size_t j = 0; j < rows.size(); ++j) row_start[j + 1] = row_start[j] + rows[j].size();
-    segments.reserve(row_start.back());
+    std::size_t total = 0;
+    for (const auto& r : rows) total += r.size();
+    segments.reserve(total);
     for (auto& r : rows) segments.insert(segments.end(), r.begin(), r.end());
-    rows.clear();
+    return segments;
+}
+
+std::vector<ContourChain> chain_contour_cells(std::vector<ContourCell> segments, int n) {
+    const int cell_rows = n - 1;
+    std::vector<std::size_t> row_start(static_cast<std::size_t>(std::max(cell_rows, 0)) + 1, 0);
+    for (const Segment& s : segments) ++row_start[static_cast<std::size_t>(s.j) + 1];
+    for (std::size_t j = 1; j < row_start.size(); ++j) row_start[j] += row_start[j - 1];
 
     // The next segment lies in the cell across the exit edge and enters through the
     // same edge; segments are sorted by (j, i), so it is found by a search in its row.
@@ -128,6 +128,10 @@ std::vector<ContourChain> extract_contours(const std::vector<double>& values, in
     for (std::size_t k = 0; k < segments.size(); ++k)
         if (!used[k]) follow(k, false);
     return chains;
+}
+
+std::vector<ContourChain> extract_contours(const std::vector<double>& values, int n, unsigned threads) {
+    return chain_contour_cells(contour_cells(values, {0, 0, n - 1, n - 1}, threads), n);
 }
 
 }  // namespace tidewater::detail

@@ -85,7 +85,8 @@ struct Block {
 
 class BlockFiller {
   public:
-    BlockFiller(const ShoreDistance& distance, ShoreField& field) : distance_(distance), field_(field) {}
+    BlockFiller(const ShoreDistance& distance, ShoreField& field, const TexelWindow& window)
+        : distance_(distance), field_(field), window_(window) {}
 
     void fill_root(const Block& b, Workspace& w, ShoreDistance::Hit& hint, bool& have_hint) const {
         const auto [centre, radius] = bounds(b);
@@ -147,7 +148,9 @@ class BlockFiller {
                 std::size_t arg = 0;
                 for (std::size_t k = 1; k < cand.size(); ++k)
                     if (d2[k] < d2[arg]) arg = k;
-                const std::size_t t = field_.index(i, j);
+                const std::size_t t =
+                    static_cast<std::size_t>(j - window_.j0) * static_cast<std::size_t>(window_.size) +
+                    static_cast<std::size_t>(i - window_.i0);
                 const auto hit = distance_.hit_on(p, cand.id[arg], field_.depth[t] > 0.0f);
                 signed_distance_[t] = static_cast<float>(hit.signed_distance);
                 gradient_x_[t] = static_cast<float>(hit.gradient.x);
@@ -157,6 +160,7 @@ class BlockFiller {
 
     const ShoreDistance& distance_;
     ShoreField& field_;
+    const TexelWindow window_;
     // The field's grids to write, taken once: the workers write distinct texels.
     float* signed_distance_ = field_.signed_distance.write().data();
     float* gradient_x_ = field_.gradient_x.write().data();
@@ -167,9 +171,16 @@ class BlockFiller {
 
 void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsigned threads,
                          const std::function<void(double)>& progress, const std::stop_token& cancel) {
-    const int n = field.resolution;
+    fill_distance_window(distance, field, {0, 0, field.resolution}, threads, progress, cancel);
+}
+
+void fill_distance_window(const ShoreDistance& distance, ShoreField& field, const TexelWindow& window, unsigned threads,
+                          const std::function<void(double)>& progress, const std::stop_token& cancel) {
+    // Root blocks are laid from the whole grid's corner, so a window that starts on a root
+    // block's edge is filled exactly as the whole grid is there.
+    const int n = window.size;
     const int block_rows = (n + kRootBlock - 1) / kRootBlock;
-    const BlockFiller filler(distance, field);
+    const BlockFiller filler(distance, field, window);
     std::atomic<int> done{0};
     std::mutex progress_lock;  // the callback is the caller's: one call at a time
     parallel_for_each(static_cast<std::size_t>(block_rows), threads, [&](std::size_t row) {
@@ -177,9 +188,10 @@ void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsig
         Workspace w;
         ShoreDistance::Hit hint;
         bool have_hint = false;
-        const int j0 = static_cast<int>(row) * kRootBlock, j1 = std::min(n, j0 + kRootBlock);
-        for (int i0 = 0; i0 < n; i0 += kRootBlock)
-            filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), j1}, w, hint, have_hint);
+        const int j0 = window.j0 + static_cast<int>(row) * kRootBlock;
+        const int j1 = std::min(window.j0 + n, j0 + kRootBlock);
+        for (int i0 = window.i0; i0 < window.i0 + n; i0 += kRootBlock)
+            filler.fill_root({i0, j0, std::min(window.i0 + n, i0 + kRootBlock), j1}, w, hint, have_hint);
         const int rows = ++done;
         if (progress) {
             const std::lock_guard<std::mutex> lock(progress_lock);

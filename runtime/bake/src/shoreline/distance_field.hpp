@@ -14,4 +14,16 @@ namespace tidewater::detail {
 void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsigned threads,
                          const std::function<void(double)>& progress, const std::stop_token& cancel);
 
+/// A square of texels [i0, i0 + size) x [j0, j0 + size) of a grid.
+struct TexelWindow {
+    int i0 = 0, j0 = 0, size = 0;
+};
+
+/// The same over a window of the field's grid (a tile of a tiled bake): `field` places the
+/// whole grid (corner, texel, resolution), its depth holds the window's texels (size^2,
+/// row-major) and its distance and gradients are written there, sized by the caller.
+/// Every texel gets the value the whole grid's fill gives it.
+void fill_distance_window(const ShoreDistance& distance, ShoreField& field, const TexelWindow& window, unsigned threads,
+                          const std::function<void(double)>& progress, const std::stop_token& cancel);
+
 }  // namespace tidewater::detail

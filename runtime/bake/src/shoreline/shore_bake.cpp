@@ -10,6 +10,7 @@
 #include "contour.hpp"
 #include "distance_field.hpp"
 #include "shore_geometry.hpp"
+#include "shoreline_steps.hpp"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/parallel.hpp"
 #include "tidewater/detail/reference.hpp"
@@ -43,6 +44,92 @@ class StageClock {
 };
 
 }  // namespace
+
+namespace detail {
+
+Result<WindowHeights> window_heights(const Terrain& terrain, double water_level, const ShoreField& grid,
+                                     const TexelRect& r, unsigned threads) {
+    WindowHeights out;
+    const std::size_t count = static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
+    out.above.resize(count);
+    out.depth.resize(count);
+    std::atomic<bool> finite{true};
+    std::atomic<std::size_t> bad_index{0};
+    parallel_rows(r.height, threads, [&](int row) {
+        for (int col = 0; col < r.width; ++col) {
+            const std::size_t k =
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(r.width) + static_cast<std::size_t>(col);
+            // Texel centres from the whole grid's indices: a tile's are the whole grid's, bit for bit.
+            const double h = terrain.height_at(grid.texel_center(r.i0 + col, r.j0 + row));
+            if (!std::isfinite(h) && finite.exchange(false)) bad_index = k;
+            out.above[k] = h - water_level;
+            out.depth[k] = static_cast<float>(water_level - h);
+        }
+    });
+    if (!finite) {
+        const auto k = bad_index.load();
+        const std::size_t w = static_cast<std::size_t>(r.width);
+        const glm::dvec2 p = grid.texel_center(r.i0 + static_cast<int>(k % w), r.j0 + static_cast<int>(k / w));
+        return Error{ErrorCode::invalid_argument,
+                     fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
+    }
+    return out;
+}
+
+std::size_t mixed_cells(const std::vector<float>& depth, const CellWindow& w, unsigned threads) {
+    const std::size_t width = static_cast<std::size_t>(w.i1 - w.i0 + 1);
+    std::atomic<std::size_t> mixed{0};
+    parallel_rows(w.j1 - w.j0, threads, [&](int r) {
+        std::size_t row_mixed = 0;
+        const float* below = depth.data() + static_cast<std::size_t>(r) * width;
+        const float* above_row = below + width;
+        for (std::size_t i = 0; i + 1 < width; ++i) {
+            const bool a = below[i] <= 0, b = below[i + 1] <= 0, c = above_row[i] <= 0, d = above_row[i + 1] <= 0;
+            row_mixed += !(a == b && b == c && c == d);
+        }
+        mixed += row_mixed;
+    });
+    return mixed;
+}
+
+Status check_mixed_cells(std::size_t mixed, std::size_t count) {
+    // A coast crosses O(n) cells; O(n^2) crossings is noise.
+    const std::size_t mixed_limit = std::max<std::size_t>(50'000, count / 8);
+    if (mixed <= mixed_limit) return {};
+    return Error{
+        ErrorCode::invalid_argument,
+        fmt::format("bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
+                    "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the "
+                    "resolution",
+                    mixed, count, mixed_limit)};
+}
+
+Result<ClassifiedShore> shoreline_from_cells(std::vector<ContourCell> cells, int n, glm::dvec2 corner, double texel,
+                                             double tolerance, unsigned threads) {
+    std::vector<ContourChain> chains = chain_contour_cells(std::move(cells), n);
+    std::size_t raw_segments = 0;
+    for (const auto& c : chains) raw_segments += c.points.size();
+    if (raw_segments > kMaxShoreSegments || chains.size() > kMaxShoreLines) {
+        return Error{
+            ErrorCode::invalid_argument,
+            fmt::format("bake: the shoreline has {} pieces and {} segments at this resolution (at most {} and {}): "
+                        "the terrain is too noisy at the water level; smooth it or lower the resolution",
+                        chains.size(), raw_segments, kMaxShoreLines, kMaxShoreSegments)};
+    }
+    // In world units.
+    std::vector<ShoreLine> lines;
+    lines.reserve(chains.size());
+    for (auto& c : chains) {
+        ShoreLine line;
+        line.closed = c.closed;
+        line.points.reserve(c.points.size());
+        for (const auto& g : c.points) line.points.push_back(corner + texel * (g + glm::dvec2(0.5)));
+        lines.push_back(std::move(line));
+    }
+    return simplify_and_classify(std::move(lines), tolerance, threads);
+}
+
+}  // namespace detail
 
 double ShoreField::sample(const SharedFloats& grid, glm::dvec2 p) const {
     if (resolution < 2) return resolution == 1 ? static_cast<double>(grid[0]) : 0.0;
@@ -79,75 +166,25 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     StageClock clock;
 
     // Terrain height relative to the water level at every texel centre.
-    std::vector<double> above(count);
-    std::vector<float>& depth = field.depth.write();
-    depth.resize(count);
-    std::atomic<bool> finite{true};
-    std::atomic<std::size_t> bad_index{0};
-    parallel_rows(n, threads, [&](int j) {
-        for (int i = 0; i < n; ++i) {
-            const double h = terrain.height_at(field.texel_center(i, j));
-            if (!std::isfinite(h) && finite.exchange(false)) bad_index = field.index(i, j);
-            above[field.index(i, j)] = h - water_level;
-            depth[field.index(i, j)] = static_cast<float>(water_level - h);
-        }
-    });
-    if (!finite) {
-        const auto k = bad_index.load();
-        const glm::dvec2 p = field.texel_center(static_cast<int>(k % static_cast<std::size_t>(n)),
-                                                static_cast<int>(k / static_cast<std::size_t>(n)));
-        return Error{ErrorCode::invalid_argument,
-                     fmt::format("bake: the terrain height is not finite at x = {:.2f}, z = {:.2f} m", p.x, p.y)};
-    }
+    auto heights = detail::window_heights(terrain, water_level, field, {0, 0, n, n}, threads);
+    if (!heights) return heights.error();
+    std::vector<double> above = std::move(heights->above);
+    field.depth.write() = std::move(heights->depth);
     if (options.cancel.stop_requested()) return cancelled();
     report(0.1);
 
-    // A coast crosses O(n) cells; O(n^2) crossings is noise (say, millions of one-texel
-    // islands). Count before building anything.
-    std::atomic<std::size_t> mixed{0};
-    parallel_rows(n - 1, threads, [&](int j) {
-        std::size_t row_mixed = 0;
-        const float* below = field.depth.data() + field.index(0, j);
-        const float* above_row = below + n;
-        for (int i = 0; i + 1 < n; ++i) {
-            const bool a = below[i] <= 0, b = below[i + 1] <= 0, c = above_row[i] <= 0, d = above_row[i + 1] <= 0;
-            row_mixed += !(a == b && b == c && c == d);
-        }
-        mixed += row_mixed;
-    });
-    const std::size_t mixed_limit = std::max<std::size_t>(50'000, count / 8);
-    if (mixed > mixed_limit) {
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format(
-                "bake: the shoreline crosses {} of {} cells at this resolution (at most {}): the terrain is "
-                "too noisy at the water level, like thousands of one-texel islands; smooth it or lower the resolution",
-                mixed.load(), count, mixed_limit)};
-    }
+    // Count before building anything.
+    const std::size_t mixed = detail::mixed_cells(field.depth.values(), {0, 0, n - 1, n - 1}, threads);
+    if (auto st = detail::check_mixed_cells(mixed, count); !st) return st.error();
     field.timings.heights = clock.lap();
-    // The contour at the water level, in world units.
-    std::vector<detail::ContourChain> chains = detail::extract_contours(above, n, threads);
-    std::size_t raw_segments = 0;
-    for (const auto& c : chains) raw_segments += c.points.size();
-    if (raw_segments > kMaxShoreSegments || chains.size() > kMaxShoreLines) {
-        return Error{
-            ErrorCode::invalid_argument,
-            fmt::format("bake: the shoreline has {} pieces and {} segments at this resolution (at most {} and {}): "
-                        "the terrain is too noisy at the water level; smooth it or lower the resolution",
-                        chains.size(), raw_segments, kMaxShoreLines, kMaxShoreSegments)};
-    }
-    std::vector<ShoreLine> lines;
-    lines.reserve(chains.size());
-    for (auto& c : chains) {
-        ShoreLine line;
-        line.closed = c.closed;
-        line.points.reserve(c.points.size());
-        for (const auto& g : c.points) line.points.push_back(field.corner + field.texel * (g + glm::dvec2(0.5)));
-        lines.push_back(std::move(line));
-    }
+    // The contour at the water level.
+    std::vector<detail::ContourCell> cells = detail::contour_cells(above, {0, 0, n - 1, n - 1}, threads);
     field.timings.contour = clock.lap();
     if (options.cancel.stop_requested()) return cancelled();
-    detail::ClassifiedShore shore = detail::simplify_and_classify(std::move(lines), field.simplify_tolerance, threads);
+    auto shoreline =
+        detail::shoreline_from_cells(std::move(cells), n, field.corner, field.texel, field.simplify_tolerance, threads);
+    if (!shoreline) return shoreline.error();
+    detail::ClassifiedShore shore = std::move(shoreline).value();
     field.polygons = shore.polygons;
     field.holes = shore.holes;
     field.shorelines = std::move(shore.lines);

@@ -22,6 +22,8 @@ namespace tidewater {
 
 inline constexpr int kShoreBakeFormatVersion = 3;
 inline constexpr const char* kShoreSidecar = "shore.json";
+/// The distance field as one GDAL raster (a VRT over its PNGs, in metres) for GIS tools.
+inline constexpr const char* kDistanceVrt = "distance.vrt";
 
 /// The file of stored tile (ti, tj) of the layer in folder tiles/`layer` inside a bake folder.
 std::string shore_tile_file(const std::string& layer, int ti, int tj);
