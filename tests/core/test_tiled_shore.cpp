@@ -51,7 +51,9 @@ ShoreField tiled_field(const Terrain& terrain, int tiles) {
         EXPECT_TRUE(d.ok()) << d.error().message;
         distances.push_back(std::move(d).value());
     }
-    auto field = tiled::assemble_shore_field(*tiling, std::move(stitched).value(), std::move(distances));
+    auto field = tiled::assemble_shore_field(*tiling, std::move(stitched).value(), [&](int t) {
+        return Result<tiled::TileDistances>(std::move(distances[static_cast<std::size_t>(t)]));
+    });
     EXPECT_TRUE(field.ok()) << field.error().message;
     return std::move(field).value();
 }

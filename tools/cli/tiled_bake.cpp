@@ -111,14 +111,10 @@ class TiledJob {
             return st;
         auto stitched = shoreline();
         if (!stitched) return stitched.error();
-        std::vector<tiled::TileDistances> tiles;
-        for (std::size_t t = 0; t < units(); ++t) {
-            auto d =
-                tiled_files::read_distances(distances().unit_folder(t) / "distances.bin", tiling_, static_cast<int>(t));
-            if (!d) return d.error();
-            tiles.push_back(std::move(d).value());
-        }
-        auto field = tiled::assemble_shore_field(tiling_, **stitched, std::move(tiles));
+        auto field = tiled::assemble_shore_field(tiling_, **stitched, [&](int t) {
+            return tiled_files::read_distances(distances().unit_folder(static_cast<std::size_t>(t)) / "distances.bin",
+                                               tiling_, t);
+        });
         if (!field) return field.error();
         SceneBakeOptions options;
         options.distance_resolution = tiling_.resolution;

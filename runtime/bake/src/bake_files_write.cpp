@@ -37,12 +37,13 @@ Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& n
     const std::string file = name + ".png";
     const auto width = static_cast<std::size_t>(nx);
     // Encoded a row at a time: a field of 8192² is written without a 128 MiB image of it.
-    if (auto st = write_png_gray16_rows(dir / file, nx, nz,
-                                        [&](int j, std::uint16_t* samples) {
-                                            const float* in = values.data() + static_cast<std::size_t>(j) * width;
-                                            for (std::size_t i = 0; i < width; ++i)
-                                                samples[i] = e.encode(static_cast<double>(in[i]));
-                                        });
+    if (auto st = write_png_gray16_rows(
+            dir / file, nx, nz,
+            [&](int j, std::uint16_t* samples) {
+                const float* in = values.data() + static_cast<std::size_t>(j) * width;
+                for (std::size_t i = 0; i < width; ++i) samples[i] = e.encode(static_cast<double>(in[i]));
+            },
+            true);
         !st)
         return st.error();
     return nlohmann::json{

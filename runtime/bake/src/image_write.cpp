@@ -20,7 +20,7 @@ namespace {
 /// libpng's row writer into an open file; false on any libpng error (it longjmps here,
 /// past nothing that needs destroying: `samples` belongs to the caller).
 bool write_gray16_rows(std::FILE* file, int width, int height, const std::function<void(int, std::uint16_t*)>& row,
-                       std::uint16_t* samples) {
+                       std::uint16_t* samples, bool smooth) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
@@ -31,6 +31,10 @@ bool write_gray16_rows(std::FILE* file, int width, int height, const std::functi
     png_init_io(png, file);
     png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 16, PNG_COLOR_TYPE_GRAY,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (smooth) {
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+        png_set_compression_level(png, 4);
+    }
     png_write_info(png, info);
     png_set_swap(png);  // PNG stores 16-bit samples big-endian; ours are the host's (little-endian)
     for (int j = 0; j < height; ++j) {
@@ -87,7 +91,7 @@ Status write_png_gray16(const std::filesystem::path& path, const Gray16Image& im
 }
 
 Status write_png_gray16_rows(const std::filesystem::path& path, int width, int height,
-                             const std::function<void(int, std::uint16_t*)>& row) {
+                             const std::function<void(int, std::uint16_t*)>& row, bool smooth) {
     if (width <= 0 || height <= 0)
         return Error{ErrorCode::invalid_argument,
                      fmt::format("{}: {}x{} is not an image", path.string(), width, height)};
@@ -95,7 +99,7 @@ Status write_png_gray16_rows(const std::filesystem::path& path, int width, int h
     return write_atomically(path, [&](const std::string& temp) {
         std::FILE* file = std::fopen(temp.c_str(), "wb");
         if (!file) return false;
-        const bool written = write_gray16_rows(file, width, height, row, samples.data());
+        const bool written = write_gray16_rows(file, width, height, row, samples.data(), smooth);
         return std::fclose(file) == 0 && written;
     });
 }

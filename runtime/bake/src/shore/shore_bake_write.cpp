@@ -176,10 +176,15 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
             {"gradient_x", {&d->gradient_x.values(), "1"}},
             {"gradient_z", {&d->gradient_z.values(), "1"}},
             {"depth", {&d->depth.values(), "m"}}};
-        for (const auto& [name, field] : fields) {
-            auto e = write_field(temp, fmt::format("distance_{}", name), *field.first, d->resolution, field.second);
-            if (!e) return e.error();
-            dist["fields"][name] = *e;
+        // The four images at once: at 4096² and more, encoding them is most of a bake's save.
+        std::vector<Result<nlohmann::json>> written(std::size(fields), nlohmann::json{});
+        detail::parallel_for_each(std::size(fields), 0, [&](std::size_t k) {
+            const auto& [name, field] = fields[k];
+            written[k] = write_field(temp, fmt::format("distance_{}", name), *field.first, d->resolution, field.second);
+        });
+        for (std::size_t k = 0; k < std::size(fields); ++k) {
+            if (!written[k]) return written[k].error();
+            dist["fields"][fields[k].first] = *written[k];
         }
         if (auto st = write_distance_vrt(temp, *d, dist["fields"]); !st) return st;
         dist["gis"] = kDistanceVrt;

@@ -164,7 +164,7 @@ Result<TileDistances> bake_tile_distances(const Terrain& terrain, double water_l
 }
 
 Result<ShoreField> assemble_shore_field(const ShoreTiling& tiling, ShoreField stitched,
-                                        std::vector<TileDistances> tiles) {
+                                        const std::function<Result<TileDistances>(int tile)>& tile) {
     const std::size_t n = static_cast<std::size_t>(tiling.resolution), b = static_cast<std::size_t>(tiling.block());
     const ShoreField grid = tiling.grid();
     if (stitched.resolution != grid.resolution || stitched.texel != grid.texel || stitched.corner != grid.corner)
@@ -172,23 +172,19 @@ Result<ShoreField> assemble_shore_field(const ShoreTiling& tiling, ShoreField st
     std::vector<float>* grids[] = {&stitched.signed_distance.write(), &stitched.gradient_x.write(),
                                    &stitched.gradient_z.write(), &stitched.depth.write()};
     for (std::vector<float>* g : grids) g->assign(n * n, 0.0f);
-    std::vector<char> seen(static_cast<std::size_t>(tiling.count()), 0);
-    for (const TileDistances& t : tiles) {
-        if (t.tile < 0 || t.tile >= tiling.count())
-            return bad_tile(t.tile, fmt::format("not one of {}", tiling.count()));
-        if (seen[static_cast<std::size_t>(t.tile)]++) return bad_tile(t.tile, "given twice");
-        const std::vector<float>* from[] = {&t.signed_distance, &t.gradient_x, &t.gradient_z, &t.depth};
+    for (int t = 0; t < tiling.count(); ++t) {
+        auto got = tile(t);
+        if (!got) return got.error();
+        if (got->tile != t) return bad_tile(t, fmt::format("got tile {} in its place", got->tile));
+        const std::vector<float>* from[] = {&got->signed_distance, &got->gradient_x, &got->gradient_z, &got->depth};
         for (int g = 0; g < 4; ++g) {
-            if (from[g]->size() != b * b)
-                return bad_tile(t.tile, fmt::format("{} values, not {}", from[g]->size(), b * b));
+            if (from[g]->size() != b * b) return bad_tile(t, fmt::format("{} values, not {}", from[g]->size(), b * b));
             for (std::size_t row = 0; row < b; ++row)
                 std::copy_n(from[g]->data() + row * b, b,
-                            grids[g]->data() + (static_cast<std::size_t>(tiling.first_j(t.tile)) + row) * n +
-                                static_cast<std::size_t>(tiling.first_i(t.tile)));
+                            grids[g]->data() + (static_cast<std::size_t>(tiling.first_j(t)) + row) * n +
+                                static_cast<std::size_t>(tiling.first_i(t)));
         }
     }
-    for (int t = 0; t < tiling.count(); ++t)
-        if (!seen[static_cast<std::size_t>(t)]) return bad_tile(t, "its distances are missing");
     return stitched;
 }
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <glm/vec2.hpp>
 #include <memory>
 #include <span>
@@ -82,9 +83,11 @@ struct TileDistances {
 Result<TileDistances> bake_tile_distances(const Terrain& terrain, double water_level, const ShoreTiling& tiling,
                                           int tile, const ShoreField& stitched, unsigned threads);
 
-/// The whole field: `stitched`'s shoreline with every tile's grids in place (one per tile).
+/// The whole field: `stitched`'s shoreline with every tile's grids in place, each tile got
+/// from `tile(t)` in turn and let go once copied (a farm's merge holds one tile's files at a
+/// time beside the field).
 Result<ShoreField> assemble_shore_field(const ShoreTiling& tiling, ShoreField stitched,
-                                        std::vector<TileDistances> tiles);
+                                        const std::function<Result<TileDistances>(int tile)>& tile);
 
 /// The terrain the ocean's shore is baked over: the scene's, carved by its rivers (the
 /// water bodies' bake, as bake_scene makes it).
