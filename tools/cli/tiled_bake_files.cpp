@@ -75,7 +75,7 @@ class Reader {
     Status array(std::vector<T>& v, std::uint64_t count) {
         if (count > (bytes_.size() - at_) / sizeof(T)) return truncated();
         v.resize(count);
-        std::memcpy(v.data(), bytes_.data() + at_, count * sizeof(T));
+        if (count > 0) std::memcpy(v.data(), bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
         return {};
     }
