@@ -26,7 +26,7 @@ constexpr const char* kVerb = "bake";
 /// DIR.job/distances), and the carved terrain once a step needs it.
 class TiledJob {
   public:
-    TiledJob(Scene scene, tiled::ShoreTiling tiling, const TiledBakeArgs& a)
+    TiledJob(Scene scene, tiled::ShoreTiling tiling, const BakeArgs& a)
         : scene_(std::move(scene)), tiling_(tiling), args_(a), root_(a.out + ".job") {}
 
     const tiled::ShoreTiling& tiling() const { return tiling_; }
@@ -154,7 +154,7 @@ class TiledJob {
 
     Scene scene_;
     tiled::ShoreTiling tiling_;
-    const TiledBakeArgs& args_;
+    const BakeArgs& args_;
     fs::path root_;
     std::optional<Terrain> terrain_;
     std::optional<ShoreField> stitched_;
@@ -179,7 +179,7 @@ Status run_units(std::size_t units, int task, const std::function<Status(std::si
 
 }  // namespace
 
-int run_tiled_bake(const TiledBakeArgs& a) {
+int run_tiled_bake(const BakeArgs& a) {
     if (a.out.empty()) return fail(kVerb, "give --out DIR");
     const bool array_step = a.step == "contours" || a.step == "distances";
     if (!a.step.empty() && !array_step && a.step != "stitch")

@@ -18,7 +18,8 @@
 
 namespace tidewater::cli {
 
-struct TiledBakeArgs {
+/// `tidewater bake`'s options; a bake is tiled when `tiles` > 0.
+struct BakeArgs {
     std::string scene;
     std::string out;
     int tiles = 0;
@@ -26,12 +27,13 @@ struct TiledBakeArgs {
     int model_resolution = 0;  ///< 0: the scene's
     double tolerance = 0.0;
     unsigned threads = 0;
+    // A tiled bake's:
     std::string step;  ///< "", "contours", "stitch" or "distances"
     int task = -1;
     bool status = false, merge = false, quiet = false;
 };
 
 /// Runs what `a` asks for; returns the process's exit code (errors printed).
-int run_tiled_bake(const TiledBakeArgs& a);
+int run_tiled_bake(const BakeArgs& a);
 
 }  // namespace tidewater::cli

@@ -19,17 +19,6 @@ namespace tidewater::cli {
 
 namespace {
 
-struct BakeArgs {
-    std::string scene;
-    std::string out;
-    int resolution = 0;  // 0: the scene's
-    int model_resolution = 0;
-    double tolerance = 0.0;
-    unsigned threads = 0;
-    bool quiet = false;
-    TiledBakeArgs tiled;  ///< --tiles and its steps
-};
-
 /// A progress line every 10% of the whole bake, naming the stage.
 class Progress {
   public:
@@ -49,18 +38,8 @@ class Progress {
 
 int run_bake(const BakeArgs& a) {
     constexpr const char* verb = "bake";
-    if (a.tiled.tiles > 0) {
-        TiledBakeArgs t = a.tiled;
-        t.scene = a.scene;
-        t.out = a.out;
-        t.resolution = a.resolution;
-        t.model_resolution = a.model_resolution;
-        t.tolerance = a.tolerance;
-        t.threads = a.threads;
-        t.quiet = a.quiet;
-        return run_tiled_bake(t);
-    }
-    if (!a.tiled.step.empty() || a.tiled.task >= 0 || a.tiled.status || a.tiled.merge)
+    if (a.tiles > 0) return run_tiled_bake(a);
+    if (!a.step.empty() || a.task >= 0 || a.status || a.merge)
         return fail(verb, "--step, --task, --status and --merge are a tiled bake's: give --tiles T");
     if (a.out.empty()) return fail(verb, "give --out DIR");
     auto scene = parse_scene_option(a.scene);
@@ -134,18 +113,18 @@ Verb add_bake_verb(CLI::App& app) {
     cmd->add_option("--tolerance", args->tolerance, "Shoreline simplification tolerance, m (0 = half a texel)");
     cmd->add_option("--threads", args->threads, "Worker threads (0 = all)");
     cmd->add_flag("--quiet", args->quiet, "No progress lines");
-    cmd->add_option("--tiles", args->tiled.tiles,
+    cmd->add_option("--tiles", args->tiles,
                     "Bake as a farmed job over T x T tiles of the distance field (docs/scale-out.md); its steps' "
                     "files go to OUT.job/")
         ->check(CLI::Range(1, 256));
-    cmd->add_option("--step", args->tiled.step,
+    cmd->add_option("--step", args->step,
                     "With --tiles: run one step, contours (an array), stitch or distances (an array)");
-    cmd->add_option("--task", args->tiled.task, "With --step contours or distances: the tile to run, 0 to T*T-1")
+    cmd->add_option("--task", args->task, "With --step contours or distances: the tile to run, 0 to T*T-1")
         ->check(CLI::Range(0, 65535));
     cmd->add_flag(
-        "--status", args->tiled.status,
+        "--status", args->status,
         "With --step contours or distances: list the tiles missing or failed (todo: in sbatch --array's form)");
-    cmd->add_flag("--merge", args->tiled.merge,
+    cmd->add_flag("--merge", args->merge,
                   "With --tiles: once every tile's distances are done, march the shore model and write OUT");
     return {cmd, [args] { return run_bake(*args); }};
 }
