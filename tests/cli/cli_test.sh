@@ -38,6 +38,13 @@ same_heights() {
 
 printf 'x,z\n0,0\n12.5,-3\n1200,400\n' > points.csv
 
+# bad_manifest NAME DESCRIPTION NEEDLE JSON: a batch fit of manifest NAME.json holding JSON
+# is refused with NEEDLE in its message, and leaves no job folder.
+bad_manifest() {
+  echo "$4" > "$1.json"
+  expect_error "$2" "$3" "$TW" fit --manifest "$1.json" --out "job_$1" --task 0
+  check "no job folder after a refused manifest ($1)" test ! -e "job_$1/units/00000"
+}
 # seam_points: points.csv along the seams of a 2x2 tiling of the default island (x = 0 and
 # z = 0), either side of them, for comparing two bakes' queries there.
 seam_points() {
@@ -689,18 +696,12 @@ JSON
     # Bad manifests and options: the file and field named, a non-zero exit, nothing written.
     printf '{"version": 1, "units": [' > broken.json
     expect_error "malformed manifest" "broken.json" "$TW" fit --manifest broken.json --out bad1 --task 0
-    echo '{"version": 1, "units": [{"data": "records/station0.csv", "windws": ["0:10"]}]}' > typo.json
-    expect_error "unknown key, named with its path" "/units/0" "$TW" fit --manifest typo.json --out bad2 --task 0
-    echo '{"version": 1, "units": [{"station": "S"}]}' > nodata.json
-    expect_error "a unit without its data" "data" "$TW" fit --manifest nodata.json --out bad3 --task 0
-    echo '{"version": 1, "units": []}' > empty.json
-    expect_error "no units" "non-empty" "$TW" fit --manifest empty.json --out bad4 --task 0
-    echo '{"version": 1, "units": [{"data": "records/station0.csv", "method": "phases"}]}' > method.json
-    expect_error "an unknown method, by its path" "method.json: /units/0/method" "$TW" fit --manifest method.json --out bad9 --task 0
-    echo '{"version": 1, "units": [{"data": "records/station0.csv", "kind": "tide"}]}' > kind.json
-    expect_error "an unknown kind, by its path" "kind.json: /units/0/kind" "$TW" fit --manifest kind.json --out bad10 --task 0
-    echo '{"version": 1, "units": [{"data": "records/station0.csv", "station": "a/b"}]}' > slash.json
-    expect_error "a station that is a path" "station" "$TW" fit --manifest slash.json --out bad5 --task 0
+    bad_manifest typo "unknown key, named with its path" "/units/0" '{"version": 1, "units": [{"data": "records/station0.csv", "windws": ["0:10"]}]}'
+    bad_manifest nodata "a unit without its data" "data" '{"version": 1, "units": [{"station": "S"}]}'
+    bad_manifest empty "no units" "non-empty" '{"version": 1, "units": []}'
+    bad_manifest method "an unknown method, by its path" "method.json: /units/0/method" '{"version": 1, "units": [{"data": "records/station0.csv", "method": "phases"}]}'
+    bad_manifest kind "an unknown kind, by its path" "kind.json: /units/0/kind" '{"version": 1, "units": [{"data": "records/station0.csv", "kind": "tide"}]}'
+    bad_manifest slash "a station that is a path" "station" '{"version": 1, "units": [{"data": "records/station0.csv", "station": "a/b"}]}'
     expect_error "a task past the last unit" "--task 6: the manifest has units 0 to 5" "$TW" fit --manifest manifest.json --out bad6 --task 6
     expect_error "a job without its folder" "--out" "$TW" fit --manifest manifest.json --task 0
     expect_error "--data beside a manifest" "leave out --data" "$TW" fit --manifest manifest.json --out bad7 --data records/station0.csv
