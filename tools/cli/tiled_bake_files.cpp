@@ -159,6 +159,7 @@ Status write_shoreline(const fs::path& path, const ShoreField& stitched) {
     w.put(stitched.simplify_tolerance);
     w.put(static_cast<std::uint64_t>(stitched.polygons));
     w.put(static_cast<std::uint64_t>(stitched.holes));
+    w.put(static_cast<std::uint64_t>(stitched.segment_count));
     w.put(static_cast<std::uint64_t>(stitched.shorelines.size()));
     for (const ShoreLine& line : stitched.shorelines) {
         w.put(static_cast<std::uint8_t>(line.closed ? 1 : 0));
@@ -177,12 +178,13 @@ Result<ShoreField> read_shoreline(const fs::path& path, const tiled::ShoreTiling
     if (resolution != tiling.resolution)
         return r->error(fmt::format("stitched over {} texels, not {}", resolution, tiling.resolution));
     ShoreField field = tiling.grid();
-    std::uint64_t polygons = 0, holes = 0, lines = 0, points = 0;
+    std::uint64_t polygons = 0, holes = 0, segments = 0, lines = 0, points = 0;
     if (auto st = r->get(field.simplify_tolerance); !st) return st.error();
     if (!(field.simplify_tolerance > 0.0) || !std::isfinite(field.simplify_tolerance))
         return r->error("its simplification tolerance is not a finite length > 0");
     if (auto st = r->get(polygons); !st) return st.error();
     if (auto st = r->get(holes); !st) return st.error();
+    if (auto st = r->get(segments); !st) return st.error();
     if (auto st = r->get(lines); !st) return st.error();
     field.polygons = polygons;
     field.holes = holes;
@@ -208,8 +210,9 @@ Result<ShoreField> read_shoreline(const fs::path& path, const tiled::ShoreTiling
         field.shorelines.push_back(std::move(line));
     }
     if (auto st = r->end(); !st) return st.error();
-    for (const ShoreLine& line : field.shorelines)
-        field.segment_count += line.closed ? line.points.size() : line.points.size() - 1;
+    // The distance tree's count (a line's degenerate segments are not in it): at most the lines' own.
+    if (segments > points) return r->error(fmt::format("{} segments in {} points", segments, points));
+    field.segment_count = segments;
     return field;
 }
 
