@@ -97,7 +97,7 @@ run_threads_under_tsan() {
 run_fuzzers() {
   local seconds="$1" failed=()
   local bin="$SANITIZE_BUILD/bin" work="$SANITIZE_BUILD/fuzz"
-  for target in scene_json images rasters points_csv records obj_mesh bake_folder editor_script; do
+  for target in scene_json images rasters points_csv records obj_mesh bake_folder editor_script tiled_bake_files; do
     local corpus="$work/corpus/$target" artifacts="$work/artifacts/$target/"
     mkdir -p "$corpus" "$artifacts"
     local seeds=() dict=()

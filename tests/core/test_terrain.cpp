@@ -60,6 +60,36 @@ TEST(Terrain, PngRowsRoundTripExactly) {
     EXPECT_FALSE(fs::exists(dir / "empty.png"));
 }
 
+// A baked grid's rows (written with the Up filter at zlib level 4) read back sample for
+// sample; a PNG whose first IDAT chunk is empty is refused by name before stb reads it.
+TEST(Terrain, SmoothPngRowsRoundTripAndEmptyImageDataIsRefused) {
+    const fs::path dir = temp_dir("tidewater_png_smooth_test");
+    auto sample = [](int i, int j) { return static_cast<std::uint16_t>(30000 + 37 * i - 11 * j + (i * j) % 7); };
+    ASSERT_TRUE(detail::write_png_gray16_rows(
+                    dir / "smooth.png", 41, 29,
+                    [&](int j, std::uint16_t* row) {
+                        for (int i = 0; i < 41; ++i) row[i] = sample(i, j);
+                    },
+                    true)
+                    .ok());
+    auto back = detail::read_png_gray16(dir / "smooth.png");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    for (int j = 0; j < 29; ++j)
+        for (int i = 0; i < 41; ++i) ASSERT_EQ(back->pixels[static_cast<std::size_t>(j) * 41 + i], sample(i, j));
+    // An empty IDAT chunk (its CRC included) put before the image's first.
+    std::ifstream in(dir / "smooth.png", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t idat = bytes.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    const char empty_idat[12] = {0, 0, 0, 0, 'I', 'D', 'A', 'T', '\x35', '\xaf', '\x06', '\x1e'};
+    bytes.insert(idat - 4, empty_idat, sizeof empty_idat);
+    std::ofstream(dir / "empty_idat.png", std::ios::binary) << bytes;
+    auto refused = detail::read_png_gray16(dir / "empty_idat.png");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("empty_idat.png: corrupt PNG (an empty IDAT chunk"), std::string::npos)
+        << refused.error().message;
+}
+
 TEST(Terrain, HeightmapRoundTripsThroughPng) {
     const fs::path dir = temp_dir("tidewater_heightmap_test");
     ASSERT_TRUE(detail::write_png_gray16(dir / "cone.png", cone(65)).ok());

@@ -61,7 +61,13 @@ Status png_chunks_fit(std::FILE* f, const std::string& name) {
             return error(fmt::format("corrupt PNG (a chunk at byte {} declares {} bytes, past the end of the file)", at,
                                      length));
         if (std::equal(chunk + 4, chunk + 8, "IEND")) break;
-        if (std::equal(chunk + 4, chunk + 8, "IDAT")) compressed += length;
+        if (std::equal(chunk + 4, chunk + 8, "IDAT")) {
+            // stb copies the first IDAT's bytes into a buffer it has not made yet when the
+            // chunk is empty; no encoder writes one.
+            if (length == 0 && compressed == 0)
+                return error(fmt::format("corrupt PNG (an empty IDAT chunk at byte {}, before any image data)", at));
+            compressed += length;
+        }
         unsigned char ihdr[13];
         if (at == 8 && std::equal(chunk + 4, chunk + 8, "IHDR") && length == 13) {
             if (std::fread(ihdr, 1, 13, f) != 13) return error("cannot read the file");
