@@ -90,7 +90,7 @@ TEST(TiledShore, TheShoreModelOnTheAssembledFieldIsTheWholeBakes) {
     const Scene scene = small_island();
     auto whole = bake_scene(scene);
     ASSERT_TRUE(whole.ok()) << whole.error().message;
-    auto terrain = tiled::shore_terrain(scene, 2);
+    auto terrain = tiled::shore_terrain(scene);
     ASSERT_TRUE(terrain.ok()) << terrain.error().message;
     auto field = std::make_shared<const ShoreField>(tiled_field(*terrain, 4));
     auto tiled_scene = tiled::bake_scene_on_shoreline(scene, {}, field);

@@ -29,7 +29,6 @@ class TiledJob {
     TiledJob(Scene scene, tiled::ShoreTiling tiling, const BakeArgs& a)
         : scene_(std::move(scene)), tiling_(tiling), args_(a), root_(a.out + ".job") {}
 
-    const tiled::ShoreTiling& tiling() const { return tiling_; }
     std::size_t units() const { return static_cast<std::size_t>(tiling_.count()); }
     farm::JobFolder root() const { return farm::JobFolder(root_); }
     farm::JobFolder contours() const { return farm::JobFolder(root_ / "contours"); }
@@ -132,7 +131,7 @@ class TiledJob {
   private:
     Result<const Terrain*> carved() {
         if (!terrain_) {
-            auto t = tiled::shore_terrain(scene_, args_.threads);
+            auto t = tiled::shore_terrain(scene_);
             if (!t) return t.error();
             terrain_ = std::move(t).value();
         }

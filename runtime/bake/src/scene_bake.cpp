@@ -297,7 +297,7 @@ Result<std::shared_ptr<const Scene>> bake_scene(const Scene& scene, const SceneB
 
 namespace tiled {
 
-Result<Terrain> shore_terrain(const Scene& scene, unsigned) {
+Result<Terrain> shore_terrain(const Scene& scene) {
     // As bake_scene: a river carves the terrain the shore is baked over.
     if (scene.lakes.empty() && scene.rivers.empty()) return scene.terrain.with_cuts({});
     auto bodies = detail::bake_water_bodies(scene, bodies_options_for(scene, {}));

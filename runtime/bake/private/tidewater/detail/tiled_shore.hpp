@@ -91,7 +91,7 @@ Result<ShoreField> assemble_shore_field(const ShoreTiling& tiling, ShoreField st
 
 /// The terrain the ocean's shore is baked over: the scene's, carved by its rivers (the
 /// water bodies' bake, as bake_scene makes it).
-Result<Terrain> shore_terrain(const Scene& scene, unsigned threads);
+Result<Terrain> shore_terrain(const Scene& scene);
 
 /// bake_scene with the ocean's distance field given (assembled from tiles) instead of baked:
 /// the lakes, rivers and the shore model are baked as bake_scene bakes them. Fails unless
