@@ -496,7 +496,7 @@ Status bake_channel(const ChannelInputs& in, RiverBake& river) {
     // The query weighs the current by the texels' depths: the depth the discharge is matched
     // with is the one a saved bake reads back, so a saved river carries the same current.
     round_to_saved_encoding(river.depth);
-    match_queried_discharge(river, problem.cell);
+    match_queried_discharge(river, problem.cell, in.inflows);
     pack_query_texels(river, river_weight, still_weight);
     // Mean speed: discharge over the mean section (wet area / length).
     const double mean_area = area_sum * g.texel * g.texel / std::max(mouth, g.texel);

@@ -1,8 +1,15 @@
 #include "bodies/river_discharge.hpp"
 
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
 #include <vector>
+
+#include "tidewater/detail/grid_taps.hpp"
 
 namespace tidewater::detail {
 
@@ -12,22 +19,39 @@ namespace {
 inline constexpr double kSamplesPerTexel = 8.0;
 /// How far past the half width a section reaches (the wet edge wanders a texel or so).
 inline constexpr double kReachTexels = 3.0;
-/// The most a section's scale may change the current, over all passes: more says the
-/// section is not a clean crossing (a confluence, an island's tip, a sheet of water a
-/// millimetre deep on a steep reach), and it is left nearer as it was.
-inline constexpr double kMostScale = 1.1;
-/// A section across an island crosses four waterlines, not two, each next to ground as
-/// steep as the island's sides: it may be scaled further.
-inline constexpr double kMostScaleAcrossIsland = 1.5;
 /// Sections a texel along the channel: a texel's current weighs in the sections within
-/// a texel of it, so the scales are taken finer than that.
+/// a texel of it, so the sections are taken finer than that.
 inline constexpr double kSectionsPerTexel = 4.0;
-/// Passes of scaling: each section's scale moves its neighbours' too; three settle them.
-inline constexpr int kPasses = 3;
+/// A section whose query misses its discharge by more than this is not a clean crossing
+/// (the sea or a lake taking the channel over at the mouth, 25 % and more): it is not
+/// matched. A tight bend on a steep reach misses 15 %.
+inline constexpr double kMostMismatch = 0.2;
+/// A section across an island crosses four waterlines, not two, each next to ground as
+/// steep as the island's sides: it is matched from further off.
+inline constexpr double kMostMismatchAcrossIsland = 0.5;
+/// The most a texel's current is scaled, either way.
+inline constexpr double kMostScale = 1.5;
+/// The ridge that keeps the scales near 1 where the sections leave them free, against
+/// the sections' own weight per texel (their mean over the texels): small enough that
+/// every section is matched within a few tenths of a per cent, large enough that a
+/// texel no section leans on much stays as it was.
+inline constexpr double kRidge = 1e-2;
 
-}  // namespace
+/// A section as the query reads it, with each texel's current scaled by its own factor:
+/// what it carries is the sum of (coefficient * factor) over the texels it reads.
+struct SectionTerms {
+    double field = 0.0;  ///< m^3/s by the h u field
+    bool crosses_island = false;
+    std::vector<std::pair<std::size_t, double>> terms;  ///< (texel, m^3/s at factor 1), texels in order
 
-SectionDischarge section_discharge(const RiverBake& river, const std::vector<FlowCell>& cells, double along) {
+    double queried() const {
+        double q = 0.0;
+        for (const auto& term : terms) q += term.second;
+        return q;
+    }
+};
+
+SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& cells, double along) {
     const FieldGrid& g = river.grid;
     const std::vector<double>& a = river.along;
     const auto above = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
@@ -36,12 +60,17 @@ SectionDischarge section_discharge(const RiverBake& river, const std::vector<Flo
     const glm::dvec2 p0 = river.centreline[above - 1] + w * (river.centreline[above] - river.centreline[above - 1]);
     const glm::dvec2 d = river.centreline[above] - river.centreline[above - 1];
     const double length = std::hypot(d.x, d.y);
-    SectionDischarge out;
+    SectionTerms out;
     if (!(length > 0.0)) return out;
     const glm::dvec2 t = d / length, n{-t.y, t.x};
     const double width = river.width[above - 1] + w * (river.width[above] - river.width[above - 1]);
     const double reach = 0.5 * width + kReachTexels * g.texel, step = g.texel / kSamplesPerTexel;
     const auto count = static_cast<int>(std::ceil(2.0 * reach / step));
+    const auto column = [&](std::size_t k) { return std::max(static_cast<double>(river.depth[k]), 0.0); };
+    const auto current = [&](std::size_t k) {
+        return static_cast<double>(river.flow_x[k]) * t.x + static_cast<double>(river.flow_z[k]) * t.y;
+    };
+    std::unordered_map<std::size_t, double> by_texel;
     for (int m = 0; m <= count; ++m) {
         const glm::dvec2 p = p0 + (-reach + m * step) * n;
         if (!g.contains(p)) continue;
@@ -50,53 +79,92 @@ SectionDischarge section_discharge(const RiverBake& river, const std::vector<Flo
         g.texel_of(p, i, j);
         if (cells[g.index(i, j)] == FlowCell::island) out.crosses_island = true;
         if (!river_water(river.texel[g.index(i, j)])) continue;
-        const RiverSample at = sample_river(river, p);  // what the query reads
-        if (at.depth > 0.0) out.queried += at.depth * (at.flow_x * t.x + at.flow_z * t.y) * step;
+        // What the query reads (sample_river): the bilinear depth times the texels'
+        // currents weighted by their water columns.
+        const GridTaps taps = grid_taps(g.corner, g.texel, g.nx, g.nz, p);
+        const double depth = taps(river.depth);
+        if (!(depth > 0.0)) continue;
+        const std::size_t k[4] = {taps.k00, taps.k10, taps.k01, taps.k11};
+        const double weight[4] = {taps.w00 * column(taps.k00), taps.w10 * column(taps.k10), taps.w01 * column(taps.k01),
+                                  taps.w11 * column(taps.k11)};
+        const double water = weight[0] + weight[1] + weight[2] + weight[3];
+        if (!(water > 0.0)) continue;
+        for (int q = 0; q < 4; ++q)
+            if (weight[q] > 0.0 && current(k[q]) != 0.0)
+                by_texel[k[q]] += depth * weight[q] / water * current(k[q]) * step;
     }
+    out.terms.assign(by_texel.begin(), by_texel.end());
+    std::sort(out.terms.begin(), out.terms.end());
     return out;
 }
 
-namespace {
-
-/// Scales the current by each section's field over queried discharge, interpolated
-/// along the channel between sections, `first` + `spacing` m apart; `total` holds each
-/// section's scale so far, which stays within kMostScale of 1 over every pass
-/// (kMostScaleAcrossIsland where the section crosses an island).
-void scale_once(RiverBake& river, const std::vector<FlowCell>& cells, double first, double spacing,
-                std::vector<double>& total) {
-    const std::size_t stations = total.size();
-    const double last = river.along.back();
-    std::vector<double> scale(stations, 1.0);
-    for (std::size_t m = 0; m < stations; ++m) {
-        const SectionDischarge q =
-            section_discharge(river, cells, std::min(first + static_cast<double>(m) * spacing, last));
-        if (!(q.field > 0.0 && q.queried > 0.0)) continue;
-        const double most = q.crosses_island ? kMostScaleAcrossIsland : kMostScale;
-        const double wanted = std::clamp(total[m] * q.field / q.queried, 1.0 / most, most);
-        scale[m] = wanted / total[m];
-        total[m] = wanted;
+/// The river's discharge at `along` m from the source as the scene gives it: its own,
+/// and each tributary's once it has joined; NaN within a tributary's mouth, where its
+/// water is still entering.
+double given_discharge(const RiverBake& river, std::span<const Inflow> inflows, double along) {
+    double q = river.own_discharge;
+    for (const Inflow& f : inflows) {
+        const double entered = f.entered(along);
+        if (entered > 0.0 && entered < f.discharge) return std::nan("");
+        q += entered;
     }
-    for (std::size_t t = 0; t < river.flow_x.size(); ++t) {
-        if (river.flow_x[t] == 0.0f && river.flow_z[t] == 0.0f) continue;
-        const double x = std::clamp((static_cast<double>(river.channel_s[t]) - first) / spacing, 0.0,
-                                    static_cast<double>(stations - 1));
-        const auto m = std::min(static_cast<std::size_t>(x), stations - 1);
-        const double w = x - static_cast<double>(m);
-        const double f = m + 1 < stations ? (1.0 - w) * scale[m] + w * scale[m + 1] : scale[m];
-        river.flow_x[t] = static_cast<float>(static_cast<double>(river.flow_x[t]) * f);
-        river.flow_z[t] = static_cast<float>(static_cast<double>(river.flow_z[t]) * f);
-    }
+    return q;
 }
 
 }  // namespace
 
-void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cells) {
+void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cells, std::span<const Inflow> inflows) {
     const std::size_t samples = river.centreline.size();
     if (samples < 2 || river.along.size() != samples) return;
     const double first = river.along.front(), last = river.along.back();
     const double spacing = river.grid.texel / kSectionsPerTexel;
-    std::vector<double> total(static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1, 1.0);
-    for (int pass = 0; pass < kPasses; ++pass) scale_once(river, cells, first, spacing, total);
+    const auto stations = static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1;
+    // One row per section matched, over the texels it reads (numbered as met), divided by
+    // its discharge: row . (1 + g) = 1 is matched; its right-hand side is 1 - queried / Q.
+    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<double> mismatch;
+    std::vector<std::size_t> texel_of;
+    std::unordered_map<std::size_t, int> unknown;
+    for (std::size_t m = 0; m < stations; ++m) {
+        const double along = std::min(first + static_cast<double>(m) * spacing, last);
+        const SectionTerms s = section_terms(river, cells, along);
+        const double given = given_discharge(river, inflows, along);
+        const double q = std::isnan(given) ? s.field : given, queried = s.queried();
+        if (!(q > 0.0 && queried > 0.0)) continue;
+        const double off = 1.0 - queried / q;
+        if (std::abs(off) > (s.crosses_island ? kMostMismatchAcrossIsland : kMostMismatch)) continue;
+        const int row = static_cast<int>(mismatch.size());
+        for (const auto& [texel, coefficient] : s.terms) {
+            const auto [it, added] = unknown.try_emplace(texel, static_cast<int>(texel_of.size()));
+            if (added) texel_of.push_back(texel);
+            entries.emplace_back(row, it->second, coefficient / q);
+        }
+        mismatch.push_back(off);
+    }
+    const auto rows = static_cast<int>(mismatch.size()), texels = static_cast<int>(texel_of.size());
+    if (rows == 0 || texels == 0) return;
+    // The factors' change g that matches the rows in the least squares, and among the ways
+    // to do so the smallest: the rows stacked over sqrt(ridge) I.
+    double weight = 0.0;
+    for (const auto& e : entries) weight += e.value() * e.value();
+    const double ridge = std::sqrt(kRidge * weight / texels);
+    for (int u = 0; u < texels; ++u) entries.emplace_back(rows + u, u, ridge);
+    Eigen::SparseMatrix<double> system(rows + texels, texels);
+    system.setFromTriplets(entries.begin(), entries.end());
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows + texels);
+    for (int r = 0; r < rows; ++r) rhs[r] = mismatch[static_cast<std::size_t>(r)];
+    Eigen::LeastSquaresConjugateGradient<Eigen::SparseMatrix<double>> solver;
+    solver.setTolerance(1e-8);
+    solver.setMaxIterations(1000);
+    solver.compute(system);
+    const Eigen::VectorXd change = solver.solve(rhs);
+    for (int u = 0; u < texels; ++u) {
+        const double f = std::clamp(1.0 + change[u], 1.0 / kMostScale, kMostScale);
+        if (!std::isfinite(f)) continue;
+        const std::size_t t = texel_of[static_cast<std::size_t>(u)];
+        river.flow_x[t] = static_cast<float>(static_cast<double>(river.flow_x[t]) * f);
+        river.flow_z[t] = static_cast<float>(static_cast<double>(river.flow_z[t]) * f);
+    }
 }
 
 }  // namespace tidewater::detail
