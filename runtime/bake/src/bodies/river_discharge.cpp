@@ -9,8 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "tidewater/detail/grid_taps.hpp"
-
 namespace tidewater::detail {
 
 namespace {
@@ -67,7 +65,6 @@ SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& 
     const double width = river.width[above - 1] + w * (river.width[above] - river.width[above - 1]);
     const double reach = 0.5 * width + kReachTexels * g.texel, step = g.texel / kSamplesPerTexel;
     const auto count = static_cast<int>(std::ceil(2.0 * reach / step));
-    const auto column = [&](std::size_t k) { return std::max(static_cast<double>(river.depth[k]), 0.0); };
     const auto current = [&](std::size_t k) {
         return static_cast<double>(river.flow_x[k]) * t.x + static_cast<double>(river.flow_z[k]) * t.y;
     };
@@ -82,17 +79,12 @@ SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& 
         if (!river_water(river.texel[g.index(i, j)])) continue;
         // What the query reads (sample_river): the bilinear depth times the texels'
         // currents weighted by their water columns.
-        const GridTaps taps = grid_taps(g.corner, g.texel, g.nx, g.nz, p);
-        const double depth = taps(river.depth);
+        const double depth = g.sample(river.depth, p);
         if (!(depth > 0.0)) continue;
-        const std::size_t k[4] = {taps.k00, taps.k10, taps.k01, taps.k11};
-        const double weight[4] = {taps.w00 * column(taps.k00), taps.w10 * column(taps.k10), taps.w01 * column(taps.k01),
-                                  taps.w11 * column(taps.k11)};
-        const double water = weight[0] + weight[1] + weight[2] + weight[3];
-        if (!(water > 0.0)) continue;
-        for (int q = 0; q < 4; ++q)
-            if (weight[q] > 0.0 && current(k[q]) != 0.0)
-                by_texel[k[q]] += depth * weight[q] / water * current(k[q]) * step;
+        const RiverCurrentTaps taps = river_current_taps(river, p);
+        for (std::size_t q = 0; q < 4; ++q)
+            if (taps.weight[q] > 0.0 && current(taps.texel[q]) != 0.0)
+                by_texel[taps.texel[q]] += depth * taps.weight[q] * current(taps.texel[q]) * step;
     }
     out.terms.assign(by_texel.begin(), by_texel.end());
     std::sort(out.terms.begin(), out.terms.end());

@@ -22,6 +22,19 @@ double FieldGrid::sample(const std::vector<float>& field, glm::dvec2 p) const {
 
 namespace tidewater::detail {
 
+RiverCurrentTaps river_current_taps(const RiverBake& river, glm::dvec2 p) {
+    const FieldGrid& g = river.grid;
+    const GridTaps taps = grid_taps(g.corner, g.texel, g.nx, g.nz, p);
+    const auto column = [&](std::size_t k) { return std::max(static_cast<double>(river.depth[k]), 0.0); };
+    RiverCurrentTaps out;
+    out.texel = {taps.k00, taps.k10, taps.k01, taps.k11};
+    out.weight = {taps.w00 * column(taps.k00), taps.w10 * column(taps.k10), taps.w01 * column(taps.k01),
+                  taps.w11 * column(taps.k11)};
+    const double water = out.weight[0] + out.weight[1] + out.weight[2] + out.weight[3];
+    for (double& w : out.weight) w = water > 0.0 ? w / water : 0.0;
+    return out;
+}
+
 RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
     const FieldGrid& g = river.grid;
     const GridTaps taps = grid_taps(g.corner, g.texel, g.nx, g.nz, p);
@@ -32,17 +45,10 @@ RiverSample sample_river(const RiverBake& river, glm::dvec2 p) {
     // The current: the texels' currents weighted by their water columns too, so that the
     // depth times the current is the bilinear field of h u wherever the four are wet, and
     // the current stays within the texels' own next to the banks (river_water.glsl's twin).
-    const auto column = [&](std::size_t k) { return std::max(static_cast<double>(river.depth[k]), 0.0); };
-    const double w00 = taps.w00 * column(taps.k00), w10 = taps.w10 * column(taps.k10),
-                 w01 = taps.w01 * column(taps.k01), w11 = taps.w11 * column(taps.k11);
-    const double water = w00 + w10 + w01 + w11;
-    if (water > 0.0) {
-        auto weighted = [&](const std::vector<float>& f) {
-            const auto at = [&](std::size_t k) { return static_cast<double>(f[k]); };
-            return (w00 * at(taps.k00) + w10 * at(taps.k10) + w01 * at(taps.k01) + w11 * at(taps.k11)) / water;
-        };
-        out.flow_x = weighted(river.flow_x);
-        out.flow_z = weighted(river.flow_z);
+    const RiverCurrentTaps current = river_current_taps(river, p);
+    for (std::size_t q = 0; q < 4; ++q) {
+        out.flow_x += current.weight[q] * static_cast<double>(river.flow_x[current.texel[q]]);
+        out.flow_z += current.weight[q] * static_cast<double>(river.flow_z[current.texel[q]]);
     }
     out.surface = taps(river.surface_height);
     return out;

@@ -139,6 +139,16 @@ struct RiverSample {
 };
 RiverSample sample_river(const RiverBake& river, glm::dvec2 p);
 
+/// The texels whose currents sample_river reads at a world point and their weights:
+/// bilinear times each texel's water column, over their sum (so that the depth times the
+/// current is the bilinear field of h u wherever the four are wet); all weights 0 where
+/// none of the four holds water. river_water.glsl is the GPU twin.
+struct RiverCurrentTaps {
+    std::array<std::size_t, 4> texel{};
+    std::array<double, 4> weight{};
+};
+RiverCurrentTaps river_current_taps(const RiverBake& river, glm::dvec2 p);
+
 /// A river's wave at one instant in its channel frame, as the shaders take it: its phase
 /// at channel coordinates (s, n) is k_s s + k_n n + offset, the offset riding the river's
 /// mean speed (the Doppler shift of prepare_river_waves), reduced to [-pi, pi).
