@@ -1,7 +1,9 @@
 // The shore bake against exact geometry: a circular island and a ring-shaped
 // lagoon from heightmaps, within one texel plus the simplification tolerance;
 // degenerate terrains bake with documented results; noisy shores are refused.
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "../baked_scene.hpp"
 #include "test_helpers.hpp"
@@ -49,7 +51,7 @@ Worst compare(const ShoreField& f, const Exact& exact, const NearAxis& near_medi
             const glm::dvec2 p = f.texel_center(i, j);
             const auto [d, g] = exact(p);
             w.error = std::max(w.error, std::abs(f.signed_distance[f.index(i, j)] - d));
-            const glm::dvec2 grad(f.gradient_x[f.index(i, j)], f.gradient_z[f.index(i, j)]);
+            const glm::dvec2 grad(f.gradient[f.index(i, j)]);
             if (std::abs(d) > 1e-3) w.unit_error = std::max(w.unit_error, std::abs(glm::length(grad) - 1.0));
             if (std::abs(d) > 3 * f.texel && !near_medial_axis(p))
                 w.gradient_error = std::max(w.gradient_error, glm::length(grad - g));
@@ -58,6 +60,30 @@ Worst compare(const ShoreField& f, const Exact& exact, const NearAxis& near_medi
 }
 
 // Island: a cone crossing the water level at r0 = 200 m. Exact: d = r - r0 (water outside).
+// The distance gradient is held as its angle in 16 bits: every code reads back as itself,
+// a unit vector within half a step (4.8e-5 rad) of what was encoded, and a zero vector
+// (no shoreline) as zero.
+TEST(ShoreBake, GradientDirectionsKeepTheirAngleToHalfAStep) {
+    const double half_step = std::numbers::pi / 65535.0;
+    for (std::uint32_t c = 0; c < SharedDirections::kNone; ++c) {
+        const auto code = static_cast<std::uint16_t>(c);
+        const glm::vec2 v = SharedDirections::decode(code);
+        ASSERT_NEAR(glm::length(glm::dvec2(v)), 1.0, 1e-6) << c;
+        ASSERT_EQ(SharedDirections::encode(v), code) << c;
+    }
+    double worst = 0.0;
+    for (int k = 0; k < 100000; ++k) {
+        const double angle = -3.2 + 6.4 * k / 99999.0;
+        const glm::dvec2 v{std::cos(angle), std::sin(angle)};
+        const glm::dvec2 back(SharedDirections::decode(SharedDirections::encode(v)));
+        worst = std::max(worst, std::abs(std::atan2(v.x * back.y - v.y * back.x, glm::dot(v, back))));
+    }
+    EXPECT_LE(worst, half_step * (1.0 + 1e-3));
+    EXPECT_EQ(SharedDirections::encode(glm::dvec2(0.0)), SharedDirections::kNone);
+    EXPECT_EQ(SharedDirections::decode(SharedDirections::kNone), glm::vec2(0.0f));
+    EXPECT_EQ(SharedDirections::encode(glm::dvec2(std::nan(""), 1.0)), SharedDirections::kNone);
+}
+
 TEST(ShoreBake, CircularIslandMatchesExactDistance) {
     const double r0 = 200.0;
     const Terrain t = radial_heightmap(513, 1000.0, -40.0, 40.0, [&](double r) { return 0.2 * (r0 - r); });
@@ -176,7 +202,7 @@ TEST(ShoreBake, EveryTexelIsExactAndThreadCountDoesNotMatter) {
                 if (one->signed_distance[k] != 0.0f) {
                     ASSERT_EQ(one->signed_distance[k] > 0.0f, one->depth[k] > 0.0f) << i << "," << j;
                 }
-                const double g = std::hypot(double(one->gradient_x[k]), double(one->gradient_z[k]));
+                const double g = glm::length(glm::dvec2(one->gradient[k]));
                 ASSERT_NEAR(g, 1.0, 1e-5) << i << "," << j;
             }
         EXPECT_LT(worst, 1.0) << "distance error in units of (0.1 mm + 1e-6 d) at resolution " << resolution;
@@ -184,7 +210,7 @@ TEST(ShoreBake, EveryTexelIsExactAndThreadCountDoesNotMatter) {
         auto three = bake_shore(terrain, 0.0, o);
         ASSERT_TRUE(three.ok());
         EXPECT_EQ(one->signed_distance, three->signed_distance);
-        EXPECT_EQ(one->gradient_x, three->gradient_x);
+        EXPECT_EQ(one->gradient, three->gradient);
         EXPECT_EQ(one->segment_count, three->segment_count);
     }
 }

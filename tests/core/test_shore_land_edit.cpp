@@ -26,8 +26,7 @@ void expect_same_shore(const SceneBake& a, const SceneBake& b) {
     EXPECT_TRUE(test::same_tiles(*a.ocean_shore, *b.ocean_shore)) << "the model's layers and slots, bit for bit";
     EXPECT_TRUE(a.shoreline->depth == b.shoreline->depth);
     EXPECT_TRUE(a.shoreline->signed_distance == b.shoreline->signed_distance);
-    EXPECT_TRUE(a.shoreline->gradient_x == b.shoreline->gradient_x);
-    EXPECT_TRUE(a.shoreline->gradient_z == b.shoreline->gradient_z);
+    EXPECT_TRUE(a.shoreline->gradient == b.shoreline->gradient);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {

@@ -80,8 +80,7 @@ TEST(TiledShore, EveryTilingGivesTheWholeBakesFieldValueForValue) {
         EXPECT_EQ(field.holes, whole->holes);
         EXPECT_EQ(field.simplify_tolerance, whole->simplify_tolerance);
         EXPECT_EQ(field.signed_distance.values(), whole->signed_distance.values());
-        EXPECT_EQ(field.gradient_x.values(), whole->gradient_x.values());
-        EXPECT_EQ(field.gradient_z.values(), whole->gradient_z.values());
+        EXPECT_EQ(field.gradient.codes(), whole->gradient.codes());
         EXPECT_EQ(field.depth.values(), whole->depth.values());
     }
 }
@@ -168,8 +167,14 @@ TEST(DistanceVrt, GdalReadsTheDistanceFieldInMetresWhereItLies) {
     EXPECT_DOUBLE_EQ(gt[1], field.texel);
     EXPECT_DOUBLE_EQ(gt[3], -field.corner.y);
     EXPECT_DOUBLE_EQ(gt[5], -field.texel);
-    const std::vector<float>* grids[] = {&field.signed_distance.values(), &field.gradient_x.values(),
-                                         &field.gradient_z.values(), &field.depth.values()};
+    // The gradient's two components, as its angles hold them.
+    std::vector<float> gradient_x, gradient_z;
+    for (std::size_t k = 0; k < field.gradient.size(); ++k) {
+        gradient_x.push_back(field.gradient[k].x);
+        gradient_z.push_back(field.gradient[k].y);
+    }
+    const std::vector<float>* grids[] = {&field.signed_distance.values(), &gradient_x, &gradient_z,
+                                         &field.depth.values()};
     const char* names[] = {"signed_distance", "gradient_x", "gradient_z", "depth"};
     for (int b = 0; b < 4; ++b) {
         SCOPED_TRACE(names[b]);

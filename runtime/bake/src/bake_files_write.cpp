@@ -33,15 +33,34 @@ Result<nlohmann::json> write_field_png(const fs::path& dir, const std::string& n
     if (values.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz))
         return Error{ErrorCode::internal,
                      fmt::format("field {}: {} values for a {}x{} grid", name, values.size(), nx, nz)};
-    const FieldEncoding e = encoding_of(values);
-    const std::string file = name + ".png";
     const auto width = static_cast<std::size_t>(nx);
+    return write_field_png_rows(
+        dir, name,
+        [&](int j, float* out) { std::copy_n(values.data() + static_cast<std::size_t>(j) * width, width, out); }, nx,
+        nz, unit);
+}
+
+Result<nlohmann::json> write_field_png_rows(const fs::path& dir, const std::string& name,
+                                            const std::function<void(int, float*)>& row, int nx, int nz,
+                                            const char* unit) {
+    const auto width = static_cast<std::size_t>(std::max(nx, 0));
+    std::vector<float> values(width);
+    double lo = 0.0, hi = 0.0;
+    for (int j = 0; j < nz; ++j) {
+        row(j, values.data());
+        const auto [row_lo, row_hi] = std::minmax_element(values.begin(), values.end());
+        if (row_lo == values.end()) continue;
+        lo = j == 0 ? static_cast<double>(*row_lo) : std::min(lo, static_cast<double>(*row_lo));
+        hi = j == 0 ? static_cast<double>(*row_hi) : std::max(hi, static_cast<double>(*row_hi));
+    }
+    const FieldEncoding e = FieldEncoding::covering(lo, hi);
+    const std::string file = name + ".png";
     // Encoded a row at a time: a field of 8192² is written without a 128 MiB image of it.
     if (auto st = write_png_gray16_rows(
             dir / file, nx, nz,
             [&](int j, std::uint16_t* samples) {
-                const float* in = values.data() + static_cast<std::size_t>(j) * width;
-                for (std::size_t i = 0; i < width; ++i) samples[i] = e.encode(static_cast<double>(in[i]));
+                row(j, values.data());
+                for (std::size_t i = 0; i < width; ++i) samples[i] = e.encode(static_cast<double>(values[i]));
             },
             true);
         !st)

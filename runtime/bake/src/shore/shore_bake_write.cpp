@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/atomic_folder.hpp"
@@ -19,11 +20,6 @@ namespace tidewater {
 namespace {
 
 namespace fs = std::filesystem;
-
-Result<nlohmann::json> write_field(const fs::path& dir, const std::string& name, const std::vector<float>& values,
-                                   int n, const char* unit) {
-    return detail::write_field_png(dir, name, values, n, n, unit);
-}
 
 /// The distance field's PNGs as one GDAL raster (a VRT) for GIS tools: a band per field,
 /// each with its PNG's scale and offset, so GDAL reads metres; georeferenced north-up with
@@ -171,20 +167,32 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
                                  {"enclosed_waters", d->holes},
                                  {"simplify_tolerance_m", d->simplify_tolerance}}},
                                {"notes", "exact distance to the simplified shoreline (CGAL): positive over water"}};
-        const std::pair<const char*, std::pair<const std::vector<float>*, const char*>> fields[] = {
-            {"signed_distance", {&d->signed_distance.values(), "m"}},
-            {"gradient_x", {&d->gradient_x.values(), "1"}},
-            {"gradient_z", {&d->gradient_z.values(), "1"}},
-            {"depth", {&d->depth.values(), "m"}}};
+        // Each field's rows as the save asks for them: the gradient's from its angles.
+        const std::size_t n = static_cast<std::size_t>(d->resolution);
+        auto floats = [n](const SharedFloats& grid) {
+            return
+                [&grid, n](int j, float* out) { std::copy_n(grid.data() + static_cast<std::size_t>(j) * n, n, out); };
+        };
+        auto gradient = [d, n](int axis) {
+            return [d, n, axis](int j, float* out) {
+                for (std::size_t i = 0; i < n; ++i) out[i] = d->gradient[static_cast<std::size_t>(j) * n + i][axis];
+            };
+        };
+        const std::tuple<const char*, std::function<void(int, float*)>, const char*> fields[] = {
+            {"signed_distance", floats(d->signed_distance), "m"},
+            {"gradient_x", gradient(0), "1"},
+            {"gradient_z", gradient(1), "1"},
+            {"depth", floats(d->depth), "m"}};
         // The four images at once: at 4096² and more, encoding them is most of a bake's save.
         std::vector<Result<nlohmann::json>> written(std::size(fields), nlohmann::json{});
         detail::parallel_for_each(std::size(fields), 0, [&](std::size_t k) {
-            const auto& [name, field] = fields[k];
-            written[k] = write_field(temp, fmt::format("distance_{}", name), *field.first, d->resolution, field.second);
+            const auto& [name, rows, unit] = fields[k];
+            written[k] = detail::write_field_png_rows(temp, fmt::format("distance_{}", name), rows, d->resolution,
+                                                      d->resolution, unit);
         });
         for (std::size_t k = 0; k < std::size(fields); ++k) {
             if (!written[k]) return written[k].error();
-            dist["fields"][fields[k].first] = *written[k];
+            dist["fields"][std::get<0>(fields[k])] = *written[k];
         }
         if (auto st = write_distance_vrt(temp, *d, dist["fields"]); !st) return st;
         dist["gis"] = kDistanceVrt;

@@ -197,10 +197,15 @@ inline glm::vec2 unit_normal(glm::dvec2 grad) {
     return glm::vec2(len > 1e-6 ? grad / len : glm::dvec2(0.0));
 }
 
-/// The shore normal a grid other than the shoreline's holds at world xz `p`: the
-/// shoreline's distance gradient sampled there and normalized (0 where it vanishes).
+/// The shoreline's distance gradient sampled at world xz `p` and normalized (0 where it
+/// vanishes): what a grid other than the shoreline's holds there, once held_normal.
 inline glm::vec2 resampled_normal(const ShoreField& shoreline, glm::dvec2 p) {
-    return unit_normal({shoreline.sample(shoreline.gradient_x, p), shoreline.sample(shoreline.gradient_z, p)});
+    return unit_normal(shoreline.gradient_at(p));
+}
+
+/// A normal as a grid holds it: its 16-bit angle's (SharedDirections).
+inline glm::vec2 held_normal(glm::vec2 normal) {
+    return SharedDirections::decode(SharedDirections::encode(normal));
 }
 
 /// What decides which tiles of a layer are left out as open sea: its longest wave

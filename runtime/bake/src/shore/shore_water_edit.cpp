@@ -204,9 +204,9 @@ struct GridNormals {
     glm::vec2 on_model(int i, int j) const {
         if (model == shoreline_grid()) {
             const std::size_t k = shoreline.index(i, j);
-            return {shoreline.gradient_x[k], shoreline.gradient_z[k]};
+            return shoreline.gradient[k];
         }
-        return resampled_normal(shoreline, model.corner + model.texel * glm::dvec2(i + 0.5, j + 0.5));
+        return held_normal(resampled_normal(shoreline, model.corner + model.texel * glm::dvec2(i + 0.5, j + 0.5)));
     }
     /// Texel (i, j) of grid g (the model's or a coarse run's), whose centre is `centre`.
     glm::vec2 at(const ShoreGrid& g, int i, int j, glm::dvec2 centre) const {
@@ -218,8 +218,8 @@ struct GridNormals {
             return glm::dvec2(on_model(static_cast<int>(k % n), static_cast<int>(k / n)));
         };
         const glm::dvec2 g00 = tap(t.k00), g10 = tap(t.k10), g01 = tap(t.k01), g11 = tap(t.k11);
-        return unit_normal({t.w00 * g00.x + t.w10 * g10.x + t.w01 * g01.x + t.w11 * g11.x,
-                            t.w00 * g00.y + t.w10 * g10.y + t.w01 * g01.y + t.w11 * g11.y});
+        return held_normal(unit_normal({t.w00 * g00.x + t.w10 * g10.x + t.w01 * g01.x + t.w11 * g11.x,
+                                        t.w00 * g00.y + t.w10 * g10.y + t.w01 * g01.y + t.w11 * g11.y}));
     }
     ShoreGrid shoreline_grid() const { return {shoreline.resolution, shoreline.texel, shoreline.corner}; }
 };

@@ -14,6 +14,9 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "shore/fast_marching.hpp"
 #include "shore/march_record.hpp"
@@ -49,7 +52,8 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
         return v.data();
     };
     float *depths = sized(g.depth), *distances = sized(g.signed_distance);
-    float *gradient_x = sized(g.gradient_x), *gradient_z = sized(g.gradient_z);
+    std::vector<std::uint16_t>& gradient = g.gradient.write();
+    gradient.resize(count);
     std::atomic<bool> finite{true};
     detail::parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
         const int j = static_cast<int>(row);
@@ -60,9 +64,7 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
             if (!std::isfinite(depth)) finite = false;
             depths[k] = static_cast<float>(depth);
             distances[k] = static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
-            const glm::vec2 normal = detail::resampled_normal(from, p);
-            gradient_x[k] = normal.x;
-            gradient_z[k] = normal.y;
+            gradient[k] = SharedDirections::encode(detail::resampled_normal(from, p));
         }
     });
     if (!finite)
@@ -249,7 +251,7 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
     each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t at) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
-        const glm::dvec2 normal{static_cast<double>(field.gradient_x[k]), static_cast<double>(field.gradient_z[k])};
+        const glm::dvec2 normal(field.gradient[k]);
         const detail::WaveTexel v =
             detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
                                static_cast<double>(field.depth[k]), static_cast<double>(m.slowness[k]), normal,
@@ -584,6 +586,11 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         });
         if (options.cancel.stop_requested()) return cancelled();
         sea_height.reset();  // holds a run's whole grid
+#ifdef __GLIBC__
+        // The marches' rows, buckets and grids are freed; glibc keeps such pages resident
+        // until asked. Given back before the shared layer's slots, the bake's largest.
+        malloc_trim(0);
+#endif
         TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
         make_slots(shared, {});

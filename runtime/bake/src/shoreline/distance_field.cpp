@@ -153,8 +153,7 @@ class BlockFiller {
                     static_cast<std::size_t>(i - window_.i0);
                 const auto hit = distance_.hit_on(p, cand.id[arg], field_.depth[t] > 0.0f);
                 signed_distance_[t] = static_cast<float>(hit.signed_distance);
-                gradient_x_[t] = static_cast<float>(hit.gradient.x);
-                gradient_z_[t] = static_cast<float>(hit.gradient.y);
+                gradient_[t] = SharedDirections::encode(hit.gradient);
             }
     }
 
@@ -163,8 +162,7 @@ class BlockFiller {
     const TexelWindow window_;
     // The field's grids to write, taken once: the workers write distinct texels.
     float* signed_distance_ = field_.signed_distance.write().data();
-    float* gradient_x_ = field_.gradient_x.write().data();
-    float* gradient_z_ = field_.gradient_z.write().data();
+    std::uint16_t* gradient_ = field_.gradient.write().data();
 };
 
 }  // namespace

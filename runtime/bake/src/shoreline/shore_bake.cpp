@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "contour.hpp"
 #include "distance_field.hpp"
@@ -131,9 +133,49 @@ Result<ClassifiedShore> shoreline_from_cells(std::vector<ContourCell> cells, int
 
 }  // namespace detail
 
+namespace {
+
+/// A turn in SharedDirections' steps.
+constexpr double kDirectionSteps = 65535.0;
+
+/// Every code's unit vector, made once: decoding is a look-up.
+const std::array<glm::vec2, 65536>& direction_table() {
+    static const auto table = [] {
+        std::array<glm::vec2, 65536> t{};
+        for (std::size_t c = 0; c + 1 < t.size(); ++c) {
+            const double angle = 2.0 * std::numbers::pi * static_cast<double>(c) / kDirectionSteps;
+            t[c] = glm::vec2(static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle)));
+        }
+        t[SharedDirections::kNone] = glm::vec2(0.0f);
+        return t;
+    }();
+    return table;
+}
+
+}  // namespace
+
+std::uint16_t SharedDirections::encode(glm::dvec2 v) {
+    if (!(v.x * v.x + v.y * v.y >= 0.25)) return kNone;
+    double turns = std::atan2(v.y, v.x) / (2.0 * std::numbers::pi);
+    if (turns < 0.0) turns += 1.0;
+    const auto code = static_cast<std::uint32_t>(std::lround(turns * kDirectionSteps));
+    return static_cast<std::uint16_t>(code % static_cast<std::uint32_t>(kDirectionSteps));
+}
+
+glm::vec2 SharedDirections::decode(std::uint16_t code) {
+    return direction_table()[code];
+}
+
 double ShoreField::sample(const SharedFloats& grid, glm::dvec2 p) const {
     if (resolution < 2) return resolution == 1 ? static_cast<double>(grid[0]) : 0.0;
     return detail::grid_taps(corner, texel, resolution, p)(grid.values());
+}
+
+glm::dvec2 ShoreField::gradient_at(glm::dvec2 p) const {
+    if (resolution < 2) return resolution == 1 ? glm::dvec2(gradient[0]) : glm::dvec2(0.0);
+    const detail::GridTaps t = detail::grid_taps(corner, texel, resolution, p);
+    return t.w00 * glm::dvec2(gradient[t.k00]) + t.w10 * glm::dvec2(gradient[t.k10]) +
+           t.w01 * glm::dvec2(gradient[t.k01]) + t.w11 * glm::dvec2(gradient[t.k11]);
 }
 
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options) {
@@ -193,8 +235,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     report(0.3);
 
     field.signed_distance.write().assign(count, 0.0f);
-    field.gradient_x.write().assign(count, 0.0f);
-    field.gradient_z.write().assign(count, 0.0f);
+    field.gradient.write().assign(count, SharedDirections::kNone);
     const auto distance = detail::ShoreDistance::build(field.shorelines);
     field.segment_count = distance->segment_count();
     field.timings.tree = clock.lap();

@@ -146,19 +146,22 @@ Result<TileDistances> bake_tile_distances(const Terrain& terrain, double water_l
         const double half = 0.5 * tiling.texel * tiling.resolution;
         const float far = static_cast<float>((first->above[0] < 0.0 ? 1.0 : -1.0) * 2.0 * std::sqrt(2.0) * half);
         field.signed_distance.write().assign(count, far);
-        field.gradient_x.write().assign(count, 0.0f);
-        field.gradient_z.write().assign(count, 0.0f);
+        field.gradient.write().assign(count, SharedDirections::kNone);
     } else {
         field.signed_distance.write().assign(count, 0.0f);
-        field.gradient_x.write().assign(count, 0.0f);
-        field.gradient_z.write().assign(count, 0.0f);
+        field.gradient.write().assign(count, SharedDirections::kNone);
         detail::fill_distance_window(*distance, field, {rect.i0, rect.j0, b}, threads, {}, {});
     }
     TileDistances out;
     out.tile = tile;
     out.signed_distance = field.signed_distance.values();
-    out.gradient_x = field.gradient_x.values();
-    out.gradient_z = field.gradient_z.values();
+    out.gradient_x.resize(count);
+    out.gradient_z.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        const glm::vec2 g = field.gradient[k];
+        out.gradient_x[k] = g.x;
+        out.gradient_z[k] = g.y;
+    }
     out.depth = field.depth.values();
     return out;
 }
@@ -169,20 +172,24 @@ Result<ShoreField> assemble_shore_field(const ShoreTiling& tiling, ShoreField st
     const ShoreField grid = tiling.grid();
     if (stitched.resolution != grid.resolution || stitched.texel != grid.texel || stitched.corner != grid.corner)
         return Error{ErrorCode::invalid_argument, "tiled bake: the shoreline was stitched for another grid"};
-    std::vector<float>* grids[] = {&stitched.signed_distance.write(), &stitched.gradient_x.write(),
-                                   &stitched.gradient_z.write(), &stitched.depth.write()};
+    std::vector<float>* grids[] = {&stitched.signed_distance.write(), &stitched.depth.write()};
     for (std::vector<float>* g : grids) g->assign(n * n, 0.0f);
+    std::vector<std::uint16_t>& gradient = stitched.gradient.write();
+    gradient.assign(n * n, SharedDirections::kNone);
     for (int t = 0; t < tiling.count(); ++t) {
         auto got = tile(t);
         if (!got) return got.error();
         if (got->tile != t) return bad_tile(t, fmt::format("got tile {} in its place", got->tile));
-        const std::vector<float>* from[] = {&got->signed_distance, &got->gradient_x, &got->gradient_z, &got->depth};
-        for (int g = 0; g < 4; ++g) {
-            if (from[g]->size() != b * b) return bad_tile(t, fmt::format("{} values, not {}", from[g]->size(), b * b));
-            for (std::size_t row = 0; row < b; ++row)
-                std::copy_n(from[g]->data() + row * b, b,
-                            grids[g]->data() + (static_cast<std::size_t>(tiling.first_j(t)) + row) * n +
-                                static_cast<std::size_t>(tiling.first_i(t)));
+        const std::vector<float>* from[] = {&got->signed_distance, &got->depth, &got->gradient_x, &got->gradient_z};
+        for (const std::vector<float>* f : from)
+            if (f->size() != b * b) return bad_tile(t, fmt::format("{} values, not {}", f->size(), b * b));
+        for (std::size_t row = 0; row < b; ++row) {
+            const std::size_t at =
+                (static_cast<std::size_t>(tiling.first_j(t)) + row) * n + static_cast<std::size_t>(tiling.first_i(t));
+            for (int g = 0; g < 2; ++g) std::copy_n(from[g]->data() + row * b, b, grids[g]->data() + at);
+            for (std::size_t i = 0; i < b; ++i)
+                gradient[at + i] = SharedDirections::encode({static_cast<double>(got->gradient_x[row * b + i]),
+                                                             static_cast<double>(got->gradient_z[row * b + i])});
         }
     }
     return stitched;

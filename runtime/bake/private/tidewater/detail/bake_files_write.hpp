@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -15,6 +16,13 @@ namespace tidewater::detail {
 /// (file, unit, zero_pixel, step, max_error).
 Result<nlohmann::json> write_field_png(const std::filesystem::path& dir, const std::string& name,
                                        const std::vector<float>& values, int nx, int nz, const char* unit);
+
+/// As write_field_png, the field's rows made by `row(j, values)` (nx values of row j) as
+/// they are needed, twice (its range, then its pixels): a field held in another form is
+/// written without a float copy of it.
+Result<nlohmann::json> write_field_png_rows(const std::filesystem::path& dir, const std::string& name,
+                                            const std::function<void(int, float*)>& row, int nx, int nz,
+                                            const char* unit);
 
 /// Rounds `values` to the encoding write_field_png would save them with, so a field that
 /// other baked values were fitted to reads back from a saved bake as it was baked.

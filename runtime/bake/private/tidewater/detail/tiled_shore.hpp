@@ -72,7 +72,8 @@ Status check_tile_contour(const ShoreTiling& tiling, const TileContour& contour)
 Result<ShoreField> stitch_shoreline(const ShoreTiling& tiling, std::vector<TileContour> contours,
                                     double simplify_tolerance, unsigned threads);
 
-/// A tile's exact signed distance, gradient and depth (block()^2 each, row-major).
+/// A tile's exact signed distance, gradient and depth (block()^2 each, row-major); the
+/// gradient as the unit vectors of the field's 16-bit angles (SharedDirections).
 struct TileDistances {
     int tile = 0;
     std::vector<float> signed_distance, gradient_x, gradient_z, depth;
