@@ -73,7 +73,7 @@ class SharedGrid {
 using SharedFloats = SharedGrid<float>;
 
 /// A unit vector a texel held as its angle in 16 bits: a turn in 65 535 steps (within
-/// 4.8e-5 rad), and kNone for no direction. Two floats took 8 bytes a texel, 537 MB over
+/// 4.8e-5 rad), and kNone for no direction. Two floats would take 8 bytes a texel, 537 MB over
 /// an 8192² field; this takes 2.
 class SharedDirections {
   public:
