@@ -21,12 +21,16 @@ inline constexpr double kReachTexels = 3.0;
 /// a texel of it, so the sections are taken finer than that.
 inline constexpr double kSectionsPerTexel = 4.0;
 /// A section whose query misses its discharge by more than this is not a clean crossing
-/// (the sea or a lake taking the channel over at the mouth, 25 % and more): it is not
-/// matched. A tight bend on a steep reach misses 15 %.
+/// (a tributary's last texel, 25 % and more, where the river it joins takes the channel
+/// over): it is not matched. A tight bend on a steep reach misses 15 %.
 inline constexpr double kMostMismatch = 0.2;
 /// A section across an island crosses four waterlines, not two, each next to ground as
 /// steep as the island's sides: it is matched from further off.
 inline constexpr double kMostMismatchAcrossIsland = 0.5;
+/// Past a lake or ocean mouth the sections run on this many texels into the plume, where
+/// the query reads the river's current in the still water: matched to the h u field's
+/// flux there, which fades out along the plume.
+inline constexpr double kPlumeTexels = 3.0;
 /// The most a texel's current is scaled, either way.
 inline constexpr double kMostScale = 1.5;
 /// The ridge that keeps the scales near 1 where the sections leave them free, against
@@ -50,19 +54,25 @@ struct SectionTerms {
     }
 };
 
+/// The section through the centreline `along` m from the source (past the mouth: on
+/// along the last stretch, into the plume) as the query reads it.
 SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& cells, double along) {
     const FieldGrid& g = river.grid;
     const std::vector<double>& a = river.along;
     const auto above = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
         std::lower_bound(a.begin(), a.end(), along) - a.begin(), 1, static_cast<std::ptrdiff_t>(a.size()) - 1));
+    const double beyond = std::max(along - a.back(), 0.0);
     const double w = std::clamp((along - a[above - 1]) / std::max(a[above] - a[above - 1], 1e-12), 0.0, 1.0);
-    const glm::dvec2 p0 = river.centreline[above - 1] + w * (river.centreline[above] - river.centreline[above - 1]);
     const glm::dvec2 d = river.centreline[above] - river.centreline[above - 1];
     const double length = std::hypot(d.x, d.y);
     SectionTerms out;
     if (!(length > 0.0)) return out;
     const glm::dvec2 t = d / length, n{-t.y, t.x};
-    const double width = river.width[above - 1] + w * (river.width[above] - river.width[above - 1]);
+    const glm::dvec2 p0 =
+        river.centreline[above - 1] + w * (river.centreline[above] - river.centreline[above - 1]) + beyond * t;
+    // The plume widens from the mouth: past it the section reaches as far again to each side.
+    const double width = (river.width[above - 1] + w * (river.width[above] - river.width[above - 1])) +
+                         (beyond > 0.0 ? river.width.back() : 0.0);
     const double reach = 0.5 * width + kReachTexels * g.texel, step = g.texel / kSamplesPerTexel;
     const auto count = static_cast<int>(std::ceil(2.0 * reach / step));
     const auto current = [&](std::size_t k) {
@@ -76,9 +86,10 @@ SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& 
         int i = 0, j = 0;
         g.texel_of(p, i, j);
         if (cells[g.index(i, j)] == FlowCell::island) out.crosses_island = true;
-        if (!river_water(river.texel[g.index(i, j)])) continue;
-        // What the query reads (sample_river): the bilinear depth times the texels'
-        // currents weighted by their water columns.
+        const std::uint8_t kind = river.texel[g.index(i, j)];
+        if (!river_water(kind) && kind != static_cast<std::uint8_t>(RiverTexel::plume)) continue;
+        // What the query reads (sample_river), in the river and in its plume alike: the
+        // bilinear depth times the texels' currents weighted by their water columns.
         const double depth = g.sample(river.depth, p);
         if (!(depth > 0.0)) continue;
         const RiverCurrentTaps taps = river_current_taps(river, p);
@@ -109,7 +120,11 @@ double given_discharge(const RiverBake& river, std::span<const Inflow> inflows, 
 void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cells, std::span<const Inflow> inflows) {
     const std::size_t samples = river.centreline.size();
     if (samples < 2 || river.along.size() != samples) return;
-    const double first = river.along.front(), last = river.along.back();
+    const double first = river.along.front(), mouth = river.along.back();
+    const bool plume = std::any_of(river.texel.begin(), river.texel.end(), [](std::uint8_t kind) {
+        return kind == static_cast<std::uint8_t>(RiverTexel::plume);
+    });
+    const double last = mouth + (plume ? kPlumeTexels * river.grid.texel : 0.0);
     const double spacing = river.grid.texel / kSectionsPerTexel;
     const auto stations = static_cast<std::size_t>(std::ceil((last - first) / spacing)) + 1;
     // One row per section matched, over the texels it reads (numbered as met), divided by
@@ -122,7 +137,7 @@ void match_queried_discharge(RiverBake& river, const std::vector<FlowCell>& cell
         const double along = std::min(first + static_cast<double>(m) * spacing, last);
         const SectionTerms s = section_terms(river, cells, along);
         const double given = given_discharge(river, inflows, along);
-        const double q = std::isnan(given) ? s.field : given, queried = s.queried();
+        const double q = std::isnan(given) || along > mouth ? s.field : given, queried = s.queried();
         if (!(q > 0.0 && queried > 0.0)) continue;
         const double off = 1.0 - queried / q;
         if (std::abs(off) > (s.crosses_island ? kMostMismatchAcrossIsland : kMostMismatch)) continue;
