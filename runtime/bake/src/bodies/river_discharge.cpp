@@ -70,7 +70,7 @@ SectionTerms section_terms(const RiverBake& river, const std::vector<FlowCell>& 
     const glm::dvec2 t = d / length, n{-t.y, t.x};
     const glm::dvec2 p0 =
         river.centreline[above - 1] + w * (river.centreline[above] - river.centreline[above - 1]) + beyond * t;
-    // The plume widens from the mouth: past it the section reaches as far again to each side.
+    // The plume widens from the mouth: past it the section spans twice the mouth's width.
     const double width = (river.width[above - 1] + w * (river.width[above] - river.width[above - 1])) +
                          (beyond > 0.0 ? river.width.back() : 0.0);
     const double reach = 0.5 * width + kReachTexels * g.texel, step = g.texel / kSamplesPerTexel;

@@ -588,7 +588,8 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         sea_height.reset();  // holds a run's whole grid
 #ifdef __GLIBC__
         // The marches' rows, buckets and grids are freed; glibc keeps such pages resident
-        // until asked. Given back before the shared layer's slots, the bake's largest.
+        // until asked. Given back before the shared layer's slots are made, beside the
+        // runs' tiles: from there to the end of the bake its memory is at its peak.
         malloc_trim(0);
 #endif
         TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
