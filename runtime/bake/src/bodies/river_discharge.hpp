@@ -22,7 +22,8 @@ namespace tidewater::detail {
 /// discharge through sections a quarter texel apart along the centreline is the river's
 /// (its own, and each tributary's once joined; the h u field's within a tributary's
 /// mouth): the least-squares change of the texels' factors, the smallest that matches
-/// every section, each factor within [1/1.5, 1.5]. Past a lake or sea mouth the sections
+/// every section, each factor within [1/4, 1.5] (one past a bound is held there
+/// and the others solved again). Past a lake or sea mouth the sections
 /// run on into the plume, where the query reads the river's current in the still water:
 /// its points count with the river's, and past the mouth the h u field's flux is matched.
 /// A section the query misses by more than 20 % (50 % across an island) is not a clean
