@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include "tidewater/detail/parallel.hpp"
@@ -14,18 +14,27 @@
 namespace tidewater::detail {
 namespace {
 
-/// The order in which `loop` starts the items [0, count) on two workers, each item taking
-/// a little while.
+/// The order in which `loop` starts the items [0, count) on two workers.
+///
+/// The workers go in lockstep so that the order recorded is the order the items were
+/// taken, however the threads are scheduled: an item, once recorded, waits until the
+/// other worker has recorded its own item too. So after the first two, neither worker can
+/// take a next item while the other has taken one and not yet recorded it. A loop that
+/// runs on one worker only waits out a timeout once and then goes on alone.
 template <typename Loop>
 std::vector<std::size_t> start_order(std::size_t count, const Loop& loop) {
     std::vector<std::size_t> order;
     std::mutex lock;
+    std::condition_variable recorded;
+    bool alone = false;
     loop(count, 2u, [&](std::size_t i) {
-        {
-            const std::lock_guard guard(lock);
-            order.push_back(i);
-        }
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        std::unique_lock guard(lock);
+        order.push_back(i);
+        recorded.notify_all();
+        const std::size_t partner_recorded = std::min(count, order.size() + 1);
+        if (alone) return;
+        if (!recorded.wait_for(guard, std::chrono::seconds(2), [&] { return order.size() >= partner_recorded; }))
+            alone = true;
     });
     return order;
 }
@@ -44,9 +53,10 @@ TEST(Parallel, InOrderStartsEachItemAfterTheOnesBeforeIt) {
     std::vector<char> seen(kCount, 0);
     for (std::size_t i : in_order) seen[i] += 1;
     for (std::size_t i = 0; i < kCount; ++i) EXPECT_EQ(seen[i], 1) << "item " << i << " runs once";
-    // Two workers: an item starts at most one place from its own (its neighbour was taken
-    // first and recorded later). A split range (parallel_for_each) starts its second half
-    // at once on the second worker, 32 places out.
+    // Taken and recorded in the same order but for the first two, which both workers take
+    // at once: an item starts at most one place from its own. A split range
+    // (parallel_for_each on oneTBB) starts its second half at once on the second worker,
+    // 32 places out.
     EXPECT_LE(largest_displacement(in_order), 1u);
 }
 
