@@ -201,13 +201,14 @@ TEST(RiverDischarge, TheQueriedCurrentCarriesQThroughEverySectionOfABentRiver) {
 // over the high side with the water below the low bank: 33 % and 18 % off there.
 // Sections across the brook's knoll (an island) cross four waterlines next to steep
 // ground. The sections every 7 m: within 0.35 %, and 0.44 % at worst across the knoll.
-// Every 0.25 m: the rill's 606 sections within 1 % (0.97 % at worst, a texel above the
-// brook; its tight bend 50 to 53 m below the source, 15 % short unscaled, within 0.4 %);
-// one of the brook's 743 over 1 % (1.09 %, across the knoll). The knoll's sections are
-// matched when some texels' currents there are cut to a quarter: with the factors held
-// within 1/1.5 they were 13 over 1 % (2.04 %). With one factor per section along the
-// channel (capped at 10 %) they were 27 of the brook's (3.1 %) and 9 of the rill's (7 %
-// at its end, 4.5 % on its bend).
+// Every 0.25 m: the rill's 606 sections within 0.5 % (a texel above the brook; its tight
+// bend 50 to 53 m below the source, 15 % short unscaled, within 0.4 %); the brook's 743
+// within 0.77 % (beside the knoll). The knoll's sections are matched when some texels'
+// currents there are cut to a quarter, and the sections least squares left furthest off
+// are weighed again: solved once, one of the brook's was over 1 % (1.09 %) and the rill's
+// worst was 0.97 %; with the factors held within 1/1.5, 13 of the brook's were over 1 %
+// (2.04 %). With one factor per section along the channel (capped at 10 %) they were 27 of
+// the brook's (3.1 %) and 9 of the rill's (7 % at its end, 4.5 % on its bend).
 TEST(RiverDischarge, TheDefaultIslandsBrookAndRillCarryTheirsToTheSea) {
     auto scene = test::baked(default_scene());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -231,8 +232,8 @@ TEST(RiverDischarge, TheDefaultIslandsBrookAndRillCarryTheirsToTheSea) {
         if (std::abs(s - joins) < joining) return std::nan("");
         return s < joins ? brook.own_discharge : brook.discharge;
     });
-    EXPECT_LT(brook_dense.worst, 0.015);
-    EXPECT_LT(brook_dense.share_over_1_percent, 0.005);
+    EXPECT_LT(brook_dense.worst, 0.01);
+    EXPECT_EQ(brook_dense.share_over_1_percent, 0.0);
     const DenseScan rill_dense = dense_scan(*scene, 1, [&](double) { return rivers[1].discharge; });
     EXPECT_LT(rill_dense.worst, 0.01);
     EXPECT_EQ(rill_dense.share_over_1_percent, 0.0);
