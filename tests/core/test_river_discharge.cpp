@@ -201,7 +201,7 @@ TEST(RiverDischarge, TheQueriedCurrentCarriesQThroughEverySectionOfABentRiver) {
 // over the high side with the water below the low bank: 33 % and 18 % off there.
 // Sections across the brook's knoll (an island) cross four waterlines next to steep
 // ground. The sections every 7 m: within 0.35 %, and 0.44 % at worst across the knoll.
-// Every 0.25 m: the rill's 606 sections within 0.5 % (a texel above the brook; its tight
+// Every 0.25 m: the rill's 606 sections within 0.50 % (a texel above the brook; its tight
 // bend 50 to 53 m below the source, 15 % short unscaled, within 0.4 %); the brook's 743
 // within 0.77 % (beside the knoll). The knoll's sections are matched when some texels'
 // currents there are cut to a quarter, and the sections least squares left furthest off
