@@ -337,42 +337,79 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
 
 }  // namespace
 
-void march_parabolic(const ParabolicInput& in, const std::function<void(const ParabolicRow&)>& row_done) {
-    const ParabolicGrid& g = in.grid;
-    const auto un = static_cast<std::size_t>(g.across);
-    if (g.steps <= 0 || un == 0) return;
-    std::vector<float> here_depths(un), next_depths(un), between(un);
-    in.depth_row(0, here_depths);
+/// The march's rows and state between steps (ParabolicMarch's).
+struct ParabolicMarch::State {
+    explicit State(const ParabolicInput& in) : marcher(in) {}
+    Marcher marcher;
+    std::vector<float> here_depths, next_depths, between;
     RowMedium here, next, from, to;
-    fill_row_medium(in, here_depths, here);
-    Marcher m(in);
-    m.enter(here);
-    row_done({0, m.a, m.broken});
-    if (in.sea_height_row) m.sea_height.resize(un);
-    for (int step = 0; step + 1 < g.steps; ++step) {
-        if (in.sea_height_row) in.sea_height_row(step, m.sea_height);
-        in.depth_row(step + 1, next_depths);
-        fill_row_medium(in, next_depths, next);
-        const int parts = m.substeps(here, g.dx);
-        if (parts == 1) {
-            m.advance(here, next, g.dx);
-        } else {
-            // Substeps through depths between the rows' (linearly).
-            from = here;
-            for (int part = 1; part < parts; ++part) {
-                const float t = static_cast<float>(part) / static_cast<float>(parts);
-                for (std::size_t j = 0; j < un; ++j)
-                    between[j] = here_depths[j] + t * (next_depths[j] - here_depths[j]);
-                fill_row_medium(in, between, to);
-                m.advance(from, to, g.dx / parts);
-                std::swap(from, to);
-            }
-            m.advance(from, next, g.dx / parts);
-        }
-        std::swap(here, next);
-        std::swap(here_depths, next_depths);
-        row_done({step + 1, m.a, m.broken});
+};
+
+ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
+    const auto un = static_cast<std::size_t>(in.grid.across);
+    if (in.grid.steps <= 0 || un == 0) return;
+    state_ = std::make_unique<State>(in);
+    State& s = *state_;
+    for (auto* v : {&s.here_depths, &s.next_depths, &s.between}) v->resize(un);
+    in.depth_row(0, s.here_depths);
+    fill_row_medium(in, s.here_depths, s.here);
+    s.marcher.enter(s.here);
+    if (!in.entering_amplitude.empty()) {
+        std::copy(in.entering_amplitude.begin(), in.entering_amplitude.end(), s.marcher.a.begin());
+        std::copy(in.entering_broken.begin(), in.entering_broken.end(), s.marcher.broken.begin());
     }
+    if (in.sea_height_row) s.marcher.sea_height.resize(un);
+}
+
+ParabolicMarch::~ParabolicMarch() = default;
+
+void ParabolicMarch::reset(std::span<const std::complex<double>> amplitude, std::span<const char> broken) {
+    std::copy(amplitude.begin(), amplitude.end(), state_->marcher.a.begin());
+    std::copy(broken.begin(), broken.end(), state_->marcher.broken.begin());
+}
+
+ParabolicRow ParabolicMarch::row() const {
+    return {step_, state_->marcher.a, state_->marcher.broken};
+}
+
+bool ParabolicMarch::advance() {
+    if (!state_ || step_ + 1 >= in_.grid.steps) return false;
+    State& s = *state_;
+    Marcher& m = s.marcher;
+    const std::size_t un = s.here_depths.size();
+    if (in_.sea_height_row) in_.sea_height_row(step_, m.sea_height);
+    in_.depth_row(step_ + 1, s.next_depths);
+    fill_row_medium(in_, s.next_depths, s.next);
+    const double dx = in_.grid.dx;
+    int parts = m.substeps(s.here, dx);
+    if (in_.least_substeps) parts = std::clamp(in_.least_substeps(step_), parts, kMostSubsteps);
+    substeps_ = parts;
+    if (parts == 1) {
+        m.advance(s.here, s.next, dx);
+    } else {
+        // Substeps through depths between the rows' (linearly).
+        s.from = s.here;
+        for (int part = 1; part < parts; ++part) {
+            const float t = static_cast<float>(part) / static_cast<float>(parts);
+            for (std::size_t j = 0; j < un; ++j)
+                s.between[j] = s.here_depths[j] + t * (s.next_depths[j] - s.here_depths[j]);
+            fill_row_medium(in_, s.between, s.to);
+            m.advance(s.from, s.to, dx / parts);
+            std::swap(s.from, s.to);
+        }
+        m.advance(s.from, s.next, dx / parts);
+    }
+    std::swap(s.here, s.next);
+    std::swap(s.here_depths, s.next_depths);
+    ++step_;
+    return true;
+}
+
+void march_parabolic(const ParabolicInput& in, const std::function<void(const ParabolicRow&)>& row_done) {
+    ParabolicMarch march(in);
+    if (!march.started()) return;
+    row_done(march.row());
+    while (march.advance()) row_done(march.row());
 }
 
 }  // namespace tidewater::detail

@@ -14,6 +14,7 @@
 
 #include <complex>
 #include <functional>
+#include <memory>
 #include <span>
 
 namespace tidewater::detail {
@@ -61,6 +62,14 @@ struct ParabolicInput {
     /// values a row, called once a row, rows in order: every component breaks and shoals
     /// nonlinearly at the sea's own height, not at its own estimate of it.
     std::function<void(int step, std::span<float> height)> sea_height_row;
+    /// Where given (`across` values each), the march starts on its first row from this
+    /// state instead of the incident wave: a march taken up again from a row it kept.
+    std::span<const std::complex<double>> entering_amplitude;
+    std::span<const char> entering_broken;
+    /// Where given, the least substeps the step from row `step` takes (more where the
+    /// march's own rule asks): a window taken up again steps as the march over the
+    /// whole row did, whose rule looked at every point of the row.
+    std::function<int(int step)> least_substeps;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation
     bool nonlinear_shoaling = true;    ///< false: linear shoaling only
@@ -76,8 +85,35 @@ struct ParabolicRow {
     std::span<const char> broken;
 };
 
+/// A march of `input` a row at a time, from its first row (entered on construction) to its
+/// last: two marches can go in step. The sides are walls (no flux across). `input` must
+/// outlive it. Not copyable.
+class ParabolicMarch {
+  public:
+    explicit ParabolicMarch(const ParabolicInput& input);
+    ~ParabolicMarch();
+    ParabolicMarch(const ParabolicMarch&) = delete;
+    ParabolicMarch& operator=(const ParabolicMarch&) = delete;
+    /// Whether the grid has a row (none when it has no steps or no points across).
+    bool started() const { return state_ != nullptr; }
+    /// The row the march is on (valid until the next advance).
+    ParabolicRow row() const;
+    /// Steps to the next row; false (and stays) at the last.
+    bool advance();
+    /// Puts the state on the row the march is on in place of its own (`across` values each).
+    void reset(std::span<const std::complex<double>> amplitude, std::span<const char> broken);
+    /// The substeps the last advance took (0 before the first).
+    int substeps() const { return substeps_; }
+
+  private:
+    struct State;
+    const ParabolicInput& in_;
+    int step_ = 0, substeps_ = 0;
+    std::unique_ptr<State> state_;
+};
+
 /// Marches `input` from its first row to its last, calling `row_done` with each row (the
-/// first included) in order. The sides are walls (no flux across).
+/// first included) in order.
 void march_parabolic(const ParabolicInput& input, const std::function<void(const ParabolicRow&)>& row_done);
 
 /// The wavenumber of a wave of amplitude `amplitude` (m) at depth `depth` (m), whose linear

@@ -111,6 +111,116 @@ struct KeptRow {
     }
 };
 
+/// The values of the texel centred at `p` between the march's rows r and r + 1
+/// (`before` and `after`, whose first point is the frame's point `first`): the magnitude
+/// blended bilinearly, the breaking where the blend is at least a half, and whether the
+/// march reached it (a magnitude over `least` at a corner).
+struct TexelFromRows {
+    double magnitude = 0.0;
+    bool broken = false, reached = false;
+};
+TexelFromRows texel_from_rows(const MarchFrame& f, glm::dvec2 p, int r, const KeptRow& before, const KeptRow& after,
+                              int first, double least) {
+    const double s = f.spacing;
+    const double u = std::clamp((glm::dot(p, f.along) - f.x0) / s - r, 0.0, 1.0);
+    const double fy = (glm::dot(p, f.across) - f.y0) / s;
+    const int j0 = std::clamp(static_cast<int>(std::floor(fy)), 0, f.points - 2);
+    const double v = std::clamp(fy - static_cast<double>(j0), 0.0, 1.0);
+    const auto j = static_cast<std::size_t>(j0 - first);
+    const double m00 = before.magnitude[j], m01 = before.magnitude[j + 1];
+    const double m10 = after.magnitude[j], m11 = after.magnitude[j + 1];
+    auto lerp = [&](double q00, double q01, double q10, double q11) {
+        return (1 - u) * ((1 - v) * q00 + v * q01) + u * ((1 - v) * q10 + v * q11);
+    };
+    TexelFromRows t;
+    t.magnitude = lerp(m00, m01, m10, m11);
+    t.broken = lerp(before.broken[j], before.broken[j + 1], after.broken[j], after.broken[j + 1]) >= 0.5;
+    t.reached = std::max({m00, m01, m10, m11}) > least;
+    return t;
+}
+
+/// The march of `wave` over the depths of `field` (sea heights `sea_height`, may be null)
+/// in `frame`, from its row `start` to its last, over its points [first, first + points).
+ParabolicInput march_input(const Wave& wave, const SeaState& sea, const MarchFrame& frame, int start, int first,
+                           int points, const ShoreField& field, const SeaHeight* sea_height) {
+    const double x_start = frame.x0 + start * frame.spacing;
+    const double y_first = frame.y0 + first * frame.spacing;
+    ParabolicInput in;
+    in.grid = {frame.steps - start, points, frame.spacing, frame.spacing};
+    in.omega = wave.omega;
+    in.depth_row = [&field, frame, x_start, y_first](int step, std::span<float> depth) {
+        const double x = x_start + step * frame.spacing;
+        for (std::size_t j = 0; j < depth.size(); ++j)
+            depth[j] = static_cast<float>(
+                field.sample(field.depth, frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
+    };
+    in.incident_amplitude = wave.amplitude;
+    in.incident_in_deep_water = true;
+    in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
+    in.sea_period = sea.mean_period;
+    in.random_sea = sea.components > 1;
+    if (in.random_sea && sea_height != nullptr)
+        in.sea_height_row = [sea_height, frame, x_start, y_first](int step, std::span<float> height) {
+            const double x = x_start + step * frame.spacing;
+            for (std::size_t j = 0; j < height.size(); ++j)
+                height[j] = static_cast<float>(
+                    sea_height->at(frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
+        };
+    return in;
+}
+
+/// The texels to fill (not land, not kept by `keep`) whose row (the march row just before
+/// them) is from `first_row` on and whose first point across (the lower of the two they
+/// lie between) is in [lo, hi], bucketed by row from `first_row`: a window's texels,
+/// found row by row of the grid over the span the window crosses.
+RowBuckets bucket_window(const ShoreField& field, const MarchFrame& f, int first_row, int lo, int hi,
+                         const std::function<bool(std::size_t)>& keep) {
+    const int n = field.resolution;
+    RowBuckets b;
+    b.first_row = first_row;
+    const int rows = f.steps - 1 - first_row;
+    b.offsets.assign(static_cast<std::size_t>(std::max(rows, 0)) + 1, 0);
+    if (rows <= 0 || hi < lo) return b;
+    const double s = f.spacing;
+    // The window in the frame, a texel's reach wider: x >= x_lo, y_lo <= y <= y_hi.
+    const double x_lo = f.x0 + first_row * s - field.texel, y_lo = f.y0 + lo * s - field.texel,
+                 y_hi = f.y0 + (hi + 1) * s + field.texel;
+    std::vector<std::pair<int, std::uint32_t>> found;  // (row, texel)
+    for (int j = 0; j < n; ++j) {
+        // Along grid row j, x and y are linear in i: the i where both lie in the window.
+        double i_lo = 0.0, i_hi = n - 1.0;
+        auto within = [&](glm::dvec2 axis, double lo_value, double hi_value) {
+            const double at0 = glm::dot(field.texel_center(0, j), axis), slope = field.texel * axis.x;
+            if (std::abs(slope) < 1e-12) {
+                if (at0 < lo_value || at0 > hi_value) i_hi = -1.0;
+                return;
+            }
+            double a = (lo_value - at0) / slope, c = (hi_value - at0) / slope;
+            if (a > c) std::swap(a, c);
+            i_lo = std::max(i_lo, std::floor(a));
+            i_hi = std::min(i_hi, std::ceil(c));
+        };
+        within(f.along, x_lo, 1e300);
+        within(f.across, y_lo, y_hi);
+        for (int i = static_cast<int>(i_lo); i <= static_cast<int>(i_hi); ++i) {
+            const std::size_t k = field.index(i, j);
+            if (field.depth[k] <= 0.0f || keep(k)) continue;
+            const glm::dvec2 p = field.texel_center(i, j);
+            const int row = std::clamp(static_cast<int>(std::floor((glm::dot(p, f.along) - f.x0) / s)), 0, f.steps - 2);
+            const int j0 =
+                std::clamp(static_cast<int>(std::floor((glm::dot(p, f.across) - f.y0) / s)), 0, f.points - 2);
+            if (row < first_row || j0 < lo || j0 > hi) continue;
+            found.emplace_back(row - first_row, static_cast<std::uint32_t>(k));
+        }
+    }
+    for (const auto& [row, k] : found) ++b.offsets[static_cast<std::size_t>(row) + 1];
+    for (std::size_t r = 1; r < b.offsets.size(); ++r) b.offsets[r] += b.offsets[r - 1];
+    b.texels.resize(found.size());
+    std::vector<std::size_t> next(b.offsets.begin(), b.offsets.end() - 1);
+    for (const auto& [row, k] : found) b.texels[next[static_cast<std::size_t>(row)]++] = k;
+    return b;
+}
+
 }  // namespace
 
 double ramp(double value, double none, double full) {
@@ -137,7 +247,8 @@ SeaState sea_state(std::span<const Wave> waves) {
 }
 
 DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
-                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height) {
+                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height,
+                             KeptMarch* kept) {
     const std::size_t count = static_cast<std::size_t>(field.resolution) * static_cast<std::size_t>(field.resolution);
     DiffractedWave out;
     out.share.assign(count, 0);
@@ -153,34 +264,26 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     if (buckets.texels.empty()) return out;
     // Rows before the first texel to fill or land are open sea: the march starts just before.
     const int start = std::max(0, buckets.first_row - 2);
-    const double x_start = frame.x0 + start * frame.spacing;
-
-    ParabolicInput in;
-    in.grid = {frame.steps - start, frame.points, frame.spacing, frame.spacing};
-    in.omega = wave.omega;
-    in.depth_row = [&](int step, std::span<float> depth) {
-        const double x = x_start + step * frame.spacing;
-        for (std::size_t j = 0; j < depth.size(); ++j)
-            depth[j] = static_cast<float>(
-                field.sample(field.depth, frame.world(x, frame.y0 + static_cast<double>(j) * frame.spacing)));
-    };
-    in.incident_amplitude = wave.amplitude;
-    in.incident_in_deep_water = true;
-    in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
-    in.sea_period = sea.mean_period;
-    in.random_sea = sea.components > 1;
-    if (in.random_sea && sea_height != nullptr)
-        in.sea_height_row = [&](int step, std::span<float> height) {
-            const double x = x_start + step * frame.spacing;
-            for (std::size_t j = 0; j < height.size(); ++j)
-                height[j] = static_cast<float>(
-                    sea_height->at(frame.world(x, frame.y0 + static_cast<double>(j) * frame.spacing)));
-        };
+    const ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, field, sea_height);
+    if (kept) {
+        *kept = {};
+        kept->start = start;
+        kept->points = frame.points;
+    }
 
     KeptRow before, after;
-    const double s = frame.spacing;
-    march_parabolic(in, [&](const ParabolicRow& row) {
+    const double least = 1e-6 * wave.amplitude;
+    ParabolicMarch march(in);
+    for (bool more = march.started(); more; more = march.advance()) {
+        const ParabolicRow row = march.row();
         after.keep(row);
+        if (kept) {
+            if (row.step % KeptMarch::kKeptRowsEvery == 0) {
+                kept->amplitude.insert(kept->amplitude.end(), row.amplitude.begin(), row.amplitude.end());
+                kept->broken.insert(kept->broken.end(), row.broken.begin(), row.broken.end());
+            }
+            if (row.step > 0) kept->substeps.push_back(static_cast<std::uint8_t>(march.substeps()));
+        }
         if (row.step > 0) {
             const int r = start + row.step - 1;  // the texels between the row before and this one
             for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
@@ -188,27 +291,171 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                 const std::size_t k = buckets.texels[at];
                 const int i = static_cast<int>(k % static_cast<std::size_t>(field.resolution)),
                           jj = static_cast<int>(k / static_cast<std::size_t>(field.resolution));
-                const glm::dvec2 p = field.texel_center(i, jj);
-                const double u = std::clamp((glm::dot(p, frame.along) - frame.x0) / s - r, 0.0, 1.0);
-                const double fy = (glm::dot(p, frame.across) - frame.y0) / s;
-                const auto j0 =
-                    static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor(fy)), 0, frame.points - 2));
-                const double v = std::clamp(fy - static_cast<double>(j0), 0.0, 1.0);
-                const double m00 = before.magnitude[j0], m01 = before.magnitude[j0 + 1];
-                const double m10 = after.magnitude[j0], m11 = after.magnitude[j0 + 1];
-                auto lerp = [&](double q00, double q01, double q10, double q11) {
-                    return (1 - u) * ((1 - v) * q00 + v * q01) + u * ((1 - v) * q10 + v * q11);
-                };
-                const double magnitude = lerp(m00, m01, m10, m11);
-                const double brk = lerp(before.broken[j0], before.broken[j0 + 1], row.broken[j0], row.broken[j0 + 1]);
-                out.share[k] = std::max({m00, m01, m10, m11}) > 1e-6 * wave.amplitude ? 255 : 0;
-                out.amplitude[k] = static_cast<float>(magnitude / wave.amplitude);
-                out.broken[k] = brk >= 0.5 ? 1 : 0;
+                const TexelFromRows t = texel_from_rows(frame, field.texel_center(i, jj), r, before, after, 0, least);
+                out.share[k] = t.reached ? 255 : 0;
+                out.amplitude[k] = static_cast<float>(t.magnitude / wave.amplitude);
+                out.broken[k] = t.broken ? 1 : 0;
             }
         }
         std::swap(before, after);
-    });
+    }
     return out;
+}
+
+/// Puts two window marches taken up from `kept` (at its point `lo`) back on its kept row
+/// n: the old one on the row (turned by the phase their row means differ by), the new one
+/// on the row plus what the two differ by. Where the old one had drifted from the row by
+/// over `drift` (its walls reflect what a whole row does not) at points where the two
+/// differ by half of that, the window is too narrow on that side: false, with the side.
+bool take_up_kept_row(const KeptMarch& kept, std::size_t n, int lo, ParabolicMarch& old_march,
+                      ParabolicMarch& new_march, double drift, bool& widen_lo, bool& widen_hi) {
+    const ParabolicRow old_row = old_march.row(), new_row = new_march.row();
+    const std::size_t width = old_row.amplitude.size();
+    const std::size_t at = n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo);
+    std::complex<double> turn_sum(0.0);
+    for (std::size_t j = 0; j < width; ++j)
+        turn_sum += std::conj(old_row.amplitude[j]) * std::complex<double>(kept.amplitude[at + j]);
+    const std::complex<double> turn = std::abs(turn_sum) > 0.0 ? turn_sum / std::abs(turn_sum) : 1.0;
+    std::vector<std::complex<double>> old_a(width), new_a(width);
+    std::vector<char> old_broken(width), new_broken(width);
+    for (std::size_t j = 0; j < width; ++j) {
+        const std::complex<double> row_a(kept.amplitude[at + j]);
+        const std::complex<double> wake = (new_row.amplitude[j] - old_row.amplitude[j]) * turn;
+        if (std::abs(row_a - old_row.amplitude[j] * turn) > drift && std::abs(wake) > 0.5 * drift) {
+            (2 * j < width ? widen_lo : widen_hi) = true;
+        }
+        old_a[j] = row_a;
+        new_a[j] = row_a + wake;
+        old_broken[j] = kept.broken[at + j];
+        new_broken[j] = new_row.broken[j] != old_row.broken[j] ? new_row.broken[j] : kept.broken[at + j];
+    }
+    if (widen_lo || widen_hi) return false;
+    old_march.reset(old_a, old_broken);
+    new_march.reset(new_a, new_broken);
+    return true;
+}
+
+DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
+                                  const ShoreField& after, const KeptMarch& kept, const WorldRect& changed,
+                                  const std::function<bool(std::size_t)>& keep, double tolerance,
+                                  const SeaHeight* sea_before, const SeaHeight* sea_after) {
+    DiffractionChange out;
+    if (kept.rows() == 0 || !(wave.amplitude > 0.0)) return out;
+    const MarchFrame frame = march_frame(wave, after);
+    if (frame.points != kept.points) return out;
+    // The edit's reach in the frame's rows and points (an infinite side reaches the grid's end).
+    double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
+    for (const glm::dvec2 c :
+         {changed.lo, glm::dvec2(changed.hi.x, changed.lo.y), glm::dvec2(changed.lo.x, changed.hi.y), changed.hi}) {
+        const glm::dvec2 clamped =
+            glm::clamp(c, after.corner, after.corner + glm::dvec2(after.texel * after.resolution));
+        const double x = (glm::dot(clamped, frame.along) - frame.x0) / frame.spacing;
+        const double y = (glm::dot(clamped, frame.across) - frame.y0) / frame.spacing;
+        x_lo = std::min(x_lo, x);
+        x_hi = std::max(x_hi, x);
+        y_lo = std::min(y_lo, y);
+        y_hi = std::max(y_hi, y);
+    }
+    const int last_kept = kept.start + KeptMarch::kKeptRowsEvery * (static_cast<int>(kept.rows()) - 1);
+    // Before the march's first row the depths are not read (open sea).
+    if (x_hi + 1.0 < kept.start) return out;
+    // Taken up again at the last kept row at least a row before the edit.
+    const int edit_row = std::max(kept.start, static_cast<int>(std::floor(x_lo)) - 1);
+    const int n_kept = std::min(static_cast<int>(kept.rows()) - 1, (edit_row - kept.start) / KeptMarch::kKeptRowsEvery);
+    const int r0 = std::min(last_kept, kept.start + KeptMarch::kKeptRowsEvery * n_kept);
+    // Points a side of the edit to begin with, and the band at each side whose difference is watched.
+    constexpr int kFirstMargin = 8, kSide = 3;
+    // The two agree to this (over the tolerance) for this many rows: the edit's wake has died out.
+    constexpr double kQuiet = 1e-4;
+    constexpr int kQuietRows = 64;
+    int lo = std::max(0, static_cast<int>(std::floor(y_lo)) - kFirstMargin);
+    int hi = std::min(frame.points - 1, static_cast<int>(std::ceil(y_hi)) + kFirstMargin);
+    const double amplitude = wave.amplitude, least = 1e-6 * amplitude;
+    const double side_limit = 0.5 * tolerance * amplitude;
+    const std::size_t row_at = static_cast<std::size_t>(n_kept) * static_cast<std::size_t>(kept.points);
+
+    for (;;) {
+        ++out.windows;
+        out.texels.clear();
+        out.amplitude_change.clear();
+        out.share.clear();
+        out.broken.clear();
+        const int width = hi - lo + 1;
+        std::vector<std::complex<double>> entering(static_cast<std::size_t>(width));
+        for (int j = 0; j < width; ++j)
+            entering[static_cast<std::size_t>(j)] =
+                std::complex<double>(kept.amplitude[row_at + static_cast<std::size_t>(lo + j)]);
+        const std::span<const char> entering_broken(kept.broken.data() + row_at + lo, static_cast<std::size_t>(width));
+        ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, before, sea_before);
+        ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, after, sea_after);
+        old_in.entering_amplitude = new_in.entering_amplitude = entering;
+        old_in.entering_broken = new_in.entering_broken = entering_broken;
+        old_in.least_substeps = new_in.least_substeps = [&](int step) {
+            const auto at = static_cast<std::size_t>(r0 - kept.start + step);
+            return at < kept.substeps.size() ? static_cast<int>(kept.substeps[at]) : 1;
+        };
+        // The texels whose point across lies a side's band inside the walls.
+        const RowBuckets buckets = bucket_window(after, frame, r0, lo == 0 ? 0 : lo + kSide,
+                                                 hi == frame.points - 1 ? hi - 1 : hi - kSide - 1, keep);
+        ParabolicMarch old_march(old_in), new_march(new_in);
+        KeptRow old_before, old_after, new_before, new_after;
+        old_before.keep(old_march.row());
+        new_before.keep(new_march.row());
+        bool widen_lo = false, widen_hi = false;
+        int quiet = 0;
+        while (old_march.advance() && new_march.advance()) {
+            out.points_visited += 2 * static_cast<std::size_t>(width);
+            // On a kept row the old march is put back on the march over the whole row (its
+            // walls have drifted it), and the new one with it, by what the two differ.
+            const int row_of_frame = r0 + old_march.row().step;
+            if ((row_of_frame - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
+                const auto n = static_cast<std::size_t>((row_of_frame - kept.start) / KeptMarch::kKeptRowsEvery);
+                if (n < kept.rows() &&
+                    !take_up_kept_row(kept, n, lo, old_march, new_march, tolerance * amplitude, widen_lo, widen_hi))
+                    break;
+            }
+            old_after.keep(old_march.row());
+            new_after.keep(new_march.row());
+            double largest = 0.0;
+            bool same_breaking = true;
+            for (int j = 0; j < width; ++j) {
+                const auto ju = static_cast<std::size_t>(j);
+                const double d = std::abs(new_after.magnitude[ju] - old_after.magnitude[ju]);
+                largest = std::max(largest, d);
+                same_breaking = same_breaking && new_after.broken[ju] == old_after.broken[ju];
+                if (d > side_limit || new_after.broken[ju] != old_after.broken[ju]) {
+                    widen_lo = widen_lo || (lo > 0 && j < kSide);
+                    widen_hi = widen_hi || (hi < frame.points - 1 && j >= width - kSide);
+                }
+            }
+            if (widen_lo || widen_hi) break;
+            const int r = old_march.row().step - 1;  // of the window's march; r0 + r of the frame
+            for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
+                 at < buckets.offsets[static_cast<std::size_t>(r) + 1]; ++at) {
+                const std::uint32_t k = buckets.texels[at];
+                const int i = static_cast<int>(k % static_cast<std::uint32_t>(after.resolution)),
+                          jj = static_cast<int>(k / static_cast<std::uint32_t>(after.resolution));
+                const glm::dvec2 p = after.texel_center(i, jj);
+                const TexelFromRows was = texel_from_rows(frame, p, r0 + r, old_before, old_after, lo, least);
+                const TexelFromRows is = texel_from_rows(frame, p, r0 + r, new_before, new_after, lo, least);
+                const double change = (is.magnitude - was.magnitude) / amplitude;
+                if (std::abs(change) <= tolerance && is.reached == was.reached && is.broken == was.broken) continue;
+                out.texels.push_back(k);
+                out.amplitude_change.push_back(static_cast<float>(change));
+                out.share.push_back(is.reached ? 255 : 0);
+                out.broken.push_back(is.broken ? 1 : 0);
+            }
+            std::swap(old_before, old_after);
+            std::swap(new_before, new_after);
+            quiet = largest < kQuiet * tolerance * amplitude && same_breaking ? quiet + 1 : 0;
+            if (quiet >= kQuietRows && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1) break;
+        }
+        if (!widen_lo && !widen_hi) return out;
+        // Each window marched again from r0: widened by twice its width a side, the windows
+        // tried cost about half the last one more.
+        if (widen_lo) lo = std::max(0, lo - 2 * width);
+        if (widen_hi) hi = std::min(frame.points - 1, hi + 2 * width);
+    }
 }
 
 double SeaHeight::at(glm::dvec2 p) const {

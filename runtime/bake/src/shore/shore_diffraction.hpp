@@ -8,6 +8,7 @@
 // texel field cannot pass from one to the other without a crease. Private to the bake.
 #pragma once
 
+#include <complex>
 #include <cstdint>
 #include <functional>
 #include <glm/vec2.hpp>
@@ -15,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/waves.hpp"
 
@@ -55,11 +57,61 @@ struct SeaHeight {
 };
 SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field);
 
+/// The rows a wave's march keeps, so that it can be taken up again after an edit of the
+/// depth instead of marched from the start: its state (complex amplitude and breaking at
+/// every point across) every kKeptRowsEvery rows from its first, and the substeps it took
+/// from each row. Empty where the march did not run (no amplitude, a wave left to the
+/// rays, nothing to fill).
+struct KeptMarch {
+    static constexpr int kKeptRowsEvery = 32;
+    int start = 0;                               ///< the march's first row, of its frame
+    int points = 0;                              ///< across a row
+    std::vector<std::complex<float>> amplitude;  ///< kept row n (row start + n * every) at n * points
+    std::vector<char> broken;
+    /// The substeps the march took from each row (from `start`) to the next.
+    std::vector<std::uint8_t> substeps;
+    std::size_t rows() const { return points > 0 ? amplitude.size() / static_cast<std::size_t>(points) : 0; }
+    std::size_t bytes() const { return amplitude.size() * sizeof(amplitude[0]) + broken.size() + substeps.size(); }
+};
+
 /// Marches `wave` over `field` along its direction; texels where `keep` holds (deep water,
 /// where the open sea's fields stand) and land are left at share 0. With `sea_height`,
-/// the component breaks at the sea's marched height (a random sea).
+/// the component breaks at the sea's marched height (a random sea). With `kept`, the
+/// march's rows are kept there (KeptMarch).
 DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
-                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height = nullptr);
+                             const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height = nullptr,
+                             KeptMarch* kept = nullptr);
+
+/// What an edit of the depth under the water changes in a wave's march: the texels where
+/// the march's amplitude factor moved by over the tolerance, or its reach or breaking
+/// changed, with the change and what the march gives there now.
+struct DiffractionChange {
+    std::vector<std::uint32_t> texels;    ///< grid indices
+    std::vector<float> amplitude_change;  ///< the amplitude factor's change (over the open-sea amplitude)
+    std::vector<std::uint8_t> share;      ///< 255 where the march reaches the texel after the edit, else 0
+    std::vector<std::uint8_t> broken;     ///< whether the wave is broken there after the edit
+    std::size_t points_visited = 0;       ///< points the re-marches visited, both depths and every window tried
+    int windows = 0;                      ///< windows marched (one more each time it was widened)
+};
+
+/// A change is left out under this (the amplitude factor, over the open-sea amplitude):
+/// about the half precision the model holds amplitudes in.
+inline constexpr double kMarchAmplitudeTolerance = 1e-3;
+
+/// `wave`'s march over `after`, taken up again from its rows kept over `before` (the same
+/// grid, depths that differ only in `changed`): from the last kept row before the edit it
+/// is marched over the old and the new depths side by side in a window across the march
+/// round the edit, and what the two differ by is the change. The sides of the window are
+/// walls for both; where the two differ by over half the tolerance at a side the window
+/// is widened and marched again, so what the walls reflect stays under it. The march
+/// stops where the two have agreed to far under the tolerance for a while (the edit's
+/// wake has died out) or at the grid's end. `keep`, `sea_before` and `sea_after` as
+/// diffract_wave's (the sea's heights over each depth).
+DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
+                                  const ShoreField& after, const KeptMarch& kept, const WorldRect& changed,
+                                  const std::function<bool(std::size_t)>& keep,
+                                  double tolerance = kMarchAmplitudeTolerance, const SeaHeight* sea_before = nullptr,
+                                  const SeaHeight* sea_after = nullptr);
 
 /// The march holds a wave's amplitude fully within this angle of its direction and not
 /// past the second (the small-angle form's wavenumber along the march is 1.6 % off at 35

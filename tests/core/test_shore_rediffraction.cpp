@@ -1,0 +1,132 @@
+// A wave's march taken up again after an edit of the seabed (shore_diffraction.hpp,
+// rediffract_wave): from the rows the first march kept, over the old and the new depths
+// side by side in a window round the edit, widened until what its walls reflect stays
+// under the tolerance. Checked against a full march over the new depths: the first
+// march's amplitude plus the change is within the tolerance of it at every texel, the
+// texels it leaves out did not move by more, and the window visits a small part of what
+// a full march does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+
+#include "shore/shore_diffraction.hpp"
+#include "tidewater/constants.hpp"
+
+namespace tidewater::detail {
+namespace {
+
+constexpr int kN = 512;
+constexpr double kTexel = 2.0;  // a 1024 m square
+
+/// A plane beach rising along +z from 12 m of water to 4 m of land, with a shoal of
+/// `shoal` m (a Gaussian 8 m wide: a brush stroke) at `at` (x, z).
+ShoreField beach(double shoal, glm::dvec2 at = glm::dvec2(500.0, 440.0)) {
+    ShoreField f;
+    f.resolution = kN;
+    f.texel = kTexel;
+    f.corner = glm::dvec2(0.0);
+    std::vector<float>& depth = f.depth.write();
+    depth.resize(static_cast<std::size_t>(kN) * kN);
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const glm::dvec2 p = f.texel_center(i, j);
+            const double r2 = glm::dot(p - at, p - at);
+            depth[f.index(i, j)] = static_cast<float>(12.0 - 16.0 * p.y / 1024.0 - shoal * std::exp(-r2 / (8.0 * 8.0)));
+        }
+    return f;
+}
+
+/// A wave 40 m long in deep water, 0.4 m high, heading 20 degrees off +z: it breaks on the beach.
+Wave wave() {
+    Wave w;
+    const double angle = 20.0 * kPi / 180.0;
+    w.dir_x = std::sin(angle);
+    w.dir_z = std::cos(angle);
+    w.k = kTwoPi / 40.0;
+    w.omega = std::sqrt(kGravity * w.k);
+    w.amplitude = 0.2;
+    return w;
+}
+
+/// A shoal of `shoal` m at `at` re-marched from the march over the plane beach: its change
+/// added to the first march against a full march over the new depths. The points the
+/// re-marches visited over what two full marches from the first row do.
+double remarched_shoal(double shoal, glm::dvec2 at) {
+    const ShoreField before = beach(0.0, at), after = beach(shoal, at);
+    const Wave w = wave();
+    const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
+    const auto fill_all = [](std::size_t) { return false; };
+    KeptMarch kept;
+    const DiffractedWave old_march = diffract_wave(w, sea, before, fill_all, nullptr, &kept);
+    const DiffractedWave new_march = diffract_wave(w, sea, after, fill_all);
+    EXPECT_GT(kept.rows(), 2u);
+
+    // Where the shoal's depths differ from the plane's by over a millimetre.
+    const WorldRect changed{at - 30.0, at + 30.0};
+    const DiffractionChange change = rediffract_wave(w, sea, before, after, kept, changed, fill_all);
+
+    std::vector<float> amplitude = old_march.amplitude;
+    std::vector<std::uint8_t> share = old_march.share, broken = old_march.broken;
+    for (std::size_t c = 0; c < change.texels.size(); ++c) {
+        amplitude[change.texels[c]] += change.amplitude_change[c];
+        share[change.texels[c]] = change.share[c];
+        broken[change.texels[c]] = change.broken[c];
+    }
+    double worst = 0.0, largest_change = 0.0;
+    std::size_t moved = 0, reached_differs = 0, broken_differs = 0;
+    for (std::size_t k = 0; k < amplitude.size(); ++k) {
+        worst = std::max(worst, static_cast<double>(std::abs(amplitude[k] - new_march.amplitude[k])));
+        largest_change =
+            std::max(largest_change, static_cast<double>(std::abs(new_march.amplitude[k] - old_march.amplitude[k])));
+        moved += std::abs(new_march.amplitude[k] - old_march.amplitude[k]) > kMarchAmplitudeTolerance ? 1 : 0;
+        reached_differs += share[k] != new_march.share[k] ? 1 : 0;
+        broken_differs += broken[k] != new_march.broken[k] ? 1 : 0;
+    }
+    // Both depths marched in full from the first row: the frame is a square turned with the wave.
+    const std::size_t full =
+        2 * static_cast<std::size_t>(kept.points) * static_cast<std::size_t>(kept.points - kept.start);
+    std::printf(
+        "shoal %.1f m at (%.0f, %.0f): texels changed %zu (moved over the tolerance in a full march: %zu), largest "
+        "change %.3f, worst "
+        "error %.2e, windows %d, points visited %zu of %zu\n",
+        shoal, at.x, at.y, change.texels.size(), moved, largest_change, worst, change.windows, change.points_visited,
+        full);
+    EXPECT_GT(largest_change, 0.05);  // the shoal focuses the wave
+    EXPECT_GT(change.texels.size(), moved / 2);
+    EXPECT_LT(worst, 2.0 * kMarchAmplitudeTolerance);
+    EXPECT_EQ(reached_differs, 0u);
+    // Where a texel's blend sits at a half, the two marches may break a row apart.
+    EXPECT_LT(broken_differs, moved / 100 + 5);
+    return static_cast<double>(change.points_visited) / static_cast<double>(full);
+}
+
+TEST(ShoreRediffraction, AnEditsChangeAddedToTheFirstMarchIsTheMarchOverTheNewDepths) {
+    // 2 m on 5 m of water, 290 m off the shoreline: the shoal's wake (over 1e-3) fans out
+    // over most of the beach downwave, and the window with it. The march is taken up at
+    // the kept row before the edit: the two marches cost under 3/4 of two in full.
+    EXPECT_LT(remarched_shoal(2.0, {500.0, 440.0}), 0.75);
+    // Half a metre on 1.7 m of water, 80 m off it: its wake is narrow, but the walls'
+    // drift in the surf zone widens the window to the whole row there.
+    EXPECT_LT(remarched_shoal(0.5, {500.0, 660.0}), 0.5);
+}
+
+TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {
+    const ShoreField before = beach(0.0);
+    ShoreField after = before;
+    const Wave w = wave();
+    const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
+    // Every texel under 11 m is filled: the march starts just before them.
+    const auto deep = [&](std::size_t k) { return before.depth[k] > 11.0f; };
+    KeptMarch kept;
+    diffract_wave(w, sea, before, deep, nullptr, &kept);
+    ASSERT_GT(kept.rows(), 0u);
+    const DiffractionChange change =
+        rediffract_wave(w, sea, before, after, kept, WorldRect{{-1e300, -1e300}, {1e300, 1e300}}, deep);
+    EXPECT_TRUE(change.texels.empty());
+    EXPECT_EQ(change.windows, 1);
+}
+
+}  // namespace
+}  // namespace tidewater::detail
