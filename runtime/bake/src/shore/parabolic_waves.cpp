@@ -214,12 +214,24 @@ class Marcher {
         return std::clamp(static_cast<int>(std::ceil(dx / finest - 1e-9)), 1, kMostSubsteps);
     }
 
-    void advance(const RowMedium& here, const RowMedium& next, double dx);
+    /// A window's first and last points held at a longer march's values (MarchColumns):
+    /// its amplitude there (`lo`, `hi`: held) and breaking, with the phase it carries.
+    struct Sides {
+        bool lo = false, hi = false;
+        Complex a_lo, a_hi;
+        char broken_lo = 0, broken_hi = 0;
+        double phase = 0.0;
+    };
+
+    void advance(const RowMedium& here, const RowMedium& next, double dx, const Sides* sides = nullptr);
 
     /// The sea's rms height along the row the next step leaves (empty: none given).
     std::vector<float> sea_height;
     std::vector<Complex> a;
     std::vector<char> broken;
+    /// The phase common to the row (the rows' mean wavenumbers over water, integrated):
+    /// A carries exp(-i phase) beside its own.
+    double phase = 0.0;
 
   private:
     /// The half step's turn of point j: the phase against the row's mean wavenumber, and
@@ -287,7 +299,7 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
     return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
 }
 
-void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
+void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx, const Sides* sides) {
     const std::size_t un = n_;
     const double dy2 = in_.grid.dy * in_.grid.dy;
     // The row's mean wavenumber over its water carries the fast phase: A varies slowly.
@@ -303,6 +315,7 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
         }
     }
     const double k_bar = wet > 0 ? k_sum / wet : k_deep_;
+    phase += k_bar * dx;
     // A_x = (i (k - k_bar) - s) A + R A, R = i / (2 k) L, L A = (p A_y)_y / p (walls at
     // the sides), split (Strang): the phase and the growth or decay taken exactly over
     // each half step, whatever the step against the wavelength or the surf zone's decay
@@ -331,8 +344,21 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx) {
         if (j + 1 < un) sum += beta * l_hi * a[j + 1];
         rhs_[j] = sum;
     }
+    if (sides) {
+        // Held: the longer march's value, turned from its common phase to this one's.
+        const Complex turn = std::polar(1.0, sides->phase - phase);
+        auto hold = [&](std::size_t j, Complex value) {
+            lower_[j] = upper_[j] = 0.0;
+            diag_[j] = 1.0;
+            rhs_[j] = value * turn / half_turn_[j];
+        };
+        if (sides->lo) hold(0, sides->a_lo);
+        if (sides->hi) hold(un - 1, sides->a_hi);
+    }
     solve_tridiagonal(lower_, diag_, upper_, rhs_);
     for (std::size_t j = 0; j < un; ++j) a[j] = rhs_[j] * half_turn_[j];
+    if (sides && sides->lo) broken[0] = sides->broken_lo;
+    if (sides && sides->hi) broken[un - 1] = sides->broken_hi;
 }
 
 }  // namespace
@@ -343,6 +369,7 @@ struct ParabolicMarch::State {
     Marcher marcher;
     std::vector<float> here_depths, next_depths, between;
     RowMedium here, next, from, to;
+    std::size_t advances = 0;  ///< taken so far, the entry counted as the first
 };
 
 ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
@@ -357,19 +384,32 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
     if (!in.entering_amplitude.empty()) {
         std::copy(in.entering_amplitude.begin(), in.entering_amplitude.end(), s.marcher.a.begin());
         std::copy(in.entering_broken.begin(), in.entering_broken.end(), s.marcher.broken.begin());
+        s.marcher.phase = in.entering_phase;
     }
     if (in.sea_height_row) s.marcher.sea_height.resize(un);
+    if (MarchColumns* c = in.keep_columns) {
+        c->count = (un - 1) / static_cast<std::size_t>(c->every) + 1;
+        keep_columns();
+        c->row_last.push_back(0);
+    }
 }
 
 ParabolicMarch::~ParabolicMarch() = default;
 
-void ParabolicMarch::reset(std::span<const std::complex<double>> amplitude, std::span<const char> broken) {
-    std::copy(amplitude.begin(), amplitude.end(), state_->marcher.a.begin());
-    std::copy(broken.begin(), broken.end(), state_->marcher.broken.begin());
-}
-
 ParabolicRow ParabolicMarch::row() const {
     return {step_, state_->marcher.a, state_->marcher.broken};
+}
+
+void ParabolicMarch::keep_columns() {
+    State& s = *state_;
+    MarchColumns& c = *in_.keep_columns;
+    for (std::size_t k = 0; k < c.count; ++k) {
+        const std::size_t j = k * static_cast<std::size_t>(c.every);
+        c.amplitude.emplace_back(s.marcher.a[j]);
+        c.broken.push_back(s.marcher.broken[j]);
+    }
+    c.phase.push_back(s.marcher.phase);
+    ++s.advances;
 }
 
 bool ParabolicMarch::advance() {
@@ -381,11 +421,36 @@ bool ParabolicMarch::advance() {
     in_.depth_row(step_ + 1, s.next_depths);
     fill_row_medium(in_, s.next_depths, s.next);
     const double dx = in_.grid.dx;
+    // A window steps as the march it is a window of did, its sides held at that march's.
+    const MarchColumns* held = in_.sides;
+    std::size_t first_held = 0;
     int parts = m.substeps(s.here, dx);
-    if (in_.least_substeps) parts = std::clamp(in_.least_substeps(step_), parts, kMostSubsteps);
+    if (held) {
+        const auto row = static_cast<std::size_t>(in_.sides_first_row + step_);
+        first_held = held->row_last[row] + 1;
+        parts = static_cast<int>(held->row_last[row + 1] - held->row_last[row]);
+    }
+    Marcher::Sides sides;
+    auto sides_at = [&](int part) -> const Marcher::Sides* {
+        if (!held) return nullptr;
+        const std::size_t t = first_held + static_cast<std::size_t>(part);
+        sides.lo = in_.side_lo != ParabolicInput::kNoSide;
+        sides.hi = in_.side_hi != ParabolicInput::kNoSide;
+        if (sides.lo) {
+            sides.a_lo = Complex(held->amplitude[t * held->count + in_.side_lo]);
+            sides.broken_lo = held->broken[t * held->count + in_.side_lo];
+        }
+        if (sides.hi) {
+            sides.a_hi = Complex(held->amplitude[t * held->count + in_.side_hi]);
+            sides.broken_hi = held->broken[t * held->count + in_.side_hi];
+        }
+        sides.phase = held->phase[t];
+        return &sides;
+    };
     substeps_ = parts;
     if (parts == 1) {
-        m.advance(s.here, s.next, dx);
+        m.advance(s.here, s.next, dx, sides_at(0));
+        if (in_.keep_columns) keep_columns();
     } else {
         // Substeps through depths between the rows' (linearly).
         s.from = s.here;
@@ -394,11 +459,14 @@ bool ParabolicMarch::advance() {
             for (std::size_t j = 0; j < un; ++j)
                 s.between[j] = s.here_depths[j] + t * (s.next_depths[j] - s.here_depths[j]);
             fill_row_medium(in_, s.between, s.to);
-            m.advance(s.from, s.to, dx / parts);
+            m.advance(s.from, s.to, dx / parts, sides_at(part - 1));
+            if (in_.keep_columns) keep_columns();
             std::swap(s.from, s.to);
         }
-        m.advance(s.from, s.next, dx / parts);
+        m.advance(s.from, s.next, dx / parts, sides_at(parts - 1));
+        if (in_.keep_columns) keep_columns();
     }
+    if (in_.keep_columns) in_.keep_columns->row_last.push_back(static_cast<std::uint32_t>(s.advances - 1));
     std::swap(s.here, s.next);
     std::swap(s.here_depths, s.next_depths);
     ++step_;

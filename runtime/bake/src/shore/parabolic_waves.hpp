@@ -13,6 +13,7 @@
 #pragma once
 
 #include <complex>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
@@ -35,6 +36,23 @@ struct ParabolicGrid {
 struct SurfZone {
     double decay = 0.15;        ///< K
     double stable_index = 0.4;  ///< Gamma
+};
+
+/// A march's state at every `every`-th point (0, every, 2 every, ...), kept after each
+/// of its advances (a row's substeps each), so that a window of it can be marched again
+/// later with these as its sides. The amplitudes carry a phase common to the whole row
+/// (the rows' mean wavenumbers, integrated), kept with them: a window's own differs.
+struct MarchColumns {
+    int every = 0;                               ///< set by the caller
+    std::size_t count = 0;                       ///< columns a row
+    std::vector<std::complex<float>> amplitude;  ///< advance t's column c at t * count + c
+    std::vector<char> broken;
+    std::vector<double> phase;            ///< per advance, the phase common to its row
+    std::vector<std::uint32_t> row_last;  ///< per row, the advance that ends on it (row 0: advance 0, its entry)
+    std::size_t bytes() const {
+        return amplitude.size() * sizeof(amplitude[0]) + broken.size() + phase.size() * sizeof(double) +
+               row_last.size() * sizeof(std::uint32_t);
+    }
 };
 
 /// What a march reads: the grid, the wave, its depth row by row, and the physics it keeps.
@@ -63,13 +81,23 @@ struct ParabolicInput {
     /// nonlinearly at the sea's own height, not at its own estimate of it.
     std::function<void(int step, std::span<float> height)> sea_height_row;
     /// Where given (`across` values each), the march starts on its first row from this
-    /// state instead of the incident wave: a march taken up again from a row it kept.
+    /// state instead of the incident wave, carrying `entering_phase` (MarchColumns): a
+    /// march taken up again from a row it kept.
     std::span<const std::complex<double>> entering_amplitude;
     std::span<const char> entering_broken;
-    /// Where given, the least substeps the step from row `step` takes (more where the
-    /// march's own rule asks): a window taken up again steps as the march over the
-    /// whole row did, whose rule looked at every point of the row.
-    std::function<int(int step)> least_substeps;
+    double entering_phase = 0.0;
+    /// Where given, the march keeps its state at every `every`-th point there after each
+    /// advance (MarchColumns).
+    MarchColumns* keep_columns = nullptr;
+    /// Where given, this march is a window of the march that kept `sides`, taken up at
+    /// its row `sides_first_row`: it steps as that march did (its substeps), and its first
+    /// and last points are held at that march's values at kept columns `side_lo` and
+    /// `side_hi` (kNoSide: a wall, the longer march's own), so that over the same depths
+    /// the window reproduces that march.
+    const MarchColumns* sides = nullptr;
+    static constexpr std::size_t kNoSide = static_cast<std::size_t>(-1);
+    std::size_t side_lo = kNoSide, side_hi = kNoSide;
+    int sides_first_row = 0;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation
     bool nonlinear_shoaling = true;    ///< false: linear shoaling only
@@ -100,13 +128,12 @@ class ParabolicMarch {
     ParabolicRow row() const;
     /// Steps to the next row; false (and stays) at the last.
     bool advance();
-    /// Puts the state on the row the march is on in place of its own (`across` values each).
-    void reset(std::span<const std::complex<double>> amplitude, std::span<const char> broken);
     /// The substeps the last advance took (0 before the first).
     int substeps() const { return substeps_; }
 
   private:
     struct State;
+    void keep_columns();
     const ParabolicInput& in_;
     int step_ = 0, substeps_ = 0;
     std::unique_ptr<State> state_;

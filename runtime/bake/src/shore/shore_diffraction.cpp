@@ -264,11 +264,13 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     if (buckets.texels.empty()) return out;
     // Rows before the first texel to fill or land are open sea: the march starts just before.
     const int start = std::max(0, buckets.first_row - 2);
-    const ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, field, sea_height);
+    ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, field, sea_height);
     if (kept) {
         *kept = {};
         kept->start = start;
         kept->points = frame.points;
+        kept->columns.every = KeptMarch::kKeptPointsEvery;
+        in.keep_columns = &kept->columns;
     }
 
     KeptRow before, after;
@@ -277,12 +279,9 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     for (bool more = march.started(); more; more = march.advance()) {
         const ParabolicRow row = march.row();
         after.keep(row);
-        if (kept) {
-            if (row.step % KeptMarch::kKeptRowsEvery == 0) {
-                kept->amplitude.insert(kept->amplitude.end(), row.amplitude.begin(), row.amplitude.end());
-                kept->broken.insert(kept->broken.end(), row.broken.begin(), row.broken.end());
-            }
-            if (row.step > 0) kept->substeps.push_back(static_cast<std::uint8_t>(march.substeps()));
+        if (kept && row.step % KeptMarch::kKeptRowsEvery == 0) {
+            kept->amplitude.insert(kept->amplitude.end(), row.amplitude.begin(), row.amplitude.end());
+            kept->broken.insert(kept->broken.end(), row.broken.begin(), row.broken.end());
         }
         if (row.step > 0) {
             const int r = start + row.step - 1;  // the texels between the row before and this one
@@ -300,39 +299,6 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
         std::swap(before, after);
     }
     return out;
-}
-
-/// Puts two window marches taken up from `kept` (at its point `lo`) back on its kept row
-/// n: the old one on the row (turned by the phase their row means differ by), the new one
-/// on the row plus what the two differ by. Where the old one had drifted from the row by
-/// over `drift` (its walls reflect what a whole row does not) at points where the two
-/// differ by half of that, the window is too narrow on that side: false, with the side.
-bool take_up_kept_row(const KeptMarch& kept, std::size_t n, int lo, ParabolicMarch& old_march,
-                      ParabolicMarch& new_march, double drift, bool& widen_lo, bool& widen_hi) {
-    const ParabolicRow old_row = old_march.row(), new_row = new_march.row();
-    const std::size_t width = old_row.amplitude.size();
-    const std::size_t at = n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo);
-    std::complex<double> turn_sum(0.0);
-    for (std::size_t j = 0; j < width; ++j)
-        turn_sum += std::conj(old_row.amplitude[j]) * std::complex<double>(kept.amplitude[at + j]);
-    const std::complex<double> turn = std::abs(turn_sum) > 0.0 ? turn_sum / std::abs(turn_sum) : 1.0;
-    std::vector<std::complex<double>> old_a(width), new_a(width);
-    std::vector<char> old_broken(width), new_broken(width);
-    for (std::size_t j = 0; j < width; ++j) {
-        const std::complex<double> row_a(kept.amplitude[at + j]);
-        const std::complex<double> wake = (new_row.amplitude[j] - old_row.amplitude[j]) * turn;
-        if (std::abs(row_a - old_row.amplitude[j] * turn) > drift && std::abs(wake) > 0.5 * drift) {
-            (2 * j < width ? widen_lo : widen_hi) = true;
-        }
-        old_a[j] = row_a;
-        new_a[j] = row_a + wake;
-        old_broken[j] = kept.broken[at + j];
-        new_broken[j] = new_row.broken[j] != old_row.broken[j] ? new_row.broken[j] : kept.broken[at + j];
-    }
-    if (widen_lo || widen_hi) return false;
-    old_march.reset(old_a, old_broken);
-    new_march.reset(new_a, new_broken);
-    return true;
 }
 
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
@@ -363,13 +329,17 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
     const int edit_row = std::max(kept.start, static_cast<int>(std::floor(x_lo)) - 1);
     const int n_kept = std::min(static_cast<int>(kept.rows()) - 1, (edit_row - kept.start) / KeptMarch::kKeptRowsEvery);
     const int r0 = std::min(last_kept, kept.start + KeptMarch::kKeptRowsEvery * n_kept);
-    // Points a side of the edit to begin with, and the band at each side whose difference is watched.
-    constexpr int kFirstMargin = 8, kSide = 3;
+    const MarchColumns& columns = kept.columns;
+    const double entering_phase = columns.phase[columns.row_last[static_cast<std::size_t>(r0 - kept.start)]];
+    // The window's sides on kept columns, at least this many points from the edit; the
+    // points next to each side whose difference is watched.
+    constexpr int every = KeptMarch::kKeptPointsEvery, kSide = 3;
     // The two agree to this (over the tolerance) for this many rows: the edit's wake has died out.
     constexpr double kQuiet = 1e-4;
     constexpr int kQuietRows = 64;
-    int lo = std::max(0, static_cast<int>(std::floor(y_lo)) - kFirstMargin);
-    int hi = std::min(frame.points - 1, static_cast<int>(std::ceil(y_hi)) + kFirstMargin);
+    const int last_column = static_cast<int>(columns.count) - 1;
+    int column_lo = std::max(0, (static_cast<int>(std::floor(y_lo)) - kSide) / every - 1);
+    int column_hi = std::min(last_column, (static_cast<int>(std::ceil(y_hi)) + kSide) / every + 2);
     const double amplitude = wave.amplitude, least = 1e-6 * amplitude;
     const double side_limit = 0.5 * tolerance * amplitude;
     const std::size_t row_at = static_cast<std::size_t>(n_kept) * static_cast<std::size_t>(kept.points);
@@ -380,6 +350,9 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         out.amplitude_change.clear();
         out.share.clear();
         out.broken.clear();
+        // A side past the last kept column is the march's own wall.
+        const bool wall_hi = column_hi == last_column && last_column * every < frame.points - 1;
+        const int lo = column_lo * every, hi = wall_hi ? frame.points - 1 : column_hi * every;
         const int width = hi - lo + 1;
         std::vector<std::complex<double>> entering(static_cast<std::size_t>(width));
         for (int j = 0; j < width; ++j)
@@ -388,15 +361,19 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         const std::span<const char> entering_broken(kept.broken.data() + row_at + lo, static_cast<std::size_t>(width));
         ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, before, sea_before);
         ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, after, sea_after);
-        old_in.entering_amplitude = new_in.entering_amplitude = entering;
-        old_in.entering_broken = new_in.entering_broken = entering_broken;
-        old_in.least_substeps = new_in.least_substeps = [&](int step) {
-            const auto at = static_cast<std::size_t>(r0 - kept.start + step);
-            return at < kept.substeps.size() ? static_cast<int>(kept.substeps[at]) : 1;
-        };
-        // The texels whose point across lies a side's band inside the walls.
-        const RowBuckets buckets = bucket_window(after, frame, r0, lo == 0 ? 0 : lo + kSide,
-                                                 hi == frame.points - 1 ? hi - 1 : hi - kSide - 1, keep);
+        for (ParabolicInput* in : {&old_in, &new_in}) {
+            in->entering_amplitude = entering;
+            in->entering_broken = entering_broken;
+            in->entering_phase = entering_phase;
+            in->sides = &columns;
+            in->sides_first_row = r0 - kept.start;
+            in->side_lo = lo > 0 ? static_cast<std::size_t>(column_lo) : ParabolicInput::kNoSide;
+            in->side_hi =
+                wall_hi || hi == frame.points - 1 ? ParabolicInput::kNoSide : static_cast<std::size_t>(column_hi);
+        }
+        const bool held_lo = old_in.side_lo != ParabolicInput::kNoSide,
+                   held_hi = old_in.side_hi != ParabolicInput::kNoSide;
+        const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
         ParabolicMarch old_march(old_in), new_march(new_in);
         KeptRow old_before, old_after, new_before, new_after;
         old_before.keep(old_march.row());
@@ -405,15 +382,6 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         int quiet = 0;
         while (old_march.advance() && new_march.advance()) {
             out.points_visited += 2 * static_cast<std::size_t>(width);
-            // On a kept row the old march is put back on the march over the whole row (its
-            // walls have drifted it), and the new one with it, by what the two differ.
-            const int row_of_frame = r0 + old_march.row().step;
-            if ((row_of_frame - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
-                const auto n = static_cast<std::size_t>((row_of_frame - kept.start) / KeptMarch::kKeptRowsEvery);
-                if (n < kept.rows() &&
-                    !take_up_kept_row(kept, n, lo, old_march, new_march, tolerance * amplitude, widen_lo, widen_hi))
-                    break;
-            }
             old_after.keep(old_march.row());
             new_after.keep(new_march.row());
             double largest = 0.0;
@@ -424,8 +392,8 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 largest = std::max(largest, d);
                 same_breaking = same_breaking && new_after.broken[ju] == old_after.broken[ju];
                 if (d > side_limit || new_after.broken[ju] != old_after.broken[ju]) {
-                    widen_lo = widen_lo || (lo > 0 && j < kSide);
-                    widen_hi = widen_hi || (hi < frame.points - 1 && j >= width - kSide);
+                    widen_lo = widen_lo || (held_lo && j <= kSide);
+                    widen_hi = widen_hi || (held_hi && j >= width - 1 - kSide);
                 }
             }
             if (widen_lo || widen_hi) break;
@@ -451,10 +419,10 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             if (quiet >= kQuietRows && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1) break;
         }
         if (!widen_lo && !widen_hi) return out;
-        // Each window marched again from r0: widened by twice its width a side, the windows
-        // tried cost about half the last one more.
-        if (widen_lo) lo = std::max(0, lo - 2 * width);
-        if (widen_hi) hi = std::min(frame.points - 1, hi + 2 * width);
+        // Marched again from r0, twice as wide on the side that was reached.
+        const int columns_wide = column_hi - column_lo;
+        if (widen_lo) column_lo = std::max(0, column_lo - columns_wide);
+        if (widen_hi) column_hi = std::min(last_column, column_hi + columns_wide);
     }
 }
 

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "shore/parabolic_waves.hpp"
 #include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/waves.hpp"
@@ -57,21 +58,21 @@ struct SeaHeight {
 };
 SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field);
 
-/// The rows a wave's march keeps, so that it can be taken up again after an edit of the
-/// depth instead of marched from the start: its state (complex amplitude and breaking at
-/// every point across) every kKeptRowsEvery rows from its first, and the substeps it took
-/// from each row. Empty where the march did not run (no amplitude, a wave left to the
-/// rays, nothing to fill).
+/// What a wave's march keeps so that a window of it can be marched again after an edit
+/// of the depth, instead of the whole march: its state (complex amplitude and breaking at
+/// every point across) every kKeptRowsEvery rows from its first, where a window is taken
+/// up, and at every kKeptPointsEvery-th point after every advance, where a window's sides
+/// are held. Empty where the march did not run (no amplitude, a wave left to the rays,
+/// nothing to fill).
 struct KeptMarch {
-    static constexpr int kKeptRowsEvery = 32;
+    static constexpr int kKeptRowsEvery = 32, kKeptPointsEvery = 32;
     int start = 0;                               ///< the march's first row, of its frame
     int points = 0;                              ///< across a row
     std::vector<std::complex<float>> amplitude;  ///< kept row n (row start + n * every) at n * points
     std::vector<char> broken;
-    /// The substeps the march took from each row (from `start`) to the next.
-    std::vector<std::uint8_t> substeps;
+    MarchColumns columns;
     std::size_t rows() const { return points > 0 ? amplitude.size() / static_cast<std::size_t>(points) : 0; }
-    std::size_t bytes() const { return amplitude.size() * sizeof(amplitude[0]) + broken.size() + substeps.size(); }
+    std::size_t bytes() const { return amplitude.size() * sizeof(amplitude[0]) + broken.size() + columns.bytes(); }
 };
 
 /// Marches `wave` over `field` along its direction; texels where `keep` holds (deep water,
@@ -101,9 +102,10 @@ inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 /// `wave`'s march over `after`, taken up again from its rows kept over `before` (the same
 /// grid, depths that differ only in `changed`): from the last kept row before the edit it
 /// is marched over the old and the new depths side by side in a window across the march
-/// round the edit, and what the two differ by is the change. The sides of the window are
-/// walls for both; where the two differ by over half the tolerance at a side the window
-/// is widened and marched again, so what the walls reflect stays under it. The march
+/// round the edit, and what the two differ by is the change. The window's sides are held
+/// at the first march's values (at kept columns), so that over the old depths it is that
+/// march; where the two differ by over half the tolerance next to a side, the new march's
+/// side is not the first one's and the window is widened and marched again. The march
 /// stops where the two have agreed to far under the tolerance for a while (the edit's
 /// wake has died out) or at the grid's end. `keep`, `sea_before` and `sea_after` as
 /// diffract_wave's (the sea's heights over each depth).
