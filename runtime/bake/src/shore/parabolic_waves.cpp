@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "shore/fast_marching.hpp"
 #include "tidewater/constants.hpp"
@@ -107,8 +108,10 @@ void solve_tridiagonal(const std::vector<Complex>& lower, std::vector<Complex>& 
 
 }  // namespace
 
-double amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear) {
-    if (!(amplitude * k_linear > 1e-3)) return k_linear;  // under 1e-5 of k in deep water
+namespace {
+
+/// Kirby and Dalrymple's dispersion solved for k, from k_linear.
+double solve_amplitude_dispersion(double omega, double depth, double amplitude, double k_linear) {
     // Kirby and Dalrymple's (1986) composite of Stokes' third order in deep and
     // intermediate water with Hedges' shallow-water form:
     // omega^2 = g k (1 + f1 (k a)^2 D) tanh(k h + f2 k a), f1 = tanh^5(kh), f2 = (kh / sinh kh)^4.
@@ -135,6 +138,13 @@ double amplitude_dispersed_wavenumber(double omega, double depth, double amplitu
         r1 = residual(k1);
     }
     return std::isfinite(k1) ? k1 : k_linear;
+}
+
+}  // namespace
+
+double amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear) {
+    if (!(amplitude * k_linear > 1e-3)) return k_linear;  // under 1e-5 of k in deep water
+    return solve_amplitude_dispersion(omega, depth, amplitude, k_linear);
 }
 
 double weggel_breaker_index(double slope, double height, double period) {
@@ -164,6 +174,65 @@ double shuto_exponent(double ursell) {
     // H h^(5/2) (s - 2 sqrt 3) = const with s = sqrt(U), d ln s = d ln H / 2 - d ln h.
     const double s = std::sqrt(ursell), r3 = std::sqrt(3.0);
     return (5.0 * r3 - 1.5 * s) / (1.5 * s - 2.0 * r3);
+}
+
+namespace {
+
+/// Kirby and Dalrymple's amplitude dispersion without units: k h as a function of
+/// s = sqrt(omega^2 h / g) and r = a / h, tabulated over shallow and intermediate water
+/// (s up to 2, k h up to about 4) and heights up to the depth (k a up to 0.45), read as k h / s
+/// (1 / sqrt(1 + r) in the shallowest water, where Hedges' form holds): within
+/// 2e-6 of the solve over the table's range (`AmplitudeDispersion` tests). Past its range
+/// the solve is called.
+class AmplitudeDispersionTable {
+  public:
+    static constexpr int kS = 512, kR = 256;
+    static constexpr double kMaxS = 2.0, kMaxR = 1.0, kSteepest = 0.45;
+    AmplitudeDispersionTable() {
+        for (int i = 0; i <= kS; ++i)
+            for (int j = 0; j <= kR; ++j) {
+                const double s = std::max(i * kMaxS / kS, 1e-4), r = j * kMaxR / kR;
+                const double h = s * s * kGravity;  // omega = 1
+                const double k = solve_amplitude_dispersion(1.0, h, r * h, wavenumber_at_depth(1.0, h));
+                q_[static_cast<std::size_t>(i) * (kR + 1) + static_cast<std::size_t>(j)] = k * h / s;
+            }
+    }
+    /// The wavenumber (rad/m) of a wave of amplitude `amplitude` at `depth`, whose linear
+    /// wavenumber is `k_linear` (as amplitude_dispersed_wavenumber).
+    double wavenumber(double omega, double depth, double amplitude, double k_linear) const {
+        if (!(amplitude * k_linear > 1e-3)) return k_linear;
+        const double s = omega * std::sqrt(depth / kGravity), r = amplitude / depth;
+        // Past Stokes' steepest wave (k a 0.44) the solve may end on its bounds, wherever
+        // it starts: solved there.
+        if (!(s < kMaxS && r < kMaxR && amplitude * k_linear < kSteepest))
+            return amplitude_dispersed_wavenumber(omega, depth, amplitude, k_linear);
+        // Quadratic through the three nodes nearest each way: the dispersion grows as r
+        // (Hedges) and as r^2 (Stokes) from r = 0, which a line between nodes misses.
+        const double fs = s * (kS / kMaxS), fr = r * (kR / kMaxR);
+        const int i = std::clamp(static_cast<int>(std::lround(fs)), 1, kS - 1);
+        const int j = std::clamp(static_cast<int>(std::lround(fr)), 1, kR - 1);
+        const std::array<double, 3> ws = weights(fs - i), wr = weights(fr - j);
+        double q = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            const double* row =
+                q_.data() + static_cast<std::size_t>(i - 1 + a) * (kR + 1) + static_cast<std::size_t>(j - 1);
+            q += ws[static_cast<std::size_t>(a)] * (wr[0] * row[0] + wr[1] * row[1] + wr[2] * row[2]);
+        }
+        return q * s / depth;
+    }
+
+  private:
+    /// Lagrange's weights at nodes -1, 0, 1 for a point t from the middle one.
+    static std::array<double, 3> weights(double t) { return {0.5 * t * (t - 1.0), 1.0 - t * t, 0.5 * t * (t + 1.0)}; }
+
+    std::vector<double> q_ = std::vector<double>(static_cast<std::size_t>(kS + 1) * (kR + 1));
+};
+
+}  // namespace
+
+double tabulated_amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear) {
+    static const AmplitudeDispersionTable table;
+    return table.wavenumber(omega, depth, amplitude, k_linear);
 }
 
 namespace {
@@ -293,9 +362,10 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
         }
     }
     // The phase travels at the amplitude's own speed (amplitude dispersion).
-    const double kn = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
-                          ? amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
-                          : k_[j];
+    const double kn =
+        in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
+            ? tabulated_amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
+            : k_[j];
     return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
 }
 

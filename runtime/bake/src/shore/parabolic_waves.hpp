@@ -147,6 +147,10 @@ void march_parabolic(const ParabolicInput& input, const std::function<void(const
 /// wavenumber is `k_linear`: Kirby and Dalrymple's (1986) amplitude dispersion, Stokes'
 /// third order where the water is deep enough, Hedges' form where it is shallow.
 double amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear);
+/// The same from a table (the march's): within 2e-6 of it in shallow and intermediate
+/// water (sqrt(omega^2 depth / g) under 2) for heights up to the depth; solved past that.
+/// Thread-safe (the table is made on the first call).
+double tabulated_amplitude_dispersed_wavenumber(double omega, double depth, double amplitude, double k_linear);
 
 /// Weggel's (1972) breaker index H_b / h_b on a beach of slope `slope` (>= 0, used up to
 /// 0.1) for a wave of height H (m) and period T (s): b - a H / (g T^2), at least 0.6.
