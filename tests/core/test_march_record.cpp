@@ -35,15 +35,43 @@ TEST(MarchRecord, EnergyTakesMemoryOnlyInTheTilesAMarchReached) {
 TEST(MarchRecord, AmplitudesKeepHalfPrecisionPerWaveAndNothingWhereTheMarchDidNotHold) {
     MarchedAmplitudes record(3, 2);
     const std::size_t texel = ShoreTiles::kSlotTexels + 17;  // stored slot 1
-    record.set(texel, 0, 0, 1.5f);                           // share 0 makes no block
+    record.set(texel, 0, 0, 1.5f, false);                    // not reached: no block
     EXPECT_EQ(record.share(texel, 0), 0);
     EXPECT_EQ(record.amplitude(texel, 0), 0.0f);
+    EXPECT_FALSE(record.reached(texel, 0));
     record.set(texel, 1, 200, 1.2345f);
     EXPECT_EQ(record.share(texel, 1), 200);
     EXPECT_NEAR(record.amplitude(texel, 1), 1.2345f, 1.2345f * std::ldexp(1.0f, -11));
     EXPECT_EQ(record.share(texel, 0), 0);  // the other wave of the same slot
     EXPECT_EQ(record.share(texel + 1, 1), 0);
     EXPECT_EQ(record.share(2 * ShoreTiles::kSlotTexels + 17, 1), 0);  // the next slot
+    EXPECT_TRUE(record.reached(texel, 1));
+    EXPECT_FALSE(record.broken(texel, 1));
+}
+
+TEST(MarchRecord, ACopySharesItsBlocksUntilWritten) {
+    MarchedAmplitudes record(2, 1);
+    record.set(5, 0, 255, 1.0f, true, true);
+    MarchedAmplitudes copy = record;
+    copy.set(5, 0, 100, 2.0f, true, false);
+    EXPECT_EQ(record.share(5, 0), 255);
+    EXPECT_EQ(record.amplitude(5, 0), 1.0f);
+    EXPECT_TRUE(record.broken(5, 0));
+    EXPECT_EQ(copy.share(5, 0), 100);
+    EXPECT_EQ(copy.amplitude(5, 0), 2.0f);
+    EXPECT_FALSE(copy.broken(5, 0));
+    // Reached at an angle the march does not hold: no share, but its amplitude is kept.
+    copy.set(6, 0, 0, 1.5f, true, false);
+    EXPECT_EQ(copy.share(6, 0), 0);
+    EXPECT_EQ(copy.amplitude(6, 0), 1.5f);
+
+    MarchedEnergy sums(2 * ShoreTiles::kTile, 1.0);
+    sums.add(3, 7, true);
+    MarchedEnergy energy_copy = sums;
+    energy_copy.assign(3, 0, 2, 1);
+    EXPECT_DOUBLE_EQ(sums.at(3, 0).marched, 7.0);
+    EXPECT_DOUBLE_EQ(energy_copy.at(3, 0).marched, 2.0);
+    EXPECT_DOUBLE_EQ(energy_copy.at(3, 0).breaking, 1.0);
 }
 
 }  // namespace

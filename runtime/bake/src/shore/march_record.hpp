@@ -3,7 +3,9 @@
 // per texel of the run's grid, the marched energy summed over the waves (MarchedEnergy).
 // Both are held in blocks made where a wave's march first leaves something, so that they
 // take memory where the waves feel the bottom, not over every stored tile: a run's long
-// waves store most tiles of a large world, its short ones few. Internal to the shore bake.
+// waves store most tiles of a large world, its short ones few. The blocks are shared
+// between copies and copied when written (a re-bake after an edit copies what it
+// changes). Internal to the shore bake.
 #pragma once
 
 #include <algorithm>
@@ -38,11 +40,24 @@ class MarchedEnergy {
     void add(std::size_t k, std::uint32_t quanta, bool broken) {
         const std::size_t n = static_cast<std::size_t>(resolution_);
         const int i = static_cast<int>(k % n), j = static_cast<int>(k / n);
-        std::unique_ptr<Tile>& tile = tiles_[tile_of(i, j)];
-        if (!tile) tile = std::make_unique<Tile>();
+        Tile& tile = writable(tile_of(i, j));
         const std::size_t at = texel_in_tile(i, j);
-        saturating_add(tile->energy[at], quanta);
-        if (broken) saturating_add(tile->breaking[at], quanta);
+        saturating_add(tile.energy[at], quanta);
+        if (broken) saturating_add(tile.breaking[at], quanta);
+    }
+
+    /// Sets texel (i, j)'s sums, in quanta.
+    void assign(int i, int j, std::uint32_t energy, std::uint32_t breaking) {
+        const std::size_t t = tile_of(i, j);
+        if (!tiles_[t] && energy == 0 && breaking == 0) return;
+        Tile& tile = writable(t);
+        tile.energy[texel_in_tile(i, j)] = energy;
+        tile.breaking[texel_in_tile(i, j)] = breaking;
+    }
+
+    /// `quanta` added to `sum` as add() does: saturating.
+    static void saturating_add(std::uint32_t& sum, std::uint32_t quanta) {
+        sum = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{sum} + quanta, 0xFFFFFFFFu));
     }
 
     /// Texel (i, j)'s sums in m^2 (0 where no wave left energy).
@@ -74,34 +89,46 @@ class MarchedEnergy {
         return static_cast<std::size_t>(j % kTile) * static_cast<std::size_t>(kTile) +
                static_cast<std::size_t>(i % kTile);
     }
-    static void saturating_add(std::uint32_t& sum, std::uint32_t quanta) {
-        sum = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{sum} + quanta, 0xFFFFFFFFu));
+    Tile& writable(std::size_t t) {
+        std::shared_ptr<Tile>& tile = tiles_[t];
+        if (!tile)
+            tile = std::make_shared<Tile>();
+        else if (tile.use_count() > 1)
+            tile = std::make_shared<Tile>(*tile);
+        return *tile;
     }
 
     int resolution_;
     int tiles_per_side_;
     double quantum_;
-    std::vector<std::unique_ptr<Tile>> tiles_;
+    std::vector<std::shared_ptr<Tile>> tiles_;
 };
 
 /// Per stored texel of a run's tiles and wave of the run, the march's share of the wave's
-/// amplitude (0..255; 0 where the march did not hold) and its amplitude factor in half
-/// precision (2^-11 relative), in blocks of a stored slot and a wave. Threading: distinct
-/// waves may be set from distinct threads; the reads once every set is done.
+/// amplitude (0..255; 0 where the march did not hold), its amplitude factor in half
+/// precision (2^-11 relative), whether the march reached the texel (its share may still
+/// be 0, by the wave's angle) and whether the wave is broken there, in blocks of a stored
+/// slot and a wave. Threading: distinct waves may be set from distinct threads; the reads
+/// once every set is done.
 class MarchedAmplitudes {
   public:
     MarchedAmplitudes(std::size_t stored_slots, std::size_t waves) : waves_(waves), blocks_(stored_slots * waves) {}
 
-    /// Stored texel `at` (stored slot * kSlotTexels + texel in the slot), wave w.
-    void set(std::size_t at, std::size_t w, std::uint8_t share, float amplitude) {
-        std::unique_ptr<Block>& block = blocks_[block_of(at, w)];
+    /// Stored texel `at` (stored slot * kSlotTexels + texel in the slot), wave w. Nothing
+    /// is kept where the march did not reach.
+    void set(std::size_t at, std::size_t w, std::uint8_t share, float amplitude, bool reached = true,
+             bool broken = false) {
+        std::shared_ptr<Block>& block = blocks_[block_of(at, w)];
         if (!block) {
-            if (share == 0) return;
-            block = std::make_unique<Block>();
+            if (!reached) return;
+            block = std::make_shared<Block>();
+        } else if (block.use_count() > 1) {
+            block = std::make_shared<Block>(*block);
         }
         const std::size_t k = at % ShoreTiles::kSlotTexels;
-        block->share[k] = share;
-        block->amplitude[k] = glm::packHalf1x16(amplitude);
+        block->share[k] = reached ? share : 0;
+        block->amplitude[k] = glm::packHalf1x16(reached ? amplitude : 0.0f);
+        block->flags[k] = static_cast<std::uint8_t>((reached ? kReached : 0) | (reached && broken ? kBroken : 0));
     }
     std::uint8_t share(std::size_t at, std::size_t w) const {
         const Block* block = blocks_[block_of(at, w)].get();
@@ -111,16 +138,23 @@ class MarchedAmplitudes {
         const Block* block = blocks_[block_of(at, w)].get();
         return block ? glm::unpackHalf1x16(block->amplitude[at % ShoreTiles::kSlotTexels]) : 0.0f;
     }
+    bool reached(std::size_t at, std::size_t w) const { return (flags(at, w) & kReached) != 0; }
+    bool broken(std::size_t at, std::size_t w) const { return (flags(at, w) & kBroken) != 0; }
 
   private:
+    static constexpr std::uint8_t kReached = 1, kBroken = 2;
     struct Block {
-        std::array<std::uint8_t, ShoreTiles::kSlotTexels> share{};
+        std::array<std::uint8_t, ShoreTiles::kSlotTexels> share{}, flags{};
         std::array<std::uint16_t, ShoreTiles::kSlotTexels> amplitude{};
     };
+    std::uint8_t flags(std::size_t at, std::size_t w) const {
+        const Block* block = blocks_[block_of(at, w)].get();
+        return block ? block->flags[at % ShoreTiles::kSlotTexels] : 0;
+    }
     std::size_t block_of(std::size_t at, std::size_t w) const { return (at / ShoreTiles::kSlotTexels) * waves_ + w; }
 
     std::size_t waves_;
-    std::vector<std::unique_ptr<Block>> blocks_;
+    std::vector<std::shared_ptr<Block>> blocks_;
 };
 
 }  // namespace tidewater::detail

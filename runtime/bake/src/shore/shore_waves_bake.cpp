@@ -265,7 +265,8 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
                 kTwoPi / std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz));  // |k| = k(h)
             const double share = diffracted->share_of(k) * detail::march_share(turned, wavelength, diffracted->spacing);
             diffracted->share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
-            record->marched.set(at, w, diffracted->share[k], diffracted->amplitude[k]);
+            record->marched.set(at, w, diffracted->share[k], diffracted->amplitude[k], true,
+                                diffracted->broken[k] != 0);
         }
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
