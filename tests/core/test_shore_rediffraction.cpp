@@ -67,7 +67,8 @@ double remarched_shoal(double shoal, glm::dvec2 at) {
 
     // Where the shoal's depths differ from the plane's by over a millimetre.
     const WorldRect changed{at - 30.0, at + 30.0};
-    const DiffractionChange change = rediffract_wave(w, sea, before, after, kept, changed, fill_all);
+    const PatchedDepths patched{&before, 0, 0, kN, kN, after.depth.values()};
+    const DiffractionChange change = rediffract_wave(w, sea, before, patched, kept, changed, fill_all);
     const auto t2 = std::chrono::steady_clock::now();
 
     std::vector<float> amplitude = old_march.amplitude;
@@ -117,7 +118,6 @@ TEST(ShoreRediffraction, AnEditsChangeAddedToTheFirstMarchIsTheMarchOverTheNewDe
 
 TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {
     const ShoreField before = beach(0.0);
-    ShoreField after = before;
     const Wave w = wave();
     const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
     // Every texel under 11 m is filled: the march starts just before them.
@@ -125,8 +125,8 @@ TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {
     KeptMarch kept;
     diffract_wave(w, sea, before, deep, nullptr, &kept);
     ASSERT_GT(kept.rows(), 0u);
-    const DiffractionChange change =
-        rediffract_wave(w, sea, before, after, kept, WorldRect{{-1e300, -1e300}, {1e300, 1e300}}, deep);
+    const DiffractionChange change = rediffract_wave(w, sea, before, PatchedDepths{&before, 0, 0, 0, 0, {}}, kept,
+                                                     WorldRect{{-1e300, -1e300}, {1e300, 1e300}}, deep);
     EXPECT_TRUE(change.texels.empty());
     EXPECT_EQ(change.windows, 1);
 }

@@ -139,20 +139,21 @@ TexelFromRows texel_from_rows(const MarchFrame& f, glm::dvec2 p, int r, const Ke
     return t;
 }
 
-/// The march of `wave` over the depths of `field` (sea heights `sea_height`, may be null)
-/// in `frame`, from its row `start` to its last, over its points [first, first + points).
+/// The march of `wave` over `depths` (world xz to m; it must outlive the march; sea
+/// heights `sea_height`, may be null) in `frame`, from its row `start` to its last, over
+/// its points [first, first + points).
+template <typename Depths>
 ParabolicInput march_input(const Wave& wave, const SeaState& sea, const MarchFrame& frame, int start, int first,
-                           int points, const ShoreField& field, const SeaHeight* sea_height) {
+                           int points, const Depths& depths, const SeaHeight* sea_height) {
     const double x_start = frame.x0 + start * frame.spacing;
     const double y_first = frame.y0 + first * frame.spacing;
     ParabolicInput in;
     in.grid = {frame.steps - start, points, frame.spacing, frame.spacing};
     in.omega = wave.omega;
-    in.depth_row = [&field, frame, x_start, y_first](int step, std::span<float> depth) {
+    in.depth_row = [&depths, frame, x_start, y_first](int step, std::span<float> depth) {
         const double x = x_start + step * frame.spacing;
         for (std::size_t j = 0; j < depth.size(); ++j)
-            depth[j] = static_cast<float>(
-                field.sample(field.depth, frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
+            depth[j] = static_cast<float>(depths(frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
     };
     in.incident_amplitude = wave.amplitude;
     in.incident_in_deep_water = true;
@@ -173,8 +174,9 @@ ParabolicInput march_input(const Wave& wave, const SeaState& sea, const MarchFra
 /// them) is from `first_row` on and whose first point across (the lower of the two they
 /// lie between) is in [lo, hi], bucketed by row from `first_row`: a window's texels,
 /// found row by row of the grid over the span the window crosses.
-RowBuckets bucket_window(const ShoreField& field, const MarchFrame& f, int first_row, int lo, int hi,
+RowBuckets bucket_window(const PatchedDepths& depths, const MarchFrame& f, int first_row, int lo, int hi,
                          const std::function<bool(std::size_t)>& keep) {
+    const ShoreField& field = *depths.field;
     const int n = field.resolution;
     RowBuckets b;
     b.first_row = first_row;
@@ -204,7 +206,7 @@ RowBuckets bucket_window(const ShoreField& field, const MarchFrame& f, int first
         within(f.across, y_lo, y_hi);
         for (int i = static_cast<int>(i_lo); i <= static_cast<int>(i_hi); ++i) {
             const std::size_t k = field.index(i, j);
-            if (field.depth[k] <= 0.0f || keep(k)) continue;
+            if (depths.at(i, j) <= 0.0f || keep(k)) continue;
             const glm::dvec2 p = field.texel_center(i, j);
             const int row = std::clamp(static_cast<int>(std::floor((glm::dot(p, f.along) - f.x0) / s)), 0, f.steps - 2);
             const int j0 =
@@ -264,7 +266,8 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     if (buckets.texels.empty()) return out;
     // Rows before the first texel to fill or land are open sea: the march starts just before.
     const int start = std::max(0, buckets.first_row - 2);
-    ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, field, sea_height);
+    const auto depths = [&field](glm::dvec2 p) { return field.sample(field.depth, p); };
+    ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, depths, sea_height);
     if (kept) {
         *kept = {};
         kept->start = start;
@@ -302,19 +305,19 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
 }
 
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
-                                  const ShoreField& after, const KeptMarch& kept, const WorldRect& changed,
+                                  const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep, double tolerance,
                                   const SeaHeight* sea_before, const SeaHeight* sea_after) {
     DiffractionChange out;
     if (kept.rows() == 0 || !(wave.amplitude > 0.0)) return out;
-    const MarchFrame frame = march_frame(wave, after);
+    const MarchFrame frame = march_frame(wave, before);
     if (frame.points != kept.points) return out;
     // The edit's reach in the frame's rows and points (an infinite side reaches the grid's end).
     double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
     for (const glm::dvec2 c :
          {changed.lo, glm::dvec2(changed.hi.x, changed.lo.y), glm::dvec2(changed.lo.x, changed.hi.y), changed.hi}) {
         const glm::dvec2 clamped =
-            glm::clamp(c, after.corner, after.corner + glm::dvec2(after.texel * after.resolution));
+            glm::clamp(c, before.corner, before.corner + glm::dvec2(before.texel * before.resolution));
         const double x = (glm::dot(clamped, frame.along) - frame.x0) / frame.spacing;
         const double y = (glm::dot(clamped, frame.across) - frame.y0) / frame.spacing;
         x_lo = std::min(x_lo, x);
@@ -359,8 +362,10 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             entering[static_cast<std::size_t>(j)] =
                 std::complex<double>(kept.amplitude[row_at + static_cast<std::size_t>(lo + j)]);
         const std::span<const char> entering_broken(kept.broken.data() + row_at + lo, static_cast<std::size_t>(width));
-        ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, before, sea_before);
-        ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, after, sea_after);
+        const auto old_depths = [&before](glm::dvec2 p) { return before.sample(before.depth, p); };
+        const auto new_depths = [&after](glm::dvec2 p) { return after.sample(p); };
+        ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, old_depths, sea_before);
+        ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, new_depths, sea_after);
         for (ParabolicInput* in : {&old_in, &new_in}) {
             in->entering_amplitude = entering;
             in->entering_broken = entering_broken;
@@ -401,9 +406,9 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
                  at < buckets.offsets[static_cast<std::size_t>(r) + 1]; ++at) {
                 const std::uint32_t k = buckets.texels[at];
-                const int i = static_cast<int>(k % static_cast<std::uint32_t>(after.resolution)),
-                          jj = static_cast<int>(k / static_cast<std::uint32_t>(after.resolution));
-                const glm::dvec2 p = after.texel_center(i, jj);
+                const int i = static_cast<int>(k % static_cast<std::uint32_t>(before.resolution)),
+                          jj = static_cast<int>(k / static_cast<std::uint32_t>(before.resolution));
+                const glm::dvec2 p = before.texel_center(i, jj);
                 const TexelFromRows was = texel_from_rows(frame, p, r0 + r, old_before, old_after, lo, least);
                 const TexelFromRows is = texel_from_rows(frame, p, r0 + r, new_before, new_after, lo, least);
                 const double change = (is.magnitude - was.magnitude) / amplitude;
@@ -424,6 +429,14 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         if (widen_lo) column_lo = std::max(0, column_lo - columns_wide);
         if (widen_hi) column_hi = std::min(last_column, column_hi + columns_wide);
     }
+}
+
+double PatchedDepths::sample(glm::dvec2 p) const {
+    const ShoreField& f = *field;
+    const GridTaps t = grid_taps(f.corner, f.texel, f.resolution, p);
+    const auto n = static_cast<std::size_t>(f.resolution);
+    auto tap = [&](std::size_t k) { return static_cast<double>(at(static_cast<int>(k % n), static_cast<int>(k / n))); };
+    return t.w00 * tap(t.k00) + t.w10 * tap(t.k10) + t.w01 * tap(t.k01) + t.w11 * tap(t.k11);
 }
 
 double SeaHeight::at(glm::dvec2 p) const {

@@ -83,6 +83,23 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
                              const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height = nullptr,
                              KeptMarch* kept = nullptr);
 
+/// A grid's depths with a patch of texels changed (an edit's), over the field that holds
+/// the rest and the grid's geometry. `field` must outlive it.
+struct PatchedDepths {
+    const ShoreField* field = nullptr;
+    int i0 = 0, j0 = 0, width = 0, height = 0;  ///< the patch's first texel and size
+    std::vector<float> depth;                   ///< over the patch, row by row
+    /// Texel (i, j)'s depth, m.
+    float at(int i, int j) const {
+        const int a = i - i0, b = j - j0;
+        if (a >= 0 && b >= 0 && a < width && b < height)
+            return depth[static_cast<std::size_t>(b) * static_cast<std::size_t>(width) + static_cast<std::size_t>(a)];
+        return field->depth[field->index(i, j)];
+    }
+    /// Bilinear between texel centres, clamped at the edges (ShoreField::sample's).
+    double sample(glm::dvec2 p) const;
+};
+
 /// What an edit of the depth under the water changes in a wave's march: the texels where
 /// the march's amplitude factor moved by over the tolerance, or its reach or breaking
 /// changed, with the change and what the march gives there now.
@@ -99,8 +116,8 @@ struct DiffractionChange {
 /// about the half precision the model holds amplitudes in.
 inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 
-/// `wave`'s march over `after`, taken up again from its rows kept over `before` (the same
-/// grid, depths that differ only in `changed`): from the last kept row before the edit it
+/// `wave`'s march over `after`, taken up again from its rows kept over `before` (`after`'s
+/// field; its depths differ only in `changed`): from the last kept row before the edit it
 /// is marched over the old and the new depths side by side in a window across the march
 /// round the edit, and what the two differ by is the change. The window's sides are held
 /// at the first march's values (at kept columns), so that over the old depths it is that
@@ -110,7 +127,7 @@ inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 /// wake has died out) or at the grid's end. `keep`, `sea_before` and `sea_after` as
 /// diffract_wave's (the sea's heights over each depth).
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
-                                  const ShoreField& after, const KeptMarch& kept, const WorldRect& changed,
+                                  const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep,
                                   double tolerance = kMarchAmplitudeTolerance, const SeaHeight* sea_before = nullptr,
                                   const SeaHeight* sea_after = nullptr);
