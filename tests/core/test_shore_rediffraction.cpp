@@ -116,6 +116,54 @@ TEST(ShoreRediffraction, AnEditsChangeAddedToTheFirstMarchIsTheMarchOverTheNewDe
     EXPECT_LT(remarched_shoal(0.5, {500.0, 660.0}), 0.3);
 }
 
+/// The worst difference of `march` plus `change` from `target`'s amplitude factors.
+double worst_after(const DiffractedWave& march, const DiffractionChange& change, const DiffractedWave& target) {
+    std::vector<float> amplitude = march.amplitude;
+    for (std::size_t c = 0; c < change.texels.size(); ++c) amplitude[change.texels[c]] += change.amplitude_change[c];
+    double worst = 0.0;
+    for (std::size_t k = 0; k < amplitude.size(); ++k)
+        worst = std::max(worst, static_cast<double>(std::abs(amplitude[k] - target.amplitude[k])));
+    return worst;
+}
+
+TEST(ShoreRediffraction, ASecondEditTakesUpTheMarchTheFirstLeft) {
+    // A stroke, then another downwave of it whose window crosses the first one's wake: the
+    // second is taken up from what the first left, not from the march before both.
+    const glm::dvec2 first_at{500.0, 600.0}, second_at{540.0, 680.0};
+    const ShoreField plane = beach(0.0, first_at), one = beach(1.0, first_at);
+    ShoreField two = one;
+    {
+        const ShoreField bump = beach(0.5, second_at), flat = beach(0.0, second_at);
+        std::vector<float>& depth = two.depth.write();
+        for (std::size_t k = 0; k < depth.size(); ++k) depth[k] += bump.depth[k] - flat.depth[k];
+    }
+    const Wave w = wave();
+    const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
+    const auto fill_all = [](std::size_t) { return false; };
+    KeptMarch kept;
+    diffract_wave(w, sea, plane, fill_all, nullptr, &kept);
+    const DiffractedWave over_one = diffract_wave(w, sea, one, fill_all);
+    const DiffractedWave over_two = diffract_wave(w, sea, two, fill_all);
+
+    KeptMarch after_one = kept;
+    rediffract_wave(w, sea, plane, PatchedDepths{&plane, 0, 0, kN, kN, one.depth.values()}, kept,
+                    {first_at - 30.0, first_at + 30.0}, fill_all, kMarchAmplitudeTolerance, nullptr, nullptr,
+                    &after_one);
+    const PatchedDepths to_two{&one, 0, 0, kN, kN, two.depth.values()};
+    const WorldRect second{second_at - 30.0, second_at + 30.0};
+    const double taken_up =
+        worst_after(over_one, rediffract_wave(w, sea, one, to_two, after_one, second, fill_all), over_two);
+    // From the rows kept before the first stroke, the second's window starts from a march
+    // that never saw the first.
+    const double stale = worst_after(over_one, rediffract_wave(w, sea, one, to_two, kept, second, fill_all), over_two);
+    std::printf(
+        "a second stroke taken up from what the first left: worst error %.2e (%.2e from the rows kept before "
+        "the first)\n",
+        taken_up, stale);
+    EXPECT_LT(taken_up, 2.0 * kMarchAmplitudeTolerance);
+    EXPECT_GT(stale, 2.0 * kMarchAmplitudeTolerance);
+}
+
 TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {
     const ShoreField before = beach(0.0);
     const Wave w = wave();

@@ -518,9 +518,14 @@ bool ParabolicMarch::advance() {
         return &sides;
     };
     substeps_ = parts;
+    // After each advance: what keeps columns, or watches a window's advances, is told.
+    auto advanced = [&](int part) {
+        if (in_.keep_columns) keep_columns();
+        if (held && in_.advanced) in_.advanced(first_held + static_cast<std::size_t>(part), m.a, m.broken, m.phase);
+    };
     if (parts == 1) {
         m.advance(s.here, s.next, dx, sides_at(0));
-        if (in_.keep_columns) keep_columns();
+        advanced(0);
     } else {
         // Substeps through depths between the rows' (linearly).
         s.from = s.here;
@@ -530,11 +535,11 @@ bool ParabolicMarch::advance() {
                 s.between[j] = s.here_depths[j] + t * (s.next_depths[j] - s.here_depths[j]);
             fill_row_medium(in_, s.between, s.to);
             m.advance(s.from, s.to, dx / parts, sides_at(part - 1));
-            if (in_.keep_columns) keep_columns();
+            advanced(part - 1);
             std::swap(s.from, s.to);
         }
         m.advance(s.from, s.next, dx / parts, sides_at(parts - 1));
-        if (in_.keep_columns) keep_columns();
+        advanced(parts - 1);
     }
     if (in_.keep_columns) in_.keep_columns->row_last.push_back(static_cast<std::uint32_t>(s.advances - 1));
     std::swap(s.here, s.next);

@@ -98,6 +98,11 @@ struct ParabolicInput {
     static constexpr std::size_t kNoSide = static_cast<std::size_t>(-1);
     std::size_t side_lo = kNoSide, side_hi = kNoSide;
     int sides_first_row = 0;
+    /// With `sides`, called after each advance with the longer march's advance it stands
+    /// for, the state (`across` values) and the phase it carries.
+    std::function<void(std::size_t advance, std::span<const std::complex<double>> amplitude,
+                       std::span<const char> broken, double phase)>
+        advanced;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation
     bool nonlinear_shoaling = true;    ///< false: linear shoaling only

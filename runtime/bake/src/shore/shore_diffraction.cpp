@@ -307,7 +307,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep, double tolerance,
-                                  const SeaHeight* sea_before, const SeaHeight* sea_after) {
+                                  const SeaHeight* sea_before, const SeaHeight* sea_after, KeptMarch* updated) {
     DiffractionChange out;
     if (kept.rows() == 0 || !(wave.amplitude > 0.0)) return out;
     const MarchFrame frame = march_frame(wave, before);
@@ -378,6 +378,29 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         }
         const bool held_lo = old_in.side_lo != ParabolicInput::kNoSide,
                    held_hi = old_in.side_hi != ParabolicInput::kNoSide;
+        // What the new march leaves for `updated`, written once the window holds: its kept
+        // columns inside the window after each advance, and its kept rows, turned to the
+        // phase the first march's carry.
+        struct Kept {
+            std::size_t at;
+            std::complex<float> amplitude;
+            char broken;
+        };
+        std::vector<Kept> new_columns, new_rows;
+        double new_phase = entering_phase;
+        const std::size_t first_inside = static_cast<std::size_t>(held_lo ? column_lo + 1 : column_lo);
+        const std::size_t last_inside = static_cast<std::size_t>(held_hi ? column_hi - 1 : column_hi);
+        if (updated)
+            new_in.advanced = [&](std::size_t t, std::span<const std::complex<double>> a, std::span<const char> broken,
+                                  double phase) {
+                new_phase = phase;
+                const std::complex<double> turn = std::polar(1.0, phase - columns.phase[t]);
+                for (std::size_t c = first_inside; c <= last_inside; ++c) {
+                    const std::size_t j = c * static_cast<std::size_t>(every) - static_cast<std::size_t>(lo);
+                    if (j >= a.size()) break;
+                    new_columns.push_back({t * columns.count + c, std::complex<float>(a[j] * turn), broken[j]});
+                }
+            };
         const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
         ParabolicMarch old_march(old_in), new_march(new_in);
         KeptRow old_before, old_after, new_before, new_after;
@@ -418,12 +441,39 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 out.share.push_back(is.reached ? 255 : 0);
                 out.broken.push_back(is.broken ? 1 : 0);
             }
+            const int frame_row = r0 + old_march.row().step;
+            if (updated && (frame_row - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
+                const auto n = static_cast<std::size_t>((frame_row - kept.start) / KeptMarch::kKeptRowsEvery);
+                if (n < kept.rows()) {
+                    const double row_phase =
+                        columns.phase[columns.row_last[static_cast<std::size_t>(frame_row - kept.start)]];
+                    const std::complex<double> turn = std::polar(1.0, new_phase - row_phase);
+                    const ParabolicRow row = new_march.row();
+                    for (int j = 0; j < width; ++j)
+                        new_rows.push_back(
+                            {n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo + j),
+                             std::complex<float>(row.amplitude[static_cast<std::size_t>(j)] * turn),
+                             row.broken[static_cast<std::size_t>(j)]});
+                }
+            }
             std::swap(old_before, old_after);
             std::swap(new_before, new_after);
             quiet = largest < kQuiet * tolerance * amplitude && same_breaking ? quiet + 1 : 0;
             if (quiet >= kQuietRows && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1) break;
         }
-        if (!widen_lo && !widen_hi) return out;
+        if (!widen_lo && !widen_hi) {
+            if (updated) {
+                for (const Kept& k : new_columns) {
+                    updated->columns.amplitude[k.at] = k.amplitude;
+                    updated->columns.broken[k.at] = k.broken;
+                }
+                for (const Kept& k : new_rows) {
+                    updated->amplitude[k.at] = k.amplitude;
+                    updated->broken[k.at] = k.broken;
+                }
+            }
+            return out;
+        }
         // Marched again from r0, twice as wide on the side that was reached.
         const int columns_wide = column_hi - column_lo;
         if (widen_lo) column_lo = std::max(0, column_lo - columns_wide);

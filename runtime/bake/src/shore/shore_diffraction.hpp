@@ -125,12 +125,14 @@ inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 /// side is not the first one's and the window is widened and marched again. The march
 /// stops where the two have agreed to far under the tolerance for a while (the edit's
 /// wake has died out) or at the grid's end. `keep`, `sea_before` and `sea_after` as
-/// diffract_wave's (the sea's heights over each depth).
+/// diffract_wave's (the sea's heights over each depth). With `updated` (a copy of `kept`),
+/// what the march keeps is updated there to the new depths' within the window (in the
+/// phase `kept` carries), so that a later edit takes up the march over these depths.
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep,
                                   double tolerance = kMarchAmplitudeTolerance, const SeaHeight* sea_before = nullptr,
-                                  const SeaHeight* sea_after = nullptr);
+                                  const SeaHeight* sea_after = nullptr, KeptMarch* updated = nullptr);
 
 /// The march holds a wave's amplitude fully within this angle of its direction and not
 /// past the second (the small-angle form's wavenumber along the march is 1.6 % off at 35
