@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <initializer_list>
 #include <memory>
 
 #include "tidewater/scene.hpp"
@@ -15,9 +16,15 @@ namespace tidewater::test {
 inline constexpr int kIslandPixels = 257;  // 4 m apart over 1024 m
 inline constexpr double kIslandLow = -40.0, kIslandHigh = 30.0;
 
+/// A mound of `bump` m (negative: a dip) and 40 m radius at `at`.
+struct Mound {
+    glm::dvec2 at{0.0};
+    double bump = 0.0;
+};
+
 /// An island: 20 m at its centre falling 1 m in 20 to the sea (shoreline at r = 400 m),
-/// on to the -40 m floor; `bump` adds a mound of 3 m and 40 m radius at `at`.
-inline std::shared_ptr<Gray16Image> island_pixels(glm::dvec2 at = {0.0, 0.0}, double bump = 0.0) {
+/// on to the -40 m floor, with `mounds` on it.
+inline std::shared_ptr<Gray16Image> island_pixels_with(std::initializer_list<Mound> mounds) {
     auto image = std::make_shared<Gray16Image>();
     image->width = image->height = kIslandPixels;
     image->pixels.resize(static_cast<std::size_t>(kIslandPixels) * kIslandPixels);
@@ -25,12 +32,19 @@ inline std::shared_ptr<Gray16Image> island_pixels(glm::dvec2 at = {0.0, 0.0}, do
         for (int i = 0; i < kIslandPixels; ++i) {
             const glm::dvec2 p{4.0 * i - 512.0, 4.0 * j - 512.0};
             double h = std::max(kIslandLow, 20.0 - 0.05 * glm::length(p));
-            const double r = glm::length(p - at) / 40.0;
-            if (r < 1.0) h += bump * (1.0 - r * r) * (1.0 - r * r);
+            for (const Mound& m : mounds) {
+                const double r = glm::length(p - m.at) / 40.0;
+                if (r < 1.0) h += m.bump * (1.0 - r * r) * (1.0 - r * r);
+            }
             image->pixels[static_cast<std::size_t>(j) * kIslandPixels + i] =
                 static_cast<std::uint16_t>(std::lround((h - kIslandLow) / (kIslandHigh - kIslandLow) * 65535.0));
         }
     return image;
+}
+
+/// The island with one mound of `bump` m at `at` (none: the island alone).
+inline std::shared_ptr<Gray16Image> island_pixels(glm::dvec2 at = {0.0, 0.0}, double bump = 0.0) {
+    return island_pixels_with({Mound{at, bump}});
 }
 
 inline Scene island_scene(std::shared_ptr<Gray16Image> pixels) {

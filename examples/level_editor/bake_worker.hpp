@@ -27,6 +27,7 @@ struct BackgroundBake {
         job = std::async(std::launch::async, [this, edited = std::move(edited), previous = std::move(previous)] {
             SceneBakeOptions o;
             o.previous = previous;
+            o.keep_marches = true;  // the next stroke on the seabed re-bakes where it reaches
             o.progress = [this](std::string_view s, double f) {
                 fraction = f;
                 const std::lock_guard<std::mutex> g(lock);

@@ -12,7 +12,10 @@ namespace tidewater::editor {
 Status Editor::load(const std::string& path) {
     auto parsed = path.empty() ? default_scene() : load_scene(path);
     if (!parsed) return parsed.error();
-    auto baked = bake_scene(*parsed);
+    // What the march keeps is kept: a stroke on the seabed then re-bakes where it reaches.
+    SceneBakeOptions options;
+    options.keep_marches = true;
+    auto baked = bake_scene(*parsed, options);
     if (!baked) return baked.error();
     scene_ = std::move(baked).value();
     floaters_.reset();

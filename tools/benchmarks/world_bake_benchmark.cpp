@@ -123,6 +123,14 @@ glm::dvec2 pixel_xz(const tidewater::Scene& scene, int i, int j) {
 
 /// A brush stroke re-baked from `baked` (as an editor does after it): the heightmap raised
 /// by `metres` at (ci, cj), falling off over 25 pixels.
+/// WORLD_BENCH_KEEP_MARCHES=1: bake keeping what the march needs (SceneBakeOptions::
+/// keep_marches, as the editor does), so that the seabed strokes re-bake where they
+/// reach with diffraction on.
+bool keep_marches() {
+    const char* v = std::getenv("WORLD_BENCH_KEEP_MARCHES");
+    return v != nullptr && std::string(v) == "1";
+}
+
 struct Stroke {
     double seconds = 0.0;
     bool local = false;  ///< re-baked where it is (a dry-land or a seabed edit)
@@ -147,6 +155,7 @@ Stroke re_bake_stroke(const tidewater::Scene& scene, const std::shared_ptr<const
     stroke.terrain = tidewater::Terrain(map);
     tidewater::SceneBakeOptions options;
     options.previous = baked;
+    options.keep_marches = keep_marches();
     const auto t = Clock::now();
     auto edited = tidewater::bake_scene(stroke, options);
     Stroke out;
@@ -166,7 +175,8 @@ int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr,
                      "usage: %s SIDE_M [WAVES=24] [SEABED_M=-60] [TEXEL_M=2] [TEXELS_PER_WAVELENGTH=8] [KEEP_DIR]\n"
-                     "  WORLD_BENCH_SEABED_STROKES=N (0..3, default 3): seabed strokes timed\n",
+                     "  WORLD_BENCH_SEABED_STROKES=N (0..3, default 3): seabed strokes timed\n"
+                     "  WORLD_BENCH_KEEP_MARCHES=1: keep what the march needs, as the editor does\n",
                      argv[0]);
         return 2;
     }
@@ -203,7 +213,9 @@ int main(int argc, char** argv) {
     const double make = seconds_since(t0);
 
     const auto t1 = Clock::now();
-    auto baked = tidewater::bake_scene(scene);
+    tidewater::SceneBakeOptions bake_options;
+    bake_options.keep_marches = keep_marches();
+    auto baked = tidewater::bake_scene(scene, bake_options);
     if (!baked) {
         std::fprintf(stderr, "%s\n", baked.error().message.c_str());
         return 1;

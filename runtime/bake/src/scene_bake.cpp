@@ -170,6 +170,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
         if (old.terrain == terrain) {
             bake.ocean_shore = old.ocean_shore;
             bake.shoreline = old.shoreline;
+            if (options.keep_marches) bake.ocean_marches = old.ocean_marches;
             bake.distance_resolution = distance_resolution;
             bake.reused.ocean_shore = true;
             progress.report("shore waves", begin, 1.0, 1.0);
@@ -188,15 +189,19 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
         if (auto edit = detail::rebake_land_edit(change, old.terrain, terrain, scene.water_level(), old.shoreline,
                                                  old.ocean_shore)) {
             take(edit, &SceneBake::Reused::ocean_shore_land_edit);
+            // Dry land only: the marches read the same depths.
+            if (options.keep_marches) bake.ocean_marches = old.ocean_marches;
             return {};
         }
-        // An edit of the seabed, under the water: the waves re-marched where it reaches (the
-        // rays' fields only: a diffracted wave changes downstream of an edit to the model's end).
-        if (!scene.shore.diffraction)
+        // An edit of the seabed, under the water: the waves re-marched where it reaches; with
+        // diffraction, each wave's parabolic march taken up again from what it kept.
+        if (!scene.shore.diffraction || old.ocean_marches)
             if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
                                                       scene.ocean.waves().waves(), scene.shore.breaking_index,
-                                                      old.shoreline, old.ocean_shore, options.threads)) {
+                                                      old.shoreline, old.ocean_shore, options.threads,
+                                                      scene.shore.diffraction ? old.ocean_marches : nullptr)) {
                 take(edit, &SceneBake::Reused::ocean_shore_water_edit);
+                if (options.keep_marches) bake.ocean_marches = std::move(edit->marches);
                 return {};
             }
     }
@@ -226,6 +231,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
     model_options.threads = options.threads;
     model_options.cancel = options.cancel;
     model_options.progress = [&](double f) { progress.report("shore waves", shoreline_share, 1.0, f); };
+    if (options.keep_marches) model_options.keep_marches = &bake.ocean_marches;
     auto model = bake_shore_waves(scene.ocean.waves(), terrain, scene.water_level(), model_options, shoreline.get());
     if (!model) return detail::in_shore(scene, model.error());
     bake.ocean_shore = std::move(model).value();

@@ -51,6 +51,12 @@ struct SceneBakeOptions {
     /// on dry land a texel or more from water, the ocean's shore model keeps everything but
     /// the ground's height there (SceneBake::Reused). The result is the same as a full bake.
     std::shared_ptr<const Scene> previous;
+    /// Keep what the march of the ocean's waves needs (SceneBake::ocean_marches, about
+    /// 100 MB for 24 waves on an 8 km island) so that a later bake with this one as
+    /// `previous` re-bakes a stroke on the seabed where it reaches, with diffraction on
+    /// (shore.diffraction, the default); without it such a stroke re-bakes the ocean's
+    /// shore in full. An editor's.
+    bool keep_marches = false;
 };
 
 /// Bakes `scene` (or loads its saved bake) into a new scene whose ocean feels its shore.

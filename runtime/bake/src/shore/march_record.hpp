@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/gtc/packing.hpp>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "shore/shore_rows.hpp"
@@ -103,6 +105,41 @@ class MarchedEnergy {
     double quantum_;
     std::vector<std::shared_ptr<Tile>> tiles_;
 };
+
+/// One run's marched energy and its grid, as the foam reads them.
+struct EnergyView {
+    const ShoreGrid* grid = nullptr;
+    const MarchedEnergy* energy = nullptr;
+};
+
+/// The runs' marched energy at world xz `p`, texel (i, j) of `grid`: read where a run lies
+/// on that grid, sampled bilinearly elsewhere.
+inline DiffractedEnergy marched_energy_at(std::span<const EnergyView> runs, const ShoreGrid& grid, int i, int j,
+                                          glm::dvec2 p) {
+    DiffractedEnergy sum;
+    for (const EnergyView& r : runs) {
+        const ShoreGrid& g = *r.grid;
+        const int n = g.resolution;
+        if (g == grid) {
+            const DiffractedEnergy e = r.energy->at(i, j);
+            sum.marched += e.marched;
+            sum.breaking += e.breaking;
+            continue;
+        }
+        const glm::dvec2 f = (p - g.corner) / g.texel - 0.5;
+        const int a = std::clamp(static_cast<int>(std::floor(f.x)), 0, n - 2);
+        const int b = std::clamp(static_cast<int>(std::floor(f.y)), 0, n - 2);
+        const double u = std::clamp(f.x - a, 0.0, 1.0), v = std::clamp(f.y - b, 0.0, 1.0);
+        const DiffractedEnergy e00 = r.energy->at(a, b), e01 = r.energy->at(a, b + 1), e10 = r.energy->at(a + 1, b),
+                               e11 = r.energy->at(a + 1, b + 1);
+        auto lerp = [&](double DiffractedEnergy::*part) {
+            return (1 - u) * ((1 - v) * (e00.*part) + v * (e01.*part)) + u * ((1 - v) * (e10.*part) + v * (e11.*part));
+        };
+        sum.marched += lerp(&DiffractedEnergy::marched);
+        sum.breaking += lerp(&DiffractedEnergy::breaking);
+    }
+    return sum;
+}
 
 /// Per stored texel of a run's tiles and wave of the run, the march's share of the wave's
 /// amplitude (0..255; 0 where the march did not hold), its amplitude factor in half

@@ -66,26 +66,27 @@ struct RowMedium {
     std::vector<char> wet, deep;
 };
 
+/// Sets point j of `r` for still-water depth `depth` (m).
+void fill_point_medium(const ParabolicInput& in, double depth, RowMedium& r, std::size_t j) {
+    const double k_deep = in.omega * in.omega / kGravity;
+    const double shallowest = 1e-3 / k_deep;
+    r.wet[j] = depth > 0.0;
+    r.h[j] = std::max(depth, shallowest);
+    double kh = kDeepKh, share = 0.5;
+    // k(h) >= omega^2 / g: water that deep for the deep-water k is deep without a look-up.
+    if (k_deep * r.h[j] < kDeepKh) dispersion_table().at(std::sqrt(k_deep * r.h[j]), kh, share);
+    r.deep[j] = kh >= kDeepKh;
+    r.k[j] = r.deep[j] ? k_deep : kh / r.h[j];
+    r.cg[j] = r.deep[j] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[j];
+}
+
 /// Fills `r` for a row of `depths` (its vectors are reused from row to row).
 void fill_row_medium(const ParabolicInput& in, std::span<const float> depths, RowMedium& r) {
     const std::size_t n = depths.size();
     for (auto* v : {&r.k, &r.cg, &r.h}) v->resize(n);
     r.wet.resize(n);
     r.deep.resize(n);
-    const double k_deep = in.omega * in.omega / kGravity;
-    const double shallowest = 1e-3 / k_deep;
-    const DispersionTable& table = dispersion_table();
-    for (std::size_t j = 0; j < n; ++j) {
-        const double depth = static_cast<double>(depths[j]);
-        r.wet[j] = depth > 0.0;
-        r.h[j] = std::max(depth, shallowest);
-        double kh = kDeepKh, share = 0.5;
-        // k(h) >= omega^2 / g: water that deep for the deep-water k is deep without a look-up.
-        if (k_deep * r.h[j] < kDeepKh) table.at(std::sqrt(k_deep * r.h[j]), kh, share);
-        r.deep[j] = kh >= kDeepKh;
-        r.k[j] = r.deep[j] ? k_deep : kh / r.h[j];
-        r.cg[j] = r.deep[j] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[j];
-    }
+    for (std::size_t j = 0; j < n; ++j) fill_point_medium(in, static_cast<double>(depths[j]), r, j);
 }
 
 /// Solves the tridiagonal system lower_j x_{j-1} + diag_j x_j + upper_j x_{j+1} = rhs_j
@@ -242,6 +243,9 @@ namespace {
 /// at the grid's spacing.
 inline constexpr double kSurfStepsPerWavelength = 16.0;
 inline constexpr int kMostSubsteps = 8;
+/// A regular wave nears breaking over this height over the depth; the most its height
+/// is raised over the incident one by shoaling and focusing, as the substeps allow for.
+inline constexpr double kNearBreaking = 0.5, kMostRaised = 2.5;
 /// Weggel's index is never under this: a wave lower than this times the depth, and not
 /// yet broken, does not break in the step.
 inline constexpr double kLowestBreakerIndex = 0.6;
@@ -259,7 +263,13 @@ class Marcher {
         lowest_breaking_ = in.random_sea ? kNoBrokenShare * kRandomSeaBreakerIndex : kLowestBreakerIndex;
         for (auto* v : {&a, &lower_, &diag_, &upper_, &rhs_, &half_turn_}) v->assign(n_, Complex(0.0));
         for (auto* v : {&k_, &p_}) v->assign(n_, 0.0);
+        parts_.assign(n_, 1);
         broken.assign(n_, 0);
+        for (RowMedium* m : {&from_, &to_}) {
+            for (auto* v : {&m->k, &m->cg, &m->h}) v->assign(n_, 0.0);
+            m->wet.assign(n_, 0);
+            m->deep.assign(n_, 0);
+        }
     }
 
     void enter(const RowMedium& row) {
@@ -269,17 +279,18 @@ class Marcher {
         }
     }
 
-    /// Substeps the step from `here` to `next` needs: more where the waves break or near.
-    int substeps(const RowMedium& here, double dx) const {
-        if (!in_.breaking) return 1;
-        double finest = dx;
-        const double sea = in_.sea_over_component;
-        for (std::size_t j = 0; j < n_; ++j) {
-            if (!here.wet[j]) continue;
-            // The height over half the depth, squared: no square root a point.
-            const bool near_breaking = 16.0 * std::norm(a[j]) * sea * sea > here.h[j] * here.h[j];
-            if (broken[j] || near_breaking) finest = std::min(finest, kTwoPi / here.k[j] / kSurfStepsPerWavelength);
-        }
+    /// Substeps point j's turns take over a step of dx from `here`: more where the wave
+    /// may break (the onset and the surf zone's decay length are short). By the depth
+    /// alone, against the incident height raised by the most shoaling and focusing
+    /// allowed for, never by the wave's own height: a point's march then does not hang on
+    /// the breaking elsewhere in its row, nor on a change too small to matter tipping a
+    /// point over a threshold (a march taken up again after an edit steps as the whole did).
+    int substeps(const RowMedium& here, std::size_t j, double dx) const {
+        if (!in_.breaking || !here.wet[j]) return 1;
+        const double incident = 2.0 * in_.incident_amplitude * in_.sea_over_component;
+        const double onset = in_.random_sea ? lowest_breaking_ : kNearBreaking;
+        if (onset * here.h[j] >= kMostRaised * incident) return 1;
+        const double finest = kTwoPi / here.k[j] / kSurfStepsPerWavelength;
         return std::clamp(static_cast<int>(std::ceil(dx / finest - 1e-9)), 1, kMostSubsteps);
     }
 
@@ -292,7 +303,9 @@ class Marcher {
         double phase = 0.0;
     };
 
-    void advance(const RowMedium& here, const RowMedium& next, double dx, const Sides* sides = nullptr);
+    /// One step of dx from `here` (still-water depths `here_depths`) to `next`.
+    void advance(const RowMedium& here, const RowMedium& next, std::span<const float> here_depths,
+                 std::span<const float> next_depths, double dx, const Sides* sides = nullptr);
 
     /// The sea's rms height along the row the next step leaves (empty: none given).
     std::vector<float> sea_height;
@@ -311,7 +324,14 @@ class Marcher {
     std::size_t n_;
     double period_ = 0.0, k_deep_ = 0.0, lowest_breaking_ = 0.0;
     std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_;
+    /// Point j's turn through depths from `here_depth` to `next_depth` over the half of a
+    /// step of dx that starts `from` (0 or 0.5) of the way, in `parts` substeps.
+    void turn_through(float here_depth, float next_depth, std::size_t j, double k_bar, double dx, double from,
+                      int parts);
+
     std::vector<double> k_, p_;
+    std::vector<int> parts_;  ///< per point, the substeps its turns took this step
+    RowMedium from_, to_;     ///< a substepped point's media, at its index
 };
 
 Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx) {
@@ -369,7 +389,28 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
     return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
 }
 
-void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx, const Sides* sides) {
+void Marcher::turn_through(float here_depth, float next_depth, std::size_t j, double k_bar, double dx, double from,
+                           int parts) {
+    const double k_mean = k_[j];
+    const double piece = 0.5 * dx / parts;
+    auto depth_at = [&](int q) {
+        const double t = from + 0.5 * static_cast<double>(q) / parts;
+        return static_cast<double>(here_depth) +
+               t * (static_cast<double>(next_depth) - static_cast<double>(here_depth));
+    };
+    for (int part = 0; part < parts; ++part) {
+        fill_point_medium(in_, depth_at(part), from_, j);
+        fill_point_medium(in_, depth_at(part + 1), to_, j);
+        k_[j] = 0.5 * (from_.k[j] + to_.k[j]);
+        // half_turn takes half of the way between its media: twice, the whole piece.
+        const Complex f = half_turn(from_, to_, j, k_bar, piece);
+        a[j] *= f * f;
+    }
+    k_[j] = k_mean;
+}
+
+void Marcher::advance(const RowMedium& here, const RowMedium& next, std::span<const float> here_depths,
+                      std::span<const float> next_depths, double dx, const Sides* sides) {
     const std::size_t un = n_;
     const double dy2 = in_.grid.dy * in_.grid.dy;
     // The row's mean wavenumber over its water carries the fast phase: A varies slowly.
@@ -392,8 +433,19 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx, c
     // length (Crank-Nicolson would turn a strong decay into a flip of sign); Crank-
     // Nicolson between for the diffraction, (1 - dx/2 R) A' = (1 + dx/2 R) A.
     for (std::size_t j = 0; j < un; ++j) {
-        half_turn_[j] = half_turn(here, next, j, k_bar, dx);
-        a[j] *= half_turn_[j];
+        const int parts = substeps(here, j, dx);
+        if (parts == 1) {
+            half_turn_[j] = half_turn(here, next, j, k_bar, dx);
+            a[j] *= half_turn_[j];
+            continue;
+        }
+        // Where the wave breaks or nears breaking each half step's turn is taken in
+        // substeps through the depths between the rows' (linearly), its height and
+        // breaking updated each: the first half through the first half of the step here,
+        // the second after the diffraction.
+        parts_[j] = parts;
+        half_turn_[j] = 1.0;
+        turn_through(here_depths[j], next_depths[j], j, k_bar, dx, 0.0, parts);
     }
     for (std::size_t j = 0; j < un; ++j) {
         const double p_lo = j > 0 ? 0.5 * (p_[j] + p_[j - 1]) : 0.0;
@@ -414,19 +466,29 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx, c
         if (j + 1 < un) sum += beta * l_hi * a[j + 1];
         rhs_[j] = sum;
     }
-    if (sides) {
-        // Held: the longer march's value, turned from its common phase to this one's.
-        const Complex turn = std::polar(1.0, sides->phase - phase);
-        auto hold = [&](std::size_t j, Complex value) {
-            lower_[j] = upper_[j] = 0.0;
-            diag_[j] = 1.0;
-            rhs_[j] = value * turn / half_turn_[j];
-        };
-        if (sides->lo) hold(0, sides->a_lo);
-        if (sides->hi) hold(un - 1, sides->a_hi);
-    }
+    // Held: the longer march's value, turned from its common phase to this one's.
+    const Complex side_turn = sides ? std::polar(1.0, sides->phase - phase) : Complex(1.0);
+    auto hold = [&](std::size_t j, Complex value) {
+        lower_[j] = upper_[j] = 0.0;
+        diag_[j] = 1.0;
+        rhs_[j] = value * side_turn;
+        parts_[j] = 0;  // neither turned again nor substepped: the value as it is
+    };
+    if (sides && sides->lo) hold(0, sides->a_lo);
+    if (sides && sides->hi) hold(un - 1, sides->a_hi);
     solve_tridiagonal(lower_, diag_, upper_, rhs_);
-    for (std::size_t j = 0; j < un; ++j) a[j] = rhs_[j] * half_turn_[j];
+    for (std::size_t j = 0; j < un; ++j) {
+        if (parts_[j] == 0) {
+            a[j] = rhs_[j];
+            parts_[j] = 1;
+        } else if (parts_[j] > 1) {
+            a[j] = rhs_[j];
+            turn_through(here_depths[j], next_depths[j], j, k_bar, dx, 0.5, parts_[j]);
+            parts_[j] = 1;
+        } else {
+            a[j] = rhs_[j] * half_turn_[j];
+        }
+    }
     if (sides && sides->lo) broken[0] = sides->broken_lo;
     if (sides && sides->hi) broken[un - 1] = sides->broken_hi;
 }
@@ -437,8 +499,8 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, double dx, c
 struct ParabolicMarch::State {
     explicit State(const ParabolicInput& in) : marcher(in) {}
     Marcher marcher;
-    std::vector<float> here_depths, next_depths, between;
-    RowMedium here, next, from, to;
+    std::vector<float> here_depths, next_depths;
+    RowMedium here, next;
     std::size_t advances = 0;  ///< taken so far, the entry counted as the first
 };
 
@@ -447,7 +509,7 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
     if (in.grid.steps <= 0 || un == 0) return;
     state_ = std::make_unique<State>(in);
     State& s = *state_;
-    for (auto* v : {&s.here_depths, &s.next_depths, &s.between}) v->resize(un);
+    for (auto* v : {&s.here_depths, &s.next_depths}) v->resize(un);
     in.depth_row(0, s.here_depths);
     fill_row_medium(in, s.here_depths, s.here);
     s.marcher.enter(s.here);
@@ -465,6 +527,10 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
 }
 
 ParabolicMarch::~ParabolicMarch() = default;
+
+double ParabolicMarch::phase() const {
+    return state_->marcher.phase;
+}
 
 ParabolicRow ParabolicMarch::row() const {
     return {step_, state_->marcher.a, state_->marcher.broken};
@@ -486,24 +552,15 @@ bool ParabolicMarch::advance() {
     if (!state_ || step_ + 1 >= in_.grid.steps) return false;
     State& s = *state_;
     Marcher& m = s.marcher;
-    const std::size_t un = s.here_depths.size();
     if (in_.sea_height_row) in_.sea_height_row(step_, m.sea_height);
     in_.depth_row(step_ + 1, s.next_depths);
     fill_row_medium(in_, s.next_depths, s.next);
-    const double dx = in_.grid.dx;
-    // A window steps as the march it is a window of did, its sides held at that march's.
+    // A window's sides are held at the march it is a window of.
     const MarchColumns* held = in_.sides;
-    std::size_t first_held = 0;
-    int parts = m.substeps(s.here, dx);
-    if (held) {
-        const auto row = static_cast<std::size_t>(in_.sides_first_row + step_);
-        first_held = held->row_last[row] + 1;
-        parts = static_cast<int>(held->row_last[row + 1] - held->row_last[row]);
-    }
     Marcher::Sides sides;
-    auto sides_at = [&](int part) -> const Marcher::Sides* {
-        if (!held) return nullptr;
-        const std::size_t t = first_held + static_cast<std::size_t>(part);
+    std::size_t t = 0;
+    if (held) {
+        t = held->row_last[static_cast<std::size_t>(in_.sides_first_row + step_ + 1)];
         sides.lo = in_.side_lo != ParabolicInput::kNoSide;
         sides.hi = in_.side_hi != ParabolicInput::kNoSide;
         if (sides.lo) {
@@ -515,33 +572,13 @@ bool ParabolicMarch::advance() {
             sides.broken_hi = held->broken[t * held->count + in_.side_hi];
         }
         sides.phase = held->phase[t];
-        return &sides;
-    };
-    substeps_ = parts;
-    // After each advance: what keeps columns, or watches a window's advances, is told.
-    auto advanced = [&](int part) {
-        if (in_.keep_columns) keep_columns();
-        if (held && in_.advanced) in_.advanced(first_held + static_cast<std::size_t>(part), m.a, m.broken, m.phase);
-    };
-    if (parts == 1) {
-        m.advance(s.here, s.next, dx, sides_at(0));
-        advanced(0);
-    } else {
-        // Substeps through depths between the rows' (linearly).
-        s.from = s.here;
-        for (int part = 1; part < parts; ++part) {
-            const float t = static_cast<float>(part) / static_cast<float>(parts);
-            for (std::size_t j = 0; j < un; ++j)
-                s.between[j] = s.here_depths[j] + t * (s.next_depths[j] - s.here_depths[j]);
-            fill_row_medium(in_, s.between, s.to);
-            m.advance(s.from, s.to, dx / parts, sides_at(part - 1));
-            advanced(part - 1);
-            std::swap(s.from, s.to);
-        }
-        m.advance(s.from, s.next, dx / parts, sides_at(parts - 1));
-        advanced(parts - 1);
     }
-    if (in_.keep_columns) in_.keep_columns->row_last.push_back(static_cast<std::uint32_t>(s.advances - 1));
+    m.advance(s.here, s.next, s.here_depths, s.next_depths, in_.grid.dx, held ? &sides : nullptr);
+    if (in_.keep_columns) {
+        keep_columns();
+        in_.keep_columns->row_last.push_back(static_cast<std::uint32_t>(s.advances - 1));
+    }
+    if (held && in_.advanced) in_.advanced(t, m.a, m.broken, m.phase);
     std::swap(s.here, s.next);
     std::swap(s.here_depths, s.next_depths);
     ++step_;

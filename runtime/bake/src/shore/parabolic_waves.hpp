@@ -43,9 +43,9 @@ struct SurfZone {
 /// later with these as its sides. The amplitudes carry a phase common to the whole row
 /// (the rows' mean wavenumbers, integrated), kept with them: a window's own differs.
 struct MarchColumns {
-    int every = 0;                               ///< set by the caller
-    std::size_t count = 0;                       ///< columns a row
-    std::vector<std::complex<float>> amplitude;  ///< advance t's column c at t * count + c
+    int every = 0;                                ///< set by the caller
+    std::size_t count = 0;                        ///< columns a row
+    std::vector<std::complex<double>> amplitude;  ///< advance t's column c at t * count + c
     std::vector<char> broken;
     std::vector<double> phase;            ///< per advance, the phase common to its row
     std::vector<std::uint32_t> row_last;  ///< per row, the advance that ends on it (row 0: advance 0, its entry)
@@ -133,14 +133,14 @@ class ParabolicMarch {
     ParabolicRow row() const;
     /// Steps to the next row; false (and stays) at the last.
     bool advance();
-    /// The substeps the last advance took (0 before the first).
-    int substeps() const { return substeps_; }
+    /// The phase common to the row the march is on (MarchColumns).
+    double phase() const;
 
   private:
     struct State;
     void keep_columns();
     const ParabolicInput& in_;
-    int step_ = 0, substeps_ = 0;
+    int step_ = 0;
     std::unique_ptr<State> state_;
 };
 

@@ -235,6 +235,13 @@ double march_share(double angle, double wavelength, double spacing) {
     return ramp(angle, kNoAngle, kFullAngle) * ramp(points, kNoPoints, kFullPoints);
 }
 
+std::uint8_t held_share(const Wave& wave, float kx, float kz, double spacing) {
+    const double k = std::hypot(static_cast<double>(kx), static_cast<double>(kz));  // k(h)
+    const double turned = std::acos(
+        std::clamp((static_cast<double>(kx) * wave.dir_x + static_cast<double>(kz) * wave.dir_z) / k, -1.0, 1.0));
+    return static_cast<std::uint8_t>(std::lround(255.0 * march_share(turned, kTwoPi / k, spacing)));
+}
+
 SeaState sea_state(std::span<const Wave> waves) {
     SeaState s;
     double weighted = 0.0;
@@ -337,20 +344,18 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
     // The window's sides on kept columns, at least this many points from the edit; the
     // points next to each side whose difference is watched.
     constexpr int every = KeptMarch::kKeptPointsEvery, kSide = 3;
-    // The two agree to this (over the tolerance) for this many rows: the edit's wake has died out.
-    constexpr double kQuiet = 1e-4;
-    constexpr int kQuietRows = 64;
     const int last_column = static_cast<int>(columns.count) - 1;
     int column_lo = std::max(0, (static_cast<int>(std::floor(y_lo)) - kSide) / every - 1);
     int column_hi = std::min(last_column, (static_cast<int>(std::ceil(y_hi)) + kSide) / every + 2);
     const double amplitude = wave.amplitude, least = 1e-6 * amplitude;
-    const double side_limit = 0.5 * tolerance * amplitude;
+    const double side_limit = 0.05 * tolerance * amplitude;
     const std::size_t row_at = static_cast<std::size_t>(n_kept) * static_cast<std::size_t>(kept.points);
 
     for (;;) {
         ++out.windows;
         out.texels.clear();
         out.amplitude_change.clear();
+        out.amplitude.clear();
         out.share.clear();
         out.broken.clear();
         // A side past the last kept column is the march's own wall.
@@ -383,7 +388,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         // phase the first march's carry.
         struct Kept {
             std::size_t at;
-            std::complex<float> amplitude;
+            std::complex<double> amplitude;
             char broken;
         };
         std::vector<Kept> new_columns, new_rows;
@@ -398,7 +403,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 for (std::size_t c = first_inside; c <= last_inside; ++c) {
                     const std::size_t j = c * static_cast<std::size_t>(every) - static_cast<std::size_t>(lo);
                     if (j >= a.size()) break;
-                    new_columns.push_back({t * columns.count + c, std::complex<float>(a[j] * turn), broken[j]});
+                    new_columns.push_back({t * columns.count + c, std::complex<double>(a[j] * turn), broken[j]});
                 }
             };
         const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
@@ -407,7 +412,6 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         old_before.keep(old_march.row());
         new_before.keep(new_march.row());
         bool widen_lo = false, widen_hi = false;
-        int quiet = 0;
         while (old_march.advance() && new_march.advance()) {
             out.points_visited += 2 * static_cast<std::size_t>(width);
             old_after.keep(old_march.row());
@@ -419,11 +423,18 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 const double d = std::abs(new_after.magnitude[ju] - old_after.magnitude[ju]);
                 largest = std::max(largest, d);
                 same_breaking = same_breaking && new_after.broken[ju] == old_after.broken[ju];
-                if (d > side_limit || new_after.broken[ju] != old_after.broken[ju]) {
-                    widen_lo = widen_lo || (held_lo && j <= kSide);
-                    widen_hi = widen_hi || (held_hi && j >= width - 1 - kSide);
-                }
             }
+            // Next to a held side the new march must be the old one there, in phase too (the
+            // side holds the old one's value): else the window is too narrow on that side.
+            const std::complex<double> to_old = std::polar(1.0, new_march.phase() - old_march.phase());
+            const ParabolicRow old_row = old_march.row(), new_row = new_march.row();
+            auto apart = [&](int j) {
+                const auto ju = static_cast<std::size_t>(j);
+                return std::abs(new_row.amplitude[ju] * to_old - old_row.amplitude[ju]) > side_limit ||
+                       new_row.broken[ju] != old_row.broken[ju];
+            };
+            for (int j = 0; j <= kSide && j < width; ++j) widen_lo = widen_lo || (held_lo && apart(j));
+            for (int j = std::max(0, width - 1 - kSide); j < width; ++j) widen_hi = widen_hi || (held_hi && apart(j));
             if (widen_lo || widen_hi) break;
             const int r = old_march.row().step - 1;  // of the window's march; r0 + r of the frame
             for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
@@ -438,6 +449,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 if (std::abs(change) <= tolerance && is.reached == was.reached && is.broken == was.broken) continue;
                 out.texels.push_back(k);
                 out.amplitude_change.push_back(static_cast<float>(change));
+                out.amplitude.push_back(static_cast<float>(is.magnitude / amplitude));
                 out.share.push_back(is.reached ? 255 : 0);
                 out.broken.push_back(is.broken ? 1 : 0);
             }
@@ -452,14 +464,17 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                     for (int j = 0; j < width; ++j)
                         new_rows.push_back(
                             {n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo + j),
-                             std::complex<float>(row.amplitude[static_cast<std::size_t>(j)] * turn),
+                             std::complex<double>(row.amplitude[static_cast<std::size_t>(j)] * turn),
                              row.broken[static_cast<std::size_t>(j)]});
                 }
             }
             std::swap(old_before, old_after);
             std::swap(new_before, new_after);
-            quiet = largest < kQuiet * tolerance * amplitude && same_breaking ? quiet + 1 : 0;
-            if (quiet >= kQuietRows && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1) break;
+            // Past the edit, over the same depths and sea, two marches that agree exactly
+            // stay so: the edit's wake has died out. (Anything short of exact may yet tip a
+            // point over breaking's threshold further on.)
+            if (largest == 0.0 && same_breaking && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1)
+                break;
         }
         if (!widen_lo && !widen_hi) {
             if (updated) {
@@ -502,29 +517,35 @@ double SeaHeight::at(glm::dvec2 p) const {
     return weight > 0.0 ? sum / weight : 0.0;
 }
 
-SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> grid) {
-    SeaHeight out;
-    if (!grid) return out;
-    const ShoreField& field = *grid;
-    out.field = std::move(grid);
+std::optional<Wave> whole_sea_wave(std::span<const Wave> waves, const SeaState& sea) {
     glm::dvec2 heading(0.0);
     for (const Wave& w : waves) heading += w.amplitude * w.amplitude * glm::dvec2(w.dir_x, w.dir_z);
     const double length = glm::length(heading);
-    if (sea.components < 2 || !(sea.mean_period > 0.0) || !(length > 0.0)) return out;
+    if (sea.components < 2 || !(sea.mean_period > 0.0) || !(length > 0.0)) return std::nullopt;
     Wave whole;
     whole.dir_x = heading.x / length;
     whole.dir_z = heading.y / length;
     whole.omega = kTwoPi / sea.mean_period;
     whole.k = whole.omega * whole.omega / kGravity;
     whole.amplitude = std::sqrt(sea.energy);
-    // Deep water for the sea's mean wave is the open sea's: nothing breaks there.
-    const DiffractedWave marched = diffract_wave(whole, sea, field, [&](std::size_t k) {
-        return static_cast<double>(field.depth.values()[k]) * whole.k >= kDeepKh;
-    });
+    return whole;
+}
+
+SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> grid,
+                    KeptMarch* kept) {
+    SeaHeight out;
+    if (!grid) return out;
+    const ShoreField& field = *grid;
+    out.field = std::move(grid);
+    const std::optional<Wave> whole = whole_sea_wave(waves, sea);
+    if (!whole) return out;
+    const DiffractedWave marched = diffract_wave(
+        *whole, sea, field,
+        [&](std::size_t k) { return sea_leaves(*whole, static_cast<double>(field.depth.values()[k])); }, nullptr, kept);
     out.height.assign(marched.amplitude.size(), 0.0f);
     for (std::size_t k = 0; k < out.height.size(); ++k)
         if (marched.share[k] > 0)
-            out.height[k] = static_cast<float>(2.0 * whole.amplitude * static_cast<double>(marched.amplitude[k]));
+            out.height[k] = static_cast<float>(2.0 * whole->amplitude * static_cast<double>(marched.amplitude[k]));
     return out;
 }
 

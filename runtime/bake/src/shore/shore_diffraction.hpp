@@ -13,15 +13,19 @@
 #include <functional>
 #include <glm/vec2.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "shore/fast_marching.hpp"
 #include "shore/parabolic_waves.hpp"
 #include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/waves.hpp"
 
 namespace tidewater::detail {
+
+struct KeptMarch;
 
 /// The sea a component breaks with: every component breaks where the sea does.
 struct SeaState {
@@ -40,7 +44,10 @@ struct DiffractedWave {
     std::vector<float> amplitude;
     std::vector<std::uint8_t> broken;
     double spacing = 0.0;  ///< between the march's points, m
-    double share_of(std::size_t k) const { return share[k] / 255.0; }
+    /// The share the model holds at the stored texels, once the bake has put the rays'
+    /// direction in (held_share; 255 where the rays do not reach); `share` elsewhere.
+    std::vector<std::uint8_t> held;
+    double held_of(std::size_t k) const { return held[k] / 255.0; }
 };
 
 /// A random sea marched as a whole: one wave of its mean period and energy-weighted mean
@@ -56,7 +63,15 @@ struct SeaHeight {
     /// At a world point: bilinear over the texels that have a height, 0 where none has.
     double at(glm::dvec2 p) const;
 };
-SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field);
+SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field,
+                    KeptMarch* kept = nullptr);
+/// The one wave a random sea is marched as (march_sea): none for a regular wave or no sea.
+std::optional<Wave> whole_sea_wave(std::span<const Wave> waves, const SeaState& sea);
+/// Whether the sea's march leaves a texel of depth `depth` (m) alone: deep water for its
+/// mean wave, the open sea's, where nothing breaks.
+inline bool sea_leaves(const Wave& whole, double depth) {
+    return depth * whole.k >= kDeepKh;
+}
 
 /// What a wave's march keeps so that a window of it can be marched again after an edit
 /// of the depth, instead of the whole march: its state (complex amplitude and breaking at
@@ -66,9 +81,9 @@ SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::share
 /// nothing to fill).
 struct KeptMarch {
     static constexpr int kKeptRowsEvery = 32, kKeptPointsEvery = 32;
-    int start = 0;                               ///< the march's first row, of its frame
-    int points = 0;                              ///< across a row
-    std::vector<std::complex<float>> amplitude;  ///< kept row n (row start + n * every) at n * points
+    int start = 0;                                ///< the march's first row, of its frame
+    int points = 0;                               ///< across a row
+    std::vector<std::complex<double>> amplitude;  ///< kept row n (row start + n * every) at n * points
     std::vector<char> broken;
     MarchColumns columns;
     std::size_t rows() const { return points > 0 ? amplitude.size() / static_cast<std::size_t>(points) : 0; }
@@ -106,6 +121,7 @@ struct PatchedDepths {
 struct DiffractionChange {
     std::vector<std::uint32_t> texels;    ///< grid indices
     std::vector<float> amplitude_change;  ///< the amplitude factor's change (over the open-sea amplitude)
+    std::vector<float> amplitude;         ///< the amplitude factor after the edit
     std::vector<std::uint8_t> share;      ///< 255 where the march reaches the texel after the edit, else 0
     std::vector<std::uint8_t> broken;     ///< whether the wave is broken there after the edit
     std::size_t points_visited = 0;       ///< points the re-marches visited, both depths and every window tried
@@ -149,6 +165,11 @@ double ramp(double value, double none, double full);
 /// wavelength / sin(angle): along the march the phase is taken exactly). A wave running
 /// along the march needs no points across it.
 double march_share(double angle, double wavelength, double spacing);
+
+/// The march's share (0..255) that the model holds at a texel the march reached, where
+/// the rays' wavevector is (kx, kz) (not zero): march_share by the rays' turn from the
+/// wave's offshore direction and their local wavelength, `spacing` the march's.
+std::uint8_t held_share(const Wave& wave, float kx, float kz, double spacing);
 
 /// The most points a wave's march holds at once in its rows is small; the points it
 /// visits are at most this many (its spacing grows past that).

@@ -11,6 +11,7 @@
 
 #include "shore/fast_marching.hpp"
 #include "shore/shore_edit_region.hpp"
+#include "shore/shore_march_edit.hpp"
 #include "shore/shore_rows.hpp"
 #include "tidewater/detail/grid_taps.hpp"
 #include "tidewater/detail/parallel.hpp"
@@ -408,13 +409,15 @@ void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
 std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
                                            double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline_ptr,
-                                           const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads) {
+                                           const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads,
+                                           const std::shared_ptr<const ShoreMarches>& marches) {
     if (!change) return std::nullopt;
-    if (!*change) return WaterEdit{shoreline_ptr, model_ptr};  // the same pixels in another image
+    if (!*change) return WaterEdit{shoreline_ptr, model_ptr, marches};  // the same pixels in another image
     const WorldRect& reach = **change;
     const ShoreField& shoreline = *shoreline_ptr;
     const ShoreWaves& model = *model_ptr;
     if (model.wave_count() != waves.size()) return std::nullopt;
+    if (marches && marches->runs.size() != model.layers().size()) return std::nullopt;
     const ShoreGrid distance_grid{shoreline.resolution, shoreline.texel, shoreline.corner};
     auto depths = [&](const ShoreGrid& g) {
         return std::pair{GridDepth{&before, water_level, g}, GridDepth{&after, water_level, g}};
@@ -438,7 +441,8 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     for (const ShoreWaveLayer& layer : model.layers()) {
         RunEdit r;
         r.layer = &layer;
-        if (layer.grid == model_grid) r.uncapped_before = &model.shared();
+        // With the march the stored amplitudes are the march's blended in, not the rays'.
+        if (layer.grid == model_grid && !marches) r.uncapped_before = &model.shared();
         std::tie(r.before, r.after) = depths(layer.grid);
         r.edit = edited(layer.grid);
         if (!r.edit.empty() && (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
@@ -457,7 +461,15 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     }
     if (distance_edit.empty() && model_edit.empty() &&
         std::all_of(runs.begin(), runs.end(), [](const RunEdit& r) { return r.edit.empty(); }))
-        return WaterEdit{shoreline_ptr, model_ptr};  // the change lies between texel centres
+        return WaterEdit{shoreline_ptr, model_ptr, marches};  // the change lies between texel centres
+
+    // The distance field: the same distances, the new depths under the edit.
+    auto field = std::make_shared<ShoreField>(shoreline);
+    if (!distance_edit.empty()) {
+        std::vector<float>& depth = field->depth.write();
+        const GridDepth a{&after, water_level, distance_grid};
+        each_texel(distance_edit, threads, [&](int i, int j) { depth[field->index(i, j)] = a.at(i, j); });
+    }
 
     // Each wave marched again round the edit, in a window.
     struct Job {
@@ -521,6 +533,32 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         const TexelRange moved = cap_inputs_moved(waves, r, o, threads);
         if (!moved.empty()) unite(region, edges(g, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
     }
+    // With the march: each wave's taken up again; where it moved, every grid's rows are
+    // baked again as where the cap's inputs moved.
+    std::optional<MarchEdit> march_edit;
+    if (marches) {
+        MarchEditInput input;
+        input.edited = [&](std::size_t l) { return runs[l].edit; };
+        input.depth_after = [&](std::size_t l, int i, int j) { return runs[l].after.at(i, j); };
+        input.keep = [&](std::size_t l, std::size_t w, std::size_t k) {
+            const RunEdit& r = runs[l];
+            const auto n = static_cast<std::size_t>(r.n());
+            const int i = static_cast<int>(k % n), j = static_cast<int>(k / n);
+            const float h = r.edit.contains(i, j) ? r.after.at(i, j) : marches->runs[l].field->depth[k];
+            if (!(h > 0.0f)) return true;
+            const Wave& wave = waves[r.layer->first + w];
+            const MarchWindow& m = r.march[w];
+            const double phase =
+                !m.value.empty() && m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, h);
+            return !std::isfinite(phase) || (r.any_deep[w] != 0 && deep_water(wave.omega, static_cast<double>(h)));
+        };
+        march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
+        for (std::size_t l = 0; l < runs.size(); ++l) {
+            const TexelRange& moved = march_edit->runs[l].moved;
+            if (!moved.empty())
+                unite(region, edges(runs[l].layer->grid, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
+        }
+    }
     region.lo -= glm::dvec2(coarsest);
     region.hi += glm::dvec2(coarsest);
     for (RunEdit& r : runs) {
@@ -563,9 +601,19 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     // Each run's phase where it was re-marched; where the cap reads moved, its rows capped
     // anew; and carried onto land on the coarse grids.
     std::vector<ShoreTiles> run_tiles;
-    for (RunEdit& r : runs) {
+    std::vector<RunMarches> runs_marched;  // with the march: each run's records after the edit
+    runs_marched.reserve(runs.size());
+    for (std::size_t l = 0; l < runs.size(); ++l) {
+        RunEdit& r = runs[l];
         const ShoreGrid& g = r.layer->grid;
         const std::size_t nw = r.layer->count;
+        RunMarches* marched = nullptr;
+        if (march_edit) {
+            const RunMarches& before_edit = marches->runs[l];
+            runs_marched.push_back({march_edit->runs[l].field, before_edit.marched, before_edit.energy,
+                                    march_edit->runs[l].kept, before_edit.spacing});
+            marched = &runs_marched.back();
+        }
         Patch<float> ratio;
         ratio.assign(r.capped, 1, 1.0f);
         each_texel(r.capped, threads, [&](int i, int j) {
@@ -577,16 +625,22 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         r.out = r.layer->tiles;
         r.out.write_texels(
             r.rows.i0, r.rows.j0, r.rows.i1 + 1, r.rows.j1 + 1,
-            [&](float* t, int i, int j) {
+            [&](float* t, int i, int j, std::uint32_t page, std::size_t s) {
                 const float* f = r.fields(i, j);
                 const double h = static_cast<double>(*r.depth_after(i, j));
                 if (r.capped.contains(i, j)) {
                     const double capped = static_cast<double>(*ratio(i, j));
+                    const std::size_t at = (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels + s;
                     for (std::size_t w = 0; w < nw; ++w) {
                         t[w] = f[w];
                         t[nw + w] = capped_amplitude(f[nw + w], h, capped);
                         t[2 * nw + w] = f[2 * nw + w];
                         t[3 * nw + w] = f[3 * nw + w];
+                        // The march's amplitude blended in after the cap, as the bake does.
+                        if (marched)
+                            t[nw + w] = marched_amplitude(waves[r.layer->first + w], marched->spacing[w],
+                                                          march_edit->runs[l].changes, marched->marched, at, w, i, j,
+                                                          t[nw + w], t[2 * nw + w], t[3 * nw + w], h);
                     }
                 } else if (r.own.contains(i, j)) {
                     // What the cap reads stays within kCapReadTolerance here: the phase alone
@@ -599,7 +653,32 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             },
             threads);
         if (g.texel != model_grid.texel) carry_onto_land(waves, r, threads);
+        // The march's energy where the rows were baked again, from the records as they now are.
+        if (marched)
+            for (int j = r.capped.j0; j <= r.capped.j1; ++j)
+                for (int i = r.capped.i0; i <= r.capped.i1; ++i) {
+                    const std::uint32_t page = r.out.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
+                    if (page < gpu::kShoreFirstStoredSlot) continue;
+                    const std::size_t at = (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels +
+                                           static_cast<std::size_t>(j % ShoreTiles::kTile) * ShoreTiles::kSide +
+                                           static_cast<std::size_t>(i % ShoreTiles::kTile);
+                    const auto [energy, breaking] = marched_energy(waves.subspan(r.layer->first, nw), marched->marched,
+                                                                   at, r.out.texel(i, j), marched->energy.quantum());
+                    marched->energy.assign(i, j, energy, breaking);
+                }
         run_tiles.push_back(std::move(r.out));
+    }
+    std::vector<EnergyView> energies;
+    for (std::size_t l = 0; l < runs_marched.size(); ++l)
+        energies.push_back({&runs[l].layer->grid, &runs_marched[l].energy});
+    std::shared_ptr<const ShoreMarches> marches_after;
+    if (march_edit) {
+        auto m = std::make_shared<ShoreMarches>();
+        m->sea = marches->sea;
+        m->runs = std::move(runs_marched);
+        m->sea_march = std::move(march_edit->sea_march);
+        if (m->sea_march) m->sea_march->height.field = m->runs[m->sea_march->run].field;
+        marches_after = std::move(m);
     }
 
     // The shared rows: the depth, and the breaking and steepness of the waves together.
@@ -608,20 +687,18 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     shared_values.assign(shared_rows, kShoreSharedRows, 0.0f);
     each_texel(shared_rows, threads, [&](int i, int j) {
         shared_texel_rows(waves, before_cap, model_grid, i, j, *model_depth(i, j),
-                          model.texel_values(i, j).shore_distance(), *model_ratio(i, j), shared_values(i, j));
+                          model.texel_values(i, j).shore_distance(), *model_ratio(i, j), shared_values(i, j),
+                          energies.empty()
+                              ? DiffractedEnergy{}
+                              : marched_energy_at(energies, model_grid, i, j,
+                                                  model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5)));
     });
     shared.write_texels(
         shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
         [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); }, threads);
 
-    // The distance field: the same distances, the new depths under the edit.
-    auto field = std::make_shared<ShoreField>(shoreline);
-    if (!distance_edit.empty()) {
-        std::vector<float>& depth = field->depth.write();
-        const GridDepth a{&after, water_level, distance_grid};
-        each_texel(distance_edit, threads, [&](int i, int j) { depth[field->index(i, j)] = a.at(i, j); });
-    }
-    return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles))};
+    return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles)),
+                     std::move(marches_after)};
 }
 
 }  // namespace tidewater::detail

@@ -21,6 +21,8 @@
 #include "shore/fast_marching.hpp"
 #include "shore/march_record.hpp"
 #include "shore/shore_diffraction.hpp"
+#include "shore/shore_march_edit.hpp"
+#include "shore/shore_marches.hpp"
 #include "shore/shore_rows.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -232,10 +234,13 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 /// order the waves finish in.
 struct RunDiffraction {
     RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum)
-        : marched(stored_slots, waves), energy(resolution, quantum) {}
+        : marched(stored_slots, waves), energy(resolution, quantum), kept(waves), spacing(waves, 0.0) {}
     detail::MarchedAmplitudes marched;
     detail::MarchedEnergy energy;
     std::mutex lock;  ///< held while a wave's energy is added
+    /// With ShoreWaveOptions::keep_marches: each wave's kept march and its spacing.
+    std::vector<std::shared_ptr<const detail::KeptMarch>> kept;
+    std::vector<double> spacing;
 };
 
 /// Wave w of a run's rows of every stored texel from its marched phase: the phase residual,
@@ -248,6 +253,7 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
     const int n = field.resolution;
     const std::size_t nw = plan.tiles.stride / 4;
     auto phase = [&](int a, int b) { return m.phase[field.index(a, b)]; };
+    if (diffracted) diffracted->held = diffracted->share;
     each_stored_texel(plan, 1, [&](float* t, std::size_t k, std::size_t at) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
@@ -256,17 +262,15 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
             detail::wave_texel(wave, phase, i, j, n, field.texel, field.texel_center(i, j), m.base,
                                static_cast<double>(field.depth[k]), static_cast<double>(m.slowness[k]), normal,
                                m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(field.depth[k])));
-        if (diffracted && diffracted->share[k] != 0 && (v.kx != 0.0f || v.kz != 0.0f)) {
-            const double turned =
-                std::acos(std::clamp((static_cast<double>(v.kx) * wave.dir_x + static_cast<double>(v.kz) * wave.dir_z) /
-                                         std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz)),
-                                     -1.0, 1.0));
-            const double wavelength =
-                kTwoPi / std::hypot(static_cast<double>(v.kx), static_cast<double>(v.kz));  // |k| = k(h)
-            const double share = diffracted->share_of(k) * detail::march_share(turned, wavelength, diffracted->spacing);
-            diffracted->share[k] = static_cast<std::uint8_t>(std::lround(255.0 * share));
-            record->marched.set(at, w, diffracted->share[k], diffracted->amplitude[k], true,
-                                diffracted->broken[k] != 0);
+        // The march's share at the texel, its apron copies alike (`share` is left as the
+        // march made it: where it reached).
+        if (diffracted && diffracted->share[k] != 0) {
+            // Where the rays do not reach, the march's amplitude is kept (its energy makes
+            // foam) but not blended in.
+            const bool rays = v.kx != 0.0f || v.kz != 0.0f;
+            const std::uint8_t share = rays ? detail::held_share(wave, v.kx, v.kz, diffracted->spacing) : 0;
+            diffracted->held[k] = rays ? share : 255;
+            record->marched.set(at, w, share, diffracted->amplitude[k], true, diffracted->broken[k] != 0);
         }
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
@@ -301,43 +305,14 @@ void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffrac
     const std::lock_guard<std::mutex> guard(record.lock);
     const double quantum = record.energy.quantum();
     for (std::size_t k = 0; k < d.share.size(); ++k) {
-        if (d.share[k] == 0) continue;
-        const double a = wave.amplitude * static_cast<double>(d.amplitude[k]);
-        const auto e =
-            static_cast<std::uint32_t>(std::min(std::llround(a * a * d.share_of(k) / quantum), 0xFFFFFFFFll));
-        record.energy.add(k, e, d.broken[k] != 0);
+        if (d.held[k] == 0) continue;
+        // The amplitude as the record holds it (half precision): a re-bake after an edit
+        // sums the same.
+        const float amplitude = glm::unpackHalf1x16(glm::packHalf1x16(d.amplitude[k]));
+        record.energy.add(k,
+                          detail::energy_quanta(wave.amplitude * static_cast<double>(amplitude), d.held_of(k), quantum),
+                          d.broken[k] != 0);
     }
-}
-
-/// The runs' diffracted energy at world xz `p`, texel (i, j) of `grid`: read where a run
-/// lies on that grid, sampled bilinearly elsewhere.
-detail::DiffractedEnergy diffracted_energy(const std::vector<RunBake>& runs, const ShoreGrid& grid, int i, int j,
-                                           glm::dvec2 p) {
-    detail::DiffractedEnergy sum;
-    for (const RunBake& r : runs) {
-        if (!r.diffraction) continue;
-        const ShoreGrid& g = r.plan.grid;
-        const int n = g.resolution;
-        const detail::MarchedEnergy& energy = r.diffraction->energy;
-        if (g == grid) {
-            const detail::DiffractedEnergy e = energy.at(i, j);
-            sum.marched += e.marched;
-            sum.breaking += e.breaking;
-            continue;
-        }
-        const glm::dvec2 f = (p - g.corner) / g.texel - 0.5;
-        const int a = std::clamp(static_cast<int>(std::floor(f.x)), 0, n - 2);
-        const int b = std::clamp(static_cast<int>(std::floor(f.y)), 0, n - 2);
-        const double u = std::clamp(f.x - a, 0.0, 1.0), v = std::clamp(f.y - b, 0.0, 1.0);
-        const detail::DiffractedEnergy e00 = energy.at(a, b), e01 = energy.at(a, b + 1), e10 = energy.at(a + 1, b),
-                                       e11 = energy.at(a + 1, b + 1);
-        auto lerp = [&](double detail::DiffractedEnergy::*part) {
-            return (1 - u) * ((1 - v) * (e00.*part) + v * (e01.*part)) + u * ((1 - v) * (e10.*part) + v * (e11.*part));
-        };
-        sum.marched += lerp(&detail::DiffractedEnergy::marched);
-        sum.breaking += lerp(&detail::DiffractedEnergy::breaking);
-    }
-    return sum;
 }
 
 /// The runs as the cap reads them.
@@ -354,13 +329,16 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
                  const std::vector<RunBake>& runs, TilePlan& plan, unsigned threads) {
     const int n = field.resolution;
     const std::vector<RunTilesView> views = run_views(runs);
+    std::vector<detail::EnergyView> energies;
+    for (const RunBake& r : runs)
+        if (r.diffraction) energies.push_back({&r.plan.grid, &r.diffraction->energy});
     each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const double h = static_cast<double>(field.depth[k]);
         const double ratio = h > 0.0 ? detail::cap_ratio(waves, views, plan.grid, i, j, h, breaking_index) : 0.0;
         detail::shared_texel_rows(waves, views, plan.grid, i, j, field.depth[k], field.signed_distance[k], ratio, t,
-                                  diffracted_energy(runs, plan.grid, i, j, field.texel_center(i, j)));
+                                  detail::marched_energy_at(energies, plan.grid, i, j, field.texel_center(i, j)));
     });
 }
 
@@ -538,12 +516,18 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         // whose waves' periods are nearest its mean period (its wavelength needs no finer),
         // its height is where every component breaks.
         std::optional<detail::SeaHeight> sea_height;
+        std::optional<detail::SeaMarch> sea_march;  // with keep_marches
         if (options.diffraction && sea.components > 1) {
             std::size_t nearest = 0;
             for (std::size_t w = 1; w < nw; ++w)
                 if (std::abs(waves[w].period() - sea.mean_period) < std::abs(waves[nearest].period() - sea.mean_period))
                     nearest = w;
-            sea_height = detail::march_sea(waves, sea, runs[run_of[nearest]].field);
+            std::unique_ptr<detail::KeptMarch> sea_kept;
+            if (options.keep_marches) sea_kept = std::make_unique<detail::KeptMarch>();
+            sea_height = detail::march_sea(waves, sea, runs[run_of[nearest]].field, sea_kept.get());
+            if (options.keep_marches)
+                if (const auto whole = detail::whole_sea_wave(waves, sea))
+                    sea_march = detail::SeaMarch{*whole, run_of[nearest], *sea_height, std::move(sea_kept)};
         }
         std::atomic<std::size_t> waves_done{0};
         std::mutex progress_lock;  // the callback is the caller's: one call at a time
@@ -564,6 +548,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
             if (!run.plan.tile.empty()) {
                 const MarchedPhase m = march_phase(waves[w], *run.field);
                 std::optional<detail::DiffractedWave> diffracted;
+                detail::KeptMarch kept;
                 if (run.diffraction) {
                     const ShoreField& f = *run.field;
                     diffracted = detail::diffract_wave(
@@ -572,7 +557,12 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                             return !std::isfinite(m.phase[k]) ||
                                    (m.any_deep && detail::marched_deep(m.slowness[k], static_cast<double>(f.depth[k])));
                         },
-                        sea_height ? &*sea_height : nullptr);
+                        sea_height ? &*sea_height : nullptr, options.keep_marches ? &kept : nullptr);
+                    if (options.keep_marches) {
+                        run.diffraction->kept[w - run.first] =
+                            std::make_shared<const detail::KeptMarch>(std::move(kept));
+                        run.diffraction->spacing[w - run.first] = diffracted->spacing;
+                    }
                 }
                 wave_rows(waves[w], *run.field, m, diffracted ? &*diffracted : nullptr, w - run.first, run.plan,
                           run.diffraction.get());
@@ -600,6 +590,15 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         cap_runs(waves, options.breaking_index, runs, options.threads);
         for (RunBake& r : runs)
             if (r.plan.grid.texel != field->texel) extend_onto_land(waves, r, options.threads);
+        if (options.keep_marches && options.diffraction) {
+            auto marches = std::make_shared<detail::ShoreMarches>();
+            marches->sea = sea;
+            marches->sea_march = std::move(sea_march);
+            for (RunBake& r : runs)
+                marches->runs.push_back({r.field, std::move(r.diffraction->marched), std::move(r.diffraction->energy),
+                                         std::move(r.diffraction->kept), std::move(r.diffraction->spacing)});
+            *options.keep_marches = std::move(marches);
+        }
         std::vector<ShoreWaveLayer> layers;
         for (RunBake& r : runs) layers.push_back({r.plan.grid, r.first, r.count, std::move(r.plan.tiles)});
         return ShoreWaves::from_tiles(shared.grid, std::move(shared.tiles), std::move(layers), waves);

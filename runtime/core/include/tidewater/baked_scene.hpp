@@ -26,6 +26,7 @@ class ShoreWaves;
 struct ShoreField;
 namespace detail {
 struct WaterBodiesBake;
+struct ShoreMarches;
 }
 
 /// What bake_scene made. Immutable; scenes copied from a baked one share it.
@@ -43,6 +44,9 @@ struct SceneBake {
     /// Each lake's shore model, in the scene's order (null where the shore is disabled);
     /// the baked scene's lakes carry the ones that change their waves.
     std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
+    /// What the ocean's march keeps so that a stroke on the seabed is re-baked where it
+    /// reaches (SceneBakeOptions::keep_marches); null otherwise. Internal.
+    std::shared_ptr<const detail::ShoreMarches> ocean_marches;
     bool loaded = false;   ///< Loaded from the scene's saved bake rather than baked.
     double seconds = 0.0;  ///< Wall-clock time of the bake or load.
     /// What was taken unchanged from SceneBakeOptions::previous.

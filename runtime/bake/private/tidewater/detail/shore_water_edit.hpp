@@ -9,7 +9,8 @@
 // open sea out at); the texels under the windows, and the cap's reach round them, are
 // baked again with the bake's own rows (shore/shore_rows.hpp). Every other slot stays the
 // previous bake's, shared: a stroke on the seabed costs its windows, not every wave's
-// full march.
+// full march. With the parabolic march, each wave's march is taken up again the same way
+// (shore/shore_diffraction.hpp, rediffract_wave).
 #pragma once
 
 #include <memory>
@@ -24,9 +25,12 @@
 
 namespace tidewater::detail {
 
+struct ShoreMarches;
+
 struct WaterEdit {
     std::shared_ptr<const ShoreField> shoreline;
     std::shared_ptr<const ShoreWaves> model;
+    std::shared_ptr<const ShoreMarches> marches;  ///< with `marches` given: what they keep after the edit
 };
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
@@ -34,10 +38,15 @@ struct WaterEdit {
 /// heightmap_change of the two) only where the water stays, no tile of the model turns
 /// from open sea to stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
 /// the caller bakes in full. Within the windows the values are a full bake's to the
-/// tolerance; outside them, the previous bake's.
+/// tolerance; outside them, the previous bake's. A model baked with the parabolic march
+/// (diffraction) needs what its march kept (`marches`, baked with it): each wave's march
+/// is then taken up again round the edit and downstream of it (the random sea's first),
+/// and the texels where its amplitude moved by over kMarchAmplitudeTolerance are baked
+/// again too, with the foam there.
 std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
                                            double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline,
-                                           const std::shared_ptr<const ShoreWaves>& model, unsigned threads);
+                                           const std::shared_ptr<const ShoreWaves>& model, unsigned threads,
+                                           const std::shared_ptr<const ShoreMarches>& marches = nullptr);
 
 }  // namespace tidewater::detail

@@ -16,6 +16,10 @@
 
 namespace tidewater {
 
+namespace detail {
+struct ShoreMarches;
+}
+
 struct ShoreWaveOptions {
     int resolution = 256;  ///< Texels per side over the terrain's extent, 16 to 8192.
     /// The square the model covers; none: the terrain's extent (a lake's: its basin). Not
@@ -36,6 +40,9 @@ struct ShoreWaveOptions {
     /// diffraction, nonlinear shoaling, breaking by dissipation), its fields put in the
     /// rays' place where the march holds (shore_diffraction.hpp).
     bool diffraction = true;
+    /// Where given (with `diffraction`), what the march keeps for a re-bake after a stroke
+    /// on the seabed is put there (shore/shore_marches.hpp); null when nothing was marched.
+    std::shared_ptr<const detail::ShoreMarches>* keep_marches = nullptr;
 };
 
 /// Bakes the model over `terrain` at `water_level`. `shoreline`, when given, is a signed

@@ -19,6 +19,7 @@
 #include <glm/vec2.hpp>
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "host_device.h"
@@ -177,7 +178,8 @@ struct ShoreTiles {
     /// Calls visit(texel's floats, i, j) for every texel of a stored slot, aprons included,
     /// whose grid texel (i, j) lies in [i0, i1) x [j0, j1), each slot made writable first
     /// (slot_for_writing); tiles of open sea and dry land are left as they are. The tiles
-    /// are spread over `threads` workers (0: all), each slot written by one.
+    /// are spread over `threads` workers (0: all), each slot written by one. A visitor
+    /// that takes two more is also given the slot and the texel's place in it.
     template <typename Visit>
     void write_texels(int i0, int j0, int i1, int j1, const Visit& visit, unsigned threads = 1) {
         i0 = std::max(i0, 0);
@@ -200,7 +202,11 @@ struct ShoreTiles {
                 const std::size_t g = grid_index(tile, s);
                 const int i = static_cast<int>(g % static_cast<std::size_t>(resolution));
                 const int j = static_cast<int>(g / static_cast<std::size_t>(resolution));
-                if (i >= i0 && j >= j0 && i < i1 && j < j1) visit(slot + s * stride, i, j);
+                if (i < i0 || j < j0 || i >= i1 || j >= j1) continue;
+                if constexpr (std::is_invocable_v<const Visit&, float*, int, int, std::uint32_t, std::size_t>)
+                    visit(slot + s * stride, i, j, pages[tile], s);
+                else
+                    visit(slot + s * stride, i, j);
             }
         };
         if (threads == 1)

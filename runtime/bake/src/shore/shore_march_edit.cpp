@@ -1,0 +1,237 @@
+#include "shore/shore_march_edit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <limits>
+
+#include "shore/shore_diffraction.hpp"
+#include "tidewater/constants.hpp"
+#include "tidewater/detail/parallel.hpp"
+
+namespace tidewater::detail {
+
+void RunMarchChanges::assign(const TexelRange& range, std::size_t waves) {
+    range_ = range;
+    waves_ = waves;
+    const std::size_t count =
+        range.empty() ? 0 : static_cast<std::size_t>(range.width()) * static_cast<std::size_t>(range.height()) * waves;
+    amplitude_.assign(count, std::numeric_limits<float>::quiet_NaN());
+    flags_.assign(count, 0);
+}
+
+std::size_t RunMarchChanges::at(int i, int j, std::size_t w) const {
+    return (static_cast<std::size_t>(j - range_.j0) * static_cast<std::size_t>(range_.width()) +
+            static_cast<std::size_t>(i - range_.i0)) *
+               waves_ +
+           w;
+}
+
+void RunMarchChanges::set(int i, int j, std::size_t w, float amplitude, bool reached, bool broken) {
+    const std::size_t k = at(i, j, w);
+    amplitude_[k] = amplitude;
+    flags_[k] = static_cast<std::uint8_t>((reached ? 1 : 0) | (broken ? 2 : 0));
+}
+
+bool RunMarchChanges::find(int i, int j, std::size_t w, float& amplitude, bool& reached, bool& broken) const {
+    if (range_.empty() || !range_.contains(i, j)) return false;
+    const std::size_t k = at(i, j, w);
+    if (std::isnan(amplitude_[k])) return false;
+    amplitude = amplitude_[k];
+    reached = (flags_[k] & 1) != 0;
+    broken = (flags_[k] & 2) != 0;
+    return true;
+}
+
+namespace {
+
+/// The random sea's height is taken to this (over its open-sea height), far finer than a
+/// component's amplitude: in the surf zone Battjes and Janssen's share of broken waves,
+/// which every component dissipates by, is steep in the sea's height.
+constexpr double kSeaHeightTolerance = 1e-5;
+
+/// A run's grid with the edit's depths: the shoreline's field after the edit where the
+/// run lies on its grid (it holds the same depths), else a copy whose edited texels are
+/// put in (its other values shared).
+std::shared_ptr<const ShoreField> field_after(const std::shared_ptr<const ShoreField>& before,
+                                              const std::shared_ptr<const ShoreField>& shoreline_before,
+                                              const std::shared_ptr<const ShoreField>& shoreline_after,
+                                              const PatchedDepths& patched) {
+    if (before == shoreline_before) return shoreline_after;
+    if (patched.width <= 0 || patched.height <= 0) return before;
+    auto field = std::make_shared<ShoreField>(*before);
+    std::vector<float>& depth = field->depth.write();
+    for (int b = 0; b < patched.height; ++b)
+        for (int a = 0; a < patched.width; ++a)
+            depth[field->index(patched.i0 + a, patched.j0 + b)] =
+                patched.depth[static_cast<std::size_t>(b) * static_cast<std::size_t>(patched.width) +
+                              static_cast<std::size_t>(a)];
+    return field;
+}
+
+/// The edited texels of a run's grid and their depths after the edit.
+PatchedDepths patched_depths(const ShoreField& field, const TexelRange& edit, std::size_t run,
+                             const MarchEditInput& input) {
+    PatchedDepths p;
+    p.field = &field;
+    if (edit.empty()) return p;
+    p.i0 = edit.i0;
+    p.j0 = edit.j0;
+    p.width = edit.width();
+    p.height = edit.height();
+    p.depth.resize(static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height));
+    for (int j = edit.j0; j <= edit.j1; ++j)
+        for (int i = edit.i0; i <= edit.i1; ++i)
+            p.depth[static_cast<std::size_t>(j - edit.j0) * static_cast<std::size_t>(p.width) +
+                    static_cast<std::size_t>(i - edit.i0)] = input.depth_after(run, i, j);
+    return p;
+}
+
+}  // namespace
+
+MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> waves, const WorldRect& reach,
+                          const MarchEditInput& input, const std::shared_ptr<const ShoreField>& shoreline_before,
+                          const std::shared_ptr<const ShoreField>& shoreline_after, unsigned threads) {
+    MarchEdit out;
+    const std::size_t run_count = marches.runs.size();
+    std::vector<PatchedDepths> patched(run_count);
+    std::vector<TexelRange> edits(run_count);
+    out.runs.resize(run_count);
+    for (std::size_t r = 0; r < run_count; ++r) {
+        edits[r] = input.edited(r);
+        patched[r] = patched_depths(*marches.runs[r].field, edits[r], r, input);
+    }
+
+    // The random sea first: every component breaks at its height.
+    WorldRect component_reach = reach;
+    const SeaHeight* sea_before = nullptr;
+    const SeaHeight* sea_after = nullptr;
+    if (marches.sea_march) {
+        const SeaMarch& sm = *marches.sea_march;
+        SeaMarch after = sm;
+        const ShoreField& field = *marches.runs[sm.run].field;
+        const PatchedDepths& depths = patched[sm.run];
+        if (!edits[sm.run].empty() && sm.kept) {
+            auto kept = std::make_shared<KeptMarch>(*sm.kept);
+            const DiffractionChange change = rediffract_wave(
+                sm.whole, marches.sea, field, depths, *sm.kept, reach,
+                [&](std::size_t k) {
+                    const auto n = static_cast<std::size_t>(field.resolution);
+                    return sea_leaves(sm.whole,
+                                      static_cast<double>(depths.at(static_cast<int>(k % n), static_cast<int>(k / n))));
+                },
+                kSeaHeightTolerance, nullptr, nullptr, kept.get());
+            // Every component breaks at the sea's height: where that moved, its march may
+            // move too, however far from the stroke across its own direction.
+            const auto n = static_cast<std::size_t>(field.resolution);
+            for (const std::uint32_t k : change.texels) {
+                const glm::dvec2 p = field.texel_center(static_cast<int>(k % n), static_cast<int>(k / n));
+                component_reach.lo = glm::min(component_reach.lo, p - field.texel);
+                component_reach.hi = glm::max(component_reach.hi, p + field.texel);
+            }
+            for (std::size_t c = 0; c < change.texels.size(); ++c)
+                after.height.height[change.texels[c]] =
+                    change.share[c] > 0
+                        ? static_cast<float>(2.0 * sm.whole.amplitude * static_cast<double>(change.amplitude[c]))
+                        : 0.0f;
+            after.kept = std::move(kept);
+        }
+        out.sea_march = std::move(after);
+        sea_before = &sm.height;
+        sea_after = &out.sea_march->height;
+    }
+
+    // Then every wave of every run whose grid the edit reaches.
+    struct Job {
+        std::size_t run, wave;
+    };
+    std::vector<Job> jobs;
+    for (std::size_t r = 0; r < run_count; ++r) {
+        const RunMarches& run = marches.runs[r];
+        out.runs[r].kept = run.kept;
+        if (edits[r].empty()) continue;
+        for (std::size_t w = 0; w < run.kept.size(); ++w)
+            if (run.kept[w]) jobs.push_back({r, w});
+    }
+    std::vector<DiffractionChange> changes(jobs.size());
+    std::vector<std::shared_ptr<const KeptMarch>> kept_after(jobs.size());
+    std::size_t first_wave_of_run = 0;
+    std::vector<std::size_t> first_wave(run_count);
+    for (std::size_t r = 0; r < run_count; ++r) {
+        first_wave[r] = first_wave_of_run;
+        first_wave_of_run += marches.runs[r].kept.size();
+    }
+    parallel_for_each(jobs.size(), threads, [&](std::size_t j) {
+        const std::size_t r = jobs[j].run, w = jobs[j].wave;
+        const RunMarches& run = marches.runs[r];
+        auto kept = std::make_shared<KeptMarch>(*run.kept[w]);
+        changes[j] = rediffract_wave(
+            waves[first_wave[r] + w], marches.sea, *run.field, patched[r], *run.kept[w], component_reach,
+            [&](std::size_t k) { return input.keep(r, w, k); }, kMarchAmplitudeTolerance, sea_before, sea_after,
+            kept.get());
+        kept_after[j] = std::move(kept);
+    });
+
+    // Per run: the texels its waves' marches moved at, and what they give there now.
+    for (std::size_t r = 0; r < run_count; ++r) {
+        RunMarchEdit& e = out.runs[r];
+        e.field = field_after(marches.runs[r].field, shoreline_before, shoreline_after, patched[r]);
+        const auto n = static_cast<std::size_t>(marches.runs[r].field->resolution);
+        TexelRange moved{static_cast<int>(n), static_cast<int>(n), -1, -1};
+        for (std::size_t j = 0; j < jobs.size(); ++j) {
+            if (jobs[j].run != r) continue;
+            e.kept[jobs[j].wave] = kept_after[j];
+            for (const std::uint32_t k : changes[j].texels) {
+                const int i = static_cast<int>(k % n), jj = static_cast<int>(k / n);
+                moved = {std::min(moved.i0, i), std::min(moved.j0, jj), std::max(moved.i1, i), std::max(moved.j1, jj)};
+            }
+        }
+        e.moved = moved.empty() ? TexelRange{0, 0, -1, -1} : moved;
+        e.changes.assign(e.moved, marches.runs[r].kept.size());
+        for (std::size_t j = 0; j < jobs.size(); ++j) {
+            if (jobs[j].run != r) continue;
+            const DiffractionChange& c = changes[j];
+            for (std::size_t t = 0; t < c.texels.size(); ++t)
+                e.changes.set(static_cast<int>(c.texels[t] % n), static_cast<int>(c.texels[t] / n), jobs[j].wave,
+                              c.amplitude[t], c.share[t] > 0, c.broken[t] != 0);
+        }
+    }
+    return out;
+}
+
+float marched_amplitude(const Wave& wave, double spacing, const RunMarchChanges& changes, MarchedAmplitudes& record,
+                        std::size_t at, std::size_t w, int i, int j, float rays, float kx, float kz, double h) {
+    float amplitude = 0.0f;
+    bool reached = false, broken = false;
+    const bool moved = changes.find(i, j, w, amplitude, reached, broken);
+    if (!moved) {
+        reached = record.reached(at, w);
+        broken = record.broken(at, w);
+        amplitude = record.amplitude(at, w);
+    }
+    const std::uint8_t share =
+        reached && (kx != 0.0f || kz != 0.0f) ? held_share(wave, kx, kz, spacing) : std::uint8_t{0};
+    if (moved || share != record.share(at, w)) record.set(at, w, share, amplitude, reached, broken);
+    if (!(share > 0 && h > 0.0)) return rays;
+    const float s = static_cast<float>(share) / 255.0f;
+    return s * record.amplitude(at, w) + (1.0f - s) * rays;
+}
+
+std::pair<std::uint32_t, std::uint32_t> marched_energy(std::span<const Wave> waves, const MarchedAmplitudes& record,
+                                                       std::size_t at, const float* texel, double quantum) {
+    const std::size_t nw = waves.size();
+    std::uint32_t energy = 0, breaking = 0;
+    for (std::size_t w = 0; w < nw; ++w) {
+        if (!record.reached(at, w)) continue;
+        const bool rays = texel[2 * nw + w] != 0.0f || texel[3 * nw + w] != 0.0f;
+        const double share = rays ? static_cast<double>(record.share(at, w)) / 255.0 : 1.0;
+        if (share == 0.0) continue;
+        const std::uint32_t e =
+            energy_quanta(waves[w].amplitude * static_cast<double>(record.amplitude(at, w)), share, quantum);
+        MarchedEnergy::saturating_add(energy, e);
+        if (record.broken(at, w)) MarchedEnergy::saturating_add(breaking, e);
+    }
+    return {energy, breaking};
+}
+
+}  // namespace tidewater::detail

@@ -1,0 +1,90 @@
+// A stroke on the seabed under waves baked with the parabolic march: each wave's march
+// (the random sea's first, whose height every component breaks at) taken up again round
+// the stroke and downstream of it from what the bake kept (shore_marches.hpp), and the
+// march's part of each wave's amplitude and of the foam put back where it moved. The
+// rays' part is shore_water_edit.cpp's, which calls these. Private to the bake.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "shore/shore_edit_region.hpp"
+#include "shore/shore_marches.hpp"
+
+namespace tidewater::detail {
+
+/// Per texel of a run's grid and wave of the run, what its march gives after the edit
+/// where that moved: the amplitude factor, whether it reaches the texel and whether the
+/// wave is broken there.
+class RunMarchChanges {
+  public:
+    void assign(const TexelRange& range, std::size_t waves);
+    void set(int i, int j, std::size_t w, float amplitude, bool reached, bool broken);
+    /// False where the march did not move at (i, j) for wave w.
+    bool find(int i, int j, std::size_t w, float& amplitude, bool& reached, bool& broken) const;
+    const TexelRange& range() const { return range_; }
+
+  private:
+    std::size_t at(int i, int j, std::size_t w) const;
+    TexelRange range_{0, 0, -1, -1};
+    std::size_t waves_ = 0;
+    std::vector<float> amplitude_;
+    std::vector<std::uint8_t> flags_;
+};
+
+/// One run's marches after the edit.
+struct RunMarchEdit {
+    std::shared_ptr<const ShoreField> field;  ///< its grid, the depths after the edit
+    std::vector<std::shared_ptr<const KeptMarch>> kept;
+    RunMarchChanges changes;
+    TexelRange moved{0, 0, -1, -1};  ///< the texels some wave's march moved at (empty: none)
+};
+
+struct MarchEdit {
+    std::vector<RunMarchEdit> runs;
+    std::optional<SeaMarch> sea_march;
+};
+
+/// What the edit's run needs told: per run, the texels whose depth may have changed and
+/// their depth after it; per run, wave and grid texel, whether the march leaves the
+/// texel to the open sea (as the bake's `keep`), over the rays after the edit.
+struct MarchEditInput {
+    std::function<TexelRange(std::size_t run)> edited;
+    std::function<float(std::size_t run, int i, int j)> depth_after;
+    std::function<bool(std::size_t run, std::size_t wave, std::size_t k)> keep;
+};
+
+/// Every wave's march of `marches` (baked for `waves`) taken up again after an edit
+/// within `reach`; `threads` workers. `shoreline_after` is the shoreline's field after
+/// the edit: a run on its grid takes its depths from it.
+MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> waves, const WorldRect& reach,
+                          const MarchEditInput& input, const std::shared_ptr<const ShoreField>& shoreline_before,
+                          const std::shared_ptr<const ShoreField>& shoreline_after, unsigned threads);
+
+/// Wave `w` of a run (its `spacing`) at stored texel `at`, grid texel (i, j) of depth h,
+/// after the edit: the rays' capped amplitude `rays` blended with the march's as the
+/// bake's cap does, the march's share by the angle of the rays' wavevector (kx, kz)
+/// there; `record` updated where that moved.
+float marched_amplitude(const Wave& wave, double spacing, const RunMarchChanges& changes, MarchedAmplitudes& record,
+                        std::size_t at, std::size_t w, int i, int j, float rays, float kx, float kz, double h);
+
+/// A stored texel's marched energy and its breaking part in quanta of `quantum` m^2, from
+/// the run's `record` at `at`, as the bake sums it over the run's `waves`; `texel` is the
+/// texel's rows (a wave the rays do not reach, no wavevector, counts the march whole).
+std::pair<std::uint32_t, std::uint32_t> marched_energy(std::span<const Wave> waves, const MarchedAmplitudes& record,
+                                                       std::size_t at, const float* texel, double quantum);
+
+/// A wave's marched energy at a texel in quanta of `quantum`: its amplitude `amplitude`
+/// (m) times the march's share, squared; the bake's and the edit's one expression.
+inline std::uint32_t energy_quanta(double amplitude, double share, double quantum) {
+    return static_cast<std::uint32_t>(std::min(std::llround(amplitude * amplitude * share / quantum), 0xFFFFFFFFll));
+}
+
+}  // namespace tidewater::detail
