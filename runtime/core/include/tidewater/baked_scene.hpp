@@ -27,7 +27,7 @@ struct ShoreField;
 namespace detail {
 struct WaterBodiesBake;
 struct ShoreMarches;
-}
+}  // namespace detail
 
 /// What bake_scene made. Immutable; scenes copied from a baked one share it.
 struct SceneBake {
