@@ -501,7 +501,6 @@ struct ParabolicMarch::State {
     Marcher marcher;
     std::vector<float> here_depths, next_depths;
     RowMedium here, next;
-    std::size_t advances = 0;  ///< taken so far, the entry counted as the first
 };
 
 ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
@@ -522,7 +521,6 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
     if (MarchColumns* c = in.keep_columns) {
         c->count = (un - 1) / static_cast<std::size_t>(c->every) + 1;
         keep_columns();
-        c->row_last.push_back(0);
     }
 }
 
@@ -545,7 +543,6 @@ void ParabolicMarch::keep_columns() {
         c.broken.push_back(s.marcher.broken[j]);
     }
     c.phase.push_back(s.marcher.phase);
-    ++s.advances;
 }
 
 bool ParabolicMarch::advance() {
@@ -560,7 +557,7 @@ bool ParabolicMarch::advance() {
     Marcher::Sides sides;
     std::size_t t = 0;
     if (held) {
-        t = held->row_last[static_cast<std::size_t>(in_.sides_first_row + step_ + 1)];
+        t = static_cast<std::size_t>(in_.sides_first_row + step_ + 1);
         sides.lo = in_.side_lo != ParabolicInput::kNoSide;
         sides.hi = in_.side_hi != ParabolicInput::kNoSide;
         if (sides.lo) {
@@ -574,10 +571,7 @@ bool ParabolicMarch::advance() {
         sides.phase = held->phase[t];
     }
     m.advance(s.here, s.next, s.here_depths, s.next_depths, in_.grid.dx, held ? &sides : nullptr);
-    if (in_.keep_columns) {
-        keep_columns();
-        in_.keep_columns->row_last.push_back(static_cast<std::uint32_t>(s.advances - 1));
-    }
+    if (in_.keep_columns) keep_columns();
     if (held && in_.advanced) in_.advanced(t, m.a, m.broken, m.phase);
     std::swap(s.here, s.next);
     std::swap(s.here_depths, s.next_depths);

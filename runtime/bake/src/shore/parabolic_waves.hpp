@@ -38,20 +38,18 @@ struct SurfZone {
     double stable_index = 0.4;  ///< Gamma
 };
 
-/// A march's state at every `every`-th point (0, every, 2 every, ...), kept after each
-/// of its advances (a row's substeps each), so that a window of it can be marched again
-/// later with these as its sides. The amplitudes carry a phase common to the whole row
-/// (the rows' mean wavenumbers, integrated), kept with them: a window's own differs.
+/// A march's state at every `every`-th point (0, every, 2 every, ...), kept on each of its
+/// rows from its first, so that a window of it can be marched again later with these as
+/// its sides. The amplitudes carry a phase common to the whole row (the rows' mean
+/// wavenumbers, integrated), kept with them: a window's own differs.
 struct MarchColumns {
     int every = 0;                                ///< set by the caller
     std::size_t count = 0;                        ///< columns a row
-    std::vector<std::complex<double>> amplitude;  ///< advance t's column c at t * count + c
+    std::vector<std::complex<double>> amplitude;  ///< row r's column c at r * count + c
     std::vector<char> broken;
-    std::vector<double> phase;            ///< per advance, the phase common to its row
-    std::vector<std::uint32_t> row_last;  ///< per row, the advance that ends on it (row 0: advance 0, its entry)
+    std::vector<double> phase;  ///< per row, the phase common to it
     std::size_t bytes() const {
-        return amplitude.size() * sizeof(amplitude[0]) + broken.size() + phase.size() * sizeof(double) +
-               row_last.size() * sizeof(std::uint32_t);
+        return amplitude.size() * sizeof(amplitude[0]) + broken.size() + phase.size() * sizeof(double);
     }
 };
 
@@ -86,22 +84,22 @@ struct ParabolicInput {
     std::span<const std::complex<double>> entering_amplitude;
     std::span<const char> entering_broken;
     double entering_phase = 0.0;
-    /// Where given, the march keeps its state at every `every`-th point there after each
-    /// advance (MarchColumns).
+    /// Where given, the march keeps its state at every `every`-th point there on each row
+    /// (MarchColumns).
     MarchColumns* keep_columns = nullptr;
     /// Where given, this march is a window of the march that kept `sides`, taken up at
-    /// its row `sides_first_row`: it steps as that march did (its substeps), and its first
-    /// and last points are held at that march's values at kept columns `side_lo` and
+    /// its row `sides_first_row`: its first and last points are held at that march's
+    /// values at kept columns `side_lo` and
     /// `side_hi` (kNoSide: a wall, the longer march's own), so that over the same depths
     /// the window reproduces that march.
     const MarchColumns* sides = nullptr;
     static constexpr std::size_t kNoSide = static_cast<std::size_t>(-1);
     std::size_t side_lo = kNoSide, side_hi = kNoSide;
     int sides_first_row = 0;
-    /// With `sides`, called after each advance with the longer march's advance it stands
-    /// for, the state (`across` values) and the phase it carries.
-    std::function<void(std::size_t advance, std::span<const std::complex<double>> amplitude,
-                       std::span<const char> broken, double phase)>
+    /// With `sides`, called after each step with the longer march's row it stands for,
+    /// the state (`across` values) and the phase it carries.
+    std::function<void(std::size_t row, std::span<const std::complex<double>> amplitude, std::span<const char> broken,
+                       double phase)>
         advanced;
     SurfZone surf;
     bool breaking = true;              ///< false: no breaking, no dissipation

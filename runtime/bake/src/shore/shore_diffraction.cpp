@@ -340,7 +340,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
     const int n_kept = std::min(static_cast<int>(kept.rows()) - 1, (edit_row - kept.start) / KeptMarch::kKeptRowsEvery);
     const int r0 = std::min(last_kept, kept.start + KeptMarch::kKeptRowsEvery * n_kept);
     const MarchColumns& columns = kept.columns;
-    const double entering_phase = columns.phase[columns.row_last[static_cast<std::size_t>(r0 - kept.start)]];
+    const double entering_phase = columns.phase[static_cast<std::size_t>(r0 - kept.start)];
     // The window's sides on kept columns, at least this many points from the edit; the
     // points next to each side whose difference is watched.
     constexpr int every = KeptMarch::kKeptPointsEvery, kSide = 3;
@@ -384,7 +384,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         const bool held_lo = old_in.side_lo != ParabolicInput::kNoSide,
                    held_hi = old_in.side_hi != ParabolicInput::kNoSide;
         // What the new march leaves for `updated`, written once the window holds: its kept
-        // columns inside the window after each advance, and its kept rows, turned to the
+        // columns inside the window after each step, and its kept rows, turned to the
         // phase the first march's carry.
         struct Kept {
             std::size_t at;
@@ -457,8 +457,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             if (updated && (frame_row - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
                 const auto n = static_cast<std::size_t>((frame_row - kept.start) / KeptMarch::kKeptRowsEvery);
                 if (n < kept.rows()) {
-                    const double row_phase =
-                        columns.phase[columns.row_last[static_cast<std::size_t>(frame_row - kept.start)]];
+                    const double row_phase = columns.phase[static_cast<std::size_t>(frame_row - kept.start)];
                     const std::complex<double> turn = std::polar(1.0, new_phase - row_phase);
                     const ParabolicRow row = new_march.row();
                     for (int j = 0; j < width; ++j)
