@@ -104,6 +104,7 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
 
     // The random sea first: every component breaks at its height.
     WorldRect component_reach = reach;
+    bool sea_moved = false;
     const SeaHeight* sea_before = nullptr;
     const SeaHeight* sea_after = nullptr;
     if (marches.sea_march) {
@@ -135,6 +136,7 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
                         ? static_cast<float>(2.0 * sm.whole.amplitude * static_cast<double>(change.amplitude[c]))
                         : 0.0f;
             after.kept = std::move(kept);
+            sea_moved = !change.texels.empty();
         }
         out.sea_march = std::move(after);
         sea_before = &sm.height;
@@ -149,7 +151,9 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
     for (std::size_t r = 0; r < run_count; ++r) {
         const RunMarches& run = marches.runs[r];
         out.runs[r].kept = run.kept;
-        if (edits[r].empty()) continue;
+        // A grid whose texel centres the stroke missed keeps its depths, but its waves
+        // still break at the sea's height wherever that moved.
+        if (edits[r].empty() && !sea_moved) continue;
         for (std::size_t w = 0; w < run.kept.size(); ++w)
             if (run.kept[w]) jobs.push_back({r, w});
     }
