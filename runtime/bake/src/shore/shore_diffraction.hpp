@@ -137,10 +137,10 @@ inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 /// is marched over the old and the new depths side by side in a window across the march
 /// round the edit, and what the two differ by is the change. The window's sides are held
 /// at the first march's values (at kept columns), so that over the old depths it is that
-/// march; where the two differ by over half the tolerance next to a side, the new march's
-/// side is not the first one's and the window is widened and marched again. The march
-/// stops where the two have agreed to far under the tolerance for a while (the edit's
-/// wake has died out) or at the grid's end. `keep`, `sea_before` and `sea_after` as
+/// march; where next to a side the two differ by over a twentieth of the tolerance (in
+/// phase too) or in breaking, the new march's side is not the first one's and the window
+/// is widened and marched again. The march stops where, past the edit, the two agree
+/// exactly (the edit's wake has died out), or at the grid's end. `keep`, `sea_before` and `sea_after` as
 /// diffract_wave's (the sea's heights over each depth). With `updated` (a copy of `kept`),
 /// what the march keeps is updated there to the new depths' within the window (in the
 /// phase `kept` carries), so that a later edit takes up the march over these depths.
