@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <glm/gtc/packing.hpp>
 
+#include "shore/march_record.hpp"
 #include "shore/shore_diffraction.hpp"
 #include "tidewater/constants.hpp"
 
@@ -52,8 +54,10 @@ Wave wave() {
 
 /// A shoal of `shoal` m at `at` re-marched from the march over the plane beach: its change
 /// added to the first march against a full march over the new depths. The points the
-/// re-marches visited over what two full marches from the first row do.
-double remarched_shoal(double shoal, glm::dvec2 at) {
+/// re-marches visited over what two full marches from the first row do. With
+/// `held_in_half`, the first march's texels are given as the model holds them (in half
+/// precision): a wide window is then the whole row, marched once.
+double remarched_shoal(double shoal, glm::dvec2 at, bool held_in_half = false) {
     const ShoreField before = beach(0.0, at), after = beach(shoal, at);
     const Wave w = wave();
     const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
@@ -68,13 +72,22 @@ double remarched_shoal(double shoal, glm::dvec2 at) {
     // Where the shoal's depths differ from the plane's by over a millimetre.
     const WorldRect changed{at - 30.0, at + 30.0};
     const PatchedDepths patched{&before, 0, 0, kN, kN, after.depth.values()};
-    const DiffractionChange change = rediffract_wave(w, sea, before, patched, kept, changed, fill_all);
+    Remarch how;
+    if (held_in_half)
+        how.marched_before = [&](std::size_t k) -> std::optional<MarchedTexel> {
+            const float held = glm::unpackHalf1x16(glm::packHalf1x16(old_march.amplitude[k]));
+            return MarchedTexel{held, old_march.share[k] > 0, old_march.broken[k] != 0,
+                                MarchedAmplitudes::rounding(held)};
+        };
+    const DiffractionChange change = rediffract_wave(w, sea, before, patched, kept, changed, fill_all, how);
     const auto t2 = std::chrono::steady_clock::now();
 
     std::vector<float> amplitude = old_march.amplitude;
+    if (held_in_half)
+        for (float& a : amplitude) a = glm::unpackHalf1x16(glm::packHalf1x16(a));
     std::vector<std::uint8_t> share = old_march.share, broken = old_march.broken;
     for (std::size_t c = 0; c < change.texels.size(); ++c) {
-        amplitude[change.texels[c]] += change.amplitude_change[c];
+        amplitude[change.texels[c]] = change.amplitude[c];
         share[change.texels[c]] = change.share[c];
         broken[change.texels[c]] = change.broken[c];
     }
@@ -103,8 +116,9 @@ double remarched_shoal(double shoal, glm::dvec2 at) {
         std::chrono::duration<double>(t1 - t0).count(), static_cast<double>(kept.bytes()) / 1e6);
     EXPECT_GT(largest_change, 0.05);  // the shoal focuses the wave
     EXPECT_GT(change.texels.size(), moved / 2);
-    // Within twice the tolerance but at a texel or two on the breaker line, where a change
-    // far under the tolerance may move the onset of breaking.
+    // Within twice the tolerance (the half precision's rounding besides) but at a texel or
+    // two on the breaker line, where a change far under the tolerance may move the onset
+    // of breaking.
     EXPECT_LT(over, moved / 1000 + 3);
     EXPECT_LT(worst, 0.06);
     EXPECT_EQ(reached_differs, 0u);
@@ -123,10 +137,19 @@ TEST(ShoreRediffraction, AnEditsChangeAddedToTheFirstMarchIsTheMarchOverTheNewDe
     EXPECT_LT(remarched_shoal(0.5, {500.0, 660.0}), 0.45);
 }
 
+TEST(ShoreRediffraction, AWideWindowIsTheWholeRowMarchedOnceOverTheNewDepths) {
+    // The first march's texels as the model holds them: a window a third of the march
+    // wide or more is the whole row, marched over the new depths alone and compared with
+    // them. The 2 m shoal's wake widens its window to the whole row: one march from the
+    // kept row before it, under half of two in full.
+    EXPECT_LT(remarched_shoal(2.0, {500.0, 440.0}, true), 0.4);
+    EXPECT_LT(remarched_shoal(0.5, {500.0, 660.0}, true), 0.3);
+}
+
 /// The worst difference of `march` plus `change` from `target`'s amplitude factors.
 double worst_after(const DiffractedWave& march, const DiffractionChange& change, const DiffractedWave& target) {
     std::vector<float> amplitude = march.amplitude;
-    for (std::size_t c = 0; c < change.texels.size(); ++c) amplitude[change.texels[c]] += change.amplitude_change[c];
+    for (std::size_t c = 0; c < change.texels.size(); ++c) amplitude[change.texels[c]] = change.amplitude[c];
     double worst = 0.0;
     for (std::size_t k = 0; k < amplitude.size(); ++k)
         worst = std::max(worst, static_cast<double>(std::abs(amplitude[k] - target.amplitude[k])));
@@ -153,9 +176,10 @@ TEST(ShoreRediffraction, ASecondEditTakesUpTheMarchTheFirstLeft) {
     const DiffractedWave over_two = diffract_wave(w, sea, two, fill_all);
 
     KeptMarch after_one = kept;
+    Remarch keeping;
+    keeping.updated = &after_one;
     rediffract_wave(w, sea, plane, PatchedDepths{&plane, 0, 0, kN, kN, one.depth.values()}, kept,
-                    {first_at - 30.0, first_at + 30.0}, fill_all, kMarchAmplitudeTolerance, nullptr, nullptr,
-                    &after_one);
+                    {first_at - 30.0, first_at + 30.0}, fill_all, keeping);
     const PatchedDepths to_two{&one, 0, 0, kN, kN, two.depth.values()};
     const WorldRect second{second_at - 30.0, second_at + 30.0};
     const double taken_up =

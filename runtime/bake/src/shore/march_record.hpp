@@ -175,6 +175,13 @@ class MarchedAmplitudes {
         const Block* block = blocks_[block_of(at, w)].get();
         return block ? glm::unpackHalf1x16(block->amplitude[at % ShoreTiles::kSlotTexels]) : 0.0f;
     }
+    /// How far a held amplitude may lie from the one set: half the half precision's step
+    /// at its value (11 significant bits; 2^-24 apart under the least normal).
+    static double rounding(float amplitude) {
+        int exponent = 0;
+        std::frexp(amplitude, &exponent);
+        return amplitude == 0.0f ? 0.0 : std::ldexp(1.0, std::max(exponent - 12, -25));
+    }
     bool reached(std::size_t at, std::size_t w) const { return (flags(at, w) & kReached) != 0; }
     bool broken(std::size_t at, std::size_t w) const { return (flags(at, w) & kBroken) != 0; }
 

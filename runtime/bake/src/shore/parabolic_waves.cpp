@@ -579,11 +579,4 @@ bool ParabolicMarch::advance() {
     return true;
 }
 
-void march_parabolic(const ParabolicInput& in, const std::function<void(const ParabolicRow&)>& row_done) {
-    ParabolicMarch march(in);
-    if (!march.started()) return;
-    row_done(march.row());
-    while (march.advance()) row_done(march.row());
-}
-
 }  // namespace tidewater::detail

@@ -142,10 +142,6 @@ class ParabolicMarch {
     std::unique_ptr<State> state_;
 };
 
-/// Marches `input` from its first row to its last, calling `row_done` with each row (the
-/// first included) in order.
-void march_parabolic(const ParabolicInput& input, const std::function<void(const ParabolicRow&)>& row_done);
-
 /// The wavenumber of a wave of amplitude `amplitude` (m) at depth `depth` (m), whose linear
 /// wavenumber is `k_linear`: Kirby and Dalrymple's (1986) amplitude dispersion, Stokes'
 /// third order where the water is deep enough, Hedges' form where it is shallow.

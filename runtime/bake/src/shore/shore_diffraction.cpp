@@ -5,6 +5,7 @@
 #include <complex>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <optional>
 #include <utility>
 
 #include "shore/fast_marching.hpp"
@@ -313,8 +314,7 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
 
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
-                                  const std::function<bool(std::size_t)>& keep, double tolerance,
-                                  const SeaHeight* sea_before, const SeaHeight* sea_after, KeptMarch* updated) {
+                                  const std::function<bool(std::size_t)>& keep, const Remarch& how) {
     DiffractionChange out;
     if (kept.rows() == 0 || !(wave.amplitude > 0.0)) return out;
     const MarchFrame frame = march_frame(wave, before);
@@ -347,14 +347,24 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
     const int last_column = static_cast<int>(columns.count) - 1;
     int column_lo = std::max(0, (static_cast<int>(std::floor(y_lo)) - kSide) / every - 1);
     int column_hi = std::min(last_column, (static_cast<int>(std::ceil(y_hi)) + kSide) / every + 2);
+    // With what the first march left, a window as wide as a third of the march is the
+    // whole row instead, marched over the new depths alone: two marches side by side in a
+    // window (and each widening's again from its first row) cost more.
+    const bool whole_rows = static_cast<bool>(how.marched_before);
+    auto whole_if_wide = [&] {
+        if (whole_rows && 3 * (column_hi - column_lo) * every >= frame.points) {
+            column_lo = 0;
+            column_hi = last_column;
+        }
+    };
+    whole_if_wide();
     const double amplitude = wave.amplitude, least = 1e-6 * amplitude;
-    const double side_limit = 0.05 * tolerance * amplitude;
+    const double side_limit = 0.05 * how.tolerance * amplitude;
     const std::size_t row_at = static_cast<std::size_t>(n_kept) * static_cast<std::size_t>(kept.points);
 
     for (;;) {
         ++out.windows;
         out.texels.clear();
-        out.amplitude_change.clear();
         out.amplitude.clear();
         out.share.clear();
         out.broken.clear();
@@ -362,6 +372,8 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         const bool wall_hi = column_hi == last_column && last_column * every < frame.points - 1;
         const int lo = column_lo * every, hi = wall_hi ? frame.points - 1 : column_hi * every;
         const int width = hi - lo + 1;
+        // The whole row: no sides, and the first march's texels stand for the old march's.
+        const bool whole = whole_rows && lo == 0 && hi == frame.points - 1;
         std::vector<std::complex<double>> entering(static_cast<std::size_t>(width));
         for (int j = 0; j < width; ++j)
             entering[static_cast<std::size_t>(j)] =
@@ -369,8 +381,8 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         const std::span<const char> entering_broken(kept.broken.data() + row_at + lo, static_cast<std::size_t>(width));
         const auto old_depths = [&before](glm::dvec2 p) { return before.sample(before.depth, p); };
         const auto new_depths = [&after](glm::dvec2 p) { return after.sample(p); };
-        ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, old_depths, sea_before);
-        ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, new_depths, sea_after);
+        ParabolicInput old_in = march_input(wave, sea, frame, r0, lo, width, old_depths, how.sea_before);
+        ParabolicInput new_in = march_input(wave, sea, frame, r0, lo, width, new_depths, how.sea_after);
         for (ParabolicInput* in : {&old_in, &new_in}) {
             in->entering_amplitude = entering;
             in->entering_broken = entering_broken;
@@ -395,7 +407,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         double new_phase = entering_phase;
         const std::size_t first_inside = static_cast<std::size_t>(held_lo ? column_lo + 1 : column_lo);
         const std::size_t last_inside = static_cast<std::size_t>(held_hi ? column_hi - 1 : column_hi);
-        if (updated)
+        if (how.updated)
             new_in.advanced = [&](std::size_t t, std::span<const std::complex<double>> a, std::span<const char> broken,
                                   double phase) {
                 new_phase = phase;
@@ -407,54 +419,70 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
                 }
             };
         const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
-        ParabolicMarch old_march(old_in), new_march(new_in);
+        std::optional<ParabolicMarch> old_march;
+        if (!whole) old_march.emplace(old_in);
+        ParabolicMarch new_march(new_in);
         KeptRow old_before, old_after, new_before, new_after;
-        old_before.keep(old_march.row());
+        if (old_march) old_before.keep(old_march->row());
         new_before.keep(new_march.row());
         bool widen_lo = false, widen_hi = false;
-        while (old_march.advance() && new_march.advance()) {
-            out.points_visited += 2 * static_cast<std::size_t>(width);
-            old_after.keep(old_march.row());
+        while ((!old_march || old_march->advance()) && new_march.advance()) {
+            out.points_visited += (old_march ? 2 : 1) * static_cast<std::size_t>(width);
             new_after.keep(new_march.row());
             double largest = 0.0;
             bool same_breaking = true;
-            for (int j = 0; j < width; ++j) {
-                const auto ju = static_cast<std::size_t>(j);
-                const double d = std::abs(new_after.magnitude[ju] - old_after.magnitude[ju]);
-                largest = std::max(largest, d);
-                same_breaking = same_breaking && new_after.broken[ju] == old_after.broken[ju];
+            if (old_march) {
+                old_after.keep(old_march->row());
+                for (int j = 0; j < width; ++j) {
+                    const auto ju = static_cast<std::size_t>(j);
+                    const double d = std::abs(new_after.magnitude[ju] - old_after.magnitude[ju]);
+                    largest = std::max(largest, d);
+                    same_breaking = same_breaking && new_after.broken[ju] == old_after.broken[ju];
+                }
+                // Next to a held side the new march must be the old one there, in phase too
+                // (the side holds the old one's value): else the window is too narrow on
+                // that side.
+                const std::complex<double> to_old = std::polar(1.0, new_march.phase() - old_march->phase());
+                const ParabolicRow old_row = old_march->row(), new_row = new_march.row();
+                auto apart = [&](int j) {
+                    const auto ju = static_cast<std::size_t>(j);
+                    return std::abs(new_row.amplitude[ju] * to_old - old_row.amplitude[ju]) > side_limit ||
+                           new_row.broken[ju] != old_row.broken[ju];
+                };
+                for (int j = 0; j <= kSide && j < width; ++j) widen_lo = widen_lo || (held_lo && apart(j));
+                for (int j = std::max(0, width - 1 - kSide); j < width; ++j)
+                    widen_hi = widen_hi || (held_hi && apart(j));
+                if (widen_lo || widen_hi) break;
             }
-            // Next to a held side the new march must be the old one there, in phase too (the
-            // side holds the old one's value): else the window is too narrow on that side.
-            const std::complex<double> to_old = std::polar(1.0, new_march.phase() - old_march.phase());
-            const ParabolicRow old_row = old_march.row(), new_row = new_march.row();
-            auto apart = [&](int j) {
-                const auto ju = static_cast<std::size_t>(j);
-                return std::abs(new_row.amplitude[ju] * to_old - old_row.amplitude[ju]) > side_limit ||
-                       new_row.broken[ju] != old_row.broken[ju];
-            };
-            for (int j = 0; j <= kSide && j < width; ++j) widen_lo = widen_lo || (held_lo && apart(j));
-            for (int j = std::max(0, width - 1 - kSide); j < width; ++j) widen_hi = widen_hi || (held_hi && apart(j));
-            if (widen_lo || widen_hi) break;
-            const int r = old_march.row().step - 1;  // of the window's march; r0 + r of the frame
+            const int step = new_march.row().step;
+            const int r = step - 1;  // of the window's march; r0 + r of the frame
             for (std::size_t at = buckets.offsets[static_cast<std::size_t>(r)];
                  at < buckets.offsets[static_cast<std::size_t>(r) + 1]; ++at) {
                 const std::uint32_t k = buckets.texels[at];
                 const int i = static_cast<int>(k % static_cast<std::uint32_t>(before.resolution)),
                           jj = static_cast<int>(k / static_cast<std::uint32_t>(before.resolution));
                 const glm::dvec2 p = before.texel_center(i, jj);
-                const TexelFromRows was = texel_from_rows(frame, p, r0 + r, old_before, old_after, lo, least);
                 const TexelFromRows is = texel_from_rows(frame, p, r0 + r, new_before, new_after, lo, least);
-                const double change = (is.magnitude - was.magnitude) / amplitude;
-                if (std::abs(change) <= tolerance && is.reached == was.reached && is.broken == was.broken) continue;
+                MarchedTexel was;
+                if (old_march) {
+                    const TexelFromRows t = texel_from_rows(frame, p, r0 + r, old_before, old_after, lo, least);
+                    was = {static_cast<float>(t.magnitude / amplitude), t.reached, t.broken};
+                } else if (const std::optional<MarchedTexel> held = how.marched_before(k)) {
+                    was = *held;
+                } else {
+                    continue;  // nothing reads it
+                }
+                const double factor = is.magnitude / amplitude;
+                if (std::abs(factor - static_cast<double>(was.amplitude)) <= how.tolerance + was.rounding &&
+                    is.reached == was.reached && (!is.reached || !was.broken || is.broken == *was.broken))
+                    continue;
                 out.texels.push_back(k);
-                out.amplitude_change.push_back(static_cast<float>(change));
-                out.amplitude.push_back(static_cast<float>(is.magnitude / amplitude));
+                out.amplitude.push_back(static_cast<float>(factor));
                 out.share.push_back(is.reached ? 255 : 0);
                 out.broken.push_back(is.broken ? 1 : 0);
             }
-            const int frame_row = r0 + old_march.row().step;
-            if (updated && (frame_row - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
+            const int frame_row = r0 + step;
+            if (how.updated && (frame_row - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
                 const auto n = static_cast<std::size_t>((frame_row - kept.start) / KeptMarch::kKeptRowsEvery);
                 if (n < kept.rows()) {
                     const double row_phase = columns.phase[static_cast<std::size_t>(frame_row - kept.start)];
@@ -472,18 +500,18 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             // Past the edit, over the same depths and sea, two marches that agree exactly
             // stay so: the edit's wake has died out. (Anything short of exact may yet tip a
             // point over breaking's threshold further on.)
-            if (largest == 0.0 && same_breaking && old_march.row().step + r0 > static_cast<int>(std::ceil(x_hi)) + 1)
+            if (old_march && largest == 0.0 && same_breaking && step + r0 > static_cast<int>(std::ceil(x_hi)) + 1)
                 break;
         }
         if (!widen_lo && !widen_hi) {
-            if (updated) {
+            if (how.updated) {
                 for (const Kept& k : new_columns) {
-                    updated->columns.amplitude[k.at] = k.amplitude;
-                    updated->columns.broken[k.at] = k.broken;
+                    how.updated->columns.amplitude[k.at] = k.amplitude;
+                    how.updated->columns.broken[k.at] = k.broken;
                 }
                 for (const Kept& k : new_rows) {
-                    updated->amplitude[k.at] = k.amplitude;
-                    updated->broken[k.at] = k.broken;
+                    how.updated->amplitude[k.at] = k.amplitude;
+                    how.updated->broken[k.at] = k.broken;
                 }
             }
             return out;
@@ -492,6 +520,7 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         const int columns_wide = column_hi - column_lo;
         if (widen_lo) column_lo = std::max(0, column_lo - columns_wide);
         if (widen_hi) column_hi = std::min(last_column, column_hi + columns_wide);
+        whole_if_wide();
     }
 }
 

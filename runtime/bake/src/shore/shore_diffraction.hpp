@@ -117,20 +117,45 @@ struct PatchedDepths {
 
 /// What an edit of the depth under the water changes in a wave's march: the texels where
 /// the march's amplitude factor moved by over the tolerance, or its reach or breaking
-/// changed, with the change and what the march gives there now.
+/// changed, with what the march gives there now.
 struct DiffractionChange {
-    std::vector<std::uint32_t> texels;    ///< grid indices
-    std::vector<float> amplitude_change;  ///< the amplitude factor's change (over the open-sea amplitude)
-    std::vector<float> amplitude;         ///< the amplitude factor after the edit
-    std::vector<std::uint8_t> share;      ///< 255 where the march reaches the texel after the edit, else 0
-    std::vector<std::uint8_t> broken;     ///< whether the wave is broken there after the edit
-    std::size_t points_visited = 0;       ///< points the re-marches visited, both depths and every window tried
-    int windows = 0;                      ///< windows marched (one more each time it was widened)
+    std::vector<std::uint32_t> texels;  ///< grid indices
+    std::vector<float> amplitude;       ///< the amplitude factor after the edit (over the open-sea amplitude)
+    std::vector<std::uint8_t> share;    ///< 255 where the march reaches the texel after the edit, else 0
+    std::vector<std::uint8_t> broken;   ///< whether the wave is broken there after the edit
+    std::size_t points_visited = 0;     ///< points the re-marches visited, both depths and every window tried
+    int windows = 0;                    ///< windows marched (one more each time it was widened)
 };
 
 /// A change is left out under this (the amplitude factor, over the open-sea amplitude):
 /// about the half precision the model holds amplitudes in.
 inline constexpr double kMarchAmplitudeTolerance = 1e-3;
+
+/// What the first march left at a texel, as the model holds it.
+struct MarchedTexel {
+    float amplitude = 0.0f;  ///< the amplitude factor (over the open-sea amplitude)
+    bool reached = false;
+    std::optional<bool> broken;  ///< none: not kept (the sea's march keeps its height alone)
+    /// How far `amplitude` may lie from the march's own value (half its rounding step
+    /// where it is held rounded): a change is told from the rounding past the tolerance.
+    double rounding = 0.0;
+};
+
+/// How rediffract_wave marches again, past the wave and the depths.
+struct Remarch {
+    double tolerance = kMarchAmplitudeTolerance;
+    /// The sea's heights over the old and the new depths (diffract_wave's `sea_height`).
+    const SeaHeight* sea_before = nullptr;
+    const SeaHeight* sea_after = nullptr;
+    /// A copy of the march's kept rows: updated there to the new depths' within the
+    /// window (in the phase they carry), so that a later edit takes up the march over
+    /// these depths.
+    KeptMarch* updated = nullptr;
+    /// Where given: what the first march left at texel k (none where nothing reads it).
+    /// A window as wide as a third of the march is then the whole row, marched over the
+    /// new depths alone and compared with these, instead of beside the old depths' march.
+    std::function<std::optional<MarchedTexel>(std::size_t k)> marched_before;
+};
 
 /// `wave`'s march over `after`, taken up again from its rows kept over `before` (`after`'s
 /// field; its depths differ only in `changed`): from the last kept row before the edit it
@@ -139,16 +164,13 @@ inline constexpr double kMarchAmplitudeTolerance = 1e-3;
 /// at the first march's values (at kept columns), so that over the old depths it is that
 /// march; where next to a side the two differ by over a twentieth of the tolerance (in
 /// phase too) or in breaking, the new march's side is not the first one's and the window
-/// is widened and marched again. The march stops where, past the edit, the two agree
-/// exactly (the edit's wake has died out), or at the grid's end. `keep`, `sea_before` and `sea_after` as
-/// diffract_wave's (the sea's heights over each depth). With `updated` (a copy of `kept`),
-/// what the march keeps is updated there to the new depths' within the window (in the
-/// phase `kept` carries), so that a later edit takes up the march over these depths.
+/// is widened and marched again (with `how.marched_before`, as the whole row past a
+/// third of the march). The march stops where, past the edit, the two agree exactly (the
+/// edit's wake has died out), or at the grid's end (a whole row marched alone always
+/// does). `keep` as diffract_wave's.
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
-                                  const std::function<bool(std::size_t)>& keep,
-                                  double tolerance = kMarchAmplitudeTolerance, const SeaHeight* sea_before = nullptr,
-                                  const SeaHeight* sea_after = nullptr, KeptMarch* updated = nullptr);
+                                  const std::function<bool(std::size_t)>& keep, const Remarch& how = {});
 
 /// The march holds a wave's amplitude fully within this angle of its direction and not
 /// past the second (the small-angle form's wavenumber along the march is 1.6 % off at 35

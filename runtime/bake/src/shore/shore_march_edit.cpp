@@ -87,6 +87,21 @@ PatchedDepths patched_depths(const ShoreField& field, const TexelRange& edit, st
     return p;
 }
 
+/// How the random sea's march is taken up again: to kSeaHeightTolerance, its kept
+/// march updated in `updated`, its height before the edit what the first march left.
+Remarch sea_remarch(const SeaMarch& sm, KeptMarch* updated) {
+    Remarch how;
+    how.tolerance = kSeaHeightTolerance;
+    how.updated = updated;
+    how.marched_before = [&sm](std::size_t k) {
+        const float height = sm.height.height[k];
+        return MarchedTexel{
+            height > 0.0f ? static_cast<float>(static_cast<double>(height) / (2.0 * sm.whole.amplitude)) : 0.0f,
+            height > 0.0f, std::nullopt};
+    };
+    return how;
+}
+
 }  // namespace
 
 MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> waves, const WorldRect& reach,
@@ -121,7 +136,7 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
                     return sea_leaves(sm.whole,
                                       static_cast<double>(depths.at(static_cast<int>(k % n), static_cast<int>(k / n))));
                 },
-                kSeaHeightTolerance, nullptr, nullptr, kept.get());
+                sea_remarch(sm, kept.get()));
             // Every component breaks at the sea's height: where that moved, its march may
             // move too, however far from the stroke across its own direction.
             const auto n = static_cast<std::size_t>(field.resolution);
@@ -169,10 +184,22 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
         const std::size_t r = jobs[j].run, w = jobs[j].wave;
         const RunMarches& run = marches.runs[r];
         auto kept = std::make_shared<KeptMarch>(*run.kept[w]);
+        Remarch how;
+        how.sea_before = sea_before;
+        how.sea_after = sea_after;
+        how.updated = kept.get();
+        // What the first march left, where the model stores it.
+        how.marched_before = [&](std::size_t k) -> std::optional<MarchedTexel> {
+            const auto n = static_cast<std::size_t>(run.field->resolution);
+            const std::optional<std::size_t> at = input.stored_at(r, static_cast<int>(k % n), static_cast<int>(k / n));
+            if (!at) return std::nullopt;
+            const float held = run.marched.amplitude(*at, w);
+            return MarchedTexel{held, run.marched.reached(*at, w), run.marched.broken(*at, w),
+                                MarchedAmplitudes::rounding(held)};
+        };
         changes[j] = rediffract_wave(
             waves[first_wave[r] + w], marches.sea, *run.field, patched[r], *run.kept[w], component_reach,
-            [&](std::size_t k) { return input.keep(r, w, k); }, kMarchAmplitudeTolerance, sea_before, sea_after,
-            kept.get());
+            [&](std::size_t k) { return input.keep(r, w, k); }, how);
         kept_after[j] = std::move(kept);
     });
 

@@ -54,11 +54,14 @@ struct MarchEdit {
 
 /// What the edit's run needs told: per run, the texels whose depth may have changed and
 /// their depth after it; per run, wave and grid texel, whether the march leaves the
-/// texel to the open sea (as the bake's `keep`), over the rays after the edit.
+/// texel to the open sea (as the bake's `keep`), over the rays after the edit; per run
+/// and grid texel, its place in the run's record (MarchedAmplitudes; none where its tile
+/// is not stored).
 struct MarchEditInput {
     std::function<TexelRange(std::size_t run)> edited;
     std::function<float(std::size_t run, int i, int j)> depth_after;
     std::function<bool(std::size_t run, std::size_t wave, std::size_t k)> keep;
+    std::function<std::optional<std::size_t>(std::size_t run, int i, int j)> stored_at;
 };
 
 /// Every wave's march of `marches` (baked for `waves`) taken up again after an edit

@@ -41,15 +41,6 @@ struct ShoreMarches {
     SeaState sea;
     std::vector<RunMarches> runs;
     std::optional<SeaMarch> sea_march;
-
-    /// Bytes the kept marches hold (the records and grids are counted by the bake's
-    /// figures already).
-    std::size_t kept_bytes() const {
-        std::size_t bytes = sea_march && sea_march->kept ? sea_march->kept->bytes() : 0;
-        for (const RunMarches& r : runs)
-            for (const auto& k : r.kept) bytes += k ? k->bytes() : 0;
-        return bytes;
-    }
 };
 
 }  // namespace tidewater::detail

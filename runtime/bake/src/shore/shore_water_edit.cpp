@@ -184,6 +184,14 @@ void unite(WorldRect& a, const WorldRect& b) {
     a.hi = glm::max(a.hi, b.hi);
 }
 
+/// Grid texel (i, j)'s place among the stored slots' texels, in its own tile's slot `page`
+/// (a march record's index).
+std::size_t slot_texel(std::uint32_t page, int i, int j) {
+    return (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels +
+           static_cast<std::size_t>(j % ShoreTiles::kTile) * ShoreTiles::kSide +
+           static_cast<std::size_t>(i % ShoreTiles::kTile);
+}
+
 /// Calls body(i, j) for every texel of `r`, rows spread over workers.
 template <typename Body>
 void each_texel(const TexelRange& r, unsigned threads, const Body& body) {
@@ -552,6 +560,11 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                 !m.value.empty() && m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, h);
             return !std::isfinite(phase) || (r.any_deep[w] != 0 && deep_water(wave.omega, static_cast<double>(h)));
         };
+        input.stored_at = [&](std::size_t l, int i, int j) -> std::optional<std::size_t> {
+            const std::uint32_t page = runs[l].layer->tiles.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
+            if (page < gpu::kShoreFirstStoredSlot) return std::nullopt;
+            return slot_texel(page, i, j);
+        };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
         for (std::size_t l = 0; l < runs.size(); ++l) {
             const TexelRange& moved = march_edit->runs[l].moved;
@@ -659,9 +672,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                 for (int i = r.capped.i0; i <= r.capped.i1; ++i) {
                     const std::uint32_t page = r.out.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
                     if (page < gpu::kShoreFirstStoredSlot) continue;
-                    const std::size_t at = (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels +
-                                           static_cast<std::size_t>(j % ShoreTiles::kTile) * ShoreTiles::kSide +
-                                           static_cast<std::size_t>(i % ShoreTiles::kTile);
+                    const std::size_t at = slot_texel(page, i, j);
                     const auto [energy, breaking] = marched_energy(waves.subspan(r.layer->first, nw), marched->marched,
                                                                    at, r.out.texel(i, j), marched->energy.quantum());
                     marched->energy.assign(i, j, energy, breaking);
