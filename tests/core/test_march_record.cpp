@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "shore/march_record.hpp"
 
@@ -72,6 +73,37 @@ TEST(MarchRecord, ACopySharesItsBlocksUntilWritten) {
     EXPECT_DOUBLE_EQ(sums.at(3, 0).marched, 7.0);
     EXPECT_DOUBLE_EQ(energy_copy.at(3, 0).marched, 2.0);
     EXPECT_DOUBLE_EQ(energy_copy.at(3, 0).breaking, 1.0);
+}
+
+TEST(MarchRecord, CapRatiosAreSharedUntilWritten) {
+    CapRatios ratios(3);
+    ratios.fill(ShoreTiles::kSlotTexels + 4, 1.25f);
+    CapRatios copy = ratios;
+    copy.set(ShoreTiles::kSlotTexels + 4, 0.5f);
+    EXPECT_EQ(ratios.at(ShoreTiles::kSlotTexels + 4), 1.25f);
+    EXPECT_EQ(copy.at(ShoreTiles::kSlotTexels + 4), 0.5f);
+    EXPECT_EQ(copy.slots(), 3u);
+}
+
+TEST(MarchRecord, TheRaysUnderABlendAreFoundAgainButWhereTheMarchHeldItWhole) {
+    // A texel where only the march moved is blended again from what the model holds: the
+    // rays' capped amplitude is found under the old blend, to float rounding over 1 - s.
+    for (int share = 0; share <= 255; share += 15) {
+        const auto s = static_cast<std::uint8_t>(share);
+        const float rays = 0.8125f, march = 1.375f;
+        const float blended = march_blend(s, march, rays, 2.0);
+        const std::optional<float> found = rays_under_blend(s, march, blended, 2.0);
+        if (share == 255) {
+            EXPECT_FALSE(found.has_value());
+            continue;
+        }
+        ASSERT_TRUE(found.has_value()) << share;
+        EXPECT_NEAR(*found, rays, 1e-6 * 255.0 / (255.0 - share)) << share;
+    }
+    // Dry land and no share: the rays' alone, as they are.
+    EXPECT_EQ(march_blend(255, 1.5f, 0.25f, 0.0), 0.25f);
+    EXPECT_EQ(rays_under_blend(255, 1.5f, 0.25f, -1.0), 0.25f);
+    EXPECT_EQ(rays_under_blend(0, 1.5f, 0.25f, 3.0), 0.25f);
 }
 
 }  // namespace

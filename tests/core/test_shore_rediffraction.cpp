@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
-#include <glm/gtc/packing.hpp>
 
 #include "shore/march_record.hpp"
 #include "shore/shore_diffraction.hpp"
@@ -75,7 +74,7 @@ double remarched_shoal(double shoal, glm::dvec2 at, bool held_in_half = false) {
     Remarch how;
     if (held_in_half)
         how.marched_before = [&](std::size_t k) -> std::optional<MarchedTexel> {
-            const float held = glm::unpackHalf1x16(glm::packHalf1x16(old_march.amplitude[k]));
+            const float held = MarchedAmplitudes::held(old_march.amplitude[k]);
             return MarchedTexel{held, old_march.share[k] > 0, old_march.broken[k] != 0,
                                 MarchedAmplitudes::rounding(held)};
         };
@@ -84,7 +83,7 @@ double remarched_shoal(double shoal, glm::dvec2 at, bool held_in_half = false) {
 
     std::vector<float> amplitude = old_march.amplitude;
     if (held_in_half)
-        for (float& a : amplitude) a = glm::unpackHalf1x16(glm::packHalf1x16(a));
+        for (float& a : amplitude) a = MarchedAmplitudes::held(a);
     std::vector<std::uint8_t> share = old_march.share, broken = old_march.broken;
     for (std::size_t c = 0; c < change.texels.size(); ++c) {
         amplitude[change.texels[c]] = change.amplitude[c];

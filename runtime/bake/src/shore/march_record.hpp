@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <glm/gtc/packing.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -175,6 +176,8 @@ class MarchedAmplitudes {
         const Block* block = blocks_[block_of(at, w)].get();
         return block ? glm::unpackHalf1x16(block->amplitude[at % ShoreTiles::kSlotTexels]) : 0.0f;
     }
+    /// An amplitude as the record holds it (half precision).
+    static float held(float amplitude) { return glm::unpackHalf1x16(glm::packHalf1x16(amplitude)); }
     /// How far a held amplitude may lie from the one set: half the half precision's step
     /// at its value (11 significant bits; 2^-24 apart under the least normal).
     static double rounding(float amplitude) {
@@ -198,6 +201,57 @@ class MarchedAmplitudes {
     std::size_t block_of(std::size_t at, std::size_t w) const { return (at / ShoreTiles::kSlotTexels) * waves_ + w; }
 
     std::size_t waves_;
+    std::vector<std::shared_ptr<Block>> blocks_;
+};
+
+/// A wave's amplitude factor at a texel with the march's `march` blended in at `share`
+/// (0..255) over the rays' capped `rays`; the rays' alone where the march has no share or
+/// the texel is dry (depth h).
+inline float march_blend(std::uint8_t share, float march, float rays, double h) {
+    if (!(share > 0 && h > 0.0)) return rays;
+    const float s = static_cast<float>(share) / 255.0f;
+    return s * march + (1.0f - s) * rays;
+}
+
+/// The rays' capped amplitude under `blended` (march_blend's result with `share` and
+/// `march`); none where the march held it whole (share 255), which leaves no trace of it.
+inline std::optional<float> rays_under_blend(std::uint8_t share, float march, float blended, double h) {
+    if (!(share > 0 && h > 0.0)) return blended;
+    if (share == 255) return std::nullopt;
+    const float s = static_cast<float>(share) / 255.0f;
+    return (blended - s * march) / (1.0f - s);
+}
+
+/// Per stored texel of the shared tiles (the model's grid), the cap's ratio (cap_ratio)
+/// the shared rows were made with: where after an edit only the march moves, the foam is
+/// made again from it (shared_foam) without the rays' rows. In blocks of a slot, shared
+/// between copies and copied when written. Threading: distinct slots may be set from
+/// distinct threads.
+class CapRatios {
+  public:
+    /// `stored_slots` slots of ratios in one allocation, each shared until written.
+    explicit CapRatios(std::size_t stored_slots = 0) {
+        if (stored_slots == 0) return;
+        const auto all = std::make_shared<Block[]>(stored_slots);
+        blocks_.reserve(stored_slots);
+        for (std::size_t s = 0; s < stored_slots; ++s) blocks_.emplace_back(all, all.get() + s);
+    }
+    /// Stored texel `at` (stored slot * kSlotTexels + texel in the slot), written in place:
+    /// the bake's, before any copy is made.
+    void fill(std::size_t at, float ratio) {
+        (*blocks_[at / ShoreTiles::kSlotTexels])[at % ShoreTiles::kSlotTexels] = ratio;
+    }
+    /// The same, the slot copied first unless this alone holds it.
+    void set(std::size_t at, float ratio) {
+        std::shared_ptr<Block>& block = blocks_[at / ShoreTiles::kSlotTexels];
+        if (block.use_count() > 1) block = std::make_shared<Block>(*block);
+        (*block)[at % ShoreTiles::kSlotTexels] = ratio;
+    }
+    float at(std::size_t at) const { return (*blocks_[at / ShoreTiles::kSlotTexels])[at % ShoreTiles::kSlotTexels]; }
+    std::size_t slots() const { return blocks_.size(); }
+
+  private:
+    using Block = std::array<float, ShoreTiles::kSlotTexels>;
     std::vector<std::shared_ptr<Block>> blocks_;
 };
 

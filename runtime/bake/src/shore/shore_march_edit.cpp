@@ -243,9 +243,192 @@ float marched_amplitude(const Wave& wave, double spacing, const RunMarchChanges&
     const std::uint8_t share =
         reached && (kx != 0.0f || kz != 0.0f) ? held_share(wave, kx, kz, spacing) : std::uint8_t{0};
     if (moved || share != record.share(at, w)) record.set(at, w, share, amplitude, reached, broken);
-    if (!(share > 0 && h > 0.0)) return rays;
-    const float s = static_cast<float>(share) / 255.0f;
-    return s * record.amplitude(at, w) + (1.0f - s) * rays;
+    return march_blend(share, record.amplitude(at, w), rays, h);
+}
+
+std::optional<Reblended> reblended_amplitude(const Wave& wave, double spacing, const MarchedAmplitudes& record,
+                                             std::size_t at, std::size_t w, const MarchedTexel& march, float stored,
+                                             float kx, float kz, double h) {
+    Reblended out;
+    out.share = march.reached && (kx != 0.0f || kz != 0.0f) ? held_share(wave, kx, kz, spacing) : std::uint8_t{0};
+    const float held = MarchedAmplitudes::held(march.amplitude);
+    const std::optional<float> rays = rays_under_blend(record.share(at, w), record.amplitude(at, w), stored, h);
+    if (rays)
+        out.amplitude = march_blend(out.share, held, *rays, h);
+    else if (out.share == 255)  // held whole before and after: no rays' part in either
+        out.amplitude = march_blend(out.share, held, 0.0f, h);
+    else
+        return std::nullopt;
+    return out;
+}
+
+namespace {
+
+/// Texels of a grid marked within a range.
+struct TexelMarks {
+    TexelRange range{0, 0, -1, -1};
+    std::vector<char> marks;
+    void assign(const TexelRange& r) {
+        range = r;
+        marks.assign(r.empty() ? 0 : static_cast<std::size_t>(r.width()) * static_cast<std::size_t>(r.height()), 0);
+    }
+    std::size_t at(int i, int j) const {
+        return static_cast<std::size_t>(j - range.j0) * static_cast<std::size_t>(range.width()) +
+               static_cast<std::size_t>(i - range.i0);
+    }
+    void mark(int i, int j) { marks[at(i, j)] = 1; }
+    bool marked(int i, int j) const { return !range.empty() && range.contains(i, j) && marks[at(i, j)] != 0; }
+};
+
+/// The stored tiles of `tiles` whose slots (aprons included) hold a marked texel.
+std::vector<std::size_t> tiles_holding(const ShoreTiles& tiles, const TexelMarks& marks) {
+    const int m = tiles.tiles_per_side, kTile = ShoreTiles::kTile;
+    std::vector<char> flagged(static_cast<std::size_t>(m) * static_cast<std::size_t>(m), 0);
+    auto flag = [&](int ti, int tj) {
+        if (ti >= 0 && tj >= 0)
+            flagged[static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti)] = 1;
+    };
+    const TexelRange& r = marks.range;
+    for (int j = r.j0; j <= r.j1; ++j)
+        for (int i = r.i0; i <= r.i1; ++i) {
+            if (!marks.marked(i, j)) continue;
+            // Its own tile's slot, and the aprons of the tiles before it.
+            const int ti = i / kTile, tj = j / kTile;
+            const bool first_i = i % kTile == 0, first_j = j % kTile == 0;
+            flag(ti, tj);
+            if (first_i) flag(ti - 1, tj);
+            if (first_j) flag(ti, tj - 1);
+            if (first_i && first_j) flag(ti - 1, tj - 1);
+        }
+    std::vector<std::size_t> out;
+    for (std::size_t t = 0; t < flagged.size(); ++t)
+        if (flagged[t] && tiles.pages[t] >= gpu::kShoreFirstStoredSlot) out.push_back(t);
+    return out;
+}
+
+/// Calls visit(texel's floats, i, j, at) for every texel of the slots of `tile_list` whose
+/// grid texel is marked (aprons included; `at` its record index), each slot made writable
+/// first and written by one worker.
+template <typename Visit>
+void write_marked(ShoreTiles& tiles, const std::vector<std::size_t>& tile_list, const TexelMarks& marks,
+                  const Visit& visit, unsigned threads) {
+    const auto n = static_cast<std::size_t>(tiles.resolution);
+    parallel_for_each(tile_list.size(), threads, [&](std::size_t t) {
+        const std::size_t tile = tile_list[t];
+        const std::uint32_t page = tiles.pages[tile];
+        float* slot = tiles.slot_for_writing(page);
+        for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
+            const std::size_t g = tiles.grid_index(tile, k);
+            const int i = static_cast<int>(g % n), j = static_cast<int>(g / n);
+            if (!marks.marked(i, j)) continue;
+            visit(slot + k * tiles.stride, i, j, (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels + k);
+        }
+    });
+}
+
+/// The texels of `run` where its marches moved outside its baked texels.
+TexelMarks moved_outside(const MarchOnlyRun& run) {
+    TexelMarks marks;
+    marks.assign(run.changes->range());
+    run.changes->each([&](int i, int j, std::size_t, const MarchedTexel&) {
+        if (!run.baked.contains(i, j)) marks.mark(i, j);
+    });
+    return marks;
+}
+
+}  // namespace
+
+bool blends_alone(const MarchOnlyRun& run, const MarchedAmplitudes& record) {
+    const std::size_t nw = run.waves.size();
+    bool alone = true;
+    run.changes->each([&](int i, int j, std::size_t w, const MarchedTexel& march) {
+        if (!alone || run.baked.contains(i, j)) return;
+        const std::optional<std::size_t> at = run.tiles->stored_texel(i, j);
+        if (!at) return;
+        const float* t = run.tiles->texel(i, j);
+        alone = reblended_amplitude(run.waves[w], run.spacing[w], record, *at, w, march, t[nw + w], t[2 * nw + w],
+                                    t[3 * nw + w], static_cast<double>(run.depth(i, j)))
+                    .has_value();
+    });
+    return alone;
+}
+
+void blend_again(const MarchOnlyRun& run, ShoreTiles& out, MarchedAmplitudes& record, MarchedEnergy& energy,
+                 unsigned threads) {
+    const std::size_t nw = run.waves.size();
+    const TexelMarks marks = moved_outside(run);
+    write_marked(
+        out, tiles_holding(out, marks), marks,
+        [&](float* t, int i, int j, std::size_t at) {
+            const double h = static_cast<double>(run.depth(i, j));
+            for (std::size_t w = 0; w < nw; ++w) {
+                float amplitude = 0.0f;
+                bool reached = false, broken = false;
+                if (!run.changes->find(i, j, w, amplitude, reached, broken)) continue;
+                const MarchedTexel march{amplitude, reached, broken};
+                const std::optional<Reblended> b = reblended_amplitude(
+                    run.waves[w], run.spacing[w], record, at, w, march, t[nw + w], t[2 * nw + w], t[3 * nw + w], h);
+                if (!b) continue;  // blends_alone said none is so
+                t[nw + w] = b->amplitude;
+                record.set(at, w, b->share, amplitude, reached, broken);
+            }
+        },
+        threads);
+    // The energy from the records as they now are.
+    const TexelRange& r = marks.range;
+    for (int j = r.j0; j <= r.j1; ++j)
+        for (int i = r.i0; i <= r.i1; ++i) {
+            if (!marks.marked(i, j)) continue;
+            const std::optional<std::size_t> at = out.stored_texel(i, j);
+            if (!at) continue;
+            const auto [e, b] = marched_energy(run.waves, record, *at, out.texel(i, j), energy.quantum());
+            energy.assign(i, j, e, b);
+        }
+}
+
+void foam_again(const ShoreGrid& model, ShoreTiles& shared, const CapRatios& ratios,
+                std::span<const EnergyView> energies,
+                std::span<const std::pair<const ShoreGrid*, const RunMarchChanges*>> changed, const TexelRange& baked,
+                double breaking_index, unsigned threads) {
+    // The model's texels whose bilinear taps on each run's grid hold a texel it moved at.
+    TexelRange all{model.resolution, model.resolution, -1, -1};
+    auto footprint = [&](const ShoreGrid& g, int i, int j) {
+        const WorldRect box{g.corner + g.texel * glm::dvec2(i - 0.5, j - 0.5) - model.texel,
+                            g.corner + g.texel * glm::dvec2(i + 1.5, j + 1.5) + model.texel};
+        return texels_in(model.resolution, model.texel, model.corner, box);
+    };
+    for (const auto& [g, c] : changed) {
+        const TexelRange& r = c->range();
+        if (r.empty()) continue;
+        const TexelRange lo = footprint(*g, r.i0, r.j0), hi = footprint(*g, r.i1, r.j1);
+        all = {std::min(all.i0, lo.i0), std::min(all.j0, lo.j0), std::max(all.i1, hi.i1), std::max(all.j1, hi.j1)};
+    }
+    if (all.empty()) return;
+    TexelMarks marks;
+    marks.assign(all);
+    for (const auto& [g, c] : changed) {
+        int last_i = -1, last_j = -1;
+        c->each([&](int i, int j, std::size_t, const MarchedTexel&) {
+            if (i == last_i && j == last_j) return;  // its waves follow each other
+            last_i = i;
+            last_j = j;
+            const TexelRange f = footprint(*g, i, j);
+            for (int b = f.j0; b <= f.j1; ++b)
+                for (int a = f.i0; a <= f.i1; ++a)
+                    if (!baked.contains(a, b)) marks.mark(a, b);
+        });
+    }
+    write_marked(
+        shared, tiles_holding(shared, marks), marks,
+        [&](float* t, int i, int j, std::size_t at) {
+            const double h = static_cast<double>(t[0]);
+            if (!(h > 0.0)) return;
+            const double ratio = static_cast<double>(ratios.at(at));
+            t[1] = shared_foam(
+                ratio, cap_energy(ratio, h, breaking_index),
+                marched_energy_at(energies, model, i, j, model.corner + model.texel * glm::dvec2(i + 0.5, j + 0.5)));
+        },
+        threads);
 }
 
 std::pair<std::uint32_t, std::uint32_t> marched_energy(std::span<const Wave> waves, const MarchedAmplitudes& record,

@@ -30,6 +30,17 @@ class RunMarchChanges {
     /// False where the march did not move at (i, j) for wave w.
     bool find(int i, int j, std::size_t w, float& amplitude, bool& reached, bool& broken) const;
     const TexelRange& range() const { return range_; }
+    /// Calls each(i, j, w, what the march gives now) where the march moved.
+    template <typename Each>
+    void each(const Each& each) const {
+        for (int j = range_.j0; j <= range_.j1; ++j)
+            for (int i = range_.i0; i <= range_.i1; ++i)
+                for (std::size_t w = 0; w < waves_; ++w) {
+                    const std::size_t k = at(i, j, w);
+                    if (std::isnan(amplitude_[k])) continue;
+                    each(i, j, w, MarchedTexel{amplitude_[k], (flags_[k] & 1) != 0, (flags_[k] & 2) != 0});
+                }
+    }
 
   private:
     std::size_t at(int i, int j, std::size_t w) const;
@@ -77,6 +88,52 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
 /// there; `record` updated where that moved.
 float marched_amplitude(const Wave& wave, double spacing, const RunMarchChanges& changes, MarchedAmplitudes& record,
                         std::size_t at, std::size_t w, int i, int j, float rays, float kx, float kz, double h);
+
+/// Wave `w` of a run at stored texel `at`, depth h, where only its march moved, to
+/// `march` (the rays and the cap as they were: the rays' wavevector (kx, kz) there):
+/// `stored` is the amplitude the model holds, the march's as `record` holds it blended
+/// in. The amplitude with `march` blended in instead, and the march's share now. None
+/// where the rays' part cannot be told from `stored` (the march held the amplitude whole
+/// and no longer does): the texel must be baked again from the rays.
+struct Reblended {
+    float amplitude = 0.0f;
+    std::uint8_t share = 0;
+};
+std::optional<Reblended> reblended_amplitude(const Wave& wave, double spacing, const MarchedAmplitudes& record,
+                                             std::size_t at, std::size_t w, const MarchedTexel& march, float stored,
+                                             float kx, float kz, double h);
+
+/// One run of waves where its marches moved outside `baked`, the texels baked again from
+/// the rays (the cap's region): there the rays and the cap are as they were, and only
+/// the march's blend and energy are made again (blend_again).
+struct MarchOnlyRun {
+    std::span<const Wave> waves;      ///< the run's
+    std::span<const double> spacing;  ///< per wave, its march's
+    const RunMarchChanges* changes = nullptr;
+    TexelRange baked;
+    const ShoreTiles* tiles = nullptr;         ///< the run's tiles before the edit
+    std::function<float(int i, int j)> depth;  ///< texel (i, j)'s depth (m)
+};
+
+/// Whether every texel where `run`'s marches moved outside its baked texels can be
+/// blended again from what the model holds (reblended_amplitude); `record` is the run's
+/// before the edit.
+bool blends_alone(const MarchOnlyRun& run, const MarchedAmplitudes& record);
+
+/// The march's blend and energy made again in `out` (a copy of the run's tiles),
+/// `record` and `energy` where `run`'s marches moved outside its baked texels (each
+/// blends_alone); the tiles written are the ones that hold such a texel.
+void blend_again(const MarchOnlyRun& run, ShoreTiles& out, MarchedAmplitudes& record, MarchedEnergy& energy,
+                 unsigned threads);
+
+/// The foam (the shared tiles' breaking row) made again from `ratios` (CapRatios) and the
+/// runs' marched energy `energies` now, at the model's texels outside `baked` (the
+/// shared rows baked again) whose energy any of `changed` (per run, its grid and where
+/// its marches moved) may have moved.
+void foam_again(const ShoreGrid& model, ShoreTiles& shared, const CapRatios& ratios,
+                std::span<const EnergyView> energies,
+                std::span<const std::pair<const ShoreGrid*, const RunMarchChanges*>> changed, const TexelRange& baked,
+                double breaking_index, unsigned threads);
 
 /// A stored texel's marched energy and its breaking part in quanta of `quantum` m^2, from
 /// the run's `record` at `at`, as the bake sums it over the run's `waves`; `texel` is the

@@ -1,8 +1,9 @@
 // What a shore bake with the parabolic march keeps so that a stroke on the seabed can be
 // re-baked where it reaches (shore_water_edit.cpp) instead of in full: per run of waves,
 // its grid's depths, the march's records (what the cap blended into the amplitudes and
-// the foam summed) and each wave's kept march (shore_diffraction.hpp); and the random
-// sea's march, whose height every component breaks at. Kept when asked
+// the foam summed) and each wave's kept march (shore_diffraction.hpp); the random sea's
+// march, whose height every component breaks at; and the cap's ratio per texel of the
+// shared tiles, from which the foam is made again where only a march moved. Kept when asked
 // (SceneBakeOptions::keep_marches: an editor's), about 100 MB for 24 waves on an 8 km
 // island. Immutable once made; an edit makes a new one that shares what it did not
 // change. Private to the bake.
@@ -41,6 +42,7 @@ struct ShoreMarches {
     SeaState sea;
     std::vector<RunMarches> runs;
     std::optional<SeaMarch> sea_march;
+    CapRatios ratios;  ///< per stored texel of the shared tiles
 };
 
 }  // namespace tidewater::detail

@@ -71,6 +71,27 @@ struct DiffractedEnergy {
     double marched = 0.0, breaking = 0.0;
 };
 
+/// The foam (the shared breaking row) where the runs before their caps are at `ratio` of
+/// the cap with energy `energy` (sum of A^2, m^2), and the march gives `diffracted`:
+/// rising toward the cap where the rays give the waves, the breaking share of the energy
+/// where the march gives them.
+inline float shared_foam(double ratio, double energy, DiffractedEnergy diffracted) {
+    const double ray_foam = std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0);
+    double foam = ray_foam;
+    if (energy > 0.0 && diffracted.marched > 0.0) {
+        const double marched = std::min(diffracted.marched / energy, 1.0);
+        foam = std::min(diffracted.breaking / energy, marched) + (1.0 - marched) * ray_foam;
+    }
+    return static_cast<float>(std::clamp(foam, 0.0, 1.0));
+}
+
+/// The energy (sum of A^2 of the runs before their caps, m^2) at depth h whose cap_ratio
+/// is `ratio`.
+inline double cap_energy(double ratio, double h, double breaking_index) {
+    const double e = ratio * 0.5 * breaking_index * h;
+    return e * e;
+}
+
 /// Shared texel (i, j)'s rows (depth h, signed shore distance): depth and distance,
 /// breaking (all waves together: the foam rises toward the cap where the rays give the
 /// waves, and is the breaking share of the energy where the march gives them) and the
@@ -86,7 +107,6 @@ inline void shared_texel_rows(std::span<const Wave> waves, std::span<const RunTi
     t[2] = 1.0f;
     t[3] = distance;
     if (h <= 0.0) return;
-    const double ray_foam = std::clamp((ratio - 0.85) / 0.45, 0.0, 1.0);
     const double scale = ratio > 1.0 ? 1.0 / ratio : 1.0;
     double fold = 0.0, energy = 0.0;
     each_run_wave(runs, grid, i, j, grid.corner + grid.texel * glm::dvec2(i + 0.5, j + 0.5),
@@ -95,12 +115,7 @@ inline void shared_texel_rows(std::span<const Wave> waves, std::span<const RunTi
                       fold += waves[w].steepness * std::sqrt(kx * kx + kz * kz) * a * scale;
                       energy += a * a;
                   });
-    double foam = ray_foam;
-    if (energy > 0.0 && diffracted.marched > 0.0) {
-        const double marched = std::min(diffracted.marched / energy, 1.0);
-        foam = std::min(diffracted.breaking / energy, marched) + (1.0 - marched) * ray_foam;
-    }
-    t[1] = static_cast<float>(std::clamp(foam, 0.0, 1.0));
+    t[1] = shared_foam(ratio, energy, diffracted);
     if (fold > kMaxFold) t[2] = static_cast<float>(kMaxFold / fold);
 }
 

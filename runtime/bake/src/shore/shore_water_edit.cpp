@@ -184,14 +184,6 @@ void unite(WorldRect& a, const WorldRect& b) {
     a.hi = glm::max(a.hi, b.hi);
 }
 
-/// Grid texel (i, j)'s place among the stored slots' texels, in its own tile's slot `page`
-/// (a march record's index).
-std::size_t slot_texel(std::uint32_t page, int i, int j) {
-    return (page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels +
-           static_cast<std::size_t>(j % ShoreTiles::kTile) * ShoreTiles::kSide +
-           static_cast<std::size_t>(i % ShoreTiles::kTile);
-}
-
 /// Calls body(i, j) for every texel of `r`, rows spread over workers.
 template <typename Body>
 void each_texel(const TexelRange& r, unsigned threads, const Body& body) {
@@ -541,9 +533,25 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         const TexelRange moved = cap_inputs_moved(waves, r, o, threads);
         if (!moved.empty()) unite(region, edges(g, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
     }
-    // With the march: each wave's taken up again; where it moved, every grid's rows are
-    // baked again as where the cap's inputs moved.
+    // With the march: each wave's taken up again.
     std::optional<MarchEdit> march_edit;
+    bool march_only = false;
+    auto grown_by_coarsest = [&](WorldRect r) {
+        r.lo -= glm::dvec2(coarsest);
+        r.hi += glm::dvec2(coarsest);
+        return r;
+    };
+    auto march_only_run = [&](std::size_t l, const TexelRange& baked) {
+        const RunEdit& r = runs[l];
+        MarchOnlyRun run;
+        run.waves = waves.subspan(r.layer->first, r.layer->count);
+        run.spacing = marches->runs[l].spacing;
+        run.changes = &march_edit->runs[l].changes;
+        run.baked = baked;
+        run.tiles = &r.layer->tiles;
+        run.depth = [&r](int i, int j) { return r.after.at(i, j); };
+        return run;
+    };
     if (marches) {
         MarchEditInput input;
         input.edited = [&](std::size_t l) { return runs[l].edit; };
@@ -560,20 +568,25 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                 !m.value.empty() && m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, h);
             return !std::isfinite(phase) || (r.any_deep[w] != 0 && deep_water(wave.omega, static_cast<double>(h)));
         };
-        input.stored_at = [&](std::size_t l, int i, int j) -> std::optional<std::size_t> {
-            const std::uint32_t page = runs[l].layer->tiles.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
-            if (page < gpu::kShoreFirstStoredSlot) return std::nullopt;
-            return slot_texel(page, i, j);
-        };
+        input.stored_at = [&](std::size_t l, int i, int j) { return runs[l].layer->tiles.stored_texel(i, j); };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
-        for (std::size_t l = 0; l < runs.size(); ++l) {
-            const TexelRange& moved = march_edit->runs[l].moved;
-            if (!moved.empty())
-                unite(region, edges(runs[l].layer->grid, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
+        // Where only a march moved, its blend and energy and the foam are made again there
+        // alone when the model's values allow it; else the rows are baked again there too.
+        march_only = marches->ratios.slots() == model.shared().stored_tiles();
+        for (std::size_t l = 0; l < runs.size() && march_only; ++l) {
+            const ShoreGrid& g = runs[l].layer->grid;
+            march_only =
+                blends_alone(march_only_run(l, texels_in(g.resolution, g.texel, g.corner, grown_by_coarsest(region))),
+                             marches->runs[l].marched);
         }
+        if (!march_only)
+            for (std::size_t l = 0; l < runs.size(); ++l) {
+                const TexelRange& moved = march_edit->runs[l].moved;
+                if (!moved.empty())
+                    unite(region, edges(runs[l].layer->grid, moved.i0, moved.j0, moved.i1 + 1, moved.j1 + 1));
+            }
     }
-    region.lo -= glm::dvec2(coarsest);
-    region.hi += glm::dvec2(coarsest);
+    region = grown_by_coarsest(region);
     for (RunEdit& r : runs) {
         const ShoreGrid& g = r.layer->grid;
         r.capped = texels_in(g.resolution, g.texel, g.corner, region);
@@ -670,26 +683,27 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         if (marched)
             for (int j = r.capped.j0; j <= r.capped.j1; ++j)
                 for (int i = r.capped.i0; i <= r.capped.i1; ++i) {
-                    const std::uint32_t page = r.out.page(i / ShoreTiles::kTile, j / ShoreTiles::kTile);
-                    if (page < gpu::kShoreFirstStoredSlot) continue;
-                    const std::size_t at = slot_texel(page, i, j);
+                    const std::optional<std::size_t> at = r.out.stored_texel(i, j);
+                    if (!at) continue;
                     const auto [energy, breaking] = marched_energy(waves.subspan(r.layer->first, nw), marched->marched,
-                                                                   at, r.out.texel(i, j), marched->energy.quantum());
+                                                                   *at, r.out.texel(i, j), marched->energy.quantum());
                     marched->energy.assign(i, j, energy, breaking);
                 }
+        if (march_only) blend_again(march_only_run(l, r.capped), r.out, marched->marched, marched->energy, threads);
         run_tiles.push_back(std::move(r.out));
     }
     std::vector<EnergyView> energies;
     for (std::size_t l = 0; l < runs_marched.size(); ++l)
         energies.push_back({&runs[l].layer->grid, &runs_marched[l].energy});
-    std::shared_ptr<const ShoreMarches> marches_after;
+    std::shared_ptr<ShoreMarches> marches_after;
     if (march_edit) {
-        auto m = std::make_shared<ShoreMarches>();
-        m->sea = marches->sea;
-        m->runs = std::move(runs_marched);
-        m->sea_march = std::move(march_edit->sea_march);
-        if (m->sea_march) m->sea_march->height.field = m->runs[m->sea_march->run].field;
-        marches_after = std::move(m);
+        marches_after = std::make_shared<ShoreMarches>();
+        ShoreMarches& m = *marches_after;
+        m.sea = marches->sea;
+        m.runs = std::move(runs_marched);
+        m.sea_march = std::move(march_edit->sea_march);
+        if (m.sea_march) m.sea_march->height.field = m.runs[m.sea_march->run].field;
+        m.ratios = marches->ratios;
     }
 
     // The shared rows: the depth, and the breaking and steepness of the waves together.
@@ -704,9 +718,23 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                               : marched_energy_at(energies, model_grid, i, j,
                                                   model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5)));
     });
+    CapRatios* ratios =
+        marches_after && marches_after->ratios.slots() == shared.stored_tiles() ? &marches_after->ratios : nullptr;
     shared.write_texels(
         shared_rows.i0, shared_rows.j0, shared_rows.i1 + 1, shared_rows.j1 + 1,
-        [&](float* t, int i, int j) { std::copy_n(shared_values(i, j), kShoreSharedRows, t); }, threads);
+        [&](float* t, int i, int j, std::uint32_t page, std::size_t k) {
+            std::copy_n(shared_values(i, j), kShoreSharedRows, t);
+            if (ratios)
+                ratios->set((page - gpu::kShoreFirstStoredSlot) * ShoreTiles::kSlotTexels + k,
+                            static_cast<float>(*model_ratio(i, j)));
+        },
+        threads);
+    if (march_only) {
+        std::vector<std::pair<const ShoreGrid*, const RunMarchChanges*>> changed;
+        for (std::size_t l = 0; l < runs.size(); ++l)
+            changed.push_back({&runs[l].layer->grid, &march_edit->runs[l].changes});
+        foam_again(model_grid, shared, marches_after->ratios, energies, changed, shared_rows, breaking_index, threads);
+    }
 
     return WaterEdit{std::move(field), model.with_tiles(std::move(shared), std::move(run_tiles)),
                      std::move(marches_after)};

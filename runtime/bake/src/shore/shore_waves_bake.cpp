@@ -308,7 +308,7 @@ void record_energy(const Wave& wave, const detail::DiffractedWave& d, RunDiffrac
         if (d.held[k] == 0) continue;
         // The amplitude as the record holds it (half precision): a re-bake after an edit
         // sums the same.
-        const float amplitude = glm::unpackHalf1x16(glm::packHalf1x16(d.amplitude[k]));
+        const float amplitude = detail::MarchedAmplitudes::held(d.amplitude[k]);
         record.energy.add(k,
                           detail::energy_quanta(wave.amplitude * static_cast<double>(amplitude), d.held_of(k), quantum),
                           d.broken[k] != 0);
@@ -324,19 +324,21 @@ std::vector<RunTilesView> run_views(const std::vector<RunBake>& runs) {
 
 /// The shared layer's rows of every stored texel: depth and shore distance, breaking (all
 /// waves together: the foam rises toward the cap) and steepness (Q is scaled where the
-/// waves together, capped, would fold). Reads the runs before their caps.
+/// waves together, capped, would fold). Reads the runs before their caps. With `ratios`,
+/// the cap's ratio at each stored texel is kept there.
 void shared_rows(std::span<const Wave> waves, double breaking_index, const ShoreField& field,
-                 const std::vector<RunBake>& runs, TilePlan& plan, unsigned threads) {
+                 const std::vector<RunBake>& runs, TilePlan& plan, unsigned threads, detail::CapRatios* ratios) {
     const int n = field.resolution;
     const std::vector<RunTilesView> views = run_views(runs);
     std::vector<detail::EnergyView> energies;
     for (const RunBake& r : runs)
         if (r.diffraction) energies.push_back({&r.plan.grid, &r.diffraction->energy});
-    each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t) {
+    each_stored_texel(plan, threads, [&](float* t, std::size_t k, std::size_t at) {
         const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                   j = static_cast<int>(k / static_cast<std::size_t>(n));
         const double h = static_cast<double>(field.depth[k]);
         const double ratio = h > 0.0 ? detail::cap_ratio(waves, views, plan.grid, i, j, h, breaking_index) : 0.0;
+        if (ratios) ratios->fill(at, static_cast<float>(ratio));
         detail::shared_texel_rows(waves, views, plan.grid, i, j, field.depth[k], field.signed_distance[k], ratio, t,
                                   detail::marched_energy_at(energies, plan.grid, i, j, field.texel_center(i, j)));
     });
@@ -367,9 +369,8 @@ void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<Ru
             const RunDiffraction* d = runs[r].diffraction.get();
             for (std::size_t w = 0; w < nw; ++w) {
                 const float rays = detail::capped_amplitude(t[nw + w], h, ratio);
-                const float share = d ? static_cast<float>(d->marched.share(at, w)) / 255.0f : 0.0f;
                 t[nw + w] =
-                    share > 0.0f && h > 0.0 ? share * d->marched.amplitude(at, w) + (1.0f - share) * rays : rays;
+                    d ? detail::march_blend(d->marched.share(at, w), d->marched.amplitude(at, w), rays, h) : rays;
             }
         });
     }
@@ -586,13 +587,17 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
         make_slots(shared, {});
-        shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads);
+        const bool keep_marches = options.keep_marches && options.diffraction;
+        detail::CapRatios ratios(keep_marches ? shared.tile.size() : 0);
+        shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads,
+                    keep_marches ? &ratios : nullptr);
         cap_runs(waves, options.breaking_index, runs, options.threads);
         for (RunBake& r : runs)
             if (r.plan.grid.texel != field->texel) extend_onto_land(waves, r, options.threads);
-        if (options.keep_marches && options.diffraction) {
+        if (keep_marches) {
             auto marches = std::make_shared<detail::ShoreMarches>();
             marches->sea = sea;
+            marches->ratios = std::move(ratios);
             marches->sea_march = std::move(sea_march);
             for (RunBake& r : runs)
                 marches->runs.push_back({r.field, std::move(r.diffraction->marched), std::move(r.diffraction->energy),

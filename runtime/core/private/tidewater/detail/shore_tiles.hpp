@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -162,6 +163,15 @@ struct ShoreTiles {
     }
     /// The floats of texel (i, j), 0 <= i, j < resolution, from the slot of its tile.
     const float* texel(int i, int j) const { return cell(i, j); }
+    /// Texel (i, j)'s place among the stored slots' texels, in its own tile's slot (stored
+    /// slot * kSlotTexels + its place there: a record's index beside the tiles); none where
+    /// its tile is not stored.
+    std::optional<std::size_t> stored_texel(int i, int j) const {
+        const std::uint32_t slot = page(i / kTile, j / kTile);
+        if (slot < gpu::kShoreFirstStoredSlot) return std::nullopt;
+        return (slot - gpu::kShoreFirstStoredSlot) * kSlotTexels + static_cast<std::size_t>(j % kTile) * kSide +
+               static_cast<std::size_t>(i % kTile);
+    }
     /// The slot that holds tile (ti, tj).
     std::uint32_t page(int ti, int tj) const {
         return pages[static_cast<std::size_t>(tj) * static_cast<std::size_t>(tiles_per_side) +
