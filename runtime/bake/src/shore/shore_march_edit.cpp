@@ -406,13 +406,14 @@ void foam_again(const ShoreGrid& model, ShoreTiles& shared, const CapRatios& rat
     if (all.empty()) return;
     TexelMarks marks;
     marks.assign(all);
-    for (const auto& [g, c] : changed) {
+    for (const auto& run : changed) {
+        const ShoreGrid& g = *run.first;
         int last_i = -1, last_j = -1;
-        c->each([&](int i, int j, std::size_t, const MarchedTexel&) {
+        run.second->each([&](int i, int j, std::size_t, const MarchedTexel&) {
             if (i == last_i && j == last_j) return;  // its waves follow each other
             last_i = i;
             last_j = j;
-            const TexelRange f = footprint(*g, i, j);
+            const TexelRange f = footprint(g, i, j);
             for (int b = f.j0; b <= f.j1; ++b)
                 for (int a = f.i0; a <= f.i1; ++a)
                     if (!baked.contains(a, b)) marks.mark(a, b);
