@@ -40,9 +40,10 @@ struct WaterEdit {
 /// the caller bakes in full. Within the windows the values are a full bake's to the
 /// tolerance; outside them, the previous bake's. A model baked with the parabolic march
 /// (diffraction) needs what its march kept (`marches`, baked with it): each wave's march
-/// is then taken up again round the edit and downstream of it (the random sea's first),
-/// and the texels where its amplitude moved by over kMarchAmplitudeTolerance are baked
-/// again too, with the foam there.
+/// is then taken up again round the edit and downstream of it (the random sea's first);
+/// where its amplitude moved by over kMarchAmplitudeTolerance, the march's blend, its
+/// energy and the foam are made again from what the model holds (the rays and the cap do
+/// not depend on the march), or, where that cannot be told, the texels are baked again.
 std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const Terrain& before, const Terrain& after,
                                            double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline,
