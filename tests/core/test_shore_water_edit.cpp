@@ -10,6 +10,7 @@
 
 #include "../island_heightmap.hpp"
 #include "../shore_model_compare.hpp"
+#include "shore/shore_marches.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/scene_bake.hpp"
@@ -245,6 +246,32 @@ TEST(ShoreWaterEdit, AStrokeOnTheSeabedUnderDiffractedWavesIsReBakedWhereItReach
     // A second stroke takes up the marches the first left.
     const Scene two = island_scene(test::island_pixels_with({{{350.0, 350.0}, 2.0}, {{-300.0, 380.0}, 1.5}}));
     check_diffracted_stroke(one, two, "a second shoal elsewhere, from the first's re-bake");
+}
+
+TEST(ShoreWaterEdit, WhereTheMarchCannotBeBlendedAloneTheRowsAreBakedAgain) {
+    // Without the cap's ratios kept, a march's part cannot be made again alone where only
+    // it moved: the rows are baked again there too, to the same tolerance, and fewer of
+    // the previous bake's slots are kept than where the march's part is made alone.
+    SceneBakeOptions keep;
+    keep.keep_marches = true;
+    auto first = bake_scene(island_scene(island_pixels()), keep);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    auto marches = std::make_shared<detail::ShoreMarches>(*(*first)->bake->ocean_marches);
+    ASSERT_GT(marches->ratios.slots(), 0u);
+    marches->ratios = detail::CapRatios();
+    auto bake = std::make_shared<SceneBake>(*(*first)->bake);
+    bake->ocean_marches = std::move(marches);
+    auto without = std::make_shared<Scene>(**first);
+    without->bake = std::move(bake);
+    const Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    const auto rows = check_diffracted_stroke(without, shoal, "a 2 m shoal, every row where a march moved baked again");
+    const auto alone = check_diffracted_stroke(*first, shoal, "the same, the march's part alone where only it moved");
+    ASSERT_NE(rows, nullptr);
+    ASSERT_NE(alone, nullptr);
+    const ShoreWaves& old_model = *(*first)->bake->ocean_shore;
+    std::size_t total = 0;
+    EXPECT_LT(slots_shared(*rows->bake->ocean_shore, old_model, &total),
+              slots_shared(*alone->bake->ocean_shore, old_model, &total));
 }
 
 TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineIsBakedInFull) {
