@@ -2,7 +2,8 @@
 // (an editor's stroke under the water): the re-solve agrees with a full solve of the
 // changed grid everywhere (bit for bit when asked to within 1e-9: the frozen texels round
 // the window are taken up in the order the full march reaches them), while marching a
-// window that covers the change and what lies downstream of it, not the grid.
+// window that covers the change and what lies downstream of it, not the grid. Deep
+// water for a wave is told from its depth as the marches tell it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -114,6 +115,29 @@ TEST(FastMarching, AChangeThatChangesNothingMarchesOnlyItsWindow) {
     EXPECT_EQ(r.window.window.i0, 57);
     EXPECT_EQ(r.window.window.i1, 69);
     EXPECT_LT(r.largest_error, 1e-9);
+}
+
+TEST(FastMarching, DeepWaterIsToldFromTheDepthAsTheMarchedWavenumberTellsIt) {
+    // Periods of 0.5 to 30 s; depths across a tenth either side of where k h = pi, finest
+    // round it, where the shortcut hands over to the solve.
+    int deep = 0, shallow = 0;
+    for (double period = 0.5; period <= 30.0; period *= 1.07) {
+        const double omega = 2.0 * 3.14159265358979323846 / period;
+        const double threshold = kDeepKh * std::tanh(kDeepKh) * 9.81 / (omega * omega);
+        for (int s = -2000; s <= 2000; ++s) {
+            const double offset = s * (std::abs(s) <= 1000 ? 2e-7 : 5e-5);
+            const double h = threshold * (1.0 + offset);
+            const bool solved = marched_deep(marched_wavenumber(omega, h), h);
+            ASSERT_EQ(marched_deep_water(omega, h), solved) << "T " << period << " s, h " << h << " m";
+            (solved ? deep : shallow) += 1;
+        }
+        EXPECT_FALSE(marched_deep_water(omega, 0.0));
+        EXPECT_FALSE(marched_deep_water(omega, -threshold));
+        EXPECT_FALSE(marched_deep_water(omega, std::nan("")));
+    }
+    // Both answers come up, so the sweep crosses the threshold.
+    EXPECT_GT(deep, 1000);
+    EXPECT_GT(shallow, 1000);
 }
 
 }  // namespace

@@ -3,10 +3,12 @@
 // first order elsewhere; and its re-solve round a local change of s. Private.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <vector>
 
+#include "tidewater/constants.hpp"
 #include "tidewater/dispersion.hpp"
 
 namespace tidewater::detail {
@@ -26,6 +28,19 @@ inline float marched_wavenumber(double omega, double h) {
 /// Whether the water is deep for the wave there (k h >= kDeepKh), `k` its marched wavenumber.
 inline bool marched_deep(float k, double h) {
     return h > 0.0 && static_cast<double>(k) * h >= kDeepKh;
+}
+
+/// Whether depth h (m) is deep water for a wave of angular frequency `omega` (rad/s):
+/// marched_deep of its marched_wavenumber, the same answer, without solving the
+/// dispersion but within a ten-thousandth of the depth where k h = kDeepKh (k h grows with
+/// h, a ten-thousandth of it there: a thousand times the float's rounding). An edit asks
+/// it of every texel its re-marches cross.
+inline bool marched_deep_water(double omega, double h) {
+    static const double kTanhDeepKh = std::tanh(kDeepKh);
+    const double threshold = kDeepKh * kTanhDeepKh * kGravity / (omega * omega);  // omega^2 = g k tanh(k h)
+    if (h < threshold * (1.0 - 1e-4)) return false;
+    if (h > threshold * (1.0 + 1e-4)) return true;
+    return marched_deep(marched_wavenumber(omega, h), h);
 }
 
 /// Whether texel (i, j) of an n x n grid is a source of a wave's marched phase (its

@@ -254,8 +254,7 @@ inline OpenSeaTest open_sea_test(std::span<const Wave> all, std::size_t first, s
 /// shoaling changes its amplitude and wavevector by under 0.4 %, and the waves together
 /// stay under where breaking starts (0.85 of the cap).
 inline bool open_sea_texel(const OpenSeaTest& test, double h, double breaking_index) {
-    return marched_deep(marched_wavenumber(test.longest_omega, h), h) &&
-           std::sqrt(test.energy) < 0.8 * 0.5 * breaking_index * h;
+    return marched_deep_water(test.longest_omega, h) && std::sqrt(test.energy) < 0.8 * 0.5 * breaking_index * h;
 }
 
 }  // namespace tidewater::detail

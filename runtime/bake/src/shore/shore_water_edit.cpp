@@ -69,10 +69,6 @@ bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSea
     return true;
 }
 
-bool deep_water(double omega, double h) {
-    return marched_deep(marched_wavenumber(omega, h), h);
-}
-
 /// Values over a range of texels, row-major.
 template <typename T>
 struct Patch {
@@ -141,7 +137,7 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
     const Terrain& terrain = *r.before.terrain;
     if (const auto* map = std::get_if<HeightmapTerrain>(&terrain.shape()); map && terrain.cuts().empty())
         for (std::size_t w = 0; w < nw; ++w)
-            if (!deep_water(waves[r.layer->first + w].omega, r.before.level - map->min_height)) {
+            if (!marched_deep_water(waves[r.layer->first + w].omega, r.before.level - map->min_height)) {
                 known[w] = 1;
                 ++found;
             }
@@ -154,8 +150,9 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
             for (std::size_t w = 0; w < nw; ++w) {
                 if (known[w] || t[w] != 0.0f || (t[2 * nw + w] == 0.0f && t[3 * nw + w] == 0.0f)) continue;
                 const std::size_t g = tiles.grid_index(tile, k);
-                if (deep_water(waves[r.layer->first + w].omega,
-                               static_cast<double>(r.before.at(static_cast<int>(g % n), static_cast<int>(g / n))))) {
+                if (marched_deep_water(
+                        waves[r.layer->first + w].omega,
+                        static_cast<double>(r.before.at(static_cast<int>(g % n), static_cast<int>(g / n))))) {
                     deep[w] = known[w] = 1;
                     ++found;
                 }
@@ -169,8 +166,8 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
 bool deep_water_moves(const RunEdit& r, const Wave& wave) {
     for (int j = r.edit.j0; j <= r.edit.j1; ++j)
         for (int i = r.edit.i0; i <= r.edit.i1; ++i)
-            if (deep_water(wave.omega, static_cast<double>(r.before.at(i, j))) !=
-                deep_water(wave.omega, static_cast<double>(r.after.at(i, j))))
+            if (marched_deep_water(wave.omega, static_cast<double>(r.before.at(i, j))) !=
+                marched_deep_water(wave.omega, static_cast<double>(r.after.at(i, j))))
                 return true;
     return false;
 }
@@ -498,7 +495,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         c.source = [&](int i, int j) {
             const double h = static_cast<double>(r.after.at(i, j));
             if (!(h > 0.0)) return kUnreached;
-            return phase_source(r.any_deep[w] != 0, deep_water(wave.omega, h), i, j, n, dir.x, dir.y)
+            return phase_source(r.any_deep[w] != 0, marched_deep_water(wave.omega, h), i, j, n, dir.x, dir.y)
                        ? wave.k * glm::dot(dir, r.centre(i, j)) - base
                        : kUnreached;
         };
@@ -566,7 +563,8 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             const MarchWindow& m = r.march[w];
             const double phase =
                 !m.value.empty() && m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, h);
-            return !std::isfinite(phase) || (r.any_deep[w] != 0 && deep_water(wave.omega, static_cast<double>(h)));
+            return !std::isfinite(phase) ||
+                   (r.any_deep[w] != 0 && marched_deep_water(wave.omega, static_cast<double>(h)));
         };
         input.stored_at = [&](std::size_t l, int i, int j) { return runs[l].layer->tiles.stored_texel(i, j); };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
