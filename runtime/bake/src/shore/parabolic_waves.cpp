@@ -317,8 +317,10 @@ class Marcher {
 
   private:
     /// The half step's turn of point j: the phase against the row's mean wavenumber, and
-    /// the growth or decay (shoaling, breaking, nonlinear shoaling).
-    Complex half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx);
+    /// the growth or decay (shoaling, breaking, nonlinear shoaling). `deep_turn`, where
+    /// given, is the open sea's turn over this dx, the same for every point of the row.
+    Complex half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx,
+                      const Complex* deep_turn = nullptr);
 
     const ParabolicInput& in_;
     std::size_t n_;
@@ -334,7 +336,8 @@ class Marcher {
     RowMedium from_, to_;     ///< a substepped point's media, at its index
 };
 
-Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx) {
+Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx,
+                           const Complex* deep_turn) {
     const double h = here.h[j];
     const double own = 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
     const double height = !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j]) : own;
@@ -345,7 +348,7 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
     // group velocity does not change (no growth) and whose phase is the deep-water one.
     if (here.deep[j] && next.deep[j] && !broken[j] && !shoals_nonlinearly &&
         !(in_.breaking && here.wet[j] && height > lowest_breaking_ * h))
-        return std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
+        return deep_turn ? *deep_turn : std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
     // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
     double decay = here.cg[j] == next.cg[j] ? 0.0 : 0.5 * std::log(next.cg[j] / here.cg[j]) / dx;
     if (in_.breaking && in_.random_sea && here.wet[j]) {
@@ -432,11 +435,13 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, std::span<co
     // each half step, whatever the step against the wavelength or the surf zone's decay
     // length (Crank-Nicolson would turn a strong decay into a flip of sign); Crank-
     // Nicolson between for the diffraction, (1 - dx/2 R) A' = (1 + dx/2 R) A.
+    const Complex deep_turn = std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
     for (std::size_t j = 0; j < un; ++j) {
         const int parts = substeps(here, j, dx);
         if (parts == 1) {
-            half_turn_[j] = half_turn(here, next, j, k_bar, dx);
-            a[j] *= half_turn_[j];
+            const Complex turn = half_turn(here, next, j, k_bar, dx, &deep_turn);
+            half_turn_[j] = turn;
+            a[j] *= turn;
             continue;
         }
         // Where the wave breaks or nears breaking each half step's turn is taken in
