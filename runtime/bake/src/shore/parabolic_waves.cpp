@@ -349,8 +349,12 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
     if (here.deep[j] && next.deep[j] && !broken[j] && !shoals_nonlinearly &&
         !(in_.breaking && here.wet[j] && height > lowest_breaking_ * h))
         return deep_turn ? *deep_turn : std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
-    // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows.
-    double decay = here.cg[j] == next.cg[j] ? 0.0 : 0.5 * std::log(next.cg[j] / here.cg[j]) / dx;
+    // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows, by
+    // (cg here / cg next)^(1/4) over the half step. Breaking takes more (`dissipation`,
+    // 1/m, of the energy flux); nonlinear shoaling, where it grows faster, takes less.
+    const double flux_ratio = next.cg[j] / here.cg[j];
+    double dissipation = 0.0;
+    bool shuto = false;
     if (in_.breaking && in_.random_sea && here.wet[j]) {
         // Battjes and Janssen: the sea loses D = (alpha / 4) rho g f Q_b H_max^2 (alpha 1,
         // f its mean frequency) of its energy flux E cg, E = rho g H_rms^2 / 8; each
@@ -360,9 +364,9 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
         broken[j] = share >= 0.5 ? 1 : 0;
         if (share > 0.0) {
             const double ratio = highest / height;
-            decay += share * ratio * ratio / (period_ * here.cg[j]);
-        } else if (shoals_nonlinearly) {
-            decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+            dissipation = share * ratio * ratio / (period_ * here.cg[j]);
+        } else {
+            shuto = shoals_nonlinearly;
         }
     } else {
         // A regular wave: it breaks past Weggel's index and decays as Dally et al. say.
@@ -378,18 +382,26 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
         if (broken[j]) {
             // Dally et al.: d(E cg)/dx = -K / h (E cg - E_s cg), E_s at height Gamma h.
             const double stable = in_.surf.stable_index * h / height;
-            decay += 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
-        } else if (shoals_nonlinearly) {
-            // Grows as H ~ h^n where that is faster than linear shoaling.
-            decay = std::min(decay, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+            dissipation = 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
+        } else {
+            shuto = shoals_nonlinearly;
         }
+    }
+    double magnitude = 1.0 / std::sqrt(std::sqrt(flux_ratio));
+    if (shuto) {
+        // Grows as H ~ h^n where that is faster than linear shoaling.
+        const double decay =
+            std::min(0.5 * std::log(flux_ratio) / dx, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+        magnitude = std::exp(-0.5 * decay * dx);
+    } else if (dissipation > 0.0) {
+        magnitude *= std::exp(-0.5 * dissipation * dx);
     }
     // The phase travels at the amplitude's own speed (amplitude dispersion).
     const double kn =
         in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
             ? tabulated_amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
             : k_[j];
-    return std::polar(std::exp(-0.5 * decay * dx), 0.5 * (kn - k_bar) * dx);
+    return std::polar(magnitude, 0.5 * (kn - k_bar) * dx);
 }
 
 void Marcher::turn_through(float here_depth, float next_depth, std::size_t j, double k_bar, double dx, double from,

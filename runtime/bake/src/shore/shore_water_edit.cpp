@@ -113,12 +113,16 @@ struct RunEdit {
     /// Wave w's phase before the edit, from its stored residual (kUnreached on land and
     /// where the wave did not reach), offset as the march is.
     double phase_before(const Wave& wave, std::size_t w, int i, int j, float depth) const {
-        if (!(depth > 0.0f)) return kUnreached;
+        if (!reached_before(w, i, j, depth)) return kUnreached;
+        return static_cast<double>(layer->tiles.texel(i, j)[w]) +
+               wave.k * glm::dot(glm::dvec2(wave.dir_x, wave.dir_z), centre(i, j)) - base(wave);
+    }
+    /// Whether phase_before is finite there: the wave reached the texel, under water.
+    bool reached_before(std::size_t w, int i, int j, float depth) const {
+        if (!(depth > 0.0f)) return false;
         const std::size_t nw = layer->count;
         const float* t = layer->tiles.texel(i, j);
-        if (t[2 * nw + w] == 0.0f && t[3 * nw + w] == 0.0f) return kUnreached;
-        return static_cast<double>(t[w]) + wave.k * glm::dot(glm::dvec2(wave.dir_x, wave.dir_z), centre(i, j)) -
-               base(wave);
+        return t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f;
     }
 };
 
@@ -561,10 +565,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             if (!(h > 0.0f)) return true;
             const Wave& wave = waves[r.layer->first + w];
             const MarchWindow& m = r.march[w];
-            const double phase =
-                !m.value.empty() && m.window.contains(i, j) ? m.at(i, j) : r.phase_before(wave, w, i, j, h);
-            return !std::isfinite(phase) ||
-                   (r.any_deep[w] != 0 && marched_deep_water(wave.omega, static_cast<double>(h)));
+            const bool reached =
+                !m.value.empty() && m.window.contains(i, j) ? std::isfinite(m.at(i, j)) : r.reached_before(w, i, j, h);
+            return !reached || (r.any_deep[w] != 0 && marched_deep_water(wave.omega, static_cast<double>(h)));
         };
         input.stored_at = [&](std::size_t l, int i, int j) { return runs[l].layer->tiles.stored_texel(i, j); };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
