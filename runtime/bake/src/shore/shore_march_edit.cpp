@@ -30,17 +30,7 @@ std::size_t RunMarchChanges::at(int i, int j, std::size_t w) const {
 void RunMarchChanges::set(int i, int j, std::size_t w, float amplitude, bool reached, bool broken) {
     const std::size_t k = at(i, j, w);
     amplitude_[k] = amplitude;
-    flags_[k] = static_cast<std::uint8_t>((reached ? 1 : 0) | (broken ? 2 : 0));
-}
-
-bool RunMarchChanges::find(int i, int j, std::size_t w, float& amplitude, bool& reached, bool& broken) const {
-    if (range_.empty() || !range_.contains(i, j)) return false;
-    const std::size_t k = at(i, j, w);
-    if (std::isnan(amplitude_[k])) return false;
-    amplitude = amplitude_[k];
-    reached = (flags_[k] & 1) != 0;
-    broken = (flags_[k] & 2) != 0;
-    return true;
+    flags_[k] = static_cast<std::uint8_t>((reached ? kReached : 0) | (broken ? kBroken : 0));
 }
 
 namespace {
@@ -232,14 +222,10 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
 
 float marched_amplitude(const Wave& wave, double spacing, const RunMarchChanges& changes, MarchedAmplitudes& record,
                         std::size_t at, std::size_t w, int i, int j, float rays, float kx, float kz, double h) {
-    float amplitude = 0.0f;
-    bool reached = false, broken = false;
-    const bool moved = changes.find(i, j, w, amplitude, reached, broken);
-    if (!moved) {
-        reached = record.reached(at, w);
-        broken = record.broken(at, w);
-        amplitude = record.amplitude(at, w);
-    }
+    const std::optional<MarchedTexel> moved = changes.find(i, j, w);
+    const float amplitude = moved ? moved->amplitude : record.amplitude(at, w);
+    const bool reached = moved ? moved->reached : record.reached(at, w);
+    const bool broken = moved ? moved->broken.value_or(false) : record.broken(at, w);
     const std::uint8_t share =
         reached && (kx != 0.0f || kz != 0.0f) ? held_share(wave, kx, kz, spacing) : std::uint8_t{0};
     if (moved || share != record.share(at, w)) record.set(at, w, share, amplitude, reached, broken);
@@ -362,15 +348,13 @@ void blend_again(const MarchOnlyRun& run, ShoreTiles& out, MarchedAmplitudes& re
         [&](float* t, int i, int j, std::size_t at) {
             const double h = static_cast<double>(run.depth(i, j));
             for (std::size_t w = 0; w < nw; ++w) {
-                float amplitude = 0.0f;
-                bool reached = false, broken = false;
-                if (!run.changes->find(i, j, w, amplitude, reached, broken)) continue;
-                const MarchedTexel march{amplitude, reached, broken};
+                const std::optional<MarchedTexel> march = run.changes->find(i, j, w);
+                if (!march) continue;
                 const std::optional<Reblended> b = reblended_amplitude(
-                    run.waves[w], run.spacing[w], record, at, w, march, t[nw + w], t[2 * nw + w], t[3 * nw + w], h);
+                    run.waves[w], run.spacing[w], record, at, w, *march, t[nw + w], t[2 * nw + w], t[3 * nw + w], h);
                 if (!b) continue;  // blends_alone said none is so
                 t[nw + w] = b->amplitude;
-                record.set(at, w, b->share, amplitude, reached, broken);
+                record.set(at, w, b->share, march->amplitude, march->reached, march->broken.value_or(false));
             }
         },
         threads);

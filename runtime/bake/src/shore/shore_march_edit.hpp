@@ -27,23 +27,29 @@ class RunMarchChanges {
   public:
     void assign(const TexelRange& range, std::size_t waves);
     void set(int i, int j, std::size_t w, float amplitude, bool reached, bool broken);
-    /// False where the march did not move at (i, j) for wave w.
-    bool find(int i, int j, std::size_t w, float& amplitude, bool& reached, bool& broken) const;
+    /// What the march gives now at (i, j) for wave w; none where it did not move.
+    std::optional<MarchedTexel> find(int i, int j, std::size_t w) const {
+        if (range_.empty() || !range_.contains(i, j)) return std::nullopt;
+        return held(at(i, j, w));
+    }
     const TexelRange& range() const { return range_; }
     /// Calls each(i, j, w, what the march gives now) where the march moved.
     template <typename Each>
     void each(const Each& each) const {
         for (int j = range_.j0; j <= range_.j1; ++j)
             for (int i = range_.i0; i <= range_.i1; ++i)
-                for (std::size_t w = 0; w < waves_; ++w) {
-                    const std::size_t k = at(i, j, w);
-                    if (std::isnan(amplitude_[k])) continue;
-                    each(i, j, w, MarchedTexel{amplitude_[k], (flags_[k] & 1) != 0, (flags_[k] & 2) != 0});
-                }
+                for (std::size_t w = 0; w < waves_; ++w)
+                    if (const std::optional<MarchedTexel> t = held(at(i, j, w))) each(i, j, w, *t);
     }
 
   private:
+    static constexpr std::uint8_t kReached = 1, kBroken = 2;
     std::size_t at(int i, int j, std::size_t w) const;
+    /// Entry k; none where it was not set (NaN).
+    std::optional<MarchedTexel> held(std::size_t k) const {
+        if (std::isnan(amplitude_[k])) return std::nullopt;
+        return MarchedTexel{amplitude_[k], (flags_[k] & kReached) != 0, (flags_[k] & kBroken) != 0};
+    }
     TexelRange range_{0, 0, -1, -1};
     std::size_t waves_ = 0;
     std::vector<float> amplitude_;

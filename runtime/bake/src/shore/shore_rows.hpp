@@ -49,6 +49,12 @@ void each_run_wave(std::span<const RunTilesView> runs, const ShoreGrid& grid, in
     }
 }
 
+/// The cap at depth h (m): the largest sqrt(sum A^2) (m) the waves keep there, half of
+/// breaking_index * h. cap_ratio, cap_energy and the open sea's margin read it.
+inline double cap_amplitude(double h, double breaking_index) {
+    return 0.5 * breaking_index * h;
+}
+
 /// The local height over the breaking cap at texel (i, j) of `grid` (depth h > 0): the
 /// local wave height 2 sqrt(sum A^2) over breaking_index * h (exactly 2A for one wave, the
 /// rms-based height, about 0.71 Hs, for a spectrum, whose occasional peaks a cap on sum(A)
@@ -61,7 +67,7 @@ inline double cap_ratio(std::span<const Wave> waves, std::span<const RunTilesVie
                       const double a = waves[w].amplitude * factor;
                       energy += a * a;
                   });
-    return std::sqrt(energy) / (0.5 * breaking_index * h);
+    return std::sqrt(energy) / cap_amplitude(h, breaking_index);
 }
 
 /// What the diffracted waves (shore_diffraction.hpp) tell the foam at a texel: the
@@ -88,7 +94,7 @@ inline float shared_foam(double ratio, double energy, DiffractedEnergy diffracte
 /// The energy (sum of A^2 of the runs before their caps, m^2) at depth h whose cap_ratio
 /// is `ratio`.
 inline double cap_energy(double ratio, double h, double breaking_index) {
-    const double e = ratio * 0.5 * breaking_index * h;
+    const double e = ratio * cap_amplitude(h, breaking_index);
     return e * e;
 }
 
@@ -254,7 +260,7 @@ inline OpenSeaTest open_sea_test(std::span<const Wave> all, std::size_t first, s
 /// shoaling changes its amplitude and wavevector by under 0.4 %, and the waves together
 /// stay under where breaking starts (0.85 of the cap).
 inline bool open_sea_texel(const OpenSeaTest& test, double h, double breaking_index) {
-    return marched_deep_water(test.longest_omega, h) && std::sqrt(test.energy) < 0.8 * 0.5 * breaking_index * h;
+    return marched_deep_water(test.longest_omega, h) && std::sqrt(test.energy) < 0.8 * cap_amplitude(h, breaking_index);
 }
 
 }  // namespace tidewater::detail
