@@ -159,14 +159,17 @@ double broken_share(double rms_over_max) {
     const double b = rms_over_max;
     if (!(b > kNoBrokenShare)) return 0.0;
     if (b >= 1.0) return 1.0;
-    // f(Q) = 1 - Q + b^2 ln Q rises from -inf at 0 to 0 at Q = 1, through one root below
-    // 1 (f' = 0 at Q = b^2 < 1): bisection between a point where it is negative and b^2.
-    double lo = 1e-12, hi = b * b;
-    for (int i = 0; i < 60 && hi - lo > 1e-9; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (1.0 - mid + b * b * std::log(mid) < 0.0 ? lo : hi) = mid;
+    // f(Q) = 1 - Q + b^2 ln Q rises from -inf at 0 to its one root below 1 (f' = 0 at
+    // Q = b^2 < 1), and is concave: Newton's steps from a point where it is negative
+    // (exp(-1 / b^2), where f = -Q) climb to the root from below without passing it.
+    const double b2 = b * b;
+    double q = std::exp(-1.0 / b2);
+    for (int i = 0; i < 100; ++i) {
+        const double step = (1.0 - q + b2 * std::log(q)) / (b2 / q - 1.0);
+        q -= step;
+        if (!(std::abs(step) > 1e-13 * q)) break;
     }
-    return 0.5 * (lo + hi);
+    return std::min(q, b2);
 }
 
 double shuto_exponent(double ursell) {
