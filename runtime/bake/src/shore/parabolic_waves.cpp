@@ -353,8 +353,8 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
         !(in_.breaking && here.wet[j] && height > lowest_breaking_ * h))
         return deep_turn ? *deep_turn : std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
     // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows, by
-    // (cg here / cg next)^(1/4) over the half step. Breaking takes more (`dissipation`,
-    // 1/m, of the energy flux); nonlinear shoaling, where it grows faster, takes less.
+    // (cg here / cg next)^(1/4) over the half step. Breaking takes more (`dissipation`:
+    // the amplitude's rate of decay, 1/m); nonlinear shoaling, where it grows faster, less.
     const double flux_ratio = next.cg[j] / here.cg[j];
     double dissipation = 0.0;
     bool shuto = false;
