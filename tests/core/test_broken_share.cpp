@@ -27,8 +27,8 @@ TEST(BrokenShare, IsTheRootOfBattjesAndJanssensBalance) {
     EXPECT_EQ(broken_share(1.0), 1.0);
     EXPECT_EQ(broken_share(2.0), 1.0);
     EXPECT_EQ(broken_share(std::nan("")), 0.0);
-    // Near 1 the share nears 1; at b = 0.5 it is Q = exp(-4 (1 - Q)), 0.019827 (the fixed
-    // point iterated by hand).
+    // Near 1 the share nears 1; at b = 0.5 it is the fixed point of Q = exp(-4 (1 - Q)),
+    // 0.0198274 (that iteration converges there: its slope is 4 Q, 0.08).
     EXPECT_GT(broken_share(0.99), 0.9);
     EXPECT_NEAR(broken_share(0.5), 0.0198274, 1e-7);
 }

@@ -390,14 +390,15 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
             shuto = shoals_nonlinearly;
         }
     }
-    double magnitude = 1.0 / std::sqrt(std::sqrt(flux_ratio));
+    double magnitude = 0.0;
     if (shuto) {
         // Grows as H ~ h^n where that is faster than linear shoaling.
         const double decay =
             std::min(0.5 * std::log(flux_ratio) / dx, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
         magnitude = std::exp(-0.5 * decay * dx);
-    } else if (dissipation > 0.0) {
-        magnitude *= std::exp(-0.5 * dissipation * dx);
+    } else {
+        magnitude = 1.0 / std::sqrt(std::sqrt(flux_ratio));
+        if (dissipation > 0.0) magnitude *= std::exp(-0.5 * dissipation * dx);
     }
     // The phase travels at the amplitude's own speed (amplitude dispersion).
     const double kn =

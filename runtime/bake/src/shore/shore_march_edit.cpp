@@ -422,7 +422,7 @@ std::pair<std::uint32_t, std::uint32_t> marched_energy(std::span<const Wave> wav
     std::uint32_t energy = 0, breaking = 0;
     for (std::size_t w = 0; w < nw; ++w) {
         if (!record.reached(at, w)) continue;
-        const bool rays = texel[2 * nw + w] != 0.0f || texel[3 * nw + w] != 0.0f;
+        const bool rays = carries_wave(texel, nw, w);
         const double share = rays ? static_cast<double>(record.share(at, w)) / 255.0 : 1.0;
         if (share == 0.0) continue;
         const std::uint32_t e =

@@ -132,6 +132,12 @@ inline float capped_amplitude(float amplitude, double depth, double ratio) {
     return ratio > 1.0 ? static_cast<float>(static_cast<double>(amplitude) / ratio) : amplitude;
 }
 
+/// Whether a run's texel `t` (its `nw` waves' rows) holds a wavevector for wave w: land
+/// and water the wave did not reach hold none.
+inline bool carries_wave(const float* t, std::size_t nw, std::size_t w) {
+    return t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f;
+}
+
 /// One wave's rows at a texel, before the cap.
 struct WaveTexel {
     float residual = 0.0f, amplitude = 0.0f, kx = 0.0f, kz = 0.0f;

@@ -113,16 +113,15 @@ struct RunEdit {
     /// Wave w's phase before the edit, from its stored residual (kUnreached on land and
     /// where the wave did not reach), offset as the march is.
     double phase_before(const Wave& wave, std::size_t w, int i, int j, float depth) const {
-        if (!reached_before(w, i, j, depth)) return kUnreached;
-        return static_cast<double>(layer->tiles.texel(i, j)[w]) +
-               wave.k * glm::dot(glm::dvec2(wave.dir_x, wave.dir_z), centre(i, j)) - base(wave);
+        if (!(depth > 0.0f)) return kUnreached;
+        const float* t = layer->tiles.texel(i, j);
+        if (!carries_wave(t, layer->count, w)) return kUnreached;
+        return static_cast<double>(t[w]) + wave.k * glm::dot(glm::dvec2(wave.dir_x, wave.dir_z), centre(i, j)) -
+               base(wave);
     }
     /// Whether phase_before is finite there: the wave reached the texel, under water.
     bool reached_before(std::size_t w, int i, int j, float depth) const {
-        if (!(depth > 0.0f)) return false;
-        const std::size_t nw = layer->count;
-        const float* t = layer->tiles.texel(i, j);
-        return t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f;
+        return depth > 0.0f && carries_wave(layer->tiles.texel(i, j), layer->count, w);
     }
 };
 
@@ -152,7 +151,7 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
         for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k) {
             const float* t = slot + k * tiles.stride;
             for (std::size_t w = 0; w < nw; ++w) {
-                if (known[w] || t[w] != 0.0f || (t[2 * nw + w] == 0.0f && t[3 * nw + w] == 0.0f)) continue;
+                if (known[w] || t[w] != 0.0f || !carries_wave(t, nw, w)) continue;
                 const std::size_t g = tiles.grid_index(tile, k);
                 if (marched_deep_water(
                         waves[r.layer->first + w].omega,
@@ -359,10 +358,7 @@ void carry_onto_land(std::span<const Wave> waves, RunEdit& r, unsigned threads) 
     const int n = r.n();
     const double texel = r.layer->grid.texel;
     auto wet = [&](int a, int b) { return *r.depth_after(a, b) > 0.0f; };
-    auto carries = [&](int a, int b, std::size_t w) {
-        const float* t = r.out.texel(a, b);
-        return t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f;
-    };
+    auto carries = [&](int a, int b, std::size_t w) { return carries_wave(r.out.texel(a, b), nw, w); };
     for (int ring = 1; ring <= 2; ++ring) {
         Patch<float> carried;  // per texel and wave: residual, kx, kz, and 1 where carried
         carried.assign(r.rows, 4 * nw, 0.0f);

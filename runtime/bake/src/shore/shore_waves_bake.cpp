@@ -405,7 +405,7 @@ void extend_onto_land(std::span<const Wave> waves, RunBake& run, unsigned thread
                 const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                           j = static_cast<int>(k / static_cast<std::size_t>(n));
                 for (std::size_t w = 0; w < nw; ++w) {
-                    if (t[2 * nw + w] != 0.0f || t[3 * nw + w] != 0.0f) continue;  // a wave is here
+                    if (detail::carries_wave(t, nw, w)) continue;  // a wave is here
                     const auto v = detail::carried_onto_land(waves[run.first + w], tiles, nw, w, i, j, n, g.texel,
                                                              [](int, int) { return true; });
                     if (!v) continue;
