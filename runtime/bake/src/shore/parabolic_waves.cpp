@@ -66,27 +66,34 @@ struct RowMedium {
     std::vector<char> wet, deep;
 };
 
+/// What every point's medium shares for a wave of angular frequency omega (rad/s): its
+/// deep-water wavenumber and group velocity, and the least depth the march takes (a
+/// thousandth of the deep-water wavelength over 2 pi). Formed once a march: most of a
+/// march's points are in deep water.
+struct DeepWater {
+    explicit DeepWater(double w) : omega(w), k(w * w / kGravity), cg(0.5 * w / k), shallowest(1e-3 / k) {}
+    double omega, k, cg, shallowest;
+};
+
 /// Sets point j of `r` for still-water depth `depth` (m).
-void fill_point_medium(const ParabolicInput& in, double depth, RowMedium& r, std::size_t j) {
-    const double k_deep = in.omega * in.omega / kGravity;
-    const double shallowest = 1e-3 / k_deep;
+void fill_point_medium(const DeepWater& d, double depth, RowMedium& r, std::size_t j) {
     r.wet[j] = depth > 0.0;
-    r.h[j] = std::max(depth, shallowest);
+    r.h[j] = std::max(depth, d.shallowest);
     double kh = kDeepKh, share = 0.5;
     // k(h) >= omega^2 / g: water that deep for the deep-water k is deep without a look-up.
-    if (k_deep * r.h[j] < kDeepKh) dispersion_table().at(std::sqrt(k_deep * r.h[j]), kh, share);
+    if (d.k * r.h[j] < kDeepKh) dispersion_table().at(std::sqrt(d.k * r.h[j]), kh, share);
     r.deep[j] = kh >= kDeepKh;
-    r.k[j] = r.deep[j] ? k_deep : kh / r.h[j];
-    r.cg[j] = r.deep[j] ? 0.5 * in.omega / k_deep : share * in.omega / r.k[j];
+    r.k[j] = r.deep[j] ? d.k : kh / r.h[j];
+    r.cg[j] = r.deep[j] ? d.cg : share * d.omega / r.k[j];
 }
 
 /// Fills `r` for a row of `depths` (its vectors are reused from row to row).
-void fill_row_medium(const ParabolicInput& in, std::span<const float> depths, RowMedium& r) {
+void fill_row_medium(const DeepWater& d, std::span<const float> depths, RowMedium& r) {
     const std::size_t n = depths.size();
     for (auto* v : {&r.k, &r.cg, &r.h}) v->resize(n);
     r.wet.resize(n);
     r.deep.resize(n);
-    for (std::size_t j = 0; j < n; ++j) fill_point_medium(in, static_cast<double>(depths[j]), r, j);
+    for (std::size_t j = 0; j < n; ++j) fill_point_medium(d, static_cast<double>(depths[j]), r, j);
 }
 
 /// Solves the tridiagonal system lower_j x_{j-1} + diag_j x_j + upper_j x_{j+1} = rhs_j
@@ -97,11 +104,26 @@ void solve_tridiagonal(const std::vector<Complex>& lower, std::vector<Complex>& 
     // that these coefficients (of order 1) cannot reach, at several times the cost.
     auto inverse = [](Complex z) { return std::conj(z) / std::norm(z); };
     const std::size_t n = diag.size();
+    Complex diag_before = diag[0], m_before;
     diag[0] = inverse(diag[0]);
     for (std::size_t j = 1; j < n; ++j) {
-        const Complex m = lower[j] * diag[j - 1];
-        diag[j] = inverse(diag[j] - m * upper[j - 1]);
+        // Over deep water the rows are alike and the elimination's pivots settle to one
+        // value: where this row and the pivot it starts from are the last one's, so is
+        // what it gives (the same operations on the same values), without the division
+        // that holds up each step.
+        const Complex given = diag[j];
+        Complex m;
+        if (j >= 2 && given == diag_before && lower[j] == lower[j - 1] && upper[j - 1] == upper[j - 2] &&
+            diag[j - 1] == diag[j - 2]) {
+            m = m_before;
+            diag[j] = diag[j - 1];
+        } else {
+            m = lower[j] * diag[j - 1];
+            diag[j] = inverse(given - m * upper[j - 1]);
+        }
         rhs[j] -= m * rhs[j - 1];
+        diag_before = given;
+        m_before = m;
     }
     rhs[n - 1] *= diag[n - 1];
     for (std::size_t j = n - 1; j-- > 0;) rhs[j] = (rhs[j] - upper[j] * rhs[j + 1]) * diag[j];
@@ -258,9 +280,9 @@ inline constexpr double kShutoUrsell = 30.0;
 /// The march's state from row to row.
 class Marcher {
   public:
-    explicit Marcher(const ParabolicInput& in) : in_(in), n_(static_cast<std::size_t>(in.grid.across)) {
+    explicit Marcher(const ParabolicInput& in)
+        : in_(in), n_(static_cast<std::size_t>(in.grid.across)), deep_(in.omega) {
         period_ = in.sea_period > 0.0 ? in.sea_period : kTwoPi / in.omega;
-        k_deep_ = in.omega * in.omega / kGravity;
         // Under this height over the depth nothing breaks: Weggel's least index, or where
         // Battjes and Janssen's share of broken waves is nought.
         lowest_breaking_ = in.random_sea ? kNoBrokenShare * kRandomSeaBreakerIndex : kLowestBreakerIndex;
@@ -310,6 +332,7 @@ class Marcher {
     void advance(const RowMedium& here, const RowMedium& next, std::span<const float> here_depths,
                  std::span<const float> next_depths, double dx, const Sides* sides = nullptr);
 
+    const DeepWater& deep_water() const { return deep_; }
     /// The sea's rms height along the row the next step leaves (empty: none given).
     std::vector<float> sea_height;
     std::vector<Complex> a;
@@ -319,15 +342,38 @@ class Marcher {
     double phase = 0.0;
 
   private:
+    /// The height point j breaks and shoals at (m): the sea's where given, else its own.
+    double height_at(std::size_t j) const {
+        return !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j])
+                                                           : 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
+    }
+    /// Ursell's number g H T^2 / h^2 of a wave `height` high between depths h and h_next.
+    double ursell(double h, double h_next, double height) const {
+        const double depth = 0.5 * (h + h_next);
+        return kGravity * height * period_ * period_ / (depth * depth);
+    }
+    /// Whether point j, `height` high, shoals nonlinearly from `here` to `next`.
+    bool shoals_nonlinearly(const RowMedium& here, const RowMedium& next, std::size_t j, double height) const {
+        return in_.nonlinear_shoaling && here.wet[j] && next.h[j] < here.h[j] &&
+               ursell(here.h[j], next.h[j], height) >= kShutoUrsell;
+    }
+    /// Whether point j is the open sea's wave from `here` to `next`: in deep water, too low
+    /// to break and shoaling linearly, its group velocity does not change (no growth) and
+    /// its phase is the deep-water one. Most of a march's points: the cheap tests first.
+    bool open_sea(const RowMedium& here, const RowMedium& next, std::size_t j) const {
+        if (!here.deep[j] || !next.deep[j] || broken[j]) return false;
+        const double height = height_at(j);
+        return !(in_.breaking && here.wet[j] && height > lowest_breaking_ * here.h[j]) &&
+               !shoals_nonlinearly(here, next, j, height);
+    }
     /// The half step's turn of point j: the phase against the row's mean wavenumber, and
-    /// the growth or decay (shoaling, breaking, nonlinear shoaling). `deep_turn`, where
-    /// given, is the open sea's turn over this dx, the same for every point of the row.
-    Complex half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx,
-                      const Complex* deep_turn = nullptr);
+    /// the growth or decay (shoaling, breaking, nonlinear shoaling).
+    Complex half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx);
 
     const ParabolicInput& in_;
     std::size_t n_;
-    double period_ = 0.0, k_deep_ = 0.0, lowest_breaking_ = 0.0;
+    DeepWater deep_;
+    double period_ = 0.0, lowest_breaking_ = 0.0;
     std::vector<Complex> lower_, diag_, upper_, rhs_, half_turn_;
     /// Point j's turn through depths from `here_depth` to `next_depth` over the half of a
     /// step of dx that starts `from` (0 or 0.5) of the way, in `parts` substeps.
@@ -339,19 +385,10 @@ class Marcher {
     RowMedium from_, to_;     ///< a substepped point's media, at its index
 };
 
-Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx,
-                           const Complex* deep_turn) {
-    const double h = here.h[j];
-    const double own = 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
-    const double height = !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j]) : own;
-    const double depth = 0.5 * (h + next.h[j]);
-    const double ursell = kGravity * height * period_ * period_ / (depth * depth);
-    const bool shoals_nonlinearly = in_.nonlinear_shoaling && here.wet[j] && next.h[j] < h && ursell >= kShutoUrsell;
-    // Deep water, a wave too low to break and shoaling linearly: the open sea's wave, whose
-    // group velocity does not change (no growth) and whose phase is the deep-water one.
-    if (here.deep[j] && next.deep[j] && !broken[j] && !shoals_nonlinearly &&
-        !(in_.breaking && here.wet[j] && height > lowest_breaking_ * h))
-        return deep_turn ? *deep_turn : std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
+Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::size_t j, double k_bar, double dx) {
+    if (open_sea(here, next, j)) return std::polar(1.0, 0.5 * (deep_.k - k_bar) * dx);
+    const double h = here.h[j], height = height_at(j);
+    const bool nonlinear = shoals_nonlinearly(here, next, j, height);
     // Energy flux k p |A|^2 = omega cg |A|^2 is kept: A shrinks as sqrt(cg) grows, by
     // (cg here / cg next)^(1/4) over the half step. Breaking takes more (`dissipation`:
     // the amplitude's rate of decay, 1/m); nonlinear shoaling, where it grows faster, less.
@@ -369,7 +406,7 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
             const double ratio = highest / height;
             dissipation = share * ratio * ratio / (period_ * here.cg[j]);
         } else {
-            shuto = shoals_nonlinearly;
+            shuto = nonlinear;
         }
     } else {
         // A regular wave: it breaks past Weggel's index and decays as Dally et al. say.
@@ -387,24 +424,24 @@ Complex Marcher::half_turn(const RowMedium& here, const RowMedium& next, std::si
             const double stable = in_.surf.stable_index * h / height;
             dissipation = 0.5 * in_.surf.decay / h * (1.0 - stable * stable);
         } else {
-            shuto = shoals_nonlinearly;
+            shuto = nonlinear;
         }
     }
     double magnitude = 0.0;
     if (shuto) {
         // Grows as H ~ h^n where that is faster than linear shoaling.
-        const double decay =
-            std::min(0.5 * std::log(flux_ratio) / dx, -shuto_exponent(ursell) * std::log(next.h[j] / h) / dx);
+        const double decay = std::min(0.5 * std::log(flux_ratio) / dx,
+                                      -shuto_exponent(ursell(h, next.h[j], height)) * std::log(next.h[j] / h) / dx);
         magnitude = std::exp(-0.5 * decay * dx);
     } else {
         magnitude = 1.0 / std::sqrt(std::sqrt(flux_ratio));
         if (dissipation > 0.0) magnitude *= std::exp(-0.5 * dissipation * dx);
     }
     // The phase travels at the amplitude's own speed (amplitude dispersion).
-    const double kn =
-        in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
-            ? tabulated_amplitude_dispersed_wavenumber(in_.omega, depth, std::sqrt(std::norm(a[j])), k_[j])
-            : k_[j];
+    const double kn = in_.amplitude_dispersion && here.wet[j] && !(here.deep[j] && next.deep[j])
+                          ? tabulated_amplitude_dispersed_wavenumber(in_.omega, 0.5 * (h + next.h[j]),
+                                                                     std::sqrt(std::norm(a[j])), k_[j])
+                          : k_[j];
     return std::polar(magnitude, 0.5 * (kn - k_bar) * dx);
 }
 
@@ -418,8 +455,8 @@ void Marcher::turn_through(float here_depth, float next_depth, std::size_t j, do
                t * (static_cast<double>(next_depth) - static_cast<double>(here_depth));
     };
     for (int part = 0; part < parts; ++part) {
-        fill_point_medium(in_, depth_at(part), from_, j);
-        fill_point_medium(in_, depth_at(part + 1), to_, j);
+        fill_point_medium(deep_, depth_at(part), from_, j);
+        fill_point_medium(deep_, depth_at(part + 1), to_, j);
         k_[j] = 0.5 * (from_.k[j] + to_.k[j]);
         // half_turn takes half of the way between its media: twice, the whole piece.
         const Complex f = half_turn(from_, to_, j, k_bar, piece);
@@ -435,27 +472,31 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, std::span<co
     // The row's mean wavenumber over its water carries the fast phase: A varies slowly.
     double k_sum = 0.0;
     int wet = 0;
+    double k_before = 0.0, cg_before = 0.0, p_before = 0.0;  // the last point's: over deep water, every point's
     for (std::size_t j = 0; j < un; ++j) {
         k_[j] = 0.5 * (here.k[j] + next.k[j]);
         const double cg = 0.5 * (here.cg[j] + next.cg[j]);
-        p_[j] = in_.omega / k_[j] * cg;
+        p_[j] = k_[j] == k_before && cg == cg_before ? p_before : in_.omega / k_[j] * cg;
+        k_before = k_[j];
+        cg_before = cg;
+        p_before = p_[j];
         if (here.wet[j] && next.wet[j]) {
             k_sum += k_[j];
             ++wet;
         }
     }
-    const double k_bar = wet > 0 ? k_sum / wet : k_deep_;
+    const double k_bar = wet > 0 ? k_sum / wet : deep_.k;
     phase += k_bar * dx;
     // A_x = (i (k - k_bar) - s) A + R A, R = i / (2 k) L, L A = (p A_y)_y / p (walls at
     // the sides), split (Strang): the phase and the growth or decay taken exactly over
     // each half step, whatever the step against the wavelength or the surf zone's decay
     // length (Crank-Nicolson would turn a strong decay into a flip of sign); Crank-
     // Nicolson between for the diffraction, (1 - dx/2 R) A' = (1 + dx/2 R) A.
-    const Complex deep_turn = std::polar(1.0, 0.5 * (k_deep_ - k_bar) * dx);
+    const Complex deep_turn = std::polar(1.0, 0.5 * (deep_.k - k_bar) * dx);
     for (std::size_t j = 0; j < un; ++j) {
         const int parts = substeps(here, j, dx);
         if (parts == 1) {
-            const Complex turn = half_turn(here, next, j, k_bar, dx, &deep_turn);
+            const Complex turn = open_sea(here, next, j) ? deep_turn : half_turn(here, next, j, k_bar, dx);
             half_turn_[j] = turn;
             a[j] *= turn;
             continue;
@@ -468,23 +509,37 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, std::span<co
         half_turn_[j] = 1.0;
         turn_through(here_depths[j], next_depths[j], j, k_bar, dx, 0.0, parts);
     }
+    // Crank-Nicolson's row j: its matrix's (lower, diag, upper) and its right side's
+    // weights of A_j, A_j-1 and A_j+1, from the p's about it and k there. Over deep water
+    // every point's are the last one's: they are formed again only where those moved.
+    struct Row {
+        double p_lo = -1.0, p_hi = -1.0, p = -1.0, k = -1.0;
+        Complex lower, diag, upper, here, before, after;
+    } row;
     for (std::size_t j = 0; j < un; ++j) {
         const double p_lo = j > 0 ? 0.5 * (p_[j] + p_[j - 1]) : 0.0;
         const double p_hi = j + 1 < un ? 0.5 * (p_[j] + p_[j + 1]) : 0.0;
-        const double l_lo = p_lo / (p_[j] * dy2), l_hi = p_hi / (p_[j] * dy2), l_mid = -(l_lo + l_hi);
-        const Complex alpha(0.0, -0.25 * dx / k_[j]), beta(0.0, 0.25 * dx / k_[j]);
         if (!next.wet[j]) {
             lower_[j] = upper_[j] = 0.0;
             diag_[j] = 1.0;
             rhs_[j] = 0.0;
             continue;
         }
-        lower_[j] = alpha * l_lo;
-        upper_[j] = alpha * l_hi;
-        diag_[j] = 1.0 + alpha * l_mid;
-        Complex sum = (1.0 + beta * l_mid) * a[j];
-        if (j > 0) sum += beta * l_lo * a[j - 1];
-        if (j + 1 < un) sum += beta * l_hi * a[j + 1];
+        if (p_lo != row.p_lo || p_hi != row.p_hi || p_[j] != row.p || k_[j] != row.k) {
+            const double l_lo = p_lo / (p_[j] * dy2), l_hi = p_hi / (p_[j] * dy2), l_mid = -(l_lo + l_hi);
+            const Complex alpha(0.0, -0.25 * dx / k_[j]), beta(0.0, 0.25 * dx / k_[j]);
+            row = {p_lo,         p_hi,
+                   p_[j],        k_[j],
+                   alpha * l_lo, 1.0 + alpha * l_mid,
+                   alpha * l_hi, 1.0 + beta * l_mid,
+                   beta * l_lo,  beta * l_hi};
+        }
+        lower_[j] = row.lower;
+        upper_[j] = row.upper;
+        diag_[j] = row.diag;
+        Complex sum = row.here * a[j];
+        if (j > 0) sum += row.before * a[j - 1];
+        if (j + 1 < un) sum += row.after * a[j + 1];
         rhs_[j] = sum;
     }
     // Held: the longer march's value, turned from its common phase to this one's.
@@ -531,7 +586,7 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
     State& s = *state_;
     for (auto* v : {&s.here_depths, &s.next_depths}) v->resize(un);
     in.depth_row(0, s.here_depths);
-    fill_row_medium(in, s.here_depths, s.here);
+    fill_row_medium(s.marcher.deep_water(), s.here_depths, s.here);
     s.marcher.enter(s.here);
     if (!in.entering_amplitude.empty()) {
         std::copy(in.entering_amplitude.begin(), in.entering_amplitude.end(), s.marcher.a.begin());
@@ -572,7 +627,7 @@ bool ParabolicMarch::advance() {
     Marcher& m = s.marcher;
     if (in_.sea_height_row) in_.sea_height_row(step_, m.sea_height);
     in_.depth_row(step_ + 1, s.next_depths);
-    fill_row_medium(in_, s.next_depths, s.next);
+    fill_row_medium(m.deep_water(), s.next_depths, s.next);
     // A window's sides are held at the march it is a window of.
     const MarchColumns* held = in_.sides;
     Marcher::Sides sides;

@@ -559,11 +559,13 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             const int i = static_cast<int>(k % n), j = static_cast<int>(k / n);
             const float h = r.edit.contains(i, j) ? r.after.at(i, j) : marches->runs[l].field->depth[k];
             if (!(h > 0.0f)) return true;
-            const Wave& wave = waves[r.layer->first + w];
+            // Deep water first: it is told from the depth alone, where whether the wave
+            // reached the texel reads the texel's stored rows.
+            if (r.any_deep[w] != 0 && marched_deep_water(waves[r.layer->first + w].omega, static_cast<double>(h)))
+                return true;
             const MarchWindow& m = r.march[w];
-            const bool reached =
-                !m.value.empty() && m.window.contains(i, j) ? std::isfinite(m.at(i, j)) : r.reached_before(w, i, j, h);
-            return !reached || (r.any_deep[w] != 0 && marched_deep_water(wave.omega, static_cast<double>(h)));
+            return !(!m.value.empty() && m.window.contains(i, j) ? std::isfinite(m.at(i, j))
+                                                                 : r.reached_before(w, i, j, h));
         };
         input.stored_at = [&](std::size_t l, int i, int j) { return runs[l].layer->tiles.stored_texel(i, j); };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
