@@ -530,9 +530,8 @@ double PatchedDepths::sample(glm::dvec2 p) const {
     const auto n = static_cast<std::size_t>(f.resolution);
     // The march asks at every point of its rows, nearly all off the patch: the field's
     // depths are read there without finding each tap's texel.
-    const int ti = static_cast<int>(t.k00 % n), tj = static_cast<int>(t.k00 / n);
     const bool off_patch =
-        width <= 0 || height <= 0 || ti + 1 < i0 || ti >= i0 + width || tj + 1 < j0 || tj >= j0 + height;
+        width <= 0 || height <= 0 || t.i + 1 < i0 || t.i >= i0 + width || t.j + 1 < j0 || t.j >= j0 + height;
     auto tap = [&](std::size_t k) {
         return static_cast<double>(off_patch ? f.depth[k] : at(static_cast<int>(k % n), static_cast<int>(k / n)));
     };

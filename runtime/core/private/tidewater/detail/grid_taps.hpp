@@ -15,6 +15,7 @@ namespace tidewater::detail {
 /// The four texels around a point and their weights.
 struct GridTaps {
     std::size_t k00 = 0, k10 = 0, k01 = 0, k11 = 0;
+    int i = 0, j = 0;  ///< the first tap's texel (k00's column and row)
     double w00 = 1.0, w10 = 0.0, w01 = 0.0, w11 = 0.0;
 
     double operator()(const std::vector<float>& grid) const {
@@ -35,6 +36,8 @@ inline GridTaps grid_taps(glm::dvec2 corner, double texel, int nx, int nz, glm::
     const double fu = u - i, fv = v - j;
     const std::size_t row = static_cast<std::size_t>(nx);
     GridTaps t;
+    t.i = i;
+    t.j = j;
     t.k00 = static_cast<std::size_t>(j) * row + static_cast<std::size_t>(i);
     t.k10 = t.k00 + (nx > 1 ? 1 : 0);
     t.k01 = t.k00 + (nz > 1 ? row : 0);
