@@ -22,7 +22,10 @@ struct BackgroundBake {
     std::string stage;
 
     bool running() const { return job.valid(); }
+    /// Bakes `edited`, what the editor made of `previous`. A saved bake the scene names
+    /// describes it as it was loaded, not as edited: the edit is baked, not loaded.
     void start(Scene edited, std::shared_ptr<const Scene> previous) {
+        edited.shore.bake_folder.clear();
         fraction = 0.0;
         job = std::async(std::launch::async, [this, edited = std::move(edited), previous = std::move(previous)] {
             SceneBakeOptions o;

@@ -44,7 +44,6 @@ void Editor::panels() {
         ImGui::SliderFloat("breaking index", &breaking_index_, 0.3f, 1.2f, "%.2f");
         if (ImGui::Button("Re-bake shore") && !bake_.running()) {
             Scene edited = *scene_;
-            edited.shore.bake_folder.clear();
             edited.shore.breaking_index = breaking_index_;
             bake_.start(std::move(edited), scene_);
         }

@@ -8,11 +8,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include "tidewater/detail/image_io.hpp"
+#include "tidewater/scene.hpp"
+#include "tidewater/scene_bake.hpp"
 
 namespace tidewater {
 namespace {
@@ -273,6 +276,38 @@ TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
         << r.output;
     EXPECT_NEAR(after - before, 30.0, 0.5) << "raised by the stroke's 30 m at its centre (16-bit heightmap)";
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
+}
+
+// A scene that names its saved bake opens from it, and a brush stroke on it is baked:
+// the saved bake describes the scene as it was, not as the stroke left it.
+TEST(Editor, AStrokeOnASceneThatNamesItsSavedBakeIsBaked) {
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_editor_saved_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ifstream in(fs::path(TIDEWATER_EXAMPLES_DIR) / "scenes" / "default.json");
+    std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir / "plain.json") << json;
+    auto scene = load_scene(dir / "plain.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto baked = bake_scene(*scene);
+    ASSERT_TRUE(baked.ok()) << baked.error().message;
+    ASSERT_TRUE(save_scene_bake(dir / "bake", **baked).ok());
+    json.insert(json.find('{') + 1, "\"shore\": {\"bake\": \"bake\"},");
+    std::ofstream(dir / "saved.json") << json;
+    std::ofstream(dir / "brush.script") << "brush 640 330 120 30\n";
+    const EditorRun r = run_editor("--frames 3 --size 640x400 --scene " + (dir / "saved.json").string() + " --script " +
+                                   (dir / "brush.script").string());
+    fs::remove_all(dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    double after = 0.0, before = 0.0;
+    const auto at = r.output.find("terrain at the brush (640.0, 330.0): ");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    ASSERT_EQ(
+        std::sscanf(r.output.c_str() + at, "terrain at the brush (640.0, 330.0): %lf m, was %lf m", &after, &before), 2)
+        << r.output;
+    EXPECT_NEAR(after - before, 30.0, 0.5) << r.output;
+    EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("another terrain"), std::string::npos) << r.output;
 }
 
 // A river's discharge from the Rivers panel (scripted) is re-baked in the background.
