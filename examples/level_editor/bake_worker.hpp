@@ -23,7 +23,8 @@ struct BackgroundBake {
 
     bool running() const { return job.valid(); }
     /// Bakes `edited`, what the editor made of `previous`. A saved bake the scene names
-    /// describes it as it was loaded, not as edited: the edit is baked, not loaded.
+    /// describes it as it was loaded, not as edited: the edit is baked, not loaded. Not
+    /// while running(): the job before would be waited for and its result dropped.
     void start(Scene edited, std::shared_ptr<const Scene> previous) {
         edited.shore.bake_folder.clear();
         fraction = 0.0;

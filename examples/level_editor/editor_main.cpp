@@ -160,8 +160,6 @@ int Editor::run(const Options& options) {
         std::string step_screenshot;
         for (const ScriptLine& line : scheduled_)
             if (line.frame == i) {
-                // A scripted edit waits for the re-bake before it, as a panel waits for its bar.
-                if (bake_.running()) swap_in(bake_.job.get());
                 if (auto st = run_command(line, step_screenshot); !st) {
                     std::fprintf(stderr, "tidewater-editor: %s\n", st.error().message.c_str());
                     ok = false;

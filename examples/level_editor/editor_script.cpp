@@ -52,6 +52,9 @@ Status Editor::run_script(const std::string& path) {
 
 Status Editor::run_command(const ScriptLine& line, std::string& screenshot) {
     const std::string where = fmt::format("{}:{}", script_path_, line.number);
+    // A script's commands run in order, each on what the edits before it made, as a panel
+    // waits for its bar: a re-bake still running is finished and swapped in first.
+    if (bake_.running()) swap_in(bake_.job.get());
     return std::visit(
         Overloaded{
             [&](const ScriptCamera& c) -> Status {

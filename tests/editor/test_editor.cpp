@@ -317,6 +317,20 @@ TEST(Editor, AStrokeOnASceneThatNamesItsSavedBakeIsBaked) {
     EXPECT_EQ(r.output.find("another terrain"), std::string::npos) << r.output;
 }
 
+// Two edits at a script's start: the second is made on what the first's re-bake left, so
+// the stroke stays (the river's re-bake started from the scene before it dropped it).
+TEST(Editor, AScriptsEditsEachBuildOnTheOneBefore) {
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_two_edits_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << "brush 640 330 120 30\nriver brook discharge 20\n";
+    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
+    fs::remove(script);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::optional<BrushedGround> g = brushed_ground(r);
+    ASSERT_TRUE(g) << r.output;
+    EXPECT_NEAR(g->after - g->before, 30.0, 0.5) << r.output;
+}
+
 // A river's discharge from the Rivers panel (scripted) is re-baked in the background.
 TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
     const fs::path script =
