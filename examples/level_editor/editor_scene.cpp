@@ -17,6 +17,12 @@ Status Editor::load(const std::string& path) {
     options.keep_marches = true;
     auto baked = bake_scene(*parsed, options);
     if (!baked) return baked.error();
+    // A re-bake still running, and a stroke or body edit not yet baked, are edits of the
+    // scene being closed: dropped, not made over the one opened.
+    if (bake_.running()) bake_.job.wait();
+    (void)bake_.ready();
+    stroke_.reset();
+    body_edit_.reset();
     scene_ = std::move(baked).value();
     floaters_.reset();
     refloat();
