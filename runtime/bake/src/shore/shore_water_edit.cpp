@@ -564,8 +564,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
             if (r.any_deep[w] != 0 && marched_deep_water(waves[r.layer->first + w].omega, static_cast<double>(h)))
                 return true;
             const MarchWindow& m = r.march[w];
-            return !(!m.value.empty() && m.window.contains(i, j) ? std::isfinite(m.at(i, j))
-                                                                 : r.reached_before(w, i, j, h));
+            const bool reached =
+                !m.value.empty() && m.window.contains(i, j) ? std::isfinite(m.at(i, j)) : r.reached_before(w, i, j, h);
+            return !reached;
         };
         input.stored_at = [&](std::size_t l, int i, int j) { return runs[l].layer->tiles.stored_texel(i, j); };
         march_edit = remarch_marches(*marches, waves, reach, input, shoreline_ptr, field, threads);
