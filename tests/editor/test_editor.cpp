@@ -43,6 +43,17 @@ EditorRun run_editor(const std::string& args) {
     return r;
 }
 
+/// Runs the editor for three 640x400 frames (after `args`) on a script of `text`, written
+/// to a temporary file named for `tag`.
+EditorRun run_script(const std::string& tag, const std::string& text, const std::string& args = "") {
+    const fs::path script =
+        fs::temp_directory_path() / ("tidewater_editor_" + tag + "_" + std::to_string(::getpid()) + ".script");
+    std::ofstream(script) << text;
+    const EditorRun r = run_editor(args + " --frames 3 --size 640x400 --script " + script.string());
+    fs::remove(script);
+    return r;
+}
+
 TEST(Editor, DrawsWaterTerrainAndItsPanelsUnderValidation) {
     const fs::path shot = fs::temp_directory_path() / ("tidewater_editor_" + std::to_string(::getpid()) + ".png");
     const EditorRun r = run_editor("--frames 6 --size 1024x640 --screenshot " + shot.string());
@@ -277,11 +288,7 @@ std::optional<BrushedGround> brushed_ground(const EditorRun& r) {
 
 // A brush stroke raises the ground and is re-baked in the background.
 TEST(Editor, ABrushStrokeRaisesTheGroundAndIsReBaked) {
-    const fs::path script =
-        fs::temp_directory_path() / ("tidewater_editor_brush_" + std::to_string(::getpid()) + ".script");
-    std::ofstream(script) << "brush 640 330 120 30\n";
-    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
-    fs::remove(script);
+    const EditorRun r = run_script("brush", "brush 640 330 120 30\n");
     ASSERT_EQ(r.status, 0) << r.output;
     const std::optional<BrushedGround> g = brushed_ground(r);
     ASSERT_TRUE(g) << r.output;
@@ -305,9 +312,7 @@ TEST(Editor, AStrokeOnASceneThatNamesItsSavedBakeIsBaked) {
     ASSERT_TRUE(save_scene_bake(dir / "bake", **baked).ok());
     json.insert(json.find('{') + 1, "\"shore\": {\"bake\": \"bake\"},");
     std::ofstream(dir / "saved.json") << json;
-    std::ofstream(dir / "brush.script") << "brush 640 330 120 30\n";
-    const EditorRun r = run_editor("--frames 3 --size 640x400 --scene " + (dir / "saved.json").string() + " --script " +
-                                   (dir / "brush.script").string());
+    const EditorRun r = run_script("saved_brush", "brush 640 330 120 30\n", "--scene " + (dir / "saved.json").string());
     fs::remove_all(dir);
     ASSERT_EQ(r.status, 0) << r.output;
     const std::optional<BrushedGround> g = brushed_ground(r);
@@ -320,11 +325,7 @@ TEST(Editor, AStrokeOnASceneThatNamesItsSavedBakeIsBaked) {
 // Two edits at a script's start: the second is made on what the first's re-bake left, so
 // the stroke stays (the river's re-bake started from the scene before it dropped it).
 TEST(Editor, AScriptsEditsEachBuildOnTheOneBefore) {
-    const fs::path script =
-        fs::temp_directory_path() / ("tidewater_editor_two_edits_" + std::to_string(::getpid()) + ".script");
-    std::ofstream(script) << "brush 640 330 120 30\nriver brook discharge 20\n";
-    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
-    fs::remove(script);
+    const EditorRun r = run_script("two_edits", "brush 640 330 120 30\nriver brook discharge 20\n");
     ASSERT_EQ(r.status, 0) << r.output;
     const std::optional<BrushedGround> g = brushed_ground(r);
     ASSERT_TRUE(g) << r.output;
@@ -333,11 +334,7 @@ TEST(Editor, AScriptsEditsEachBuildOnTheOneBefore) {
 
 // A river's discharge from the Rivers panel (scripted) is re-baked in the background.
 TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
-    const fs::path script =
-        fs::temp_directory_path() / ("tidewater_editor_river_" + std::to_string(::getpid()) + ".script");
-    std::ofstream(script) << "river brook discharge 20\n";
-    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
-    fs::remove(script);
+    const EditorRun r = run_script("river", "river brook discharge 20\n");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
 }
@@ -346,11 +343,7 @@ TEST(Editor, ARiversDischargeIsEditedAndReBaked) {
 // water: the CPU's answer at its centre, with the same volume, is dry, and the frames are
 // drawn with it under the validation layer.
 TEST(Editor, AClipSpherePlacedInTheEditorLeavesTheSurfaceDry) {
-    const fs::path script =
-        fs::temp_directory_path() / ("tidewater_editor_clip_" + std::to_string(::getpid()) + ".script");
-    std::ofstream(script) << "camera 930 40 260 900 0 300\nclip 900 0 300 8\n";
-    const EditorRun r = run_editor("--frames 3 --size 640x400 --script " + script.string());
-    fs::remove(script);
+    const EditorRun r = run_script("clip", "camera 930 40 260 900 0 300\nclip 900 0 300 8\n");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("clip volume 1: sphere at (900.0, 0.0, 300.0) radius 8.0 m; the surface there: wet 0"),
