@@ -233,8 +233,16 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 /// quanta of 2^-24 of the sea's energy: integers, so that the sums do not depend on the
 /// order the waves finish in.
 struct RunDiffraction {
-    RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum)
-        : marched(stored_slots, waves), energy(resolution, quantum), kept(waves), spacing(waves, 0.0) {}
+    RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum, bool kept_for_edits)
+        : for_edits(kept_for_edits),
+          marched(stored_slots, waves),
+          energy(resolution, quantum),
+          kept(waves),
+          spacing(waves, 0.0) {}
+    /// Whether the record outlives the bake (ShoreWaveOptions::keep_marches): an edit reads
+    /// where each march reached and broke. The bake's cap alone reads only where the march
+    /// has a share, so without it no more is kept (on a 16 km world a tenth of the blocks).
+    bool for_edits;
     detail::MarchedAmplitudes marched;
     detail::MarchedEnergy energy;
     std::mutex lock;  ///< held while a wave's energy is added
@@ -270,7 +278,8 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
             const bool rays = v.kx != 0.0f || v.kz != 0.0f;
             const std::uint8_t share = rays ? detail::held_share(wave, v.kx, v.kz, diffracted->spacing) : 0;
             diffracted->held[k] = rays ? share : 255;
-            record->marched.set(at, w, share, diffracted->amplitude[k], true, diffracted->broken[k] != 0);
+            if (share != 0 || record->for_edits)
+                record->marched.set(at, w, share, diffracted->amplitude[k], true, diffracted->broken[k] != 0);
         }
         t[w] = v.residual;
         t[nw + w] = v.amplitude;
@@ -282,15 +291,37 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
 /// One run of waves being baked: its waves, its grid, and its tiles.
 struct RunBake {
     std::size_t first = 0, count = 0;
-    std::shared_ptr<const ShoreField> field;  ///< its grid: the model's (not owned), or its own
+    /// Its grid: the model's (not owned), or its own; once its waves are marched, a coarse
+    /// grid is kept whole only for edits (stored_depth holds what the cap reads).
+    std::shared_ptr<const ShoreField> field;
     TilePlan plan;
     std::unique_ptr<RunDiffraction> diffraction;  ///< with ShoreWaveOptions::diffraction
+    /// A coarse run's depth at its stored texels (stored slot * kSlotTexels + texel), once
+    /// its grid is let go; empty while `field` holds it.
+    std::vector<float> stored_depth;
+
+    /// The depth (m) at grid texel k, stored texel `at`, after the march.
+    double depth_at(std::size_t k, std::size_t at) const {
+        return static_cast<double>(stored_depth.empty() ? field->depth[k] : stored_depth[at]);
+    }
 };
 
 /// A coarse run's grid once its waves are marched, before the shared fields' slots are
-/// made: only its depth, which breaking reads (the model's grid is kept whole).
-void keep_depth_only(RunBake& run, const std::shared_ptr<const ShoreField>& model) {
+/// made: only the depth, which breaking reads, at its stored texels (on a large world a
+/// fine coarse run stores a few of its grid's tiles), or over the grid when `for_edits`
+/// (an edit's re-bake reads it). The model's grid is kept whole.
+void keep_depth_only(RunBake& run, const std::shared_ptr<const ShoreField>& model, bool for_edits) {
     if (run.field == model) return;
+    if (!for_edits) {
+        const std::vector<std::size_t>& tiles = run.plan.tile;
+        run.stored_depth.resize(tiles.size() * ShoreTiles::kSlotTexels);
+        for (std::size_t s = 0; s < tiles.size(); ++s)
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels; ++k)
+                run.stored_depth[s * ShoreTiles::kSlotTexels + k] =
+                    run.field->depth[run.plan.tiles.grid_index(tiles[s], k)];
+        run.field = nullptr;
+        return;
+    }
     auto depth_only = std::make_shared<ShoreField>();
     depth_only->corner = run.field->corner;
     depth_only->texel = run.field->texel;
@@ -347,25 +378,38 @@ void shared_rows(std::span<const Wave> waves, double breaking_index, const Shore
 /// Caps every run's amplitudes where the local height exceeds breaking_index * h / 2 of
 /// amplitude: all waves scaled down together (each run on its own grid; no wave on land).
 void cap_runs(std::span<const Wave> waves, double breaking_index, std::vector<RunBake>& runs, unsigned threads) {
-    std::vector<std::vector<float>> ratios(runs.size());
+    // Every run's ratios are found before any run is capped (each reads all the runs). Only
+    // a slot where the cap bites (a ratio over 1) keeps its ratios: these are made while
+    // every run's and the shared layer's slots are held, and the surf zone is a small part
+    // of a large world's stored tiles.
+    using SlotRatios = std::unique_ptr<float[]>;
+    std::vector<std::vector<SlotRatios>> over(runs.size());
     const std::vector<RunTilesView> views = run_views(runs);
     for (std::size_t r = 0; r < runs.size(); ++r) {
         RunBake& run = runs[r];
-        const int n = run.field->resolution;
-        ratios[r].assign(run.plan.tile.size() * ShoreTiles::kSlotTexels, 1.0f);
+        const int n = run.plan.grid.resolution;
+        over[r].resize(run.plan.tile.size());
         each_stored_texel(run.plan, threads, [&](float*, std::size_t k, std::size_t at) {
-            const double h = static_cast<double>(run.field->depth[k]);
+            const double h = run.depth_at(k, at);
             if (h <= 0.0) return;
             const int i = static_cast<int>(k % static_cast<std::size_t>(n)),
                       j = static_cast<int>(k / static_cast<std::size_t>(n));
-            ratios[r][at] = static_cast<float>(detail::cap_ratio(waves, views, run.plan.grid, i, j, h, breaking_index));
+            const double ratio = detail::cap_ratio(waves, views, run.plan.grid, i, j, h, breaking_index);
+            if (!(ratio > 1.0)) return;
+            SlotRatios& slot = over[r][at / ShoreTiles::kSlotTexels];  // each slot has one worker
+            if (!slot) {
+                slot = std::make_unique<float[]>(ShoreTiles::kSlotTexels);
+                std::fill_n(slot.get(), ShoreTiles::kSlotTexels, 1.0f);
+            }
+            slot[at % ShoreTiles::kSlotTexels] = static_cast<float>(ratio);
         });
     }
     for (std::size_t r = 0; r < runs.size(); ++r) {
         const std::size_t nw = runs[r].count;
         each_stored_texel(runs[r].plan, threads, [&](float* t, std::size_t k, std::size_t at) {
-            const double h = static_cast<double>(runs[r].field->depth[k]);
-            const double ratio = static_cast<double>(ratios[r][at]);
+            const double h = runs[r].depth_at(k, at);
+            const float* slot = over[r][at / ShoreTiles::kSlotTexels].get();
+            const double ratio = slot ? static_cast<double>(slot[at % ShoreTiles::kSlotTexels]) : 1.0;
             const RunDiffraction* d = runs[r].diffraction.get();
             for (std::size_t w = 0; w < nw; ++w) {
                 const float rays = detail::capped_amplitude(t[nw + w], h, ratio);
@@ -489,10 +533,11 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         std::vector<glm::dvec2> open;
         for (const Wave& w : waves) open.push_back(w.k * glm::dvec2(w.dir_x, w.dir_z));
         const detail::SeaState sea = detail::sea_state(waves);
+        const bool keeps_marches = options.keep_marches && options.diffraction;
         // Each run on its own grid: the model's, or every scale-th texel's size from the same corner.
         std::vector<RunBake> runs;
         for (const Run& r : plan_runs(waves, field->texel, field->resolution, options.texels_per_wavelength)) {
-            RunBake run{r.first, r.count, nullptr, {}, nullptr};
+            RunBake run{r.first, r.count, nullptr, {}, nullptr, {}};
             if (r.scale == 1) {
                 run.field = field;
             } else {
@@ -505,8 +550,9 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                                   std::span<const glm::dvec2>(open).subspan(r.first, r.count), *run.field,
                                   options.breaking_index, options.store_every_tile, options.threads);
             if (options.diffraction) {
-                run.diffraction = std::make_unique<RunDiffraction>(run.plan.tile.size(), r.count, run.field->resolution,
-                                                                   std::ldexp(std::max(sea.energy, 1e-30), -24));
+                run.diffraction =
+                    std::make_unique<RunDiffraction>(run.plan.tile.size(), r.count, run.field->resolution,
+                                                     std::ldexp(std::max(sea.energy, 1e-30), -24), keeps_marches);
             }
             runs.push_back(std::move(run));
         }
@@ -569,7 +615,7 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
                           run.diffraction.get());
                 if (diffracted) record_energy(waves[w], *diffracted, *run.diffraction);
             }
-            if (--waves_left[run_of[w]] == 0) keep_depth_only(run, field);
+            if (--waves_left[run_of[w]] == 0) keep_depth_only(run, field, keeps_marches);
             const std::size_t done = ++waves_done;
             if (options.progress) {
                 const std::lock_guard<std::mutex> lock(progress_lock);
@@ -587,14 +633,13 @@ Result<std::shared_ptr<const ShoreWaves>> bake_shore_waves(const WaveSet& set, c
         TilePlan shared = plan_tiles(detail::open_sea_test(waves, 0, nw), {}, *field, options.breaking_index,
                                      options.store_every_tile, options.threads);
         make_slots(shared, {});
-        const bool keep_marches = options.keep_marches && options.diffraction;
-        detail::CapRatios ratios(keep_marches ? shared.tile.size() : 0);
+        detail::CapRatios ratios(keeps_marches ? shared.tile.size() : 0);
         shared_rows(waves, options.breaking_index, *field, runs, shared, options.threads,
-                    keep_marches ? &ratios : nullptr);
+                    keeps_marches ? &ratios : nullptr);
         cap_runs(waves, options.breaking_index, runs, options.threads);
         for (RunBake& r : runs)
             if (r.plan.grid.texel != field->texel) extend_onto_land(waves, r, options.threads);
-        if (keep_marches) {
+        if (keeps_marches) {
             auto marches = std::make_shared<detail::ShoreMarches>();
             marches->sea = sea;
             marches->ratios = std::move(ratios);
