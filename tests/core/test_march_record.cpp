@@ -50,6 +50,32 @@ TEST(MarchRecord, AmplitudesKeepHalfPrecisionPerWaveAndNothingWhereTheMarchDidNo
     EXPECT_FALSE(record.broken(texel, 1));
 }
 
+TEST(MarchRecord, ARecordForTheCapAloneKeepsSharesAndAmplitudesOnly) {
+    // A bake that keeps no marches for edits reads only the shares and amplitudes: its
+    // blocks are three quarters of an edit's, and where the march reached and broke is not
+    // kept.
+    MarchedAmplitudes for_edits(2, 1), for_cap(2, 1, false);
+    EXPECT_EQ(for_cap.bytes(), 0u);
+    for (MarchedAmplitudes* record : {&for_edits, &for_cap}) {
+        record->set(5, 0, 255, 1.0f, true, true);
+        record->set(ShoreTiles::kSlotTexels + 5, 0, 0, 0.5f, false);  // not reached: no block
+    }
+    EXPECT_EQ(for_cap.share(5, 0), 255);
+    EXPECT_EQ(for_cap.amplitude(5, 0), 1.0f);
+    EXPECT_FALSE(for_cap.reached(5, 0));
+    EXPECT_FALSE(for_cap.broken(5, 0));
+    EXPECT_TRUE(for_edits.reached(5, 0));
+    EXPECT_TRUE(for_edits.broken(5, 0));
+    EXPECT_LE(for_cap.bytes(), 3 * ShoreTiles::kSlotTexels + 1);  // a byte of padding at most
+    EXPECT_EQ(for_edits.bytes() - for_cap.bytes(), ShoreTiles::kSlotTexels);
+    // A copy writes its own blocks, flags included.
+    MarchedAmplitudes copy = for_edits;
+    copy.set(5, 0, 10, 2.0f, true, false);
+    EXPECT_TRUE(for_edits.broken(5, 0));
+    EXPECT_FALSE(copy.broken(5, 0));
+    EXPECT_EQ(for_edits.share(5, 0), 255);
+}
+
 TEST(MarchRecord, ACopySharesItsBlocksUntilWritten) {
     MarchedAmplitudes record(2, 1);
     record.set(5, 0, 255, 1.0f, true, true);

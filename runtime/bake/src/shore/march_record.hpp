@@ -144,29 +144,31 @@ inline DiffractedEnergy marched_energy_at(std::span<const EnergyView> runs, cons
 
 /// Per stored texel of a run's tiles and wave of the run, the march's share of the wave's
 /// amplitude (0..255; 0 where the march did not hold), its amplitude factor in half
-/// precision (2^-11 relative), whether the march reached the texel (its share may still
-/// be 0, by the wave's angle) and whether the wave is broken there, in blocks of a stored
-/// slot and a wave. Threading: distinct waves may be set from distinct threads; the reads
-/// once every set is done.
+/// precision (2^-11 relative) and, for edits (`reach`), whether the march reached the
+/// texel (its share may still be 0, by the wave's angle) and whether the wave is broken
+/// there, in blocks of a stored slot and a wave. The bake's cap alone reads the shares and
+/// amplitudes: a record made without `reach` keeps no more (reached() and broken() are then
+/// false). Threading: distinct waves may be set from distinct threads; the reads once every
+/// set is done.
 class MarchedAmplitudes {
   public:
-    MarchedAmplitudes(std::size_t stored_slots, std::size_t waves) : waves_(waves), blocks_(stored_slots * waves) {}
+    MarchedAmplitudes(std::size_t stored_slots, std::size_t waves, bool reach = true)
+        : waves_(waves), blocks_(stored_slots * waves), flags_(reach ? stored_slots * waves : 0) {}
 
     /// Stored texel `at` (stored slot * kSlotTexels + texel in the slot), wave w. Nothing
     /// is kept where the march did not reach.
     void set(std::size_t at, std::size_t w, std::uint8_t share, float amplitude, bool reached = true,
              bool broken = false) {
-        std::shared_ptr<Block>& block = blocks_[block_of(at, w)];
-        if (!block) {
-            if (!reached) return;
-            block = std::make_shared<Block>();
-        } else if (block.use_count() > 1) {
-            block = std::make_shared<Block>(*block);
-        }
+        const std::size_t b = block_of(at, w);
+        std::shared_ptr<Block>& block = blocks_[b];
+        if (!block && !reached) return;
+        Block& values = writable(block);
         const std::size_t k = at % ShoreTiles::kSlotTexels;
-        block->share[k] = reached ? share : 0;
-        block->amplitude[k] = glm::packHalf1x16(reached ? amplitude : 0.0f);
-        block->flags[k] = static_cast<std::uint8_t>((reached ? kReached : 0) | (reached && broken ? kBroken : 0));
+        values.share[k] = reached ? share : 0;
+        values.amplitude[k] = glm::packHalf1x16(reached ? amplitude : 0.0f);
+        if (!flags_.empty())
+            writable(flags_[b])[k] =
+                static_cast<std::uint8_t>((reached ? kReached : 0) | (reached && broken ? kBroken : 0));
     }
     std::uint8_t share(std::size_t at, std::size_t w) const {
         const Block* block = blocks_[block_of(at, w)].get();
@@ -188,20 +190,41 @@ class MarchedAmplitudes {
     bool reached(std::size_t at, std::size_t w) const { return (flags(at, w) & kReached) != 0; }
     bool broken(std::size_t at, std::size_t w) const { return (flags(at, w) & kBroken) != 0; }
 
+    /// Bytes held by the blocks made so far.
+    std::size_t bytes() const {
+        auto made = [](const auto& blocks) {
+            return static_cast<std::size_t>(
+                std::count_if(blocks.begin(), blocks.end(), [](const auto& b) { return b != nullptr; }));
+        };
+        return sizeof(Block) * made(blocks_) + sizeof(Flags) * made(flags_);
+    }
+
   private:
     static constexpr std::uint8_t kReached = 1, kBroken = 2;
     struct Block {
-        std::array<std::uint8_t, ShoreTiles::kSlotTexels> share{}, flags{};
+        std::array<std::uint8_t, ShoreTiles::kSlotTexels> share{};
         std::array<std::uint16_t, ShoreTiles::kSlotTexels> amplitude{};
     };
+    using Flags = std::array<std::uint8_t, ShoreTiles::kSlotTexels>;
+    /// The block to write: made, or copied first when a copy of the record shares it.
+    template <typename T>
+    static T& writable(std::shared_ptr<T>& block) {
+        if (!block)
+            block = std::make_shared<T>();
+        else if (block.use_count() > 1)
+            block = std::make_shared<T>(*block);
+        return *block;
+    }
     std::uint8_t flags(std::size_t at, std::size_t w) const {
-        const Block* block = blocks_[block_of(at, w)].get();
-        return block ? block->flags[at % ShoreTiles::kSlotTexels] : 0;
+        if (flags_.empty()) return 0;
+        const Flags* block = flags_[block_of(at, w)].get();
+        return block ? (*block)[at % ShoreTiles::kSlotTexels] : 0;
     }
     std::size_t block_of(std::size_t at, std::size_t w) const { return (at / ShoreTiles::kSlotTexels) * waves_ + w; }
 
     std::size_t waves_;
     std::vector<std::shared_ptr<Block>> blocks_;
+    std::vector<std::shared_ptr<Flags>> flags_;  ///< with `reach`, beside blocks_
 };
 
 /// A wave's amplitude factor at a texel with the march's `march` blended in at `share`

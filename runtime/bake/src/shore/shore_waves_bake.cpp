@@ -235,13 +235,14 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 struct RunDiffraction {
     RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum, bool kept_for_edits)
         : for_edits(kept_for_edits),
-          marched(stored_slots, waves),
+          marched(stored_slots, waves, kept_for_edits),
           energy(resolution, quantum),
           kept(waves),
           spacing(waves, 0.0) {}
     /// Whether the record outlives the bake (ShoreWaveOptions::keep_marches): an edit reads
-    /// where each march reached and broke. The bake's cap alone reads only where the march
-    /// has a share, so without it no more is kept (on a 16 km world a tenth of the blocks).
+    /// where each march reached and broke. The bake's cap alone reads the share and the
+    /// amplitude where the march has a share, so without it no more is kept (on a 16 km
+    /// world a tenth of the blocks, and a quarter of each).
     bool for_edits;
     detail::MarchedAmplitudes marched;
     detail::MarchedEnergy energy;
