@@ -333,8 +333,25 @@ class Marcher {
                  std::span<const float> next_depths, double dx, const Sides* sides = nullptr);
 
     const DeepWater& deep_water() const { return deep_; }
-    /// The sea's rms height along the row the next step leaves (empty: none given).
+    /// Marks in `sea_asked` the points whose turns this step (from `here` to `next`, dx)
+    /// read the sea's height: all but those in deep water, not broken, in one substep, that
+    /// neither break nor shoal nonlinearly at `bound` (m) or at their own height, the most
+    /// their height can be (open_sea holds there, whatever the sea's height under it).
+    void ask_sea_height(const RowMedium& here, const RowMedium& next, double dx, double bound) {
+        for (std::size_t j = 0; j < n_; ++j) {
+            bool open = here.deep[j] && next.deep[j] && !broken[j] && substeps(here, j, dx) == 1;
+            if (open) {
+                const double highest = std::max(bound, own_height(j));
+                open = !(in_.breaking && here.wet[j] && highest > lowest_breaking_ * here.h[j]) &&
+                       !shoals_nonlinearly(here, next, j, highest);
+            }
+            sea_asked[j] = open ? 0 : 1;
+        }
+    }
+    /// The sea's rms height along the row the next step leaves (empty: none given), read
+    /// where `sea_asked` marks.
     std::vector<float> sea_height;
+    std::vector<char> sea_asked;
     std::vector<Complex> a;
     std::vector<char> broken;
     /// The phase common to the row (the rows' mean wavenumbers over water, integrated):
@@ -344,9 +361,10 @@ class Marcher {
   private:
     /// The height point j breaks and shoals at (m): the sea's where given, else its own.
     double height_at(std::size_t j) const {
-        return !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j])
-                                                           : 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component;
+        return !sea_height.empty() && sea_height[j] > 0.0f ? static_cast<double>(sea_height[j]) : own_height(j);
     }
+    /// Point j's own estimate of the sea's height: the component's times sea_over_component.
+    double own_height(std::size_t j) const { return 2.0 * std::sqrt(std::norm(a[j])) * in_.sea_over_component; }
     /// Ursell's number g H T^2 / h^2 of a wave `height` high between depths h and h_next.
     double ursell(double h, double h_next, double height) const {
         const double depth = 0.5 * (h + h_next);
@@ -496,7 +514,8 @@ void Marcher::advance(const RowMedium& here, const RowMedium& next, std::span<co
     for (std::size_t j = 0; j < un; ++j) {
         const int parts = substeps(here, j, dx);
         if (parts == 1) {
-            const Complex turn = open_sea(here, next, j) ? deep_turn : half_turn(here, next, j, k_bar, dx);
+            const bool open = (!sea_height.empty() && sea_asked[j] == 0) || open_sea(here, next, j);
+            const Complex turn = open ? deep_turn : half_turn(here, next, j, k_bar, dx);
             half_turn_[j] = turn;
             a[j] *= turn;
             continue;
@@ -593,7 +612,10 @@ ParabolicMarch::ParabolicMarch(const ParabolicInput& in) : in_(in) {
         std::copy(in.entering_broken.begin(), in.entering_broken.end(), s.marcher.broken.begin());
         s.marcher.phase = in.entering_phase;
     }
-    if (in.sea_height_row) s.marcher.sea_height.resize(un);
+    if (in.sea_height_row) {
+        s.marcher.sea_height.resize(un);
+        s.marcher.sea_asked.resize(un);
+    }
     if (MarchColumns* c = in.keep_columns) {
         c->count = (un - 1) / static_cast<std::size_t>(c->every) + 1;
         keep_columns();
@@ -625,9 +647,12 @@ bool ParabolicMarch::advance() {
     if (!state_ || step_ + 1 >= in_.grid.steps) return false;
     State& s = *state_;
     Marcher& m = s.marcher;
-    if (in_.sea_height_row) in_.sea_height_row(step_, m.sea_height);
     in_.depth_row(step_ + 1, s.next_depths);
     fill_row_medium(m.deep_water(), s.next_depths, s.next);
+    if (in_.sea_height_row) {
+        m.ask_sea_height(s.here, s.next, in_.grid.dx, in_.sea_height_bound);
+        in_.sea_height_row(step_, m.sea_height, m.sea_asked);
+    }
     // A window's sides are held at the march it is a window of.
     const MarchColumns* held = in_.sides;
     Marcher::Sides sides;

@@ -15,6 +15,7 @@
 #include <complex>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -74,10 +75,15 @@ struct ParabolicInput {
     /// (Weggel's onset, Dally's decay).
     bool random_sea = false;
     /// Where the sea has been marched as a whole (march_sea), its rms height there (m; <= 0
-    /// where it was not: the component's height times sea_over_component stands in), `across`
-    /// values a row, called once a row, rows in order: every component breaks and shoals
-    /// nonlinearly at the sea's own height, not at its own estimate of it.
-    std::function<void(int step, std::span<float> height)> sea_height_row;
+    /// where it was not: the component's height times sea_over_component stands in), at the
+    /// points of the row that `asked` marks (the others are not read), called once a row,
+    /// rows in order: every component breaks and shoals nonlinearly at the sea's own height,
+    /// not at its own estimate of it.
+    std::function<void(int step, std::span<float> height, std::span<const char> asked)> sea_height_row;
+    /// No height sea_height_row gives is over this (m). A point in deep water that neither
+    /// breaks nor shoals nonlinearly at this height is the open sea's whatever the sea's
+    /// height there: its height is not asked (most of a march's points).
+    double sea_height_bound = std::numeric_limits<double>::infinity();
     /// Where given (`across` values each), the march starts on its first row from this
     /// state instead of the incident wave, carrying `entering_phase` (MarchColumns): a
     /// march taken up again from a row it kept.

@@ -161,13 +161,17 @@ ParabolicInput march_input(const Wave& wave, const SeaState& sea, const MarchFra
     in.sea_over_component = std::sqrt(sea.energy) / wave.amplitude;
     in.sea_period = sea.mean_period;
     in.random_sea = sea.components > 1;
-    if (in.random_sea && sea_height != nullptr)
-        in.sea_height_row = [sea_height, frame, x_start, y_first](int step, std::span<float> height) {
+    if (in.random_sea && sea_height != nullptr) {
+        in.sea_height_row = [sea_height, frame, x_start, y_first](int step, std::span<float> height,
+                                                                  std::span<const char> asked) {
             const double x = x_start + step * frame.spacing;
             for (std::size_t j = 0; j < height.size(); ++j)
-                height[j] = static_cast<float>(
-                    sea_height->at(frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
+                if (asked[j])
+                    height[j] = static_cast<float>(
+                        sea_height->at(frame.world(x, y_first + static_cast<double>(j) * frame.spacing)));
         };
+        in.sea_height_bound = sea_height->highest;
+    }
     return in;
 }
 
@@ -579,7 +583,7 @@ SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::share
     out.height.assign(marched.amplitude.size(), 0.0f);
     for (std::size_t k = 0; k < out.height.size(); ++k)
         if (marched.share[k] > 0)
-            out.height[k] = static_cast<float>(2.0 * whole->amplitude * static_cast<double>(marched.amplitude[k]));
+            out.set(k, static_cast<float>(2.0 * whole->amplitude * static_cast<double>(marched.amplitude[k])));
     return out;
 }
 

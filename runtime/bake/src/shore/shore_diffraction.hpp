@@ -59,9 +59,18 @@ struct DiffractedWave {
 /// turned with its own period and direction, and the spectrum as a whole broke too little.
 struct SeaHeight {
     std::shared_ptr<const ShoreField> field;
+    /// Per texel of the field (m; 0 where the sea's march left none): written through set().
     std::vector<float> height;
+    /// No height `height` holds is over this (m): the most set() was given (at()'s means of
+    /// them, rounded to float as a march reads them, are not either).
+    double highest = 0.0;
     /// At a world point: bilinear over the texels that have a height, 0 where none has.
     double at(glm::dvec2 p) const;
+    /// Texel k's height (m).
+    void set(std::size_t k, float h) {
+        height[k] = h;
+        highest = std::max(highest, static_cast<double>(h));
+    }
 };
 SeaHeight march_sea(std::span<const Wave> waves, const SeaState& sea, std::shared_ptr<const ShoreField> field,
                     KeptMarch* kept = nullptr);

@@ -136,10 +136,10 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
                 component_reach.hi = glm::max(component_reach.hi, p + field.texel);
             }
             for (std::size_t c = 0; c < change.texels.size(); ++c)
-                after.height.height[change.texels[c]] =
-                    change.share[c] > 0
-                        ? static_cast<float>(2.0 * sm.whole.amplitude * static_cast<double>(change.amplitude[c]))
-                        : 0.0f;
+                after.height.set(change.texels[c], change.share[c] > 0
+                                                       ? static_cast<float>(2.0 * sm.whole.amplitude *
+                                                                            static_cast<double>(change.amplitude[c]))
+                                                       : 0.0f);
             after.kept = std::move(kept);
             sea_moved = !change.texels.empty();
         }
