@@ -298,12 +298,12 @@ struct RunBake {
     TilePlan plan;
     std::unique_ptr<RunDiffraction> diffraction;  ///< with ShoreWaveOptions::diffraction
     /// A coarse run's depth at its stored texels (stored slot * kSlotTexels + texel), once
-    /// its grid is let go; empty while `field` holds it.
+    /// its grid is let go (`field` null).
     std::vector<float> stored_depth;
 
     /// The depth (m) at grid texel k, stored texel `at`, after the march.
     double depth_at(std::size_t k, std::size_t at) const {
-        return static_cast<double>(stored_depth.empty() ? field->depth[k] : stored_depth[at]);
+        return static_cast<double>(field ? field->depth[k] : stored_depth[at]);
     }
 };
 
