@@ -56,6 +56,8 @@ TEST(MarchRecord, ARecordForTheCapAloneKeepsSharesAndAmplitudesOnly) {
     // kept.
     MarchedAmplitudes for_edits(2, 1), for_cap(2, 1, false);
     EXPECT_EQ(for_cap.bytes(), 0u);
+    EXPECT_TRUE(for_edits.keeps_reach());
+    EXPECT_FALSE(for_cap.keeps_reach());
     for (MarchedAmplitudes* record : {&for_edits, &for_cap}) {
         record->set(5, 0, 255, 1.0f, true, true);
         record->set(ShoreTiles::kSlotTexels + 5, 0, 0, 0.5f, false);  // not reached: no block

@@ -189,6 +189,9 @@ class MarchedAmplitudes {
     }
     bool reached(std::size_t at, std::size_t w) const { return (flags(at, w) & kReached) != 0; }
     bool broken(std::size_t at, std::size_t w) const { return (flags(at, w) & kBroken) != 0; }
+    /// Whether the record keeps where the march reached and broke (made with `reach`): one
+    /// an edit reads, which keeps a block wherever the march reached, share or none.
+    bool keeps_reach() const { return !flags_.empty(); }
 
     /// Bytes held by the blocks made so far.
     std::size_t bytes() const {

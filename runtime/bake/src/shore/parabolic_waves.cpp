@@ -339,12 +339,8 @@ class Marcher {
     /// their height can be (open_sea holds there, whatever the sea's height under it).
     void ask_sea_height(const RowMedium& here, const RowMedium& next, double dx, double bound) {
         for (std::size_t j = 0; j < n_; ++j) {
-            bool open = here.deep[j] && next.deep[j] && !broken[j] && substeps(here, j, dx) == 1;
-            if (open) {
-                const double highest = std::max(bound, own_height(j));
-                open = !(in_.breaking && here.wet[j] && highest > lowest_breaking_ * here.h[j]) &&
-                       !shoals_nonlinearly(here, next, j, highest);
-            }
+            const bool open = deep_and_whole(here, next, j) && substeps(here, j, dx) == 1 &&
+                              linear_and_unbroken(here, next, j, std::max(bound, own_height(j)));
             sea_asked[j] = open ? 0 : 1;
         }
     }
@@ -379,8 +375,15 @@ class Marcher {
     /// to break and shoaling linearly, its group velocity does not change (no growth) and
     /// its phase is the deep-water one. Most of a march's points: the cheap tests first.
     bool open_sea(const RowMedium& here, const RowMedium& next, std::size_t j) const {
-        if (!here.deep[j] || !next.deep[j] || broken[j]) return false;
-        const double height = height_at(j);
+        return deep_and_whole(here, next, j) && linear_and_unbroken(here, next, j, height_at(j));
+    }
+    /// Whether point j is in deep water at both rows and has not broken.
+    bool deep_and_whole(const RowMedium& here, const RowMedium& next, std::size_t j) const {
+        return here.deep[j] && next.deep[j] && !broken[j];
+    }
+    /// Whether point j, `height` (m) high, neither starts to break nor shoals nonlinearly
+    /// from `here` to `next`.
+    bool linear_and_unbroken(const RowMedium& here, const RowMedium& next, std::size_t j, double height) const {
         return !(in_.breaking && here.wet[j] && height > lowest_breaking_ * here.h[j]) &&
                !shoals_nonlinearly(here, next, j, height);
     }

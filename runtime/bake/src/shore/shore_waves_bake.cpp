@@ -234,16 +234,14 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 /// order the waves finish in.
 struct RunDiffraction {
     RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum, bool kept_for_edits)
-        : for_edits(kept_for_edits),
-          marched(stored_slots, waves, kept_for_edits),
+        : marched(stored_slots, waves, kept_for_edits),
           energy(resolution, quantum),
           kept(waves),
           spacing(waves, 0.0) {}
-    /// Whether the record outlives the bake (ShoreWaveOptions::keep_marches): an edit reads
-    /// where each march reached and broke. The bake's cap alone reads the share and the
-    /// amplitude where the march has a share, so without it no more is kept (on a 16 km
-    /// world a tenth of the blocks, and a quarter of each).
-    bool for_edits;
+    /// Kept with its reach when it outlives the bake (ShoreWaveOptions::keep_marches): an
+    /// edit reads where each march reached and broke. The bake's cap alone reads the share
+    /// and the amplitude where the march has a share, so without it no more is kept (on a
+    /// 16 km world a tenth of the blocks, and a quarter of each).
     detail::MarchedAmplitudes marched;
     detail::MarchedEnergy energy;
     std::mutex lock;  ///< held while a wave's energy is added
@@ -279,7 +277,7 @@ void wave_rows(const Wave& wave, const ShoreField& field, const MarchedPhase& m,
             const bool rays = v.kx != 0.0f || v.kz != 0.0f;
             const std::uint8_t share = rays ? detail::held_share(wave, v.kx, v.kz, diffracted->spacing) : 0;
             diffracted->held[k] = rays ? share : 255;
-            if (share != 0 || record->for_edits)
+            if (share != 0 || record->marched.keeps_reach())
                 record->marched.set(at, w, share, diffracted->amplitude[k], true, diffracted->broken[k] != 0);
         }
         t[w] = v.residual;
