@@ -234,10 +234,7 @@ void each_stored_texel(TilePlan& plan, unsigned threads, const Visit& visit) {
 /// order the waves finish in.
 struct RunDiffraction {
     RunDiffraction(std::size_t stored_slots, std::size_t waves, int resolution, double quantum, bool kept_for_edits)
-        : marched(stored_slots, waves, kept_for_edits),
-          energy(resolution, quantum),
-          kept(waves),
-          spacing(waves, 0.0) {}
+        : marched(stored_slots, waves, kept_for_edits), energy(resolution, quantum), kept(waves), spacing(waves, 0.0) {}
     /// Kept with its reach when it outlives the bake (ShoreWaveOptions::keep_marches): an
     /// edit reads where each march reached and broke. The bake's cap alone reads the share
     /// and the amplitude where the march has a share, so without it no more is kept (on a
