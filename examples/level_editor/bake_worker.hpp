@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <string_view>
 #include <tidewater/scene_bake.hpp>
@@ -20,25 +21,34 @@ struct BackgroundBake {
     std::atomic<double> fraction{0.0};
     std::mutex lock;
     std::string stage;
+    /// Whether the running job readies a scene opened from its saved bake for local edits
+    /// (the same scene, baked keeping its marches) rather than bakes an edit.
+    bool readying = false;
+    std::stop_source stop;  ///< asks the running job to stop (its result is then an error)
 
     bool running() const { return job.valid(); }
-    /// Bakes `edited`, what the editor made of `previous`. A saved bake the scene names
-    /// describes it as it was loaded, not as edited: the edit is baked, not loaded. Not
-    /// while running(): the job before would be waited for and its result dropped.
-    void start(Scene edited, std::shared_ptr<const Scene> previous) {
+    /// Bakes `edited`, what the editor made of `previous` (`readies`: the same scene). A
+    /// saved bake the scene names describes it as it was loaded, not as edited: the edit is
+    /// baked, not loaded. Not while running(): the job before would be waited for and its
+    /// result dropped.
+    void start(Scene edited, std::shared_ptr<const Scene> previous, bool readies = false) {
         edited.shore.bake_folder.clear();
         fraction = 0.0;
-        job = std::async(std::launch::async, [this, edited = std::move(edited), previous = std::move(previous)] {
-            SceneBakeOptions o;
-            o.previous = previous;
-            o.keep_marches = true;  // the next stroke on the seabed re-bakes where it reaches
-            o.progress = [this](std::string_view s, double f) {
-                fraction = f;
-                const std::lock_guard<std::mutex> g(lock);
-                stage = std::string(s);
-            };
-            return bake_scene(edited, o);
-        });
+        readying = readies;
+        stop = std::stop_source();
+        job = std::async(std::launch::async,
+                         [this, edited = std::move(edited), previous = std::move(previous), token = stop.get_token()] {
+                             SceneBakeOptions o;
+                             o.previous = previous;
+                             o.cancel = token;
+                             o.keep_marches = true;  // the next stroke on the seabed re-bakes where it reaches
+                             o.progress = [this](std::string_view s, double f) {
+                                 fraction = f;
+                                 const std::lock_guard<std::mutex> g(lock);
+                                 stage = std::string(s);
+                             };
+                             return bake_scene(edited, o);
+                         });
     }
     /// The result once it is ready (the job is then over).
     std::optional<Result<std::shared_ptr<const Scene>>> ready() {

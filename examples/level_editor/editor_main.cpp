@@ -281,7 +281,10 @@ int Editor::run(const Options& options) {
             rebakes_, mib(first.resident_bytes), mib(first.heap_bytes), mib(first.device_bytes),
             mib(end.resident_bytes), mib(end.heap_bytes), mib(end.device_bytes));
     }
-    if (bake_.running()) bake_.job.wait();
+    if (bake_.running()) {
+        bake_.stop.request_stop();  // closing: what it would make is dropped
+        bake_.job.wait();
+    }
     vkDeviceWaitIdle(window_.context().device);
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "editor.hpp"
 
@@ -19,7 +20,10 @@ Status Editor::load(const std::string& path) {
     if (!baked) return baked.error();
     // A re-bake still running, and a stroke or body edit not yet baked, are edits of the
     // scene being closed: dropped, not made over the one opened.
-    if (bake_.running()) bake_.job.wait();
+    if (bake_.running()) {
+        bake_.stop.request_stop();
+        bake_.job.wait();
+    }
     (void)bake_.ready();
     stroke_.reset();
     body_edit_.reset();
@@ -36,12 +40,35 @@ Status Editor::load(const std::string& path) {
         camera_ = OrbitCamera::looking(scene_->camera->position, scene_->camera->target, scene_->camera->fov_y_deg);
     if (renderer_)
         if (auto st = renderer_->set_scene(*scene_); !st) return st;
+    // A scene opened from its saved bake keeps no marches (its fields are the saved 16-bit
+    // ones), so a stroke on its seabed would re-bake its shore in full: it is baked again
+    // in the background keeping them, and the strokes wait for it, then re-bake where they
+    // reach.
+    if (scene_->bake && scene_->bake->loaded && scene_->bake->ocean_shore && scene_->shore.diffraction)
+        bake_.start(*parsed, scene_, true);
     return {};
 }
 
+namespace {
+
+/// What a re-bake did with the ocean's shore, for the status line.
+std::string ocean_shore_summary(const SceneBake& bake) {
+    if (!bake.ocean_shore) return "no ocean shore";
+    if (bake.reused.ocean_shore) return "the ocean's shore reused";
+    if (bake.reused.ocean_shore_land_edit) return "the ocean's shore kept but the ground under the edit";
+    if (bake.reused.ocean_shore_water_edit) return "the ocean's shore re-baked where the edit reaches";
+    return "the ocean's shore baked in full";
+}
+
+}  // namespace
+
 void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
+    const bool readied = bake_.readying;
+    bake_.readying = false;
     if (!baked) {
-        message_ = baked.error().message;
+        message_ = readied
+                       ? fmt::format("strokes on the seabed will re-bake the shore in full: {}", baked.error().message)
+                       : baked.error().message;
         return;
     }
     // Between frames: the renderer waits for the frames in flight and uploads.
@@ -61,8 +88,11 @@ void Editor::swap_in(Result<std::shared_ptr<const Scene>> baked) {
                         static_cast<double>(now.device_bytes) / 1048576.0);
     }
     refloat();
-    message_ = fmt::format("re-baked in {:.2f} s ({} river(s) and {} lake shore(s) reused)", scene_->bake->seconds,
-                           scene_->bake->reused.rivers, scene_->bake->reused.lake_shores);
+    const SceneBake& bake = *scene_->bake;
+    message_ = readied ? fmt::format("ready for local edits: the shore baked again keeping its marches in {:.2f} s",
+                                     bake.seconds)
+                       : fmt::format("re-baked in {:.2f} s ({}; {} river(s) and {} lake shore(s) reused)", bake.seconds,
+                                     ocean_shore_summary(bake), bake.reused.rivers, bake.reused.lake_shores);
 }
 
 // The scene's boats and floats: carried on over an edited scene with the same ones, set

@@ -10,8 +10,10 @@ namespace tidewater::editor {
 Terrain brush_terrain(const Terrain& terrain, glm::dvec2 at, double radius, double height) {
     // The pixel grid: the heightmap's own, or 1024 x 1024 over a procedural terrain's extent.
     HeightmapTerrain map;
+    bool existing_range = false;
     if (const auto* existing = std::get_if<HeightmapTerrain>(&terrain.shape())) {
         map = *existing;
+        existing_range = map.max_height > map.min_height;
     } else {
         auto blank = std::make_shared<Gray16Image>();
         blank->width = blank->height = 1024;
@@ -22,7 +24,9 @@ Terrain brush_terrain(const Terrain& terrain, glm::dvec2 at, double radius, doub
     }
     const int w = map.image->width, h = map.image->height;
     std::vector<double> heights(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    double lo = 1e300, hi = -1e300;
+    // A heightmap keeps its range unless the stroke leaves it, so that the pixels away from
+    // the stroke keep their codes and a re-bake finds the stroke's pixels alone changed.
+    double lo = existing_range ? map.min_height : 1e300, hi = existing_range ? map.max_height : -1e300;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             // Pixel centres span the extent (as HeightmapTerrain samples them).

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -320,6 +323,45 @@ TEST(Editor, AStrokeOnASceneThatNamesItsSavedBakeIsBaked) {
     EXPECT_NEAR(g->after - g->before, 30.0, 0.5) << r.output;
     EXPECT_NE(r.output.find("re-baked in"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("another terrain"), std::string::npos) << r.output;
+}
+
+// A scene opened from its saved bake keeps no marches; the editor bakes it again in the
+// background keeping them, so that the first stroke on its seabed (here a 2 m shoal in
+// 7 m of water off a conical island on a raw 16-bit heightmap) re-bakes only where it
+// reaches, as it would on a scene the editor baked itself.
+TEST(Editor, TheFirstStrokeOnASceneOpenedFromItsSavedBakeStaysLocal) {
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_editor_ready_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    constexpr int kSide = 256;
+    constexpr double kLow = -20.0, kHigh = 15.0, kSize = 1024.0;
+    {
+        std::ofstream raw(dir / "island.raw", std::ios::binary);
+        for (int j = 0; j < kSide; ++j)
+            for (int i = 0; i < kSide; ++i) {
+                const double x = kSize * (i / double(kSide - 1) - 0.5), z = kSize * (j / double(kSide - 1) - 0.5);
+                const double h = std::clamp(15.0 - 0.1 * std::hypot(x, z), kLow, kHigh);  // the coast at 150 m
+                const auto code = static_cast<std::uint16_t>(std::lround((h - kLow) / (kHigh - kLow) * 65535.0));
+                const unsigned char bytes[2] = {static_cast<unsigned char>(code & 0xff),
+                                                static_cast<unsigned char>(code >> 8)};
+                raw.write(reinterpret_cast<const char*>(bytes), 2);
+            }
+    }
+    const std::string body = R"("version": 1, "name": "cone", "water_level": 0.0,
+        "terrain": {"heightmap": {"file": "island.raw", "raw": {"width": 256, "height": 256},
+                                  "size": [1024, 1024], "height_range": [-20, 15]}},
+        "ocean": "ocean_rolling")";
+    std::ofstream(dir / "plain.json") << "{" << body << ", \"shore\": {\"resolution\": 256}}";
+    auto scene = load_scene(dir / "plain.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto baked = bake_scene(*scene);
+    ASSERT_TRUE(baked.ok()) << baked.error().message;
+    ASSERT_TRUE(save_scene_bake(dir / "bake", **baked).ok());
+    std::ofstream(dir / "saved.json") << "{" << body << ", \"shore\": {\"bake\": \"bake\"}}";
+    const EditorRun r = run_script("ready_brush", "brush 220 0 20 2\n", "--scene " + (dir / "saved.json").string());
+    fs::remove_all(dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("the ocean's shore re-baked where the edit reaches"), std::string::npos) << r.output;
 }
 
 // Two edits at a script's start: the second is made on what the first's re-bake left, so
