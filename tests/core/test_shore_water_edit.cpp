@@ -10,6 +10,7 @@
 
 #include "../island_heightmap.hpp"
 #include "../shore_model_compare.hpp"
+#include "shore/fast_marching.hpp"
 #include "shore/shore_marches.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -92,11 +93,11 @@ std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* 
     return same;
 }
 
-/// A shoal 2 m high, 40 m round, 95 m off the shore in 4.75 m of water, re-baked where it
-/// reaches on the test island with its distance field at `distance_resolution` (0: the
+/// A shoal 2 m high, 40 m round, at `at` (by default 95 m off the shore in 4.75 m of
+/// water), re-baked where it reaches on the test island with its distance field at `distance_resolution` (0: the
 /// model's grid), against full bakes before and after. The rays alone: a diffracted wave
 /// changes downstream of the stroke to the model's end.
-void check_seabed_stroke(int distance_resolution) {
+void check_seabed_stroke(int distance_resolution, glm::dvec2 at = {350.0, 350.0}) {
     Scene scene = island_scene(island_pixels());
     scene.shore.diffraction = false;
     scene.shore.distance_resolution = distance_resolution;
@@ -105,7 +106,7 @@ void check_seabed_stroke(int distance_resolution) {
     SceneBakeOptions options;
     options.previous = *first;
 
-    Scene shoal = island_scene(island_pixels({350.0, 350.0}, 2.0));
+    Scene shoal = island_scene(island_pixels(at, 2.0));
     shoal.shore.diffraction = false;
     shoal.shore.distance_resolution = distance_resolution;
     const auto t0 = std::chrono::steady_clock::now();
@@ -246,6 +247,25 @@ TEST(ShoreWaterEdit, AStrokeOnTheSeabedUnderDiffractedWavesIsReBakedWhereItReach
     // A second stroke takes up the marches the first left.
     const Scene two = island_scene(test::island_pixels_with({{{350.0, 350.0}, 2.0}, {{-300.0, 380.0}, 1.5}}));
     check_diffracted_stroke(one, two, "a second shoal elsewhere, from the first's re-bake");
+}
+
+// Deep water moves under a stroke: a 2 m shoal in 11.1 m of water, upwave of the island,
+// where the shortest wave (T = 3.6 s) is deep from 10.3 m down. Its sources there are
+// marched again from the depths after, as the rest of its phase.
+TEST(ShoreWaterEdit, AStrokeThatMovesAWavesDeepWaterIsReBakedWhereItReaches) {
+    const glm::dvec2 at{-440.0, -440.0};
+    const double before = 0.05 * glm::length(at) - 20.0, after = before - 2.0;
+    const Scene shoal = island_scene(island_pixels(at, 2.0));
+    const auto waves = shoal.ocean.waves().waves();
+    EXPECT_TRUE(std::any_of(waves.begin(), waves.end(), [&](const Wave& w) {
+        return detail::marched_deep_water(w.omega, before) != detail::marched_deep_water(w.omega, after);
+    })) << "the stroke no longer crosses a wave's deep-water depth";
+    SceneBakeOptions keep;
+    keep.keep_marches = true;
+    auto first = bake_scene(island_scene(island_pixels()), keep);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    EXPECT_NE(check_diffracted_stroke(*first, shoal, "a 2 m shoal where the shortest wave's deep water ends"), nullptr);
+    check_seabed_stroke(0, at);  // the rays alone
 }
 
 TEST(ShoreWaterEdit, WhereTheMarchCannotBeBlendedAloneTheRowsAreBakedAgain) {

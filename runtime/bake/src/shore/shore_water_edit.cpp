@@ -125,12 +125,12 @@ struct RunEdit {
     }
 };
 
-/// Per wave of the run, whether its grid had deep water for it before the edit (the
-/// phase's sources): a deep texel is a source, and a source keeps a residual of exactly 0,
-/// so the texels with none (and a wave: land and unreached water carry no wavevector) are
-/// the only ones whose depth is asked. The run has no open sea (whose tiles are deep for
-/// every wave).
-std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) {
+/// Per wave of the run, whether its grid has deep water for it outside the edit (the
+/// phase's sources, the same before and after): a deep texel is a source, and a source
+/// keeps a residual of exactly 0, so the texels with none (and a wave: land and unreached
+/// water carry no wavevector) are the only ones whose depth is asked. The run has no open
+/// sea (whose tiles are deep for every wave).
+std::vector<char> deep_water_outside_edit(const RunEdit& r, std::span<const Wave> waves) {
     const ShoreTiles& tiles = r.layer->tiles;
     const std::size_t n = static_cast<std::size_t>(r.n()), nw = r.layer->count;
     std::vector<char> deep(nw, 0), known(nw, 0);
@@ -153,6 +153,7 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
             for (std::size_t w = 0; w < nw; ++w) {
                 if (known[w] || t[w] != 0.0f || !carries_wave(t, nw, w)) continue;
                 const std::size_t g = tiles.grid_index(tile, k);
+                if (r.edit.contains(static_cast<int>(g % n), static_cast<int>(g / n))) continue;
                 if (marched_deep_water(
                         waves[r.layer->first + w].omega,
                         static_cast<double>(r.before.at(static_cast<int>(g % n), static_cast<int>(g / n))))) {
@@ -165,13 +166,12 @@ std::vector<char> had_deep_water(const RunEdit& r, std::span<const Wave> waves) 
     return deep;
 }
 
-/// Whether the edit turns deep water shallow or shallow water deep for wave w anywhere.
-bool deep_water_moves(const RunEdit& r, const Wave& wave) {
+/// Whether the edit's texels hold deep water for `wave` over `depths` (the run's before
+/// or after the edit).
+bool deep_water_in_edit(const RunEdit& r, const Wave& wave, const GridDepth& depths) {
     for (int j = r.edit.j0; j <= r.edit.j1; ++j)
         for (int i = r.edit.i0; i <= r.edit.i1; ++i)
-            if (marched_deep_water(wave.omega, static_cast<double>(r.before.at(i, j))) !=
-                marched_deep_water(wave.omega, static_cast<double>(r.after.at(i, j))))
-                return true;
+            if (marched_deep_water(wave.omega, static_cast<double>(depths.at(i, j)))) return true;
     return false;
 }
 
@@ -446,14 +446,24 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                                 !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count),
                                                  breaking_index, r.after)))
             return std::nullopt;
-        // Deep water for a wave (its sources) stays where it was: a layer with open sea
-        // has it for every wave; otherwise its stored residuals tell.
+        // Whether a wave has deep water (its sources where it has) stays as it was: a
+        // layer with open sea has it for every wave; otherwise the stored residuals tell
+        // outside the edit, the depths under it. Sources may come and go under the edit
+        // (the phase is marched again there from the depths after), but a wave that gains
+        // its first deep water or loses its last takes its sources from elsewhere.
         r.any_deep.assign(layer.count, 1);
         const bool has_open = std::find(layer.tiles.pages.begin(), layer.tiles.pages.end(), gpu::kShoreOpenSlot) !=
                               layer.tiles.pages.end();
-        for (std::size_t w = 0; w < layer.count; ++w)
-            if (deep_water_moves(r, waves[layer.first + w])) return std::nullopt;
-        if (!has_open) r.any_deep = had_deep_water(r, waves);
+        if (!has_open) {
+            r.any_deep = deep_water_outside_edit(r, waves);
+            for (std::size_t w = 0; w < layer.count; ++w) {
+                if (r.any_deep[w]) continue;
+                const Wave& wave = waves[layer.first + w];
+                const bool had = deep_water_in_edit(r, wave, r.before), has = deep_water_in_edit(r, wave, r.after);
+                if (had != has) return std::nullopt;
+                r.any_deep[w] = has ? 1 : 0;
+            }
+        }
         runs.push_back(std::move(r));
     }
     if (distance_edit.empty() && model_edit.empty() &&
