@@ -45,7 +45,7 @@ Status Editor::load(const std::string& path) {
     // in the background keeping them, and the strokes wait for it, then re-bake where they
     // reach.
     if (scene_->bake && scene_->bake->loaded && scene_->bake->ocean_shore && scene_->shore.diffraction)
-        bake_.start(*parsed, scene_, true);
+        bake_.start(*scene_, scene_, true);
     return {};
 }
 

@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
@@ -181,6 +183,72 @@ TEST(SceneBake, SavedBakeLoadsWithoutTheWork) {
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().message.find("/shore"), std::string::npos) << missing.error().message;
     EXPECT_NE(missing.error().message.find("missing"), std::string::npos) << missing.error().message;
+    fs::remove_all(dir);
+}
+
+// A scene that names its saved bake gives no shore settings; the scene loaded from it
+// takes the bake's, so that an edit of it (its bake folder cleared, as an editor does) is
+// baked as the bake was. A bake saved before they were recorded leaves the texels per
+// wavelength and diffraction as the scene has them.
+TEST(SceneBake, ASceneLoadedFromItsSavedBakeTakesTheBakesShoreSettings) {
+    const fs::path dir = fs::temp_directory_path() / ("tidewater_scene_settings_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    auto scene = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(scene.ok());
+    scene->shore.resolution = 96;
+    scene->shore.distance_resolution = 192;
+    scene->shore.breaking_index = 0.7;
+    scene->shore.texels_per_wavelength = 0.0;
+    scene->shore.diffraction = false;
+    auto baked = bake_scene(*scene);
+    ASSERT_TRUE(baked.ok()) << baked.error().message;
+    ASSERT_TRUE(save_scene_bake(dir, **baked).ok());
+
+    auto named = parse_scene(kSmallIsland, "s.json");
+    ASSERT_TRUE(named.ok());
+    named->shore = SceneShore{};
+    named->shore.bake_folder = dir;
+    auto loaded = bake_scene(*named);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    const SceneShore& got = (*loaded)->shore;
+    EXPECT_EQ(got.resolution, 96);
+    EXPECT_EQ(got.distance_resolution, 192);
+    EXPECT_EQ(got.breaking_index, 0.7);
+    EXPECT_EQ(got.texels_per_wavelength, 0.0);
+    EXPECT_FALSE(got.diffraction);
+    EXPECT_EQ(got.bake_folder, dir);
+    EXPECT_TRUE((*loaded)->baked());
+
+    // Edited (here not at all) and baked again: the same model as the first bake.
+    Scene edited = **loaded;
+    edited.shore.bake_folder.clear();
+    auto again = bake_scene(edited);
+    ASSERT_TRUE(again.ok()) << again.error().message;
+    EXPECT_TRUE(test::same_tiles(*(*again)->bake->ocean_shore, *(*baked)->bake->ocean_shore));
+
+    // An older bake: no texels per wavelength or diffraction recorded.
+    {
+        std::ifstream in(dir / "shore.json");
+        nlohmann::json doc = nlohmann::json::parse(in);
+        doc["model"].erase("texels_per_wavelength");
+        doc["model"].erase("diffraction");
+        std::ofstream(dir / "shore.json") << doc.dump();
+    }
+    auto older = bake_scene(*named);
+    ASSERT_TRUE(older.ok()) << older.error().message;
+    EXPECT_EQ((*older)->shore.resolution, 96);
+    EXPECT_EQ((*older)->shore.texels_per_wavelength, kDefaultShoreTexelsPerWavelength);
+    EXPECT_TRUE((*older)->shore.diffraction);
+    // A recorded setting out of range is refused by name.
+    {
+        std::ifstream in(dir / "shore.json");
+        nlohmann::json doc = nlohmann::json::parse(in);
+        doc["model"]["texels_per_wavelength"] = 2.0;
+        std::ofstream(dir / "shore.json") << doc.dump();
+    }
+    auto bad = bake_scene(*named);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("texels_per_wavelength"), std::string::npos) << bad.error().message;
     fs::remove_all(dir);
 }
 

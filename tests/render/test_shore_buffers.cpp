@@ -192,6 +192,22 @@ TEST_F(ShoreBuffersTest, AnEditOverTheBudgetIsWrittenInPlace) {
     EXPECT_GT(changed, 0u) << "the edit reaches a streamed tile";
 }
 
+// Within the budget but over what one storage buffer may span on the device, the model is
+// drawn coarser, as over the budget: no buffer is larger than the device can bind.
+TEST_F(ShoreBuffersTest, NoBufferSpansMoreThanTheDeviceBinds) {
+    ASSERT_NO_FATAL_FAILURE(load_coast());
+    const std::uint64_t budget = 4 * model_->device_bytes(), limit = model_->device_bytes() / 3;
+    buffers_ = std::make_unique<ShoreBuffers>();
+    auto fits = buffers_->upload(*device_, ShoreBuffers::Models{model_}, budget);
+    ASSERT_TRUE(fits.ok()) << fits.error().message;
+    EXPECT_EQ(buffers_->stride(), 1) << "the coast fits this device's storage buffers whole";
+    buffers_ = std::make_unique<ShoreBuffers>();
+    auto bounded = buffers_->upload(*device_, ShoreBuffers::Models{model_}, budget, limit);
+    ASSERT_TRUE(bounded.ok()) << bounded.error().message;
+    EXPECT_GT(buffers_->stride(), 1);
+    EXPECT_LE(buffers_->bytes(), limit);
+}
+
 /// Squared distance from `camera` to the centre of tile `t` of `layer`.
 double tile_distance2(const render::detail::StreamedLayer& layer, std::size_t t, glm::dvec2 camera) {
     const double side = ShoreTiles::kTile * layer.grid.texel;

@@ -341,6 +341,8 @@ Status save_scene_bake(const std::filesystem::path& dir, const Scene& baked) {
             contents.waves = &baked.ocean.waves();
             contents.water_level = baked.water_level();
             contents.breaking_index = baked.shore.breaking_index;
+            contents.texels_per_wavelength = baked.shore.texels_per_wavelength;
+            contents.diffraction = baked.shore.diffraction;
             contents.scene_name = baked.name;
             contents.distance_field = baked.bake->shoreline.get();
             if (auto st = write_shore_bake_into(temp, contents); !st) return st;

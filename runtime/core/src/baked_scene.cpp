@@ -109,13 +109,17 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
                       fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
                                   (folder / kBodiesSidecar).string())});
         }
+        // The scene as the bake was made: its shore settings the bake's (a scene naming a
+        // saved bake gives none), so that an edit of it is baked at the same resolutions.
+        Scene as_baked = scene;
         if (shore) {
-            auto loaded = load_shore_bake(folder, scene.ocean.waves(), scene.water_level(), bake->terrain);
+            auto loaded = load_shore_bake(folder, scene.ocean.waves(), scene.water_level(), bake->terrain, nullptr,
+                                          &as_baked.shore);
             if (!loaded) return detail::in_shore(scene, loaded.error());
             bake->ocean_shore = std::move(loaded).value();
         }
         report(1.0);
-        return detail::finish_scene_bake(scene, std::move(bake), start);
+        return detail::finish_scene_bake(as_baked, std::move(bake), start);
     } catch (const std::exception& e) {
         return Error{ErrorCode::internal, fmt::format("{}: loading its bake failed: {}", scene_label(scene), e.what())};
     }

@@ -269,22 +269,30 @@ bool ShoreBuffers::rewrite_in_place(const Models& models, const std::vector<cons
     return true;
 }
 
-Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
+Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes,
+                                  std::uint64_t buffer_limit) {
     if (holds(models) && max_bytes == max_bytes_) {
         rewritten_bytes_ = 0;
         return false;
     }
     std::vector<const ShoreWaves*> wanted_models;
     for (const auto& m : models) wanted_models.push_back(wanted(m));
-    // Over the budget, the coarse level is every k-th texel of each model (the smallest k
-    // whose fields take at most half the budget, at most 64), sized from the tiles' pages
-    // before anything is coarsened; the rest of the budget streams full-resolution tiles.
-    // A model re-baked from the one drawn is coarsened sharing the drawn coarsening's tiles
-    // away from its edit.
+    // What the buffers may take together: the budget, and no more than one storage buffer
+    // may span on this device (maxStorageBufferRange: 128 MiB on some), which bounds each.
+    if (buffer_limit == 0) {
+        VkPhysicalDeviceProperties properties;
+        ctx.vk().GetPhysicalDeviceProperties(ctx.physical_device, &properties);
+        buffer_limit = properties.limits.maxStorageBufferRange;
+    }
+    const std::uint64_t fit = std::min(max_bytes, buffer_limit);
+    // Over that, the coarse level is every k-th texel of each model (the smallest k whose
+    // fields take at most half of it, at most 64), sized from the tiles' pages before
+    // anything is coarsened; the rest streams full-resolution tiles. A model re-baked from
+    // the one drawn is coarsened sharing the drawn coarsening's tiles away from its edit.
     int stride = 1;
-    if (packed_shore_bytes(wanted_models, 1) > max_bytes) {
+    if (packed_shore_bytes(wanted_models, 1) > fit) {
         stride = 2;
-        while (packed_shore_bytes(wanted_models, stride) > max_bytes / 2 && stride < 64) ++stride;
+        while (packed_shore_bytes(wanted_models, stride) > fit / 2 && stride < 64) ++stride;
     }
     // A saved bake's tiles are read on demand, and what the device takes is not kept in host
     // memory: within the budget every tile is read as it is packed; over it the coarse level
@@ -319,7 +327,7 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     }
     std::vector<ShorePlacement> placements;
     std::vector<StreamedLayer> streamed;
-    const ShorePools pools = stride > 1 ? plan_pools(wanted_models, stride, max_bytes) : ShorePools{};
+    const ShorePools pools = stride > 1 ? plan_pools(wanted_models, stride, fit) : ShorePools{};
     const ShoreLayout layout =
         layout_shores(drawn, placements, wanted_models, stride > 1 ? &pools : nullptr, &streamed);
     // The offsets are 32-bit element indices in the shaders.

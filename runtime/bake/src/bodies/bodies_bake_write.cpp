@@ -107,6 +107,8 @@ Status write_bodies_bake_into(const fs::path& dir, const Scene& baked) {
             contents.waves = &baked.lakes[l].body.waves();
             contents.water_level = lake.level;
             contents.breaking_index = baked.shore.breaking_index;
+            contents.texels_per_wavelength = baked.shore.texels_per_wavelength;
+            contents.diffraction = baked.shore.diffraction;
             contents.scene_name = baked.name;
             if (auto st = write_shore_bake_into(sub, contents); !st) return st;
             entry["shore"] = lake_folder(l);

@@ -124,6 +124,8 @@ Status write_bake(const fs::path& temp, const ShoreBakeContents& c) {
     const ShoreWaves& m = *c.model;
     nlohmann::json model = grid_json(m.grid());
     model["breaking_index"] = c.breaking_index;
+    model["texels_per_wavelength"] = c.texels_per_wavelength;
+    model["diffraction"] = c.diffraction;
     auto tiles = write_tiles(temp, m.shared(), shore_layer_folder(-1), 0, 0);
     if (!tiles) return tiles.error();
     model["tiles"] = std::move(tiles).value();

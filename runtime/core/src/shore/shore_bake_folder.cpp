@@ -162,10 +162,38 @@ bool close(double a, double b) {
     return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
 }
 
+/// What the bake at `root` (its `model`) was made with, over `given` (see load_shore_bake).
+Result<SceneShore> saved_settings(const ObjectReader& root, const ObjectReader& model, const ShoreGrid& grid,
+                                  SceneShore given) {
+    given.resolution = grid.resolution;
+    given.distance_resolution = 0;
+    if (root.has("distance_field")) {
+        auto distance = ObjectReader::open(root.at("distance_field"), root.source(), "/distance_field");
+        if (!distance) return distance.error();
+        std::int64_t n = 0;
+        if (auto st = distance->integer("resolution", n, 2, 65536, true); !st) return st.error();
+        given.distance_resolution = static_cast<int>(n);
+    }
+    if (auto st = model.number("breaking_index", given.breaking_index); !st) return st.error();
+    if (!(given.breaking_index >= 0.3 && given.breaking_index <= 1.2))
+        return model.error("breaking_index", "expected 0.3 to 1.2");
+    if (auto st = model.number("texels_per_wavelength", given.texels_per_wavelength); !st) return st.error();
+    if (!(given.texels_per_wavelength == 0.0 ||
+          (given.texels_per_wavelength >= 4.0 && given.texels_per_wavelength <= 64.0)))
+        return model.error("texels_per_wavelength", "expected 0 or 4 to 64");
+    if (model.has("diffraction")) {
+        const nlohmann::json& d = model.at("diffraction");
+        if (!d.is_boolean()) return model.error("diffraction", "expected true or false");
+        given.diffraction = d.get<bool>();
+    }
+    return given;
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, const WaveSet& waves, double water_level,
-                                                          const Terrain& terrain, const SquareRegion* region) {
+                                                          const Terrain& terrain, const SquareRegion* region,
+                                                          SceneShore* settings) {
     const fs::path sidecar_path = dir / kShoreSidecar;
     auto doc = detail::read_sidecar(sidecar_path, kShoreBakeFormatVersion);
     if (!doc) return doc.error();
@@ -253,6 +281,11 @@ Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const fs::path& dir, c
         Error e = std::move(made).error();
         e.message = fmt::format("{}: {}", dir.string(), e.message);
         return e;
+    }
+    if (settings) {
+        auto saved = saved_settings(*root, *model, f, *settings);
+        if (!saved) return saved.error();
+        *settings = std::move(saved).value();
     }
     return made;
 }

@@ -8,14 +8,19 @@
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_bake_folder.hpp"
 #include "tidewater/detail/shore_waves.hpp"
+#include "tidewater/scene.hpp"
 
 namespace tidewater {
 
 struct ShoreBakeContents {
-    const ShoreWaves* model = nullptr;           ///< Required: the per-wave fields the runtime samples.
-    const WaveSet* waves = nullptr;              ///< Required: the waves `model` was baked for.
-    double water_level = 0.0;                    ///< m.
-    double breaking_index = 0.78;                ///< As baked (recorded, not checked when loading).
+    const ShoreWaves* model = nullptr;  ///< Required: the per-wave fields the runtime samples.
+    const WaveSet* waves = nullptr;     ///< Required: the waves `model` was baked for.
+    double water_level = 0.0;           ///< m.
+    double breaking_index = 0.78;       ///< As baked (recorded, not checked when loading).
+    /// As baked (recorded, not checked when loading): a scene loaded from the bake takes
+    /// them, with the grids' resolutions, so that an edit of it is baked as it was.
+    double texels_per_wavelength = kDefaultShoreTexelsPerWavelength;
+    bool diffraction = true;
     std::string scene_name;                      ///< Recorded for people.
     const ShoreField* distance_field = nullptr;  ///< Optional: a finer signed distance field and its shoreline.
 };

@@ -15,6 +15,7 @@
 
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/result.hpp"
+#include "tidewater/scene.hpp"
 #include "tidewater/terrain.hpp"
 #include "tidewater/waves.hpp"
 
@@ -37,9 +38,13 @@ std::string shore_layer_folder(int run);
 /// dry-land tiles are checked against `terrain` here). A stored tile that is corrupt or
 /// whose depths do not fit `terrain` is found as it is read: ShoreWaves::status() and
 /// read_all() name it. The model covers the terrain's extent, or `region` where given (a
-/// lake's basin).
+/// lake's basin). `settings`, where given, takes what the bake was made with: the model's
+/// and the distance field's resolutions and the breaking index, and the texels per
+/// wavelength and diffraction where the bake records them (bakes saved before 2026-12-07
+/// do not: those are left as they were).
 Result<std::shared_ptr<const ShoreWaves>> load_shore_bake(const std::filesystem::path& dir, const WaveSet& waves,
                                                           double water_level, const Terrain& terrain,
-                                                          const SquareRegion* region = nullptr);
+                                                          const SquareRegion* region = nullptr,
+                                                          SceneShore* settings = nullptr);
 
 }  // namespace tidewater
