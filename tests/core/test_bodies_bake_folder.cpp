@@ -115,6 +115,27 @@ TEST_F(BodiesBakeFolder, SavedLakesAndRiversLoadWithinTheirEncodingAndKeepTheDis
     EXPECT_LT(worst_current, 2e-3);
 }
 
+// An inland scene (no ocean) loaded from its bake takes the shore settings its lakes'
+// models were baked with, as a scene with an ocean takes the ocean's.
+TEST_F(BodiesBakeFolder, AnInlandSceneTakesItsLakesShoreSettings) {
+    Scene inland = parsed;
+    inland.has_ocean = false;
+    inland.rivers.clear();  // they end in the sea
+    inland.shore.breaking_index = 0.7;
+    auto made = bake_scene(inland);
+    ASSERT_TRUE(made.ok()) << made.error().message;
+    const fs::path inland_folder = dir.path / "inland";
+    ASSERT_TRUE(save_scene_bake(inland_folder, **made).ok());
+    Scene inland_named = inland;
+    inland_named.shore = SceneShore{};
+    inland_named.shore.bake_folder = inland_folder;
+    auto loaded = bake_scene(inland_named);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_EQ((*loaded)->shore.resolution, 96);
+    EXPECT_EQ((*loaded)->shore.breaking_index, 0.7);
+    EXPECT_TRUE((*loaded)->baked());
+}
+
 TEST_F(BodiesBakeFolder, ABakeThatNoLongerFitsIsRefusedWithTheFileAndField) {
     Scene more_water = named;
     more_water.rivers[0].discharge *= 2.0;

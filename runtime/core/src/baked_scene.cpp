@@ -81,6 +81,9 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
                                       "with bake_scene (Tidewater::bake) or `tidewater bake`"});
     }
     try {
+        // The scene as the bake was made: its shore settings the bake's (a scene naming a
+        // saved bake gives none), so that an edit of it is baked at the same resolutions.
+        Scene as_baked = scene;
         auto bake = std::make_shared<SceneBake>();
         bake->terrain = scene.terrain.with_cuts({});
         bake->loaded = has_bodies || shore;
@@ -101,6 +104,7 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
             bake->terrain = loaded->bodies.terrain;
             bake->bodies = std::make_shared<const detail::WaterBodiesBake>(std::move(loaded->bodies));
             if (lake_shores) bake->lake_shores = std::move(loaded->lake_shores);
+            if (loaded->shore_settings) as_baked.shore = *loaded->shore_settings;
             report(bodies_share);
         } else if (std::filesystem::exists(folder / kBodiesSidecar)) {
             return detail::in_shore(
@@ -109,9 +113,6 @@ Result<std::shared_ptr<const Scene>> load_scene_bake(const Scene& scene, const B
                       fmt::format("{}: the bake holds lakes or rivers the scene does not have; re-run tidewater bake",
                                   (folder / kBodiesSidecar).string())});
         }
-        // The scene as the bake was made: its shore settings the bake's (a scene naming a
-        // saved bake gives none), so that an edit of it is baked at the same resolutions.
-        Scene as_baked = scene;
         if (shore) {
             auto loaded = load_shore_bake(folder, scene.ocean.waves(), scene.water_level(), bake->terrain, nullptr,
                                           &as_baked.shore);

@@ -366,14 +366,16 @@ Result<LoadedBodies> load_bodies_bake(const fs::path& dir, const Scene& scene, c
                 return root->error(fmt::format("lakes/{}/shore", l),
                                    "is missing: the bake holds no shore model for this lake; re-run tidewater bake");
             const SquareRegion region = detail::lake_basin_region(out.bodies.lakes[l]);
+            SceneShore settings = scene.shore;
             auto model = load_shore_bake(dir / lake_shore_folders[l], scene.lakes[l].body.waves(),
-                                         out.bodies.lakes[l].level, out.bodies.terrain, &region);
+                                         out.bodies.lakes[l].level, out.bodies.terrain, &region, &settings);
             if (!model) {
                 Error e = model.error();
                 e.message = fmt::format("lake \"{}\": {}", scene.lakes[l].name, e.message);
                 return e;
             }
             out.lake_shores[l] = std::move(model).value();
+            if (!out.shore_settings) out.shore_settings = settings;
         }
     return out;
 }

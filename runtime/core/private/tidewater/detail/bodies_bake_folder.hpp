@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "tidewater/detail/water_bodies.hpp"
@@ -30,6 +31,9 @@ inline constexpr const char* kBodiesSidecar = "bodies.json";
 struct LoadedBodies {
     detail::WaterBodiesBake bodies;
     std::vector<std::shared_ptr<const ShoreWaves>> lake_shores;
+    /// The shore settings the lakes' models were baked with (load_shore_bake's `settings`),
+    /// over the scene's: none without a lake's shore model.
+    std::optional<SceneShore> shore_settings;
 };
 
 /// Loads the lakes and rivers saved in `dir` for `scene` (parsed, not baked), with its
