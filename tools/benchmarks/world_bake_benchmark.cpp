@@ -121,8 +121,6 @@ glm::dvec2 pixel_xz(const tidewater::Scene& scene, int i, int j) {
     return {map.size.x * (i / (side - 1.0) - 0.5), map.size.y * (j / (side - 1.0) - 0.5)};
 }
 
-/// A brush stroke re-baked from `baked` (as an editor does after it): the heightmap raised
-/// by `metres` at (ci, cj), falling off over 25 pixels.
 /// WORLD_BENCH_KEEP_MARCHES=1: bake keeping what the march needs (SceneBakeOptions::
 /// keep_marches, as the editor does), so that the seabed strokes re-bake where they
 /// reach with diffraction on.
@@ -136,6 +134,28 @@ struct Stroke {
     bool local = false;  ///< re-baked where it is (a dry-land or a seabed edit)
     std::string error;
 };
+
+/// `edited` re-baked from `baked`, timed: local where the ocean's shore was kept, or
+/// re-baked only where the edit reaches.
+Stroke re_bake(const tidewater::Scene& edited, const std::shared_ptr<const tidewater::Scene>& baked) {
+    tidewater::SceneBakeOptions options;
+    options.previous = baked;
+    options.keep_marches = keep_marches();
+    const auto t = Clock::now();
+    auto rebaked = tidewater::bake_scene(edited, options);
+    Stroke out;
+    out.seconds = seconds_since(t);
+    if (!rebaked) {
+        out.error = rebaked.error().message;
+        return out;
+    }
+    const auto& reused = (*rebaked)->bake->reused;
+    out.local = reused.ocean_shore || reused.ocean_shore_land_edit || reused.ocean_shore_water_edit;
+    return out;
+}
+
+/// A brush stroke re-baked from `baked` (as an editor does after it): the heightmap raised
+/// by `metres` at (ci, cj), falling off over 25 pixels.
 Stroke re_bake_stroke(const tidewater::Scene& scene, const std::shared_ptr<const tidewater::Scene>& baked, int ci,
                       int cj, double metres) {
     tidewater::Scene stroke = scene;
@@ -153,20 +173,7 @@ Stroke re_bake_stroke(const tidewater::Scene& scene, const std::shared_ptr<const
         }
     map.image = std::move(pixels);
     stroke.terrain = tidewater::Terrain(map);
-    tidewater::SceneBakeOptions options;
-    options.previous = baked;
-    options.keep_marches = keep_marches();
-    const auto t = Clock::now();
-    auto edited = tidewater::bake_scene(stroke, options);
-    Stroke out;
-    out.seconds = seconds_since(t);
-    if (!edited) {
-        out.error = edited.error().message;
-        return out;
-    }
-    const auto& reused = (*edited)->bake->reused;
-    out.local = reused.ocean_shore_land_edit || reused.ocean_shore_water_edit;
-    return out;
+    return re_bake(stroke, baked);
 }
 
 /// WORLD_BENCH_RIVER=1: a river runs from the hills to the sea south of the centre
@@ -191,20 +198,7 @@ std::string world_river(int side) {
 Stroke re_bake_river(const tidewater::Scene& scene, const std::shared_ptr<const tidewater::Scene>& baked) {
     tidewater::Scene edited = scene;
     edited.rivers.front().discharge *= 1.2;
-    tidewater::SceneBakeOptions options;
-    options.previous = baked;
-    options.keep_marches = keep_marches();
-    const auto t = Clock::now();
-    auto rebaked = tidewater::bake_scene(edited, options);
-    Stroke out;
-    out.seconds = seconds_since(t);
-    if (!rebaked) {
-        out.error = rebaked.error().message;
-        return out;
-    }
-    const auto& reused = (*rebaked)->bake->reused;
-    out.local = reused.ocean_shore_land_edit || reused.ocean_shore_water_edit || reused.ocean_shore;
-    return out;
+    return re_bake(edited, baked);
 }
 
 }  // namespace
