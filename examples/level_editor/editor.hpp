@@ -87,6 +87,7 @@ class Editor {
     std::optional<MemoryMark> after_first_rebake_;
     int rebakes_ = 0;
     bool memory_log_ = false;  // --memory-log: the memory after each re-bake
+    bool ready_edits_ = true;  // not --keep-saved-bake: a saved bake opened is baked again for local edits
     MemoryMark memory_now() const;
     bool force_reload_ = false;
     bool brushing_ = false;  // the Terrain panel's brush is on (left drag paints)

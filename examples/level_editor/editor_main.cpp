@@ -4,7 +4,7 @@
 //
 //   tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png]
 //                    [--probe X,Y] [--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation]
-//                    [--memory-log]
+//                    [--memory-log] [--keep-saved-bake]
 //
 // Panels: scene (open, save, errors), water (the ocean's preset, re-baked in the
 // background), shore (breaking index, re-baked with progress), terrain (a brush), rivers
@@ -21,6 +21,10 @@
 // --screenshot, prints the probe at pixel --probe, and exits (non-zero on any error or
 // validation message). After a script's re-bakes it prints the memory after the first and
 // at the end; --memory-log prints it after every re-bake (resident, heap in use, device).
+// A scene opened from its saved bake is baked again in the background keeping its marches,
+// so that its first seabed stroke re-bakes where it reaches; --keep-saved-bake leaves it
+// as loaded (that stroke then re-bakes the shore in full) for a world whose second bake
+// would not fit in memory.
 #include <fmt/format.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
@@ -47,6 +51,7 @@ Status Editor::start(const Options& options) {
     auto renderer = render::Renderer::create(init);
     if (!renderer) return renderer.error();
     renderer_ = std::move(renderer).value();
+    ready_edits_ = options.ready_edits;
     if (auto st = load(options.scene); !st) return st;
     if (auto st = lay_out_views(window_.extent()); !st) return st;
     if (!options.shader_dir.empty()) {
@@ -315,7 +320,8 @@ int main(int argc, char** argv) {
     if (!options) {
         std::fprintf(stderr,
                      "usage: tidewater-editor [--scene S] [--size WxH] [--frames N --screenshot out.png] [--probe X,Y] "
-                     "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation] [--memory-log]\n");
+                     "[--script FILE] [--resize-at N] [--shader-dir DIR] [--no-validation] [--memory-log] "
+                     "[--keep-saved-bake]\n");
         return 2;
     }
     tidewater::editor::Editor editor;

@@ -34,6 +34,8 @@ std::optional<Options> parse(int argc, char** argv) {
             o.validation = false;
         else if (a == "--memory-log")
             o.memory_log = true;
+        else if (a == "--keep-saved-bake")
+            o.ready_edits = false;
         else
             return std::nullopt;
     }

@@ -14,6 +14,10 @@ struct Options {
     std::optional<glm::dvec2> probe;
     bool validation = true;
     bool memory_log = false;
+    /// Bake a scene opened from its saved bake again in the background, keeping its
+    /// marches, so that its first seabed stroke is re-baked where it reaches (off with
+    /// --keep-saved-bake: for a world whose second bake would not fit in memory).
+    bool ready_edits = true;
 };
 
 /// The options, or none when an argument is not understood.

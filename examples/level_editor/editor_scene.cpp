@@ -44,7 +44,7 @@ Status Editor::load(const std::string& path) {
     // ones), so a stroke on its seabed would re-bake its shore in full: it is baked again
     // in the background keeping them, and the strokes wait for it, then re-bake where they
     // reach.
-    if (scene_->bake && scene_->bake->loaded && scene_->bake->ocean_shore && scene_->shore.diffraction)
+    if (ready_edits_ && scene_->bake && scene_->bake->loaded && scene_->bake->ocean_shore && scene_->shore.diffraction)
         bake_.start(*scene_, scene_, true);
     return {};
 }

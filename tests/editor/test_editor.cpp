@@ -358,10 +358,15 @@ TEST(Editor, TheFirstStrokeOnASceneOpenedFromItsSavedBakeStaysLocal) {
     ASSERT_TRUE(baked.ok()) << baked.error().message;
     ASSERT_TRUE(save_scene_bake(dir / "bake", **baked).ok());
     std::ofstream(dir / "saved.json") << "{" << body << ", \"shore\": {\"bake\": \"bake\"}}";
-    const EditorRun r = run_script("ready_brush", "brush 220 0 20 2\n", "--scene " + (dir / "saved.json").string());
+    const std::string scene_arg = "--scene " + (dir / "saved.json").string();
+    const EditorRun r = run_script("ready_brush", "brush 220 0 20 2\n", scene_arg);
+    // Left as loaded (--keep-saved-bake), the same stroke re-bakes the shore in full.
+    const EditorRun kept = run_script("kept_brush", "brush 220 0 20 2\n", scene_arg + " --keep-saved-bake");
     fs::remove_all(dir);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("the ocean's shore re-baked where the edit reaches"), std::string::npos) << r.output;
+    ASSERT_EQ(kept.status, 0) << kept.output;
+    EXPECT_NE(kept.output.find("the ocean's shore baked in full"), std::string::npos) << kept.output;
 }
 
 // Two edits at a script's start: the second is made on what the first's re-bake left, so

@@ -200,6 +200,13 @@ Status GpuQuery::Impl::solve(const WaterBody& still, const RiverDispatch* river,
     auto uploaded = shore.upload(ctx, still_waves ? still.shore() : nullptr);
     if (!uploaded) return uploaded.error();
     rebind = rebind || *uploaded;
+    // A query answers from the full-resolution fields: a coarse level (the fields past what
+    // one storage buffer may span on this device) would answer something else.
+    if (shore.stride() > 1)
+        return Error{ErrorCode::unsupported,
+                     fmt::format("GPU query: the shore model's fields ({:.0f} MiB) are more than one storage buffer "
+                                 "spans on this device: query on the CPU, or bake the shore coarser",
+                                 static_cast<double>(still.shore()->device_bytes()) / 1048576.0)};
     auto river_uploaded = use_river(river_mode ? river->river : nullptr);
     if (!river_uploaded) return river_uploaded.error();
     rebind = rebind || *river_uploaded;
