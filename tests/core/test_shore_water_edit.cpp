@@ -94,9 +94,9 @@ std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* 
 }
 
 /// A shoal 2 m high, 40 m round, at `at` (by default 95 m off the shore in 4.75 m of
-/// water), re-baked where it reaches on the test island with its distance field at `distance_resolution` (0: the
-/// model's grid), against full bakes before and after. The rays alone: a diffracted wave
-/// changes downstream of the stroke to the model's end.
+/// water), re-baked where it reaches on the test island with its distance field at
+/// `distance_resolution` (0: the model's grid), against full bakes before and after. The
+/// rays alone: a diffracted wave changes downstream of the stroke to the model's end.
 void check_seabed_stroke(int distance_resolution, glm::dvec2 at = {350.0, 350.0}) {
     Scene scene = island_scene(island_pixels());
     scene.shore.diffraction = false;
