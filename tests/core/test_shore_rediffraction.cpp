@@ -194,6 +194,64 @@ TEST(ShoreRediffraction, ASecondEditTakesUpTheMarchTheFirstLeft) {
     EXPECT_GT(stale, 2.0 * kMarchAmplitudeTolerance);
 }
 
+TEST(ShoreRediffraction, AComponentOfARandomSeaEndsItsMarchWhereTheEditsWakeDiesOut) {
+    // Half a metre on 1.7 m of water, 80 m off the shoreline, under a sea of two waves:
+    // the beach's and one half as high from 10 degrees off +z the other way. Each
+    // component breaks at the sea's height, marched over each depth.
+    const glm::dvec2 at{500.0, 660.0};
+    const auto before = std::make_shared<ShoreField>(beach(0.0, at));
+    const auto after = std::make_shared<ShoreField>(beach(0.5, at));
+    Wave second = wave();
+    second.dir_x = -std::sin(10.0 * kPi / 180.0);
+    second.dir_z = std::cos(10.0 * kPi / 180.0);
+    second.amplitude = 0.1;
+    const Wave waves[] = {wave(), second};
+    const SeaState sea = sea_state(waves);
+    ASSERT_EQ(sea.components, 2);
+    const SeaHeight sea_before = march_sea(waves, sea, before), sea_after = march_sea(waves, sea, after);
+    const auto fill_all = [](std::size_t) { return false; };
+    // What the component's march is taken up over: the shoal's reach and where the sea's
+    // height moved, a texel round it.
+    WorldRect changed{at - 30.0, at + 30.0};
+    std::size_t sea_moved = 0;
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const std::size_t k = before->index(i, j);
+            if (sea_before.height[k] == sea_after.height[k]) continue;
+            ++sea_moved;
+            changed.lo = glm::min(changed.lo, before->texel_center(i, j) - kTexel);
+            changed.hi = glm::max(changed.hi, before->texel_center(i, j) + kTexel);
+        }
+    ASSERT_GT(sea_moved, 0u);
+
+    for (const Wave& w : waves) {
+        KeptMarch kept;
+        const DiffractedWave first = diffract_wave(w, sea, *before, fill_all, &sea_before, &kept);
+        Remarch how;
+        how.sea_before = &sea_before;
+        how.sea_after = &sea_after;
+        how.marched_before = [&](std::size_t k) -> std::optional<MarchedTexel> {
+            const float held = MarchedAmplitudes::held(first.amplitude[k]);
+            return MarchedTexel{held, first.share[k] > 0, first.broken[k] != 0, MarchedAmplitudes::rounding(held)};
+        };
+        const PatchedDepths patched{before.get(), 0, 0, kN, kN, after->depth.values()};
+        const DiffractionChange to_the_end = rediffract_wave(w, sea, *before, patched, kept, changed, fill_all, how);
+        how.settles = true;
+        const DiffractionChange settled = rediffract_wave(w, sea, *before, patched, kept, changed, fill_all, how);
+        std::printf(
+            "a component %.2f m high: %zu texels changed; points visited %zu marched to the grid's end, %zu "
+            "ended where the wake died out\n",
+            2.0 * w.amplitude, to_the_end.texels.size(), to_the_end.points_visited, settled.points_visited);
+        // The wake breaks on the beach and dies out there: the march ends well before the
+        // grid's, and leaves the same texels with the same values.
+        EXPECT_GT(to_the_end.texels.size(), 0u);
+        EXPECT_LT(static_cast<double>(settled.points_visited), 0.8 * static_cast<double>(to_the_end.points_visited));
+        EXPECT_EQ(settled.texels, to_the_end.texels);
+        EXPECT_EQ(settled.amplitude, to_the_end.amplitude);
+        EXPECT_EQ(settled.broken, to_the_end.broken);
+    }
+}
+
 TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {
     const ShoreField before = beach(0.0);
     const Wave w = wave();

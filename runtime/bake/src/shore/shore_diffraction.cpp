@@ -316,6 +316,31 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     return out;
 }
 
+namespace {
+
+/// Whether `march`, a whole row marched again, is at its frame's row `frame_row` the
+/// first march's kept row there (in the phase it carries) to kSettledAmplitude of
+/// `amplitude` at every point, breaking where it broke. False at a row not kept.
+bool settled_at(const KeptMarch& kept, int frame_row, const ParabolicMarch& march, double amplitude) {
+    const int since = frame_row - kept.start;
+    if (since % KeptMarch::kKeptRowsEvery != 0) return false;
+    const auto n = static_cast<std::size_t>(since / KeptMarch::kKeptRowsEvery);
+    if (n >= kept.rows()) return false;
+    const ParabolicRow row = march.row();
+    const auto points = static_cast<std::size_t>(kept.points);
+    if (row.amplitude.size() != points) return false;
+    const std::complex<double> turn =
+        std::polar(1.0, march.phase() - kept.columns.phase[static_cast<std::size_t>(since)]);
+    const double limit = kSettledAmplitude * amplitude;
+    for (std::size_t j = 0; j < points; ++j)
+        if (std::abs(row.amplitude[j] * turn - kept.amplitude[n * points + j]) > limit ||
+            row.broken[j] != kept.broken[n * points + j])
+            return false;
+    return true;
+}
+
+}  // namespace
+
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep, const Remarch& how) {
@@ -501,11 +526,13 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             }
             std::swap(old_before, old_after);
             std::swap(new_before, new_after);
+            const bool past_edit = frame_row > static_cast<int>(std::ceil(x_hi)) + 1;
             // Past the edit, over the same depths and sea, two marches that agree exactly
             // stay so: the edit's wake has died out. (Anything short of exact may yet tip a
             // point over breaking's threshold further on.)
-            if (old_march && largest == 0.0 && same_breaking && step + r0 > static_cast<int>(std::ceil(x_hi)) + 1)
-                break;
+            if (old_march && largest == 0.0 && same_breaking && past_edit) break;
+            // A whole row alone: against the first march's kept row, where it has one.
+            if (whole && how.settles && past_edit && settled_at(kept, frame_row, new_march, amplitude)) break;
         }
         if (!widen_lo && !widen_hi) {
             if (how.updated) {

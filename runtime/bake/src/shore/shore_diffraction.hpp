@@ -164,7 +164,18 @@ struct Remarch {
     /// A window as wide as a third of the march is then the whole row, marched over the
     /// new depths alone and compared with these, instead of beside the old depths' march.
     std::function<std::optional<MarchedTexel>(std::size_t k)> marched_before;
+    /// Whether the wave breaks and shoals at the sea's height (`sea_after`), not its own:
+    /// its march is then smooth in its own amplitude, and a whole row that agrees with the
+    /// first march's kept row to kSettledAmplitude past everything the edit changed may
+    /// end the march there (no threshold for a difference that small to tip).
+    bool settles = false;
 };
+
+/// A whole row marched again ends the march where, past the edit, every point is within
+/// this part of the wave's amplitude of the first march's kept row and breaks as it did.
+/// Spread by shoaling and focusing over the rest of the march, a difference this small
+/// stays far under kMarchAmplitudeTolerance.
+inline constexpr double kSettledAmplitude = 1e-7;
 
 /// `wave`'s march over `after`, taken up again from its rows kept over `before` (`after`'s
 /// field; its depths differ only in `changed`): from the last kept row before the edit it
@@ -175,8 +186,9 @@ struct Remarch {
 /// phase too) or in breaking, the new march's side is not the first one's and the window
 /// is widened and marched again (with `how.marched_before`, as the whole row past a
 /// third of the march). The march stops where, past the edit, the two agree exactly (the
-/// edit's wake has died out), or at the grid's end (a whole row marched alone always
-/// does). `keep` as diffract_wave's.
+/// edit's wake has died out), or a whole row marched alone agrees with the first march's
+/// kept row to kSettledAmplitude (`how.settles`), or at the grid's end. `keep` as
+/// diffract_wave's.
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep, const Remarch& how = {});

@@ -178,6 +178,8 @@ MarchEdit remarch_marches(const ShoreMarches& marches, std::span<const Wave> wav
         how.sea_before = sea_before;
         how.sea_after = sea_after;
         how.updated = kept.get();
+        // A component of a random sea breaks and shoals at the sea's height.
+        how.settles = sea_after != nullptr;
         // What the first march left, where the model stores it.
         how.marched_before = [&](std::size_t k) -> std::optional<MarchedTexel> {
             const auto n = static_cast<std::size_t>(run.field->resolution);
