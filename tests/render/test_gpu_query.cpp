@@ -11,6 +11,7 @@
 #include "../core/test_helpers.hpp"
 #include "../tiled_coast.hpp"
 #include "host_device.h"
+#include "storage_range_hook.hpp"
 #include "tidewater/detail/shore_waves.hpp"
 #include "tidewater/render/gpu_query.hpp"
 #include "tidewater/wakes.hpp"
@@ -210,6 +211,28 @@ TEST_F(GpuQueryTest, MatchesCpuQueriesOverATiledCoast) {
     EXPECT_LE(worst.foam, 0.01);
     EXPECT_LE(worst.depth, 1e-3);
     EXPECT_EQ(worst.wet_mismatch, 0u);
+}
+
+// A query answers from the full-resolution fields: on a device whose storage buffers span
+// less than the shore model's fields (here as a host's loader reports it), the GPU query
+// refuses by name rather than answer from a coarser level, and the CPU query still answers.
+TEST_F(GpuQueryTest, RefusesAShoreModelOverTheDevicesStorageRange) {
+    auto scene = test::baked(test::tiled_coast_scene(/*texels_per_wavelength=*/4.0));
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ASSERT_NE(scene->ocean.shore(), nullptr);
+    const auto range = static_cast<std::uint32_t>(scene->ocean.shore()->device_bytes() / 3);
+    auto q = render::GpuQuery::create(test::with_storage_range(context(), range));
+    ASSERT_TRUE(q.ok()) << q.error().message;
+    query_ = std::move(q).value();
+    const std::vector<glm::dvec2> pts{{1200.0, 0.0}, {0.0, 1500.0}};
+    std::vector<SurfacePoint> dev(pts.size()), cpu(pts.size());
+    const Status st = query_->query_surface(scene->ocean, 0.0, pts, dev);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::unsupported);
+    EXPECT_NE(st.error().message.find("storage buffer"), std::string::npos) << st.error().message;
+    EXPECT_NE(st.error().message.find("query on the CPU"), std::string::npos) << st.error().message;
+    EXPECT_TRUE(query_surface(scene->ocean, 0.0, pts, cpu).ok());
+    query_.reset();
 }
 
 // Wakes: 4096 disturbance points (a tug's two bow chains laid over 500 s, trimmed to

@@ -269,8 +269,7 @@ bool ShoreBuffers::rewrite_in_place(const Models& models, const std::vector<cons
     return true;
 }
 
-Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes,
-                                  std::uint64_t buffer_limit) {
+Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::uint64_t max_bytes) {
     if (holds(models) && max_bytes == max_bytes_) {
         rewritten_bytes_ = 0;
         return false;
@@ -279,12 +278,9 @@ Result<bool> ShoreBuffers::upload(const Device& ctx, const Models& models, std::
     for (const auto& m : models) wanted_models.push_back(wanted(m));
     // What the buffers may take together: the budget, and no more than one storage buffer
     // may span on this device (maxStorageBufferRange: 128 MiB on some), which bounds each.
-    if (buffer_limit == 0) {
-        VkPhysicalDeviceProperties properties;
-        ctx.vk().GetPhysicalDeviceProperties(ctx.physical_device, &properties);
-        buffer_limit = properties.limits.maxStorageBufferRange;
-    }
-    const std::uint64_t fit = std::min(max_bytes, buffer_limit);
+    VkPhysicalDeviceProperties properties;
+    ctx.vk().GetPhysicalDeviceProperties(ctx.physical_device, &properties);
+    const std::uint64_t fit = std::min<std::uint64_t>(max_bytes, properties.limits.maxStorageBufferRange);
     // Over that, the coarse level is every k-th texel of each model (the smallest k whose
     // fields take at most half of it, at most 64), sized from the tiles' pages before
     // anything is coarsened; the rest streams full-resolution tiles. A model re-baked from

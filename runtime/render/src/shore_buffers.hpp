@@ -112,11 +112,10 @@ class ShoreBuffers {
     /// Over `max_bytes` each model is drawn from every k-th texel (the smallest k whose
     /// fields take at most half of it), and the rest of `max_bytes` is a pool for the
     /// full-resolution tiles stream() brings in: coarser, never out of memory. The buffers
-    /// take no more than `buffer_limit` bytes together either (0: the most one storage
-    /// buffer may span on the device, maxStorageBufferRange), so that each can be bound.
+    /// take no more than the most one storage buffer may span on the device
+    /// (maxStorageBufferRange) together either, so that each can be bound.
     Result<bool> upload(const Device& ctx, const Models& models,
-                        std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max(),
-                        std::uint64_t buffer_limit = 0);
+                        std::uint64_t max_bytes = std::numeric_limits<std::uint64_t>::max());
     Result<bool> upload(const Device& ctx, const std::shared_ptr<const ShoreWaves>& shore) {
         return upload(ctx, Models{shore});
     }
