@@ -30,7 +30,8 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 /// wave run's residuals (rad), amplitude factors, wavevectors (rad/m), and the shared
 /// layer's depth (m), breaking and steepness scale.
 struct RowDifferences {
-    double residual = 0.0, amplitude = 0.0, wavevector = 0.0, depth = 0.0, breaking = 0.0, steepness = 0.0;
+    double residual = 0.0, amplitude = 0.0, wavevector = 0.0, depth = 0.0, breaking = 0.0, steepness = 0.0,
+           distance = 0.0;
     std::size_t amplitudes_over = 0;  ///< amplitude factors apart by more than kAmplitudeApart
 };
 constexpr float kAmplitudeApart = 3e-3f;
@@ -56,6 +57,7 @@ RowDifferences differences(const ShoreWaves& a, const ShoreWaves& b, const Shore
               widen(d.depth, x[0], y[0]);
               widen(d.breaking, x[1], y[1]);
               widen(d.steepness, x[2], y[2]);
+              widen(d.distance, x[3], y[3]);
           });
     for (std::size_t l = 0; l < a.layers().size(); ++l) {
         const std::size_t nw = a.layers()[l].count;
@@ -75,8 +77,8 @@ RowDifferences differences(const ShoreWaves& a, const ShoreWaves& b, const Shore
 void print(const char* what, const RowDifferences& d) {
     std::printf(
         "%s: residual %.2e rad, amplitude %.2e, wavevector %.2e rad/m, depth %.2e m, breaking %.2e, "
-        "steepness %.2e\n",
-        what, d.residual, d.amplitude, d.wavevector, d.depth, d.breaking, d.steepness);
+        "steepness %.2e, shore distance %.2e m\n",
+        what, d.residual, d.amplitude, d.wavevector, d.depth, d.breaking, d.steepness, d.distance);
 }
 
 std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* total) {
@@ -228,6 +230,7 @@ std::shared_ptr<const Scene> check_diffracted_stroke(const std::shared_ptr<const
     EXPECT_LT(error.breaking, 5e-3);
     EXPECT_LT(error.steepness, 1e-3);
     EXPECT_EQ(error.depth, 0.0);
+    EXPECT_EQ(error.distance, 0.0);
     EXPECT_LT(kept.amplitude, 0.01);
     EXPECT_LT(kept.amplitudes_over, effect.amplitudes_over / 1000 + 3);
     EXPECT_GT(same, total / 4);
@@ -294,21 +297,98 @@ TEST(ShoreWaterEdit, WhereTheMarchCannotBeBlendedAloneTheRowsAreBakedAgain) {
               slots_shared(*alone->bake->ocean_shore, old_model, &total));
 }
 
-TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineIsBakedInFull) {
-    const Scene scene = island_scene(island_pixels());
+/// A stroke across the waterline re-baked from a bake of the island with the rays alone:
+/// the distance field baked again in full (it is a full bake's), the waves where the
+/// stroke and the distances it moved reach.
+void check_waterline_stroke(const Scene& edited, const char* what) {
+    Scene scene = island_scene(island_pixels());
+    scene.shore.diffraction = false;
     auto first = bake_scene(scene);
     ASSERT_TRUE(first.ok()) << first.error().message;
     SceneBakeOptions options;
     options.previous = *first;
-    // A mound 8 m high in 3 m of water (r = 440 m): a new islet, a new shoreline.
-    auto islet = bake_scene(island_scene(island_pixels({440.0, 0.0}, 8.0)), options);
-    ASSERT_TRUE(islet.ok()) << islet.error().message;
-    EXPECT_FALSE((*islet)->bake->reused.ocean_shore_water_edit);
-    EXPECT_FALSE((*islet)->bake->reused.ocean_shore_land_edit);
-    // A dip on the beach, across the waterline: baked in full.
-    auto beach = bake_scene(island_scene(island_pixels({400.0, 0.0}, -2.0)), options);
-    ASSERT_TRUE(beach.ok()) << beach.error().message;
-    EXPECT_FALSE((*beach)->bake->reused.ocean_shore_water_edit);
+    Scene stroke = edited;
+    stroke.shore.diffraction = false;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto local = bake_scene(stroke, options);
+    const double local_s = seconds_since(t0);
+    ASSERT_TRUE(local.ok()) << local.error().message;
+    EXPECT_TRUE((*local)->bake->reused.ocean_shore_water_edit);
+    const auto t1 = std::chrono::steady_clock::now();
+    auto full = bake_scene(stroke);
+    const double full_s = seconds_since(t1);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    const ShoreWaves &old_model = *(*first)->bake->ocean_shore, &local_model = *(*local)->bake->ocean_shore,
+                     &full_model = *(*full)->bake->ocean_shore;
+    const RowDifferences effect = differences(old_model, full_model);
+    const RowDifferences error = differences(local_model, full_model);
+    const RowDifferences kept = differences(local_model, full_model, &local_model, &old_model);
+    std::printf("%s:\n", what);
+    print("  its effect (full bakes before and after)", effect);
+    print("  re-baked where it reaches, against a full bake", error);
+    print("  in the slots it kept", kept);
+    std::size_t total = 0;
+    const std::size_t same = slots_shared(local_model, old_model, &total);
+    std::printf("  %zu of %zu stored slots kept; %.3f s re-baked where it reaches, %.3f s in full\n", same, total,
+                local_s, full_s);
+    const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *(*local)->bake->shoreline,
+                     &full_line = *(*full)->bake->shoreline;
+    EXPECT_FALSE(old_line.signed_distance == full_line.signed_distance) << "the shoreline moves";
+    EXPECT_TRUE(new_line.signed_distance == full_line.signed_distance);
+    EXPECT_TRUE(new_line.gradient == full_line.gradient);
+    EXPECT_TRUE(new_line.depth == full_line.depth);
+    EXPECT_GT(effect.depth, 1.0);
+    EXPECT_LT(error.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(error.amplitude, 1e-3);
+    EXPECT_LT(error.wavevector, 1e-4);
+    EXPECT_LT(error.breaking, 1e-3);
+    EXPECT_LT(error.steepness, 1e-3);
+    EXPECT_EQ(error.depth, 0.0);
+    EXPECT_EQ(error.distance, 0.0);
+    EXPECT_LT(kept.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(kept.amplitude, 1e-3);
+    EXPECT_GT(same, total / 4);
+    EXPECT_LT(same, total);
+}
+
+TEST(ShoreWaterEdit, AStrokeAcrossTheWaterlineIsReBakedWhereItReaches) {
+    // A dip of 2 m on the beach (r = 400 m, the waterline): the sea comes in over it.
+    check_waterline_stroke(island_scene(island_pixels({400.0, 0.0}, -2.0)), "a dip across the waterline");
+    // A mound 3 m high on the far beach, 20 m inside the waterline: the land goes out.
+    check_waterline_stroke(island_scene(island_pixels({-380.0, 0.0}, 3.0)), "a mound across the waterline");
+}
+
+TEST(ShoreWaterEdit, AStrokeAcrossTheWaterlineUnderDiffractedWavesIsReBakedWhereItReaches) {
+    SceneBakeOptions keep;
+    keep.keep_marches = true;
+    auto first = bake_scene(island_scene(island_pixels()), keep);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    const auto one = check_diffracted_stroke(*first, island_scene(island_pixels({400.0, 0.0}, -2.0)),
+                                             "a dip across the waterline, the march taken up again");
+    ASSERT_NE(one, nullptr);
+    const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *one->bake->shoreline;
+    EXPECT_FALSE(old_line.signed_distance == new_line.signed_distance);
+}
+
+// Where the distance field is finer than the model's grid, the model's distances are the
+// field's resampled: a stroke that moves the shoreline is baked in full.
+TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineUnderAFinerDistanceFieldIsBakedInFull) {
+    Scene scene = island_scene(island_pixels());
+    scene.shore.distance_resolution = 512;
+    scene.shore.diffraction = false;
+    auto first = bake_scene(scene);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    SceneBakeOptions options;
+    options.previous = *first;
+    Scene beach = island_scene(island_pixels({400.0, 0.0}, -2.0));
+    beach.shore.distance_resolution = 512;
+    beach.shore.diffraction = false;
+    auto edited = bake_scene(beach, options);
+    ASSERT_TRUE(edited.ok()) << edited.error().message;
+    EXPECT_FALSE((*edited)->bake->reused.ocean_shore_water_edit);
+    auto full = bake_scene(beach);
+    ASSERT_TRUE(full.ok()) << full.error().message;
+    EXPECT_TRUE(test::same_tiles(*(*edited)->bake->ocean_shore, *(*full)->bake->ocean_shore));
 }
 
 }  // namespace

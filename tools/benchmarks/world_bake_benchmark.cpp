@@ -299,11 +299,17 @@ int main(int argc, char** argv) {
         std::sort(water_s.begin(), water_s.end());
         water.seconds = water_s[water_s.size() / 2];
     }
+    // A stroke across the waterline (1.5 m dug over 25 m where the ground meets the sea,
+    // on the same line): the shoreline moves.
+    int shore_i = side / 2;
+    while (shore_i < side - 30 && scene.terrain.height_at(pixel_xz(scene, shore_i, side / 2)) > 0.0) ++shore_i;
+    const Stroke waterline = re_bake_stroke(scene, *baked, shore_i, side / 2, -1.5);
     Stroke river;
     river.seconds = -1.0;  // -1 s in the report: no river
     if (with_river()) river = re_bake_river(scene, *baked);
-    if (!land.error.empty() || !water.error.empty() || !river.error.empty()) {
-        std::fprintf(stderr, "%s%s%s\n", land.error.c_str(), water.error.c_str(), river.error.c_str());
+    if (!land.error.empty() || !water.error.empty() || !waterline.error.empty() || !river.error.empty()) {
+        std::fprintf(stderr, "%s%s%s%s\n", land.error.c_str(), water.error.c_str(), waterline.error.c_str(),
+                     river.error.c_str());
         fs::remove_all(dir);
         return 1;
     }
@@ -342,13 +348,14 @@ int main(int argc, char** argv) {
         "{\"side_m\": %d, \"waves\": %d, \"seabed_m\": %.0f, \"model_resolution\": %d, \"texel_m\": %.3f, "
         "\"make_s\": %.2f, \"bake_s\": %.2f, \"save_s\": %.2f, \"load_s\": %.2f, \"read_all_s\": %.2f, "
         "\"land_edit_s\": %.3f, \"land_edit_local\": %s, \"water_edit_s\": %.3f, \"water_edit_max_s\": %.3f, "
-        "\"water_edit_local\": %s, \"river_edit_s\": %.3f, \"river_edit_local\": %s, "
+        "\"water_edit_local\": %s, \"waterline_edit_s\": %.3f, \"waterline_edit_local\": %s, "
+        "\"river_edit_s\": %.3f, \"river_edit_local\": %s, "
         "\"peak_rss_mb\": %.0f, "
         "\"folder_mb\": %.1f, \"tiles\": %zu, \"stored_tiles\": %zu, \"runs\": %s, \"model_mb\": %.1f, "
         "\"gpu_shore_mb\": %.1f}\n",
         side, waves, seabed, resolution, model_texel, make, bake, save, load, read_all, land.seconds,
-        land.local ? "true" : "false", water.seconds, water_s.back(), water.local ? "true" : "false", river.seconds,
-        river.local ? "true" : "false", peak, static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(), model_mb,
-        gpu_mb);
+        land.local ? "true" : "false", water.seconds, water_s.back(), water.local ? "true" : "false", waterline.seconds,
+        waterline.local ? "true" : "false", river.seconds, river.local ? "true" : "false", peak,
+        static_cast<double>(bytes) / 1e6, pages, stored, runs.c_str(), model_mb, gpu_mb);
     return 0;
 }

@@ -165,7 +165,10 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
                                                  fmt::format("the distance field given ({0}x{0}) is not the one the "
                                                              "scene's terrain and distance resolution ({1}x{1}) make",
                                                              given->resolution, distance_resolution)});
-    } else if (same_ocean_shore_inputs(scene, distance_resolution, options.previous.get())) {
+    }
+    // A distance field baked here for an edit that then bakes in full.
+    std::shared_ptr<const ShoreField> baked_line;
+    if (!given && same_ocean_shore_inputs(scene, distance_resolution, options.previous.get())) {
         const SceneBake& old = *options.previous->bake;
         if (old.terrain == terrain) {
             bake.ocean_shore = old.ocean_shore;
@@ -195,15 +198,32 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
         }
         // An edit of the seabed, under the water: the waves re-marched where it reaches; with
         // diffraction, each wave's parabolic march taken up again from what it kept.
-        if (!scene.shore.diffraction || old.ocean_marches)
-            if (auto edit = detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
-                                                      scene.ocean.waves().waves(), scene.shore.breaking_index,
-                                                      old.shoreline, old.ocean_shore, options.threads,
-                                                      scene.shore.diffraction ? old.ocean_marches : nullptr)) {
+        if (!scene.shore.diffraction || old.ocean_marches) {
+            auto water_edit = [&](const std::shared_ptr<const ShoreField>& line) {
+                return detail::rebake_water_edit(change, old.terrain, terrain, scene.water_level(),
+                                                 scene.ocean.waves().waves(), scene.shore.breaking_index, old.shoreline,
+                                                 old.ocean_shore, options.threads,
+                                                 scene.shore.diffraction ? old.ocean_marches : nullptr, line);
+            };
+            auto edit = water_edit(nullptr);
+            if (!edit && change && *change && distance_resolution == scene.shore.resolution &&
+                old.shoreline->resolution == distance_resolution) {
+                // The shoreline moved (or the edit reaches further): the distance field
+                // baked again in full, which a full bake needs too, and the waves re-baked
+                // where the edit and the distances it moved reach.
+                auto line = bake_shoreline(scene, terrain, options, distance_resolution, [&](double f) {
+                    progress.report("shoreline", begin, begin + 0.3 * (1.0 - begin), f);
+                });
+                if (!line) return line.error();
+                baked_line = std::move(line).value();
+                edit = water_edit(baked_line);
+            }
+            if (edit) {
                 take(edit, &SceneBake::Reused::ocean_shore_water_edit);
                 if (options.keep_marches) bake.ocean_marches = std::move(edit->marches);
                 return {};
             }
+        }
     }
     // One shoreline bake serves the distance field and the shore model, which samples
     // it: it may be finer than the model's grid, never coarser.
@@ -214,7 +234,7 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
                                      "which samples it: give a distance resolution of at least {1}",
                                      distance_resolution, scene.shore.resolution)});
     const double shoreline_share = begin + 0.3 * (1.0 - begin);
-    std::shared_ptr<const ShoreField> shoreline = std::move(given);
+    std::shared_ptr<const ShoreField> shoreline = given ? std::move(given) : std::move(baked_line);
     if (!shoreline) {
         auto baked = bake_shoreline(scene, terrain, options, distance_resolution,
                                     [&](double f) { progress.report("shoreline", begin, shoreline_share, f); });

@@ -69,6 +69,63 @@ bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSea
     return true;
 }
 
+/// Where the distance field `after` differs from `before` (the same grid): the bounding
+/// ranges of the texels whose distance moved, and of the wet ones (after) whose normal
+/// moved, which the waves' rows read. Empty where none.
+struct DistancesMoved {
+    TexelRange distance, normal;
+};
+DistancesMoved distances_moved(const ShoreField& before, const ShoreField& after, unsigned threads) {
+    const int n = before.resolution;
+    std::vector<glm::ivec4> per_row(static_cast<std::size_t>(n), glm::ivec4(n, -1, n, -1));
+    parallel_for_each(static_cast<std::size_t>(n), threads, [&](std::size_t row) {
+        const int j = static_cast<int>(row);
+        glm::ivec4& r = per_row[row];
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = before.index(i, j);
+            if (before.signed_distance[k] != after.signed_distance[k])
+                r = {std::min(r.x, i), std::max(r.y, i), r.z, r.w};
+            if (before.gradient[k] != after.gradient[k] && after.depth[k] > 0.0f)
+                r = {r.x, r.y, std::min(r.z, i), std::max(r.w, i)};
+        }
+    });
+    DistancesMoved moved{{n, n, -1, -1}, {n, n, -1, -1}};
+    auto add = [](TexelRange& m, int lo, int hi, int j) {
+        if (lo <= hi) m = {std::min(m.i0, lo), std::min(m.j0, j), std::max(m.i1, hi), std::max(m.j1, j)};
+    };
+    for (int j = 0; j < n; ++j) {
+        const glm::ivec4 r = per_row[static_cast<std::size_t>(j)];
+        add(moved.distance, r.x, r.y, j);
+        add(moved.normal, r.z, r.w, j);
+    }
+    return moved;
+}
+
+/// Whether every tile of `tiles` (over `after`'s grid) that holds a texel of `r` is dry
+/// land over the shoreline `line` exactly where the bake left it dry: every texel dry and
+/// a tile or more from the shoreline, at the distance the bake's grid holds there.
+bool same_dry_tiles(const ShoreTiles& tiles, const TexelRange& r, const GridDepth& after, const ShoreField& line) {
+    const int m = tiles.tiles_per_side, n = tiles.resolution, kTile = ShoreTiles::kTile;
+    const bool on_line = after.grid == ShoreGrid{line.resolution, line.texel, line.corner};
+    for (int tj = std::max(0, (r.j0 - 1) / kTile); tj <= std::min(m - 1, r.j1 / kTile); ++tj)
+        for (int ti = std::max(0, (r.i0 - 1) / kTile); ti <= std::min(m - 1, r.i1 / kTile); ++ti) {
+            const std::size_t tile =
+                static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
+            bool dry = true;
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && dry; ++k) {
+                const std::size_t g = tiles.grid_index(tile, k);
+                const int i = static_cast<int>(g % static_cast<std::size_t>(n)),
+                          j = static_cast<int>(g / static_cast<std::size_t>(n));
+                const float h = after.at(i, j);
+                const float d = on_line ? line.signed_distance[g]
+                                        : resampled_distance(line, after.centre(i, j), static_cast<double>(h));
+                dry = far_dry_land(static_cast<double>(h), static_cast<double>(d), after.grid.texel);
+            }
+            if (dry != (tiles.page(ti, tj) == gpu::kShoreDrySlot)) return false;
+        }
+    return true;
+}
+
 /// Values over a range of texels, row-major.
 template <typename T>
 struct Patch {
@@ -94,6 +151,7 @@ struct RunEdit {
     const ShoreWaveLayer* layer = nullptr;
     GridDepth before, after;
     TexelRange edit;                 ///< texels whose depth may have changed
+    TexelRange normals_moved;        ///< texels whose shore normal or distance may have changed (the shoreline moved)
     std::vector<char> any_deep;      ///< per wave: the grid has deep water for it (before and after alike)
     std::vector<MarchWindow> march;  ///< per wave: its phase after, in a window
     TexelRange own;                  ///< its windows and a texel round them: its phase baked again
@@ -286,7 +344,7 @@ Patch<float> rows_before_cap(std::span<const Wave> waves, const RunEdit& r, cons
         if (known && known->range.contains(i, j))
             std::copy_n((*known)(i, j), 4 * nw, fields(i, j));
         else if (r.uncapped_before && !r.own.contains(i, j) && !r.edit.contains(i, j) &&
-                 r.uncapped_before->texel(i, j)[1] == 0.0f)
+                 !r.normals_moved.contains(i, j) && r.uncapped_before->texel(i, j)[1] == 0.0f)
             // Its phase and depth as before and nothing capped it: the stored rows are
             // the ones before the cap.
             std::copy_n(r.layer->tiles.texel(i, j), 4 * nw, fields(i, j));
@@ -407,7 +465,8 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                                            double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline_ptr,
                                            const std::shared_ptr<const ShoreWaves>& model_ptr, unsigned threads,
-                                           const std::shared_ptr<const ShoreMarches>& marches) {
+                                           const std::shared_ptr<const ShoreMarches>& marches,
+                                           const std::shared_ptr<const ShoreField>& shoreline_after) {
     if (!change) return std::nullopt;
     if (!*change) return WaterEdit{shoreline_ptr, model_ptr, marches};  // the same pixels in another image
     const WorldRect& reach = **change;
@@ -422,17 +481,39 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     auto edited = [&](const ShoreGrid& g) { return texels_in(g.resolution, g.texel, g.corner, reach); };
 
     // The water stays where the seabed moved, on every grid: the shoreline keeps its contour.
+    // Or the shoreline after the edit is given, on the model's own grid: where its
+    // distances and normals moved, the rows are baked again.
+    const ShoreGrid& model_grid = model.grid();
+    const bool line_moves = shoreline_after != nullptr;
+    if (line_moves && !(distance_grid == model_grid && shoreline_after->resolution == shoreline.resolution &&
+                        shoreline_after->texel == shoreline.texel && shoreline_after->corner == shoreline.corner))
+        return std::nullopt;
     const TexelRange distance_edit = edited(distance_grid);
-    if (!distance_edit.empty()) {
+    if (!distance_edit.empty() && !line_moves) {
         const auto [b, a] = depths(distance_grid);
         if (!stays_wet(distance_edit, distance_grid.resolution, b, a)) return std::nullopt;
     }
-    const ShoreGrid& model_grid = model.grid();
+    const DistancesMoved line_moved =
+        line_moves ? distances_moved(shoreline, *shoreline_after, threads) : DistancesMoved{};
     const TexelRange model_edit = edited(model_grid);
     const auto [model_before, model_after] = depths(model_grid);
-    if (!model_edit.empty() && (!stays_wet(model_edit, model_grid.resolution, model_before, model_after) ||
-                                !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()),
-                                                 breaking_index, model_after)))
+    if (!model_edit.empty() &&
+        ((!line_moves && !stays_wet(model_edit, model_grid.resolution, model_before, model_after)) ||
+         !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()), breaking_index,
+                          model_after)))
+        return std::nullopt;
+    // Where the distances moved, a tile of dry land stays one and no other becomes one;
+    // where the normals moved under water, the waves' rows are baked again.
+    auto reach_of = [&](const TexelRange& m) {
+        return m.empty() ? WorldRect{} : edges(model_grid, m.i0, m.j0, m.i1 + 1, m.j1 + 1);
+    };
+    const WorldRect distance_reach = reach_of(line_moved.distance), normal_reach = reach_of(line_moved.normal);
+    // A coarse grid's texels whose taps of the model's grid reach `m` (by `reach`).
+    auto moved_on = [&](const ShoreGrid& g, const TexelRange& m, const WorldRect& r) {
+        return m.empty() ? TexelRange{} : grown(texels_in(g.resolution, g.texel, g.corner, r), 1, g.resolution);
+    };
+    if (!line_moved.distance.empty() &&
+        !same_dry_tiles(model.shared(), line_moved.distance, model_after, *shoreline_after))
         return std::nullopt;
     std::vector<RunEdit> runs;
     for (const ShoreWaveLayer& layer : model.layers()) {
@@ -442,9 +523,16 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         if (layer.grid == model_grid && !marches) r.uncapped_before = &model.shared();
         std::tie(r.before, r.after) = depths(layer.grid);
         r.edit = edited(layer.grid);
-        if (!r.edit.empty() && (!stays_wet(r.edit, layer.grid.resolution, r.before, r.after) ||
+        if (!r.edit.empty() && ((!line_moves && !stays_wet(r.edit, layer.grid.resolution, r.before, r.after)) ||
                                 !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count),
                                                  breaking_index, r.after)))
+            return std::nullopt;
+        r.normals_moved =
+            layer.grid == model_grid ? line_moved.normal : moved_on(layer.grid, line_moved.normal, normal_reach);
+        const TexelRange distances_moved_here =
+            layer.grid == model_grid ? line_moved.distance : moved_on(layer.grid, line_moved.distance, distance_reach);
+        if (!distances_moved_here.empty() &&
+            !same_dry_tiles(layer.tiles, distances_moved_here, r.after, *shoreline_after))
             return std::nullopt;
         // Whether a wave has deep water (its sources where it has) stays as it was: a
         // layer with open sea has it for every wave; otherwise the stored residuals tell
@@ -466,16 +554,20 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         }
         runs.push_back(std::move(r));
     }
-    if (distance_edit.empty() && model_edit.empty() &&
+    if (distance_edit.empty() && model_edit.empty() && line_moved.distance.empty() && line_moved.normal.empty() &&
         std::all_of(runs.begin(), runs.end(), [](const RunEdit& r) { return r.edit.empty(); }))
         return WaterEdit{shoreline_ptr, model_ptr, marches};  // the change lies between texel centres
 
-    // The distance field: the same distances, the new depths under the edit.
-    auto field = std::make_shared<ShoreField>(shoreline);
-    if (!distance_edit.empty()) {
-        std::vector<float>& depth = field->depth.write();
-        const GridDepth a{&after, water_level, distance_grid};
-        each_texel(distance_edit, threads, [&](int i, int j) { depth[field->index(i, j)] = a.at(i, j); });
+    // The distance field: the one given, or the same distances with the new depths under the edit.
+    std::shared_ptr<const ShoreField> field = shoreline_after;
+    if (!field) {
+        auto kept = std::make_shared<ShoreField>(shoreline);
+        if (!distance_edit.empty()) {
+            std::vector<float>& depth = kept->depth.write();
+            const GridDepth a{&after, water_level, distance_grid};
+            each_texel(distance_edit, threads, [&](int i, int j) { depth[kept->index(i, j)] = a.at(i, j); });
+        }
+        field = std::move(kept);
     }
 
     // Each wave marched again round the edit, in a window.
@@ -518,8 +610,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     // What each run bakes again: its windows and a texel round them (the wavevector's
     // differences). What the cap reads moves in part of them: round that part (the cap's
     // taps, a texel of the coarsest grid) and the edit every grid's rows are baked again.
-    const GridNormals normals{shoreline, model_grid};
+    const GridNormals normals{*field, model_grid};
     WorldRect region = reach;
+    if (!line_moved.normal.empty()) unite(region, normal_reach);
     double coarsest = model_grid.texel;
     for (std::size_t k = 0; k < runs.size(); ++k) {
         RunEdit& r = runs[k];
@@ -721,12 +814,18 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     Patch<float> shared_values;
     shared_values.assign(shared_rows, kShoreSharedRows, 0.0f);
     each_texel(shared_rows, threads, [&](int i, int j) {
-        shared_texel_rows(waves, before_cap, model_grid, i, j, *model_depth(i, j),
-                          model.texel_values(i, j).shore_distance(), *model_ratio(i, j), shared_values(i, j),
-                          energies.empty()
-                              ? DiffractedEnergy{}
-                              : marched_energy_at(energies, model_grid, i, j,
-                                                  model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5)));
+        // The distance as the bake's grid holds it (a texel of a tile's apron may lie in a
+        // tile of dry land, whose stored values are not its own).
+        const float distance =
+            model_grid == distance_grid
+                ? field->signed_distance[field->index(i, j)]
+                : resampled_distance(*field, model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5),
+                                     static_cast<double>(*model_depth(i, j)));
+        shared_texel_rows(
+            waves, before_cap, model_grid, i, j, *model_depth(i, j), distance, *model_ratio(i, j), shared_values(i, j),
+            energies.empty() ? DiffractedEnergy{}
+                             : marched_energy_at(energies, model_grid, i, j,
+                                                 model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5)));
     });
     CapRatios* ratios =
         marches_after && marches_after->ratios.slots() == shared.stored_tiles() ? &marches_after->ratios : nullptr;
@@ -739,6 +838,14 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                             static_cast<float>(*model_ratio(i, j)));
         },
         threads);
+    // Where only the distance moved (on land, or where no wave reads the normal): the
+    // shared layer's distance alone.
+    if (!line_moved.distance.empty()) {
+        const TexelRange& d = line_moved.distance;
+        shared.write_texels(
+            d.i0, d.j0, d.i1 + 1, d.j1 + 1,
+            [&](float* t, int i, int j) { t[3] = field->signed_distance[field->index(i, j)]; }, threads);
+    }
     if (march_only) {
         std::vector<std::pair<const ShoreGrid*, const RunMarchChanges*>> changed;
         for (std::size_t l = 0; l < runs.size(); ++l)

@@ -65,7 +65,7 @@ Result<ShoreField> resampled_grid(const Terrain& terrain, double water_level, co
             const double depth = water_level - terrain.height_at(p);
             if (!std::isfinite(depth)) finite = false;
             depths[k] = static_cast<float>(depth);
-            distances[k] = static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+            distances[k] = resampled_distance(from, p, depth);
             gradient[k] = SharedDirections::encode(detail::resampled_normal(from, p));
         }
     });

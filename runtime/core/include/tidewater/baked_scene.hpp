@@ -58,10 +58,11 @@ struct SceneBake {
         /// pixels changed, or a river's channel re-carved, where no water is within a
         /// texel): the same as a full bake.
         bool ocean_shore_land_edit = false;
-        /// The same, re-baked round an edit of the seabed (pixels changed where the water
-        /// stays, on every grid): each wave marched again in a window round the edit and
-        /// downstream of it, until its phase moves by under kOpenSeaPhaseTolerance, and the
-        /// fields baked again there; every other tile is the previous bake's.
+        /// The same, re-baked round an edit of the seabed or across the waterline: each
+        /// wave marched again in a window round the edit and downstream of it, until its
+        /// phase moves by under kOpenSeaPhaseTolerance, and the fields baked again there;
+        /// every other tile is the previous bake's. Across the waterline the distance
+        /// field (`shoreline`) is baked again in full first.
         bool ocean_shore_water_edit = false;
     } reused;
     int distance_resolution = 0;  ///< texels per side of the shoreline's distance field (0: none baked)

@@ -8,6 +8,7 @@
 // a ShoreField is immutable and safe to share.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <glm/vec2.hpp>
@@ -128,6 +129,13 @@ struct ShoreField {
     /// edges): not of unit length between texels whose directions differ.
     glm::dvec2 gradient_at(glm::dvec2 p) const;
 };
+
+/// The shore distance a grid other than the shoreline's holds at `p` (world xz) over water
+/// `depth` deep (m; <= 0 on land): the shoreline's, signed by the texel's own depth so that
+/// the two agree (m, in float as the grid holds it).
+inline float resampled_distance(const ShoreField& from, glm::dvec2 p, double depth) {
+    return static_cast<float>(std::copysign(std::abs(from.distance_at(p)), depth > 0.0 ? 1.0 : -1.0));
+}
 
 /// Bakes the shore of `terrain` at `water_level`. Fails on non-finite terrain heights
 /// (naming where) or out-of-range options, and with ErrorCode::cancelled when cancelled.

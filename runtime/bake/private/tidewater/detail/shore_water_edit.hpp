@@ -1,7 +1,10 @@
 // A terrain edit under the water, re-baked where it reaches (private to Tidewater::bake).
 // When an edit changes the seabed only where the water stays (every texel under it and a
 // step round it wet before and after, on every grid of the model and the shoreline's),
-// the shoreline keeps its contour and its distances, and the waves their sources; what
+// the shoreline keeps its contour and its distances, and the waves their sources. An
+// edit across the waterline is given the distance field baked again: where its normals
+// moved under water the rows are baked again too, and where its distances alone moved,
+// the shared layer's distance. What
 // changes is each wave's phase round the edit and downstream of it, toward the shore, and
 // with it the waves' amplitudes and the breaking cap. Each wave is marched again in a
 // window that grows until the phase along its sides moved by under
@@ -35,11 +38,12 @@ struct WaterEdit {
 
 /// `shoreline` and `model` (non-null, baked over `before` at `water_level` for `waves`
 /// with `breaking_index`) for `after`, when the two terrains' heights differ (`change`:
-/// heightmap_change of the two) only where the water stays, no tile of the model turns
-/// from open sea to stored or back, and no wave gains or loses deep water on its grid. Otherwise nullopt:
-/// the caller bakes in full. Within the windows the values are a full bake's to the
-/// tolerance; outside them, the previous bake's. A model baked with the parabolic march
-/// (diffraction) needs what its march kept (`marches`, baked with it): each wave's march
+/// heightmap_change of the two) only where the water stays, or `shoreline_after` (the
+/// distance field baked over `after`, on the model's grid) is given; no tile of the model
+/// turns from open sea to stored or back or from dry land to stored or back, and no wave
+/// gains or loses deep water on its grid. Otherwise nullopt: the caller bakes in full.
+/// Within the windows the values are a full bake's to the tolerance; outside them, the
+/// previous bake's. A model baked with the parabolic march (diffraction) needs what its march kept (`marches`, baked with it): each wave's march
 /// is then taken up again round the edit and downstream of it (the random sea's first);
 /// where its amplitude moved by over kMarchAmplitudeTolerance, the march's blend, its
 /// energy and the foam are made again from what the model holds (the rays and the cap do
@@ -48,6 +52,7 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
                                            double water_level, std::span<const Wave> waves, double breaking_index,
                                            const std::shared_ptr<const ShoreField>& shoreline,
                                            const std::shared_ptr<const ShoreWaves>& model, unsigned threads,
-                                           const std::shared_ptr<const ShoreMarches>& marches = nullptr);
+                                           const std::shared_ptr<const ShoreMarches>& marches = nullptr,
+                                           const std::shared_ptr<const ShoreField>& shoreline_after = nullptr);
 
 }  // namespace tidewater::detail
