@@ -43,8 +43,9 @@ struct WaterEdit {
 /// turns from open sea to stored or back or from dry land to stored or back, and no wave
 /// gains or loses deep water on its grid. Otherwise nullopt: the caller bakes in full.
 /// Within the windows the values are a full bake's to the tolerance; outside them, the
-/// previous bake's. A model baked with the parabolic march (diffraction) needs what its march kept (`marches`, baked with it): each wave's march
-/// is then taken up again round the edit and downstream of it (the random sea's first);
+/// previous bake's. A model baked with the parabolic march (diffraction) needs what its
+/// march kept (`marches`, baked with it): each wave's march is then taken up again round
+/// the edit and downstream of it (the random sea's first);
 /// where its amplitude moved by over kMarchAmplitudeTolerance, the march's blend, its
 /// energy and the foam are made again from what the model holds (the rays and the cap do
 /// not depend on the march), or, where that cannot be told, the texels are baked again.
