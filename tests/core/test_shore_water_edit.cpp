@@ -370,6 +370,33 @@ TEST(ShoreWaterEdit, AStrokeAcrossTheWaterlineUnderDiffractedWavesIsReBakedWhere
     EXPECT_FALSE(old_line.signed_distance == new_line.signed_distance);
 }
 
+// A river from the island's slope out into the sea (the shoreline at r = 400 m), its
+// discharge raised by a fifth: the channel is re-carved to its mouth, under the sea, and
+// the waterline moves along its banks. The dry tiles it crosses inland stay dry; the
+// shore is re-baked where the new channel and the distances it moved reach.
+TEST(ShoreWaterEdit, ARiverReCarvedToItsMouthIsReBakedWhereItReaches) {
+    auto with_river = [](double discharge) {
+        Scene scene = island_scene(island_pixels());
+        SceneRiver river;
+        river.name = "brook";
+        river.path = {{-20.0, 150.0}, {0.0, 300.0}, {10.0, 440.0}};
+        river.width = {8.0, 10.0, 12.0};
+        river.discharge = discharge;
+        scene.rivers.push_back(river);
+        return scene;
+    };
+    SceneBakeOptions keep;
+    keep.keep_marches = true;
+    auto first = bake_scene(with_river(5.0), keep);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    const ShoreTiles& shared = (*first)->bake->ocean_shore->shared();
+    ASSERT_NE(std::find(shared.pages.begin(), shared.pages.end(), gpu::kShoreDrySlot), shared.pages.end());
+    const auto edited = check_diffracted_stroke(*first, with_river(6.0), "a river's discharge raised by a fifth");
+    ASSERT_NE(edited, nullptr);
+    EXPECT_FALSE((*first)->bake->shoreline->signed_distance == edited->bake->shoreline->signed_distance)
+        << "the waterline moves along the banks";
+}
+
 // Where the distance field is finer than the model's grid, the model's distances are the
 // field's resampled: a stroke that moves the shoreline is baked in full.
 TEST(ShoreWaterEdit, AStrokeThatMovesTheShorelineUnderAFinerDistanceFieldIsBakedInFull) {

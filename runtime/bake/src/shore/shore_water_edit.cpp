@@ -45,30 +45,6 @@ bool stays_wet(const TexelRange& r, int n, const GridDepth& before, const GridDe
     return true;
 }
 
-/// Whether every tile whose slot holds a texel of `r` keeps its kind over the depths
-/// after: open sea where the bake left it out as open sea, stored where it stored it.
-bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSeaTest& test, double breaking_index,
-                     const GridDepth& after) {
-    const int m = tiles.tiles_per_side, n = tiles.resolution, kTile = ShoreTiles::kTile;
-    for (int tj = std::max(0, (r.j0 - 1) / kTile); tj <= std::min(m - 1, r.j1 / kTile); ++tj)
-        for (int ti = std::max(0, (r.i0 - 1) / kTile); ti <= std::min(m - 1, r.i1 / kTile); ++ti) {
-            const std::uint32_t page = tiles.page(ti, tj);
-            if (page == gpu::kShoreDrySlot) return false;
-            const std::size_t tile =
-                static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
-            bool open = !test.open_folds;
-            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && open; ++k) {
-                const std::size_t g = tiles.grid_index(tile, k);
-                open = open_sea_texel(test,
-                                      static_cast<double>(after.at(static_cast<int>(g % static_cast<std::size_t>(n)),
-                                                                   static_cast<int>(g / static_cast<std::size_t>(n)))),
-                                      breaking_index);
-            }
-            if (open != (page == gpu::kShoreOpenSlot)) return false;
-        }
-    return true;
-}
-
 /// Where the distance field `after` differs from `before` (the same grid): the bounding
 /// ranges of the texels whose distance moved, and of the wet ones (after) whose normal
 /// moved, which the waves' rows read. Empty where none.
@@ -101,27 +77,40 @@ DistancesMoved distances_moved(const ShoreField& before, const ShoreField& after
     return moved;
 }
 
-/// Whether every tile of `tiles` (over `after`'s grid) that holds a texel of `r` is dry
-/// land over the shoreline `line` exactly where the bake left it dry: every texel dry and
-/// a tile or more from the shoreline, at the distance the bake's grid holds there.
-bool same_dry_tiles(const ShoreTiles& tiles, const TexelRange& r, const GridDepth& after, const ShoreField& line) {
+/// The shore distance the bake's grid `after.grid` holds at its texel (i, j), index g,
+/// `h` deep, over the shoreline `line`: the line's own on its grid, else resampled.
+float held_distance(const ShoreField& line, const GridDepth& after, std::size_t g, int i, int j, float h) {
+    if (after.grid == ShoreGrid{line.resolution, line.texel, line.corner}) return line.signed_distance[g];
+    return resampled_distance(line, after.centre(i, j), static_cast<double>(h));
+}
+
+/// Whether every tile whose slot holds a texel of `r` keeps the kind the bake gave it
+/// (plan_tiles) over the depths after and the shoreline `line` after: open sea where the
+/// bake left it out as open sea, dry land where it left it dry, stored where it stored
+/// it. `ask_open` false: where the depths did not change, whether it is open sea stays.
+bool same_tile_kinds(const ShoreTiles& tiles, const TexelRange& r, const OpenSeaTest& test, double breaking_index,
+                     const GridDepth& after, const ShoreField& line, bool ask_open = true) {
     const int m = tiles.tiles_per_side, n = tiles.resolution, kTile = ShoreTiles::kTile;
-    const bool on_line = after.grid == ShoreGrid{line.resolution, line.texel, line.corner};
     for (int tj = std::max(0, (r.j0 - 1) / kTile); tj <= std::min(m - 1, r.j1 / kTile); ++tj)
         for (int ti = std::max(0, (r.i0 - 1) / kTile); ti <= std::min(m - 1, r.i1 / kTile); ++ti) {
+            const std::uint32_t page = tiles.page(ti, tj);
             const std::size_t tile =
                 static_cast<std::size_t>(tj) * static_cast<std::size_t>(m) + static_cast<std::size_t>(ti);
-            bool dry = true;
-            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && dry; ++k) {
+            bool open = ask_open ? !test.open_folds : page == gpu::kShoreOpenSlot, dry = true;
+            for (std::size_t k = 0; k < ShoreTiles::kSlotTexels && ((ask_open && open) || dry); ++k) {
                 const std::size_t g = tiles.grid_index(tile, k);
                 const int i = static_cast<int>(g % static_cast<std::size_t>(n)),
                           j = static_cast<int>(g / static_cast<std::size_t>(n));
                 const float h = after.at(i, j);
-                const float d = on_line ? line.signed_distance[g]
-                                        : resampled_distance(line, after.centre(i, j), static_cast<double>(h));
-                dry = far_dry_land(static_cast<double>(h), static_cast<double>(d), after.grid.texel);
+                if (dry)
+                    dry = far_dry_land(static_cast<double>(h),
+                                       static_cast<double>(held_distance(line, after, g, i, j, h)), after.grid.texel);
+                if (ask_open && open) open = open_sea_texel(test, static_cast<double>(h), breaking_index);
             }
-            if (dry != (tiles.page(ti, tj) == gpu::kShoreDrySlot)) return false;
+            const std::uint32_t kind = open  ? static_cast<std::uint32_t>(gpu::kShoreOpenSlot)
+                                       : dry ? static_cast<std::uint32_t>(gpu::kShoreDrySlot)
+                                             : static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot);
+            if (kind != std::min(page, static_cast<std::uint32_t>(gpu::kShoreFirstStoredSlot))) return false;
         }
     return true;
 }
@@ -497,10 +486,11 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         line_moves ? distances_moved(shoreline, *shoreline_after, threads) : DistancesMoved{};
     const TexelRange model_edit = edited(model_grid);
     const auto [model_before, model_after] = depths(model_grid);
+    const ShoreField& line_after = line_moves ? *shoreline_after : shoreline;
     if (!model_edit.empty() &&
         ((!line_moves && !stays_wet(model_edit, model_grid.resolution, model_before, model_after)) ||
          !same_tile_kinds(model.shared(), model_edit, open_sea_test(waves, 0, waves.size()), breaking_index,
-                          model_after)))
+                          model_after, line_after)))
         return std::nullopt;
     // Where the distances moved, a tile of dry land stays one and no other becomes one;
     // where the normals moved under water, the waves' rows are baked again.
@@ -512,8 +502,9 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     auto moved_on = [&](const ShoreGrid& g, const TexelRange& m, const WorldRect& r) {
         return m.empty() ? TexelRange{} : grown(texels_in(g.resolution, g.texel, g.corner, r), 1, g.resolution);
     };
+    const OpenSeaTest no_test{};
     if (!line_moved.distance.empty() &&
-        !same_dry_tiles(model.shared(), line_moved.distance, model_after, *shoreline_after))
+        !same_tile_kinds(model.shared(), line_moved.distance, no_test, breaking_index, model_after, line_after, false))
         return std::nullopt;
     std::vector<RunEdit> runs;
     for (const ShoreWaveLayer& layer : model.layers()) {
@@ -525,14 +516,14 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
         r.edit = edited(layer.grid);
         if (!r.edit.empty() && ((!line_moves && !stays_wet(r.edit, layer.grid.resolution, r.before, r.after)) ||
                                 !same_tile_kinds(layer.tiles, r.edit, open_sea_test(waves, layer.first, layer.count),
-                                                 breaking_index, r.after)))
+                                                 breaking_index, r.after, line_after)))
             return std::nullopt;
         r.normals_moved =
             layer.grid == model_grid ? line_moved.normal : moved_on(layer.grid, line_moved.normal, normal_reach);
         const TexelRange distances_moved_here =
             layer.grid == model_grid ? line_moved.distance : moved_on(layer.grid, line_moved.distance, distance_reach);
         if (!distances_moved_here.empty() &&
-            !same_dry_tiles(layer.tiles, distances_moved_here, r.after, *shoreline_after))
+            !same_tile_kinds(layer.tiles, distances_moved_here, no_test, breaking_index, r.after, line_after, false))
             return std::nullopt;
         // Whether a wave has deep water (its sources where it has) stays as it was: a
         // layer with open sea has it for every wave; otherwise the stored residuals tell

@@ -11,6 +11,7 @@
 
 #include "contour.hpp"
 #include "distance_field.hpp"
+#include "host_device.h"
 #include "shore_geometry.hpp"
 #include "shoreline_steps.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -128,7 +129,10 @@ Result<ClassifiedShore> shoreline_from_cells(std::vector<ContourCell> cells, int
         for (const auto& g : c.points) line.points.push_back(corner + texel * (g + glm::dvec2(0.5)));
         lines.push_back(std::move(line));
     }
-    return simplify_and_classify(std::move(lines), tolerance, threads);
+    // Cut at the shore tiles' edges on this grid: an edit changes the simplified line only
+    // in the tiles it touches.
+    const SimplifyLattice lattice{corner, static_cast<double>(gpu::kShoreTileTexels) * texel};
+    return simplify_and_classify(std::move(lines), tolerance, lattice, threads);
 }
 
 }  // namespace detail

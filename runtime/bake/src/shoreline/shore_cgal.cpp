@@ -35,11 +35,12 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K3, Primitive>>;
 
 }  // namespace
 
-ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads) {
+ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, const SimplifyLattice& lattice,
+                                      unsigned threads) {
     ClassifiedShore shore;
     // The lines are independent: simplify them in parallel.
     detail::parallel_for_each(lines.size(), threads,
-                              [&](std::size_t k) { lines[k].points = simplify_line(lines[k], tolerance); });
+                              [&](std::size_t k) { lines[k].points = simplify_line(lines[k], tolerance, lattice); });
     std::vector<Polygon> outers, holes;
     for (ShoreLine& line : lines) {
         if (line.closed && line.points.size() >= 3) {

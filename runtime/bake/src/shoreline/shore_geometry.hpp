@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "simplify_line.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/result.hpp"
 
@@ -17,10 +18,11 @@ struct ClassifiedShore {
     std::size_t holes = 0;         // enclosed water bodies
 };
 
-/// Simplifies each line within `tolerance` (m, Douglas-Peucker) on `threads` threads
-/// and builds the land as CGAL polygons with holes to count islands
-/// and enclosed waters.
-ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, unsigned threads);
+/// Simplifies each line within `tolerance` (m, Douglas-Peucker) piece by piece between the
+/// crossings of `lattice` (simplify_line.hpp) on `threads` threads and builds the land as
+/// CGAL polygons with holes to count islands and enclosed waters.
+ClassifiedShore simplify_and_classify(std::vector<ShoreLine> lines, double tolerance, const SimplifyLattice& lattice,
+                                      unsigned threads);
 
 /// Exact distance to a set of segments (a CGAL AABB tree), thread-safe for queries.
 class ShoreDistance {
