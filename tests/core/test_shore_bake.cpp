@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "../baked_scene.hpp"
+#include "shoreline/simplify_line.hpp"
 #include "test_helpers.hpp"
 #include "tidewater/detail/reference.hpp"
 #include "tidewater/detail/shore_bake.hpp"
@@ -107,6 +108,46 @@ TEST(ShoreBake, CircularIslandMatchesExactDistance) {
     // lean up to about 13 degrees from the circle's radial direction near its spokes.
     EXPECT_LT(w.gradient_error, 0.25);
     EXPECT_LT(w.unit_error, 1e-5);
+}
+
+// The shoreline is simplified piece by piece between the lattice's crossings (the shore
+// tiles' edges): a change to a stretch of coast changes the simplified line only in the
+// lattice cells it touches and their neighbours, where the whole loop simplified at once
+// may move vertices anywhere on it.
+TEST(ShoreBake, AnEditChangesTheSimplifiedShorelineOnlyNearIt) {
+    // A loop of radius 500 m with points 1 m apart and a gentle swell on it, and the same
+    // with a notch 3 m deep and 40 m wide at angle 0.
+    auto loop = [](double notch) {
+        ShoreLine line;
+        const int n = 3142;
+        for (int k = 0; k < n; ++k) {
+            const double a = 2.0 * std::numbers::pi * k / n;
+            const double s = 500.0 * std::remainder(a, 2.0 * std::numbers::pi);
+            const double r = 500.0 + 4.0 * std::sin(7.0 * a) - notch * std::exp(-s * s / (20.0 * 20.0));
+            line.points.push_back(r * glm::dvec2(std::cos(a), std::sin(a)));
+        }
+        return line;
+    };
+    const ShoreLine before = loop(0.0), after = loop(3.0);
+    const detail::SimplifyLattice lattice{glm::dvec2(-1024.0), 64.0};
+    // The notch's cells (x 440..512, z -64..64 about it) and their neighbours.
+    auto near_notch = [](glm::dvec2 p) { return p.x > 384.0 - 1e-9 && std::abs(p.y) < 128.0; };
+    auto far_vertices = [&](const std::vector<glm::dvec2>& v) {
+        std::vector<glm::dvec2> far;
+        for (const glm::dvec2& p : v)
+            if (!near_notch(p)) far.push_back(p);
+        std::sort(far.begin(), far.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        return far;
+    };
+    const auto pieces_before = detail::simplify_line(before, 1.0, lattice), pieces_after = detail::simplify_line(after, 1.0, lattice);
+    EXPECT_NE(pieces_before, pieces_after);
+    EXPECT_EQ(far_vertices(pieces_before), far_vertices(pieces_after));
+    // Within the tolerance of the line it simplifies, as the whole loop's is.
+    const auto whole_before = detail::simplify_line(before, 1.0), whole_after = detail::simplify_line(after, 1.0);
+    std::printf("a notch simplified: %zu and %zu vertices piece by piece, %zu and %zu whole\n", pieces_before.size(),
+                pieces_after.size(), whole_before.size(), whole_after.size());
+    EXPECT_LT(pieces_before.size(), before.points.size() / 4);
+    EXPECT_NE(far_vertices(whole_before), far_vertices(whole_after)) << "the whole loop's vertices moved far away";
 }
 
 // Ring-shaped land around a lagoon: land for 150 < r < 300. Exact: water outside and
