@@ -136,10 +136,12 @@ TEST(ShoreBake, AnEditChangesTheSimplifiedShorelineOnlyNearIt) {
         std::vector<glm::dvec2> far;
         for (const glm::dvec2& p : v)
             if (!near_notch(p)) far.push_back(p);
-        std::sort(far.begin(), far.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        std::sort(far.begin(), far.end(),
+                  [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
         return far;
     };
-    const auto pieces_before = detail::simplify_line(before, 1.0, lattice), pieces_after = detail::simplify_line(after, 1.0, lattice);
+    const auto pieces_before = detail::simplify_line(before, 1.0, lattice),
+               pieces_after = detail::simplify_line(after, 1.0, lattice);
     EXPECT_NE(pieces_before, pieces_after);
     EXPECT_EQ(far_vertices(pieces_before), far_vertices(pieces_after));
     // Within the tolerance of the line it simplifies, as the whole loop's is.

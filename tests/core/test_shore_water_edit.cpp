@@ -11,6 +11,7 @@
 #include "../island_heightmap.hpp"
 #include "../shore_model_compare.hpp"
 #include "shore/fast_marching.hpp"
+#include "shore/shore_edit_region.hpp"
 #include "shore/shore_marches.hpp"
 #include "tidewater/detail/shore_bake.hpp"
 #include "tidewater/detail/shore_waves.hpp"
@@ -295,6 +296,53 @@ TEST(ShoreWaterEdit, WhereTheMarchCannotBeBlendedAloneTheRowsAreBakedAgain) {
     std::size_t total = 0;
     EXPECT_LT(slots_shared(*rows->bake->ocean_shore, old_model, &total),
               slots_shared(*alone->bake->ocean_shore, old_model, &total));
+}
+
+// An edit's distance field updated where it reaches (update_shore) against the field baked
+// whole over the edited terrain: the same shoreline, distances, directions and depths, to
+// the bit, for strokes across the waterline, a new islet, and one inland that moves no
+// shoreline.
+TEST(ShoreWaterEdit, TheDistanceFieldUpdatedWhereAnEditReachesIsTheFullBakes) {
+    BakeOptions options;
+    options.resolution = 256;
+    const Scene island = island_scene(island_pixels());
+    auto before = bake_shore(island.terrain, 0.0, options);
+    ASSERT_TRUE(before.ok()) << before.error().message;
+    const struct {
+        glm::dvec2 at;
+        double bump;
+        const char* what;
+    } edits[] = {{{400.0, 0.0}, -2.0, "a dip across the waterline"},
+                 {{-380.0, 0.0}, 3.0, "a mound across the waterline"},
+                 {{440.0, 0.0}, 8.0, "an islet in 3 m of water"},
+                 {{0.0, 100.0}, 3.0, "a mound inland"}};
+    for (const auto& e : edits) {
+        const Scene edited = island_scene(island_pixels(e.at, e.bump));
+        const detail::HeightmapChange change = detail::heightmap_change(island.terrain, edited.terrain);
+        ASSERT_TRUE(change && *change) << e.what;
+        const auto t0 = std::chrono::steady_clock::now();
+        auto updated = update_shore(*before, edited.terrain, 0.0, **change, 2);
+        const double update_s = seconds_since(t0);
+        ASSERT_TRUE(updated.ok()) << updated.error().message;
+        ASSERT_TRUE(updated->has_value()) << e.what;
+        const auto t1 = std::chrono::steady_clock::now();
+        auto full = bake_shore(edited.terrain, 0.0, options);
+        const double full_s = seconds_since(t1);
+        ASSERT_TRUE(full.ok()) << full.error().message;
+        const ShoreField& u = **updated;
+        std::printf("%s: %zu segments, %zu polygons; updated in %.4f s, baked whole in %.4f s\n", e.what,
+                    u.segment_count, u.polygons, update_s, full_s);
+        EXPECT_TRUE(u.signed_distance == full->signed_distance) << e.what;
+        EXPECT_TRUE(u.gradient == full->gradient) << e.what;
+        EXPECT_TRUE(u.depth == full->depth) << e.what;
+        EXPECT_EQ(u.segment_count, full->segment_count) << e.what;
+        EXPECT_EQ(u.polygons, full->polygons) << e.what;
+        EXPECT_EQ(u.holes, full->holes) << e.what;
+        ASSERT_EQ(u.shorelines.size(), full->shorelines.size()) << e.what;
+        for (std::size_t k = 0; k < u.shorelines.size(); ++k)
+            EXPECT_EQ(u.shorelines[k].points, full->shorelines[k].points) << e.what << ", line " << k;
+    }
+    EXPECT_EQ(before->polygons, 1u);
 }
 
 /// A stroke across the waterline re-baked from a bake of the island with the rays alone:

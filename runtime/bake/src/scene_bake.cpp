@@ -209,13 +209,20 @@ Status bake_ocean_shore(const Scene& scene, const Terrain& terrain, const SceneB
             if (!edit && change && *change && distance_resolution == scene.shore.resolution &&
                 old.shoreline->resolution == distance_resolution) {
                 // The shoreline moved (or the edit reaches further): the distance field
-                // baked again in full, which a full bake needs too, and the waves re-baked
-                // where the edit and the distances it moved reach.
-                auto line = bake_shoreline(scene, terrain, options, distance_resolution, [&](double f) {
-                    progress.report("shoreline", begin, begin + 0.3 * (1.0 - begin), f);
-                });
-                if (!line) return line.error();
-                baked_line = std::move(line).value();
+                // updated where the edit reaches (or baked again in full), which a full
+                // bake needs too, and the waves re-baked where the edit and the distances
+                // it moved reach.
+                auto updated = update_shore(*old.shoreline, terrain, scene.water_level(), **change, options.threads);
+                if (!updated) return detail::in_shore(scene, updated.error());
+                if (*updated) {
+                    baked_line = std::make_shared<const ShoreField>(std::move(**updated));
+                } else {
+                    auto line = bake_shoreline(scene, terrain, options, distance_resolution, [&](double f) {
+                        progress.report("shoreline", begin, begin + 0.3 * (1.0 - begin), f);
+                    });
+                    if (!line) return line.error();
+                    baked_line = std::move(line).value();
+                }
                 edit = water_edit(baked_line);
             }
             if (edit) {

@@ -22,8 +22,8 @@ namespace tidewater::detail {
 
 namespace {
 
-constexpr int kRootBlock = 32;  // texels per root block side (one CGAL range query each)
-constexpr int kLeafBlock = 4;   // blocks this small go texel by texel
+constexpr int kRootBlock = kDistanceRootBlock;  // texels per root block side (one CGAL range query each)
+constexpr int kLeafBlock = 4;                   // blocks this small go texel by texel
 
 using Batch = xsimd::batch<double>;
 constexpr std::size_t kLanes = Batch::size;
@@ -195,6 +195,21 @@ void fill_distance_window(const ShoreDistance& distance, ShoreField& field, cons
             const std::lock_guard<std::mutex> lock(progress_lock);
             progress(static_cast<double>(rows) / block_rows);
         }
+    });
+}
+
+void fill_distance_roots(const ShoreDistance& distance, ShoreField& field, std::span<const std::size_t> roots,
+                         unsigned threads) {
+    const int n = field.resolution;
+    const std::size_t per_side = static_cast<std::size_t>((n + kRootBlock - 1) / kRootBlock);
+    const BlockFiller filler(distance, field, {0, 0, n});
+    parallel_for_each(roots.size(), threads, [&](std::size_t k) {
+        Workspace w;
+        ShoreDistance::Hit hint;
+        bool have_hint = false;
+        const int i0 = static_cast<int>(roots[k] % per_side) * kRootBlock;
+        const int j0 = static_cast<int>(roots[k] / per_side) * kRootBlock;
+        filler.fill_root({i0, j0, std::min(n, i0 + kRootBlock), std::min(n, j0 + kRootBlock)}, w, hint, have_hint);
     });
 }
 

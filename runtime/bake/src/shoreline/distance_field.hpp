@@ -1,7 +1,9 @@
 // Fills a ShoreField's signed distance and gradient from a ShoreDistance (private).
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <span>
 #include <stop_token>
 
 #include "shore_geometry.hpp"
@@ -13,6 +15,16 @@ namespace tidewater::detail {
 /// remaining tiles are skipped and the field is left incomplete.
 void fill_distance_field(const ShoreDistance& distance, ShoreField& field, unsigned threads,
                          const std::function<void(double)>& progress, const std::stop_token& cancel);
+
+/// Texels a side of the blocks the fill lays from the grid's corner (one range query each).
+inline constexpr int kDistanceRootBlock = 32;
+
+/// The same over the blocks `roots` of the whole field (kDistanceRootBlock² texels laid
+/// from the grid's corner, row-major, ceil(resolution / kDistanceRootBlock) a row, those
+/// on the far edges cut at the grid's): each texel gets the value the whole grid's fill
+/// gives it.
+void fill_distance_roots(const ShoreDistance& distance, ShoreField& field, std::span<const std::size_t> roots,
+                         unsigned threads);
 
 /// A square of texels [i0, i0 + size) x [j0, j0 + size) of a grid.
 struct TexelWindow {

@@ -7,11 +7,13 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "contour.hpp"
 #include "distance_field.hpp"
 #include "host_device.h"
+#include "shore/shore_edit_region.hpp"
 #include "shore_geometry.hpp"
 #include "shoreline_steps.hpp"
 #include "tidewater/detail/grid_taps.hpp"
@@ -225,6 +227,7 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.timings.heights = clock.lap();
     // The contour at the water level.
     std::vector<detail::ContourCell> cells = detail::contour_cells(above, {0, 0, n - 1, n - 1}, threads);
+    field.contour = std::make_shared<const std::vector<detail::ContourCell>>(cells);
     field.timings.contour = clock.lap();
     if (options.cancel.stop_requested()) return cancelled();
     auto shoreline =
@@ -257,6 +260,119 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.timings.distance = clock.lap();
     report(1.0);
     return field;
+}
+
+namespace {
+
+/// Every segment of `lines` as its two ends (x0, z0, x1, z1), sorted.
+std::vector<std::array<double, 4>> sorted_segments(const std::vector<ShoreLine>& lines) {
+    std::vector<std::array<double, 4>> out;
+    for (const ShoreLine& line : lines) {
+        const std::size_t n = line.points.size();
+        for (std::size_t k = 0; k + 1 < n + (line.closed ? 1 : 0); ++k) {
+            const glm::dvec2 a = line.points[k], b = line.points[(k + 1) % n];
+            out.push_back({a.x, a.y, b.x, b.y});
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace
+
+Result<std::optional<ShoreField>> update_shore(const ShoreField& before, const Terrain& terrain, double water_level,
+                                               const detail::WorldRect& changed, unsigned threads) {
+    if (!before.contour || before.segment_count == 0 || before.resolution < 2) return std::optional<ShoreField>{};
+    const int n = before.resolution;
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    StageClock clock;
+    ShoreField field = before;
+    field.timings = {};
+    const detail::TexelRange t = detail::texels_in(n, before.texel, before.corner, changed);
+    if (t.empty()) return std::optional<ShoreField>{std::move(field)};
+    // The cells that read a changed texel, and the texels they read.
+    const detail::CellWindow cells{std::max(0, t.i0 - 1), std::max(0, t.j0 - 1), std::min(n - 1, t.i1 + 1),
+                                   std::min(n - 1, t.j1 + 1)};
+    const detail::TexelRect window{cells.i0, cells.j0, cells.i1 - cells.i0 + 1, cells.j1 - cells.j0 + 1};
+    auto heights = detail::window_heights(terrain, water_level, field, window, threads);
+    if (!heights) return heights.error();
+    {
+        std::vector<float>& depth = field.depth.write();
+        const auto width = static_cast<std::size_t>(window.width);
+        for (int row = 0; row < window.height; ++row)
+            std::copy_n(heights->depth.data() + static_cast<std::size_t>(row) * width, width,
+                        depth.data() + field.index(window.i0, window.j0 + row));
+    }
+    const std::size_t mixed = detail::mixed_cells(field.depth.values(), {0, 0, n - 1, n - 1}, threads);
+    if (auto st = detail::check_mixed_cells(mixed, count); !st) return st.error();
+    field.timings.heights = clock.lap();
+    // The contour: the kept cells outside the window and the window's made again, in
+    // (j, i) order (a cell's pieces all come from one of the two, in their own order).
+    std::vector<detail::ContourCell> merged;
+    merged.reserve(before.contour->size() + 64);
+    for (const detail::ContourCell& c : *before.contour)
+        if (!(c.i >= cells.i0 && c.i < cells.i1 && c.j >= cells.j0 && c.j < cells.j1)) merged.push_back(c);
+    const std::vector<detail::ContourCell> fresh = detail::contour_cells(heights->above, cells, threads);
+    merged.insert(merged.end(), fresh.begin(), fresh.end());
+    std::stable_sort(merged.begin(), merged.end(), [](const detail::ContourCell& a, const detail::ContourCell& b) {
+        return a.j < b.j || (a.j == b.j && a.i < b.i);
+    });
+    field.contour = std::make_shared<const std::vector<detail::ContourCell>>(merged);
+    field.timings.contour = clock.lap();
+    auto shoreline = detail::shoreline_from_cells(std::move(merged), n, field.corner, field.texel,
+                                                  field.simplify_tolerance, threads);
+    if (!shoreline) return shoreline.error();
+    detail::ClassifiedShore shore = std::move(shoreline).value();
+    field.polygons = shore.polygons;
+    field.holes = shore.holes;
+    field.shorelines = std::move(shore.lines);
+    field.timings.simplify = clock.lap();
+    const auto distance = detail::ShoreDistance::build(field.shorelines);
+    field.segment_count = distance->segment_count();
+    if (field.segment_count == 0) return std::optional<ShoreField>{};  // all water or all land now
+    field.timings.tree = clock.lap();
+
+    // The segments of one shoreline and not the other, and what they span.
+    const auto old_segments = sorted_segments(before.shorelines), new_segments = sorted_segments(field.shorelines);
+    std::vector<std::array<double, 4>> moved;
+    std::set_symmetric_difference(old_segments.begin(), old_segments.end(), new_segments.begin(), new_segments.end(),
+                                  std::back_inserter(moved));
+    glm::dvec2 lo(INFINITY), hi(-INFINITY);
+    for (const auto& s : moved) {
+        lo = glm::min(lo, glm::min(glm::dvec2(s[0], s[1]), glm::dvec2(s[2], s[3])));
+        hi = glm::max(hi, glm::max(glm::dvec2(s[0], s[1]), glm::dvec2(s[2], s[3])));
+    }
+    // The blocks filled again: those holding a changed texel (its depth, so its sign, may
+    // have moved), and those with a texel whose distance reaches the moved segments (a
+    // texel nearer every moved segment than its own nearest keeps that one, and its value).
+    const int per_side = (n + detail::kDistanceRootBlock - 1) / detail::kDistanceRootBlock;
+    std::vector<char> refill(static_cast<std::size_t>(per_side) * static_cast<std::size_t>(per_side), 0);
+    const std::vector<float>& old_distance = before.signed_distance.values();
+    detail::parallel_for_each(static_cast<std::size_t>(per_side), threads, [&](std::size_t rj) {
+        const int j0 = static_cast<int>(rj) * detail::kDistanceRootBlock,
+                  j1 = std::min(n, j0 + detail::kDistanceRootBlock);
+        for (int ri = 0; ri < per_side; ++ri) {
+            const int i0 = ri * detail::kDistanceRootBlock, i1 = std::min(n, i0 + detail::kDistanceRootBlock);
+            char& r = refill[rj * static_cast<std::size_t>(per_side) + static_cast<std::size_t>(ri)];
+            if (i0 <= t.i1 && t.i0 < i1 && j0 <= t.j1 && t.j0 < j1) {
+                r = 1;
+                continue;
+            }
+            if (moved.empty()) continue;
+            float farthest = 0.0f;
+            for (int j = j0; j < j1; ++j)
+                for (int i = i0; i < i1; ++i) farthest = std::max(farthest, std::abs(old_distance[field.index(i, j)]));
+            const glm::dvec2 a = field.texel_center(i0, j0), b = field.texel_center(i1 - 1, j1 - 1);
+            const glm::dvec2 gap = glm::max(glm::dvec2(0.0), glm::max(lo - b, a - hi));
+            r = static_cast<double>(farthest) * (1.0 + 1e-6) + 1e-6 * field.texel >= glm::length(gap) ? 1 : 0;
+        }
+    });
+    std::vector<std::size_t> roots;
+    for (std::size_t k = 0; k < refill.size(); ++k)
+        if (refill[k]) roots.push_back(k);
+    detail::fill_distance_roots(*distance, field, roots, threads);
+    field.timings.distance = clock.lap();
+    return std::optional<ShoreField>{std::move(field)};
 }
 
 namespace reference {

@@ -17,6 +17,8 @@
 #include <stop_token>
 #include <vector>
 
+#include "tidewater/detail/contour_cell.hpp"
+#include "tidewater/detail/heightmap_change.hpp"
 #include "tidewater/detail/square_region.hpp"
 #include "tidewater/result.hpp"
 #include "tidewater/terrain.hpp"
@@ -111,6 +113,10 @@ struct ShoreField {
     /// Water depth = level - terrain height, m (negative on land).
     SharedFloats depth;
     std::vector<ShoreLine> shorelines;  ///< The simplified contour the distances are exact to.
+    /// The contour's cells before chaining (sorted by (j, i)), kept so that an edit can
+    /// update the field where it reaches (update_shore). Null where not kept (a loaded or
+    /// tiled bake, or a region's).
+    std::shared_ptr<const std::vector<detail::ContourCell>> contour;
     std::size_t segment_count = 0;
     double simplify_tolerance = 0.0;  ///< m, as used.
     std::size_t polygons = 0;         ///< Land polygons (CGAL polygons with holes).
@@ -140,6 +146,18 @@ inline float resampled_distance(const ShoreField& from, glm::dvec2 p, double dep
 /// Bakes the shore of `terrain` at `water_level`. Fails on non-finite terrain heights
 /// (naming where) or out-of-range options, and with ErrorCode::cancelled when cancelled.
 Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const BakeOptions& options = {});
+
+/// `before` (baked by bake_shore over a terrain whose heights differ from `terrain`'s only
+/// within `changed`, at `water_level`) updated for `terrain`: the depths and the contour's
+/// cells sampled again under the change, the shoreline chained and simplified again (only
+/// the pieces the change touches differ: simplify_line.hpp), and the distances filled again
+/// in the blocks where a changed segment may be nearest a texel or a depth changed. Every
+/// other texel keeps its value, which is the full bake's there: the result is bake_shore's
+/// over `terrain` with `before`'s options, to the bit but at a texel exactly as near two
+/// shoreline points (its direction may be the other's). nullopt where it cannot be: `before`
+/// kept no contour or has no shoreline (bake in full). Fails as bake_shore does.
+Result<std::optional<ShoreField>> update_shore(const ShoreField& before, const Terrain& terrain, double water_level,
+                                               const detail::WorldRect& changed, unsigned threads);
 
 namespace reference {
 /// Brute-force distance from `p` to the nearest shoreline segment (for benchmarks and
