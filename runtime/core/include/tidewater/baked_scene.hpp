@@ -62,7 +62,7 @@ struct SceneBake {
         /// wave marched again in a window round the edit and downstream of it, until its
         /// phase moves by under kOpenSeaPhaseTolerance, and the fields baked again there;
         /// every other tile is the previous bake's. Across the waterline the distance
-        /// field (`shoreline`) is baked again in full first.
+        /// field (`shoreline`) is updated where the edit reaches first.
         bool ocean_shore_water_edit = false;
     } reused;
     int distance_resolution = 0;  ///< texels per side of the shoreline's distance field (0: none baked)

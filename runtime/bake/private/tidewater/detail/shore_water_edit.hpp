@@ -2,7 +2,7 @@
 // When an edit changes the seabed only where the water stays (every texel under it and a
 // step round it wet before and after, on every grid of the model and the shoreline's),
 // the shoreline keeps its contour and its distances, and the waves their sources. An
-// edit across the waterline is given the distance field baked again: where its normals
+// edit across the waterline is given the distance field after it: where its normals
 // moved under water the rows are baked again too, and where its distances alone moved,
 // the shared layer's distance. What
 // changes is each wave's phase round the edit and downstream of it, toward the shore, and
