@@ -96,66 +96,89 @@ std::size_t slots_shared(const ShoreWaves& a, const ShoreWaves& b, std::size_t* 
     return same;
 }
 
+/// `edited` re-baked from a bake of `original` with the rays alone (no diffraction) and
+/// baked in full: the three bakes, what the two models differ by (printed under `what`)
+/// and how many of the first bake's slots the re-bake kept. Empty bakes on a failure.
+struct RaysStroke {
+    std::shared_ptr<const Scene> first, local, full;
+    RowDifferences effect, error, kept;
+    std::size_t same = 0, total = 0;
+};
+RaysStroke rays_stroke(Scene original, Scene edited, const char* what) {
+    RaysStroke out;
+    original.shore.diffraction = edited.shore.diffraction = false;
+    auto first = bake_scene(original);
+    EXPECT_TRUE(first.ok()) << first.error().message;
+    if (!first.ok()) return out;
+    SceneBakeOptions options;
+    options.previous = *first;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto local = bake_scene(edited, options);
+    const double local_s = seconds_since(t0);
+    EXPECT_TRUE(local.ok()) << local.error().message;
+    const auto t1 = std::chrono::steady_clock::now();
+    auto full = bake_scene(edited);
+    const double full_s = seconds_since(t1);
+    EXPECT_TRUE(full.ok()) << full.error().message;
+    if (!local.ok() || !full.ok()) return out;
+    out.first = *first;
+    out.local = *local;
+    out.full = *full;
+    const ShoreWaves &old_model = *out.first->bake->ocean_shore, &local_model = *out.local->bake->ocean_shore,
+                     &full_model = *out.full->bake->ocean_shore;
+    out.effect = differences(old_model, full_model);
+    out.error = differences(local_model, full_model);
+    out.kept = differences(local_model, full_model, &local_model, &old_model);
+    std::printf("%s:\n", what);
+    print("  its effect (full bakes before and after)", out.effect);
+    print("  re-baked where it reaches, against a full bake", out.error);
+    print("  in the slots it kept", out.kept);
+    out.same = slots_shared(local_model, old_model, &out.total);
+    std::printf("  %zu of %zu stored slots kept; %.3f s re-baked where it reaches, %.3f s in full\n", out.same,
+                out.total, local_s, full_s);
+    return out;
+}
+
+/// The rays' re-bake within the re-march's tolerance (kOpenSeaPhaseTolerance, 1e-3 rad)
+/// and what it does to the wavevector's differences and the amplitudes; the depths and
+/// shore distances exact. In the slots it kept the full bake's phase moved by under the
+/// tolerance too.
+void expect_within_rays_tolerance(const RaysStroke& r) {
+    EXPECT_LT(r.error.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(r.error.amplitude, 1e-3);
+    EXPECT_LT(r.error.wavevector, 1e-4);
+    EXPECT_LT(r.error.breaking, 1e-3);
+    EXPECT_LT(r.error.steepness, 1e-3);
+    EXPECT_EQ(r.error.depth, 0.0);
+    EXPECT_EQ(r.error.distance, 0.0);
+    EXPECT_LT(r.kept.residual, kOpenSeaPhaseTolerance);
+    EXPECT_LT(r.kept.amplitude, 1e-3);
+}
+
 /// A shoal 2 m high, 40 m round, at `at` (by default 95 m off the shore in 4.75 m of
 /// water), re-baked where it reaches on the test island with its distance field at
 /// `distance_resolution` (0: the model's grid), against full bakes before and after. The
 /// rays alone: a diffracted wave changes downstream of the stroke to the model's end.
 void check_seabed_stroke(int distance_resolution, glm::dvec2 at = {350.0, 350.0}) {
-    Scene scene = island_scene(island_pixels());
-    scene.shore.diffraction = false;
-    scene.shore.distance_resolution = distance_resolution;
-    auto first = bake_scene(scene);
-    ASSERT_TRUE(first.ok()) << first.error().message;
-    SceneBakeOptions options;
-    options.previous = *first;
-
-    Scene shoal = island_scene(island_pixels(at, 2.0));
-    shoal.shore.diffraction = false;
-    shoal.shore.distance_resolution = distance_resolution;
-    const auto t0 = std::chrono::steady_clock::now();
-    auto local = bake_scene(shoal, options);
-    const double local_s = seconds_since(t0);
-    ASSERT_TRUE(local.ok()) << local.error().message;
-    EXPECT_TRUE((*local)->bake->reused.ocean_shore_water_edit);
-    EXPECT_FALSE((*local)->bake->reused.ocean_shore_land_edit);
-    const auto t1 = std::chrono::steady_clock::now();
-    auto full = bake_scene(shoal);
-    const double full_s = seconds_since(t1);
-    ASSERT_TRUE(full.ok()) << full.error().message;
-    const ShoreWaves &old_model = *(*first)->bake->ocean_shore, &local_model = *(*local)->bake->ocean_shore,
-                     &full_model = *(*full)->bake->ocean_shore;
-
+    Scene scene = island_scene(island_pixels()), shoal = island_scene(island_pixels(at, 2.0));
+    scene.shore.distance_resolution = shoal.shore.distance_resolution = distance_resolution;
+    const RaysStroke r = rays_stroke(scene, shoal, "a 2 m shoal");
+    ASSERT_NE(r.local, nullptr);
+    EXPECT_TRUE(r.local->bake->reused.ocean_shore_water_edit);
+    EXPECT_FALSE(r.local->bake->reused.ocean_shore_land_edit);
     // The shoal changes the waves by far more than the re-bake's error.
-    const RowDifferences effect = differences(old_model, full_model);
-    const RowDifferences error = differences(local_model, full_model);
-    const RowDifferences kept = differences(local_model, full_model, &local_model, &old_model);
-    print("the shoal's effect (full bakes before and after)", effect);
-    print("re-baked where it reaches, against a full bake", error);
-    print("  in the slots it kept", kept);
-    std::size_t total = 0;
-    const std::size_t same = slots_shared(local_model, old_model, &total);
-    std::printf("water edit: %zu of %zu stored slots kept; %.3f s re-baked where it reaches, %.3f s in full\n", same,
-                total, local_s, full_s);
+    const RowDifferences& effect = r.effect;
+    const std::size_t same = r.same, total = r.total;
     EXPECT_GT(effect.residual, 0.05);
     EXPECT_GT(effect.amplitude, 0.02);
     EXPECT_GT(effect.depth, 1.5);
-    // Within the re-march's tolerance (kOpenSeaPhaseTolerance, 1e-3 rad) and what it
-    // does to the wavevector's differences and the amplitudes; the depths exact. In the
-    // slots it kept the full bake's phase moved by under the tolerance too.
-    EXPECT_LT(error.residual, kOpenSeaPhaseTolerance);
-    EXPECT_LT(error.amplitude, 1e-3);
-    EXPECT_LT(error.wavevector, 1e-4);
-    EXPECT_LT(error.breaking, 1e-3);
-    EXPECT_LT(error.steepness, 1e-3);
-    EXPECT_EQ(error.depth, 0.0);
-    EXPECT_LT(kept.residual, kOpenSeaPhaseTolerance);
-    EXPECT_LT(kept.amplitude, 1e-3);
+    expect_within_rays_tolerance(r);
     // Most of the model is the previous bake's memory; the shoal's slots are new.
     EXPECT_GT(same, total / 2);
     EXPECT_LT(same, total);
-    const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *(*local)->bake->shoreline;
+    const ShoreField &old_line = *r.first->bake->shoreline, &new_line = *r.local->bake->shoreline;
     EXPECT_EQ(&old_line.signed_distance.values(), &new_line.signed_distance.values());
-    EXPECT_TRUE(new_line.depth == (*full)->bake->shoreline->depth);
+    EXPECT_TRUE(new_line.depth == r.full->bake->shoreline->depth);
 }
 
 TEST(ShoreWaterEdit, AStrokeOnTheSeabedIsReBakedWhereItReaches) {
@@ -349,52 +372,18 @@ TEST(ShoreWaterEdit, TheDistanceFieldUpdatedWhereAnEditReachesIsTheFullBakes) {
 /// the distance field baked again in full (it is a full bake's), the waves where the
 /// stroke and the distances it moved reach.
 void check_waterline_stroke(const Scene& edited, const char* what) {
-    Scene scene = island_scene(island_pixels());
-    scene.shore.diffraction = false;
-    auto first = bake_scene(scene);
-    ASSERT_TRUE(first.ok()) << first.error().message;
-    SceneBakeOptions options;
-    options.previous = *first;
-    Scene stroke = edited;
-    stroke.shore.diffraction = false;
-    const auto t0 = std::chrono::steady_clock::now();
-    auto local = bake_scene(stroke, options);
-    const double local_s = seconds_since(t0);
-    ASSERT_TRUE(local.ok()) << local.error().message;
-    EXPECT_TRUE((*local)->bake->reused.ocean_shore_water_edit);
-    const auto t1 = std::chrono::steady_clock::now();
-    auto full = bake_scene(stroke);
-    const double full_s = seconds_since(t1);
-    ASSERT_TRUE(full.ok()) << full.error().message;
-    const ShoreWaves &old_model = *(*first)->bake->ocean_shore, &local_model = *(*local)->bake->ocean_shore,
-                     &full_model = *(*full)->bake->ocean_shore;
-    const RowDifferences effect = differences(old_model, full_model);
-    const RowDifferences error = differences(local_model, full_model);
-    const RowDifferences kept = differences(local_model, full_model, &local_model, &old_model);
-    std::printf("%s:\n", what);
-    print("  its effect (full bakes before and after)", effect);
-    print("  re-baked where it reaches, against a full bake", error);
-    print("  in the slots it kept", kept);
-    std::size_t total = 0;
-    const std::size_t same = slots_shared(local_model, old_model, &total);
-    std::printf("  %zu of %zu stored slots kept; %.3f s re-baked where it reaches, %.3f s in full\n", same, total,
-                local_s, full_s);
-    const ShoreField &old_line = *(*first)->bake->shoreline, &new_line = *(*local)->bake->shoreline,
-                     &full_line = *(*full)->bake->shoreline;
+    const RaysStroke r = rays_stroke(island_scene(island_pixels()), edited, what);
+    ASSERT_NE(r.local, nullptr);
+    EXPECT_TRUE(r.local->bake->reused.ocean_shore_water_edit);
+    const std::size_t same = r.same, total = r.total;
+    const ShoreField &old_line = *r.first->bake->shoreline, &new_line = *r.local->bake->shoreline,
+                     &full_line = *r.full->bake->shoreline;
     EXPECT_FALSE(old_line.signed_distance == full_line.signed_distance) << "the shoreline moves";
     EXPECT_TRUE(new_line.signed_distance == full_line.signed_distance);
     EXPECT_TRUE(new_line.gradient == full_line.gradient);
     EXPECT_TRUE(new_line.depth == full_line.depth);
-    EXPECT_GT(effect.depth, 1.0);
-    EXPECT_LT(error.residual, kOpenSeaPhaseTolerance);
-    EXPECT_LT(error.amplitude, 1e-3);
-    EXPECT_LT(error.wavevector, 1e-4);
-    EXPECT_LT(error.breaking, 1e-3);
-    EXPECT_LT(error.steepness, 1e-3);
-    EXPECT_EQ(error.depth, 0.0);
-    EXPECT_EQ(error.distance, 0.0);
-    EXPECT_LT(kept.residual, kOpenSeaPhaseTolerance);
-    EXPECT_LT(kept.amplitude, 1e-3);
+    EXPECT_GT(r.effect.depth, 1.0);
+    expect_within_rays_tolerance(r);
     EXPECT_GT(same, total / 4);
     EXPECT_LT(same, total);
 }

@@ -48,6 +48,20 @@ class StageClock {
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+/// `field`'s shoreline from its contour's `cells` (sorted by (j, i); kept with it for
+/// update_shore): chained, simplified and classified.
+Status set_shoreline(ShoreField& field, std::vector<detail::ContourCell> cells, unsigned threads) {
+    field.contour = std::make_shared<const std::vector<detail::ContourCell>>(cells);
+    auto shoreline = detail::shoreline_from_cells(std::move(cells), field.resolution, field.corner, field.texel,
+                                                  field.simplify_tolerance, threads);
+    if (!shoreline) return shoreline.error();
+    detail::ClassifiedShore shore = std::move(shoreline).value();
+    field.polygons = shore.polygons;
+    field.holes = shore.holes;
+    field.shorelines = std::move(shore.lines);
+    return {};
+}
+
 }  // namespace
 
 namespace detail {
@@ -227,16 +241,9 @@ Result<ShoreField> bake_shore(const Terrain& terrain, double water_level, const 
     field.timings.heights = clock.lap();
     // The contour at the water level.
     std::vector<detail::ContourCell> cells = detail::contour_cells(above, {0, 0, n - 1, n - 1}, threads);
-    field.contour = std::make_shared<const std::vector<detail::ContourCell>>(cells);
     field.timings.contour = clock.lap();
     if (options.cancel.stop_requested()) return cancelled();
-    auto shoreline =
-        detail::shoreline_from_cells(std::move(cells), n, field.corner, field.texel, field.simplify_tolerance, threads);
-    if (!shoreline) return shoreline.error();
-    detail::ClassifiedShore shore = std::move(shoreline).value();
-    field.polygons = shore.polygons;
-    field.holes = shore.holes;
-    field.shorelines = std::move(shore.lines);
+    if (auto st = set_shoreline(field, std::move(cells), threads); !st) return st.error();
     field.timings.simplify = clock.lap();
     if (options.cancel.stop_requested()) return cancelled();
     report(0.3);
@@ -317,15 +324,8 @@ Result<std::optional<ShoreField>> update_shore(const ShoreField& before, const T
     std::stable_sort(merged.begin(), merged.end(), [](const detail::ContourCell& a, const detail::ContourCell& b) {
         return a.j < b.j || (a.j == b.j && a.i < b.i);
     });
-    field.contour = std::make_shared<const std::vector<detail::ContourCell>>(merged);
     field.timings.contour = clock.lap();
-    auto shoreline = detail::shoreline_from_cells(std::move(merged), n, field.corner, field.texel,
-                                                  field.simplify_tolerance, threads);
-    if (!shoreline) return shoreline.error();
-    detail::ClassifiedShore shore = std::move(shoreline).value();
-    field.polygons = shore.polygons;
-    field.holes = shore.holes;
-    field.shorelines = std::move(shore.lines);
+    if (auto st = set_shoreline(field, std::move(merged), threads); !st) return st.error();
     field.timings.simplify = clock.lap();
     const auto distance = detail::ShoreDistance::build(field.shorelines);
     field.segment_count = distance->segment_count();
