@@ -140,7 +140,7 @@ struct RunEdit {
     const ShoreWaveLayer* layer = nullptr;
     GridDepth before, after;
     TexelRange edit;                 ///< texels whose depth may have changed
-    TexelRange normals_moved;        ///< texels whose shore normal or distance may have changed (the shoreline moved)
+    TexelRange normals_moved;        ///< texels under water whose shore normal may have moved (the shoreline moved)
     std::vector<char> any_deep;      ///< per wave: the grid has deep water for it (before and after alike)
     std::vector<MarchWindow> march;  ///< per wave: its phase after, in a window
     TexelRange own;                  ///< its windows and a texel round them: its phase baked again
