@@ -8,6 +8,7 @@
 #include "scene/scene_json_parts.hpp"
 #include "tidewater/constants.hpp"
 #include "tidewater/detail/json_reader.hpp"
+#include "tidewater/detail/shore_settings_limits.hpp"
 #include "tidewater/scene.hpp"
 
 namespace tidewater {
@@ -222,10 +223,15 @@ Result<SceneShore> read_shore(const ObjectReader& scene, const std::filesystem::
                                     distance_resolution, shore.resolution));
     shore.distance_resolution = static_cast<int>(distance_resolution);
     if (auto st = r->number("breaking_index", shore.breaking_index); !st) return st.error();
-    if (auto st = check_range(*r, "breaking_index", shore.breaking_index, 0.3, 1.2, ""); !st) return st.error();
+    if (auto st = check_range(*r, "breaking_index", shore.breaking_index, detail::kLowestBreakingIndex,
+                              detail::kHighestBreakingIndex, "");
+        !st)
+        return st.error();
     if (auto st = r->number("texels_per_wavelength", shore.texels_per_wavelength); !st) return st.error();
     if (shore.texels_per_wavelength != 0.0)
-        if (auto st = check_range(*r, "texels_per_wavelength", shore.texels_per_wavelength, 4.0, 64.0, " (or 0)"); !st)
+        if (auto st = check_range(*r, "texels_per_wavelength", shore.texels_per_wavelength,
+                                  detail::kFewestTexelsPerWavelength, detail::kMostTexelsPerWavelength, " (or 0)");
+            !st)
             return st.error();
     if (r->has("bake")) {
         if (r->has("resolution") || r->has("distance_resolution") || r->has("breaking_index") ||

@@ -474,8 +474,8 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     // distances and normals moved, the rows are baked again.
     const ShoreGrid& model_grid = model.grid();
     const bool line_moves = shoreline_after != nullptr;
-    if (line_moves && !(distance_grid == model_grid && shoreline_after->resolution == shoreline.resolution &&
-                        shoreline_after->texel == shoreline.texel && shoreline_after->corner == shoreline.corner))
+    if (line_moves && !(distance_grid == model_grid && ShoreGrid{shoreline_after->resolution, shoreline_after->texel,
+                                                                 shoreline_after->corner} == distance_grid))
         return std::nullopt;
     const TexelRange distance_edit = edited(distance_grid);
     if (!distance_edit.empty() && !line_moves) {
@@ -807,11 +807,10 @@ std::optional<WaterEdit> rebake_water_edit(const HeightmapChange& change, const 
     each_texel(shared_rows, threads, [&](int i, int j) {
         // The distance as the bake's grid holds it (a texel of a tile's apron may lie in a
         // tile of dry land, whose stored values are not its own).
+        const auto n = static_cast<std::size_t>(model_grid.resolution);
         const float distance =
-            model_grid == distance_grid
-                ? field->signed_distance[field->index(i, j)]
-                : resampled_distance(*field, model_grid.corner + model_grid.texel * glm::dvec2(i + 0.5, j + 0.5),
-                                     static_cast<double>(*model_depth(i, j)));
+            held_distance(*field, model_depths_after, static_cast<std::size_t>(j) * n + static_cast<std::size_t>(i), i,
+                          j, *model_depth(i, j));
         shared_texel_rows(
             waves, before_cap, model_grid, i, j, *model_depth(i, j), distance, *model_ratio(i, j), shared_values(i, j),
             energies.empty() ? DiffractedEnergy{}

@@ -13,6 +13,7 @@
 #include "tidewater/detail/image_io.hpp"
 #include "tidewater/detail/json_reader.hpp"
 #include "tidewater/detail/parallel.hpp"
+#include "tidewater/detail/shore_settings_limits.hpp"
 
 namespace tidewater {
 
@@ -175,12 +176,16 @@ Result<SceneShore> saved_settings(const ObjectReader& root, const ObjectReader& 
         given.distance_resolution = static_cast<int>(n);
     }
     if (auto st = model.number("breaking_index", given.breaking_index); !st) return st.error();
-    if (!(given.breaking_index >= 0.3 && given.breaking_index <= 1.2))
-        return model.error("breaking_index", "expected 0.3 to 1.2");
+    if (!(given.breaking_index >= detail::kLowestBreakingIndex &&
+          given.breaking_index <= detail::kHighestBreakingIndex))
+        return model.error("breaking_index", fmt::format("expected {} to {}", detail::kLowestBreakingIndex,
+                                                         detail::kHighestBreakingIndex));
     if (auto st = model.number("texels_per_wavelength", given.texels_per_wavelength); !st) return st.error();
-    if (!(given.texels_per_wavelength == 0.0 ||
-          (given.texels_per_wavelength >= 4.0 && given.texels_per_wavelength <= 64.0)))
-        return model.error("texels_per_wavelength", "expected 0 or 4 to 64");
+    if (!(given.texels_per_wavelength == 0.0 || (given.texels_per_wavelength >= detail::kFewestTexelsPerWavelength &&
+                                                 given.texels_per_wavelength <= detail::kMostTexelsPerWavelength)))
+        return model.error("texels_per_wavelength",
+                           fmt::format("expected 0 or {} to {}", detail::kFewestTexelsPerWavelength,
+                                       detail::kMostTexelsPerWavelength));
     if (model.has("diffraction")) {
         const nlohmann::json& d = model.at("diffraction");
         if (!d.is_boolean()) return model.error("diffraction", "expected true or false");
