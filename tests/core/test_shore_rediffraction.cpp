@@ -3,7 +3,8 @@
 // side by side in a window round the edit whose sides are held at the first march's
 // values, widened until the edit's wake stays under the tolerance next to them. Checked against a full march over the
 // new depths: the first march's amplitude plus the change is within the tolerance of it at every texel, the texels it
-// leaves out did not move by more, and the window visits a small part of what a full march does.
+// leaves out did not move by more, and the window visits a small part of what a full march does. A march ends a row
+// after the last texel it fills, and an edit past there is marched on from the last row it kept.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -239,17 +240,115 @@ TEST(ShoreRediffraction, AComponentOfARandomSeaEndsItsMarchWhereTheEditsWakeDies
         how.settles = true;
         const DiffractionChange settled = rediffract_wave(w, sea, *before, patched, kept, changed, fill_all, how);
         std::printf(
-            "a component %.2f m high: %zu texels changed; points visited %zu marched to the grid's end, %zu "
-            "ended where the wake died out\n",
+            "a component %.2f m high: %zu texels changed; points visited %zu marched to the last texel it fills, "
+            "%zu ended where the wake died out\n",
             2.0 * w.amplitude, to_the_end.texels.size(), to_the_end.points_visited, settled.points_visited);
-        // The wake breaks on the beach and dies out there: the march ends well before the
-        // grid's, and leaves the same texels with the same values.
+        // The wake breaks on the beach and dies out there: the march ends before the
+        // shoreline, where it ends without, and leaves the same texels with the same values.
         EXPECT_GT(to_the_end.texels.size(), 0u);
-        EXPECT_LT(static_cast<double>(settled.points_visited), 0.8 * static_cast<double>(to_the_end.points_visited));
+        EXPECT_LT(static_cast<double>(settled.points_visited), 0.9 * static_cast<double>(to_the_end.points_visited));
         EXPECT_EQ(settled.texels, to_the_end.texels);
         EXPECT_EQ(settled.amplitude, to_the_end.amplitude);
         EXPECT_EQ(settled.broken, to_the_end.broken);
     }
+}
+
+/// Open water 12 m deep with a bank across the waves' path (6 m at its crest, z = 400 m)
+/// and shoals of `shoal` m (Gaussians 8 m wide) at `at`: a march fills the water under
+/// 11 m (the bank and what a shoal raises), the rest is the open sea's.
+ShoreField bank(std::initializer_list<std::pair<glm::dvec2, double>> shoals) {
+    ShoreField f = beach(0.0);
+    std::vector<float>& depth = f.depth.write();
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const glm::dvec2 p = f.texel_center(i, j);
+            double h = 12.0 - 6.0 * std::exp(-(p.y - 400.0) * (p.y - 400.0) / (40.0 * 40.0));
+            for (const auto& [at, shoal] : shoals) h -= shoal * std::exp(-glm::dot(p - at, p - at) / (8.0 * 8.0));
+            depth[f.index(i, j)] = static_cast<float>(h);
+        }
+    return f;
+}
+
+TEST(ShoreRediffraction, AMarchEndsAfterTheLastTexelItFillsAndAnEditPastThereMarchesOn) {
+    const glm::dvec2 on_bank{500.0, 400.0}, past_bank{500.0, 800.0};
+    const ShoreField plain = bank({}), one = bank({{on_bank, 1.0}}), two = bank({{on_bank, 1.0}, {past_bank, 3.0}}),
+                     three = bank({{on_bank, 1.0}, {past_bank, 3.5}});
+    const Wave w = wave();
+    const SeaState sea = sea_state(std::span<const Wave>(&w, 1));
+    auto open_sea = [](const ShoreField& f) { return [&f](std::size_t k) { return f.depth[k] > 11.0f; }; };
+
+    // The bank alone: the march ends a row after its last texel. Made to fill one texel
+    // more at the grid's far corner, it runs on to there and leaves the bank as it was.
+    KeptMarch kept, kept_far;
+    const DiffractedWave over_plain = diffract_wave(w, sea, plain, open_sea(plain), nullptr, &kept);
+    const std::size_t far = plain.index(kN - 1, kN - 1);
+    const DiffractedWave far_too = diffract_wave(
+        w, sea, plain, [&](std::size_t k) { return k != far && plain.depth[k] > 11.0f; }, nullptr, &kept_far);
+    std::size_t filled = 0, differ = 0;
+    for (std::size_t k = 0; k < over_plain.amplitude.size(); ++k) {
+        if (k == far || over_plain.share[k] == 0) continue;
+        ++filled;
+        differ += over_plain.amplitude[k] != far_too.amplitude[k] || over_plain.broken[k] != far_too.broken[k] ? 1 : 0;
+    }
+    std::printf("the bank's march ends at row %d, the one to the far corner at row %d (from row %d)\n", kept.end(),
+                kept_far.end(), kept.start);
+    EXPECT_GT(filled, 1000u);
+    EXPECT_EQ(differ, 0u);
+    EXPECT_LT(kept.end() - kept.start, (kept_far.end() - kept.start) * 3 / 5);
+    EXPECT_EQ(kept.rows(), static_cast<std::size_t>((kept.end() - kept.start) / KeptMarch::kKeptRowsEvery + 1));
+
+    // A stroke on the bank, then a shoal raised past the march's end (water it now fills),
+    // then that shoal raised further: each taken up from what the one before left, whole
+    // rows against the first march's texels, and each within twice the tolerance of a
+    // full march over its depths.
+    auto held = [](const DiffractedWave& march) {
+        return [&march](std::size_t k) -> std::optional<MarchedTexel> {
+            return MarchedTexel{march.amplitude[k], march.share[k] > 0, march.broken[k] != 0, 0.0};
+        };
+    };
+    const DiffractedWave over_one = diffract_wave(w, sea, one, open_sea(one));
+    const DiffractedWave over_two = diffract_wave(w, sea, two, open_sea(two));
+    const DiffractedWave over_three = diffract_wave(w, sea, three, open_sea(three));
+    KeptMarch after_one = kept, after_two;
+    Remarch how;
+    how.updated = &after_one;
+    how.marched_before = held(over_plain);
+    const DiffractionChange first =
+        rediffract_wave(w, sea, plain, PatchedDepths{&plain, 0, 0, kN, kN, one.depth.values()}, kept,
+                        {on_bank - 30.0, on_bank + 30.0}, open_sea(one), how);
+    EXPECT_LT(worst_after(over_plain, first, over_one), 2.0 * kMarchAmplitudeTolerance);
+    EXPECT_EQ(after_one.end(), kept.end());
+
+    after_two = after_one;
+    how.updated = &after_two;
+    how.marched_before = held(over_one);
+    const PatchedDepths to_two{&one, 0, 0, kN, kN, two.depth.values()};
+    const WorldRect second{past_bank - 30.0, past_bank + 30.0};
+    const DiffractionChange past = rediffract_wave(w, sea, one, to_two, after_one, second, open_sea(two), how);
+    // Without the first march's texels the old and the new depths are marched side by
+    // side, and the change is against the old depths' march at the texels the new ones fill.
+    const DiffractionChange side_by_side = rediffract_wave(w, sea, one, to_two, after_one, second, open_sea(two));
+    const DiffractedWave one_filled_as_two = diffract_wave(w, sea, one, open_sea(two));
+    const double past_error = worst_after(over_one, past, over_two),
+                 side_by_side_error = worst_after(one_filled_as_two, side_by_side, over_two);
+    std::printf(
+        "a shoal past the march's end: %zu texels changed, worst error %.2e (%.2e side by side); the march "
+        "now ends at row %d\n",
+        past.texels.size(), past_error, side_by_side_error, after_two.end());
+    EXPECT_GT(past.texels.size(), 30u);
+    EXPECT_LT(past_error, 2.0 * kMarchAmplitudeTolerance);
+    EXPECT_LT(side_by_side_error, 2.0 * kMarchAmplitudeTolerance);
+    EXPECT_GT(after_two.end(), after_one.end());
+    EXPECT_EQ(after_two.rows(),
+              static_cast<std::size_t>((after_two.end() - after_two.start) / KeptMarch::kKeptRowsEvery + 1));
+
+    // The rows the second edit added are what a third takes up.
+    const DiffractionChange third = rediffract_wave(
+        w, sea, two, PatchedDepths{&two, 0, 0, kN, kN, three.depth.values()}, after_two, second, open_sea(three));
+    const double third_error = worst_after(over_two, third, over_three);
+    std::printf("the shoal raised again: %zu texels changed, worst error %.2e\n", third.texels.size(), third_error);
+    EXPECT_GT(third.texels.size(), 10u);
+    EXPECT_LT(third_error, 2.0 * kMarchAmplitudeTolerance);
 }
 
 TEST(ShoreRediffraction, TheSameDepthsChangeNothing) {

@@ -658,25 +658,23 @@ bool ParabolicMarch::advance() {
     }
     // A window's sides are held at the march it is a window of.
     const MarchColumns* held = in_.sides;
+    const auto t = static_cast<std::size_t>(in_.sides_first_row + step_ + 1);
     Marcher::Sides sides;
-    std::size_t t = 0;
-    if (held) {
-        t = static_cast<std::size_t>(in_.sides_first_row + step_ + 1);
-        sides.lo = in_.side_lo != ParabolicInput::kNoSide;
-        sides.hi = in_.side_hi != ParabolicInput::kNoSide;
-        if (sides.lo) {
-            sides.a_lo = Complex(held->amplitude[t * held->count + in_.side_lo]);
-            sides.broken_lo = held->broken[t * held->count + in_.side_lo];
-        }
-        if (sides.hi) {
-            sides.a_hi = Complex(held->amplitude[t * held->count + in_.side_hi]);
-            sides.broken_hi = held->broken[t * held->count + in_.side_hi];
-        }
-        sides.phase = held->phase[t];
+    sides.lo = held && in_.side_lo != ParabolicInput::kNoSide;
+    sides.hi = held && in_.side_hi != ParabolicInput::kNoSide;
+    if (sides.lo) {
+        sides.a_lo = Complex(held->amplitude[t * held->count + in_.side_lo]);
+        sides.broken_lo = held->broken[t * held->count + in_.side_lo];
     }
-    m.advance(s.here, s.next, s.here_depths, s.next_depths, in_.grid.dx, held ? &sides : nullptr);
+    if (sides.hi) {
+        sides.a_hi = Complex(held->amplitude[t * held->count + in_.side_hi]);
+        sides.broken_hi = held->broken[t * held->count + in_.side_hi];
+    }
+    // A march without sides may run past the rows the longer march kept.
+    if (sides.lo || sides.hi) sides.phase = held->phase[t];
+    m.advance(s.here, s.next, s.here_depths, s.next_depths, in_.grid.dx, sides.lo || sides.hi ? &sides : nullptr);
     if (in_.keep_columns) keep_columns();
-    if (held && in_.advanced) in_.advanced(t, m.a, m.broken, m.phase);
+    if (in_.advanced) in_.advanced(t, m.a, m.broken, m.phase);
     std::swap(s.here, s.next);
     std::swap(s.here_depths, s.next_depths);
     ++step_;

@@ -102,8 +102,8 @@ struct ParabolicInput {
     static constexpr std::size_t kNoSide = static_cast<std::size_t>(-1);
     std::size_t side_lo = kNoSide, side_hi = kNoSide;
     int sides_first_row = 0;
-    /// With `sides`, called after each step with the longer march's row it stands for,
-    /// the state (`across` values) and the phase it carries.
+    /// Where given, called after each step with the longer march's row it stands for
+    /// (sides_first_row + step), the state (`across` values) and the phase it carries.
     std::function<void(std::size_t row, std::span<const std::complex<double>> amplitude, std::span<const char> broken,
                        double phase)>
         advanced;

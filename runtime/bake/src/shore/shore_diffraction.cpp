@@ -68,6 +68,13 @@ struct RowBuckets {
     std::vector<std::size_t> offsets;  ///< per row, into texels (one past the last row too)
     std::vector<std::uint32_t> texels;
     int first_row = 0;  ///< the first row that holds a texel to fill or land
+    /// The last bucket that holds a texel (as offsets count them), -1 where none does: the
+    /// march need not go past the row after it.
+    int last_filled() const {
+        for (std::size_t r = offsets.size() - 1; r > 0; --r)
+            if (offsets[r] > offsets[r - 1]) return static_cast<int>(r) - 1;
+        return -1;
+    }
 };
 
 RowBuckets bucket_texels(const ShoreField& field, const MarchFrame& f, const std::function<bool(std::size_t)>& keep) {
@@ -260,6 +267,16 @@ SeaState sea_state(std::span<const Wave> waves) {
     return s;
 }
 
+void KeptMarch::end_at(int last) {
+    const auto rows_to = static_cast<std::size_t>(std::max(last - start + 1, 0));
+    const std::size_t kept_rows = rows_to == 0 ? 0 : (rows_to - 1) / kKeptRowsEvery + 1;
+    amplitude.resize(kept_rows * static_cast<std::size_t>(points));
+    broken.resize(kept_rows * static_cast<std::size_t>(points));
+    columns.amplitude.resize(rows_to * columns.count);
+    columns.broken.resize(rows_to * columns.count);
+    columns.phase.resize(rows_to);
+}
+
 DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& field,
                              const std::function<bool(std::size_t)>& keep, const SeaHeight* sea_height,
                              KeptMarch* kept) {
@@ -280,6 +297,8 @@ DiffractedWave diffract_wave(const Wave& wave, const SeaState& sea, const ShoreF
     const int start = std::max(0, buckets.first_row - 2);
     const auto depths = [&field](glm::dvec2 p) { return field.sample(field.depth, p); };
     ParabolicInput in = march_input(wave, sea, frame, start, 0, frame.points, depths, sea_height);
+    // Past the row after the last texel to fill nothing reads the march.
+    in.grid.steps = std::min(in.grid.steps, buckets.last_filled() + 2 - start);
     if (kept) {
         *kept = {};
         kept->start = start;
@@ -376,6 +395,13 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
     const int last_column = static_cast<int>(columns.count) - 1;
     int column_lo = std::max(0, (static_cast<int>(std::floor(y_lo)) - kSide) / every - 1);
     int column_hi = std::min(last_column, (static_cast<int>(std::ceil(y_hi)) + kSide) / every + 2);
+    // Past the first march's end no side is kept: an edit that reaches there is marched
+    // across the whole row, as far as the new depths have texels to fill.
+    const int kept_end = kept.end();
+    if (x_hi + 2.0 >= kept_end) {
+        column_lo = 0;
+        column_hi = last_column;
+    }
     // With what the first march left, a window as wide as a third of the march is the
     // whole row instead, marched over the new depths alone: two marches side by side in a
     // window (and each widening's again from its first row) cost more.
@@ -424,6 +450,19 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         }
         const bool held_lo = old_in.side_lo != ParabolicInput::kNoSide,
                    held_hi = old_in.side_hi != ParabolicInput::kNoSide;
+        const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
+        // A window with a side ends with the first march's rows; one with none at the row
+        // after its last texel to fill. A window's texel past the first march's end (the
+        // edit made it one to fill) is the whole row's to march.
+        const bool sided = held_lo || held_hi;
+        if (sided && buckets.last_filled() + r0 + 1 > kept_end) {
+            column_lo = 0;
+            column_hi = last_column;
+            whole_if_wide();
+            continue;
+        }
+        const int steps = sided ? kept_end - r0 + 1 : std::max(buckets.last_filled() + 2, 1);
+        old_in.grid.steps = new_in.grid.steps = std::min(new_in.grid.steps, steps);
         // What the new march leaves for `updated`, written once the window holds: its kept
         // columns inside the window after each step, and its kept rows, turned to the
         // phase the first march's carry.
@@ -433,6 +472,9 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             char broken;
         };
         std::vector<Kept> new_columns, new_rows;
+        // Past the first march's end the rows carry the new march's own phase.
+        std::vector<std::pair<std::size_t, double>> new_phases;
+        auto phase_of = [&](std::size_t t, double own) { return t < columns.phase.size() ? columns.phase[t] : own; };
         double new_phase = entering_phase;
         const std::size_t first_inside = static_cast<std::size_t>(held_lo ? column_lo + 1 : column_lo);
         const std::size_t last_inside = static_cast<std::size_t>(held_hi ? column_hi - 1 : column_hi);
@@ -440,14 +482,14 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             new_in.advanced = [&](std::size_t t, std::span<const std::complex<double>> a, std::span<const char> broken,
                                   double phase) {
                 new_phase = phase;
-                const std::complex<double> turn = std::polar(1.0, phase - columns.phase[t]);
+                if (t >= columns.phase.size()) new_phases.emplace_back(t, phase);
+                const std::complex<double> turn = std::polar(1.0, phase - phase_of(t, phase));
                 for (std::size_t c = first_inside; c <= last_inside; ++c) {
                     const std::size_t j = c * static_cast<std::size_t>(every) - static_cast<std::size_t>(lo);
                     if (j >= a.size()) break;
                     new_columns.push_back({t * columns.count + c, std::complex<double>(a[j] * turn), broken[j]});
                 }
             };
-        const RowBuckets buckets = bucket_window(after, frame, r0, lo, hi - 1, keep);
         std::optional<ParabolicMarch> old_march;
         if (!whole) old_march.emplace(old_in);
         ParabolicMarch new_march(new_in);
@@ -513,16 +555,13 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
             const int frame_row = r0 + step;
             if (how.updated && (frame_row - kept.start) % KeptMarch::kKeptRowsEvery == 0) {
                 const auto n = static_cast<std::size_t>((frame_row - kept.start) / KeptMarch::kKeptRowsEvery);
-                if (n < kept.rows()) {
-                    const double row_phase = columns.phase[static_cast<std::size_t>(frame_row - kept.start)];
-                    const std::complex<double> turn = std::polar(1.0, new_phase - row_phase);
-                    const ParabolicRow row = new_march.row();
-                    for (int j = 0; j < width; ++j)
-                        new_rows.push_back(
-                            {n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo + j),
-                             std::complex<double>(row.amplitude[static_cast<std::size_t>(j)] * turn),
-                             row.broken[static_cast<std::size_t>(j)]});
-                }
+                const double row_phase = phase_of(static_cast<std::size_t>(frame_row - kept.start), new_phase);
+                const std::complex<double> turn = std::polar(1.0, new_phase - row_phase);
+                const ParabolicRow row = new_march.row();
+                for (int j = 0; j < width; ++j)
+                    new_rows.push_back({n * static_cast<std::size_t>(kept.points) + static_cast<std::size_t>(lo + j),
+                                        std::complex<double>(row.amplitude[static_cast<std::size_t>(j)] * turn),
+                                        row.broken[static_cast<std::size_t>(j)]});
             }
             std::swap(old_before, old_after);
             std::swap(new_before, new_after);
@@ -536,6 +575,13 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         }
         if (!widen_lo && !widen_hi) {
             if (how.updated) {
+                // A march without sides that ran to its last row, or past the first
+                // march's end, ends the kept march where it stopped: past there the
+                // first march's rows are not this march's, and nothing reads them.
+                const int last_row = r0 + new_march.row().step;
+                if (!sided && (new_march.row().step + 1 >= new_in.grid.steps || last_row > kept_end))
+                    how.updated->end_at(last_row);
+                for (const auto& [t, phase] : new_phases) how.updated->columns.phase[t] = phase;
                 for (const Kept& k : new_columns) {
                     how.updated->columns.amplitude[k.at] = k.amplitude;
                     how.updated->columns.broken[k.at] = k.broken;

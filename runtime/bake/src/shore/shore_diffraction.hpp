@@ -86,8 +86,9 @@ inline bool sea_leaves(const Wave& whole, double depth) {
 /// of the depth, instead of the whole march: its state (complex amplitude and breaking at
 /// every point across) every kKeptRowsEvery rows from its first, where a window is taken
 /// up, and at every kKeptPointsEvery-th point after every advance, where a window's sides
-/// are held. Empty where the march did not run (no amplitude, a wave left to the rays,
-/// nothing to fill).
+/// are held. The march ends at the row after the last texel it fills (nothing past it
+/// reads it), so the rows kept end there too. Empty where the march did not run (no
+/// amplitude, a wave left to the rays, nothing to fill).
 struct KeptMarch {
     static constexpr int kKeptRowsEvery = 32, kKeptPointsEvery = 32;
     int start = 0;                                ///< the march's first row, of its frame
@@ -96,6 +97,11 @@ struct KeptMarch {
     std::vector<char> broken;
     MarchColumns columns;
     std::size_t rows() const { return points > 0 ? amplitude.size() / static_cast<std::size_t>(points) : 0; }
+    /// The march's last row, of its frame (the columns are kept on every row to it).
+    int end() const { return start + static_cast<int>(columns.phase.size()) - 1; }
+    /// Holds rows start to `last` from now: the rows past it are dropped, or rows added up
+    /// to it (zero until written).
+    void end_at(int last);
     std::size_t bytes() const { return amplitude.size() * sizeof(amplitude[0]) + broken.size() + columns.bytes(); }
 };
 
@@ -187,8 +193,10 @@ inline constexpr double kSettledAmplitude = 1e-7;
 /// is widened and marched again (with `how.marched_before`, as the whole row past a
 /// third of the march). The march stops where, past the edit, the two agree exactly (the
 /// edit's wake has died out), or a whole row marched alone agrees with the first march's
-/// kept row to kSettledAmplitude (`how.settles`), or at the grid's end. `keep` as
-/// diffract_wave's.
+/// kept row to kSettledAmplitude (`how.settles`), or a row after the last texel it fills
+/// over the new depths (a window with sides: where the first march ended). An edit that
+/// reaches past the first march's end is marched across the whole row; `how.updated`
+/// then ends where this march did. `keep` as diffract_wave's.
 DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const ShoreField& before,
                                   const PatchedDepths& after, const KeptMarch& kept, const WorldRect& changed,
                                   const std::function<bool(std::size_t)>& keep, const Remarch& how = {});
