@@ -455,13 +455,13 @@ DiffractionChange rediffract_wave(const Wave& wave, const SeaState& sea, const S
         // after its last texel to fill. A window's texel past the first march's end (the
         // edit made it one to fill) is the whole row's to march.
         const bool sided = held_lo || held_hi;
-        if (sided && buckets.last_filled() + r0 + 1 > kept_end) {
+        const int last_filled = buckets.last_filled();
+        if (sided && last_filled + r0 + 1 > kept_end) {
             column_lo = 0;
             column_hi = last_column;
-            whole_if_wide();
             continue;
         }
-        const int steps = sided ? kept_end - r0 + 1 : std::max(buckets.last_filled() + 2, 1);
+        const int steps = sided ? kept_end - r0 + 1 : std::max(last_filled + 2, 1);
         old_in.grid.steps = new_in.grid.steps = std::min(new_in.grid.steps, steps);
         // What the new march leaves for `updated`, written once the window holds: its kept
         // columns inside the window after each step, and its kept rows, turned to the
